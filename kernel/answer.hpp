@@ -1,0 +1,43 @@
+#pragma once
+// Answer: the result of continuous collision detection for one scene, shared
+// by every pipeline (double, MPFR, exact) so that the harness compares answers,
+// not log lines.
+//
+// Statement (../shared/spec/scene-format.md, "The answer"): the collision set
+// C = { t in [0,1] : A(t) ∩ B(t) ≠ ∅ } (closed objects, touching counts) is a
+// finite union of closed intervals. An answer gives `collides`, the maximal
+// `intervals` of C, `first_contact` = min C, and `contacts`, the instants of
+// external tangency. Each instant carries a decimal approximation and, when
+// certified, a rational bracket [lo, hi] that provably contains it and no
+// other instant of its list (0 and 1 are written exactly).
+#include <gmpxx.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace eccd {
+
+struct Instant {
+  std::string approx;              // decimal, for people and plots
+  std::optional<mpq_class> lo, hi;  // present iff certified
+  bool certified() const { return lo.has_value() && hi.has_value(); }
+};
+
+struct ContactPoint {  // Lemma 5 of 003: the touching point (display only)
+  std::vector<std::string> x;
+};
+
+struct Answer {
+  bool collides = false;
+  std::vector<std::pair<Instant, Instant>> intervals;
+  std::optional<Instant> first_contact;
+  std::vector<Instant> contacts;
+  // Extras: not part of the stored answer, reported by `eccd solve --json`.
+  std::vector<ContactPoint> contact_points;      // one per contact
+  std::vector<std::pair<Instant, Instant>> contact_intervals;  // continuous touching (Δ ≡ 0)
+  std::vector<Instant> undecided;                 // floating: instants it could not classify
+};
+
+}  // namespace eccd
