@@ -11,6 +11,7 @@
 // certified, a rational bracket [lo, hi] that provably contains it and no
 // other instant of its list (0 and 1 are written exactly).
 #include <gmpxx.h>
+#include <mpfr.h>
 
 #include <optional>
 #include <string>
@@ -39,5 +40,19 @@ struct Answer {
   std::vector<std::pair<Instant, Instant>> contact_intervals;  // continuous touching (Δ ≡ 0)
   std::vector<Instant> undecided;                 // floating: instants it could not classify
 };
+
+// A decimal approximation of an exact rational with `digits` significant
+// digits, for display (rounded by MPFR at 256 bits; never used to decide).
+inline std::string decimal_string(const mpq_class& q, int digits = 20) {
+  mpfr_t r;
+  mpfr_init2(r, 256);
+  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
+  char* s = nullptr;
+  mpfr_asprintf(&s, "%.*Rg", digits, r);
+  std::string out(s);
+  mpfr_free_str(s);
+  mpfr_clear(r);
+  return out;
+}
 
 }  // namespace eccd

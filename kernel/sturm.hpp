@@ -38,6 +38,14 @@ std::vector<Poly<T>> sturm_sequence(const Poly<T>& p) {
     if (r.is_zero()) break;
     s.push_back(-r);
   }
+  // With exact T, divide by the last element (gcd(p, p')): the sequence of
+  // p / gcd then counts distinct roots even at an end that is a multiple root.
+  if constexpr (scalar_traits<T>::is_exact) {
+    if (s.back().degree() > 0) {
+      Poly<T> g = s.back();
+      for (auto& x : s) { Poly<T> q, rem; divide(x, g, q, rem); x = q; }
+    }
+  }
   return s;
 }
 

@@ -1,0 +1,106 @@
+#pragma once
+// PreparedPair<N>: a scene's two objects as exact integer matrices Q and
+// polynomial inverse motions N(t), and MovingPair<T, N>: the same rounded to
+// the arithmetic T of one pipeline run.
+//
+// Statement. The scene is exact (scene-format.md, "Numbers are exact"), so
+// the motion inverses N(t) (kernel/motion.hpp) are formed exactly, once, when
+// a pipeline is prepared:
+//   - the common polynomial factor of N's entries is divided out (exact gcd;
+//     it is non-zero on [0, 1] because det M is), which gives the degrees of
+//     003 Table I (e.g. Δ of degree 96 for 003 Example 2, not 192);
+//   - Q and N are scaled by positive rationals to primitive integer entries.
+// Both steps multiply A(t) by a positive function and change no root of
+// f(λ;t) (design.md). Every pipeline (double, MPFR, exact) then starts from
+// these same coefficients, rounded to its own arithmetic; all later work
+// (A(t), f, Δ, roots, decisions) is done in that arithmetic, which is what
+// the harness measures. Requirements on T: scalar_traits<T>::from_rational.
+#include "kernel/motion.hpp"
+#include "kernel/scene.hpp"
+
+#include <stdexcept>
+
+namespace eccd {
+
+template <int N>
+struct PreparedPair {
+  Matrix<Rational, N> qa{}, qb{};
+  PolyMatrix<Rational, N> na{}, nb{};
+};
+
+template <class T, int N>
+struct MovingPair {
+  Matrix<T, N> qa{}, qb{};
+  PolyMatrix<T, N> na{}, nb{};
+};
+
+// Scales a list of rationals (in place, by one positive factor) to coprime integers.
+inline void make_primitive(std::vector<Rational*> xs) {
+  mpz_class l = 1, g = 0;
+  for (auto* x : xs) { x->canonicalize(); mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t()); }
+  for (auto* x : xs) { mpz_class n = x->get_num() * (l / x->get_den()); mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), n.get_mpz_t()); }
+  if (g == 0) return;
+  for (auto* x : xs) { Rational y = *x * Rational(l) / Rational(g); *x = y; }
+}
+
+template <int N>
+void remove_polynomial_content(PolyMatrix<Rational, N>& n) {
+  RPoly g;
+  for (auto& row : n)
+    for (auto& e : row)
+      if (!e.is_zero()) g = g.is_zero() ? gcd(e, e) : gcd(g, e);
+  if (g.degree() > 0)
+    for (auto& row : n)
+      for (auto& e : row) { RPoly q, r; divide(e, g, q, r); e = q; }
+  std::vector<Rational*> all;
+  for (auto& row : n) for (auto& e : row) for (auto& c : e.c) all.push_back(&c);
+  make_primitive(all);
+}
+
+template <int N>
+Matrix<Rational, N> shape_matrix(const SceneObject& o) {
+  Matrix<Rational, N> q{};
+  std::vector<Rational*> all;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) { q[i][j] = o.Q.at(i).at(j); }
+  for (auto& row : q) for (auto& x : row) all.push_back(&x);
+  make_primitive(all);
+  return q;
+}
+
+// Throws std::invalid_argument for a motion that has no polynomial form (cycloidal).
+template <int N>
+PreparedPair<N> prepare_pair(const Scene& s) {
+  if (s.dim + 1 != N) throw std::invalid_argument("scene dimension does not match the pipeline");
+  for (const SceneObject* o : {&s.a, &s.b})
+    if (std::holds_alternative<CycloidalMotion>(o->motion))
+      throw std::invalid_argument(
+          std::string("object ") + (o == &s.a ? "a" : "b") +
+          " has a cycloidal motion, which is not rational: exact arithmetic cannot represent it "
+          "(use --arith double or mpfr:BITS)");
+  auto id = [](const Rational& q) { return q; };
+  PreparedPair<N> p;
+  p.qa = shape_matrix<N>(s.a);
+  p.qb = shape_matrix<N>(s.b);
+  p.na = motion_inverse<Rational, N>(s.a.motion, id);
+  p.nb = motion_inverse<Rational, N>(s.b.motion, id);
+  remove_polynomial_content<N>(p.na);
+  remove_polynomial_content<N>(p.nb);
+  return p;
+}
+
+template <class T, int N>
+MovingPair<T, N> to_arithmetic(const PreparedPair<N>& p, const T& like) {
+  auto conv = [&](const Rational& q) { return scalar_traits<T>::from_rational(q, like); };
+  MovingPair<T, N> m;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      m.qa[i][j] = conv(p.qa[i][j]);
+      m.qb[i][j] = conv(p.qb[i][j]);
+      m.na[i][j] = map_coeffs<T>(p.na[i][j], conv);
+      m.nb[i][j] = map_coeffs<T>(p.nb[i][j], conv);
+    }
+  return m;
+}
+
+}  // namespace eccd
