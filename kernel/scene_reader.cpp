@@ -1,0 +1,830 @@
+// Scene reader (see kernel/scene_reader.hpp for the statement and the choices).
+#include "kernel/scene_reader.hpp"
+
+#include "kernel/bernstein.hpp"
+#include "kernel/quadric_classification.hpp"
+#include "kernel/sturm.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+#include <vector>
+
+namespace eccd {
+
+using json = nlohmann::json;
+
+// ---------------------------------------------------------------------------
+// Numbers
+
+namespace {
+
+bool all_digits(const std::string& s) {
+  if (s.empty()) return false;
+  for (char ch : s)
+    if (ch < '0' || ch > '9') return false;
+  return true;
+}
+
+const char* const kNumberForms =
+    "expected an integer (\"-63\"), a fraction (\"-3/7\") or a decimal (\"1.8\", \"2.5e-3\")";
+
+[[noreturn]] void bad_number(const std::string& why) { throw std::invalid_argument(why); }
+
+}  // namespace
+
+Rational parse_rational(const std::string& text) {
+  if (text.empty()) bad_number(std::string("empty string; ") + kNumberForms);
+  for (char ch : text)
+    if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r' || ch == '\f' || ch == '\v')
+      bad_number("contains whitespace");
+  std::size_t i = 0;
+  bool negative = false;
+  if (text[0] == '+' || text[0] == '-') {
+    negative = text[0] == '-';
+    i = 1;
+  }
+  const std::size_t slash = text.find('/');
+  if (slash != std::string::npos) {
+    const std::string num = text.substr(i, slash - i), den = text.substr(slash + 1);
+    if (!all_digits(num)) bad_number("the numerator of a fraction must be an integer (an optional sign, then digits)");
+    if (!all_digits(den)) bad_number("the denominator of a fraction must be a positive integer (digits only)");
+    mpz_class n(num, 10), d(den, 10);
+    if (d == 0) bad_number("zero denominator");
+    mpq_class q(n, d);
+    q.canonicalize();
+    if (negative) q = -q;
+    return q;
+  }
+  // Decimal: digits [ '.' digits ] [ (e|E) [sign] digits ], at least one mantissa digit.
+  std::string mantissa;
+  long frac_len = 0;
+  std::size_t j = i;
+  while (j < text.size() && text[j] >= '0' && text[j] <= '9') mantissa += text[j++];
+  if (j < text.size() && text[j] == '.') {
+    ++j;
+    while (j < text.size() && text[j] >= '0' && text[j] <= '9') { mantissa += text[j++]; ++frac_len; }
+  }
+  if (mantissa.empty()) bad_number(std::string("no digits; ") + kNumberForms);
+  long exponent = 0;
+  if (j < text.size() && (text[j] == 'e' || text[j] == 'E')) {
+    ++j;
+    bool eneg = false;
+    if (j < text.size() && (text[j] == '+' || text[j] == '-')) { eneg = text[j] == '-'; ++j; }
+    std::string ed;
+    while (j < text.size() && text[j] >= '0' && text[j] <= '9') ed += text[j++];
+    if (ed.empty()) bad_number("the exponent has no digits");
+    std::size_t nz = ed.find_first_not_of('0');
+    ed = nz == std::string::npos ? std::string("0") : ed.substr(nz);
+    if (ed.size() > 5 || std::stol(ed) > 10000) bad_number("exponent too large (at most 10000 in magnitude)");
+    exponent = std::stol(ed);
+    if (eneg) exponent = -exponent;
+  }
+  if (j != text.size())
+    bad_number("unexpected '" + std::string(1, text[j]) + "' at character " + std::to_string(j + 1) + "; " +
+               kNumberForms);
+  mpz_class m(mantissa, 10);
+  const long e = exponent - frac_len;
+  mpz_class p;
+  mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
+  mpq_class q = e >= 0 ? mpq_class(mpz_class(m * p)) : mpq_class(m, p);
+  q.canonicalize();
+  if (negative) q = -q;
+  return q;
+}
+
+// ---------------------------------------------------------------------------
+// Answers to JSON
+
+namespace {
+
+json instant_to_json(const Instant& in) {
+  json o = json::object();
+  o["approx"] = in.approx;
+  o["lo"] = in.lo ? json(in.lo->get_str()) : json(nullptr);
+  o["hi"] = in.hi ? json(in.hi->get_str()) : json(nullptr);
+  return o;
+}
+
+json interval_list_to_json(const std::vector<std::pair<Instant, Instant>>& v) {
+  json a = json::array();
+  for (const auto& [s, e] : v) a.push_back(json::array({instant_to_json(s), instant_to_json(e)}));
+  return a;
+}
+
+}  // namespace
+
+json answer_to_json(const Answer& answer) {
+  json o = json::object();
+  o["collides"] = answer.collides;
+  o["intervals"] = interval_list_to_json(answer.intervals);
+  o["first_contact"] = answer.first_contact ? instant_to_json(*answer.first_contact) : json(nullptr);
+  json contacts = json::array();
+  for (const auto& c : answer.contacts) contacts.push_back(instant_to_json(c));
+  o["contacts"] = contacts;
+  if (!answer.contact_points.empty()) {
+    json pts = json::array();
+    for (const auto& p : answer.contact_points) pts.push_back(json(p.x));
+    o["contact_points"] = pts;
+  }
+  if (!answer.contact_intervals.empty()) o["contact_intervals"] = interval_list_to_json(answer.contact_intervals);
+  if (!answer.undecided.empty()) {
+    json u = json::array();
+    for (const auto& c : answer.undecided) u.push_back(instant_to_json(c));
+    o["undecided"] = u;
+  }
+  return o;
+}
+
+// ---------------------------------------------------------------------------
+// The validating reader
+
+namespace {
+
+constexpr std::size_t kMaxDepth = 64;
+
+std::string escape_token(const std::string& k) {
+  std::string r;
+  for (char ch : k) {
+    if (ch == '~') r += "~0";
+    else if (ch == '/') r += "~1";
+    else r += ch;
+  }
+  return r;
+}
+std::string child(const std::string& ptr, const std::string& key) { return ptr + "/" + escape_token(key); }
+std::string child(const std::string& ptr, std::size_t i) { return ptr + "/" + std::to_string(i); }
+std::string place_text(const std::string& ptr) { return ptr.empty() ? std::string("top level") : ptr; }
+
+// A user string in a message: JSON-quoted, shortened.
+std::string quote(const std::string& s) {
+  std::string t = s.size() > 60 ? s.substr(0, 60) + "..." : s;
+  return json(t).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+std::string type_name(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::string: return "a string";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned: return "an integer";
+    case json::value_t::number_float: return "a number with a fraction part";
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "an array";
+    default: return "an unexpected value";
+  }
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
+  std::string r;
+  for (std::size_t i = 0; i < v.size(); ++i) r += (i ? sep : "") + v[i];
+  return r;
+}
+
+std::string approx_text(const mpq_class& q) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", q.get_d());
+  return buf;
+}
+
+// "17 t^2 + 66 t - 63", shortened for messages.
+std::string poly_text(const RPoly& p) {
+  if (p.is_zero()) return "0";
+  std::string r;
+  for (int i = p.degree(); i >= 0; --i) {
+    const mpq_class& c = p.c[i];
+    if (sgn(c) == 0) continue;
+    mpq_class a = abs(c);
+    std::string term;
+    if (i == 0 || a != 1) term = a.get_str();
+    if (i > 0) term += (term.empty() ? "" : " ") + std::string("t") + (i > 1 ? "^" + std::to_string(i) : "");
+    if (r.empty()) r = (sgn(c) < 0 ? "-" : "") + term;
+    else r += (sgn(c) < 0 ? " - " : " + ") + term;
+    if (r.size() > 200) return r + " ...";
+  }
+  return r;
+}
+
+// The simplest rational (smallest denominator) in [a, b], 0 <= a <= b.
+mpq_class simplest_between(const mpq_class& a, const mpq_class& b) {
+  mpz_class fl;
+  mpz_fdiv_q(fl.get_mpz_t(), a.get_num_mpz_t(), a.get_den_mpz_t());
+  if (mpq_class(fl) == a) return a;
+  mpz_class up = fl + 1;
+  if (mpq_class(up) <= b) return mpq_class(up);
+  mpq_class x = b - fl, y = a - fl;  // both in (0, 1)
+  mpq_class ix = 1 / x, iy = 1 / y;
+  mpq_class s = simplest_between(ix, iy);
+  mpq_class r = mpq_class(fl) + 1 / s;
+  return r;
+}
+
+// Where p (not identically zero, with a root in [0, 1]) vanishes on [0, 1].
+std::string locate_root(const RPoly& p) {
+  mpq_class lo = 0, hi = 1;
+  if (sgn(p(lo)) == 0) return "at t = 0";
+  if (sgn(p(hi)) == 0) return "at t = 1";
+  const auto seq = sturm_sequence(p);
+  auto roots_in = [&](const mpq_class& a, const mpq_class& b) {  // in (a, b]
+    return sturm_variations(seq, std::optional<mpq_class>(a), -1) -
+           sturm_variations(seq, std::optional<mpq_class>(b), +1);
+  };
+  for (int k = 0; k < 30; ++k) {  // invariant: a root in (lo, hi), p(lo), p(hi) != 0
+    mpq_class m = (lo + hi) / 2;
+    if (sgn(p(m)) == 0) return "at t = " + m.get_str();
+    if (roots_in(lo, m) > 0) hi = m; else lo = m;
+  }
+  mpq_class s = simplest_between(lo, hi);
+  if (sgn(p(s)) == 0) return "at t = " + s.get_str();
+  mpq_class mid = (lo + hi) / 2;
+  return "at t in [" + lo.get_str() + ", " + hi.get_str() + "] (t ~ " + approx_text(mid) + ")";
+}
+
+// SAX handler building the DOM, with duplicate-key detection, a depth limit,
+// and the raw text of every JSON number that is not an integer.
+class DomBuilder {
+ public:
+  using number_integer_t = json::number_integer_t;
+  using number_unsigned_t = json::number_unsigned_t;
+  using number_float_t = json::number_float_t;
+  using string_t = json::string_t;
+  using binary_t = json::binary_t;
+
+  json root;
+  std::unordered_map<std::string, std::string> float_text;  // pointer -> raw token
+  std::string error_place, error_what;                      // our own error (duplicate key, depth)
+  bool json_error = false;
+  std::size_t error_byte = 0;
+  std::string json_error_what;
+
+  bool null() { put(json(nullptr)); return true; }
+  bool boolean(bool v) { put(json(v)); return true; }
+  bool number_integer(number_integer_t v) { put(json(v)); return true; }
+  bool number_unsigned(number_unsigned_t v) { put(json(v)); return true; }
+  bool number_float(number_float_t v, const string_t& s) {
+    float_text[current_pointer()] = s;
+    put(json(v));
+    return true;
+  }
+  bool string(string_t& s) { put(json(std::move(s))); return true; }
+  bool binary(binary_t& b) { put(json::binary(std::move(b))); return true; }
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool end_object() { close(); return true; }
+  bool end_array() { close(); return true; }
+  bool key(string_t& k) {
+    if (stack_.back()->contains(k)) {
+      error_place = pointer_of(tokens_.size()) + "/" + escape_token(k);
+      error_what = "duplicate key " + quote(k) + " (each key may appear only once in an object)";
+      return false;
+    }
+    keys_.back() = k;
+    return true;
+  }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
+    json_error = true;
+    error_byte = position;
+    json_error_what = ex.what();
+    return false;
+  }
+
+ private:
+  std::vector<json*> stack_;
+  std::vector<std::string> keys_;    // pending key per open container (objects)
+  std::vector<std::string> tokens_;  // token of each open container in its parent
+
+  std::string pointer_of(std::size_t n) const {
+    std::string r;
+    for (std::size_t i = 1; i < n; ++i) r += "/" + tokens_[i];
+    return r;
+  }
+  std::string current_token() const {
+    if (stack_.empty()) return "";
+    const json& top = *stack_.back();
+    return top.is_array() ? std::to_string(top.size()) : escape_token(keys_.back());
+  }
+  std::string current_pointer() const {
+    if (stack_.empty()) return "";
+    return pointer_of(tokens_.size()) + "/" + current_token();
+  }
+  json* put(json&& v) {
+    if (stack_.empty()) { root = std::move(v); return &root; }
+    json& top = *stack_.back();
+    if (top.is_array()) { top.push_back(std::move(v)); return &top.back(); }
+    json& slot = top[keys_.back()];
+    slot = std::move(v);
+    return &slot;
+  }
+  bool open(json&& v) {
+    if (stack_.size() >= kMaxDepth) {
+      error_place = current_pointer();
+      error_what = "nesting deeper than " + std::to_string(kMaxDepth) + " levels";
+      return false;
+    }
+    std::string tok = current_token();
+    json* p = put(std::move(v));
+    stack_.push_back(p);
+    keys_.emplace_back();
+    tokens_.push_back(std::move(tok));
+    return true;
+  }
+  void close() {
+    stack_.pop_back();
+    keys_.pop_back();
+    tokens_.pop_back();
+  }
+};
+
+class Reader {
+ public:
+  Reader(std::string label, const std::unordered_map<std::string, std::string>* float_text)
+      : label_(std::move(label)), float_text_(float_text) {}
+
+  [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
+    throw SceneError(label_ + ": " + place_text(ptr) + ": " + what);
+  }
+
+  Scene scene(const json& root);
+  Answer answer(const json& j, const std::string& ptr);
+
+ private:
+  std::string label_;
+  const std::unordered_map<std::string, std::string>* float_text_;
+  int dim_ = 2;
+
+  // --- structure helpers
+  void require_object(const json& j, const std::string& ptr, const std::string& what) const {
+    if (!j.is_object()) fail(ptr, what + " must be a JSON object {...}, got " + type_name(j));
+  }
+  void check_keys(const json& j, const std::string& ptr, const std::vector<std::string>& allowed,
+                  const std::string& what) const {
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      bool ok = false;
+      for (const auto& a : allowed) ok = ok || a == it.key();
+      if (!ok)
+        fail(child(ptr, it.key()), "unknown key " + quote(it.key()) + " in " + what + "; allowed keys: " + join(allowed));
+    }
+  }
+  const json* find(const json& j, const std::string& key) const {
+    auto it = j.find(key);
+    return it == j.end() ? nullptr : &*it;
+  }
+  const json& member(const json& j, const std::string& ptr, const std::string& key, const std::string& what) const {
+    const json* m = find(j, key);
+    if (!m) fail(ptr, "missing required key " + quote(key) + " in " + what);
+    return *m;
+  }
+  const json& array_of(const json& j, const std::string& ptr, std::size_t n, const std::string& what,
+                       const std::string& why = "") const {
+    if (!j.is_array()) fail(ptr, what + " must be an array of " + std::to_string(n) + " entries, got " + type_name(j));
+    if (j.size() != n)
+      fail(ptr, what + " must have " + std::to_string(n) + " entries" + why + ", got " + std::to_string(j.size()));
+    return j;
+  }
+
+  // --- values
+  Rational number(const json& j, const std::string& ptr) const;
+  RPoly poly(const json& j, const std::string& ptr) const;
+  std::vector<RPoly> polys(const json& j, const std::string& ptr, std::size_t n, const std::string& what) const {
+    array_of(j, ptr, n, what);
+    std::vector<RPoly> r;
+    for (std::size_t i = 0; i < n; ++i) r.push_back(poly(j[i], child(ptr, i)));
+    return r;
+  }
+  void check_nonvanishing(const RPoly& p, const std::string& ptr, const std::string& name,
+                          const std::string& consequence) const {
+    if (p.is_zero()) fail(ptr, name + " is identically zero" + consequence);
+    if (count_roots_closed(p, mpq_class(0), mpq_class(1)) > 0)
+      fail(ptr, name + " vanishes on [0, 1]: " + name + " = 0 " + locate_root(p) + consequence);
+  }
+
+  std::vector<std::vector<Rational>> shape(const json& j, const std::string& ptr) const;
+  Motion motion(const json& j, const std::string& ptr) const;
+  SceneObject object(const json& j, const std::string& ptr) const;
+  Instant instant(const json& j, const std::string& ptr) const;
+};
+
+Rational Reader::number(const json& j, const std::string& ptr) const {
+  if (j.is_string()) {
+    const std::string& s = j.get_ref<const std::string&>();
+    try {
+      return parse_rational(s);
+    } catch (const std::invalid_argument& e) {
+      fail(ptr, quote(s) + " is not an exact number: " + e.what());
+    }
+  }
+  if (j.is_number_integer()) {  // signed or unsigned: exact
+    std::string digits = j.is_number_unsigned() ? std::to_string(j.get<json::number_unsigned_t>())
+                                                : std::to_string(j.get<json::number_integer_t>());
+    return parse_rational(digits);
+  }
+  if (j.is_number_float()) {
+    std::string raw;
+    if (float_text_) {
+      auto it = float_text_->find(ptr);
+      if (it != float_text_->end()) raw = it->second;
+    }
+    if (raw.empty()) raw = j.dump();
+    const bool integer_text = raw.find_first_of(".eE") == std::string::npos;
+    if (integer_text) {  // an integer too large for 64 bits: the raw digits are exact
+      try {
+        return parse_rational(raw);
+      } catch (const std::invalid_argument&) {
+      }
+    }
+    fail(ptr, "the JSON number " + raw +
+                  " has a fraction part or exponent, and a JSON parser may already have rounded it; "
+                  "write it as a string \"" + raw + "\" for its exact decimal value");
+  }
+  fail(ptr, "expected a number (a string such as \"-3/7\" or \"1.8\", or a JSON integer), got " + type_name(j));
+}
+
+RPoly Reader::poly(const json& j, const std::string& ptr) const {
+  if (j.is_array()) {
+    if (j.empty()) fail(ptr, "empty coefficient array; write [\"0\"] for the zero polynomial");
+    std::vector<Rational> c;
+    for (std::size_t i = 0; i < j.size(); ++i) c.push_back(number(j[i], child(ptr, i)));
+    return RPoly(std::move(c));
+  }
+  if (j.is_object()) {
+    check_keys(j, ptr, {"bernstein"}, "a polynomial in Bernstein form");
+    const std::string bp = child(ptr, "bernstein");
+    const json& b = member(j, ptr, "bernstein", "a polynomial in Bernstein form");
+    if (!b.is_array()) fail(bp, "Bernstein coefficients must be an array [\"c0\", ..., \"cn\"], got " + type_name(b));
+    if (b.empty()) fail(bp, "empty Bernstein coefficient array");
+    Bern<Rational> q;
+    for (std::size_t i = 0; i < b.size(); ++i) q.b.push_back(number(b[i], child(bp, i)));
+    return to_power(q);
+  }
+  if (j.is_string() || j.is_number()) return RPoly::constant(number(j, ptr));
+  fail(ptr,
+       "expected a polynomial: an array of coefficients [\"c0\", \"c1\", ...] (lowest degree first), "
+       "{\"bernstein\": [...]}, or a number string, got " +
+           type_name(j));
+}
+
+std::vector<std::vector<Rational>> Reader::shape(const json& j, const std::string& ptr) const {
+  require_object(j, ptr, "a shape");
+  const std::vector<std::string> kinds = {"semi_axes", "semi_axes_squared", "matrix"};
+  check_keys(j, ptr, kinds, "a shape");
+  std::vector<std::string> given;
+  for (const auto& k : kinds)
+    if (find(j, k)) given.push_back(k);
+  if (given.empty()) fail(ptr, "a shape needs exactly one of the keys semi_axes, semi_axes_squared, matrix");
+  if (given.size() > 1)
+    fail(ptr, "a shape takes exactly one of semi_axes, semi_axes_squared, matrix; this one has " + join(given, " and "));
+  const std::string& kind = given[0];
+  const std::string kp = child(ptr, kind);
+  const json& v = *find(j, kind);
+  const std::string dims = " (dim " + std::to_string(dim_) + ")";
+  const std::size_t n = std::size_t(dim_) + 1;
+  std::vector<std::vector<Rational>> Q(n, std::vector<Rational>(n, Rational(0)));
+
+  if (kind == "semi_axes" || kind == "semi_axes_squared") {
+    const bool squared = kind == "semi_axes_squared";
+    array_of(v, kp, std::size_t(dim_), kind, dims);
+    for (int i = 0; i < dim_; ++i) {
+      Rational a = number(v[i], child(kp, std::size_t(i)));
+      if (sgn(a) <= 0)
+        fail(child(kp, std::size_t(i)),
+             std::string(squared ? "a squared semi-axis" : "a semi-axis") + " must be positive, got " + a.get_str());
+      Rational s = squared ? a : Rational(a * a);
+      Q[i][i] = 1 / s;
+    }
+    Q[dim_][dim_] = -1;
+    return Q;
+  }
+  // matrix
+  const std::string sz = std::to_string(n) + "x" + std::to_string(n);
+  if (!v.is_array() || v.size() != n)
+    fail(kp, "the shape matrix must be a symmetric " + sz + " array of rows" + dims + ", got " +
+                 (v.is_array() ? std::to_string(v.size()) + " rows" : type_name(v)));
+  for (std::size_t r = 0; r < n; ++r) {
+    const std::string rp = child(kp, r);
+    const json& row = v[r];
+    if (!row.is_array() || row.size() != n)
+      fail(rp, "each row of the shape matrix must have " + std::to_string(n) + " entries" + dims + ", got " +
+                   (row.is_array() ? std::to_string(row.size()) : type_name(row)));
+    for (std::size_t c = 0; c < n; ++c) Q[r][c] = number(row[c], child(rp, c));
+  }
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < r; ++c)
+      if (Q[r][c] != Q[c][r])
+        fail(child(child(kp, r), c), "the shape matrix is not symmetric: entry [" + std::to_string(r) + "][" +
+                                         std::to_string(c) + "] = " + Q[r][c].get_str() + " but [" + std::to_string(c) +
+                                         "][" + std::to_string(r) + "] = " + Q[c][r].get_str());
+  QuadricClass qc = classify_quadric(Q, dim_);
+  if (!qc.ok()) {
+    const std::string what = dim_ == 2 ? "conic" : "quadric";
+    const std::string want = dim_ == 2 ? "a real, non-degenerate ellipse" : "a real, non-degenerate ellipsoid";
+    fail(kp, "this " + what + " " + qc.description + "; a shape must be " + want + " with X^T Q X < 0 inside");
+  }
+  return Q;
+}
+
+// Determinant of a small square matrix of polynomials (Laplace, n <= 3).
+RPoly poly_det(const std::vector<std::vector<RPoly>>& a) {
+  const std::size_t n = a.size();
+  if (n == 1) return a[0][0];
+  RPoly d;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (a[0][j].is_zero()) continue;
+    std::vector<std::vector<RPoly>> sub;
+    for (std::size_t i = 1; i < n; ++i) {
+      std::vector<RPoly> row;
+      for (std::size_t k = 0; k < n; ++k)
+        if (k != j) row.push_back(a[i][k]);
+      sub.push_back(std::move(row));
+    }
+    RPoly term = a[0][j] * poly_det(sub);
+    if (j % 2) d -= term; else d += term;
+  }
+  return d;
+}
+
+Motion Reader::motion(const json& j, const std::string& ptr) const {
+  require_object(j, ptr, "a motion");
+  const std::vector<std::string> types = {"static", "matrix", "kinematic", "euler", "cycloidal"};
+  const std::string tp = child(ptr, "type");
+  const json* t = find(j, "type");
+  if (!t) fail(ptr, "missing required key \"type\" in a motion (one of " + join(types) + ")");
+  if (!t->is_string()) fail(tp, "the motion type must be a string (one of " + join(types) + "), got " + type_name(*t));
+  const std::string& type = t->get_ref<const std::string&>();
+  bool known = false;
+  for (const auto& k : types) known = known || k == type;
+  if (!known) fail(tp, "unknown motion type " + quote(type) + "; allowed types: " + join(types));
+  const std::string dims = "dim " + std::to_string(dim_);
+  const std::string allowed_here =
+      dim_ == 2 ? "static, matrix, kinematic, cycloidal" : "static, matrix, euler";
+  if ((type == "kinematic" || type == "cycloidal") && dim_ != 2)
+    fail(tp, "motion type " + quote(type) + " is for dim 2 only, but this scene has " + dims +
+                 " (allowed for " + dims + ": " + allowed_here + ")");
+  if (type == "euler" && dim_ != 3)
+    fail(tp, "motion type \"euler\" is for dim 3 only, but this scene has " + dims + " (allowed for " + dims + ": " +
+                 allowed_here + ")");
+  const std::string what = "a " + type + " motion";
+  const std::size_t n = std::size_t(dim_) + 1;
+
+  if (type == "static") {
+    check_keys(j, ptr, {"type"}, what);
+    return StaticMotion{};
+  }
+  if (type == "matrix") {
+    check_keys(j, ptr, {"type", "m"}, what);
+    const std::string mp = child(ptr, "m");
+    const json& m = member(j, ptr, "m", what);
+    const std::string sz = std::to_string(n) + "x" + std::to_string(n);
+    if (!m.is_array() || m.size() != n)
+      fail(mp, "the motion matrix m must be a " + sz + " array of rows of polynomials (" + dims + "), got " +
+                   (m.is_array() ? std::to_string(m.size()) + " rows" : type_name(m)));
+    MatrixMotion mm;
+    for (std::size_t r = 0; r < n; ++r) {
+      const std::string rp = child(mp, r);
+      const json& row = m[r];
+      if (!row.is_array() || row.size() != n)
+        fail(rp, "each row of the motion matrix must have " + std::to_string(n) + " polynomials (" + dims + "), got " +
+                     (row.is_array() ? std::to_string(row.size()) : type_name(row)));
+      std::vector<RPoly> prow;
+      for (std::size_t c = 0; c < n; ++c) prow.push_back(poly(row[c], child(rp, c)));
+      mm.m.push_back(std::move(prow));
+    }
+    const std::string last_row = dim_ == 2 ? "(0, 0, w(t))" : "(0, 0, 0, w(t))";
+    for (std::size_t c = 0; c + 1 < n; ++c)
+      if (!mm.m[n - 1][c].is_zero())
+        fail(child(child(mp, n - 1), c), "the last row of the motion matrix must be " + last_row +
+                                             ": this entry must be 0, got " + poly_text(mm.m[n - 1][c]));
+    check_nonvanishing(mm.m[n - 1][n - 1], child(child(mp, n - 1), n - 1), "w(t)",
+                       " (the last row of M(t) is " + last_row + ", and w(t) must not vanish on [0, 1])");
+    std::vector<std::vector<RPoly>> block(n - 1);
+    for (std::size_t r = 0; r + 1 < n; ++r) block[r].assign(mm.m[r].begin(), mm.m[r].end() - 1);
+    RPoly d = poly_det(block);
+    const std::string bs = std::to_string(dim_) + "x" + std::to_string(dim_);
+    if (d.is_zero())
+      fail(mp, "singular affine block for every t: the upper-left " + bs + " block of M(t) has determinant 0");
+    if (count_roots_closed(d, mpq_class(0), mpq_class(1)) > 0)
+      fail(mp, "singular affine block " + locate_root(d) + ": the upper-left " + bs +
+                   " block of M(t) must be non-singular on [0, 1] (its determinant is " + poly_text(d) + ")");
+    return mm;
+  }
+  if (type == "kinematic") {
+    check_keys(j, ptr, {"type", "d"}, what);
+    const std::string dp = child(ptr, "d");
+    std::vector<RPoly> d = polys(member(j, ptr, "d", what), dp, 4, "d = [d0, d1, d2, d3]");
+    RPoly s = d[2] * d[2] + d[3] * d[3];
+    check_nonvanishing(s, dp, "d2(t)^2 + d3(t)^2", " (the motion matrix is singular there)");
+    KinematicMotion km;
+    for (int i = 0; i < 4; ++i) km.d[i] = d[i];
+    return km;
+  }
+  if (type == "euler") {
+    check_keys(j, ptr, {"type", "e", "translation", "translation_denominator"}, what);
+    const std::string ep = child(ptr, "e"), vp = child(ptr, "translation"), v3p = child(ptr, "translation_denominator");
+    std::vector<RPoly> e = polys(member(j, ptr, "e", what), ep, 4, "e = [e0, e1, e2, e3]");
+    std::vector<RPoly> v = polys(member(j, ptr, "translation", what), vp, 3, "translation = [v0, v1, v2]");
+    const json* v3j = find(j, "translation_denominator");
+    RPoly v3 = v3j ? poly(*v3j, v3p) : RPoly::constant(Rational(1));
+    RPoly E = e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3];
+    check_nonvanishing(E, ep, "E(t) = e0^2 + e1^2 + e2^2 + e3^2", " (the rotation is undefined there)");
+    check_nonvanishing(v3, v3p, "the translation denominator v3(t)", "");
+    EulerMotion em;
+    for (int i = 0; i < 4; ++i) em.e[i] = e[i];
+    for (int i = 0; i < 3; ++i) em.v[i] = v[i];
+    em.v3 = v3;
+    return em;
+  }
+  // cycloidal
+  check_keys(j, ptr, {"type", "angle_over_pi", "translation"}, what);
+  const std::string ap = child(ptr, "angle_over_pi"), trp = child(ptr, "translation");
+  const json& a = array_of(member(j, ptr, "angle_over_pi", what), ap, 2, "angle_over_pi = [theta0, theta1]");
+  const json& tr = array_of(member(j, ptr, "translation", what), trp, 2, "translation = [[x0, x1], [y0, y1]]");
+  CycloidalMotion cm;
+  cm.theta0 = number(a[0], child(ap, 0));
+  cm.theta1 = number(a[1], child(ap, 1));
+  const json& tx = array_of(tr[0], child(trp, 0), 2, "the x translation [x0, x1]");
+  const json& ty = array_of(tr[1], child(trp, 1), 2, "the y translation [y0, y1]");
+  for (std::size_t i = 0; i < 2; ++i) {
+    cm.x[i] = number(tx[i], child(child(trp, 0), i));
+    cm.y[i] = number(ty[i], child(child(trp, 1), i));
+  }
+  return cm;
+}
+
+SceneObject Reader::object(const json& j, const std::string& ptr) const {
+  const std::string what = "object " + ptr.substr(1);
+  require_object(j, ptr, what);
+  check_keys(j, ptr, {"shape", "motion"}, what);
+  const json& s = member(j, ptr, "shape", what);
+  const json& m = member(j, ptr, "motion", what);
+  SceneObject o;
+  o.Q = shape(s, child(ptr, "shape"));
+  o.motion = motion(m, child(ptr, "motion"));
+  return o;
+}
+
+Instant Reader::instant(const json& j, const std::string& ptr) const {
+  const std::string what = "an instant {\"approx\": ..., \"lo\": ..., \"hi\": ...}";
+  if (!j.is_object()) fail(ptr, "expected " + what + ", got " + type_name(j));
+  check_keys(j, ptr, {"approx", "lo", "hi"}, "an instant");
+  const json& ap = member(j, ptr, "approx", "an instant");
+  if (!ap.is_string()) fail(child(ptr, "approx"), "approx must be a decimal string, got " + type_name(ap));
+  Instant in;
+  in.approx = ap.get<std::string>();
+  const json* lo = find(j, "lo");
+  const json* hi = find(j, "hi");
+  const bool has_lo = lo && !lo->is_null(), has_hi = hi && !hi->is_null();
+  if (has_lo) in.lo = number(*lo, child(ptr, "lo"));
+  if (has_hi) in.hi = number(*hi, child(ptr, "hi"));
+  if (has_lo != has_hi)
+    fail(ptr, std::string("lo and hi must both be rational strings (certified) or both null; here ") +
+                  (has_lo ? "hi" : "lo") + " is null");
+  if (has_lo && *in.lo > *in.hi)
+    fail(ptr, "lo > hi: lo = " + in.lo->get_str() + ", hi = " + in.hi->get_str());
+  return in;
+}
+
+Answer Reader::answer(const json& j, const std::string& ptr) {
+  const std::string what = "an answer";
+  require_object(j, ptr, what);
+  check_keys(j, ptr, {"collides", "intervals", "first_contact", "contacts"}, what);
+  const json& c = member(j, ptr, "collides", what);
+  if (!c.is_boolean()) fail(child(ptr, "collides"), "collides must be true or false, got " + type_name(c));
+  Answer a;
+  a.collides = c.get<bool>();
+  const std::string ip = child(ptr, "intervals"), fp = child(ptr, "first_contact"), cp = child(ptr, "contacts");
+  const json* iv = find(j, "intervals");
+  if (iv) {
+    if (!iv->is_array()) fail(ip, "intervals must be an array of [start, end] pairs of instants, got " + type_name(*iv));
+    for (std::size_t i = 0; i < iv->size(); ++i) {
+      const std::string p = child(ip, i);
+      const json& pair = (*iv)[i];
+      if (!pair.is_array() || pair.size() != 2)
+        fail(p, "an interval must be [start, end], an array of 2 instants, got " +
+                    (pair.is_array() ? std::to_string(pair.size()) + " entries" : type_name(pair)));
+      a.intervals.emplace_back(instant(pair[0], child(p, 0)), instant(pair[1], child(p, 1)));
+    }
+  }
+  const json* fc = find(j, "first_contact");
+  if (fc && !fc->is_null()) a.first_contact = instant(*fc, fp);
+  const json* ct = find(j, "contacts");
+  if (ct) {
+    if (!ct->is_array()) fail(cp, "contacts must be an array of instants, got " + type_name(*ct));
+    for (std::size_t i = 0; i < ct->size(); ++i) a.contacts.push_back(instant((*ct)[i], child(cp, i)));
+  }
+  if (!a.collides) {
+    if (!a.intervals.empty()) fail(ip, "collides is false but intervals is not empty");
+    if (a.first_contact) fail(fp, "collides is false but first_contact is not null");
+    if (!a.contacts.empty()) fail(cp, "collides is false but contacts is not empty");
+  } else if (iv && a.intervals.empty()) {
+    fail(ip, "collides is true but intervals is empty");
+  }
+  return a;
+}
+
+Scene Reader::scene(const json& root) {
+  const std::string fmt = "ellipse-ccd-scene/1";
+  if (!root.is_object()) fail("", "a scene must be a JSON object {...}, got " + type_name(root));
+  const json* f = find(root, "format");
+  if (!f) fail("", "missing required key \"format\" (it must be \"" + fmt + "\")");
+  if (!f->is_string() || f->get_ref<const std::string&>() != fmt)
+    fail("/format", "unsupported format " + (f->is_string() ? quote(f->get<std::string>()) : type_name(*f)) +
+                        "; this program reads \"" + fmt + "\"");
+  const std::string what = "a scene";
+  check_keys(root, "", {"format", "name", "dim", "a", "b", "note", "answer"}, what);
+  const json& name = member(root, "", "name", what);
+  const json& dim = member(root, "", "dim", what);
+  const json& a = member(root, "", "a", what);
+  const json& b = member(root, "", "b", what);
+
+  Scene s;
+  s.path = label_;
+  if (!name.is_string() || name.get_ref<const std::string&>().empty())
+    fail("/name", "name must be a non-empty string, got " + (name.is_string() ? std::string("\"\"") : type_name(name)));
+  s.name = name.get<std::string>();
+  Rational d = number(dim, "/dim");
+  if (d != 2 && d != 3) fail("/dim", "dim must be 2 (ellipses) or 3 (ellipsoids), got " + d.get_str());
+  dim_ = d == 2 ? 2 : 3;
+  s.dim = dim_;
+  if (const json* note = find(root, "note")) {
+    if (!note->is_string()) fail("/note", "note must be a string, got " + type_name(*note));
+    s.note = note->get<std::string>();
+  }
+  s.a = object(a, "/a");
+  s.b = object(b, "/b");
+  if (const json* ans = find(root, "answer"); ans && !ans->is_null()) s.answer = answer(*ans, "/answer");
+  return s;
+}
+
+// "line L, column C: reason" for an error the JSON parser reported at byte `pos`.
+std::string json_error_text(const std::string& text, std::size_t pos, const std::string& what) {
+  if (pos > text.size()) pos = text.size();
+  std::size_t line = 1, line_start = 0;
+  for (std::size_t i = 0; i < pos; ++i)
+    if (text[i] == '\n') { ++line; line_start = i + 1; }
+  std::size_t column = pos - line_start;
+  if (column == 0) column = 1;
+  // Prefer the parser's own "at line L, column C" when its message has one.
+  if (auto k = what.find(" at line "); k != std::string::npos) {
+    unsigned long l = 0, c = 0;
+    if (std::sscanf(what.c_str() + k, " at line %lu, column %lu", &l, &c) == 2) { line = l; column = c; }
+  }
+  std::string reason = what;
+  if (auto k = reason.find("] "); k != std::string::npos && reason.rfind("[json.exception.", 0) == 0)
+    reason = reason.substr(k + 2);
+  if (reason.rfind("parse error", 0) == 0)
+    if (auto k = reason.find(": "); k != std::string::npos) reason = reason.substr(k + 2);
+  if (reason.find("number overflow") != std::string::npos)
+    reason += " (write large numbers as strings, e.g. \"1e400\")";
+  return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": malformed JSON: " + reason;
+}
+
+}  // namespace
+
+Answer answer_from_json(const json& j, const std::string& file_label, const std::string& place) {
+  Reader r(file_label, nullptr);
+  try {
+    return r.answer(j, place);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {  // safety net: never let a library exception escape
+    r.fail(place, std::string("internal error while reading the answer: ") + e.what());
+  }
+}
+
+Scene parse_scene(const std::string& json_text, const std::string& file_label) {
+  DomBuilder b;
+  bool ok = false;
+  try {
+    ok = json::sax_parse(json_text, &b);
+  } catch (const std::exception& e) {
+    throw SceneError(file_label + ": " + json_error_text(json_text, json_text.size(), e.what()));
+  }
+  if (!b.error_what.empty()) throw SceneError(file_label + ": " + place_text(b.error_place) + ": " + b.error_what);
+  if (b.json_error || !ok)
+    throw SceneError(file_label + ": " + json_error_text(json_text, b.error_byte, b.json_error_what));
+  Reader r(file_label, &b.float_text);
+  try {
+    return r.scene(b.root);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {  // safety net
+    throw SceneError(file_label + ": top level: internal error while reading the scene: " + std::string(e.what()));
+  }
+}
+
+Scene read_scene_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneError(path + ": cannot read the file: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot read the file: " + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw SceneError(path + ": cannot read the file: read error");
+  return parse_scene(ss.str(), path);
+}
+
+}  // namespace eccd

@@ -1,0 +1,86 @@
+#pragma once
+// Scene reader: reads and validates a scene file into a Scene (kernel/scene.hpp).
+//
+// Statement. Implements ../shared/spec/scene-format.md, format
+// "ellipse-ccd-scene/1": exact numbers, polynomials in t (power or Bernstein
+// form), shapes (semi_axes, semi_axes_squared, matrix), motions (static,
+// matrix, kinematic, euler, cycloidal) and the optional stored answer.
+// Every check a scene can fail raises SceneError with the message
+//     FILE: PLACE: what is wrong
+// where PLACE is the JSON pointer of the offending value (e.g. /a/motion/d/2),
+// "top level" for the whole document, or "line L, column C" for malformed
+// JSON. No other exception escapes read_scene_file / parse_scene (apart from
+// std::bad_alloc). Requirements: GMP rationals (exact/rational_traits.hpp),
+// nlohmann json 3.11. All decisions (positivity, symmetry, conic type,
+// vanishing of w(t), det, E(t), ...) are exact: rationals and Sturm counts.
+//
+// Choices where the spec leaves room (what a user would expect):
+//  1. Number strings: an optional sign then an integer ("-63", "+5", "007"),
+//     a fraction of integers ("-3/7"; denominator digits only, non-zero;
+//     "6/4" is read as 3/2), or a decimal with optional exponent ("1.8",
+//     "2.5e-3", "-.5", "5.", "1E3"), read as its exact decimal value.
+//     Rejected: whitespace anywhere, hex, "inf"/"nan", "1.5/2", "1/-2", a
+//     decimal without digits ("." / "e5"), |exponent| > 10000.
+//  2. JSON integers of any size are exact (the reader keeps the raw digits of
+//     integers beyond 64 bits; only integers beyond the double range are
+//     refused by the JSON parser as "number overflow"). A JSON number with a
+//     fraction part or exponent (1.8, 1e3, 2.0) is always rejected.
+//  3. "dim" is any exact number equal to 2 or 3 (2 or "2").
+//  4. "name" must be a non-empty string; "note" a string; "answer": null is
+//     the same as no answer.
+//  5. Each of "a" and "b" needs both "shape" and "motion" (no default motion).
+//  6. A duplicate key in any object is an error (JSON parsers silently keep
+//     one of the values). Nesting deeper than 64 levels is an error.
+//  7. Unknown keys are reported at the pointer of the key itself, with the
+//     allowed keys listed; the "format" key is checked before everything else.
+//  8. A polynomial may also be a bare JSON integer (a constant). A coefficient
+//     array ["0"] is the zero polynomial; an empty array is an error.
+//  9. A "matrix" shape is kept as given (not normalised). A "matrix" motion's
+//     last-row entries must be the zero polynomial (after dropping zero
+//     coefficients: ["0", "0"] is fine).
+// 10. Where a polynomial vanishes on [0, 1], the message gives the root
+//     exactly ("at t = 1/3") when it is rational with denominator < 2^15,
+//     otherwise a rational bracket of width 2^-30 ("at t in [lo, hi]").
+// 11. Answer: "collides" is required; "intervals" and "contacts" default to
+//     [], "first_contact" to null. In an instant, "approx" is a required
+//     string (not parsed); "lo"/"hi" may be missing (= null) but must be
+//     both null or both numbers, with lo <= hi. collides = false requires
+//     empty intervals/contacts and a null first_contact; collides = true
+//     with an explicitly empty "intervals" is an error.
+// 12. answer_to_json writes the four spec keys always, and the extras
+//     (contact_points, contact_intervals, undecided) only when non-empty;
+//     answer_from_json rejects the extras (they are not part of a stored
+//     answer).
+// 13. Scene::path is set to the file label (the path for read_scene_file).
+//     An unreadable file gives "FILE: cannot read the file: reason".
+#include "exact/rational_traits.hpp"
+#include "kernel/answer.hpp"
+#include "kernel/scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace eccd {
+
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Reads and validates a scene; throws SceneError "FILE: PLACE: what is wrong".
+Scene read_scene_file(const std::string& path);
+Scene parse_scene(const std::string& json_text, const std::string& file_label);
+
+// Exact value of a number string (choice 1 above). Throws std::invalid_argument
+// whose what() is the reason (the reader turns it into a SceneError).
+Rational parse_rational(const std::string& text);
+
+// An answer in the spec's format; instants {"approx", "lo", "hi"} with lo/hi
+// "p/q" strings, or null when not certified (choice 12 for the extras).
+nlohmann::json answer_to_json(const Answer& answer);
+// The stored "answer" of a scene at JSON pointer `place` of file `file_label`;
+// throws SceneError.
+Answer answer_from_json(const nlohmann::json& j, const std::string& file_label, const std::string& place);
+
+}  // namespace eccd
