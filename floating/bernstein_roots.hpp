@@ -1,0 +1,125 @@
+#pragma once
+// Real roots in [0, 1] of a polynomial in Bernstein form, by de Casteljau
+// subdivision, in rounded arithmetic.
+//
+// Statement. 003 section VI-C (Variants 2 and 3): subdivide Δ(t) by de
+// Casteljau and discard a piece whose Bernstein coefficients all have one
+// strict sign (convex hull property). Here a piece whose coefficients have
+// exactly one sign change and whose end values have opposite strict signs
+// holds exactly one simple root (Descartes' rule for the Bernstein basis), and
+// is refined by bisection to the working precision. A piece narrower than
+// `cluster_width` that is neither is reported as a root cluster (a double
+// root, as at a touch, or roots closer than the arithmetic can separate);
+// roots closer than cluster_width to each other are merged into one cluster. `first_only` stops after the leftmost root
+// (Variant 2). Nothing here is certified: with rounded coefficients a
+// reported root may be spurious and a double root may be missed; that is what
+// the harness measures against the exact pipeline.
+// Requirements on T: +, -, *, comparison, scalar_traits<T> (precision).
+// Known failure modes: a double root perturbed by ε splits or vanishes at
+// distance ~ sqrt(ε), so roots closer than cluster_width = 2^-min(p/2+2, 64)
+// are merged; when the rounding noise of Δ is far above 2^-p a double root
+// can still split into two reported roots.
+#include "kernel/bernstein.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace eccd {
+
+template <class T>
+struct FloatRoot {
+  T lo, hi, value;     // the root lies in [lo, hi] as far as rounded arithmetic can tell
+  bool cluster = false;  // true: a multiple root or an unresolved cluster
+};
+
+template <class T>
+struct BernsteinRootOptions {
+  int precision_bits = 53;
+  bool first_only = false;
+};
+
+template <class T>
+std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootOptions<T>& opt) {
+  const T& like = like_of(p.b);
+  auto pow2 = [&](int e) {  // 2^e as a T of the run's precision
+    mpq_class q = 1;
+    if (e >= 0) q = mpq_class(mpz_class(1) << e); else q = mpq_class(1, mpz_class(1) << (-e));
+    return scalar_traits<T>::from_rational(q, like);
+  };
+  // Below this width a piece that still may hold roots is a cluster: roots
+  // this close cannot be told from a double root in p-bit arithmetic, and
+  // deeper subdivision (O(n²) per level) would not make a double root better
+  // conditioned. Capped at 2^-64: cluster instants are reported to ~5e-20.
+  const T cluster_width = pow2(-std::min(opt.precision_bits / 2 + 2, 64));
+  const T simple_width = pow2(-(opt.precision_bits - 3));
+  const T half = pow2(-1);
+  std::vector<FloatRoot<T>> out;
+
+  auto strict_one_sign = [](const Bern<T>& q) {
+    Sign s0 = sign(q.b.front());
+    if (s0 == Sign::zero || s0 == Sign::uncertain) return false;
+    for (const auto& x : q.b) if (sign(x) != s0) return false;
+    return true;
+  };
+  auto add = [&](FloatRoot<T> r) {
+    if (!out.empty() && !(r.lo - out.back().hi > cluster_width)) {
+      // closer to the previous one than the arithmetic can separate two
+      // roots (a perturbed double root splits by ~sqrt(eps)): one cluster
+      out.back().hi = r.hi;
+      out.back().value = half * (out.back().lo + out.back().hi);
+      out.back().cluster = true;
+      return;
+    }
+    out.push_back(std::move(r));
+  };
+
+  struct Piece { Bern<T> q; T a, b; };
+  std::vector<Piece> stack;  // depth-first, leftmost first
+  const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
+  const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  stack.push_back({p, zero, one});
+  while (!stack.empty()) {
+    Piece pc = std::move(stack.back());
+    stack.pop_back();
+    if (opt.first_only && !out.empty() && pc.a > out.back().hi) break;  // leftmost root is final
+    if (strict_one_sign(pc.q)) continue;
+    T w = pc.b - pc.a;
+    Sign sa = sign(pc.q.b.front()), sb = sign(pc.q.b.back());
+    if (pc.q.sign_variations() == 1 && sa != Sign::zero && sb != Sign::zero && sa != sb) {
+      // exactly one simple root: Illinois (modified regula falsi), which
+      // converges superlinearly, down to the working precision
+      T lo = zero, hi = one, flo = pc.q.b.front(), fhi = pc.q.b.back();
+      int side = 0;
+      for (int it = 0; it < 4 * opt.precision_bits && hi - lo > simple_width; ++it) {
+        T den = fhi - flo;
+        T x = (lo * fhi - hi * flo) / den;
+        if (!(x > lo && x < hi)) x = half * (lo + hi);
+        T fx = pc.q(x);
+        Sign sx = sign(fx);
+        if (sx == Sign::zero) { lo = x; hi = x; break; }
+        if (sx == sa) {
+          lo = x; flo = fx;
+          if (side == -1) fhi = half * fhi;
+          side = -1;
+        } else {
+          hi = x; fhi = fx;
+          if (side == 1) flo = half * flo;
+          side = 1;
+        }
+      }
+      T rlo = pc.a + w * lo, rhi = pc.a + w * hi;
+      add({rlo, rhi, half * (rlo + rhi), false});
+    } else if (!(w > cluster_width)) {
+      add({pc.a, pc.b, half * (pc.a + pc.b), true});
+    } else {
+      auto [l, r] = split(pc.q, half);
+      T m = half * (pc.a + pc.b);
+      stack.push_back({std::move(r), m, pc.b});
+      stack.push_back({std::move(l), pc.a, m});
+    }
+  }
+  return out;
+}
+
+}  // namespace eccd

@@ -1,0 +1,94 @@
+#pragma once
+// The floating CD-DISC pipelines (double and MPFR): the policy that
+// kernel/cd_disc.hpp needs in rounded arithmetic.
+//
+// Statement. 003 section VI-C: Δ(t) built in one of three ways, then its
+// roots in [0, 1] found by Bernstein subdivision (floating/bernstein_roots.hpp):
+//   power             g_i and Δ in the power basis, Δ converted to Bernstein
+//                     form for the subdivision (what 003 found unstable);
+//   bernstein         g_i converted to Bernstein form, Δ built there (003's
+//                     Variants 2 and 3);
+//   scaled_bernstein  g_i converted to scaled Bernstein form, Δ built there by
+//                     plain convolutions (003's Variant 1).
+// Signs at a root are the signs of the computed values at the root's
+// approximation: nothing here is certified.
+// Requirements on T: scalar_traits<T> with is_exact == false.
+#include "floating/bernstein_roots.hpp"
+#include "kernel/answer.hpp"
+#include "kernel/cd_disc.hpp"
+#include "kernel/scaled_bernstein.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace eccd {
+
+enum class Basis { power, bernstein, scaled_bernstein };
+
+inline const char* to_string(Basis b) {
+  switch (b) {
+    case Basis::power: return "power";
+    case Basis::bernstein: return "bernstein";
+    default: return "scaled-bernstein";
+  }
+}
+inline Basis parse_basis(const std::string& s) {
+  if (s == "power") return Basis::power;
+  if (s == "bernstein") return Basis::bernstein;
+  if (s == "scaled-bernstein" || s == "scaled") return Basis::scaled_bernstein;
+  throw std::invalid_argument("unknown basis '" + s + "' (power, bernstein, scaled-bernstein)");
+}
+
+template <class T>
+struct FloatingPolicy {
+  using Rep = Bern<T>;
+  using Root = FloatRoot<T>;
+  Basis basis = Basis::bernstein;
+  int bits = 53;
+  T like;
+
+  FloatingPolicy(Basis b, int precision_bits, const T& like_value) : basis(b), bits(precision_bits), like(like_value) {}
+
+  template <class F>
+  Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
+    if (basis == Basis::power) {
+      Poly<T> r = formula(g[3], g[2], g[1], g[0]);
+      return to_bernstein(r, std::max(r.degree(), 0));
+    }
+    Bern<T> b[4];
+    for (int i = 0; i < 4; ++i) {
+      b[i] = to_bernstein(g[i], std::max(g[i].degree(), 0));
+      if (g[i].is_zero()) b[i].b.assign(1, T(0) * like);
+    }
+    if (basis == Basis::bernstein) return formula(b[3], b[2], b[1], b[0]);
+    ScaledBern<T> s[4];
+    for (int i = 0; i < 4; ++i) s[i] = to_scaled(b[i]);
+    return to_bernstein(formula(s[3], s[2], s[1], s[0]));
+  }
+  bool identically_zero(const Bern<T>& q) const {
+    for (const auto& x : q.b) if (!is_zero(x)) return false;
+    return true;
+  }
+  std::vector<Root> roots(const Bern<T>& q, bool first_only) const {
+    BernsteinRootOptions<T> o;
+    o.precision_bits = bits;
+    o.first_only = first_only;
+    return bernstein_roots(q, o);
+  }
+  Sign sign_at(const Bern<T>& q, const Root& r) const { return eccd::sign(q(r.value)); }
+  Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
+  T sample_between(const Root* l, const Root* r) const {
+    T a = l ? l->hi : scalar_traits<T>::from_rational(mpq_class(0), like);
+    T b = r ? r->lo : scalar_traits<T>::from_rational(mpq_class(1), like);
+    T s = a + b;
+    return scalar_traits<T>::from_rational(mpq_class(1, 2), like) * s;
+  }
+  Instant instant_at(const T& t) const { return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt}; }
+  Instant instant(const Root& r) const { return instant_at(r.value); }
+  T value(const Root& r) const { return r.value; }
+  int multiplicity(const Root& r) const { return r.cluster ? 2 : 1; }
+  bool at_zero(const Root& r) const { return !(r.lo > scalar_traits<T>::from_rational(mpq_class(0), like)); }
+  bool at_one(const Root& r) const { return !(r.hi < scalar_traits<T>::from_rational(mpq_class(1), like)); }
+};
+
+}  // namespace eccd

@@ -1,0 +1,245 @@
+#pragma once
+// CD-DISC: continuous collision detection of two moving elliptic disks
+// (003 sections III, IV and VI), written once for every arithmetic.
+//
+// Statement. f(λ;t) = det(λA(t) - B(t)) = g3 λ³ + g2 λ² + g1 λ + g0 (003 eq.
+// (1)); Δ(t) its discriminant in λ (eq. (2)). Between consecutive real roots
+// of Δ in [0, 1] the disks are either separate or overlapping throughout
+// (status changes need a multiple root, Theorem 6, Corollary 7), so each cell
+// is decided at one sample instant (kernel/contact_status.hpp). At a root t0
+// of Δ, f has a multiple root; they touch externally iff it is a negative
+// double root (Theorem 6.1; 003 VI-B: not every root of Δ is a contact, e.g.
+// concentric circles), decided from the signs of P = 9g3g0 - g2g1 and
+// D = g2² - 3g3g1 at t0; otherwise they overlap at t0. t = 0 and t = 1 are
+// decided directly. The variants of 003 VI-C: 1 = collides?, 2 = first
+// contact, 3 = all external contacts with contact points (Lemma 5); 0 (default)
+// = the scene answer, with the maximal intervals of the collision set.
+// Δ ≡ 0: f has a multiple root for every t, so the disks are never separate
+// (Corollary 7): the collision set is [0, 1]; they touch where P·D < 0.
+//
+// The Policy supplies what differs by arithmetic (design.md: "only the places
+// where the mathematics really differs branch"):
+//   Rep                  how Δ, P, D are held (Poly<T> exact, Bern<T> floating)
+//   Root                 a root of Δ in [0, 1]
+//   build(g, formula)    Δ, P or D from g (formula applied in the ring of Rep)
+//   identically_zero(r)
+//   roots(delta, first_only)          sorted roots of Δ in [0, 1]
+//   sign_at(q, root)                  sign of q at a root (exact: proved)
+//   sign_at_value(q, t)               sign of q at an instant t of type T
+//   multiplicity(root)                as a root of Δ (floating: 1 simple, 2 cluster)
+//   sample_between(root*, root*)      an instant strictly between (nullptr = 0 / 1)
+//   instant(root), instant_at(T)      Answer instants
+//   value(root)                       a T near the root (contact points, display)
+//   at_zero(root), at_one(root)
+// Requirements on T: scalar_traits<T>, ring operations.
+#include "kernel/answer.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/contact_status.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace eccd {
+
+enum class Variant { answer = 0, collides = 1, first_contact = 2, all_contacts = 3 };
+
+template <class T>
+struct CdDiscResult {
+  Answer answer;
+  Variant variant = Variant::answer;
+  std::vector<Poly<T>> g;           // g_0 .. g_3, power form
+  int delta_degree = -1;            // degree of Δ as built in this arithmetic and basis
+  bool delta_identically_zero = false;
+  Status status_at_0 = Status::uncertain;
+  struct Critical { Instant t; Status status; int multiplicity = 0; };
+  std::vector<Critical> critical;   // roots of Δ in [0, 1] with their status
+  struct Cell { Instant sample; Status status; };
+  std::vector<Cell> cells;
+  double seconds = 0;
+};
+
+// The contact point of Lemma 5: the null vector of λ0 A(t) - B(t), λ0 = P / (2D).
+template <class T>
+ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b, const std::vector<Poly<T>>& g, const T& t) {
+  T g3 = g[3](t), g2 = g[2](t), g1 = g[1](t), g0 = g[0](t);
+  T p = double_root_numerator(g3, g2, g1, g0), d = double_root_denominator(g3, g2, g1);
+  ContactPoint cp;
+  if (is_zero(d)) return cp;
+  T lam = p / (T(2) * d);
+  Matrix<T, 3> m{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) { T x = lam * a[i][j](t); m[i][j] = x - b[i][j](t); }
+  // null vector: the largest cross product of two rows (rank 2, Lemma 5)
+  T best[3] = {T(0), T(0), T(0)};
+  double bestn = -1;
+  for (int r = 0; r < 3; ++r) {
+    const auto& u = m[r];
+    const auto& v = m[(r + 1) % 3];
+    T c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    double n = std::abs(to_double(c[0])) + std::abs(to_double(c[1])) + std::abs(to_double(c[2]));
+    if (n > bestn) { bestn = n; best[0] = c[0]; best[1] = c[1]; best[2] = c[2]; }
+  }
+  if (is_zero(best[2])) return cp;
+  T x = best[0] / best[2], y = best[1] / best[2];
+  auto show = [](const T& v) {  // display only
+    if constexpr (scalar_traits<T>::is_exact) return decimal_string(v); else return scalar_traits<T>::to_string(v);
+  };
+  cp.x = {show(x), show(y)};
+  return cp;
+}
+
+template <class T, class Policy>
+CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant variant = Variant::answer) {
+  auto start = std::chrono::steady_clock::now();
+  CdDiscResult<T> res;
+  res.variant = variant;
+  const PolyMatrix<T, 3> A = moving_quadric<T, 3>(pair.qa, pair.na);
+  const PolyMatrix<T, 3> B = moving_quadric<T, 3>(pair.qb, pair.nb);
+  res.g = characteristic_coefficients<T, 3>(A, B);
+  const auto& g = res.g;
+  const T& like = pair.qa[0][0];
+  const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
+  const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+
+  auto status_at = [&](const T& t) { return cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t)); };
+  res.status_at_0 = status_at(zero);
+
+  auto delta = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+    return cubic_discriminant(g3, g2, g1, g0);
+  });
+  auto P = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+    return double_root_numerator(g3, g2, g1, g0);
+  });
+  auto D = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) {
+    return double_root_denominator(g3, g2, g1);
+  });
+  res.delta_degree = delta.degree();
+  Answer& ans = res.answer;
+  const Instant i0 = pol.instant_at(zero), i1 = pol.instant_at(one);
+
+  auto finish = [&]() {
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return res;
+  };
+
+  if (pol.identically_zero(delta)) {
+    res.delta_identically_zero = true;
+    ans.collides = true;
+    ans.intervals.push_back({i0, i1});
+    ans.first_contact = i0;
+    // Touching where the double root P/(2D) is negative: cells between roots of P·D.
+    auto PD = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+      return double_root_numerator(g3, g2, g1, g0) * double_root_denominator(g3, g2, g1);
+    });
+    if (!pol.identically_zero(PD)) {
+      auto rts = pol.roots(PD, false);
+      for (std::size_t i = 0; i <= rts.size(); ++i) {
+        T s = pol.sample_between(i ? &rts[i - 1] : nullptr, i < rts.size() ? &rts[i] : nullptr);
+        Status st = status_at_multiple_root(pol.sign_at_value(P, s), pol.sign_at_value(D, s));
+        res.cells.push_back({pol.instant_at(s), st});
+        if (st == Status::touching)
+          ans.contact_intervals.push_back({i ? pol.instant(rts[i - 1]) : i0, i < rts.size() ? pol.instant(rts[i]) : i1});
+      }
+    }
+    return finish();
+  }
+
+  // Variants 1 and 2 (003 VI-C) stop at the first root when the disks start separate.
+  bool first_only = (variant == Variant::collides || variant == Variant::first_contact);
+  if (first_only && res.status_at_0 != Status::separate) {
+    ans.collides = res.status_at_0 != Status::uncertain;
+    ans.first_contact = i0;
+    if (res.status_at_0 == Status::uncertain) ans.undecided.push_back(i0);
+    return finish();
+  }
+  auto rts = pol.roots(delta, first_only);
+  if (first_only) {
+    ans.collides = !rts.empty();
+    if (!rts.empty()) ans.first_contact = pol.instant(rts.front());
+    for (auto& r : rts) res.critical.push_back({pol.instant(r), Status::touching, 0});
+    return finish();
+  }
+
+  // The sequence instant, cell, instant, ..., cell, instant over [0, 1].
+  struct Node { Instant t; Status status; bool is_cell; const typename Policy::Root* root; };
+  std::vector<Node> seq;
+  std::vector<const typename Policy::Root*> interior;
+  const typename Policy::Root* root0 = nullptr;
+  const typename Policy::Root* root1 = nullptr;
+  for (auto& r : rts) {
+    if (pol.at_zero(r)) root0 = &r;
+    else if (pol.at_one(r)) root1 = &r;
+    else interior.push_back(&r);
+  }
+  auto root_status = [&](const typename Policy::Root& r) {
+    return status_at_multiple_root(pol.sign_at(P, r), pol.sign_at(D, r));
+  };
+  auto endpoint_status = [&](const T& t, const typename Policy::Root* r) {
+    Status s = status_at(t);
+    if (r && root_status(*r) == Status::touching) s = Status::touching;
+    return s;
+  };
+  seq.push_back({i0, endpoint_status(zero, root0), false, root0});
+  for (std::size_t i = 0; i <= interior.size(); ++i) {
+    const typename Policy::Root* l = i ? interior[i - 1] : nullptr;
+    const typename Policy::Root* r = i < interior.size() ? interior[i] : nullptr;
+    T s = pol.sample_between(l, r);
+    Status cs = status_at(s);
+    seq.push_back({pol.instant_at(s), cs, true, nullptr});
+    res.cells.push_back({pol.instant_at(s), cs});
+    if (r) seq.push_back({pol.instant(*r), root_status(*r), false, r});
+  }
+  seq.push_back({i1, endpoint_status(one, root1), false, root1});
+
+  // An instant that is neither touching nor next to an overlapping cell would
+  // contradict Corollary 7 (Δ = 0 there, so not separate; overlap is open in t).
+  for (std::size_t k = 2; k + 2 < seq.size(); k += 2) {
+    Node& n = seq[k];
+    if (n.status == Status::overlapping && seq[k - 1].status == Status::separate && seq[k + 1].status == Status::separate) {
+      if constexpr (scalar_traits<T>::is_exact)
+        throw std::logic_error("internal error: an isolated overlapping instant between separate cells");
+      else
+        n.status = Status::uncertain;
+    }
+  }
+  for (std::size_t k = 0; k < seq.size(); ++k)
+    if (!seq[k].is_cell && seq[k].root) {
+      res.critical.push_back({seq[k].t, seq[k].status, seq[k].root ? pol.multiplicity(*seq[k].root) : 0});
+    }
+
+  // Maximal runs of nodes in the collision set are the intervals of C.
+  for (std::size_t k = 0; k < seq.size(); ++k) {
+    const Node& n = seq[k];
+    if (n.status == Status::uncertain) { ans.undecided.push_back(n.t); continue; }
+    if (!n.is_cell && n.status == Status::touching) {
+      ans.contacts.push_back(n.t);
+      if (n.root) ans.contact_points.push_back(contact_point(A, B, g, pol.value(*n.root)));
+      else ans.contact_points.push_back(contact_point(A, B, g, k == 0 ? zero : one));
+    }
+    if (!in_collision(n.status)) continue;
+    std::size_t e = k;
+    while (e + 1 < seq.size() && in_collision(seq[e + 1].status)) {
+      ++e;
+      if (!seq[e].is_cell && seq[e].status == Status::touching && e != k) {
+        ans.contacts.push_back(seq[e].t);
+        ans.contact_points.push_back(contact_point(A, B, g, seq[e].root ? pol.value(*seq[e].root) : one));
+      }
+    }
+    // A run starts and ends at instants (a cell in C has its end instants in
+    // C); a rounded run that starts or ends on a cell is widened to the
+    // neighbouring instant.
+    const Instant& first = seq[k].is_cell ? seq[k - 1].t : seq[k].t;
+    const Instant& last = seq[e].is_cell ? seq[e + 1].t : seq[e].t;
+    ans.intervals.push_back({first, last});
+    k = e;
+  }
+  ans.collides = !ans.intervals.empty();
+  if (ans.collides) ans.first_contact = ans.intervals.front().first;
+  if (variant == Variant::all_contacts) ans.intervals.clear();
+  return finish();
+}
+
+}  // namespace eccd
