@@ -1,0 +1,164 @@
+// eccd: the workbench's command-line front door.
+//   eccd solve SCENE [--arith double|mpfr:BITS|exact] [--basis ...] [--variant N] [--json]
+//   eccd table [DIR] [--mpfr BITS ...] [--json]   every scene of DIR in every arithmetic, side by side
+// Exit status: 0 success; 1 internal error; 2 bad input (a scene file or an
+// option); 3 a request the pipeline refuses (e.g. a cycloidal motion in exact
+// arithmetic). Nothing is written to stdout unless the command succeeds.
+#include "app/solve.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace eccd;
+
+namespace {
+
+std::string short_answer(const nlohmann::json& r) {
+  if (!r.contains("collides")) return "error";
+  std::ostringstream o;
+  o << (r["collides"].get<bool>() ? "collides" : "free");
+  if (r["intervals"].is_array() && !r["intervals"].empty()) {
+    o << " " << r["intervals"].size() << "iv";
+    std::string fc = r["first_contact"]["approx"].get<std::string>();
+    o << " t0=" << fc.substr(0, std::min<std::size_t>(fc.size(), 10));
+  }
+  if (!r["undecided"].empty()) o << " ?" << r["undecided"].size();
+  return o.str();
+}
+
+int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool json) {
+  std::vector<fs::path> files;
+  if (!fs::is_directory(dir)) throw std::invalid_argument(dir + ": not a directory");
+  for (auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  struct Col { std::string label; SolveOptions opt; };
+  std::vector<Col> cols;
+  cols.push_back({"exact", {parse_arithmetic("exact"), "bernstein", 0}});
+  cols.push_back({"double/power", {parse_arithmetic("double"), "power", 0}});
+  cols.push_back({"double/bernstein", {parse_arithmetic("double"), "bernstein", 0}});
+  cols.push_back({"double/scaled", {parse_arithmetic("double"), "scaled-bernstein", 0}});
+  for (int b : mpfr_bits) cols.push_back({"mpfr:" + std::to_string(b), {parse_arithmetic("mpfr:" + std::to_string(b)), "bernstein", 0}});
+  nlohmann::json all = nlohmann::json::array();
+  std::vector<std::vector<std::string>> rows;
+  std::size_t done = 0;
+  for (const auto& f : files) {
+    std::vector<std::string> row{f.filename().string()};
+    nlohmann::json js;
+    js["file"] = f.string();
+    try {
+      Scene s = read_scene_file(f.string());
+      for (const auto& c : cols) {
+        try {
+          nlohmann::json r = solve_scene(s, c.opt);
+          js[c.label] = r;
+          std::string cell = short_answer(r);
+          if (c.label != "exact" && js.contains("exact") && js["exact"].contains("collides")) {
+            bool same = r["collides"] == js["exact"]["collides"] && r["intervals"].size() == js["exact"]["intervals"].size();
+            if (!same) cell = "!" + cell;
+          }
+          row.push_back(cell);
+        } catch (const std::exception& e) {
+          js[c.label] = {{"error", e.what()}};
+          row.push_back("n/a");
+        }
+      }
+    } catch (const SceneError& e) {
+      js["error"] = e.what();
+      row.push_back(std::string("bad scene: ") + e.what());
+    }
+    all.push_back(js);
+    rows.push_back(row);
+    ++done;
+    std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), f.filename().string().c_str());
+    std::fflush(stderr);
+  }
+  std::fprintf(stderr, "\n");
+  if (json) { std::cout << all.dump(2) << "\n"; return 0; }
+  std::vector<std::string> head{"scene"};
+  for (auto& c : cols) head.push_back(c.label);
+  std::vector<std::size_t> w(head.size(), 0);
+  for (std::size_t i = 0; i < head.size(); ++i) w[i] = head[i].size();
+  for (auto& r : rows) for (std::size_t i = 0; i < r.size() && i < w.size(); ++i) w[i] = std::max(w[i], r[i].size());
+  auto line = [&](const std::vector<std::string>& r) {
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      std::cout << r[i];
+      if (i + 1 < r.size()) std::cout << std::string(w[i] - r[i].size() + 2, ' ');
+    }
+    std::cout << "\n";
+  };
+  line(head);
+  for (auto& r : rows) line(r);
+  std::cout << "\n'!' marks a floating answer whose `collides` or number of intervals differs from the exact one;\n"
+               "'?N' counts instants a floating pipeline could not classify; iv = collision intervals, t0 = first contact.\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and ellipsoids"};
+  app.require_subcommand(1);
+
+  std::string scene_path, arith = "exact", basis = "bernstein";
+  int variant = 0;
+  bool json = false;
+  auto* solve = app.add_subcommand("solve", "Solve one scene: collision intervals, first contact and external contacts over t in [0, 1].");
+  solve->add_option("SCENE", scene_path, "Scene file (format ellipse-ccd-scene/1)")->required();
+  solve->add_option("--arith", arith, "Arithmetic: double, mpfr:BITS (53..65536) or exact (certified brackets)")->capture_default_str();
+  solve->add_option("--basis", basis, "Floating only: basis in which the discriminant is built: power, bernstein or scaled-bernstein")->capture_default_str();
+  solve->add_option("--variant", variant, "0: full answer with intervals; 1: collides? only; 2: first contact; 3: all external contacts (003 VI-C)")->capture_default_str();
+  solve->add_flag("--json", json, "Print exactly one JSON object (the spec's answer plus timing, degree of the discriminant, contact points)");
+
+  std::string dir = "cases";
+  std::vector<int> mpfr_bits{128};
+  bool table_json = false;
+  auto* table = app.add_subcommand("table", "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR arithmetic and print a side-by-side table.");
+  table->add_option("DIR", dir, "Folder of scene files")->capture_default_str();
+  table->add_option("--mpfr", mpfr_bits, "MPFR precisions in bits (repeatable)")->capture_default_str();
+  table->add_flag("--json", table_json, "Print all results as one JSON array instead of the table");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+
+  try {
+    if (*solve) {
+      SolveOptions opt;
+      opt.arith = parse_arithmetic(arith);
+      opt.basis = basis;
+      opt.variant = variant;
+      Scene s = read_scene_file(scene_path);
+      nlohmann::json r;
+      try {
+        r = solve_scene(s, opt);
+      } catch (const std::invalid_argument& e) {
+        std::cerr << "eccd solve: " << scene_path << ": " << e.what() << "\n";
+        return 3;
+      }
+      if (json) std::cout << r.dump(2) << "\n";
+      else std::cout << summary_text(r);
+      return 0;
+    }
+    if (*table) return run_table(dir, mpfr_bits, table_json);
+  } catch (const SceneError& e) {
+    std::cerr << "eccd: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "eccd: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "eccd: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,33 @@
+#pragma once
+// `eccd solve`: one scene, one arithmetic, one answer (JSON and a summary).
+//
+// Arithmetic names: "double", "mpfr:BITS" (53 <= BITS <= 65536), "exact".
+// Errors: std::invalid_argument for a request the pipeline refuses (a
+// cycloidal motion in exact arithmetic, an unknown arithmetic, 3D before the
+// ellipsoid pipeline exists); kernel/scene_reader.hpp's SceneError for bad files.
+#include "kernel/scene.hpp"
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace eccd {
+
+struct Arithmetic {
+  enum Kind { Double, Mpfr, Exact } kind = Exact;
+  int bits = 0;  // MPFR precision; 53 for double; 0 for exact
+  std::string name() const;
+};
+Arithmetic parse_arithmetic(const std::string& text);
+
+struct SolveOptions {
+  Arithmetic arith;
+  std::string basis = "bernstein";  // floating only: power | bernstein | scaled-bernstein
+  int variant = 0;                   // 0 answer, 1 collides, 2 first contact, 3 all contacts
+};
+
+// Runs the 2D pipeline; returns the full JSON report (spec answer + extras).
+nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt);
+// A few human-readable lines from that JSON.
+std::string summary_text(const nlohmann::json& report);
+
+}  // namespace eccd
