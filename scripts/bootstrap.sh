@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian packages eccd needs (only those missing), then configures
+# and builds into ./build. Used by both README commands and by .ci/run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 python3-matplotlib"
+missing=""
+for p in $PACKAGES; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  echo "bootstrap: installing Debian packages:$missing" >&2
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing >&2
+fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)" >&2
