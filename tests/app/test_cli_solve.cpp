@@ -1,0 +1,56 @@
+// `eccd solve` from the command line: exactly one JSON object with the spec's
+// answer and the extras, for every arithmetic.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+int run(const std::string& cmd, std::string& out) {
+  out.clear();
+  FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
+  REQUIRE(p != nullptr);
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int st = pclose(p);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+}  // namespace
+
+TEST_CASE("eccd solve --json on 003 Example 2 prints one JSON object with the spec's answer", "[app][cli]") {
+  const std::string scene = std::string(ECCD_SOURCE_DIR) + "/cases/paper003/example2.json";
+  for (const char* arith : {"exact", "double", "mpfr:128"}) {
+    INFO(arith);
+    std::string out;
+    REQUIRE(run(std::string(ECCD_EXE) + " solve " + scene + " --arith " + arith + " --json", out) == 0);
+    nlohmann::json j = nlohmann::json::parse(out);  // throws (fails) on anything but one JSON value
+    REQUIRE(j.is_object());
+    for (const char* k : {"collides", "intervals", "first_contact", "contacts", "time_ms", "delta_degree", "contact_points", "arith"})
+      CHECK(j.contains(k));
+    CHECK(j["collides"] == true);
+    CHECK(j["delta_degree"] == 96);
+    CHECK(j["arith"] == arith);
+    if (std::string(arith) == "exact") {
+      REQUIRE(j["intervals"].size() == 1);
+      CHECK(j["intervals"][0][0]["lo"] == "1/2");
+      CHECK(j["intervals"][0][0]["hi"] == "1/2");
+      CHECK(j["certified"] == true);
+    } else {
+      CHECK(j["certified"] == false);
+      CHECK(j["first_contact"]["lo"].is_null());
+    }
+  }
+}
+
+TEST_CASE("eccd solve rejects a bad --arith with exit status 2 and no output", "[app][cli]") {
+  const std::string scene = std::string(ECCD_SOURCE_DIR) + "/cases/paper003/example2.json";
+  std::string out;
+  CHECK(run(std::string(ECCD_EXE) + " solve " + scene + " --arith mpfr:12", out) == 2);
+  CHECK(out.empty());
+  CHECK(run(std::string(ECCD_EXE) + " solve " + scene + " --arith quad", out) == 2);
+  CHECK(out.empty());
+}
