@@ -18,7 +18,7 @@ template <> struct scalar_traits<mpq_class> {
   static constexpr bool is_exact = true;
   static Sign sign(const mpq_class& x) { return sign_of_int(sgn(x)); }
   // Display only.
-  static double to_double(const mpq_class& x) { return x.get_d(); }
+  static double to_double(const mpq_class& x) { return x.get_d(); }  // display only, never on the way to a decision
   static mpq_class from_rational(const mpq_class& q, const mpq_class& /*like*/ = mpq_class()) { return q; }
   static mpq_class abs(const mpq_class& x) { return mpq_class(::abs(x)); }
   static int precision(const mpq_class&) { return 0; }

@@ -31,6 +31,42 @@ Poly<T> convert_poly(const RPoly& p, Conv conv) {
   return map_coeffs<T>(p, conv);
 }
 
+// R' = E R for the quaternion (e0, e1, e2, e3) (scene-format.md, `euler`).
+template <class T>
+PolyMatrix<T, 4> quaternion_matrix(const Poly<T> (&e)[4]) {
+  PolyMatrix<T, 4> r{};
+  Poly<T> e00 = e[0] * e[0], e11 = e[1] * e[1], e22 = e[2] * e[2], e33 = e[3] * e[3];
+  r[0][0] = e00 + e11 - e22 - e33;
+  r[0][1] = 2 * (e[1] * e[2] - e[0] * e[3]);
+  r[0][2] = 2 * (e[1] * e[3] + e[0] * e[2]);
+  r[1][0] = 2 * (e[1] * e[2] + e[0] * e[3]);
+  r[1][1] = e00 - e11 + e22 - e33;
+  r[1][2] = 2 * (e[2] * e[3] - e[0] * e[1]);
+  r[2][0] = 2 * (e[1] * e[3] - e[0] * e[2]);
+  r[2][1] = 2 * (e[2] * e[3] + e[0] * e[1]);
+  r[2][2] = e00 - e11 - e22 + e33;
+  return r;
+}
+
+// The polynomials of an euler motion: R' = E R, E, the translation v and its denominator v3.
+template <class T>
+struct EulerParts {
+  PolyMatrix<T, 4> r;
+  Poly<T> E, v3;
+  Poly<T> v[3];
+};
+template <class T, class Conv>
+EulerParts<T> euler_parts(const EulerMotion& e, Conv conv) {
+  auto P = [&](const RPoly& p) { return convert_poly<T>(p, conv); };
+  Poly<T> q[4] = {P(e.e[0]), P(e.e[1]), P(e.e[2]), P(e.e[3])};
+  EulerParts<T> x;
+  x.r = quaternion_matrix(q);
+  x.E = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+  x.v3 = P(e.v3);
+  for (int i = 0; i < 3; ++i) x.v[i] = P(e.v[i]);
+  return x;
+}
+
 // The motion matrix M(t) itself (used for centres and pictures).
 template <class T, int N, class Conv>
 PolyMatrix<T, N> motion_matrix(const Motion& motion, Conv conv) {
@@ -56,38 +92,18 @@ PolyMatrix<T, N> motion_matrix(const Motion& motion, Conv conv) {
   }
   if (auto* e = std::get_if<EulerMotion>(&motion)) {
     if constexpr (N == 4) {
-      Poly<T> q[4] = {P(e->e[0]), P(e->e[1]), P(e->e[2]), P(e->e[3])};
-      PolyMatrix<T, 4> r = quaternion_matrix(q);
-      Poly<T> E = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-      Poly<T> v3 = P(e->v3);
+      EulerParts<T> x = euler_parts<T>(*e, conv);
       for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) m[i][j] = v3 * r[i][j];
-        m[i][3] = E * P(e->v[i]);
+        for (int j = 0; j < 3; ++j) m[i][j] = x.v3 * x.r[i][j];
+        m[i][3] = x.E * x.v[i];
         m[3][i] = Poly<T>();
       }
-      m[3][3] = E * v3;
+      m[3][3] = x.E * x.v3;
       return m;
     }
     throw std::invalid_argument("euler motions are 3D only");
   }
   throw std::invalid_argument("a cycloidal motion is not rational: it has no polynomial matrix");
-}
-
-// R' = E R for the quaternion (e0, e1, e2, e3) (scene-format.md, `euler`).
-template <class T>
-PolyMatrix<T, 4> quaternion_matrix(const Poly<T> (&e)[4]) {
-  PolyMatrix<T, 4> r{};
-  Poly<T> e00 = e[0] * e[0], e11 = e[1] * e[1], e22 = e[2] * e[2], e33 = e[3] * e[3];
-  r[0][0] = e00 + e11 - e22 - e33;
-  r[0][1] = 2 * (e[1] * e[2] - e[0] * e[3]);
-  r[0][2] = 2 * (e[1] * e[3] + e[0] * e[2]);
-  r[1][0] = 2 * (e[1] * e[2] + e[0] * e[3]);
-  r[1][1] = e00 - e11 + e22 - e33;
-  r[1][2] = 2 * (e[2] * e[3] - e[0] * e[1]);
-  r[2][0] = 2 * (e[1] * e[3] - e[0] * e[2]);
-  r[2][1] = 2 * (e[2] * e[3] + e[0] * e[1]);
-  r[2][2] = e00 - e11 - e22 + e33;
-  return r;
 }
 
 // N(t) with M(t) N(t) = c(t) I (see the header comment for each form).
@@ -109,19 +125,15 @@ PolyMatrix<T, N> motion_inverse(const Motion& motion, Conv conv) {
   }
   if (auto* e = std::get_if<EulerMotion>(&motion)) {
     if constexpr (N == 4) {
-      Poly<T> q[4] = {P(e->e[0]), P(e->e[1]), P(e->e[2]), P(e->e[3])};
-      PolyMatrix<T, 4> r = quaternion_matrix(q);
-      Poly<T> E = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-      Poly<T> v3 = P(e->v3);
-      Poly<T> v[3] = {P(e->v[0]), P(e->v[1]), P(e->v[2])};
+      EulerParts<T> x = euler_parts<T>(*e, conv);
       PolyMatrix<T, 4> n{};
       for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) n[i][j] = v3 * r[j][i];
+        for (int j = 0; j < 3; ++j) n[i][j] = x.v3 * x.r[j][i];
         Poly<T> acc;
-        for (int j = 0; j < 3; ++j) acc += r[j][i] * v[j];
+        for (int j = 0; j < 3; ++j) acc += x.r[j][i] * x.v[j];
         n[i][3] = -acc;
       }
-      n[3][3] = E * v3;
+      n[3][3] = x.E * x.v3;
       return n;
     }
     throw std::invalid_argument("euler motions are 3D only");

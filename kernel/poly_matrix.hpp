@@ -34,7 +34,7 @@ PolyMatrix<T, N> transpose(const PolyMatrix<T, N>& a) {
 }
 
 template <class T, int N>
-PolyMatrix<T, N> operator*(const PolyMatrix<T, N>& a, const PolyMatrix<T, N>& b) {
+PolyMatrix<T, N> product(const PolyMatrix<T, N>& a, const PolyMatrix<T, N>& b) {
   PolyMatrix<T, N> r{};
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j)
