@@ -1,0 +1,86 @@
+#pragma once
+// BiBern<T>: tensor-product bivariate polynomials in Bernstein form on
+// [0, 1] x [0, 1],  F(u, t) = sum_ij b[i][j] B_i^m(u) B_j^n(t).
+//
+// Statement. 001 section 4 and 002 section 3: the 3D method works on
+// F(u, t) = det((u - 1) A(t) - u B(t)) as a tensor-product Bernstein
+// polynomial, whose control points bound F (convex hull) and subdivide by de
+// Casteljau in either direction. Here: conversion from power form
+// (a[i][j] u^i t^j), evaluation, subdivision in u or in t, and the sign test
+// "all control points strictly of one sign".
+// Requirements on T: those of kernel/bernstein.hpp.
+#include "kernel/bernstein.hpp"
+
+#include <vector>
+
+namespace eccd {
+
+template <class T>
+struct BiBern {
+  std::vector<std::vector<T>> b;  // b[i][j]: degree m = b.size()-1 in u, n = b[0].size()-1 in t
+  int degree_u() const { return int(b.size()) - 1; }
+  int degree_t() const { return b.empty() ? -1 : int(b[0].size()) - 1; }
+
+  T operator()(const T& u, const T& t) const {
+    Bern<T> col;  // evaluate every row in t, then the result in u
+    for (const auto& row : b) col.b.push_back(Bern<T>(row)(t));
+    return col(u);
+  }
+  // Every control point strictly positive (+1), strictly negative (-1), or neither (0).
+  int strict_sign() const {
+    Sign s0 = sign(b[0][0]);
+    if (s0 != Sign::positive && s0 != Sign::negative) return 0;
+    for (const auto& row : b)
+      for (const auto& x : row)
+        if (sign(x) != s0) return 0;
+    return s0 == Sign::positive ? 1 : -1;
+  }
+};
+
+// From power form: a[i] is the polynomial in t multiplying u^i.
+template <class T>
+BiBern<T> to_bibernstein(const std::vector<Poly<T>>& a, int m, int n) {
+  // convert each t-polynomial to degree-n Bernstein form, then each column in u
+  std::vector<Bern<T>> rows;
+  for (int i = 0; i <= m; ++i) rows.push_back(to_bernstein(i < int(a.size()) ? a[i] : Poly<T>(), n));
+  BiBern<T> r;
+  r.b.assign(m + 1, std::vector<T>(n + 1, T(0)));
+  for (int j = 0; j <= n; ++j) {
+    Poly<T> col;
+    for (int i = 0; i <= m; ++i) col.c.push_back(rows[i].b[j]);
+    col.trim();
+    Bern<T> cb = to_bernstein(col, m);
+    for (int i = 0; i <= m; ++i) r.b[i][j] = cb.b[i];
+  }
+  return r;
+}
+
+// de Casteljau in t at tau: the pieces over [0, tau] and [tau, 1] in t.
+template <class T>
+std::pair<BiBern<T>, BiBern<T>> split_t(const BiBern<T>& f, const T& tau) {
+  BiBern<T> lo, hi;
+  for (const auto& row : f.b) {
+    auto [l, h] = split(Bern<T>(row), tau);
+    lo.b.push_back(l.b);
+    hi.b.push_back(h.b);
+  }
+  return {lo, hi};
+}
+
+// de Casteljau in u at tau.
+template <class T>
+std::pair<BiBern<T>, BiBern<T>> split_u(const BiBern<T>& f, const T& tau) {
+  int m = f.degree_u(), n = f.degree_t();
+  BiBern<T> lo, hi;
+  lo.b.assign(m + 1, std::vector<T>(n + 1, T(0)));
+  hi.b.assign(m + 1, std::vector<T>(n + 1, T(0)));
+  for (int j = 0; j <= n; ++j) {
+    Bern<T> col;
+    for (int i = 0; i <= m; ++i) col.b.push_back(f.b[i][j]);
+    auto [l, h] = split(col, tau);
+    for (int i = 0; i <= m; ++i) { lo.b[i][j] = l.b[i]; hi.b[i][j] = h.b[i]; }
+  }
+  return {lo, hi};
+}
+
+}  // namespace eccd
