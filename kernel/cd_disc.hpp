@@ -34,6 +34,7 @@
 // Requirements on T: scalar_traits<T>, ring operations.
 #include "kernel/answer.hpp"
 #include "kernel/characteristic_polynomial.hpp"
+#include "kernel/collision_timeline.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
@@ -163,9 +164,10 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
     return finish();
   }
 
-  // The sequence instant, cell, instant, ..., cell, instant over [0, 1].
-  struct Node { Instant t; Status status; bool is_cell; const typename Policy::Root* root; };
-  std::vector<Node> seq;
+  // The timeline instant, cell, instant, ..., cell, instant over [0, 1]
+  // (kernel/collision_timeline.hpp); roots[k] is the root of node k, if any.
+  std::vector<TimelineNode> seq;
+  std::vector<const typename Policy::Root*> node_root;
   std::vector<const typename Policy::Root*> interior;
   const typename Policy::Root* root0 = nullptr;
   const typename Policy::Root* root1 = nullptr;
@@ -182,62 +184,26 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
     if (r && root_status(*r) == Status::touching) s = Status::touching;
     return s;
   };
-  seq.push_back({i0, endpoint_status(zero, root0), false, root0});
+  auto push = [&](TimelineNode n, const typename Policy::Root* r) { seq.push_back(n); node_root.push_back(r); };
+  push({i0, endpoint_status(zero, root0), false}, root0);
   for (std::size_t i = 0; i <= interior.size(); ++i) {
     const typename Policy::Root* l = i ? interior[i - 1] : nullptr;
     const typename Policy::Root* r = i < interior.size() ? interior[i] : nullptr;
     T s = pol.sample_between(l, r);
     Status cs = status_at(s);
-    seq.push_back({pol.instant_at(s), cs, true, nullptr});
+    push({pol.instant_at(s), cs, true}, nullptr);
     res.cells.push_back({pol.instant_at(s), cs});
-    if (r) seq.push_back({pol.instant(*r), root_status(*r), false, r});
+    if (r) push({pol.instant(*r), root_status(*r), false}, r);
   }
-  seq.push_back({i1, endpoint_status(one, root1), false, root1});
-
-  // An instant that is neither touching nor next to an overlapping cell would
-  // contradict Corollary 7 (Δ = 0 there, so not separate; overlap is open in t).
-  for (std::size_t k = 2; k + 2 < seq.size(); k += 2) {
-    Node& n = seq[k];
-    if (n.status == Status::overlapping && seq[k - 1].status == Status::separate && seq[k + 1].status == Status::separate) {
-      if constexpr (scalar_traits<T>::is_exact)
-        throw std::logic_error("internal error: an isolated overlapping instant between separate cells");
-      else
-        n.status = Status::uncertain;
-    }
-  }
+  push({i1, endpoint_status(one, root1), false}, root1);
+  check_isolated_instants(seq, scalar_traits<T>::is_exact);
   for (std::size_t k = 0; k < seq.size(); ++k)
-    if (!seq[k].is_cell && seq[k].root) {
-      res.critical.push_back({seq[k].t, seq[k].status, seq[k].root ? pol.multiplicity(*seq[k].root) : 0});
-    }
+    if (!seq[k].is_cell && node_root[k]) res.critical.push_back({seq[k].t, seq[k].status, pol.multiplicity(*node_root[k])});
 
-  // Maximal runs of nodes in the collision set are the intervals of C.
-  for (std::size_t k = 0; k < seq.size(); ++k) {
-    const Node& n = seq[k];
-    if (n.status == Status::uncertain) { ans.undecided.push_back(n.t); continue; }
-    if (!n.is_cell && n.status == Status::touching) {
-      ans.contacts.push_back(n.t);
-      if (n.root) ans.contact_points.push_back(contact_point(A, B, g, pol.value(*n.root)));
-      else ans.contact_points.push_back(contact_point(A, B, g, k == 0 ? zero : one));
-    }
-    if (!in_collision(n.status)) continue;
-    std::size_t e = k;
-    while (e + 1 < seq.size() && in_collision(seq[e + 1].status)) {
-      ++e;
-      if (!seq[e].is_cell && seq[e].status == Status::touching && e != k) {
-        ans.contacts.push_back(seq[e].t);
-        ans.contact_points.push_back(contact_point(A, B, g, seq[e].root ? pol.value(*seq[e].root) : one));
-      }
-    }
-    // A run starts and ends at instants (a cell in C has its end instants in
-    // C); a rounded run that starts or ends on a cell is widened to the
-    // neighbouring instant.
-    const Instant& first = seq[k].is_cell ? seq[k - 1].t : seq[k].t;
-    const Instant& last = seq[e].is_cell ? seq[e + 1].t : seq[e].t;
-    ans.intervals.push_back({first, last});
-    k = e;
-  }
-  ans.collides = !ans.intervals.empty();
-  if (ans.collides) ans.first_contact = ans.intervals.front().first;
+  assemble_answer(seq, ans, [&](std::size_t k) {
+    const T at = node_root[k] ? pol.value(*node_root[k]) : (k == 0 ? zero : one);
+    ans.contact_points.push_back(contact_point(A, B, g, at));
+  });
   if (variant == Variant::all_contacts) ans.intervals.clear();
   return finish();
 }
