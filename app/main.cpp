@@ -160,9 +160,16 @@ int main(int argc, char** argv) {
   auto* solve = app.add_subcommand("solve", "Solve one scene: collision intervals, first contact and external contacts over t in [0, 1].");
   solve->add_option("SCENE", scene_path, "Scene file (format ellipse-ccd-scene/1)")->required();
   solve->add_option("--arith", arith, "Arithmetic: double, mpfr:BITS (53..65536) or exact (certified brackets)")->capture_default_str();
-  solve->add_option("--basis", basis, "Floating only: basis in which the discriminant is built: power, bernstein or scaled-bernstein")->capture_default_str();
-  solve->add_option("--variant", variant, "0: full answer with intervals; 1: collides? only; 2: first contact; 3: all external contacts (003 VI-C)")->capture_default_str();
+  solve->add_option("--basis", basis, "Floating only: basis in which the discriminant (2D) or projection (3D --method projection) is built: power, bernstein or scaled-bernstein")->capture_default_str();
+  solve->add_option("--variant", variant, "2D: 0: full answer with intervals; 1: collides? only; 2: first contact; 3: all external contacts (003 VI-C). 3D: 2 = --first-contact")->capture_default_str();
   solve->add_flag("--json", json, "Print exactly one JSON object (the spec's answer plus timing, degree of the discriminant, contact points)");
+  std::string method = "bezier";
+  solve->add_option("--method", method,
+                    "3D floating only: bezier (001 section 4: sampling, Bezier shooting, subdivision, Gaussian-circle test), "
+                    "projection (discriminant roots, as the exact pipeline), sampling:N (static tests at N+1 instants) or "
+                    "marching:N (marching squares on an N x N grid of F(u,t), 002 section IV)")->capture_default_str();
+  bool first_contact = false;
+  solve->add_flag("--first-contact", first_contact, "3D: compute the first collision interval only (first-contact mode of 001 section 4)");
   bool store = false;
   solve->add_flag("--write-answer", store, "Store the answer in the scene file under \"answer\" (exact arithmetic only)");
 
@@ -186,6 +193,8 @@ int main(int argc, char** argv) {
       opt.arith = parse_arithmetic(arith);
       opt.basis = basis;
       opt.variant = variant;
+      opt.method = method;
+      opt.first_contact = first_contact || (variant == 2);
       Scene s = read_scene_file(scene_path);
       nlohmann::json r;
       try {

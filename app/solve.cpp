@@ -3,6 +3,7 @@
 #include "app/solve.hpp"
 
 #include "exact/cd_disc_exact.hpp"
+#include "kernel/ccd_projection.hpp"
 #include "floating/cd_disc_floating.hpp"
 #include "floating/double_traits.hpp"
 #include "floating/mpfr_real.hpp"
@@ -75,6 +76,7 @@ nlohmann::json report_json(const CdDiscResult<T>& r) {
   for (const auto& u : r.answer.undecided) und.push_back(instant_json(u));
   j["undecided"] = und;
   j["delta_degree"] = r.delta_degree;
+  j["projection"] = r.projection_index == 0 ? std::string("discriminant") : "psc_" + std::to_string(r.projection_index);
   j["delta_identically_zero"] = r.delta_identically_zero;
   j["status_at_0"] = to_string(r.status_at_0);
   nlohmann::json crit = nlohmann::json::array();
@@ -98,11 +100,63 @@ nlohmann::json run_floating(const PreparedPair<3>& p, const SolveOptions& opt, c
   return j;
 }
 
+
+template <class T>
+nlohmann::json run_floating_3d(const PreparedPair<4>& p, const SolveOptions& opt, const T& like) {
+  MovingPair<T, 4> m = to_arithmetic<T, 4>(p, like);
+  nlohmann::json j;
+  if (opt.method == "projection") {
+    FloatingPolicy<T> pol(parse_basis(opt.basis), opt.arith.bits, like);
+    j = report_json(ccd_projection(m, pol, opt.first_contact));
+    j["basis"] = opt.basis;
+  } else {
+    throw std::invalid_argument("--method " + opt.method + ": not available yet");
+  }
+  j["method"] = opt.method;
+  j["certified"] = false;
+  return j;
+}
+
+nlohmann::json solve_3d(const Scene& scene, const SolveOptions& opt) {
+  PreparedPair<4> p = prepare_pair<4>(scene);
+  switch (opt.arith.kind) {
+    case Arithmetic::Double: return run_floating_3d<double>(p, opt, 1.0);
+    case Arithmetic::Mpfr: return run_floating_3d<eccd::Mpfr>(p, opt, eccd::Mpfr(mpq_class(1), opt.arith.bits));
+    default: {
+      ExactPolicy pol;
+      MovingPair<Rational, 4> m = to_arithmetic<Rational, 4>(p, Rational(1));
+      nlohmann::json j = report_json(ccd_projection(m, pol, opt.first_contact));
+      j["basis"] = "exact";
+      j["method"] = "projection";
+      j["certified"] = true;
+      return j;
+    }
+  }
+}
+
+nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt);
+
 }  // namespace
 
 nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt) {
-  if (scene.dim != 2)
-    throw std::invalid_argument("3D scenes are not solved yet: the ellipsoid pipeline is the next piece of work");
+  nlohmann::json j;
+  if (scene.dim == 3) {
+    j = solve_3d(scene, opt);
+  } else {
+    j = solve_2d(scene, opt);
+  }
+  nlohmann::json out;
+  out["scene"] = scene.name;
+  out["file"] = scene.path;
+  out["dim"] = scene.dim;
+  out["arith"] = opt.arith.name();
+  out["precision_bits"] = opt.arith.bits;
+  for (auto& [k, v] : j.items()) out[k] = v;
+  return out;
+}
+
+namespace {
+nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt) {
   if (opt.variant < 0 || opt.variant > 3) throw std::invalid_argument("--variant must be 0, 1, 2 or 3");
   bool cyclo = std::holds_alternative<CycloidalMotion>(scene.a.motion) || std::holds_alternative<CycloidalMotion>(scene.b.motion);
   if (cyclo && opt.arith.kind != Arithmetic::Exact)
@@ -121,15 +175,10 @@ nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt) {
       break;
     }
   }
-  nlohmann::json out;
-  out["scene"] = scene.name;
-  out["file"] = scene.path;
-  out["dim"] = scene.dim;
-  out["arith"] = opt.arith.name();
-  out["precision_bits"] = opt.arith.bits;
-  for (auto& [k, v] : j.items()) out[k] = v;
-  return out;
+  j["method"] = "cd-disc";
+  return j;
 }
+}  // namespace
 
 std::string summary_text(const nlohmann::json& r) {
   std::ostringstream o;

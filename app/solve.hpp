@@ -3,8 +3,7 @@
 //
 // Arithmetic names: "double", "mpfr:BITS" (53 <= BITS <= 65536), "exact".
 // Errors: std::invalid_argument for a request the pipeline refuses (a
-// cycloidal motion in exact arithmetic, an unknown arithmetic, 3D before the
-// ellipsoid pipeline exists); kernel/scene_reader.hpp's SceneError for bad files.
+// cycloidal motion in exact arithmetic, an unknown arithmetic or method); kernel/scene_reader.hpp's SceneError for bad files.
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -22,10 +21,12 @@ Arithmetic parse_arithmetic(const std::string& text);
 struct SolveOptions {
   Arithmetic arith;
   std::string basis = "bernstein";  // floating only: power | bernstein | scaled-bernstein
-  int variant = 0;                   // 0 answer, 1 collides, 2 first contact, 3 all contacts
+  int variant = 0;                   // 2D: 0 answer, 1 collides, 2 first contact, 3 all contacts
+  std::string method = "bezier";     // 3D floating: bezier | projection | sampling:N | marching:N
+  bool first_contact = false;        // 3D: stop after the first collision interval (001 section 4)
 };
 
-// Runs the 2D pipeline; returns the full JSON report (spec answer + extras).
+// Runs the 2D or 3D pipeline; returns the full JSON report (spec answer + extras).
 nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt);
 // A few human-readable lines from that JSON.
 std::string summary_text(const nlohmann::json& report);

@@ -37,6 +37,8 @@ struct ExactPolicy {
   int bits = 64;  // brackets are refined to width <= 2^-bits
 
   template <class F>
+  Poly<Rational> build_n(const std::vector<Poly<Rational>>& g, F formula) const { return formula(g); }
+  template <class F>
   Poly<Rational> build(const std::vector<Poly<Rational>>& g, F formula) const { return formula(g[3], g[2], g[1], g[0]); }
   bool identically_zero(const Poly<Rational>& q) const { return q.is_zero(); }
 

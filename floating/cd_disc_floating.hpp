@@ -49,21 +49,28 @@ struct FloatingPolicy {
 
   FloatingPolicy(Basis b, int precision_bits, const T& like_value) : basis(b), bits(precision_bits), like(like_value) {}
 
+  // formula(G) with G = {g_0, ..., g_N} in the ring of the basis; the result in Bernstein form.
   template <class F>
-  Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
+  Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
     if (basis == Basis::power) {
-      Poly<T> r = formula(g[3], g[2], g[1], g[0]);
-      return to_bernstein(r, std::max(r.degree(), 0));
+      Poly<T> r = formula(g);
+      Bern<T> out = to_bernstein(r, std::max(r.degree(), 0));
+      if (r.is_zero()) out.b.assign(1, T(0) * like);
+      return out;
     }
-    Bern<T> b[4];
-    for (int i = 0; i < 4; ++i) {
+    std::vector<Bern<T>> b(g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) {
       b[i] = to_bernstein(g[i], std::max(g[i].degree(), 0));
       if (g[i].is_zero()) b[i].b.assign(1, T(0) * like);
     }
-    if (basis == Basis::bernstein) return formula(b[3], b[2], b[1], b[0]);
-    ScaledBern<T> s[4];
-    for (int i = 0; i < 4; ++i) s[i] = to_scaled(b[i]);
-    return to_bernstein(formula(s[3], s[2], s[1], s[0]));
+    if (basis == Basis::bernstein) return formula(b);
+    std::vector<ScaledBern<T>> s(g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) s[i] = to_scaled(b[i]);
+    return to_bernstein(formula(s));
+  }
+  template <class F>
+  Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
+    return build_n(g, [&](const auto& G) { return formula(G[3], G[2], G[1], G[0]); });
   }
   bool identically_zero(const Bern<T>& q) const {
     for (const auto& x : q.b) if (!is_zero(x)) return false;

@@ -54,6 +54,7 @@ struct CdDiscResult {
   std::vector<Poly<T>> g;           // g_0 .. g_3, power form
   int delta_degree = -1;            // degree of Δ as built in this arithmetic and basis
   bool delta_identically_zero = false;
+  int projection_index = 0;         // 3D: 0 = discriminant, k = psc_k (kernel/ccd_projection.hpp)
   Status status_at_0 = Status::uncertain;
   struct Critical { Instant t; Status status; int multiplicity = 0; };
   std::vector<Critical> critical;   // roots of Δ in [0, 1] with their status

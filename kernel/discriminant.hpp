@@ -39,3 +39,28 @@ R double_root_denominator(const R& g3, const R& g2, const R& g1) {
 }
 
 }  // namespace eccd
+
+namespace eccd {
+
+// Discriminant of the quartic f(λ) = a λ⁴ + b λ³ + c λ² + d λ + e (the 3D
+// projection, 002 section III / 001 section 4):
+//   Δ = 256a³e³ - 192a²bde² - 128a²c²e² + 144a²cd²e - 27a²d⁴ + 144ab²ce²
+//     - 6ab²d²e - 80abc²de + 18abcd³ + 16ac⁴e - 4ac³d² - 27b⁴e² + 18b³cde
+//     - 4b³d³ - 4b²c³e + b²c²d²,
+// which equals Res(f, f') / a (kernel/subresultants.hpp; checked in the tests).
+// f has a multiple root iff Δ = 0. Same ring requirements as above.
+template <class R>
+R quartic_discriminant(const R& a, const R& b, const R& c, const R& d, const R& e) {
+  R aa = a * a, bb = b * b, cc = c * c, dd = d * d, ee = e * e;
+  R bd = b * d;
+  // grouped by powers of a to share products
+  R t_a3 = 256 * ((aa * a) * (ee * e));
+  R t_a2 = aa * (-192 * (bd * ee) - 128 * (cc * ee) + 144 * (c * (dd * e)) - 27 * (dd * dd));
+  R t_a1 = a * (144 * (bb * (c * ee)) - 6 * (bb * (dd * e)) - 80 * (bd * (cc * e)) + 18 * (bd * (c * dd)) +
+                16 * ((cc * cc) * e) - 4 * ((cc * c) * dd));
+  R t_a0 = -27 * ((bb * bb) * ee) + 18 * ((bb * b) * (c * (d * e))) - 4 * ((bb * b) * (dd * d)) -
+           4 * (bb * ((cc * c) * e)) + (bb * cc) * dd;
+  return t_a3 + t_a2 + t_a1 + t_a0;
+}
+
+}  // namespace eccd

@@ -1,0 +1,161 @@
+#pragma once
+// Continuous collision detection of two moving ellipsoids by projection onto
+// the time axis: the exact 3D pipeline (and a floating variant of it).
+//
+// Statement. f(λ;t) = det(λA(t) - B(t)) = sum g_k(t) λ^k (002 section III).
+// The number of distinct negative roots of f(.;t), hence the status (002
+// Theorem 1, kernel/quartic_status.hpp), can only change where f(.;t) gains a
+// multiple root (roots move continuously, g4 = det A(t) and g0 = det B(t) do
+// not vanish). Those instants are roots of the projection polynomial
+//   P(t) = Disc_λ f (t) (kernel/discriminant.hpp), or, when it vanishes
+//   identically (two spheres: λ = 1 is a double root for every t), the first
+//   principal subresultant coefficient psc_k(f, ∂f/∂λ) that does not
+//   (kernel/subresultants.hpp).
+// P's real roots in [0, 1] split [0, 1] into cells of constant status, each
+// decided at one sample instant by the static test. At a root t* of P,
+// gcd(f, f') has degree j = the least j > k with psc_j(t*) ≠ 0, equals
+// S_j(λ; t*), and its real roots are the multiple roots of f(.;t*). The pair
+// touches externally at t* iff one of them is negative:
+//   j = 1: the double root -s10/s11;        j = 3: the quadruple root -s32/(3 s33);
+//   j = 2: a real root of s22 λ² + s21 λ + s20 is negative (signs of the
+//          coefficients and of s21² - 4 s22 s20).
+// "Both neighbouring cells separate" does not mean no touch (issue 3): every
+// root is decided this way. A root that is not a touch takes the status of its
+// cells (which then must agree). Signs at t* come from the Policy: exact signs
+// at an algebraic number for the exact pipeline (exact/cd_disc_exact.hpp),
+// signs of rounded values near t* for the floating ones.
+// Requirements on T: those of the Policy (see kernel/cd_disc.hpp).
+#include "kernel/answer.hpp"
+#include "kernel/cd_disc.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/collision_timeline.hpp"
+#include "kernel/discriminant.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/quartic_status.hpp"
+#include "kernel/subresultants.hpp"
+
+#include <chrono>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eccd {
+
+template <class T, class Policy>
+CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool first_contact_only = false) {
+  auto start = std::chrono::steady_clock::now();
+  using Rep = typename Policy::Rep;
+  using Root = typename Policy::Root;
+  CdDiscResult<T> res;
+  res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
+  const PolyMatrix<T, 4> A = moving_quadric<T, 4>(pair.qa, pair.na);
+  const PolyMatrix<T, 4> B = moving_quadric<T, 4>(pair.qb, pair.nb);
+  res.g = characteristic_coefficients<T, 4>(A, B);
+  const auto& g = res.g;
+  const T& like = pair.qa[0][0];
+  const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
+  const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  auto status_at = [&](const T& t) { return quartic_status_at(g, t); };
+  res.status_at_0 = status_at(zero);
+
+  // Subresultant coefficients s_{j,i}(t), built on demand in the Policy's ring.
+  std::map<std::pair<int, int>, Rep> sub;
+  auto s = [&](int j, int i) -> const Rep& {
+    auto key = std::make_pair(j, i);
+    auto it = sub.find(key);
+    if (it == sub.end())
+      it = sub.emplace(key, pol.build_n(g, [j, i](const auto& G) {
+                 auto z = G[0] - G[0];
+                 return subresultant_coefficient(G, lambda_derivative(G), j, i, z);
+               })).first;
+    return it->second;
+  };
+  Rep proj = pol.build_n(g, [](const auto& G) { return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]); });
+  int k = 0;
+  while (pol.identically_zero(proj) && k < 3) { ++k; proj = s(k, k); }
+  if (pol.identically_zero(proj)) throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
+  res.projection_index = k;
+  res.delta_degree = proj.degree();
+  res.delta_identically_zero = k > 0;
+  auto rts = pol.roots(proj, false);
+
+  // Is there a negative multiple root of f at the root r of the projection?
+  auto touches_at = [&](const Root& r) -> Sign {  // positive = yes, zero = no, uncertain
+    for (int j = k + 1; j <= 3; ++j) {
+      Sign lead = pol.sign_at(s(j, j), r);
+      if (lead == Sign::uncertain) return Sign::uncertain;
+      if (lead == Sign::zero) continue;
+      if (j == 1 || j == 3) {
+        Sign next = pol.sign_at(s(j, j - 1), r);
+        if (next == Sign::uncertain) return Sign::uncertain;
+        return (next * lead) == Sign::positive ? Sign::positive : Sign::zero;
+      }
+      Sign sb = pol.sign_at(s(2, 1), r), sc = pol.sign_at(s(2, 0), r);
+      auto it = sub.find({2, -1});  // the discriminant of S_2, cached under i = -1
+      if (it == sub.end())
+        it = sub.emplace(std::make_pair(2, -1), pol.build_n(g, [](const auto& G) {
+                   auto z = G[0] - G[0];
+                   auto fp = lambda_derivative(G);
+                   auto a = subresultant_coefficient(G, fp, 2, 2, z);
+                   auto b = subresultant_coefficient(G, fp, 2, 1, z);
+                   auto c = subresultant_coefficient(G, fp, 2, 0, z);
+                   return b * b - 4 * (a * c);
+                 })).first;
+      Sign sd = pol.sign_at(it->second, r);
+      if (sb == Sign::uncertain || sc == Sign::uncertain || sd == Sign::uncertain) return Sign::uncertain;
+      if (sd == Sign::negative) return Sign::zero;  // complex pair of double roots
+      bool neg = (lead * sc) == Sign::negative ||                                   // roots of opposite signs
+                 ((lead * sc) == Sign::positive && (lead * sb) == Sign::positive) ||  // both negative
+                 (sc == Sign::zero && (lead * sb) == Sign::positive);                 // 0 and -b/a < 0
+      return neg ? Sign::positive : Sign::zero;
+    }
+    return Sign::uncertain;  // psc_j(t*) = 0 for every j <= 3: impossible since g4 ≠ 0
+  };
+
+  std::vector<const Root*> interior;
+  for (auto& r : rts)
+    if (!pol.at_zero(r) && !pol.at_one(r)) interior.push_back(&r);
+  std::vector<TimelineNode> seq;
+  std::vector<const Root*> node_root;
+  std::vector<Sign> touch;
+  auto push = [&](TimelineNode n, const Root* r, Sign tch) { seq.push_back(n); node_root.push_back(r); touch.push_back(tch); };
+  push({pol.instant_at(zero), res.status_at_0, false}, nullptr, Sign::zero);
+  bool stopped = false;
+  for (std::size_t i = 0; i <= interior.size(); ++i) {
+    const Root* l = i ? interior[i - 1] : nullptr;
+    const Root* r = i < interior.size() ? interior[i] : nullptr;
+    T smp = pol.sample_between(l, r);
+    Status cs = status_at(smp);
+    if (first_contact_only && cs == Status::separate && i > 0 && in_collision(seq.back().status)) {
+      stopped = true;  // the first collision interval has ended
+      break;
+    }
+    push({pol.instant_at(smp), cs, true}, nullptr, Sign::zero);
+    res.cells.push_back({pol.instant_at(smp), cs});
+    if (r) {
+      Sign tch = touches_at(*r);
+      push({pol.instant(*r), tch == Sign::positive ? Status::touching : Status::separate, false}, r, tch);
+    }
+  }
+  if (!stopped) push({pol.instant_at(one), status_at(one), false}, nullptr, Sign::zero);
+  // A root that is not a touch carries the status of its cells.
+  for (std::size_t n = 2; n < seq.size(); n += 2) {
+    if (!node_root[n] || touch[n] == Sign::positive) continue;
+    Status left = seq[n - 1].status, right = n + 1 < seq.size() ? seq[n + 1].status : left;
+    if (touch[n] == Sign::uncertain) { seq[n].status = Status::uncertain; continue; }
+    if (left == right) { seq[n].status = left; continue; }
+    if constexpr (scalar_traits<T>::is_exact)
+      throw std::logic_error("internal error: the status changes at a root of the projection without a touch");
+    seq[n].status = Status::uncertain;
+  }
+  check_isolated_instants(seq, scalar_traits<T>::is_exact);
+  for (std::size_t n = 0; n < seq.size(); ++n)
+    if (node_root[n]) res.critical.push_back({seq[n].t, seq[n].status, pol.multiplicity(*node_root[n])});
+  assemble_answer(seq, res.answer, [](std::size_t) {});
+  if (first_contact_only && res.answer.intervals.size() > 1) res.answer.intervals.resize(1);
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
+
+}  // namespace eccd

@@ -1,0 +1,67 @@
+#pragma once
+// F(u, t) = det((u - 1) A(t) - u B(t)): the characteristic quartic of two
+// moving ellipsoids on (0, 1) x [0, 1], in tensor-product Bernstein form.
+//
+// Statement. 001 section 4: reparameterise λ = (u - 1) / u, which maps
+// λ ∈ (-∞, 0) to u ∈ (0, 1); then F(u, t) = u⁴ f((u-1)/u; t)
+// = sum_i g_i(t) (u - 1)^i u^(4-i). Since (u-1)^i u^(4-i) = (-1)^i B⁴_{4-i}(u) / C(4, i),
+// the u-Bernstein coefficient of index j is (-1)^(4-j) g_{4-j}(t) / C(4, j),
+// then each is written in the degree-n Bernstein basis in t (n = max deg g_i).
+// The ellipsoids are separate at t0 iff F(u, t0) > 0 for some u in (0, 1)
+// (F(0, t) = det A(t) < 0 and F(1, t) = det B(t) < 0 for ellipsoids),
+// touching iff max F(., t0) = 0 on (0, 1), overlapping iff F(., t0) < 0 there.
+// Positive roots of f (e.g. the permanent λ = 1 of two spheres) lie outside
+// (0, 1), so this test sees only the negative roots that matter.
+// Requirements on T: a field (division by C(4, j), exact for rationals,
+// rounded once otherwise), scalar_traits<T>.
+#include "kernel/bernstein.hpp"
+#include "kernel/bivariate_bernstein.hpp"
+#include "kernel/polynomial.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace eccd {
+
+inline int binomial4(int j) { static const int c[5] = {1, 4, 6, 4, 1}; return c[j]; }
+
+// g[0..4] power-form polynomials in t; like: a value of the run's precision.
+template <class T>
+BiBern<T> ellipsoid_function(const std::vector<Poly<T>>& g, const T& like) {
+  int n = 0;
+  for (const auto& gi : g) n = std::max(n, gi.degree());
+  BiBern<T> F;
+  const T zero = like - like;
+  for (int j = 0; j <= 4; ++j) {
+    Poly<T> c = g[4 - j];
+    T s = scalar_traits<T>::from_rational(mpq_class((4 - j) % 2 ? -1 : 1, binomial4(j)), like);
+    for (auto& x : c.c) x = x * s;
+    Bern<T> b = to_bernstein(c, n);
+    if (c.is_zero()) b.b.assign(n + 1, zero);
+    F.b.push_back(b.b);
+  }
+  return F;
+}
+
+// F(., t0) as a quartic in Bernstein form in u.
+template <class T>
+Bern<T> ellipsoid_function_at(const BiBern<T>& F, const T& t0) {
+  Bern<T> r;
+  for (const auto& row : F.b) r.b.push_back(Bern<T>(row)(t0));
+  return r;
+}
+
+// F(u0, .) as a polynomial in Bernstein form in t (same t-interval as F).
+template <class T>
+Bern<T> ellipsoid_function_along(const BiBern<T>& F, const T& u0) {
+  const int n = F.degree_t();
+  Bern<T> r;
+  for (int j = 0; j <= n; ++j) {
+    Bern<T> col;
+    for (int i = 0; i <= F.degree_u(); ++i) col.b.push_back(F.b[i][j]);
+    r.b.push_back(col(u0));
+  }
+  return r;
+}
+
+}  // namespace eccd

@@ -1,0 +1,54 @@
+#pragma once
+// The static test for two ellipsoids: contact status from the negative roots
+// of the characteristic quartic f(λ) = det(λA - B) = g4 λ⁴ + ... + g0.
+//
+// Statement. 002 Theorem 1 (from Wang-Wang-Kim 2001), 001 section 3: the
+// ellipsoids are separate iff f has two distinct negative roots, touch
+// externally iff f has a negative double root, and overlap otherwise (f has
+// no negative root; it always has at least two positive roots, so there are
+// never more than two negative roots counted with multiplicity). The distinct
+// negative roots are counted by Sturm's theorem (kernel/sturm.hpp) over
+// (-∞, 0] (g0 = det(-B) ≠ 0, so 0 is not a root):
+//   2 -> separate,  1 -> touching (it must be the double root),  0 -> overlapping.
+// With exact T the count is a proof (the Sturm sequence is divided by
+// gcd(f, f'), so it counts distinct roots even with a double root). With
+// rounded T it is the count the arithmetic computes; a count the theory
+// forbids (3, 4) gives `uncertain`.
+// Requirements on T: a field, scalar_traits<T>.
+#include "kernel/contact_status.hpp"
+#include "kernel/polynomial.hpp"
+#include "kernel/sturm.hpp"
+
+#include <stdexcept>
+#include <vector>
+
+namespace eccd {
+
+// Distinct negative roots of the quartic with coefficients g[0..4] (increasing powers).
+template <class T>
+int negative_root_count(const std::vector<T>& g) {
+  Poly<T> f(g);
+  return count_roots(f, std::optional<T>(), std::optional<T>(g[0] - g[0]));
+}
+
+template <class T>
+Status quartic_contact_status(const std::vector<T>& g) {
+  int n = negative_root_count(g);
+  if (n == 2) return Status::separate;
+  if (n == 1) return Status::touching;
+  if (n == 0) return Status::overlapping;
+  if constexpr (scalar_traits<T>::is_exact)
+    throw std::logic_error("internal error: the characteristic quartic has " + std::to_string(n) +
+                           " distinct negative roots (at most 2 for two ellipsoids)");
+  return Status::uncertain;
+}
+
+// The status at instant t from the coefficient polynomials g_i(t).
+template <class T>
+Status quartic_status_at(const std::vector<Poly<T>>& g, const T& t) {
+  std::vector<T> v;
+  for (const auto& gi : g) v.push_back(gi.is_zero() ? t - t : gi(t));
+  return quartic_contact_status(v);
+}
+
+}  // namespace eccd
