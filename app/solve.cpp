@@ -3,12 +3,15 @@
 #include "app/solve.hpp"
 
 #include "exact/cd_disc_exact.hpp"
+#include "floating/ccd3_baselines.hpp"
+#include "kernel/bezier_ccd.hpp"
 #include "kernel/ccd_projection.hpp"
 #include "floating/cd_disc_floating.hpp"
 #include "floating/double_traits.hpp"
 #include "floating/mpfr_real.hpp"
 #include "kernel/scene_reader.hpp"
 
+#include <chrono>
 #include <sstream>
 #include <stdexcept>
 
@@ -57,10 +60,13 @@ nlohmann::json instant_json(const Instant& i) {
 }
 
 template <class T>
-nlohmann::json report_json(const CdDiscResult<T>& r) {
+nlohmann::json report_json(const CdDiscResult<T>& r, int dim = 2) {
   nlohmann::json j = answer_to_json(r.answer);
   j["variant"] = variant_name(r.variant);
-  if (r.variant == Variant::collides || r.variant == Variant::first_contact) {
+  if (dim == 3) {
+    // 3D first-contact mode (001 section 4) still reports the first interval
+    // and the contacts up to its end.
+  } else if (r.variant == Variant::collides || r.variant == Variant::first_contact) {
     j["intervals"] = nullptr;
     j["contacts"] = nullptr;
   } else if (r.variant == Variant::all_contacts) {
@@ -86,6 +92,9 @@ nlohmann::json report_json(const CdDiscResult<T>& r) {
   nlohmann::json cells = nlohmann::json::array();
   for (const auto& c : r.cells) cells.push_back({{"sample", instant_json(c.sample)}, {"status", to_string(c.status)}});
   j["cells"] = cells;
+  nlohmann::json counters = nlohmann::json::object();
+  for (const auto& [k, v] : r.counters) counters[k] = v;
+  j["work"] = counters;
   j["time_ms"] = r.seconds * 1e3;
   return j;
 }
@@ -101,17 +110,45 @@ nlohmann::json run_floating(const PreparedPair<3>& p, const SolveOptions& opt, c
 }
 
 
+// "sampling:N" / "marching:N" -> N (0 if the method has another name).
+int method_grid(const std::string& method, const std::string& name) {
+  if (method.rfind(name + ":", 0) != 0) return 0;
+  std::string n = method.substr(name.size() + 1);
+  if (n.empty() || n.size() > 6 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1)
+    throw std::invalid_argument("--method " + method + ": expected " + name + ":N with N a whole number from 1 to 999999");
+  return std::stoi(n);
+}
+
 template <class T>
 nlohmann::json run_floating_3d(const PreparedPair<4>& p, const SolveOptions& opt, const T& like) {
-  MovingPair<T, 4> m = to_arithmetic<T, 4>(p, like);
+  auto start = std::chrono::steady_clock::now();
+  Basis basis = parse_basis(opt.basis);
+  if (basis == Basis::scaled_bernstein && opt.method != "projection")
+    throw std::invalid_argument("--basis scaled-bernstein applies to --method projection only in 3D");
+  // g_0..g_4: products in Bernstein form from N(t) in Bernstein form, or in power form.
+  std::vector<Bern<T>> g;
+  if (basis == Basis::power) g = to_bernstein_all(characteristic_of(to_arithmetic<T, 4>(p, like)), like);
+  else g = characteristic_of(to_arithmetic_bernstein<T, 4>(p, like));
+  double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json j;
   if (opt.method == "projection") {
-    FloatingPolicy<T> pol(parse_basis(opt.basis), opt.arith.bits, like);
-    j = report_json(ccd_projection(m, pol, opt.first_contact));
-    j["basis"] = opt.basis;
+    FloatingPolicy<T> pol(basis, opt.arith.bits, like);
+    j = report_json(ccd_projection(to_arithmetic<T, 4>(p, like), pol, opt.first_contact), 3);
+    setup = 0;  // ccd_projection builds its own coefficients and times them
+  } else if (opt.method == "bezier") {
+    BezierOptions bo;
+    bo.first_contact_only = opt.first_contact;
+    j = report_json(ccd_bezier(g, like, opt.arith.bits, bo), 3);
+  } else if (int n = method_grid(opt.method, "sampling")) {
+    j = report_json(ccd_sampling(g, like, n, opt.first_contact), 3);
+  } else if (int n = method_grid(opt.method, "marching")) {
+    j = report_json(ccd_marching(g, like, n, opt.first_contact), 3);
   } else {
-    throw std::invalid_argument("--method " + opt.method + ": not available yet");
+    throw std::invalid_argument("--method " + opt.method + ": expected bezier, projection, sampling:N or marching:N");
   }
+  j["setup_ms"] = setup * 1e3;
+  j["time_ms"] = j["time_ms"].get<double>() + setup * 1e3;
+  j["basis"] = opt.basis;
   j["method"] = opt.method;
   j["certified"] = false;
   return j;
@@ -125,7 +162,7 @@ nlohmann::json solve_3d(const Scene& scene, const SolveOptions& opt) {
     default: {
       ExactPolicy pol;
       MovingPair<Rational, 4> m = to_arithmetic<Rational, 4>(p, Rational(1));
-      nlohmann::json j = report_json(ccd_projection(m, pol, opt.first_contact));
+      nlohmann::json j = report_json(ccd_projection(m, pol, opt.first_contact), 3);
       j["basis"] = "exact";
       j["method"] = "projection";
       j["certified"] = true;

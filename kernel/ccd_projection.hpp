@@ -49,9 +49,7 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
   using Root = typename Policy::Root;
   CdDiscResult<T> res;
   res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
-  const PolyMatrix<T, 4> A = moving_quadric<T, 4>(pair.qa, pair.na);
-  const PolyMatrix<T, 4> B = moving_quadric<T, 4>(pair.qb, pair.nb);
-  res.g = characteristic_coefficients<T, 4>(A, B);
+  res.g = characteristic_of(pair);
   const auto& g = res.g;
   const T& like = pair.qa[0][0];
   const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);

@@ -60,6 +60,7 @@ struct CdDiscResult {
   std::vector<Critical> critical;   // roots of Δ in [0, 1] with their status
   struct Cell { Instant sample; Status status; };
   std::vector<Cell> cells;
+  std::vector<std::pair<std::string, long>> counters;  // work done (method-specific)
   double seconds = 0;
 };
 

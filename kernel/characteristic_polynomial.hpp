@@ -8,27 +8,55 @@
 // (000 writes det(λA + B) and positive roots; not used here.)
 // Computation: det is multilinear in the columns, so
 //   g_k = (-1)^(N-k) * sum over column sets S with |S| = k of det(C_S),
-// C_S taking column j from A if j in S and from B otherwise (2^N determinants).
+// C_S taking column j from A if j in S and from B otherwise (2^N determinants),
+// in the ring of the entries: power form or Bernstein form (a floating pipeline
+// that multiplies in Bernstein form avoids the cancellation of power-form
+// coefficients, whose size can exceed the values on [0, 1] by 10^15 and more).
 // Requirements on T: ring operations.
 #include "kernel/poly_matrix.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/ring_determinant.hpp"
 
 #include <bit>
 #include <vector>
 
 namespace eccd {
 
-template <class T, int N>
-std::vector<Poly<T>> characteristic_coefficients(const PolyMatrix<T, N>& a, const PolyMatrix<T, N>& b) {
-  std::vector<Poly<T>> g(N + 1);
+// g_0 .. g_N with entries in any ring R (Poly<T> or Bern<T>).
+template <class R, int N>
+std::vector<R> characteristic_coefficients_in(const std::array<std::array<R, N>, N>& a,
+                                              const std::array<std::array<R, N>, N>& b, const R& zero) {
+  std::vector<R> g(N + 1, zero);
   for (unsigned mask = 0; mask < (1u << N); ++mask) {
-    PolyMatrix<T, N> c{};
+    std::vector<std::vector<R>> c(N, std::vector<R>(N, zero));
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j) c[i][j] = (mask >> j & 1u) ? a[i][j] : b[i][j];
     int k = std::popcount(mask);
-    Poly<T> d = det<T, N>(c);
-    if ((N - k) % 2) g[k] -= d; else g[k] += d;
+    R d = ring_det(c, zero);
+    if ((N - k) % 2) g[k] = g[k] - d; else g[k] = g[k] + d;
   }
   return g;
+}
+
+template <class T, int N>
+std::vector<Poly<T>> characteristic_coefficients(const PolyMatrix<T, N>& a, const PolyMatrix<T, N>& b) {
+  return characteristic_coefficients_in<Poly<T>, N>(a, b, Poly<T>());
+}
+
+// f's coefficients for a moving pair: in power form from MovingPair, in
+// Bernstein form (every product carried out in Bernstein form) from MovingPairBern.
+template <class T, int N>
+std::vector<Poly<T>> characteristic_of(const MovingPair<T, N>& p) {
+  return characteristic_coefficients<T, N>(moving_quadric<T, N>(p.qa, p.na), moving_quadric<T, N>(p.qb, p.nb));
+}
+template <class T, int N>
+std::vector<Bern<T>> characteristic_of(const MovingPairBern<T, N>& p) {
+  Bern<T> zero;
+  zero.b.push_back(p.qa[0][0] - p.qa[0][0]);
+  auto a = moving_quadric_in<Bern<T>, T, N>(p.qa, p.na, zero);
+  auto b = moving_quadric_in<Bern<T>, T, N>(p.qb, p.nb, zero);
+  return characteristic_coefficients_in<Bern<T>, N>(a, b, zero);
 }
 
 }  // namespace eccd

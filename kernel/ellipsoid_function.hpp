@@ -25,22 +25,38 @@ namespace eccd {
 
 inline int binomial4(int j) { static const int c[5] = {1, 4, 6, 4, 1}; return c[j]; }
 
-// g[0..4] power-form polynomials in t; like: a value of the run's precision.
+// Each polynomial in Bernstein form of its own degree (the zero polynomial as [0]).
 template <class T>
-BiBern<T> ellipsoid_function(const std::vector<Poly<T>>& g, const T& like) {
+std::vector<Bern<T>> to_bernstein_all(const std::vector<Poly<T>>& g, const T& like) {
+  std::vector<Bern<T>> out;
+  for (const auto& gi : g) {
+    Bern<T> b = to_bernstein(gi);
+    if (gi.is_zero()) b.b.assign(1, like - like);
+    out.push_back(b);
+  }
+  return out;
+}
+
+// g[0..4] in Bernstein form in t (any degrees); the result has degree
+// n = max deg g_i in t.
+template <class T>
+BiBern<T> ellipsoid_function(const std::vector<Bern<T>>& g, const T& like) {
   int n = 0;
   for (const auto& gi : g) n = std::max(n, gi.degree());
   BiBern<T> F;
-  const T zero = like - like;
   for (int j = 0; j <= 4; ++j) {
-    Poly<T> c = g[4 - j];
+    Bern<T> c = elevate(g[4 - j], n - g[4 - j].degree());
     T s = scalar_traits<T>::from_rational(mpq_class((4 - j) % 2 ? -1 : 1, binomial4(j)), like);
-    for (auto& x : c.c) x = x * s;
-    Bern<T> b = to_bernstein(c, n);
-    if (c.is_zero()) b.b.assign(n + 1, zero);
-    F.b.push_back(b.b);
+    for (auto& x : c.b) x = x * s;
+    F.b.push_back(c.b);
   }
   return F;
+}
+
+// g[0..4] in power form in t: converted to Bernstein form first.
+template <class T>
+BiBern<T> ellipsoid_function(const std::vector<Poly<T>>& g, const T& like) {
+  return ellipsoid_function(to_bernstein_all(g, like), like);
 }
 
 // F(., t0) as a quartic in Bernstein form in u.

@@ -15,6 +15,7 @@
 // these same coefficients, rounded to its own arithmetic; all later work
 // (A(t), f, Δ, roots, decisions) is done in that arithmetic, which is what
 // the harness measures. Requirements on T: scalar_traits<T>::from_rational.
+#include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/scene.hpp"
 
@@ -99,6 +100,35 @@ MovingPair<T, N> to_arithmetic(const PreparedPair<N>& p, const T& like) {
       m.qb[i][j] = conv(p.qb[i][j]);
       m.na[i][j] = map_coeffs<T>(p.na[i][j], conv);
       m.nb[i][j] = map_coeffs<T>(p.nb[i][j], conv);
+    }
+  return m;
+}
+
+// The same pair with N(t) in Bernstein form on [0, 1]: converted exactly,
+// then rounded coefficient by coefficient (a floating pipeline that computes
+// A(t) and f in Bernstein form starts from here).
+template <class T, int N>
+struct MovingPairBern {
+  Matrix<T, N> qa{}, qb{};
+  std::array<std::array<Bern<T>, N>, N> na{}, nb{};
+};
+
+template <class T, int N>
+MovingPairBern<T, N> to_arithmetic_bernstein(const PreparedPair<N>& p, const T& like) {
+  auto conv = [&](const Rational& q) { return scalar_traits<T>::from_rational(q, like); };
+  auto bern = [&](const Poly<Rational>& e) {
+    Bern<T> r;
+    if (e.is_zero()) { r.b.push_back(conv(Rational(0))); return r; }
+    for (const auto& c : to_bernstein(e).b) r.b.push_back(conv(c));
+    return r;
+  };
+  MovingPairBern<T, N> m;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      m.qa[i][j] = conv(p.qa[i][j]);
+      m.qb[i][j] = conv(p.qb[i][j]);
+      m.na[i][j] = bern(p.na[i][j]);
+      m.nb[i][j] = bern(p.nb[i][j]);
     }
   return m;
 }

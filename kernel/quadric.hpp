@@ -7,26 +7,35 @@
 // N^T Q N = c^2 A(t): the positive factor c(t)^2 changes no sign and no root
 // of f(λ;t). Requirements on T: ring operations.
 #include "kernel/poly_matrix.hpp"
+#include "kernel/ring_determinant.hpp"
 
 namespace eccd {
 
-template <class T, int N>
-PolyMatrix<T, N> moving_quadric(const Matrix<T, N>& q, const PolyMatrix<T, N>& n) {
-  PolyMatrix<T, N> qn{};
+// A = Nᵀ Q N with N's entries in any ring R (Poly<T> or Bern<T>), Q scalar.
+template <class R, class S, int N>
+std::array<std::array<R, N>, N> moving_quadric_in(const Matrix<S, N>& q, const std::array<std::array<R, N>, N>& n, const R& zero) {
+  std::array<std::array<R, N>, N> qn, a;
   for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j)
+    for (int j = 0; j < N; ++j) {
+      R s = zero;
       for (int k = 0; k < N; ++k)
-        if (!is_zero(q[i][k]) && !n[k][j].is_zero()) qn[i][j] += q[i][k] * n[k][j];
-  PolyMatrix<T, N> a{};
+        if (!is_zero(q[i][k]) && !is_ring_zero(n[k][j])) s = s + q[i][k] * n[k][j];
+      qn[i][j] = s;
+    }
   for (int i = 0; i < N; ++i)
     for (int j = i; j < N; ++j) {
-      Poly<T> s;
+      R s = zero;
       for (int k = 0; k < N; ++k)
-        if (!n[k][i].is_zero() && !qn[k][j].is_zero()) s += n[k][i] * qn[k][j];
+        if (!is_ring_zero(n[k][i]) && !is_ring_zero(qn[k][j])) s = s + n[k][i] * qn[k][j];
       a[i][j] = s;
       a[j][i] = s;  // symmetric by construction
     }
   return a;
+}
+
+template <class T, int N>
+PolyMatrix<T, N> moving_quadric(const Matrix<T, N>& q, const PolyMatrix<T, N>& n) {
+  return moving_quadric_in<Poly<T>, T, N>(q, n, Poly<T>());
 }
 
 }  // namespace eccd

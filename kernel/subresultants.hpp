@@ -14,65 +14,15 @@
 // At an instant t*, the multiple roots of f(λ; t*) are the roots of
 // gcd(f, f') = S_j(t*). Two spheres have psc_0 ≡ 0 (λ = 1 is a double root
 // for every t), so the projection is the first psc_k that is not ≡ 0.
-// The determinant is expanded over column subsets (O(2^k k) ring products,
-// k <= 7 here), so R needs only +, -, * and a zero: it may be a scalar,
-// Poly<T>, Bern<T> or ScaledBern<T>.
-#include "kernel/scalar_traits.hpp"
+// Determinants by kernel/ring_determinant.hpp, so R needs only +, -, * and a
+// zero: it may be a scalar, Poly<T>, Bern<T> or ScaledBern<T>.
+#include "kernel/ring_determinant.hpp"
 
-#include <bit>
-#include <cstdint>
 #include <vector>
 
 namespace eccd {
 
 // det of a k x k matrix over R (entries a[r][c]), k <= 20.
-// Whether a ring element is known to be zero (skips work in sparse matrices).
-template <class R>
-bool is_ring_zero(const R& x) {
-  if constexpr (requires { x.is_zero(); }) {
-    return x.is_zero();
-  } else if constexpr (requires { x.b.size(); }) {
-    for (const auto& c : x.b)
-      if (!is_zero(c)) return false;
-    return true;
-  } else if constexpr (requires { x.s.size(); }) {
-    for (const auto& c : x.s)
-      if (!is_zero(c)) return false;
-    return true;
-  } else {
-    return is_zero(x);
-  }
-}
-
-// det of a k x k matrix over R (entries a[r][c]), k <= 20.
-template <class R>
-R ring_det(const std::vector<std::vector<R>>& a, const R& zero) {
-  const int k = int(a.size());
-  if (k == 0) return zero;
-  // dp[mask]: signed sum over placements of the first popcount(mask) rows
-  // into the columns of mask. Row r goes to column c; the sign flips once per
-  // already used column greater than c (one inversion each).
-  std::vector<R> dp(std::size_t(1) << k, zero);
-  std::vector<char> live(dp.size(), 0);
-  std::vector<std::vector<std::uint32_t>> by_count(k + 1);
-  for (std::uint32_t m = 0; m < dp.size(); ++m) by_count[std::popcount(m)].push_back(m);
-  live[0] = 1;
-  for (int r = 0; r < k; ++r)
-    for (std::uint32_t mask : by_count[r]) {
-      if (!live[mask]) continue;
-      for (int c = 0; c < k; ++c) {
-        if (mask >> c & 1u) continue;
-        const R& e = a[r][c];
-        if (is_ring_zero(e)) continue;
-        std::uint32_t nm = mask | (1u << c);
-        R term = r == 0 ? e : dp[mask] * e;
-        if (std::popcount(mask >> (c + 1)) % 2) dp[nm] = dp[nm] - term; else dp[nm] = dp[nm] + term;
-        live[nm] = 1;
-      }
-    }
-  return live.back() ? dp.back() : zero;
-}
-
 // The coefficient s_{j,i} (of λ^i) of S_j(f, g), 0 <= i <= j < n; f, g given
 // by coefficients in increasing powers of λ (f.size() = m+1, g.size() = n+1).
 // psc_j = subresultant_coefficient(f, g, j, j, zero).

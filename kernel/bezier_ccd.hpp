@@ -1,0 +1,450 @@
+#pragma once
+// The Bézier zero-set analysis of F(u, t) = det((u-1)A(t) - uB(t)): 3D
+// continuous collision detection without a projection polynomial, written
+// once for every arithmetic.
+//
+// Statement. 001 section 4 ("CCD for moving ellipsoids", "Finding all
+// collision intervals", "Finding the first contact time only"). At t0 the
+// ellipsoids are separate iff F(u, t0) > 0 for some u in (0, 1)
+// (kernel/ellipsoid_function.hpp). The method:
+//  1. a first pass of static tests at samples+1 equally spaced instants;
+//  2. between two samples that are both separate (001 case 1): Bézier
+//     shooting BS[a -> b]: û = argmax F(., a) (a root of the cubic F_u), then
+//     the first root t̂ of F(û, t) on [a, b] by Bézier clipping/subdivision of
+//     the univariate Bernstein polynomial F(û, .): no root = a miss, and the
+//     pair is separate on [a, b] (F(û, t) > 0 there); a hit is repeated from t̂
+//     (iterative shooting, quadratic convergence at a regular contact, 001
+//     Appendix B). Every hit t̂ is a lower bound of the first contact after a,
+//     so the iteration converges to it. Shooting from both ends onto one
+//     instant is a tangential touch; otherwise the gap is subdivided;
+//  3. between two overlapping samples (case 2): all control points of F over
+//     (0, 1) x [a, b] negative = overlap on [a, b]; else subdivide in t;
+//  4. a transition (case 3): the Gaussian-circle test — all 2D control points
+//     of ∇F = (F_u, F_t) over the part of (0, 1) x [a, b] where F may vanish
+//     lie on one side of a line through the origin, so the zero-set has no
+//     loop there — then iterative shooting from the separate end gives the
+//     contact instant; if the test fails, subdivide at the midpoint.
+// first_contact_only stops after the first collision interval (001's
+// first-contact mode; the interval's end is still computed).
+//
+// Arithmetics. double and MPFR run all of the above; nothing is certified,
+// and a gap that subdivision cannot close at the arithmetic's resolution
+// (2^-(p/2), where a double root's instant is only known to ~sqrt(eps)) is
+// reported as a touch if both sides are separate, or `uncertain`. With exact
+// rationals the same subdivision and sign tests are proofs, never guesses:
+// certify_cell() proves overlap on [a, b] by negative control points, and
+// separation by a rational u* (a rounded argmax: it need not be the exact
+// root of F_u) whose Bernstein coefficients of F(u*, .) on [a, b] are all
+// positive. Near a contact instant no such certificate exists; the exact
+// pipeline decides those instants by projection (kernel/ccd_projection.hpp).
+// Requirements on T: an ordered field with scalar_traits<T>. Shooting and the
+// Gaussian test need rounded T (the test's angles are compared in double).
+#include "floating/bernstein_roots.hpp"
+#include "kernel/cd_disc.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/collision_timeline.hpp"
+#include "kernel/ellipsoid_function.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/quartic_status.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace eccd {
+
+struct BezierOptions {
+  int samples = 32;        // first pass: static tests at samples + 1 instants
+  int max_shots = 64;      // iterations of one iterative Bézier shooting
+  int gauss_depth = 5;     // the Gaussian-circle test splits u into 2^gauss_depth pieces
+  int u_depth = 10;        // overlap certificates split u adaptively, at most this deep
+  int max_depth = 48;      // t-subdivision depth below one sample interval
+  int overlap_depth = 10;  // t-subdivision depth between two overlapping instants
+  bool first_contact_only = false;
+};
+
+// q restricted to [a, b] ⊂ [0, 1] (two de Casteljau splits).
+template <class T>
+Bern<T> restrict_to(const Bern<T>& q, const T& a, const T& b) {
+  Bern<T> r = q;
+  const T zero = a - a;
+  const T one = scalar_traits<T>::from_rational(mpq_class(1), a);
+  if (a > zero) r = split(r, a).second;
+  if (b < one) {
+    T tau = (b - a) / (one - a);
+    r = split(r, tau).first;
+  }
+  return r;
+}
+
+template <class T>
+BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
+  BiBern<T> r;
+  for (const auto& row : f.b) r.b.push_back(restrict_to(Bern<T>(row), a, b).b);
+  return r;
+}
+
+// argmax of a univariate Bernstein polynomial on [0, 1] by the roots of its
+// derivative (rounded arithmetic), with the value there.
+template <class U>
+struct Peak { U u, value; };
+
+template <class U>
+Peak<U> bern_argmax(const Bern<U>& f, int bits) {
+  const U& like = f.b.front();
+  U u0 = scalar_traits<U>::from_rational(mpq_class(0), like), u1 = scalar_traits<U>::from_rational(mpq_class(1), like);
+  Peak<U> best{u0, f(u0)};
+  U v1 = f(u1);
+  if (v1 > best.value) best = {u1, v1};
+  BernsteinRootOptions<U> ro;
+  ro.precision_bits = bits;
+  for (const auto& r : bernstein_roots(derivative(f), ro)) {
+    U v = f(r.value);
+    if (v > best.value) best = {r.value, v};
+  }
+  return best;
+}
+
+template <class T>
+class BezierZeroSet {
+ public:
+  using Peak = eccd::Peak<T>;
+  enum class ShotKind { miss, converged, inconclusive };
+  struct Shot { ShotKind kind; T t; };
+
+  // g: the coefficients g_0..g_4 of f(λ;t) in Bernstein form in t.
+  BezierZeroSet(const std::vector<Bern<T>>& g, const T& like, int bits, BezierOptions opt)
+      : g_(g), like_(like), bits_(bits), opt_(opt), F_(ellipsoid_function(g, like)) {
+    zero_ = q(0);
+    one_ = q(1);
+    half_ = q(1, 2);
+    eps_t_ = pow2(-(bits * 3 / 4));
+    touch_tol_ = pow2(-(bits / 2));
+    noise_ = pow2(-(bits - 8));
+  }
+
+  const BiBern<T>& F() const { return F_; }
+  long shots = 0, shot_iterations = 0, subdivisions = 0, gauss_tests = 0, gauss_passed = 0, overlap_certificates = 0,
+       overlap_unverified = 0;
+
+  // argmax of F(., t0) on [0, 1] and the value there.
+  Peak peak(const T& t0) const { return argmax(ellipsoid_function_at(F_, t0)); }
+
+  // The static status at t0. Exact: Sturm (a proof); rounded: sign of max_u F(u, t0).
+  Status status(const T& t0) const {
+    if constexpr (scalar_traits<T>::is_exact) {
+      std::vector<T> v;
+      for (const auto& gi : g_) v.push_back(gi(t0));
+      return quartic_contact_status(v);
+    } else {
+      Bern<T> f = ellipsoid_function_at(F_, t0);
+      Peak p = argmax(f);
+      // A peak within rounding noise of 0 (relative to F(., t0)'s coefficients) is a touch as far
+      // as this arithmetic can tell.
+      T scale = zero_;
+      for (const auto& x : f.b) { T ax = scalar_traits<T>::abs(x); if (ax > scale) scale = ax; }
+      if (!(scalar_traits<T>::abs(p.value) > noise_ * scale)) return Status::touching;
+      Sign s = sign(p.value);
+      if (s == Sign::positive) return Status::separate;
+      if (s == Sign::negative) return Status::overlapping;
+      if (s == Sign::zero) return Status::touching;
+      return Status::uncertain;
+    }
+  }
+
+  // Certificate of overlap on [a, b]: every control point of F over
+  // (0,1) x [a, b] negative, after splitting u into up to 2^gauss_depth pieces
+  // (the control net in u alone is often too loose near u's ends).
+  bool overlap_on(const T& a, const T& b) const { return negative_in_u(restrict_t(F_, a, b), opt_.u_depth); }
+  bool negative_in_u(const BiBern<T>& f, int depth) const {
+    int s = f.strict_sign();
+    if (s == -1) return true;
+    if (s == 1 || depth == 0) return false;
+    for (const auto& row : f.b)  // a positive control point on the boundary rows: F > 0 somewhere
+      for (std::size_t j : {std::size_t(0), row.size() - 1})
+        if (sign(row[j]) == Sign::positive && (&row == &f.b.front() || &row == &f.b.back())) return false;
+    auto [lo, hi] = split_u(f, half_);
+    return negative_in_u(lo, depth - 1) && negative_in_u(hi, depth - 1);
+  }
+
+  // Certificate of separation on [a, b]: F(u*, t) > 0 on [a, b] (all Bernstein coefficients positive).
+  bool separate_on(const T& ustar, const T& a, const T& b) const {
+    Bern<T> G = restrict_to(ellipsoid_function_along(F_, ustar), a, b);
+    for (const auto& x : G.b)
+      if (sign(x) != Sign::positive) return false;
+    return true;
+  }
+
+  // Exact certificates for a cell [a, b] of known status, by subdivision to
+  // `depth` levels: returns the certified length; the pieces that no
+  // certificate covers are appended to `open` (they hold a contact instant
+  // or are too close to one).
+  T certify_cell(const T& a, const T& b, Status st, int depth, std::vector<std::pair<T, T>>& open) const {
+    bool ok = false;
+    if (st == Status::overlapping) ok = overlap_on(a, b);
+    if (st == Status::separate) {
+      T mid = half_ * (a + b);
+      ok = separate_on(peak(mid).u, a, b) || separate_on(peak(a).u, a, b) || separate_on(peak(b).u, a, b);
+    }
+    if (ok) return b - a;
+    if (depth == 0) { open.push_back({a, b}); return zero_; }
+    T m = half_ * (a + b);
+    return certify_cell(a, m, st, depth - 1, open) + certify_cell(m, b, st, depth - 1, open);
+  }
+
+  // Iterative Bézier shooting from the separate instant `from` towards `to` (either direction).
+  Shot shoot(const T& from, const T& to) {
+    ++shots;
+    T t = from;
+    for (int it = 0; it < opt_.max_shots; ++it) {
+      ++shot_iterations;
+      Peak p = peak(t);
+      if (!(p.value > zero_)) return {ShotKind::converged, t};
+      bool forward = to > t;
+      Bern<T> G = restrict_to(ellipsoid_function_along(F_, p.u), forward ? t : to, forward ? to : t);
+      if (!forward) std::reverse(G.b.begin(), G.b.end());  // parameter s runs from t towards `to`
+      bool positive = true;
+      for (const auto& x : G.b) positive = positive && sign(x) == Sign::positive;
+      if (positive) return {ShotKind::miss, to};
+      BernsteinRootOptions<T> ro;
+      ro.precision_bits = bits_;
+      ro.first_only = true;
+      auto roots = bernstein_roots(G, ro);
+      if (roots.empty()) return {ShotKind::miss, to};
+      T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
+      T tn = t + s * (to - t);
+      T step = tn - t;
+      if (sign(step) == Sign::negative) step = -step;
+      t = tn;
+      if (!(step > eps_t_)) return {ShotKind::converged, t};
+    }
+    return {ShotKind::inconclusive, t};
+  }
+
+  // The Gaussian-circle test on (0, 1) x [a, b] (001 section 4, case 3).
+  bool loop_free(const T& a, const T& b) {
+    ++gauss_tests;
+    BiBern<T> Fab = restrict_t(F_, a, b);
+    std::vector<std::pair<double, double>> pts;
+    const double wt = to_double(b - a);
+    collect_gradient(Fab, opt_.gauss_depth, 1.0, wt, pts);
+    bool ok = pointed(pts);
+    if (ok) ++gauss_passed;
+    return ok;
+  }
+
+  // All collision intervals (or the first one) as a timeline.
+  std::vector<TimelineNode> run() {
+    std::vector<T> ts;
+    std::vector<Status> st;
+    for (int k = 0; k <= opt_.samples; ++k) {
+      ts.push_back(q(k, opt_.samples));
+      st.push_back(status(ts.back()));
+    }
+    seq_.clear();
+    push_instant(ts[0], st[0]);
+    for (int k = 0; k < opt_.samples; ++k) {
+      resolve(ts[k], st[k], ts[k + 1], st[k + 1], 0);
+      push_instant(ts[k + 1], st[k + 1]);
+      if (opt_.first_contact_only && first_run_closed()) break;
+    }
+    return seq_;
+  }
+
+ private:
+  std::vector<Bern<T>> g_;
+  T like_;
+  int bits_;
+  BezierOptions opt_;
+  BiBern<T> F_;
+  T zero_, one_, half_, eps_t_, touch_tol_, noise_;
+  std::vector<TimelineNode> seq_;
+
+  T q(long n, long d = 1) const { return scalar_traits<T>::from_rational(mpq_class(n, d), like_); }
+  T pow2(int e) const {
+    mpq_class v = e >= 0 ? mpq_class(mpz_class(1) << e) : mpq_class(1, mpz_class(1) << (-e));
+    return scalar_traits<T>::from_rational(v, like_);
+  }
+
+  Peak argmax(const Bern<T>& f) const {
+    if constexpr (scalar_traits<T>::is_exact) {
+      // Any u is a valid witness: round the argmax found in double to a rational.
+      Bern<double> fd;
+      for (const auto& x : f.b) fd.b.push_back(to_double(x));
+      double ud = bern_argmax(fd, 53).u;
+      T u(ud);
+      return {u, f(u)};
+    } else {
+      return bern_argmax(f, bits_);
+    }
+  }
+
+  // Control points of ∇F (in the coordinates of the whole square) over the
+  // u-pieces of f where F may vanish.
+  void collect_gradient(const BiBern<T>& f, int depth, double wu, double wt, std::vector<std::pair<double, double>>& pts) const {
+    if (f.strict_sign() == -1) return;  // F < 0 on this piece: no zero-set here
+    if (depth > 0) {
+      auto [lo, hi] = split_u(f, half_);
+      collect_gradient(lo, depth - 1, wu / 2, wt, pts);
+      collect_gradient(hi, depth - 1, wu / 2, wt, pts);
+      return;
+    }
+    const int m = f.degree_u(), n = f.degree_t();
+    std::vector<std::vector<double>> fu(m + 1, std::vector<double>(n + 1)), ft(m + 1, std::vector<double>(n + 1));
+    for (int j = 0; j <= n; ++j) {
+      Bern<T> col;
+      for (int i = 0; i <= m; ++i) col.b.push_back(f.b[i][j]);
+      Bern<T> d = elevate(derivative(col), 1);
+      for (int i = 0; i <= m; ++i) fu[i][j] = to_double(d.b[i]) / wu;
+    }
+    for (int i = 0; i <= m; ++i) {
+      Bern<T> d = n > 0 ? elevate(derivative(Bern<T>(f.b[i])), 1) : Bern<T>(std::vector<T>(1, zero_));
+      for (int j = 0; j <= n; ++j) ft[i][j] = to_double(d.b[j]) / wt;
+    }
+    for (int i = 0; i <= m; ++i)
+      for (int j = 0; j <= n; ++j) pts.push_back({fu[i][j], ft[i][j]});
+  }
+
+  // All points strictly inside one open half-plane through the origin?
+  static bool pointed(const std::vector<std::pair<double, double>>& pts) {
+    if (pts.empty()) return true;
+    std::vector<double> ang;
+    for (auto [x, y] : pts) {
+      if (x == 0 && y == 0) return false;
+      ang.push_back(std::atan2(y, x));
+    }
+    std::sort(ang.begin(), ang.end());
+    double gap = ang.front() + 2 * M_PI - ang.back();
+    for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
+    return gap > M_PI;
+  }
+
+  void push_instant(const T& t, Status s) { seq_.push_back({instant(t), s, false}); }
+  void push_cell(const T& a, const T& b, Status s) { seq_.push_back({instant(half_ * (a + b)), s, true}); }
+  Instant instant(const T& t) const {
+    if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), t, t};
+    else return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt};
+  }
+  bool first_run_closed() const {
+    bool seen = false;
+    for (const auto& n : seq_) {
+      if (in_collision(n.status)) seen = true;
+      else if (seen && n.status == Status::separate) return true;
+    }
+    return false;
+  }
+  T mid(const T& a, const T& b) const { return half_ * (a + b); }
+
+  // Fills the open interval (a, b) between two decided instants.
+  void resolve(const T& a, Status sa, const T& b, Status sb, int depth) {
+    if (sa == Status::uncertain || sb == Status::uncertain) { push_cell(a, b, Status::uncertain); return; }
+    if constexpr (scalar_traits<T>::is_exact) {
+      // Exact: certificates only; a gap goes to the projection (ccd_projection).
+      (void)depth;
+      push_cell(a, b, Status::uncertain);
+      return;
+    } else {
+      const bool sepa = sa == Status::separate, sepb = sb == Status::separate;
+      const bool at_limit = depth >= opt_.max_depth || !(b - a > touch_tol_);
+      if ((sa == Status::touching && sepb) || (sepa && sb == Status::touching)) {
+        // A sample at a touch: separate up to it if shooting from the separate end reaches it.
+        Shot s = sepb ? shoot(b, a) : shoot(a, b);
+        T d = s.t - (sepb ? a : b);
+        if (sign(d) == Sign::negative) d = -d;
+        if (s.kind == ShotKind::miss || (s.kind == ShotKind::converged && !(d > touch_tol_)) || at_limit) {
+          push_cell(a, b, Status::separate);
+          return;
+        }
+        split_at(a, sa, mid(a, b), b, sb, depth);
+        return;
+      }
+      if (sepa && sepb) {
+        Shot f = shoot(a, b);
+        if (f.kind == ShotKind::miss) { push_cell(a, b, Status::separate); return; }
+        Shot k = shoot(b, a);
+        if (k.kind == ShotKind::miss) { push_cell(a, b, Status::separate); return; }
+        T gap = k.t - f.t;
+        if (!(gap > touch_tol_)) {  // both shots met: a tangential touch
+          T c = mid(f.t, k.t);
+          push_cell(a, c, Status::separate);
+          push_instant(c, Status::touching);
+          push_cell(c, b, Status::separate);
+          return;
+        }
+        if (at_limit) {
+          T c = mid(f.t, k.t);
+          push_cell(a, c, Status::separate);
+          push_instant(c, Status::uncertain);
+          push_cell(c, b, Status::separate);
+          return;
+        }
+        split_at(a, sa, mid(f.t, k.t), b, sb, depth);
+        return;
+      }
+      if (sepa != sepb) {  // a transition
+        const T& from = sepa ? a : b;
+        const T& to = sepa ? b : a;
+        bool ok = at_limit || loop_free(a, b);
+        if (ok) {
+          Shot s = shoot(from, to);
+          if (s.kind != ShotKind::inconclusive || at_limit) {
+            T c = s.t;
+            Status cs = s.kind == ShotKind::inconclusive ? Status::uncertain : Status::touching;
+            if (s.kind == ShotKind::miss) c = to;  // no hit before the overlapping end: the contact is there
+            if (!(c > a)) c = a;
+            if (!(c < b)) c = b;
+            push_cell(a, c, sa == Status::touching ? Status::overlapping : sa);
+            push_instant(c, cs);
+            push_cell(c, b, sb == Status::touching ? Status::overlapping : sb);
+            return;
+          }
+        }
+        split_at(a, sa, mid(a, b), b, sb, depth);
+        return;
+      }
+      // both in collision
+      if (overlap_on(a, b)) { ++overlap_certificates; push_cell(a, b, Status::overlapping); return; }
+      // Below 2^-overlap_depth of a sample interval an uncertified overlapping
+      // pair of ends is accepted (a separate pocket that short is missed).
+      if (at_limit || depth >= opt_.overlap_depth) { ++overlap_unverified; push_cell(a, b, Status::overlapping); return; }
+      split_at(a, sa, mid(a, b), b, sb, depth);
+    }
+  }
+
+  void split_at(const T& a, Status sa, const T& m, const T& b, Status sb, int depth) {
+    ++subdivisions;
+    Status sm = status(m);
+    resolve(a, sa, m, sm, depth + 1);
+    push_instant(m, sm);
+    resolve(m, sm, b, sb, depth + 1);
+  }
+};
+
+// The Bézier pipeline: 001 section 4 on F(u, t), from g_0..g_4 in Bernstein form.
+template <class T>
+CdDiscResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bits, BezierOptions opt = {}) {
+  auto start = std::chrono::steady_clock::now();
+  CdDiscResult<T> res;
+  res.variant = opt.first_contact_only ? Variant::first_contact : Variant::answer;
+  for (const auto& gi : g) res.g.push_back(to_power(gi));
+  BezierZeroSet<T> z(g, like, bits, opt);
+  std::vector<TimelineNode> seq = z.run();
+  res.status_at_0 = seq.front().status;
+  res.delta_degree = z.F().degree_t();
+  for (std::size_t k = 0; k < seq.size(); ++k) {
+    if (seq[k].is_cell) res.cells.push_back({seq[k].t, seq[k].status});
+    else if (seq[k].status == Status::touching || seq[k].status == Status::uncertain) res.critical.push_back({seq[k].t, seq[k].status, 0});
+  }
+  check_isolated_instants(seq, false);
+  assemble_answer(seq, res.answer, [](std::size_t) {});
+  if (opt.first_contact_only && res.answer.intervals.size() > 1) res.answer.intervals.resize(1);
+  res.counters = {{"shots", z.shots}, {"shot_iterations", z.shot_iterations}, {"subdivisions", z.subdivisions},
+                  {"gauss_tests", z.gauss_tests}, {"gauss_passed", z.gauss_passed}, {"overlap_certificates", z.overlap_certificates},
+                  {"overlap_unverified", z.overlap_unverified}};
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
+
+}  // namespace eccd
