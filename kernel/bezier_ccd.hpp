@@ -29,7 +29,7 @@
 //
 // Arithmetics. double and MPFR run all of the above; nothing is certified,
 // and a gap that subdivision cannot close at the arithmetic's resolution
-// (2^-(p/2), where a double root's instant is only known to ~sqrt(eps)) is
+// (2^-min(p/2, 30), where a double root's instant is only known to ~sqrt(eps)) is
 // reported as a touch if both sides are separate, or `uncertain`. With exact
 // rationals the same subdivision and sign tests are proofs, never guesses:
 // certify_cell() proves overlap on [a, b] by negative control points, and
@@ -60,7 +60,8 @@ struct BezierOptions {
   int max_shots = 64;      // iterations of one iterative Bézier shooting
   int gauss_depth = 5;     // the Gaussian-circle test splits u into 2^gauss_depth pieces
   int u_depth = 10;        // overlap certificates split u adaptively, at most this deep
-  int max_depth = 48;      // t-subdivision depth below one sample interval
+  int max_depth = 40;      // t-subdivision depth below one sample interval
+  long max_subdivisions = 20000;  // work cap for the whole run (then every open gap is closed as at the depth limit)
   int overlap_depth = 10;  // t-subdivision depth between two overlapping instants
   bool first_contact_only = false;
 };
@@ -121,7 +122,10 @@ class BezierZeroSet {
     one_ = q(1);
     half_ = q(1, 2);
     eps_t_ = pow2(-(bits * 3 / 4));
-    touch_tol_ = pow2(-(bits / 2));
+    // Contacts closer than this are one tangential touch, and no interval is
+    // split below it: a double root's instant is known to ~sqrt(eps) at best,
+    // and shooting converges only linearly onto a tangency.
+    touch_tol_ = pow2(-std::min(bits / 2, 30));
     noise_ = pow2(-(bits - 8));
   }
 
@@ -209,7 +213,10 @@ class BezierZeroSet {
       for (const auto& x : G.b) positive = positive && sign(x) == Sign::positive;
       if (positive) return {ShotKind::miss, to};
       BernsteinRootOptions<T> ro;
-      ro.precision_bits = bits_;
+      // Relative to [t, to]: roots to 2^-53 of it, clusters below 2^-30 of it
+      // (near a tangency G is rounding noise throughout, and finer clusters
+      // would make the subdivision explore an exponential number of pieces).
+      ro.precision_bits = std::min(bits_, 56);
       ro.first_only = true;
       auto roots = bernstein_roots(G, ro);
       if (roots.empty()) return {ShotKind::miss, to};
@@ -347,7 +354,7 @@ class BezierZeroSet {
       return;
     } else {
       const bool sepa = sa == Status::separate, sepb = sb == Status::separate;
-      const bool at_limit = depth >= opt_.max_depth || !(b - a > touch_tol_);
+      const bool at_limit = depth >= opt_.max_depth || !(b - a > touch_tol_) || subdivisions >= opt_.max_subdivisions;
       if ((sa == Status::touching && sepb) || (sepa && sb == Status::touching)) {
         // A sample at a touch: separate up to it if shooting from the separate end reaches it.
         Shot s = sepb ? shoot(b, a) : shoot(a, b);
