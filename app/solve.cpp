@@ -175,6 +175,12 @@ nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt);
 
 }  // namespace
 
+void check_method(const std::string& method) {
+  if (method == "bezier" || method == "projection") return;
+  if (method_grid(method, "sampling") || method_grid(method, "marching")) return;
+  throw std::invalid_argument("--method " + method + ": expected bezier, projection, sampling:N or marching:N");
+}
+
 nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt) {
   nlohmann::json j;
   if (scene.dim == 3) {

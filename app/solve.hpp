@@ -17,6 +17,8 @@ struct Arithmetic {
   std::string name() const;
 };
 Arithmetic parse_arithmetic(const std::string& text);
+// Throws std::invalid_argument unless method is bezier, projection, sampling:N or marching:N.
+void check_method(const std::string& method);
 
 struct SolveOptions {
   Arithmetic arith;

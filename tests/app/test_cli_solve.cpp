@@ -54,3 +54,24 @@ TEST_CASE("eccd solve rejects a bad --arith with exit status 2 and no output", "
   CHECK(run(std::string(ECCD_EXE) + " solve " + scene + " --arith quad", out) == 2);
   CHECK(out.empty());
 }
+
+TEST_CASE("eccd solve on a 3D scene: every method prints one JSON object with its running time", "[app][cli][ccd3]") {
+  const std::string scene = std::string(ECCD_SOURCE_DIR) + "/cases/paper002/example.json";
+  struct Run { const char* arith; const char* extra; const char* method; };
+  for (const Run& r : {Run{"exact", "", "projection"}, Run{"double", "", "bezier"}, Run{"double", " --method sampling:50", "sampling:50"},
+                       Run{"double", " --method marching:40", "marching:40"}, Run{"mpfr:128", " --first-contact", "bezier"}}) {
+    INFO(r.arith << r.extra);
+    std::string out;
+    REQUIRE(run(std::string(ECCD_EXE) + " solve " + scene + " --arith " + r.arith + r.extra + " --json", out) == 0);
+    nlohmann::json j = nlohmann::json::parse(out);
+    CHECK(j["dim"] == 3);
+    CHECK(j["method"] == r.method);
+    CHECK(j["time_ms"].get<double>() > 0);
+    CHECK(j["collides"] == true);
+    CHECK(j["certified"] == (std::string(r.arith) == "exact"));
+  }
+  std::string out;
+  CHECK(run(std::string(ECCD_EXE) + " solve " + scene + " --arith double --method marching:x", out) == 2);
+  CHECK(out.empty());
+  CHECK(run(std::string(ECCD_EXE) + " solve " + scene + " --arith double --method simplex", out) == 2);
+}
