@@ -178,3 +178,26 @@ TEST_CASE("Random 3D scenes of motion degree 2 and 4: the exact answer agrees wi
   WARN("random 3D: " << collided << " of 9 collide; " << checked << " instants checked; double Bezier within 1e-6 of exact on "
                      << bezier_agree << " of " << total);
 }
+
+TEST_CASE("Exact Bezier certificates cover each cell of the exact answer except next to its critical instants", "[ccd3][exact][bezier]") {
+  for (const char* f : {"spheres/spheres-crossing.json", "touch3d/touch-then-overlap.json"}) {
+    INFO(f);
+    Scene s = read_scene_file(case_path(f));
+    auto r = solve_exact_3d(s);
+    auto g = characteristic_of(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(s), Rational(1)));
+    BezierZeroSet<Rational> z(g, Rational(1), 0, BezierOptions{});
+    // The cells of the exact answer: between the brackets of consecutive critical instants.
+    std::vector<Rational> ends{Rational(0)};
+    for (const auto& c : r.critical) { ends.push_back(*c.t.lo); ends.push_back(*c.t.hi); }
+    ends.push_back(Rational(1));
+    for (std::size_t k = 0; k + 1 < ends.size(); k += 2) {
+      Rational a = ends[k], b = ends[k + 1];
+      Status st = r.cells.at(k / 2).status;
+      std::vector<std::pair<Rational, Rational>> open;
+      Rational covered = z.certify_cell(a, b, st, 8, open);
+      INFO("cell [" << a.get_d() << ", " << b.get_d() << "] " << to_string(st) << ": certified " << Rational(covered / (b - a)).get_d());
+      CHECK(covered >= Rational(9, 10) * (b - a));
+      for (const auto& [lo, hi] : open) CHECK((lo == a || hi == b));  // only the pieces at the cell's ends stay open
+    }
+  }
+}
