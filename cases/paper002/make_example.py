@@ -47,11 +47,18 @@ files are written next to this script. `python3 make_example.py --check` also
 runs the exact classification (pure Python, about 10 s). `eccd solve FILE
 --arith exact --write-answer` stores the exact answers.
 """
-import json
 import os
-import re
 import sys
 from fractions import Fraction as F
+import os as _os
+import sys as _sys
+_sys.path.insert(0, _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), ".."))
+from scenelib import det, negative_roots, pev, prem, write as write_in  # noqa: E402
+
+
+def write(s):
+    write_in(s, _os.path.dirname(_os.path.abspath(__file__)))
+
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -102,25 +109,9 @@ notes = {
 }
 
 
-def write(s):
-    text = json.dumps(s, indent=1)
-    # one line per polynomial: collapse arrays that hold only strings
-    text = re.sub(r"\[\s*((?:\"[^\"]*\",\s*)*\"[^\"]*\")\s*\]",
-                  lambda m: "[" + re.sub(r",\s*", ", ", m.group(1)) + "]", text)
-    with open(os.path.join(HERE, s["name"] + ".json"), "w") as f:
-        f.write(text + "\n")
-
-
 # ---------------------------------------------------------------- exact checks
 def P(p):
     return [F(x) for x in p] if isinstance(p, list) else [F(p)]
-
-
-def pev(p, t):
-    r = F(0)
-    for c in reversed(p):
-        r = r * t + c
-    return r
 
 
 def euler_map(e, v):
@@ -144,23 +135,6 @@ def shape_Q(ax, squared):
         Q[i][i] = 1 / (F(a) if squared else F(a) ** 2)
     Q[3][3] = F(-1)
     return Q
-
-
-def det(m):
-    m = [r[:] for r in m]
-    n, d = len(m), F(1)
-    for i in range(n):
-        p = next((r for r in range(i, n) if m[r][i] != 0), None)
-        if p is None:
-            return F(0)
-        if p != i:
-            m[i], m[p], d = m[p], m[i], -d
-        d *= m[i][i]
-        for r in range(i + 1, n):
-            f = m[r][i] / m[i][i]
-            for c in range(i, n):
-                m[r][c] -= f * m[i][c]
-    return d
 
 
 def world(Q, M):
@@ -189,33 +163,6 @@ def charpoly(A, B):
         for k in range(5):
             coef[k] += ys[i] * basis[k] / den
     return coef
-
-
-def prem(a, b):
-    a = a[:]
-    while len(a) >= len(b):
-        c, s = a[-1] / b[-1], len(a) - len(b)
-        for i, bc in enumerate(b):
-            a[s + i] -= c * bc
-        a.pop()
-    while a and a[-1] == 0:
-        a.pop()
-    return a
-
-
-def negative_roots(p):
-    """Number of distinct real roots of p in (-inf, 0) (Sturm); p(0) != 0."""
-    seq = [p, [i * p[i] for i in range(1, len(p))]]
-    while True:
-        r = prem(seq[-2], seq[-1])
-        if not r:
-            break
-        seq.append([-x for x in r])
-
-    def changes(v):
-        v = [x for x in v if x != 0]
-        return sum((a > 0) != (b > 0) for a, b in zip(v, v[1:]))
-    return changes([q[-1] * (-1) ** (len(q) - 1) for q in seq]) - changes([q[0] for q in seq])
 
 
 def status(QA, MA, QB, MB, t):

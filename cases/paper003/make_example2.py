@@ -17,12 +17,19 @@ The variants shift disk B (the lower disk) by d along y: "away" (towards -y,
 near misses with minimum separation d at t = 1/2) and "towards" (short
 overlaps), d = 1e-3, 1e-6, 1e-9, 1e-12, 1e-15: y_B(t) -> y_B(t) -/+ d w(t).
 Numbers are written as exact decimal strings (scene-format.md).
-Run from this folder; then `eccd solve FILE --arith exact --write-answer` stores
+Run from anywhere; then `eccd solve FILE --arith exact --write-answer` stores
 the exact answers.
 """
-import json
-import re
 from fractions import Fraction as F
+import os as _os
+import sys as _sys
+_sys.path.insert(0, _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), ".."))
+from scenelib import num as dec, write as write_in  # noqa: E402
+
+
+def write(s):
+    write_in(s, _os.path.dirname(_os.path.abspath(__file__)))
+
 
 a = [4, -16, 0, 32, -16]
 b = [0, 16, -48, 32]
@@ -31,19 +38,6 @@ x = [-40, 160, -240, 160]
 yA = [80, -400, 880, -960, 480]
 yB = [-80, 400, -880, 960, -480]
 w = [4, -16, 32, -32, 16]
-
-
-def dec(q):
-    """Exact decimal string of a rational whose denominator is 2^i 5^j."""
-    q = F(q)
-    if q.denominator == 1:
-        return str(q.numerator)
-    k = 0
-    while (q * 10**k).denominator != 1:
-        k += 1
-    n = q * 10**k
-    s = str(abs(n.numerator)).rjust(k + 1, "0")
-    return ("-" if q < 0 else "") + s[:-k] + "." + s[-k:]
 
 
 def poly(c):
@@ -60,15 +54,6 @@ def scene(name, yb, note):
         "b": {"shape": shape, "motion": {"type": "matrix", "m": [[poly(a), poly(b), poly(x)], [poly(nb), poly(a), poly(yb)], ["0", "0", poly(w)]]}},
         "note": note,
     }
-
-
-def write(s):
-    text = json.dumps(s, indent=1)
-    # one line per polynomial: collapse arrays that hold only strings
-    text = re.sub(r"\[\s*((?:\"[^\"]*\",\s*)*\"[^\"]*\")\s*\]",
-                  lambda m: "[" + re.sub(r",\s*", ", ", m.group(1)) + "]", text)
-    with open(s["name"] + ".json", "w") as f:
-        f.write(text + "\n")
 
 
 src = "Source: paper 003 (Choi, Wang, Liu, Kim, IEEE T-RO 2006), section VI-C, Example 2; matrices rebuilt as explained in cases/paper003/make_example2.py."

@@ -59,34 +59,22 @@ Numbers are exact decimal strings (scene-format.md). Run from anywhere; the file
 are written next to this script. `eccd solve FILE --arith exact --write-answer`
 stores the exact answers.
 """
-import json
 import math
 import os
-import re
 from decimal import Decimal, getcontext
 from fractions import Fraction as F
+import os as _os
+import sys as _sys
+_sys.path.insert(0, _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), ".."))
+from scenelib import num, write as write_in  # noqa: E402
+
+
+def write(s):
+    write_in(s, _os.path.dirname(_os.path.abspath(__file__)))
+
 
 getcontext().prec = 60
 HERE = os.path.dirname(os.path.abspath(__file__))
-
-
-def num(q):
-    """Exact string of a rational: a decimal if the denominator is 2^i 5^j, else p/q."""
-    q = F(q)
-    if q.denominator == 1:
-        return str(q.numerator)
-    d = q.denominator
-    for p in (2, 5):
-        while d % p == 0:
-            d //= p
-    if d != 1:
-        return f"{q.numerator}/{q.denominator}"
-    k = 0
-    while (q * 10**k).denominator != 1:
-        k += 1
-    n = q * 10**k
-    s = str(abs(n.numerator)).rjust(k + 1, "0")
-    return ("-" if q < 0 else "") + s[:-k] + "." + s[-k:]
 
 
 def poly(c):
@@ -269,15 +257,6 @@ add("spheres-inside-touch-at-start", rA, cA, rB, cB, src +
     "|c_A| = 2 - t <= 2 = r_B - r_A: A lies inside B for all t in [0, 1], internally tangent at t = 0 (at the point "
     "(1.8, 2.4, 0)); never concentric. Collision set: [0, 1]; first contact 0; no external contacts (the "
     "interiors overlap at every instant, the tangency at t = 0 is internal).")
-
-
-def write(s):
-    text = json.dumps(s, indent=1)
-    # one line per polynomial / per row of constants: collapse arrays that hold only strings
-    text = re.sub(r"\[\s*((?:\"[^\"]*\",\s*)*\"[^\"]*\")\s*\]",
-                  lambda m: "[" + re.sub(r",\s*", ", ", m.group(1)) + "]", text)
-    with open(os.path.join(HERE, s["name"] + ".json"), "w") as f:
-        f.write(text + "\n")
 
 
 for s in scenes:

@@ -75,10 +75,18 @@ bisection on the status changes; pure Python, a few seconds).
 import json
 import math
 import os
-import re
 import sys
 from decimal import Decimal, getcontext
 from fractions import Fraction as F
+import os as _os
+import sys as _sys
+_sys.path.insert(0, _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), ".."))
+from scenelib import det, negative_roots, num, pev, prem, write as write_in  # noqa: E402
+
+
+def write(s):
+    write_in(s, _os.path.dirname(_os.path.abspath(__file__)))
+
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -104,32 +112,6 @@ def pmul(a, b):
 
 def pscale(a, k):
     return [k * x for x in a]
-
-
-def pev(p, t):
-    r = F(0)
-    for c in reversed(p):
-        r = r * t + c
-    return r
-
-
-def num(q):
-    """Exact string of a rational: a decimal if the denominator is 2^i 5^j, else p/q."""
-    q = F(q)
-    if q.denominator == 1:
-        return str(q.numerator)
-    d = q.denominator
-    for p in (2, 5):
-        while d % p == 0:
-            d //= p
-    if d != 1:
-        return f"{q.numerator}/{q.denominator}"
-    k = 0
-    while (q * 10**k).denominator != 1:
-        k += 1
-    n = q * 10**k
-    s = str(abs(n.numerator)).rjust(k + 1, "0")
-    return ("-" if q < 0 else "") + s[:-k] + "." + s[-k:]
 
 
 def poly(c):
@@ -284,33 +266,7 @@ s4 = scene("overlap-on-axis", A4, B4, src + (
     f"1/2 - sqrt(2)/4; external contacts at both ends, each at the point (3, 0, 0)."))
 
 
-def write(s):
-    text = json.dumps(s, indent=1)
-    # one line per polynomial: collapse arrays that hold only strings
-    text = re.sub(r"\[\s*((?:\"[^\"]*\",\s*)*\"[^\"]*\")\s*\]",
-                  lambda m: "[" + re.sub(r",\s*", ", ", m.group(1)) + "]", text)
-    with open(os.path.join(HERE, s["name"] + ".json"), "w") as f:
-        f.write(text + "\n")
-
-
 # ---------------------------------------------------------------- exact checks
-def det(m):
-    m = [r[:] for r in m]
-    n, d = len(m), F(1)
-    for i in range(n):
-        p = next((r for r in range(i, n) if m[r][i] != 0), None)
-        if p is None:
-            return F(0)
-        if p != i:
-            m[i], m[p], d = m[p], m[i], -d
-        d *= m[i][i]
-        for r in range(i + 1, n):
-            f = m[r][i] / m[i][i]
-            for c in range(i, n):
-                m[r][c] -= f * m[i][c]
-    return d
-
-
 def inverse(m):
     n = len(m)
     a = [list(r) + [F(int(i == j)) for j in range(n)] for i, r in enumerate(m)]
@@ -363,33 +319,6 @@ def charpoly(A, B):
         for k in range(5):
             coef[k] += ys[i] * basis[k] / den
     return coef
-
-
-def prem(a, b):
-    a = a[:]
-    while len(a) >= len(b):
-        c, s = a[-1] / b[-1], len(a) - len(b)
-        for i, bc in enumerate(b):
-            a[s + i] -= c * bc
-        a.pop()
-    while a and a[-1] == 0:
-        a.pop()
-    return a
-
-
-def negative_roots(p):
-    """Number of distinct real roots of p in (-inf, 0) (Sturm); p(0) != 0."""
-    seq = [p, [i * p[i] for i in range(1, len(p))]]
-    while True:
-        r = prem(seq[-2], seq[-1])
-        if not r:
-            break
-        seq.append([-x for x in r])
-
-    def changes(v):
-        v = [x for x in v if x != 0]
-        return sum((a > 0) != (b > 0) for a, b in zip(v, v[1:]))
-    return changes([q[-1] * (-1) ** (len(q) - 1) for q in seq]) - changes([q[0] for q in seq])
 
 
 def status(s, t):
