@@ -168,9 +168,7 @@ CdDiscResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int N
   using namespace baseline_detail;
   check_grid(N);
   auto start = std::chrono::steady_clock::now();
-  CdDiscResult<T> res;
-  res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
-  for (const auto& gi : g) res.g.push_back(to_power(gi));
+  CdDiscResult<T> res = result_from_bernstein(g, first_contact_only);
 
   std::vector<TimelineNode> seq;
   std::vector<Status> st;  // status of sample k (== seq[2k].status)
@@ -178,9 +176,7 @@ CdDiscResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int N
   std::optional<T> prev;
   for (int k = 0; k <= N; ++k) {
     T t = grid_value(k, N, like);
-    std::vector<T> gt;
-    for (const auto& gi : g) gt.push_back(gi(t));
-    Status s = quartic_contact_status(gt);
+    Status s = quartic_status_at(g, t);
     if (k == 0) res.status_at_0 = s;
     res.cells.push_back({uncertified_instant(t), s});
     if (prev) seq.push_back({cell_instant(*prev, t, like), cell_between_samples(st.back(), s), true});
@@ -208,9 +204,7 @@ CdDiscResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int N
   using namespace baseline_detail;
   check_grid(N);
   auto start = std::chrono::steady_clock::now();
-  CdDiscResult<T> res;
-  res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
-  for (const auto& gi : g) res.g.push_back(to_power(gi));
+  CdDiscResult<T> res = result_from_bernstein(g, first_contact_only);
   const BiBern<T> F = ellipsoid_function(g, like);
 
   std::vector<T> u;

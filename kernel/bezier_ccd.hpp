@@ -139,9 +139,7 @@ class BezierZeroSet {
   // The static status at t0. Exact: Sturm (a proof); rounded: sign of max_u F(u, t0).
   Status status(const T& t0) const {
     if constexpr (scalar_traits<T>::is_exact) {
-      std::vector<T> v;
-      for (const auto& gi : g_) v.push_back(gi(t0));
-      return quartic_contact_status(v);
+      return quartic_status_at(g_, t0);
     } else {
       Bern<T> f = ellipsoid_function_at(F_, t0);
       Peak p = argmax(f);
@@ -433,9 +431,7 @@ class BezierZeroSet {
 template <class T>
 CdDiscResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bits, BezierOptions opt = {}) {
   auto start = std::chrono::steady_clock::now();
-  CdDiscResult<T> res;
-  res.variant = opt.first_contact_only ? Variant::first_contact : Variant::answer;
-  for (const auto& gi : g) res.g.push_back(to_power(gi));
+  CdDiscResult<T> res = result_from_bernstein(g, opt.first_contact_only);
   BezierZeroSet<T> z(g, like, bits, opt);
   std::vector<TimelineNode> seq = z.run();
   res.status_at_0 = seq.front().status;

@@ -51,7 +51,7 @@ template <class T>
 struct CdDiscResult {
   Answer answer;
   Variant variant = Variant::answer;
-  std::vector<Poly<T>> g;           // g_0 .. g_3, power form
+  std::vector<Poly<T>> g;           // g_0 .. g_N (g_3 in 2D, g_4 in 3D), power form
   int delta_degree = -1;            // degree of Δ as built in this arithmetic and basis
   bool delta_identically_zero = false;
   int projection_index = 0;         // 3D: 0 = discriminant, k = psc_k (kernel/ccd_projection.hpp)
@@ -63,6 +63,15 @@ struct CdDiscResult {
   std::vector<std::pair<std::string, long>> counters;  // work done (method-specific)
   double seconds = 0;
 };
+
+// The start of a 3D result from g_0..g_4 in Bernstein form: variant, and g in power form for reporting.
+template <class T>
+CdDiscResult<T> result_from_bernstein(const std::vector<Bern<T>>& g, bool first_contact_only) {
+  CdDiscResult<T> res;
+  res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
+  for (const auto& gi : g) res.g.push_back(to_power(gi));
+  return res;
+}
 
 // The contact point of Lemma 5: the null vector of λ0 A(t) - B(t), λ0 = P / (2D).
 template <class T>

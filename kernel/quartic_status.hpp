@@ -15,6 +15,7 @@
 // rounded T it is the count the arithmetic computes; a count the theory
 // forbids (3, 4) gives `uncertain`.
 // Requirements on T: a field, scalar_traits<T>.
+#include "kernel/bernstein.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/polynomial.hpp"
 #include "kernel/sturm.hpp"
@@ -48,6 +49,14 @@ template <class T>
 Status quartic_status_at(const std::vector<Poly<T>>& g, const T& t) {
   std::vector<T> v;
   for (const auto& gi : g) v.push_back(gi.is_zero() ? t - t : gi(t));
+  return quartic_contact_status(v);
+}
+
+// The same from g_i(t) in Bernstein form (the floating 3D pipelines' setup).
+template <class T>
+Status quartic_status_at(const std::vector<Bern<T>>& g, const T& t) {
+  std::vector<T> v;
+  for (const auto& gi : g) v.push_back(gi(t));
   return quartic_contact_status(v);
 }
 
