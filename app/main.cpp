@@ -1,9 +1,11 @@
 // eccd: the workbench's command-line front door.
 //   eccd solve SCENE [--arith double|mpfr:BITS|exact] [--basis ...] [--variant N] [--json]
 //   eccd table [DIR] [--mpfr BITS ...] [--json]   every scene of DIR in every arithmetic, side by side
+//   eccd generate / report / plot                 app/generate.cpp, app/report.cpp, app/plot.cpp
 // Exit status: 0 success; 1 internal error; 2 bad input (a scene file or an
 // option); 3 a request the pipeline refuses (e.g. a cycloidal motion in exact
 // arithmetic). Nothing is written to stdout unless the command succeeds.
+#include "app/commands.hpp"
 #include "app/solve.hpp"
 #include "kernel/scene_reader.hpp"
 
@@ -186,6 +188,8 @@ int main(int argc, char** argv) {
   table->add_option("--mpfr", mpfr_bits, "MPFR precisions in bits (repeatable)")->capture_default_str();
   table->add_flag("--json", table_json, "Print all results as one JSON array instead of the table");
 
+  std::vector<Command> commands{add_generate_command(app), add_report_command(app), add_plot_command(app)};
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -218,6 +222,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*table) return run_table(dir, mpfr_bits, table_json);
+    for (auto& c : commands)
+      if (*c.sub) return c.run();
   } catch (const SceneError& e) {
     std::cerr << "eccd: " << e.what() << "\n";
     return 2;

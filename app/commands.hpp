@@ -1,0 +1,25 @@
+#pragma once
+// Sub-commands of `eccd` that live in their own source file. Each adds its
+// CLI11 sub-command to the app and returns the function that runs it (called
+// by app/main.cpp inside its error handling: SceneError / std::invalid_argument
+// -> exit 2, any other exception -> exit 1). `run` returns the exit status.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace eccd {
+
+struct Command {
+  CLI::App* sub = nullptr;
+  std::function<int()> run;
+};
+
+Command add_generate_command(CLI::App& app);  // app/generate.cpp
+Command add_report_command(CLI::App& app);    // app/report.cpp
+Command add_plot_command(CLI::App& app);      // app/plot.cpp
+
+// Folder of the Python drawing scripts (compare/plots): $ECCD_PLOTS_DIR if
+// set, otherwise the source tree's folder compiled in at build time.
+std::string plots_dir();
+
+}  // namespace eccd
