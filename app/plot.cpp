@@ -1,14 +1,603 @@
-// `eccd plot` (placeholder until its issue-4 implementation lands).
+// `eccd plot SCENE`: one scene as a PNG, the pictures papers 002 and 003 print.
+//
+// Left: the two objects at a few instants along their paths (2D: the
+// ellipses; 3D: the outlines of the ellipsoids' projections onto the
+// xy-plane), their centres' paths, and the contact points. Right: 2D, the
+// discriminant Δ(t) of f(λ;t) = det(λA(t) - B(t)) (003 eq. (2)); 3D, the zero
+// set of F(u,t) = det((u-1)A(t) - uB(t)) in the (u,t) square (001 section 4,
+// 002 section III), with the critical instants, collision intervals and
+// contacts that `eccd solve` reports in the chosen arithmetic.
+//
+// This file computes the data; compare/plots/scene_figure.py draws it. The
+// data goes through a temporary JSON file ("eccd-plot-data/1", the --data
+// file), the script writes OUT's temporary sibling, and OUT is replaced by a
+// rename only when the script succeeded: no half-written PNG.
+//
+// What is computed how:
+//   - the answer (critical instants, intervals, contacts, 2D contact points):
+//     solve_scene (app/solve.hpp) in --arith;
+//   - the curve: Δ (2D) or the Bernstein coefficients in u of F (3D) are built
+//     exactly from the prepared scene with the kernel templates
+//     (characteristic_coefficients, cubic_discriminant, ellipsoid_function) and
+//     evaluated exactly at rational grid instants; only the normalised values
+//     (divided by the largest one, exactly) are rounded to double. F(u, t_k) is
+//     then evaluated in u from those rounded coefficients by de Casteljau. So
+//     the curve is the same whatever --arith says: a double answer is drawn
+//     against the exact curve;
+//   - outlines: the object's centre x0 and "dual" shape Σ (the solid is
+//     (x - x0)ᵀ Σ⁻¹ (x - x0) ≤ 1; Σ is the normalised dual quadric's block) are
+//     computed exactly from Q, then moved by M(t) in double: x0 ↦ L x0 + v,
+//     Σ ↦ L Σ Lᵀ with M = [[w L, w v], [0, w]]. The outline of the projection
+//     onto the xy-plane is the ellipse of Σ's upper-left 2x2 block (projecting
+//     a quadric's dual is taking that block of the dual), in 2D the ellipse itself;
+//   - 3D u-window: F is drawn on [0, 1] in u, or zoomed to where F > 0 when
+//     that is less than half of it (the relative scale of A and B, which the
+//     pipelines keep as prepared, decides where in u the negative roots land);
+//   - 3D contact points (display only): u0 = argmax F(., t0) on (0, 1), the
+//     double root λ0 = (u0 - 1)/u0 of f, and the null vector of λ0 A - B
+//     (largest column of its adjugate), A and B as the pipelines build them.
 #include "app/commands.hpp"
+#include "app/solve.hpp"
+#include "floating/double_traits.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/discriminant.hpp"
+#include "kernel/ellipsoid_function.hpp"
+#include "kernel/motion.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/scene_reader.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
 
 namespace eccd {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+constexpr int kDeltaSamples = 2000;  // 2D: Δ at k / 2000, k = 0..2000, plus the critical instants
+constexpr int kGrid = 200;           // 3D: F on (i / 200, k / 200), plus the critical instants in t
+constexpr int kFine = 4000;          // 3D: fine pass in u that finds where F > 0
+constexpr int kOutline = 181;        // points per outline
+constexpr int kPath = 241;           // points per centre path
+
+struct PlotOptions {
+  std::string scene, out, arith = "exact", data;
+  int instants = 5;
+  CLI::Option* arith_opt = nullptr;
+};
+
+// Short decimal for the data file (7 significant digits; the drawing needs no more).
+double round7(double x) {
+  if (!std::isfinite(x) || x == 0) return x;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.7g", x);
+  return std::strtod(buf, nullptr);
+}
+json rounded(const std::vector<double>& v) {
+  json a = json::array();
+  for (double x : v) a.push_back(round7(x));
+  return a;
+}
+
+double approx_of(const json& instant) { return std::stod(instant.at("approx").get<std::string>()); }
+
+// p at each rational t, exactly: integer Horner on L·p (L = lcm of the denominators).
+std::vector<Rational> exact_values(const Poly<Rational>& p, const std::vector<Rational>& ts) {
+  std::vector<Rational> out(ts.size(), Rational(0));
+  if (p.is_zero()) return out;
+  mpz_class l = 1;
+  for (const auto& c : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+  std::vector<mpz_class> a;
+  for (const auto& c : p.c) a.push_back(c.get_num() * (l / c.get_den()));
+  const int d = p.degree();
+  for (std::size_t k = 0; k < ts.size(); ++k) {
+    const mpz_class& num = ts[k].get_num();
+    const mpz_class& den = ts[k].get_den();
+    mpz_class s = a[d], dp = 1;
+    for (int i = d - 1; i >= 0; --i) {
+      dp *= den;
+      s = s * num + a[i] * dp;
+    }
+    Rational v(s, dp * l);
+    v.canonicalize();
+    out[k] = v;
+  }
+  return out;
+}
+
+// Every value divided (exactly) by the largest absolute value, then rounded to double.
+std::vector<double> normalised(const std::vector<Rational>& v, Rational& max_abs) {
+  max_abs = 0;
+  for (const auto& x : v) max_abs = std::max<Rational>(max_abs, abs(x));
+  std::vector<double> r(v.size(), 0.0);
+  if (max_abs == 0) return r;
+  for (std::size_t k = 0; k < v.size(); ++k) r[k] = scalar_traits<double>::from_rational(Rational(v[k] / max_abs));
+  return r;
+}
+
+// The grid k / n, k = 0..n, with extra instants (approximations) merged in, sorted, no duplicates.
+std::vector<Rational> grid_with(int n, const std::vector<double>& extra) {
+  std::vector<Rational> ts;
+  for (int k = 0; k <= n; ++k) { Rational t(k, n); t.canonicalize(); ts.push_back(t); }
+  for (double x : extra)
+    if (x >= 0 && x <= 1) ts.push_back(Rational(x));  // exact value of the double
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  return ts;
+}
+
+// ---- small dense linear algebra (N <= 4) ----
+
+template <class T>
+using Mat = std::vector<std::vector<T>>;
+
+// Gauss-Jordan with pivoting, exact; throws if singular.
+Mat<Rational> inverse(Mat<Rational> a) {
+  using T = Rational;
+  const std::size_t n = a.size();
+  Mat<T> inv(n, std::vector<T>(n, T(0)));
+  for (std::size_t i = 0; i < n; ++i) inv[i][i] = T(1);
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t p = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (a[p][c] == 0 && a[r][c] != 0) p = r;
+    if (a[p][c] == T(0)) throw std::runtime_error("singular matrix while computing an outline");
+    std::swap(a[p], a[c]);
+    std::swap(inv[p], inv[c]);
+    T piv = a[c][c];
+    for (std::size_t j = 0; j < n; ++j) { a[c][j] = a[c][j] / piv; inv[c][j] = inv[c][j] / piv; }
+    for (std::size_t r = 0; r < n; ++r) {
+      if (r == c) continue;
+      T f = a[r][c];
+      if (f == T(0)) continue;
+      for (std::size_t j = 0; j < n; ++j) { a[r][j] = a[r][j] - f * a[c][j]; inv[r][j] = inv[r][j] - f * inv[c][j]; }
+    }
+  }
+  return inv;
+}
+
+double det3(const Mat<double>& m, int r0, int r1, int r2, int c0, int c1, int c2) {
+  return m[r0][c0] * (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) -
+         m[r0][c1] * (m[r1][c0] * m[r2][c2] - m[r1][c2] * m[r2][c0]) +
+         m[r0][c2] * (m[r1][c0] * m[r2][c1] - m[r1][c1] * m[r2][c0]);
+}
+
+// A null vector of a (nearly) rank-3 4x4 matrix: the largest column of its adjugate.
+std::vector<double> null_vector4(const Mat<double>& m) {
+  std::vector<double> best(4, 0.0);
+  double bestn = -1;
+  for (int j = 0; j < 4; ++j) {  // column j of adj(m): cofactors C(j, i), i = 0..3
+    std::vector<double> col(4);
+    for (int i = 0; i < 4; ++i) {
+      int rr[3], cc[3];
+      for (int r = 0, k = 0; r < 4; ++r) if (r != j) rr[k++] = r;
+      for (int c = 0, k = 0; c < 4; ++c) if (c != i) cc[k++] = c;
+      double d = det3(m, rr[0], rr[1], rr[2], cc[0], cc[1], cc[2]);
+      col[i] = ((i + j) % 2 ? -d : d);
+    }
+    double n = 0;
+    for (double x : col) n += std::fabs(x);
+    if (n > bestn) { bestn = n; best = col; }
+  }
+  return best;
+}
+
+// ---- outlines ----
+
+// An object in its own frame: centre x0 and Σ, the solid being (x - x0)ᵀ Σ⁻¹ (x - x0) <= 1.
+struct Shape {
+  std::vector<double> x0;
+  Mat<double> sigma;
+};
+
+Shape object_shape(const SceneObject& o, int d) {
+  Mat<Rational> s(d, std::vector<Rational>(d));
+  std::vector<Rational> b(d);
+  for (int i = 0; i < d; ++i) {
+    for (int j = 0; j < d; ++j) s[i][j] = o.Q[i][j];
+    b[i] = o.Q[i][d];
+  }
+  const Rational c = o.Q[d][d];
+  Mat<Rational> si = inverse(s);
+  std::vector<Rational> x0(d, Rational(0));
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j) x0[i] -= si[i][j] * b[j];
+  Rational k = c;
+  for (int i = 0; i < d; ++i) k += b[i] * x0[i];  // Q's value at the centre: negative for a real solid
+  Shape sh;
+  sh.x0.resize(d);
+  sh.sigma.assign(d, std::vector<double>(d));
+  for (int i = 0; i < d; ++i) {
+    sh.x0[i] = scalar_traits<double>::from_rational(x0[i]);
+    for (int j = 0; j < d; ++j) sh.sigma[i][j] = scalar_traits<double>::from_rational(Rational(-k * si[i][j]));
+  }
+  return sh;
+}
+
+// The world-frame centre and the projected 2x2 Σ at t, from M(t) = [[w L, w v], [0, w]].
+template <int N>
+std::pair<std::vector<double>, Mat<double>> moved(const Shape& sh, const PolyMatrix<double, N>& m, double t) {
+  constexpr int d = N - 1;
+  const double w = m[d][d](t);
+  double L[d][d], v[d];
+  for (int i = 0; i < d; ++i) {
+    for (int j = 0; j < d; ++j) L[i][j] = m[i][j](t) / w;
+    v[i] = m[i][d](t) / w;
+  }
+  std::vector<double> c(d, 0.0);
+  for (int i = 0; i < d; ++i) {
+    c[i] = v[i];
+    for (int j = 0; j < d; ++j) c[i] += L[i][j] * sh.x0[j];
+  }
+  Mat<double> s2(2, std::vector<double>(2, 0.0));  // (L Σ Lᵀ) restricted to x, y
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < d; ++k)
+        for (int l = 0; l < d; ++l) s2[i][j] += L[i][k] * sh.sigma[k][l] * L[j][l];
+  return {c, s2};
+}
+
+json outline_json(const std::vector<double>& c, const Mat<double>& s2) {
+  const double a = s2[0][0], b = 0.5 * (s2[0][1] + s2[1][0]), e = s2[1][1];
+  const double th = 0.5 * std::atan2(2 * b, a - e);
+  const double mid = 0.5 * (a + e), rad = std::hypot(0.5 * (a - e), b);
+  const double r1 = std::sqrt(std::max(0.0, mid + rad)), r2 = std::sqrt(std::max(0.0, mid - rad));
+  std::vector<double> xs, ys;
+  for (int k = 0; k < kOutline; ++k) {
+    double ph = 2 * std::numbers::pi * k / (kOutline - 1);
+    double p = r1 * std::cos(ph), q = r2 * std::sin(ph);
+    xs.push_back(c[0] + p * std::cos(th) - q * std::sin(th));
+    ys.push_back(c[1] + p * std::sin(th) + q * std::cos(th));
+  }
+  return {{"centre", {round7(c[0]), round7(c[1])}}, {"x", rounded(xs)}, {"y", rounded(ys)}};
+}
+
+// Snapshot instants: K evenly spaced, every contact, the first contact; the
+// flag marks the contact instants (drawn thick).
+std::vector<std::pair<double, bool>> snapshot_instants(int k, const json& rep) {
+  std::vector<std::pair<double, bool>> ts;
+  if (k == 1) ts.push_back({0.0, false});
+  for (int i = 0; k > 1 && i < k; ++i) ts.push_back({double(i) / (k - 1), false});
+  std::vector<std::pair<double, bool>> special;
+  if (rep["contacts"].is_array())
+    for (const auto& c : rep["contacts"]) special.push_back({approx_of(c), true});
+  if (!rep["first_contact"].is_null()) special.push_back({approx_of(rep["first_contact"]), false});
+  for (auto [s, contact] : special) {
+    bool merged = false;
+    for (auto& [t, flag] : ts)
+      if (std::fabs(t - s) < 1e-9) { flag = flag || contact; merged = true; }
+    if (!merged) ts.push_back({s, contact});
+  }
+  std::sort(ts.begin(), ts.end());
+  return ts;
+}
+
+template <int N>
+void add_objects(json& data, const Scene& s, const json& rep, int k) {
+  constexpr int d = N - 1;
+  auto conv = [](const Rational& q) { return scalar_traits<double>::from_rational(q); };
+  const Shape sa = object_shape(s.a, d), sb = object_shape(s.b, d);
+  const PolyMatrix<double, N> ma = motion_matrix<double, N>(s.a.motion, conv);
+  const PolyMatrix<double, N> mb = motion_matrix<double, N>(s.b.motion, conv);
+  json snaps = json::array();
+  for (auto [t, special] : snapshot_instants(k, rep)) {
+    auto [ca, pa] = moved<N>(sa, ma, t);
+    auto [cb, pb] = moved<N>(sb, mb, t);
+    snaps.push_back({{"t", t}, {"contact", special}, {"a", outline_json(ca, pa)}, {"b", outline_json(cb, pb)}});
+  }
+  data["snapshots"] = snaps;
+  std::vector<double> ts, ax, ay, bx, by;
+  for (int i = 0; i < kPath; ++i) {
+    double t = double(i) / (kPath - 1);
+    ts.push_back(t);
+    auto ca = moved<N>(sa, ma, t).first, cb = moved<N>(sb, mb, t).first;
+    ax.push_back(ca[0]); ay.push_back(ca[1]); bx.push_back(cb[0]); by.push_back(cb[1]);
+  }
+  data["paths"] = {{"t", rounded(ts)}, {"a", {{"x", rounded(ax)}, {"y", rounded(ay)}}}, {"b", {{"x", rounded(bx)}, {"y", rounded(by)}}}};
+}
+
+std::vector<double> critical_approx(const json& rep) {
+  std::vector<double> v;
+  for (const auto& c : rep["critical_instants"]) v.push_back(approx_of(c["t"]));
+  return v;
+}
+
+// 2D: Δ exactly, sampled exactly; contact points from the report (Lemma 5 of 003).
+void add_curve_2d(json& data, const Scene& s, const json& rep) {
+  PreparedPair<3> p = prepare_pair<3>(s);
+  MovingPair<Rational, 3> m = to_arithmetic<Rational, 3>(p, Rational(1));
+  std::vector<Poly<Rational>> g = characteristic_of(m);
+  Poly<Rational> delta = cubic_discriminant(g[3], g[2], g[1], g[0]);
+  std::vector<Rational> ts = grid_with(kDeltaSamples, critical_approx(rep));
+  Rational max_abs;
+  std::vector<double> val = normalised(exact_values(delta, ts), max_abs);
+  std::vector<double> td;
+  for (const auto& t : ts) td.push_back(t.get_d());
+  data["curve"] = {{"kind", "discriminant"},
+                   {"degree", delta.degree()},
+                   {"identically_zero", delta.is_zero()},
+                   {"max_abs", decimal_string(max_abs, 6)},
+                   {"how", "built and evaluated exactly, then divided by its largest sampled |value|"},
+                   {"t", rounded(td)},
+                   {"value", val}};  // full double: near a root the small values matter on a log scale
+  json contacts = json::array();
+  if (rep["contacts"].is_array())
+    for (std::size_t i = 0; i < rep["contacts"].size(); ++i) {
+      json c = {{"t", approx_of(rep["contacts"][i])}};
+      if (i < rep["contact_points"].size() && rep["contact_points"][i].size() == 2)
+        c["point"] = {std::stod(rep["contact_points"][i][0].get<std::string>()),
+                      std::stod(rep["contact_points"][i][1].get<std::string>())};
+      contacts.push_back(c);
+    }
+  data["contacts"] = contacts;
+}
+
+// 3D: F's u-Bernstein coefficients exactly, sampled exactly in t; F in u by de Casteljau.
+void add_curve_3d(json& data, const Scene& s, const json& rep) {
+  PreparedPair<4> p = prepare_pair<4>(s);
+  MovingPair<Rational, 4> m = to_arithmetic<Rational, 4>(p, Rational(1));
+  std::vector<Poly<Rational>> g = characteristic_of(m);
+  BiBern<Rational> F = ellipsoid_function(g, Rational(1));
+  std::vector<double> extra = critical_approx(rep);
+  std::vector<double> contact_t;
+  if (rep["contacts"].is_array())
+    for (const auto& c : rep["contacts"]) contact_t.push_back(approx_of(c));
+  extra.insert(extra.end(), contact_t.begin(), contact_t.end());
+  std::vector<Rational> ts = grid_with(kGrid, extra);
+  const int m_u = F.degree_u();
+  std::vector<std::vector<Rational>> rows;  // rows[i][k] = i-th u-coefficient at ts[k]
+  for (int i = 0; i <= m_u; ++i) rows.push_back(exact_values(to_power(Bern<Rational>(F.b[i])), ts));
+  Rational max_abs = 0;
+  for (const auto& r : rows)
+    for (const auto& x : r) max_abs = std::max<Rational>(max_abs, abs(x));
+  if (max_abs == 0) throw std::logic_error("F(u, t) vanishes identically");
+  auto coeffs_at = [&](std::size_t k) {
+    Bern<double> q;
+    for (int i = 0; i <= m_u; ++i) q.b.push_back(scalar_traits<double>::from_rational(Rational(rows[i][k] / max_abs)));
+    return q;
+  };
+  // Contact points (display only): u0 = argmax F(., t0), λ0 = (u0 - 1)/u0, null vector of λ0 A - B.
+  const MovingPair<double, 4> md = to_arithmetic<double, 4>(p, 1.0);
+  const PolyMatrix<double, 4> A = moving_quadric<double, 4>(md.qa, md.na), B = moving_quadric<double, 4>(md.qb, md.nb);
+  json contacts = json::array();
+  for (double t0 : contact_t) {
+    std::size_t k = std::lower_bound(ts.begin(), ts.end(), Rational(t0)) - ts.begin();
+    if (k >= ts.size()) k = ts.size() - 1;
+    Bern<double> q = coeffs_at(k);
+    double best = 0.5, fbest = -INFINITY;
+    for (int i = 1; i < 2000; ++i) {
+      double u = i / 2000.0, f = q(u);
+      if (f > fbest) { fbest = f; best = u; }
+    }
+    double lo = std::max(1e-12, best - 1.0 / 2000), hi = std::min(1 - 1e-12, best + 1.0 / 2000);
+    for (int it = 0; it < 100; ++it) {  // golden section on the unimodal piece
+      double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
+      if (q(a) > q(b)) hi = b; else lo = a;
+    }
+    double u0 = 0.5 * (lo + hi), lam = (u0 - 1) / u0;
+    Mat<double> mm(4, std::vector<double>(4));
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) mm[i][j] = lam * A[i][j](t0) - B[i][j](t0);
+    std::vector<double> v = null_vector4(mm);
+    json c = {{"t", t0}, {"u", u0}};
+    if (std::fabs(v[3]) > 0) c["point"] = {v[0] / v[3], v[1] / v[3], v[2] / v[3]};
+    contacts.push_back(c);
+  }
+  data["contacts"] = contacts;
+
+  // The u-window: where F > 0 on a fine pass (the relative scale of A and B can
+  // squeeze the whole zero set into a sliver next to u = 0 or u = 1), widened
+  // by a margin; the whole [0, 1] if that covers more than half of it.
+  double u_lo = 1, u_hi = 0;
+  for (std::size_t k = 0; k < ts.size(); ++k) {
+    Bern<double> q = coeffs_at(k);
+    for (int i = 1; i < kFine; ++i) {
+      double u = double(i) / kFine;
+      if (q(u) > 0) { u_lo = std::min(u_lo, u); u_hi = std::max(u_hi, u); }
+    }
+  }
+  for (const auto& c : contacts) { u_lo = std::min(u_lo, c["u"].get<double>()); u_hi = std::max(u_hi, c["u"].get<double>()); }
+  double w0 = 0, w1 = 1;
+  if (u_hi >= u_lo) {
+    double margin = std::max(0.15 * (u_hi - u_lo), 2.0 / kFine);
+    w0 = std::max(0.0, u_lo - margin);
+    w1 = std::min(1.0, u_hi + margin);
+    if (w1 - w0 > 0.5) { w0 = 0; w1 = 1; }
+  }
+  std::vector<double> us, td;
+  for (int i = 0; i <= kGrid; ++i) us.push_back(w0 + (w1 - w0) * i / kGrid);
+  json values = json::array();
+  for (std::size_t k = 0; k < ts.size(); ++k) {
+    td.push_back(ts[k].get_d());
+    Bern<double> q = coeffs_at(k);
+    std::vector<double> row;
+    for (double u : us) row.push_back(q(u));
+    values.push_back(rounded(row));
+  }
+  data["curve"] = {{"kind", "F"},
+                   {"degree_t", F.degree_t()},
+                   {"how", "Bernstein coefficients in u built and evaluated exactly in t, divided by the largest, rounded to double, then de Casteljau in u"},
+                   {"u_window", {w0, w1}},
+                   {"u", us},
+                   {"t", rounded(td)},
+                   {"value", values}};
+
+}
+
+std::string quote(const std::string& s) {
+  std::string r = "'";
+  for (char c : s) r += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return r + "'";
+}
+
+int shell(const std::string& cmd) {
+  int st = std::system(cmd.c_str());
+  if (st == -1) return -1;
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+// An interpreter with numpy and matplotlib: $ECCD_PYTHON if set, else python3 on PATH, else /usr/bin/python3.
+std::string find_python(std::string& tried) {
+  std::vector<std::string> cands;
+  if (const char* e = std::getenv("ECCD_PYTHON"); e && *e) cands.push_back(e);
+  else cands = {"python3", "/usr/bin/python3"};
+  for (const auto& c : cands) {
+    tried += (tried.empty() ? "" : ", ") + c;
+    if (shell(quote(c) + " -c 'import numpy, matplotlib' >/dev/null 2>&1") == 0) return c;
+  }
+  return "";
+}
+
+std::string answer_words(const json& rep) {
+  std::ostringstream o;
+  if (!rep["collides"].get<bool>()) return "free";
+  o << "collides";
+  if (rep["intervals"].is_array()) o << ", " << rep["intervals"].size() << " interval(s)";
+  if (!rep["first_contact"].is_null()) o << ", first contact t = " << rep["first_contact"]["approx"].get<std::string>();
+  return o.str();
+}
+
+int run_plot(const PlotOptions& o) {
+  Scene s = read_scene_file(o.scene);  // SceneError -> exit 2
+  for (const std::string& f : {o.out, o.data}) {
+    fs::path dir = fs::path(f).parent_path();
+    if (!f.empty() && !dir.empty() && !fs::is_directory(dir))
+      throw std::invalid_argument(f + ": folder " + dir.string() + " does not exist");
+  }
+  bool cyclo = std::holds_alternative<CycloidalMotion>(s.a.motion) || std::holds_alternative<CycloidalMotion>(s.b.motion);
+  std::string arith_text = o.arith, arith_note;
+  if (cyclo && o.arith_opt->count() == 0) {
+    arith_text = "double";
+    arith_note = "cycloidal motion: not rational, so double arithmetic (exact cannot represent it)";
+    std::cerr << "eccd plot: " << o.scene << ": " << arith_note << "\n";
+  }
+  SolveOptions opt;
+  opt.arith = parse_arithmetic(arith_text);  // std::invalid_argument -> exit 2
+  json rep;
+  try {
+    rep = solve_scene(s, opt);
+    if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "eccd plot: " << o.scene << ": " << e.what() << "\n";
+    return 3;
+  }
+
+  const fs::path script = fs::path(plots_dir()) / "scene_figure.py";
+  if (!fs::is_regular_file(script)) {
+    std::cerr << "eccd plot: drawing script " << script.string() << " not found (set ECCD_PLOTS_DIR to the folder compare/plots)\n";
+    return 1;
+  }
+  std::string tried;
+  const std::string python = find_python(tried);
+  if (python.empty()) {
+    std::cerr << "eccd plot: needs python3 with numpy and matplotlib, and none was found (tried " << tried
+              << "): install them with `apt-get install python3-matplotlib` (it brings numpy), "
+                 "or set ECCD_PYTHON to an interpreter that has them\n";
+    return 1;
+  }
+
+  json data;
+  data["format"] = "eccd-plot-data/1";
+  data["scene"] = s.name;
+  data["file"] = s.path;
+  data["dim"] = s.dim;
+  data["arith"] = opt.arith.name();
+  data["arith_note"] = arith_note;
+  data["solve"] = rep;
+  if (s.dim == 2) {
+    add_objects<3>(data, s, rep, o.instants);
+    add_curve_2d(data, s, rep);
+  } else {
+    add_objects<4>(data, s, rep, o.instants);
+    add_curve_3d(data, s, rep);
+  }
+
+  const fs::path out = o.out.empty() ? fs::path(fs::path(o.scene).stem().string() + ".png") : fs::path(o.out);
+  const std::string tag = "." + std::to_string(::getpid()) + ".tmp";
+  const fs::path tmp_png = fs::path(out.string() + tag + ".png");
+  fs::path tmp_data;
+  if (!o.data.empty()) tmp_data = fs::path(o.data + tag + ".json");
+  else tmp_data = fs::temp_directory_path() / ("eccd-plot-" + std::to_string(::getpid()) + ".json");
+  auto cleanup = [&] {
+    std::error_code ec;
+    fs::remove(tmp_png, ec);
+    fs::remove(tmp_data, ec);
+  };
+  {
+    std::ofstream f(tmp_data);
+    f << data.dump() << "\n";
+    if (!f) { cleanup(); throw std::runtime_error("cannot write " + tmp_data.string()); }
+  }
+  const std::string cmd = quote(python) + " " + quote(script.string()) + " " + quote(tmp_data.string()) + " " +
+                          quote(tmp_png.string()) + " 1>&2";
+  const int rc = shell(cmd);
+  std::error_code ec;
+  if (rc != 0 || !fs::is_regular_file(tmp_png) || fs::file_size(tmp_png, ec) == 0) {
+    cleanup();
+    std::cerr << "eccd plot: the drawing script " << script.string() << " failed (exit status " << rc
+              << "); its messages are above; nothing was written\n";
+    return 1;
+  }
+  fs::rename(tmp_png, out);
+  if (!o.data.empty()) fs::rename(tmp_data, o.data);
+  else fs::remove(tmp_data, ec);
+  std::cout << "wrote " << out.string() << ": scene " << s.name << " (" << s.dim << "D), " << answer_words(rep)
+            << " [" << opt.arith.name() << (rep["certified"].get<bool>() ? ", certified" : ", not certified") << "]";
+  if (!o.data.empty()) std::cout << "; data " << o.data;
+  std::cout << "\n";
+  return 0;
+}
+
+}  // namespace
 
 Command add_plot_command(CLI::App& app) {
+  auto o = std::make_shared<PlotOptions>();
   Command c;
-  c.sub = app.add_subcommand("plot", "(not implemented yet)");
-  c.run = [] { return 1; };
+  c.sub = app.add_subcommand(
+      "plot",
+      "Draw one scene as a PNG. Left: the two objects at a few instants along their paths (3D: outlines of their "
+      "projections onto the xy-plane), their centres' paths and the contact points. Right: 2D, the discriminant "
+      "Delta(t) of f(lambda;t) = det(lambda A - B) on a symmetric log scale; 3D, the zero set of "
+      "F(u,t) = det((u-1)A - uB) in the (u,t) square (zoomed in u when F > 0 only in a narrow band), F > 0 filled "
+      "(separate at t iff F(u,t) > 0 for some u). Critical instants, collision intervals and contacts come from "
+      "`eccd solve` in --arith; the curve (Delta, or F's Bernstein coefficients in u) is built exactly and evaluated "
+      "exactly at the sample instants, whatever --arith says. Needs python3 with numpy and matplotlib "
+      "(apt-get install python3-matplotlib; ECCD_PYTHON picks the interpreter, ECCD_PLOTS_DIR the script folder). "
+      "Exit status: 0 written; 1 python/matplotlib missing or drawing failed (nothing written); 2 bad scene or "
+      "option; 3 a request the pipeline refuses.");
+  c.sub->add_option("SCENE", o->scene, "Scene file (format ellipse-ccd-scene/1)")->required();
+  c.sub->add_option("-o,--output", o->out,
+                    "PNG to write (default: the scene file's name with .png, in the current directory); "
+                    "replaced only when drawing succeeded");
+  c.sub->add_option("--instants", o->instants,
+                    "Number of evenly spaced instants drawn on the left, 0 to 50 (1 = t = 0 only); every contact "
+                    "instant and the first contact are drawn too")
+      ->check(CLI::Range(0, 50))
+      ->capture_default_str();
+  o->arith_opt = c.sub->add_option("--arith", o->arith,
+                                   "Arithmetic of the critical instants, collision intervals and contacts: exact "
+                                   "(certified), double or mpfr:BITS. A scene with a cycloidal motion defaults to "
+                                   "double, but no pipeline solves cycloidal motions yet, so it exits with status 3")
+                     ->capture_default_str();
+  c.sub->add_option("--data", o->data, "Also write the data the drawing script read (JSON, eccd-plot-data/1: the solve report, samples, outlines) to this file");
+  c.run = [o] { return run_plot(*o); };
   return c;
 }
 

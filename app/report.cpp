@@ -1,12 +1,574 @@
-// `eccd report` (placeholder until its issue-4 implementation lands).
+// `eccd report`: the robustness report. Generates the scenes (compare/
+// scene_generator.hpp), adds the shipped cases, runs every pipeline on each
+// (compare/harness.hpp) in worker processes, computes the failure map, writes
+// results.csv, failure_map.csv and meta.json, then has
+// compare/plots/report_figures.py write report.md and the PNG figures.
+//
+// Parallelism: `--jobs` worker processes (fork) take tasks from a counter in
+// shared memory, so a slow scene does not hold up the others; each writes its
+// rows to its own file and the parent sorts them into a fixed order, so the
+// output does not depend on the schedule. `--shard i/n` runs every n-th task
+// (for several machines) and writes only the raw part; `--merge` joins parts.
+// Output goes to OUT.partial and replaces OUT only when everything succeeded.
 #include "app/commands.hpp"
+#include "compare/harness.hpp"
+#include "compare/scene_generator.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+namespace fs = std::filesystem;
 
 namespace eccd {
 
+namespace {
+
+struct ReportArgs {
+  std::string name = "default";
+  std::string out;
+  GeneratePlan plan;
+  HarnessOptions harness;
+  std::string cases = "cases";
+  std::string scenes;
+  int jobs = 0;
+  std::string shard;
+  std::vector<std::string> merge;
+  int map_size = 32;
+  bool no_map = false, no_figures = false;
+};
+
+// ---- tasks -------------------------------------------------------------------
+
+struct Task {
+  enum Kind { SceneTask, MapCell } kind = SceneTask;
+  std::string text, label;  // scene JSON and its file label
+  std::string source;       // generated | cases
+  int ix = 0, iy = 0;       // map cell
+};
+
+// The failure map (Kettner et al. 2004): a 2D scene that touches at one
+// instant; the constant coefficients of B's x- and y-translation entries are
+// replaced by the double nearest to them moved by ix and iy units in the last
+// place. Every cell is a rational scene, solved exactly and by each pipeline.
+struct FailureMap {
+  nlohmann::ordered_json doc;
+  std::string scene;
+  double x0 = 0, y0 = 0;
+  int n = 0;
+  std::vector<std::string> pipelines{"double/power", "double/bernstein", "double/scaled-bernstein", "mpfr:64/bernstein",
+                                     "mpfr:128/bernstein"};
+};
+
+double step_ulps(double x, int k) {
+  for (; k > 0; --k) x = std::nextafter(x, HUGE_VAL);
+  for (; k < 0; ++k) x = std::nextafter(x, -HUGE_VAL);
+  return x;
+}
+
+FailureMap make_failure_map(std::uint64_t seed, int n) {
+  FailureMap f;
+  GeneratorSpec s;
+  s.dim = 2;
+  s.degree = 2;
+  s.family = "touch";
+  s.motion = "kinematic";
+  s.seed = scene_seed(seed, s, 999);
+  GeneratedScene g = generate_scene(s);
+  f.doc = g.doc;
+  f.scene = g.name;
+  f.n = n;
+  auto& m = f.doc["b"]["motion"]["m"];
+  f.x0 = parse_rational(m[0][2][0].get<std::string>()).get_d();
+  f.y0 = parse_rational(m[1][2][0].get<std::string>()).get_d();
+  return f;
+}
+
+std::string map_cell_scene(const FailureMap& f, int ix, int iy) {
+  nlohmann::ordered_json d = f.doc;
+  int h = f.n / 2;
+  auto& m = d["b"]["motion"]["m"];
+  m[0][2][0] = mpq_class(step_ulps(f.x0, ix - h)).get_str();
+  m[1][2][0] = mpq_class(step_ulps(f.y0, iy - h)).get_str();
+  d["name"] = f.scene + "-map-" + std::to_string(ix) + "-" + std::to_string(iy);
+  return d.dump();
+}
+
+std::string answer_kind(const nlohmann::json& r) {
+  if (!r.contains("collides")) return "error";
+  if (r.contains("undecided") && !r["undecided"].empty()) return "undecided";
+  if (!r["collides"].get<bool>()) return "separate";
+  for (const auto& iv : r["intervals"])
+    if (iv[0]["approx"] != iv[1]["approx"]) return "colliding";
+  return "touching";
+}
+
+// ---- running a task (in a worker) -------------------------------------------
+
+std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const FailureMap* map) {
+  std::vector<std::string> out;
+  Scene s = parse_scene(t.text, t.label);
+  if (t.kind == Task::SceneTask) {
+    for (const auto& row : run_scene(s, scene_info(s, t.source), a.harness)) out.push_back("R" + results_csv_line(row));
+    return out;
+  }
+  SolveOptions ex;
+  ex.arith = parse_arithmetic("exact");
+  std::string exact = answer_kind(solve_scene(s, ex));
+  int h = map->n / 2;
+  for (const auto& p : map->pipelines) {
+    SolveOptions o;
+    auto slash = p.find('/');
+    o.arith = parse_arithmetic(p.substr(0, slash));
+    o.basis = p.substr(slash + 1);
+    std::string kind;
+    try {
+      kind = answer_kind(solve_scene(s, o));
+    } catch (const std::exception&) {
+      kind = "error";
+    }
+    out.push_back("M" + p + "," + std::to_string(t.ix) + "," + std::to_string(t.iy) + "," + std::to_string(t.ix - h) + "," +
+                  std::to_string(t.iy - h) + "," + kind + "," + exact);
+  }
+  return out;
+}
+
+// ---- helpers -----------------------------------------------------------------
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+std::string read_command_output(const std::string& cmd) {
+  std::string out;
+  if (FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[256];
+    while (fgets(buf, sizeof buf, p)) out += buf;
+    pclose(p);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+std::string command_line() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(in)), {}), out;
+  for (char c : all) out += c ? c : ' ';
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+nlohmann::json machine_info() {
+  nlohmann::json m;
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) { m["cpu"] = line.substr(line.find(':') + 2); break; }
+  if (!m.contains("cpu")) m["cpu"] = "unknown";
+  m["cores"] = std::thread::hardware_concurrency();
+  m["os"] = read_command_output("uname -srm 2>/dev/null");
+  return m;
+}
+std::string now_iso() {
+  std::time_t t = std::time(nullptr);
+  char b[64];
+  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return b;
+}
+void write_file(const fs::path& p, const std::string& text) {
+  std::ofstream o(p);
+  o << text;
+  if (!o) throw std::runtime_error("cannot write " + p.string());
+}
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> v;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) v.push_back(cur);
+  if (!s.empty() && s.back() == sep) v.push_back("");
+  return v;
+}
+std::string fmt_duration(double s) {
+  char b[32];
+  if (s >= 3600) std::snprintf(b, sizeof b, "%dh%02dm", int(s / 3600), int(std::fmod(s, 3600) / 60));
+  else if (s >= 60) std::snprintf(b, sizeof b, "%dm%02ds", int(s / 60), int(std::fmod(s, 60)));
+  else std::snprintf(b, sizeof b, "%.0fs", s);
+  return b;
+}
+
+// Sort key of a results.csv line: the scene's place in the plan (rows of one
+// scene keep their pipeline order under a stable sort).
+std::vector<std::string> scene_key(const std::string& line) {
+  auto f = split(line, ',');
+  static const std::map<std::string, std::string> fam{{"colliding", "0"}, {"free", "1"}, {"touch", "2"}, {"near-miss", "3"}, {"case", "4"}};
+  auto pad = [](const std::string& x) { return std::string(8 - std::min<std::size_t>(8, x.size()), '0') + x; };
+  std::string d = f.size() > 6 && !f[6].empty() ? pad(f[6].substr(3)) : "";
+  return {f[1], f[2], pad(f[3]), fam.count(f[4]) ? fam.at(f[4]) : f[4], f[5], d, f[0]};
+}
+void sort_results(std::vector<std::string>& lines) {
+  std::stable_sort(lines.begin(), lines.end(), [](const std::string& a, const std::string& b) { return scene_key(a) < scene_key(b); });
+}
+void sort_map(std::vector<std::string>& lines, const std::vector<std::string>& order) {
+  auto key = [&](const std::string& l) {
+    auto f = split(l, ',');
+    long p = std::find(order.begin(), order.end(), f[0]) - order.begin();
+    return std::make_tuple(p, std::stoi(f[1]), std::stoi(f[2]));
+  };
+  std::stable_sort(lines.begin(), lines.end(), [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
+}
+
+// The workers. Returns the output lines ("R..." rows, "M..." map cells) in task order.
+std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportArgs& a, const FailureMap* map,
+                                   const fs::path& work, std::vector<std::string>& failures) {
+  int jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+  jobs = std::max(1, std::min<int>(jobs, int(tasks.size())));
+  struct Shared { std::atomic<long> next, done; };
+  void* mem = mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  if (mem == MAP_FAILED) throw std::runtime_error("mmap failed");
+  auto* sh = new (mem) Shared{{0}, {0}};
+  std::fflush(nullptr);
+  std::vector<pid_t> kids;
+  for (int w = 0; w < jobs; ++w) {
+    pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+      try {
+      std::ofstream o(work / ("worker-" + std::to_string(w) + ".txt"));
+      for (long k; (k = sh->next.fetch_add(1)) < long(tasks.size());) {
+        try {
+          for (const auto& l : run_task(tasks[k], a, map)) o << k << "\t" << l << "\n";
+        } catch (const std::exception& e) {
+          std::string msg = e.what();
+          std::replace(msg.begin(), msg.end(), '\n', ' ');
+          o << k << "\tE" << tasks[k].label << ": " << msg << "\n";
+        }
+        o.flush();
+        sh->done.fetch_add(1);
+      }
+      o.close();
+      _exit(o ? 0 : 1);
+      } catch (...) {
+        _exit(1);
+      }
+    }
+    kids.push_back(pid);
+  }
+  auto start = std::chrono::steady_clock::now();
+  bool tty = isatty(2);
+  double last_print = -1e9;
+  int running = jobs, bad = 0;
+  while (running > 0) {
+    int status = 0;
+    pid_t r = waitpid(-1, &status, WNOHANG);
+    if (r > 0) {
+      --running;
+      if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) ++bad;
+      continue;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    long done = sh->done.load();
+    if (el - last_print >= (tty ? 0.5 : 10.0)) {
+      last_print = el;
+      double rate = done / std::max(el, 1e-9);
+      std::string eta = done > 0 ? fmt_duration((tasks.size() - done) / rate) : "?";
+      std::fprintf(stderr, "%s[%ld/%zu] %.2f tasks/s, %s elapsed, about %s left (%d workers)%s", tty ? "\r" : "", done,
+                   tasks.size(), rate, fmt_duration(el).c_str(), eta.c_str(), jobs, tty ? "   " : "\n");
+      std::fflush(stderr);
+    }
+  }
+  double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr, "%s[%ld/%zu] done in %s\n", tty ? "\r" : "", sh->done.load(), tasks.size(), fmt_duration(el).c_str());
+  long finished = sh->done.load();
+  munmap(mem, sizeof(Shared));
+  if (bad || finished != long(tasks.size())) throw std::runtime_error("a worker process failed (" + std::to_string(bad) + " of " + std::to_string(jobs) + ")");
+  std::vector<std::pair<long, std::string>> all;
+  for (int w = 0; w < jobs; ++w) {
+    std::ifstream in(work / ("worker-" + std::to_string(w) + ".txt"));
+    std::string line;
+    long order = 0;
+    while (std::getline(in, line)) {
+      auto tab = line.find('\t');
+      all.push_back({std::stol(line.substr(0, tab)) * 100000 + order++, line.substr(tab + 1)});
+    }
+    fs::remove(work / ("worker-" + std::to_string(w) + ".txt"));
+  }
+  std::stable_sort(all.begin(), all.end(), [](auto& x, auto& y) { return x.first / 100000 < y.first / 100000; });
+  std::vector<std::string> lines;
+  for (auto& [k, l] : all) {
+    if (l[0] == 'E') failures.push_back(l.substr(1));
+    else lines.push_back(l);
+  }
+  return lines;
+}
+
+void run_figures(const fs::path& dir) {
+  fs::path script = fs::path(plots_dir()) / "report_figures.py";
+  if (!fs::exists(script)) throw std::runtime_error(script.string() + ": the report script is missing (set ECCD_PLOTS_DIR?)");
+  std::string cmd = "python3 " + shell_quote(script.string()) + " " + shell_quote(dir.string());
+  int rc = std::system(cmd.c_str());
+  if (rc != 0)
+    throw std::runtime_error("the report step failed (" + cmd + "); results.csv is in " + dir.string() +
+                             ". It needs python3 with matplotlib: apt-get install python3-matplotlib");
+}
+
+void finish_output(const fs::path& partial, const fs::path& out) {
+  if (fs::exists(out)) fs::remove_all(out);
+  fs::rename(partial, out);
+}
+
+// ---- the two modes -----------------------------------------------------------
+
+int run_report(const ReportArgs& a) {
+  auto t_start = std::chrono::steady_clock::now();
+  std::string started = now_iso();
+  int shard_i = 0, shard_n = 1;
+  if (!a.shard.empty()) {
+    auto p = split(a.shard, '/');
+    try {
+      if (p.size() != 2) throw std::invalid_argument("");
+      shard_i = std::stoi(p[0]);
+      shard_n = std::stoi(p[1]);
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--shard " + a.shard + ": expected i/n with 0 <= i < n");
+    }
+    if (shard_n < 1 || shard_i < 0 || shard_i >= shard_n) throw std::invalid_argument("--shard " + a.shard + ": expected i/n with 0 <= i < n");
+  }
+  fs::path out = a.out.empty() ? fs::path("reports") / a.name : fs::path(a.out);
+  if (shard_n > 1 && a.out.empty()) out = fs::path("reports") / (a.name + "-shard-" + std::to_string(shard_i) + "-of-" + std::to_string(shard_n));
+
+  // Tasks: generated scenes (or scene files), the shipped cases, the map cells.
+  std::vector<Task> tasks;
+  std::size_t generated = 0, from_cases = 0;
+  if (a.scenes.empty()) {
+    for (const auto& sp : plan_scenes(a.plan)) {
+      GeneratedScene g = generate_scene(sp);
+      tasks.push_back({Task::SceneTask, g.doc.dump(), g.name, "generated"});
+      ++generated;
+    }
+  }
+  auto add_dir = [&](const std::string& dir, const std::string& source) {
+    if (!fs::is_directory(dir)) throw std::invalid_argument(dir + ": not a folder of scene files");
+    std::vector<fs::path> files;
+    for (auto& e : fs::recursive_directory_iterator(dir))
+      if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+      Scene s = read_scene_file(f.string());  // a bad file stops the run before any work (exit 2)
+      if (scene_degree(s) < 0) {
+        std::fprintf(stderr, "eccd report: %s: skipped (cycloidal motion: no exact ground truth)\n", f.string().c_str());
+        continue;
+      }
+      std::ifstream in(f);
+      std::string text((std::istreambuf_iterator<char>(in)), {});
+      tasks.push_back({Task::SceneTask, text, f.string(), source});
+      source == "cases" ? ++from_cases : ++generated;
+    }
+  };
+  if (!a.scenes.empty()) add_dir(a.scenes, "generated");
+  if (!a.cases.empty()) add_dir(a.cases, "cases");
+  std::optional<FailureMap> map;
+  if (!a.no_map) {
+    map = make_failure_map(a.plan.seed, a.map_size);
+    for (int ix = 0; ix < a.map_size; ++ix)
+      for (int iy = 0; iy < a.map_size; ++iy) {
+        Task t{Task::MapCell, map_cell_scene(*map, ix, iy), map->scene + " (map cell)", "map"};
+        t.ix = ix;
+        t.iy = iy;
+        tasks.push_back(t);
+      }
+  }
+  std::vector<Task> mine;
+  for (std::size_t k = 0; k < tasks.size(); ++k)
+    if (int(k % shard_n) == shard_i) mine.push_back(tasks[k]);
+  std::fprintf(stderr, "eccd report: %zu generated scene(s), %zu case(s), %d failure-map cell(s)%s -> %s\n", generated, from_cases,
+               map ? a.map_size * a.map_size : 0,
+               shard_n > 1 ? (", shard " + a.shard + ": " + std::to_string(mine.size()) + " task(s)").c_str() : "",
+               out.string().c_str());
+
+  fs::path partial = out;
+  partial += ".partial";
+  if (fs::exists(partial)) fs::remove_all(partial);
+  fs::create_directories(partial);
+  std::vector<std::string> failures;
+  auto lines = run_tasks(mine, a, map ? &*map : nullptr, partial, failures);
+  for (const auto& f : failures) std::fprintf(stderr, "eccd report: failed: %s\n", f.c_str());
+
+  std::vector<std::string> rows, cells;
+  for (auto& l : lines) (l[0] == 'R' ? rows : cells).push_back(l.substr(1));
+  sort_results(rows);
+  std::string csv = results_csv_header() + "\n";
+  for (auto& r : rows) csv += r + "\n";
+  write_file(partial / "results.csv", csv);
+  if (map) {
+    sort_map(cells, map->pipelines);
+    std::string m = "pipeline,ix,iy,dx_ulps,dy_ulps,answer,exact\n";
+    for (auto& c : cells) m += c + "\n";
+    write_file(partial / "failure_map.csv", m);
+  }
+
+  nlohmann::json meta;
+  meta["name"] = a.name;
+  meta["command"] = command_line();
+  meta["seed"] = a.plan.seed;
+  meta["mpfr_bits"] = a.harness.mpfr_bits;
+  meta["degrees"] = a.plan.degrees;
+  meta["dims"] = a.plan.dims;
+  meta["families"] = a.plan.families;
+  meta["separations"] = a.plan.d_exponents;
+  meta["count_per_combination"] = a.plan.count;
+  meta["grid"] = a.harness.grid;
+  std::vector<std::string> labels;
+  for (int dim : a.plan.dims)
+    for (const auto& p : harness_pipelines(dim, a.harness))
+      if (std::find(labels.begin(), labels.end(), p.label) == labels.end()) labels.push_back(p.label);
+  meta["pipelines"] = labels;
+  meta["machine"] = machine_info();
+  std::string ver = read_command_output("git -C " + shell_quote(fs::path(plots_dir()).parent_path().parent_path().string()) +
+                                        " describe --always --dirty 2>/dev/null");
+  meta["version"] = ver.empty() ? "unknown" : ver;
+  meta["started"] = started;
+  meta["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  meta["shards"] = shard_n;
+  meta["shard"] = shard_n > 1 ? nlohmann::json(a.shard) : nlohmann::json(nullptr);
+  meta["scene_count"] = generated + from_cases;
+  meta["failed"] = failures;
+  if (map) {
+    meta["failure_map"] = {{"scene", map->scene},
+                           {"x_input", "constant coefficient of B's x-translation entry m[0][2] (nearest double " + std::to_string(map->x0) + ")"},
+                           {"y_input", "constant coefficient of B's y-translation entry m[1][2] (nearest double " + std::to_string(map->y0) + ")"},
+                           {"n", map->n},
+                           {"pipelines", map->pipelines},
+                           {"note", "2D touch-and-separate scene of motion degree 2; cell (ix, iy) moves the two inputs by "
+                                    "ix - n/2 and iy - n/2 units in the last place of the nearest doubles; every cell is "
+                                    "solved exactly and by each pipeline"}};
+  } else {
+    meta["failure_map"] = nullptr;
+  }
+  write_file(partial / "meta.json", meta.dump(2) + "\n");
+  if (shard_n == 1 && !a.no_figures) run_figures(partial);
+  finish_output(partial, out);
+  std::fprintf(stderr, "eccd report: wrote %s%s\n", out.string().c_str(),
+               shard_n > 1 ? " (a shard: join the parts with eccd report --merge)" : "");
+  std::cout << (out / (shard_n == 1 && !a.no_figures ? "report.md" : "results.csv")).string() << "\n";
+  return failures.empty() ? 0 : 1;
+}
+
+int run_merge(const ReportArgs& a) {
+  if (a.merge.size() < 1) throw std::invalid_argument("--merge needs the part folders");
+  fs::path out = a.out.empty() ? fs::path("reports") / a.name : fs::path(a.out);
+  std::vector<std::string> rows, cells;
+  nlohmann::json meta;
+  std::vector<bool> seen;
+  double wall = 0;
+  std::string header = results_csv_header();
+  for (const auto& dir : a.merge) {
+    fs::path d(dir);
+    std::ifstream mi(d / "meta.json");
+    if (!mi) throw std::invalid_argument(dir + ": no meta.json (not an `eccd report --shard` part)");
+    nlohmann::json m = nlohmann::json::parse(mi);
+    int n = m.value("shards", 1);
+    if (meta.is_null()) {
+      meta = m;
+      seen.assign(n, false);
+    } else {
+      for (const char* k : {"seed", "mpfr_bits", "degrees", "dims", "families", "separations", "count_per_combination", "grid", "shards"})
+        if (m[k] != meta[k]) throw std::invalid_argument(dir + ": was run with a different " + std::string(k) + " than " + a.merge[0]);
+    }
+    auto sh = m["shard"].is_string() ? split(m["shard"].get<std::string>(), '/') : std::vector<std::string>{"0", "1"};
+    int i = std::stoi(sh[0]);
+    if (seen[i]) throw std::invalid_argument(dir + ": shard " + std::to_string(i) + " given twice");
+    seen[i] = true;
+    wall += m.value("wall_seconds", 0.0);
+    std::ifstream ri(d / "results.csv");
+    std::string line;
+    if (!std::getline(ri, line) || line != header) throw std::invalid_argument((d / "results.csv").string() + ": missing or not a results table");
+    while (std::getline(ri, line)) rows.push_back(line);
+    std::ifstream fi(d / "failure_map.csv");
+    if (fi && std::getline(fi, line))
+      while (std::getline(fi, line)) cells.push_back(line);
+  }
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (!seen[i]) throw std::invalid_argument("--merge: shard " + std::to_string(i) + "/" + std::to_string(seen.size()) + " is missing");
+  sort_results(rows);
+  fs::path partial = out;
+  partial += ".partial";
+  if (fs::exists(partial)) fs::remove_all(partial);
+  fs::create_directories(partial);
+  std::string csv = header + "\n";
+  for (auto& r : rows) csv += r + "\n";
+  write_file(partial / "results.csv", csv);
+  if (!cells.empty()) {
+    sort_map(cells, meta["failure_map"]["pipelines"].get<std::vector<std::string>>());
+    std::string m = "pipeline,ix,iy,dx_ulps,dy_ulps,answer,exact\n";
+    for (auto& c : cells) m += c + "\n";
+    write_file(partial / "failure_map.csv", m);
+  }
+  meta["name"] = a.name;
+  meta["command"] = meta["command"].get<std::string>() + "  (parts joined by: " + command_line() + ")";
+  meta["wall_seconds"] = wall;
+  meta["shard"] = nullptr;
+  write_file(partial / "meta.json", meta.dump(2) + "\n");
+  if (!a.no_figures) run_figures(partial);
+  finish_output(partial, out);
+  std::fprintf(stderr, "eccd report: joined %zu part(s) into %s\n", a.merge.size(), out.string().c_str());
+  std::cout << (out / (a.no_figures ? "results.csv" : "report.md")).string() << "\n";
+  return 0;
+}
+
+}  // namespace
+
 Command add_report_command(CLI::App& app) {
+  auto a = std::make_shared<ReportArgs>();
+  a->plan.count = 2;
   Command c;
-  c.sub = app.add_subcommand("report", "(not implemented yet)");
-  c.run = [] { return 1; };
+  c.sub = app.add_subcommand(
+      "report",
+      "Robustness report: generate seeded scenes (2D and 3D, motion degrees 2-6, families colliding / free / touch / "
+      "near-miss), add the shipped cases, run every pipeline (double power / Bernstein / scaled Bernstein, MPFR at many "
+      "precisions, the 3D Bezier, projection, sampling and marching methods) against the exact pipeline, and write "
+      "reports/NAME/: report.md, results.csv, failure_map.csv, meta.json and PNG figures.");
+  auto* s = c.sub;
+  s->add_option("--name", a->name, "Report name: the output goes to reports/NAME")->capture_default_str();
+  s->add_option("--out", a->out, "Output folder instead of reports/NAME (replaced only when the run succeeds)");
+  s->add_option("--seed", a->plan.seed, "Run seed (same seed, same scenes, same numbers apart from timings)")->capture_default_str();
+  s->add_option("--count", a->plan.count, "Generated scenes per dimension x degree x family x motion (x separation)")
+      ->capture_default_str()->check(CLI::Range(0, 100000));
+  s->add_option("--dims", a->plan.dims, "Dimensions")->delimiter(',')->capture_default_str()->check(CLI::IsMember({2, 3}));
+  s->add_option("--degrees", a->plan.degrees, "Motion degrees")->delimiter(',')->capture_default_str()->check(CLI::Range(1, 8));
+  s->add_option("--families", a->plan.families, "Families: colliding, free, touch, near-miss")
+      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"colliding", "free", "touch", "near-miss"}));
+  s->add_option("--motions", a->plan.motions, "Restrict motions: kinematic (2D), euler, affine (3D); default all")
+      ->delimiter(',')->check(CLI::IsMember({"kinematic", "euler", "affine"}));
+  s->add_option("--separations", a->plan.d_exponents, "Near-miss separations d = 10^-e, as the exponents e")
+      ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 300));
+  s->add_option("--mpfr", a->harness.mpfr_bits, "MPFR precisions in bits")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
+  s->add_option("--grid", a->harness.grid, "N of the 3D sampling:N and marching:N baselines")->capture_default_str()->check(CLI::Range(1, 100000));
+  s->add_option("--cases", a->cases, "Also run the scene files under this folder (their stored answers are not used: exact is recomputed); '' for none")
+      ->capture_default_str();
+  s->add_option("--scenes", a->scenes, "Run the scene files under this folder instead of generating scenes");
+  s->add_option("--jobs", a->jobs, "Worker processes (default: the number of cores)");
+  s->add_option("--shard", a->shard, "i/n: run only every n-th task starting at i and write the raw part (results.csv, meta.json) for --merge");
+  s->add_option("--merge", a->merge, "Join the part folders written by --shard runs into one report")->expected(1, -1);
+  s->add_option("--map-size", a->map_size, "Failure map: n x n cells (units in the last place around the touching input)")
+      ->capture_default_str()->check(CLI::Range(2, 1024));
+  s->add_flag("--no-map", a->no_map, "Skip the failure map");
+  s->add_flag("--no-figures", a->no_figures, "Write the CSV and meta.json only (no report.md, no PNG)");
+  c.run = [a]() { return a->merge.empty() ? run_report(*a) : run_merge(*a); };
   return c;
 }
 

@@ -126,9 +126,7 @@ nlohmann::json run_floating_3d(const PreparedPair<4>& p, const SolveOptions& opt
   if (basis == Basis::scaled_bernstein && opt.method != "projection")
     throw std::invalid_argument("--basis scaled-bernstein applies to --method projection only in 3D");
   // g_0..g_4: products in Bernstein form from N(t) in Bernstein form, or in power form.
-  std::vector<Bern<T>> g;
-  if (basis == Basis::power) g = to_bernstein_all(characteristic_of(to_arithmetic<T, 4>(p, like)), like);
-  else g = characteristic_of(to_arithmetic_bernstein<T, 4>(p, like));
+  std::vector<Bern<T>> g = characteristic_bernstein<T, 4>(p, basis == Basis::power, like);
   double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json j;
   if (opt.method == "projection") {

@@ -103,6 +103,15 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
   return cp;
 }
 
+// Δ(t) from g_0..g_3 in the Policy's representation: what cd_disc root-finds
+// (the harness in compare/ measures its coefficient error through this call).
+template <class T, class Policy>
+auto discriminant_of(const std::vector<Poly<T>>& g, const Policy& pol) {
+  return pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+    return cubic_discriminant(g3, g2, g1, g0);
+  });
+}
+
 template <class T, class Policy>
 CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant variant = Variant::answer) {
   auto start = std::chrono::steady_clock::now();
@@ -119,9 +128,7 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   auto status_at = [&](const T& t) { return cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t)); };
   res.status_at_0 = status_at(zero);
 
-  auto delta = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
-    return cubic_discriminant(g3, g2, g1, g0);
-  });
+  auto delta = discriminant_of(g, pol);
   auto P = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
     return double_root_numerator(g3, g2, g1, g0);
   });

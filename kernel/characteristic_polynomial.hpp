@@ -13,6 +13,7 @@
 // that multiplies in Bernstein form avoids the cancellation of power-form
 // coefficients, whose size can exceed the values on [0, 1] by 10^15 and more).
 // Requirements on T: ring operations.
+#include "kernel/bernstein.hpp"
 #include "kernel/poly_matrix.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
@@ -57,6 +58,23 @@ std::vector<Bern<T>> characteristic_of(const MovingPairBern<T, N>& p) {
   auto a = moving_quadric_in<Bern<T>, T, N>(p.qa, p.na, zero);
   auto b = moving_quadric_in<Bern<T>, T, N>(p.qb, p.nb, zero);
   return characteristic_coefficients_in<Bern<T>, N>(a, b, zero);
+}
+
+// g_0 .. g_N in Bernstein form as a floating pipeline sets them up: every
+// product in power form and each g_k converted at the end (power_products),
+// or every product in Bernstein form from N(t) in Bernstein form. The 3D
+// floating pipelines and the harness (compare/) both call this, so the
+// harness measures the coefficients the pipelines use.
+template <class T, int N>
+std::vector<Bern<T>> characteristic_bernstein(const PreparedPair<N>& p, bool power_products, const T& like) {
+  if (!power_products) return characteristic_of(to_arithmetic_bernstein<T, N>(p, like));
+  std::vector<Bern<T>> out;
+  for (const auto& gi : characteristic_of(to_arithmetic<T, N>(p, like))) {
+    Bern<T> b = to_bernstein(gi, std::max(gi.degree(), 0));
+    if (gi.is_zero()) b.b.assign(1, like - like);
+    out.push_back(b);
+  }
+  return out;
 }
 
 }  // namespace eccd

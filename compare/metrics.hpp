@@ -1,0 +1,187 @@
+#pragma once
+// Metrics of the robustness report: how far a floating pipeline's
+// coefficients and answer are from the exact ones.
+//
+// Statement.
+//  * Coefficient error (design.md, job 1; 003 VI-C and 002 IV measure the
+//    same loss): the normwise relative error  max_i |ã_i - a_i| / max_i |a_i|
+//    of a list of coefficients ã against the exact list a in the same basis,
+//    computed exactly in rationals (every double and MPFR value is a dyadic
+//    rational) and rounded once to a double at the end. A set of polynomials
+//    (g_0..g_n) counts as one vector. Polynomials in Bernstein form of
+//    different degrees are compared after exact degree elevation of the lower
+//    one (elevation does not change the polynomial). If the exact list is
+//    all zero the error is the absolute max |ã_i|.
+//  * Answer comparison against the exact answer (both as `eccd solve` JSON):
+//    the outcome of `collides` (correct, false_positive = reports a collision
+//    that does not happen, false_negative = misses one, undecided = the
+//    pipeline said it could not classify an instant: never folded into right
+//    or wrong, error = the pipeline threw); the numbers of intervals; missed
+//    and false contacts (matched within `tol`); the first-contact error and
+//    the largest interval-end error (only when the interval counts agree);
+//    structure_ok = correct, same intervals (ends within tol), same contacts.
+//    This follows the habit of CCD benchmarks against an exact ground truth
+//    (Wang et al., ACM TOG 2021: false positives, false negatives, time).
+// Requirements: T is double, eccd::Mpfr or mpq_class (exact_value below).
+#include "exact/rational_traits.hpp"
+#include "floating/mpfr_real.hpp"
+#include "kernel/bernstein.hpp"
+#include "kernel/bivariate_bernstein.hpp"
+#include "kernel/polynomial.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace eccd {
+
+inline mpq_class exact_value(double x) { return mpq_class(x); }
+inline mpq_class exact_value(const Mpfr& x) {
+  mpq_class q;
+  mpfr_get_q(q.get_mpq_t(), x.get());
+  return q;
+}
+inline mpq_class exact_value(const mpq_class& x) { return x; }
+
+// max |approx_i - exact_i| / max |exact_i| (missing entries count as 0).
+inline double normwise_relative_error(const std::vector<mpq_class>& approx, const std::vector<mpq_class>& exact) {
+  mpq_class num = 0, den = 0;
+  for (std::size_t i = 0; i < std::max(approx.size(), exact.size()); ++i) {
+    mpq_class a = i < approx.size() ? approx[i] : mpq_class(0);
+    mpq_class e = i < exact.size() ? exact[i] : mpq_class(0);
+    mpq_class d = abs(a - e), m = abs(e);
+    if (d > num) num = d;
+    if (m > den) den = m;
+  }
+  if (den == 0) return num.get_d();
+  mpq_class r = num / den;
+  return r.get_d();
+}
+
+// Coefficient lists, in the basis each polynomial is held in.
+template <class T>
+void append_coefficients(const Poly<T>& p, std::vector<mpq_class>& out, int degree) {
+  for (int i = 0; i <= degree; ++i) out.push_back(i < int(p.c.size()) ? exact_value(p.c[i]) : mpq_class(0));
+}
+template <class T>
+Bern<mpq_class> exact_bernstein(const Bern<T>& b) {
+  Bern<mpq_class> r;
+  for (const auto& x : b.b) r.b.push_back(exact_value(x));
+  return r;
+}
+
+// Power form: coefficient i against coefficient i (the longer list decides the length).
+template <class T>
+double coefficient_error(const std::vector<Poly<T>>& approx, const std::vector<Poly<mpq_class>>& exact) {
+  std::vector<mpq_class> a, e;
+  for (std::size_t k = 0; k < exact.size(); ++k) {
+    int n = std::max(exact[k].degree(), k < approx.size() ? approx[k].degree() : -1);
+    append_coefficients(exact[k], e, n);
+    if (k < approx.size()) append_coefficients(approx[k], a, n);
+    else for (int i = 0; i <= n; ++i) a.push_back(0);
+  }
+  return normwise_relative_error(a, e);
+}
+
+// Bernstein form on [0, 1]: both at the larger of the two degrees.
+template <class T>
+double coefficient_error(const std::vector<Bern<T>>& approx, const std::vector<Bern<mpq_class>>& exact) {
+  std::vector<mpq_class> a, e;
+  for (std::size_t k = 0; k < exact.size() && k < approx.size(); ++k) {
+    Bern<mpq_class> x = exact_bernstein(approx[k]), y = exact[k];
+    int n = std::max(x.degree(), y.degree());
+    x = elevate(x, n - x.degree());
+    y = elevate(y, n - y.degree());
+    a.insert(a.end(), x.b.begin(), x.b.end());
+    e.insert(e.end(), y.b.begin(), y.b.end());
+  }
+  return normwise_relative_error(a, e);
+}
+template <class T>
+double coefficient_error(const Bern<T>& approx, const Bern<mpq_class>& exact) {
+  return coefficient_error(std::vector<Bern<T>>{approx}, std::vector<Bern<mpq_class>>{exact});
+}
+
+// Tensor Bernstein F(u, t): the u-rows as Bernstein polynomials in t.
+template <class T>
+double coefficient_error(const BiBern<T>& approx, const BiBern<mpq_class>& exact) {
+  std::vector<Bern<T>> a;
+  std::vector<Bern<mpq_class>> e;
+  for (const auto& row : approx.b) { Bern<T> b; b.b = row; a.push_back(b); }
+  for (const auto& row : exact.b) { Bern<mpq_class> b; b.b = row; e.push_back(b); }
+  return coefficient_error(a, e);
+}
+
+// ---- answers -------------------------------------------------------------
+
+struct AnswerMetrics {
+  std::string outcome;  // correct | false_positive | false_negative | undecided | error
+  std::optional<bool> collides;
+  bool exact_collides = false;
+  int intervals = 0, exact_intervals = 0;
+  int missed_contacts = 0, false_contacts = 0;
+  std::optional<double> first_contact_err, endpoint_err;
+  bool structure_ok = false;
+};
+
+inline double instant_value(const nlohmann::json& i) { return std::stod(i.at("approx").get<std::string>()); }
+
+// Instants of a JSON list (null = none).
+inline std::vector<double> instant_list(const nlohmann::json& j) {
+  std::vector<double> v;
+  if (j.is_array())
+    for (const auto& i : j) v.push_back(instant_value(i));
+  return v;
+}
+
+// Greedy matching of sorted instant lists within tol: how many of `from` have no partner in `to`.
+inline int unmatched(const std::vector<double>& from, const std::vector<double>& to, double tol) {
+  std::vector<bool> used(to.size(), false);
+  int miss = 0;
+  for (double x : from) {
+    int best = -1;
+    for (std::size_t k = 0; k < to.size(); ++k)
+      if (!used[k] && std::abs(to[k] - x) <= tol && (best < 0 || std::abs(to[k] - x) < std::abs(to[best] - x))) best = int(k);
+    if (best < 0) ++miss; else used[best] = true;
+  }
+  return miss;
+}
+
+// got: a pipeline's report (or {"error": ...}); exact: the exact report.
+inline AnswerMetrics compare_answers(const nlohmann::json& got, const nlohmann::json& exact, double tol = 1e-6) {
+  AnswerMetrics m;
+  m.exact_collides = exact.at("collides").get<bool>();
+  m.exact_intervals = exact["intervals"].is_array() ? int(exact["intervals"].size()) : 0;
+  if (!got.contains("collides")) {
+    m.outcome = "error";
+    return m;
+  }
+  bool c = got["collides"].get<bool>();
+  m.collides = c;
+  m.intervals = got["intervals"].is_array() ? int(got["intervals"].size()) : 0;
+  bool unsure = got.contains("undecided") && got["undecided"].is_array() && !got["undecided"].empty();
+  if (unsure) m.outcome = "undecided";
+  else if (c == m.exact_collides) m.outcome = "correct";
+  else m.outcome = c ? "false_positive" : "false_negative";
+
+  std::vector<double> gc = instant_list(got["contacts"]), ec = instant_list(exact["contacts"]);
+  m.missed_contacts = unmatched(ec, gc, tol);
+  m.false_contacts = unmatched(gc, ec, tol);
+  if (!got["first_contact"].is_null() && !exact["first_contact"].is_null())
+    m.first_contact_err = std::abs(instant_value(got["first_contact"]) - instant_value(exact["first_contact"]));
+  if (m.intervals == m.exact_intervals && got["intervals"].is_array()) {
+    double e = 0;
+    for (int k = 0; k < m.intervals; ++k)
+      for (int s = 0; s < 2; ++s)
+        e = std::max(e, std::abs(instant_value(got["intervals"][k][s]) - instant_value(exact["intervals"][k][s])));
+    m.endpoint_err = e;
+  }
+  m.structure_ok = m.outcome == "correct" && m.intervals == m.exact_intervals && m.endpoint_err && *m.endpoint_err <= tol &&
+                   m.missed_contacts == 0 && m.false_contacts == 0;
+  return m;
+}
+
+}  // namespace eccd

@@ -1,0 +1,259 @@
+#!/usr/bin/env python3
+"""Draws one scene for `eccd plot` (app/plot.cpp): scene_figure.py DATA.json OUT.png
+
+DATA.json is the "eccd-plot-data/1" file that `eccd plot` writes (keep it with
+--data): the `eccd solve` report of the scene ("solve"), object outlines at a
+few instants ("snapshots"), the centres' paths ("paths"), contact points
+("contacts") and the sampled curve ("curve"): Δ(t)/max|Δ| in 2D, F(u, t) on a
+grid of the (u, t) square in 3D. All the mathematics is done by eccd; this
+script only draws.
+
+Left panel: the objects at the drawn instants (3D: outlines of their
+projections onto the xy-plane), A in blues and B in oranges, darker = later;
+labels in red are instants inside a collision interval; crosses are contact
+points. Right panel, 2D (paper 003): Δ(t) on a symmetric log scale; 3D (papers
+001/002): the zero set of F(u, t) = det((u-1)A(t) - uB(t)) with F > 0 filled.
+Both show the critical instants (dashed, coloured by status), the collision
+intervals (shaded) and the contacts (circles) of the report.
+
+Needs numpy and matplotlib only (Agg backend: no display).
+"""
+import json
+import math
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+STATUS_COLOUR = {
+    "touching": "#d62728",
+    "overlapping": "#9467bd",
+    "separate": "#555555",
+    "uncertain": "#ff7f0e",
+}
+COLLISION = "#e41a1c"
+
+
+def approx(instant):
+    return float(instant["approx"])
+
+
+def short(x):
+    return f"{x:.6g}"
+
+
+def answer_text(rep):
+    if not rep["collides"]:
+        return "collision-free on [0, 1]"
+    parts = []
+    for a, b in rep.get("intervals") or []:
+        ta, tb = approx(a), approx(b)
+        parts.append(f"touch at t = {short(ta)}" if a == b else f"[{short(ta)}, {short(tb)}]")
+    text = "collides: " + " ∪ ".join(parts) if parts else "collides"
+    if rep.get("first_contact") is not None:
+        text += f"; first contact t = {short(approx(rep['first_contact']))}"
+    n = len(rep.get("contacts") or [])
+    text += f"; {n} external contact{'s' if n != 1 else ''}"
+    return text
+
+
+def arith_text(data):
+    rep = data["solve"]
+    s = f"arithmetic {rep['arith']}, " + ("certified" if rep.get("certified") else "not certified")
+    if rep.get("method") and rep["method"] != "cd-disc":
+        s += f", method {rep['method']}"
+    if rep.get("basis") and rep["basis"] != "exact":
+        s += f", basis {rep['basis']}"
+    s += f"; {len(rep.get('critical_instants') or [])} critical instant(s)"
+    if rep.get("undecided"):
+        s += f"; {len(rep['undecided'])} undecided"
+    if data.get("arith_note"):
+        s += f" ({data['arith_note']})"
+    return s
+
+
+def in_collision(t, rep):
+    for a, b in rep.get("intervals") or []:
+        if approx(a) - 1e-12 <= t <= approx(b) + 1e-12:
+            return True
+    return False
+
+
+def draw_objects(ax, data):
+    rep = data["solve"]
+    paths = data["paths"]
+    for key, cmap in (("a", plt.cm.Blues), ("b", plt.cm.Oranges)):
+        ax.plot(paths[key]["x"], paths[key]["y"], ":", color=cmap(0.75), lw=1.2)
+        ax.plot(paths[key]["x"][0], paths[key]["y"][0], "o", color=cmap(0.75), ms=4)
+    xs = [x for s in data["snapshots"] for k in ("a", "b") for x in s[k]["x"]]
+    ys = [y for s in data["snapshots"] for k in ("a", "b") for y in s[k]["y"]]
+    tol = 0.03 * max(max(xs) - min(xs), max(ys) - min(ys), 1e-300) if xs else 0
+    for key, cmap, name in (("a", plt.cm.Blues, "A"), ("b", plt.cm.Oranges, "B")):
+        clusters = []  # snapshots whose centres (nearly) coincide share one label
+        for snap in data["snapshots"]:
+            t, o = snap["t"], snap[key]
+            col = cmap(0.35 + 0.6 * t)
+            ax.fill(o["x"], o["y"], color=col, alpha=0.10, lw=0)
+            ax.plot(o["x"], o["y"], color=col, lw=2.4 if snap["contact"] else 1.3)
+            for cl in clusters:
+                if math.dist(cl["centre"], o["centre"]) <= tol:
+                    cl["ts"].append(t)
+                    break
+            else:
+                clusters.append({"centre": o["centre"], "ts": [t]})
+        for cl in clusters:
+            ts = cl["ts"]
+            hits = [in_collision(t, rep) for t in ts]
+            label = ", ".join(f"{t:.3g}" for t in ts) if len(ts) <= 2 else f"{ts[0]:.3g}…{ts[-1]:.3g} ({len(ts)} instants)"
+            ax.annotate(f"{name} {label}", cl["centre"], fontsize=8, ha="center", va="center",
+                        color=COLLISION if all(hits) else "black")
+    for c in data.get("contacts") or []:
+        if "point" in c:
+            ax.plot(c["point"][0], c["point"][1], "x", color=COLLISION, ms=10, mew=2.5)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.grid(alpha=0.25)
+    where = "outlines of the projections onto the xy-plane" if data["dim"] == 3 else "the ellipses"
+    ax.set_title(f"objects at the drawn instants ({where})", fontsize=11)
+    handles = [
+        Line2D([], [], color=plt.cm.Blues(0.8), lw=2, label="A at t (label), darker = later"),
+        Line2D([], [], color=plt.cm.Oranges(0.8), lw=2, label="B at t (label), darker = later"),
+        Line2D([], [], color="grey", ls=":", label="centre paths (dot: t = 0)"),
+    ]
+    if data.get("contacts"):
+        handles.append(Line2D([], [], color=COLLISION, marker="x", ls="", mew=2.5,
+                              label="contact point (thick outlines: contact instants)"))
+    if rep["collides"]:
+        handles.append(Line2D([], [], color=COLLISION, marker="$t$", ls="", label="red label: in collision"))
+    if data["dim"] == 3:
+        handles.append(Patch(color="none", label="projections may overlap while apart"))
+    ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85)
+
+
+def marks_title(rep):
+    return f"instants, intervals, contacts: {rep['arith']}"
+
+
+def mark_answer(ax, rep, horizontal):
+    """Collision intervals shaded, critical instants dashed; horizontal = t on the y axis."""
+    span = ax.axhspan if horizontal else ax.axvspan
+    line = ax.axhline if horizontal else ax.axvline
+    for a, b in rep.get("intervals") or []:
+        ta, tb = approx(a), approx(b)
+        if tb > ta:
+            span(ta, tb, color=COLLISION, alpha=0.13, lw=0)
+        else:
+            line(ta, color=COLLISION, alpha=0.35, lw=4)
+    seen = set()
+    for c in rep.get("critical_instants") or []:
+        st = c["status"]
+        seen.add(st)
+        line(approx(c["t"]), color=STATUS_COLOUR.get(st, "black"), ls="--", lw=1.1)
+    handles = [Patch(color=COLLISION, alpha=0.25, label="collision interval")] if rep.get("intervals") else []
+    for st in ("touching", "overlapping", "separate", "uncertain"):
+        if st in seen:
+            handles.append(Line2D([], [], color=STATUS_COLOUR[st], ls="--", label=f"critical instant: {st}"))
+    return handles
+
+
+def draw_discriminant(ax, data):
+    rep, cur = data["solve"], data["curve"]
+    t = np.asarray(cur["t"], dtype=float)
+    v = np.asarray(cur["value"], dtype=float)
+    handles = mark_answer(ax, rep, horizontal=False)
+    if cur["identically_zero"]:
+        ax.plot(t, v, color="black", lw=1.5)
+        ax.text(0.5, 0.6, "Δ ≡ 0: f has a multiple root at every t", transform=ax.transAxes, ha="center")
+        ax.set_ylabel("Δ(t)")
+    else:
+        nz = np.abs(v[v != 0])
+        lin = 10.0 ** math.floor(math.log10(nz.min())) if nz.size else 1e-12
+        lin = min(max(lin, 1e-300), 1e-3)
+        # the linear part around 0 gets about a tenth of the height, so that 0 and ±lin do not collide
+        decades = round(-math.log10(lin))
+        ax.set_yscale("symlog", linthresh=lin, linscale=max(1.0, 0.2 * decades))
+        # ticks at 0 and ±10^e for e = 0, -step, ... down to lin (none inside the linear part)
+        step = max(1, math.ceil(decades / 7))
+        pos = [10.0 ** -e for e in range(0, decades + 1, step)]
+        ax.set_yticks(sorted([-p for p in pos] + [0.0] + pos))
+        ax.yaxis.set_minor_locator(matplotlib.ticker.NullLocator())
+        ax.plot(t, v, color="black", lw=1.4)
+        ax.set_ylabel(f"Δ(t) / max|Δ|   (symmetric log scale, linear within ±{lin:.0e})")
+    ax.axhline(0, color="black", lw=0.6)
+    contacts = data.get("contacts") or []
+    if contacts:
+        ax.plot([c["t"] for c in contacts], [0] * len(contacts), "o", mfc="none", mec=COLLISION, mew=2, ms=9)
+        handles.append(Line2D([], [], color=COLLISION, marker="o", mfc="none", ls="", mew=2, label="external contact"))
+    handles.insert(0, Line2D([], [], color="black", lw=1.4, label="Δ(t), exact (sampled exactly)"))
+    ax.set_xlim(0, 1)
+    ax.set_xlabel("t")
+    ax.grid(alpha=0.25)
+    degree = "Δ ≡ 0" if cur["identically_zero"] else f"degree {cur['degree']}"
+    ax.set_title(f"Δ(t): discriminant in λ of f(λ;t) = det(λA − B), {degree}\n"
+                 "(Δ > 0: three real roots in λ, Δ < 0: one; Δ = 0: a multiple root)", fontsize=10)
+    ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85, title=marks_title(rep), title_fontsize=8)
+
+
+def draw_zero_set(ax, data):
+    rep, cur = data["solve"], data["curve"]
+    u = np.asarray(cur["u"], dtype=float)
+    t = np.asarray(cur["t"], dtype=float)
+    F = np.asarray(cur["value"], dtype=float)
+    fmax = float(F.max())
+    if fmax > 0:
+        ax.contourf(u, t, F, levels=[0.0, fmax], colors=["#b8e3b0"])
+    if F.min() < 0 < fmax:
+        ax.contour(u, t, F, levels=[0.0], colors="black", linewidths=1.3)
+    handles = mark_answer(ax, rep, horizontal=True)
+    contacts = [c for c in data.get("contacts") or [] if "u" in c]
+    if contacts:
+        ax.plot([c["u"] for c in contacts], [c["t"] for c in contacts], "o", mfc="none", mec=COLLISION, mew=2, ms=9)
+        handles.append(Line2D([], [], color=COLLISION, marker="o", mfc="none", ls="", mew=2,
+                              label="external contact (u₀ = argmax F)"))
+    handles[:0] = [
+        Patch(color="#b8e3b0", label="F(u,t) > 0: separate at t"),
+        Line2D([], [], color="black", lw=1.3, label="F(u,t) = 0"),
+    ]
+    w0, w1 = cur.get("u_window", [0.0, 1.0])
+    ax.set_xlim(w0, w1)
+    ax.set_ylim(0, 1)
+    zoom = "" if (w0, w1) == (0.0, 1.0) else f";  zoomed to u ∈ [{w0:.3g}, {w1:.3g}]: F ≤ 0 elsewhere"
+    ax.set_xlabel(f"u   (λ = (u − 1)/u sweeps the negative axis){zoom}")
+    ax.set_ylabel("t")
+    ax.set_title("zero set of F(u,t) = det((u−1)A(t) − uB(t)): separate at t iff F(u,t) > 0 for some u\n"
+                 "(F(0,t) = det A < 0, F(1,t) = det B < 0; F built and sampled exactly, grid "
+                 f"{len(u)}×{len(t)})", fontsize=10)
+    ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85, title=marks_title(rep), title_fontsize=8)
+
+
+def main(argv):
+    if len(argv) != 3:
+        print("usage: scene_figure.py DATA.json OUT.png", file=sys.stderr)
+        return 2
+    with open(argv[1]) as f:
+        data = json.load(f)
+    if data.get("format") != "eccd-plot-data/1":
+        print(f"scene_figure.py: {argv[1]}: not an eccd-plot-data/1 file", file=sys.stderr)
+        return 2
+    rep = data["solve"]
+    fig = plt.figure(figsize=(14, 6), dpi=100, layout="constrained")
+    left, right = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.0, 1.15]})
+    draw_objects(left, data)
+    if data["dim"] == 2:
+        draw_discriminant(right, data)
+    else:
+        draw_zero_set(right, data)
+    fig.suptitle(f"{data['scene']} ({data['dim']}D): {answer_text(rep)}\n{arith_text(data)}", fontsize=12)
+    fig.savefig(argv[2], format="png")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,580 @@
+// Scene generators (see compare/scene_generator.hpp for the constructions).
+#include "compare/scene_generator.hpp"
+
+#include "kernel/bernstein.hpp"
+#include "kernel/motion.hpp"
+#include "kernel/poly_matrix.hpp"
+#include "kernel/sturm.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace eccd {
+
+namespace {
+
+// splitmix64: a small, portable generator (std distributions differ between
+// standard libraries; these numbers must not).
+struct Rng {
+  std::uint64_t s;
+  std::uint64_t next() {
+    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  long uniform(long lo, long hi) { return lo + long(next() % std::uint64_t(hi - lo + 1)); }
+  Rational frac(long lo, long hi, long den) {  // gmpxx's (num, den) constructor does not canonicalize
+    Rational q(uniform(lo, hi), den);
+    q.canonicalize();
+    return q;
+  }
+};
+
+std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
+  Rng r{a ^ (b * 0x2545f4914f6cdd1dULL)};
+  return r.next();
+}
+std::uint64_t hash_string(const std::string& s) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : s) { h ^= c; h *= 1099511628211ULL; }
+  return h;
+}
+
+RPoly constant(const Rational& c) { return RPoly::constant(c); }
+RPoly from_bernstein(const std::vector<Rational>& ctrl) {
+  Bern<Rational> b;
+  b.b = ctrl;
+  return to_power(b);
+}
+RPoly random_poly(Rng& r, int deg, long lo, long hi, long den) {
+  std::vector<Rational> c;
+  for (int i = 0; i <= deg; ++i) c.push_back(r.frac(lo, hi, den));
+  return RPoly(c);
+}
+bool vanishes_on_unit_interval(const RPoly& p) {
+  return p.is_zero() || count_roots_closed(p, Rational(0), Rational(1)) != 0;
+}
+
+using Vec = std::vector<Rational>;
+Rational dot(const Vec& a, const Vec& b) {
+  Rational s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
+
+// A rational unit vector: 2D from a rational half-angle tangent, 3D as the
+// image of e_x under the rotation of an integer quaternion.
+Vec random_unit(Rng& r, int dim) {
+  while (true) {
+    if (dim == 2) {
+      Rational u = r.frac(-12, 12, 8);
+      Rational w = 1 + u * u;
+      return {(1 - u * u) / w, 2 * u / w};
+    }
+    long q[4] = {r.uniform(-4, 4), r.uniform(-4, 4), r.uniform(-4, 4), r.uniform(-4, 4)};
+    long e = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    if (e == 0) continue;
+    Rational E(e);
+    return {Rational(q[0] * q[0] + q[1] * q[1] - q[2] * q[2] - q[3] * q[3]) / E,
+            Rational(2 * (q[1] * q[2] + q[0] * q[3])) / E, Rational(2 * (q[1] * q[3] - q[0] * q[2])) / E};
+  }
+}
+
+// Squared semi-axes alpha and the point x on x^T diag(1/alpha) x = 1 whose
+// outward normal is the unit vector n: x_i = alpha_i n_i / r with
+// r^2 = sum alpha_i n_i^2 (one alpha solved so that r is rational).
+struct Tangency {
+  Vec alpha, point;
+};
+Tangency shape_with_normal(Rng& r, const Vec& n) {
+  int dim = int(n.size());
+  int j = 0;
+  for (int i = 1; i < dim; ++i) if (abs(n[i]) > abs(n[j])) j = i;
+  while (true) {
+    Tangency t;
+    t.alpha.assign(dim, Rational(0));
+    Rational rest = 0;
+    for (int i = 0; i < dim; ++i)
+      if (i != j) { t.alpha[i] = r.frac(2, 16, 4); rest += t.alpha[i] * n[i] * n[i]; }
+    Rational nj2 = n[j] * n[j];
+    Rational want = rest + nj2 * r.frac(3, 10, 4);
+    double target = std::sqrt(want.get_d());  // picks r only
+    Rational rad(long(std::ceil(target * 16)), 16);
+    rad.canonicalize();
+    t.alpha[j] = (rad * rad - rest) / nj2;
+    if (t.alpha[j] < Rational(1, 4) || t.alpha[j] > 6) continue;
+    Rational check = 0;
+    for (int i = 0; i < dim; ++i) { t.point.push_back(t.alpha[i] * n[i] / rad); check += t.point[i] * t.point[i] / t.alpha[i]; }
+    if (check != 1) throw std::logic_error("generator: tangency point not on the ellipse");
+    return t;
+  }
+}
+
+using Mat = std::vector<Vec>;
+Mat identity(int n) {
+  Mat m(n, Vec(n, Rational(0)));
+  for (int i = 0; i < n; ++i) m[i][i] = 1;
+  return m;
+}
+Mat mat_mul(const Mat& a, const Mat& b) {
+  std::size_t n = a.size();
+  Mat r(n, Vec(n, Rational(0)));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t k = 0; k < n; ++k) r[i][j] += a[i][k] * b[k][j];
+  return r;
+}
+Vec mat_vec(const Mat& a, const Vec& v) {
+  Vec r(a.size(), Rational(0));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < v.size(); ++j) r[i] += a[i][j] * v[j];
+  return r;
+}
+Mat householder(const Vec& w) {
+  Mat h = identity(int(w.size()));
+  Rational ww = dot(w, w);
+  for (std::size_t i = 0; i < w.size(); ++i)
+    for (std::size_t j = 0; j < w.size(); ++j) h[i][j] -= 2 * w[i] * w[j] / ww;
+  return h;
+}
+// A random rational vector orthogonal to the unit vector n (3D).
+Vec orthogonal_to(Rng& r, const Vec& n) {
+  while (true) {
+    Vec u{r.frac(-4, 4, 1), r.frac(-4, 4, 1), r.frac(-4, 4, 1)};
+    Rational un = dot(u, n);
+    for (int i = 0; i < 3; ++i) u[i] -= un * n[i];
+    if (dot(u, u) != 0) return u;
+  }
+}
+// A rational rotation R with R m = -n (unit vectors m, n).
+Mat rotation_taking(Rng& r, const Vec& m, const Vec& n) {
+  Mat R;
+  if (m.size() == 2) {
+    Rational c = -dot(n, m), s = n[0] * m[1] - n[1] * m[0];
+    R = {{c, -s}, {s, c}};
+  } else {
+    Vec w{m[0] + n[0], m[1] + n[1], m[2] + n[2]};
+    if (dot(w, w) == 0) throw std::domain_error("m = -n");
+    R = mat_mul(householder(orthogonal_to(r, n)), householder(w));  // reflections: det +1
+  }
+  Vec img = mat_vec(R, m);
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (img[i] != -n[i]) throw std::logic_error("generator: rotation does not take m to -n");
+  return R;
+}
+
+// Homogeneous polynomial matrices (size dim + 1).
+using HMat = std::vector<std::vector<RPoly>>;
+HMat hmul(const HMat& a, const HMat& b) {
+  std::size_t n = a.size();
+  HMat r(n, std::vector<RPoly>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t k = 0; k < n; ++k)
+        if (!a[i][k].is_zero() && !b[k][j].is_zero()) r[i][j] += a[i][k] * b[k][j];
+  return r;
+}
+HMat hconst(const Mat& rot, const Vec& shift) {
+  std::size_t d = rot.size();
+  HMat h(d + 1, std::vector<RPoly>(d + 1));
+  for (std::size_t i = 0; i < d; ++i) {
+    for (std::size_t j = 0; j < d; ++j) h[i][j] = constant(rot[i][j]);
+    h[i][d] = constant(shift[i]);
+  }
+  h[d][d] = constant(1);
+  return h;
+}
+template <int N>
+HMat to_hmat(const Motion& m) {
+  auto M = motion_matrix<Rational, N>(m, [](const Rational& x) { return x; });
+  HMat h(N, std::vector<RPoly>(N));
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) h[i][j] = M[i][j];
+  return h;
+}
+int hdegree(const HMat& h) {
+  int d = 0;
+  for (auto& row : h) for (auto& e : row) d = std::max(d, e.degree());
+  return d;
+}
+
+// ---- motions with a prescribed centre path ---------------------------------
+
+// Bernstein control points of a centre path of degree p inside a box.
+struct Box { Vec lo, hi; };
+std::vector<Vec> control_points(Rng& r, int p, const Box& box) {
+  std::vector<Vec> c(p + 1);
+  for (auto& pt : c)
+    for (std::size_t i = 0; i < box.lo.size(); ++i) {
+      Rational span = box.hi[i] - box.lo[i];
+      pt.push_back(box.lo[i] + span * r.frac(0, 16, 16));
+    }
+  return c;
+}
+std::vector<RPoly> path_polys(const std::vector<Vec>& ctrl) {
+  std::vector<RPoly> out;
+  for (std::size_t i = 0; i < ctrl[0].size(); ++i) {
+    Vec c;
+    for (auto& pt : ctrl) c.push_back(pt[i]);
+    out.push_back(from_bernstein(c));
+  }
+  return out;
+}
+
+Motion kinematic_motion(Rng& r, int k, const std::vector<RPoly>& centre) {
+  while (true) {
+    RPoly d2 = random_poly(r, k, -4, 4, 2), d3 = random_poly(r, k, -4, 4, 2);
+    if (k == 0 && d2.is_zero() && d3.is_zero()) continue;
+    if (vanishes_on_unit_interval(d2 * d2 + d3 * d3)) continue;
+    KinematicMotion km;
+    km.d[0] = Rational(1, 2) * (centre[0] * d3 + centre[1] * d2);
+    km.d[1] = Rational(1, 2) * (centre[1] * d3 - centre[0] * d2);
+    km.d[2] = d2;
+    km.d[3] = d3;
+    return km;
+  }
+}
+Motion euler_motion(Rng& r, int k, const std::vector<RPoly>& centre) {
+  while (true) {
+    EulerMotion em;
+    for (auto& e : em.e) e = random_poly(r, k, -4, 4, 2);
+    RPoly E = em.e[0] * em.e[0] + em.e[1] * em.e[1] + em.e[2] * em.e[2] + em.e[3] * em.e[3];
+    if (vanishes_on_unit_interval(E)) continue;
+    for (int i = 0; i < 3; ++i) em.v[i] = centre[i];
+    em.v3 = constant(1);
+    return em;
+  }
+}
+Motion affine_motion(Rng& r, int deg, const std::vector<RPoly>& centre) {
+  while (true) {
+    Vec axis = random_unit(r, 3);
+    Vec m = random_unit(r, 3);
+    Mat R0 = (dot(axis, m) == -1) ? identity(3) : rotation_taking(r, axis, m);
+    MatrixMotion mm;
+    mm.m.assign(4, std::vector<RPoly>(4));
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        Vec c;
+        for (int q = 0; q <= deg; ++q) c.push_back(R0[i][j] + r.frac(-3, 3, 10));
+        mm.m[i][j] = from_bernstein(c);
+      }
+      mm.m[i][3] = centre[i];
+    }
+    mm.m[3][3] = constant(1);
+    PolyMatrix<Rational, 3> L{};
+    for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) L[i][j] = mm.m[i][j];
+    if (vanishes_on_unit_interval(det<Rational, 3>(L))) continue;
+    return mm;
+  }
+}
+
+// (k, p) with 2k + p = deg: rotation degree k, centre-path degree p.
+std::pair<int, int> split_degree(Rng& r, int deg) {
+  int k = int(r.uniform(0, deg / 2));
+  if (deg >= 2 && k == 0 && r.uniform(0, 1)) k = 1;  // prefer some rotation
+  return {k, deg - 2 * k};
+}
+
+Motion random_motion(Rng& r, const std::string& kind, int deg, const std::vector<RPoly>& centre, int k) {
+  if (kind == "kinematic") return kinematic_motion(r, k, centre);
+  if (kind == "euler") return euler_motion(r, k, centre);
+  return affine_motion(r, deg, centre);
+}
+
+// ---- JSON ------------------------------------------------------------------
+
+nlohmann::ordered_json poly_json(const RPoly& p) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  if (p.is_zero()) a.push_back("0");
+  for (const auto& c : p.c) a.push_back(Rational(c).get_str());
+  return a;
+}
+nlohmann::ordered_json motion_json(const Motion& m) {
+  nlohmann::ordered_json j;
+  if (auto* k = std::get_if<KinematicMotion>(&m)) {
+    j["type"] = "kinematic";
+    for (auto& d : k->d) j["d"].push_back(poly_json(d));
+  } else if (auto* e = std::get_if<EulerMotion>(&m)) {
+    j["type"] = "euler";
+    for (auto& x : e->e) j["e"].push_back(poly_json(x));
+    for (auto& x : e->v) j["translation"].push_back(poly_json(x));
+    j["translation_denominator"] = poly_json(e->v3);
+  } else if (auto* mm = std::get_if<MatrixMotion>(&m)) {
+    j["type"] = "matrix";
+    for (auto& row : mm->m) {
+      nlohmann::ordered_json jr = nlohmann::ordered_json::array();
+      for (auto& x : row) jr.push_back(poly_json(x));
+      j["m"].push_back(jr);
+    }
+  } else {
+    j["type"] = "static";
+  }
+  return j;
+}
+nlohmann::ordered_json shape_json(const Vec& alpha) {
+  nlohmann::ordered_json j;
+  for (auto& a : alpha) j["semi_axes_squared"].push_back(Rational(a).get_str());
+  return j;
+}
+
+Vec random_axes(Rng& r, int dim) {
+  Vec a;
+  for (int i = 0; i < dim; ++i) a.push_back(r.frac(2, 16, 4));  // squared semi-axes in [1/2, 4]
+  return a;
+}
+
+int motion_degree(int dim, const Motion& m) {
+  return dim == 2 ? hdegree(to_hmat<3>(m)) : hdegree(to_hmat<4>(m));
+}
+
+struct Built {
+  Vec alpha_a, alpha_b;
+  Motion ma, mb;
+  std::optional<Rational> t0;
+};
+
+// colliding / free: independent motions with controlled centre paths.
+Built build_random(Rng& r, const GeneratorSpec& s) {
+  Built b;
+  b.alpha_a = random_axes(r, s.dim);
+  b.alpha_b = random_axes(r, s.dim);
+  auto [ka, pa] = split_degree(r, s.degree);
+  auto [kb, pb] = split_degree(r, s.degree);
+  if (s.motion == "affine") pa = pb = s.degree;
+  Box box{Vec(s.dim, Rational(-5)), Vec(s.dim, Rational(5))};
+  Box box_a = box, box_b = box;
+  if (s.family == "free") {
+    // bounding radius <= 2 (squared semi-axes <= 4), times 1.9 for affine.
+    Rational R = s.motion == "affine" ? Rational(4) : Rational(2);
+    Rational gap = r.frac(1, 10, 10);
+    box_a.hi[0] = -(R + gap); box_a.lo[0] = box_a.hi[0] - 6;
+    box_b.lo[0] = R + gap;    box_b.hi[0] = box_b.lo[0] + 6;
+  }
+  auto ca = control_points(r, pa, box_a), cb = control_points(r, pb, box_b);
+  if (s.family == "colliding") {
+    Rational t1 = r.frac(1, 15, 16);
+    auto at = [&](const std::vector<Vec>& c, int i) {
+      Vec v;
+      for (auto& pt : c) v.push_back(pt[i]);
+      Bern<Rational> q;
+      q.b = v;
+      return q(t1);
+    };
+    for (int i = 0; i < s.dim; ++i) {
+      Rational shift = at(ca, i) - at(cb, i);
+      for (auto& pt : cb) pt[i] += shift;
+    }
+  }
+  b.ma = random_motion(r, s.motion, s.degree, path_polys(ca), ka);
+  b.mb = random_motion(r, s.motion, s.degree, path_polys(cb), kb);
+  return b;
+}
+
+// touch / near-miss: see the header.
+Built build_touch(Rng& r, const GeneratorSpec& s) {
+  Built b;
+  const int dim = s.dim;
+  Rational t0 = r.frac(4, 16, 20);
+  b.t0 = t0;
+  Rational delta = 0;
+  if (s.family == "near-miss") {
+    mpz_class ten = 1;
+    for (int i = 0; i < s.d_exponent; ++i) ten *= 10;
+    delta = Rational(mpz_class(1), ten);
+  }
+  Vec n = random_unit(r, dim), m;
+  do m = random_unit(r, dim); while (dot(m, n) == -1);
+  Tangency ta = shape_with_normal(r, n), tb = shape_with_normal(r, m);
+  b.alpha_a = ta.alpha;
+  b.alpha_b = tb.alpha;
+  const Vec& p = ta.point;
+  Mat RB = rotation_taking(r, m, n);
+  Vec cB = mat_vec(RB, tb.point);
+  for (int i = 0; i < dim; ++i) cB[i] = p[i] - cB[i];
+  HMat PB = hconst(RB, cB);
+  // Degrees: s(t) of degree ds in {2, 3}; a 3D twist of degree 2kt; G the rest.
+  int ds, kt, g;
+  do {
+    ds = int(r.uniform(2, 3));
+    kt = dim == 3 ? int(r.uniform(0, 1)) : 0;
+    g = s.degree - ds - 2 * kt;
+  } while (g < 0);
+  // s(t) = σ(t) n + a(t) τ.
+  RPoly tt(std::vector<Rational>{Rational(-t0), Rational(1)});  // t - t0
+  Vec hc;
+  for (int i = 0; i <= ds - 2; ++i) hc.push_back(r.frac(2, 12, 4));
+  RPoly sigma = constant(delta) + tt * tt * from_bernstein(hc);
+  RPoly a = tt * random_poly(r, ds - 1, -4, 4, 2);
+  Vec tau = dim == 2 ? Vec{-n[1], n[0]} : orthogonal_to(r, n);
+  HMat T = hconst(identity(dim), Vec(dim, Rational(0)));
+  for (int i = 0; i < dim; ++i) T[i][dim] = sigma * constant(n[i]) + a * constant(tau[i]);
+  HMat motion_b = hmul(T, PB);
+  if (kt > 0) {  // twist about the line through p along n (keeps the tangent plane)
+    while (true) {
+      RPoly c = random_poly(r, kt, -3, 3, 1), sn = random_poly(r, kt, -3, 3, 1);
+      Poly<Rational> q[4] = {c, sn * constant(n[0]), sn * constant(n[1]), sn * constant(n[2])};
+      RPoly E = c * c + sn * sn;
+      if (vanishes_on_unit_interval(E)) continue;
+      auto Rq = quaternion_matrix(q);
+      HMat tw(4, std::vector<RPoly>(4));
+      for (int i = 0; i < 3; ++i) {
+        RPoly acc = E * constant(p[i]);
+        for (int j = 0; j < 3; ++j) { tw[i][j] = Rq[i][j]; acc -= Rq[i][j] * constant(p[j]); }
+        tw[i][3] = acc;
+      }
+      tw[3][3] = E;
+      motion_b = hmul(T, hmul(tw, PB));
+      break;
+    }
+  }
+  // The common motion G of degree g; A = G, B = G * motion_b.
+  std::vector<RPoly> centre = path_polys(control_points(r, 0, Box{Vec(dim, Rational(-3)), Vec(dim, Rational(3))}));
+  int k = 0;
+  if (s.motion == "affine") {
+    centre = path_polys(control_points(r, g, Box{Vec(dim, Rational(-3)), Vec(dim, Rational(3))}));
+  } else {
+    auto [kg, pg] = split_degree(r, g);
+    k = kg;
+    centre = path_polys(control_points(r, pg, Box{Vec(dim, Rational(-3)), Vec(dim, Rational(3))}));
+  }
+  b.ma = random_motion(r, s.motion, g, centre, k);
+  HMat G = dim == 2 ? to_hmat<3>(b.ma) : to_hmat<4>(b.ma);
+  MatrixMotion mb;
+  mb.m = hmul(G, motion_b);
+  b.mb = mb;
+  return b;
+}
+
+}  // namespace
+
+std::vector<std::string> motions_for(int dim) {
+  if (dim == 2) return {"kinematic"};
+  return {"euler", "affine"};
+}
+
+bool family_applies(const std::string& family, const std::string& motion) {
+  return !(family == "near-miss" && motion == "affine");
+}
+
+std::string separation_label(int e) { return "1e-" + std::to_string(e); }
+
+std::uint64_t scene_seed(std::uint64_t run_seed, const GeneratorSpec& c, int index) {
+  std::uint64_t h = mix(run_seed, std::uint64_t(c.dim));
+  h = mix(h, std::uint64_t(c.degree));
+  h = mix(h, hash_string(c.family));
+  h = mix(h, hash_string(c.motion));
+  h = mix(h, std::uint64_t(c.d_exponent));
+  return mix(h, std::uint64_t(index)) >> 11;  // 53 bits: exact in JSON and in a double
+}
+
+GeneratedScene generate_scene(const GeneratorSpec& spec) {
+  if (spec.dim != 2 && spec.dim != 3) throw std::invalid_argument("dimension must be 2 or 3");
+  if (spec.degree < 1 || spec.degree > 8) throw std::invalid_argument("motion degree must be between 1 and 8");
+  auto ms = motions_for(spec.dim);
+  if (std::find(ms.begin(), ms.end(), spec.motion) == ms.end())
+    throw std::invalid_argument("motion '" + spec.motion + "' is not a " + std::to_string(spec.dim) +
+                                "D motion (2D: kinematic; 3D: euler, affine)");
+  bool touchy = spec.family == "touch" || spec.family == "near-miss";
+  if (!touchy && spec.family != "colliding" && spec.family != "free")
+    throw std::invalid_argument("unknown family '" + spec.family + "' (colliding, free, touch, near-miss)");
+  if (!family_applies(spec.family, spec.motion))
+    throw std::invalid_argument("near-miss scenes need a rigid motion (an affine motion does not keep distances)");
+  if (touchy && spec.degree < 2) throw std::invalid_argument("touch and near-miss scenes need motion degree >= 2");
+  if (spec.family == "near-miss" && (spec.d_exponent < 1 || spec.d_exponent > 300))
+    throw std::invalid_argument("near-miss separation must be 10^-e with 1 <= e <= 300");
+
+  Rng r{spec.seed};
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    Built b;
+    try {
+      b = touchy ? build_touch(r, spec) : build_random(r, spec);
+    } catch (const std::domain_error&) {
+      continue;
+    }
+    if (std::max(motion_degree(spec.dim, b.ma), motion_degree(spec.dim, b.mb)) != spec.degree) continue;
+    GeneratedScene g;
+    g.spec = spec;
+    g.t0 = b.t0;
+    std::ostringstream name;
+    name << spec.dim << "d-deg" << spec.degree << "-" << spec.family;
+    if (spec.family == "near-miss") name << "-" << separation_label(spec.d_exponent);
+    name << "-" << spec.motion << "-" << spec.seed;
+    g.name = name.str();
+    std::ostringstream note;
+    note << "generated by eccd generate: family=" << spec.family << " dim=" << spec.dim << " degree=" << spec.degree
+         << " motion=" << spec.motion;
+    if (spec.family == "near-miss") note << " d=" << separation_label(spec.d_exponent);
+    if (b.t0) note << " t0=" << b.t0->get_str();
+    note << " seed=" << spec.seed << ".";
+    if (spec.family == "touch") note << " The solids touch at t0 only (constructed).";
+    if (spec.family == "near-miss") note << " Minimum separation d at t0, never colliding (constructed).";
+    if (spec.family == "colliding") note << " The centres coincide at one instant (constructed).";
+    if (spec.family == "free") note << " The plane x = 0 separates the solids throughout (constructed).";
+    auto& d = g.doc;
+    d["format"] = "ellipse-ccd-scene/1";
+    d["name"] = g.name;
+    d["dim"] = spec.dim;
+    d["a"]["shape"] = shape_json(b.alpha_a);
+    d["a"]["motion"] = motion_json(b.ma);
+    d["b"]["shape"] = shape_json(b.alpha_b);
+    d["b"]["motion"] = motion_json(b.mb);
+    d["note"] = note.str();
+    return g;
+  }
+  throw std::runtime_error("generator: no scene of degree " + std::to_string(spec.degree) + " after 1000 attempts");
+}
+
+std::vector<GeneratorSpec> plan_scenes(const GeneratePlan& plan) {
+  std::vector<GeneratorSpec> out;
+  for (int dim : plan.dims)
+    for (int deg : plan.degrees)
+      for (const auto& fam : plan.families)
+        for (const auto& mot : motions_for(dim)) {
+          if (!plan.motions.empty() && std::find(plan.motions.begin(), plan.motions.end(), mot) == plan.motions.end()) continue;
+          if (!family_applies(fam, mot)) continue;
+          std::vector<int> exps = fam == "near-miss" ? plan.d_exponents : std::vector<int>{0};
+          for (int e : exps)
+            for (int i = 0; i < plan.count; ++i) {
+              GeneratorSpec s;
+              s.dim = dim;
+              s.degree = deg;
+              s.family = fam;
+              s.motion = mot;
+              s.d_exponent = e;
+              s.seed = scene_seed(plan.seed, s, i);
+              out.push_back(s);
+            }
+        }
+  return out;
+}
+
+std::optional<GeneratorSpec> spec_from_note(const std::string& note) {
+  if (note.rfind("generated by eccd generate:", 0) != 0) return std::nullopt;
+  GeneratorSpec s;
+  std::istringstream in(note.substr(27));
+  std::string tok;
+  bool any = false;
+  while (in >> tok) {
+    if (!tok.empty() && tok.back() == '.') tok.pop_back();
+    auto eq = tok.find('=');
+    if (eq == std::string::npos) continue;
+    std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
+    try {
+      if (k == "family") s.family = v, any = true;
+      else if (k == "dim") s.dim = std::stoi(v);
+      else if (k == "degree") s.degree = std::stoi(v);
+      else if (k == "motion") s.motion = v;
+      else if (k == "d" && v.rfind("1e-", 0) == 0) s.d_exponent = std::stoi(v.substr(3));
+      else if (k == "seed") s.seed = std::stoull(v);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+  if (!any) return std::nullopt;
+  return s;
+}
+
+}  // namespace eccd
