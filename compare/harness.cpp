@@ -120,7 +120,6 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
     std::string n = std::to_string(o.grid);
     add("double", "bernstein", "bezier", "bezier");
     add("double", "power", "bezier", "bezier-power");
-    add("double", "bernstein", "projection", "projection");
     add("double", "bernstein", "sampling:" + n, "sampling:" + n);
     add("double", "bernstein", "marching:" + n, "marching:" + n);
     for (int b : o.mpfr_bits) {

@@ -57,6 +57,21 @@ RPoly random_poly(Rng& r, int deg, long lo, long hi, long den) {
 bool vanishes_on_unit_interval(const RPoly& p) {
   return p.is_zero() || count_roots_closed(p, Rational(0), Rational(1)) != 0;
 }
+// The weight of a motion (d2² + d3², E, det L) must not come close to zero on
+// [0, 1]: max/min <= 16 at 65 instants. A weight that nearly vanishes gives a
+// motion that spins through most of its rotation in a moment, and scales f by
+// a factor of huge range; such motions are not what the families are about.
+// (A generation choice only: the exact Sturm check above decides validity.)
+bool badly_scaled(const RPoly& w) {
+  if (vanishes_on_unit_interval(w)) return true;
+  double lo = 1e300, hi = 0;
+  for (int k = 0; k <= 64; ++k) {
+    double v = std::abs(w(Rational(k, 64)).get_d());
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  return !(hi <= 16 * lo);
+}
 
 using Vec = std::vector<Rational>;
 Rational dot(const Vec& a, const Vec& b) {
@@ -228,7 +243,7 @@ Motion kinematic_motion(Rng& r, int k, const std::vector<RPoly>& centre) {
   while (true) {
     RPoly d2 = random_poly(r, k, -4, 4, 2), d3 = random_poly(r, k, -4, 4, 2);
     if (k == 0 && d2.is_zero() && d3.is_zero()) continue;
-    if (vanishes_on_unit_interval(d2 * d2 + d3 * d3)) continue;
+    if (badly_scaled(d2 * d2 + d3 * d3)) continue;
     KinematicMotion km;
     km.d[0] = Rational(1, 2) * (centre[0] * d3 + centre[1] * d2);
     km.d[1] = Rational(1, 2) * (centre[1] * d3 - centre[0] * d2);
@@ -242,7 +257,7 @@ Motion euler_motion(Rng& r, int k, const std::vector<RPoly>& centre) {
     EulerMotion em;
     for (auto& e : em.e) e = random_poly(r, k, -4, 4, 2);
     RPoly E = em.e[0] * em.e[0] + em.e[1] * em.e[1] + em.e[2] * em.e[2] + em.e[3] * em.e[3];
-    if (vanishes_on_unit_interval(E)) continue;
+    if (badly_scaled(E)) continue;
     for (int i = 0; i < 3; ++i) em.v[i] = centre[i];
     em.v3 = constant(1);
     return em;
@@ -266,7 +281,7 @@ Motion affine_motion(Rng& r, int deg, const std::vector<RPoly>& centre) {
     mm.m[3][3] = constant(1);
     PolyMatrix<Rational, 3> L{};
     for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) L[i][j] = mm.m[i][j];
-    if (vanishes_on_unit_interval(det<Rational, 3>(L))) continue;
+    if (badly_scaled(det<Rational, 3>(L))) continue;
     return mm;
   }
 }
@@ -417,7 +432,7 @@ Built build_touch(Rng& r, const GeneratorSpec& s) {
       RPoly c = random_poly(r, kt, -3, 3, 1), sn = random_poly(r, kt, -3, 3, 1);
       Poly<Rational> q[4] = {c, sn * constant(n[0]), sn * constant(n[1]), sn * constant(n[2])};
       RPoly E = c * c + sn * sn;
-      if (vanishes_on_unit_interval(E)) continue;
+      if (badly_scaled(E)) continue;
       auto Rq = quaternion_matrix(q);
       HMat tw(4, std::vector<RPoly>(4));
       for (int i = 0; i < 3; ++i) {

@@ -32,13 +32,21 @@ class Mpfr {
   Mpfr(const mpq_class& q, int bits) : prec_(bits) { mpfr_init2(v_, bits); mpfr_set_q(v_, q.get_mpq_t(), MPFR_RNDN); }
   Mpfr(double d, int bits) : prec_(bits) { mpfr_init2(v_, bits); mpfr_set_d(v_, d, MPFR_RNDN); }
   Mpfr(const Mpfr& o) : prec_(o.prec_) { mpfr_init2(v_, mpfr_get_prec(o.v_)); mpfr_set(v_, o.v_, MPFR_RNDN); }
-  Mpfr(Mpfr&& o) noexcept : prec_(o.prec_) { mpfr_init2(v_, MPFR_PREC_MIN); mpfr_swap(v_, o.v_); }
+  // A move steals the limbs (no allocation: half the cost of MPFR arithmetic
+  // here was malloc/free); the moved-from value owns nothing and may only be
+  // assigned to or destroyed.
+  Mpfr(Mpfr&& o) noexcept : prec_(o.prec_) { v_[0] = o.v_[0]; o.v_[0]._mpfr_d = nullptr; }
   Mpfr& operator=(const Mpfr& o) {
-    if (this != &o) { prec_ = o.prec_; mpfr_set_prec(v_, mpfr_get_prec(o.v_)); mpfr_set(v_, o.v_, MPFR_RNDN); }
+    if (this != &o) {
+      prec_ = o.prec_;
+      if (!v_[0]._mpfr_d) mpfr_init2(v_, mpfr_get_prec(o.v_));
+      else mpfr_set_prec(v_, mpfr_get_prec(o.v_));
+      mpfr_set(v_, o.v_, MPFR_RNDN);
+    }
     return *this;
   }
-  Mpfr& operator=(Mpfr&& o) noexcept { prec_ = o.prec_; mpfr_swap(v_, o.v_); return *this; }
-  ~Mpfr() { mpfr_clear(v_); }
+  Mpfr& operator=(Mpfr&& o) noexcept { prec_ = o.prec_; std::swap(v_[0], o.v_[0]); return *this; }
+  ~Mpfr() { if (v_[0]._mpfr_d) mpfr_clear(v_); }
 
   int precision() const { return int(prec_); }
   mpfr_srcptr get() const { return v_; }

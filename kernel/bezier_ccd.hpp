@@ -394,7 +394,10 @@ class BezierZeroSet {
         bool ok = at_limit || loop_free(a, b);
         if (ok) {
           Shot s = shoot(from, to);
-          if (s.kind != ShotKind::inconclusive || at_limit) {
+          // A miss here contradicts the overlapping end (by continuity there
+          // is a contact in between): rounding spoiled the shot, so split
+          // instead of guessing, unless at the resolution limit.
+          if (s.kind == ShotKind::converged || at_limit) {
             T c = s.t;
             Status cs = s.kind == ShotKind::inconclusive ? Status::uncertain : Status::touching;
             if (s.kind == ShotKind::miss) c = to;  // no hit before the overlapping end: the contact is there

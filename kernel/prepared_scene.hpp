@@ -19,6 +19,7 @@
 #include "kernel/motion.hpp"
 #include "kernel/scene.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace eccd {
@@ -69,6 +70,67 @@ Matrix<Rational, N> shape_matrix(const SceneObject& o) {
   return q;
 }
 
+// Balancing the pencil λA - B. make_primitive scales Q and N of each object
+// by its own integer factor, so A(t) and B(t) can differ in size by many
+// orders of magnitude; then the negative roots of f(λ) lie near 0 or near -∞,
+// and in 001's variable u = 1/(1 - λ) the region where F(u, t) > 0 is squeezed
+// against u = 0 or u = 1, where sampled and Bézier tests in u miss it. B's
+// shape matrix is therefore multiplied by 2^-k, k the nearest integer to the
+// mean of log2 |det B(t) / det A(t)| / N over t = 0, 1/2, 1, so that the
+// product of the roots of f is near 1 in size. A positive factor on B scales
+// every root λ by the same positive factor: no status, no root of Δ and no
+// answer changes, and a power of two is exact in every arithmetic.
+template <int N>
+Rational matrix_det(Matrix<Rational, N> m) {  // Gaussian elimination over the rationals
+  Rational d = 1;
+  for (int c = 0; c < N; ++c) {
+    int r = c;
+    while (r < N && m[r][c] == 0) ++r;
+    if (r == N) return 0;
+    if (r != c) { std::swap(m[r], m[c]); d = -d; }
+    d *= m[c][c];
+    for (int i = c + 1; i < N; ++i) {
+      Rational f = m[i][c] / m[c][c];
+      for (int j = c; j < N; ++j) m[i][j] -= f * m[c][j];
+    }
+  }
+  return d;
+}
+template <int N>
+Matrix<Rational, N> quadric_at(const Matrix<Rational, N>& q, const PolyMatrix<Rational, N>& n, const Rational& t) {
+  Matrix<Rational, N> nt{}, r{};
+  for (int i = 0; i < N; ++i) for (int j = 0; j < N; ++j) nt[i][j] = n[i][j](t);
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      Rational s = 0;
+      for (int k = 0; k < N; ++k)
+        for (int l = 0; l < N; ++l) s += nt[k][i] * q[k][l] * nt[l][j];
+      r[i][j] = s;
+    }
+  return r;
+}
+inline long log2_size(const Rational& x) {  // floor-ish log2 |x|, within 1
+  return long(mpz_sizeinbase(x.get_num_mpz_t(), 2)) - long(mpz_sizeinbase(x.get_den_mpz_t(), 2));
+}
+template <int N>
+void balance_pencil(PreparedPair<N>& p) {
+  long sum = 0;
+  int used = 0;
+  for (const Rational& t : {Rational(0), Rational(1, 2), Rational(1)}) {
+    Rational da = matrix_det<N>(quadric_at<N>(p.qa, p.na, t)), db = matrix_det<N>(quadric_at<N>(p.qb, p.nb, t));
+    if (da == 0 || db == 0) continue;
+    sum += log2_size(db) - log2_size(da);
+    ++used;
+  }
+  if (!used) return;
+  long k = std::lround(double(sum) / (used * N));
+  if (k == 0) return;
+  mpz_class two = 1;
+  two <<= std::abs(k);
+  Rational f = k > 0 ? Rational(1) / Rational(two) : Rational(two);
+  for (auto& row : p.qb) for (auto& x : row) x *= f;
+}
+
 // Throws std::invalid_argument for a motion that has no polynomial form (cycloidal).
 template <int N>
 PreparedPair<N> prepare_pair(const Scene& s) {
@@ -87,6 +149,7 @@ PreparedPair<N> prepare_pair(const Scene& s) {
   p.nb = motion_inverse<Rational, N>(s.b.motion, id);
   remove_polynomial_content<N>(p.na);
   remove_polynomial_content<N>(p.nb);
+  balance_pencil<N>(p);
   return p;
 }
 
