@@ -24,6 +24,7 @@
 //    (Wang et al., ACM TOG 2021: false positives, false negatives, time).
 // Requirements: T is double, eccd::Mpfr or mpq_class (exact_value below).
 #include "exact/rational_traits.hpp"
+#include "floating/double_traits.hpp"
 #include "floating/mpfr_real.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/bivariate_bernstein.hpp"

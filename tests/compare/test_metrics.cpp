@@ -1,0 +1,146 @@
+// The report's metrics (compare/metrics.hpp) on hand-made inputs whose error
+// is known, and the harness rows (compare/harness.hpp) on one scene.
+#include "compare/harness.hpp"
+#include "compare/metrics.hpp"
+#include "compare/scene_generator.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace eccd;
+
+namespace {
+Poly<mpq_class> qpoly(std::vector<mpq_class> c) { return Poly<mpq_class>(std::move(c)); }
+nlohmann::json inst(double t) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.17g", t);
+  return {{"approx", b}, {"lo", nullptr}, {"hi", nullptr}};
+}
+nlohmann::json answer(bool collides, std::vector<std::pair<double, double>> ivs, std::vector<double> contacts) {
+  nlohmann::json j;
+  j["collides"] = collides;
+  j["intervals"] = nlohmann::json::array();
+  for (auto [a, b] : ivs) j["intervals"].push_back({inst(a), inst(b)});
+  j["first_contact"] = ivs.empty() ? nlohmann::json(nullptr) : inst(ivs[0].first);
+  j["contacts"] = nlohmann::json::array();
+  for (double c : contacts) j["contacts"].push_back(inst(c));
+  j["undecided"] = nlohmann::json::array();
+  return j;
+}
+}  // namespace
+
+TEST_CASE("normwise relative error of one perturbed coefficient is the perturbation over the largest coefficient", "[metrics]") {
+  std::vector<mpq_class> exact{1, -2, 8, 3};
+  std::vector<mpq_class> approx = exact;
+  approx[1] += mpq_class(1, 1024);  // one coefficient off by 2^-10
+  CHECK(normwise_relative_error(approx, exact) == std::ldexp(1.0, -13));  // 2^-10 / 8
+  CHECK(normwise_relative_error(exact, exact) == 0.0);
+  // An all-zero exact list: the absolute error.
+  CHECK(normwise_relative_error({mpq_class(1, 4)}, {mpq_class(0)}) == 0.25);
+}
+
+TEST_CASE("coefficient error of g in power form: one double coefficient perturbed by a known amount", "[metrics]") {
+  std::vector<Poly<mpq_class>> g{qpoly({3, 0, -5}), qpoly({1, 2}), qpoly({0, 0, 0, 10})};
+  std::vector<Poly<double>> gd{Poly<double>({3.0, 0.0, -5.0}), Poly<double>({1.0, 2.0}), Poly<double>({0.0, 0.0, 0.0, 10.0})};
+  CHECK(coefficient_error(gd, g) == 0.0);
+  gd[1].c[0] = 1.0 + std::ldexp(1.0, -20);
+  CHECK(coefficient_error(gd, g) == Approx(std::ldexp(1.0, -20) / 10.0).epsilon(1e-15));
+  // A leading coefficient that exact arithmetic cancels but rounding left behind counts too.
+  gd[1].c[0] = 1.0;
+  gd[0].c.push_back(1e-12);
+  CHECK(coefficient_error(gd, g) == Approx(1e-13).epsilon(1e-12));
+}
+
+TEST_CASE("coefficient error in Bernstein form compares after exact degree elevation", "[metrics]") {
+  Bern<mpq_class> e(std::vector<mpq_class>{mpq_class(1), mpq_class(-3), mpq_class(2)});
+  Bern<mpq_class> up = elevate(e, 2);  // the same polynomial in degree 4
+  Bern<double> d;
+  for (const auto& x : up.b) d.b.push_back(x.get_d());
+  REQUIRE(d.b.size() == 5);
+  CHECK(coefficient_error(d, e) == 0.0);
+  double big = 0;
+  for (const auto& x : up.b) big = std::max(big, std::abs(x.get_d()));
+  d.b[2] += 0.25;  // exactly representable: error 0.25 / max |coefficient of degree 4|
+  CHECK(coefficient_error(d, e) == Approx(0.25 / big).epsilon(1e-15));
+  // MPFR values enter exactly.
+  Bern<Mpfr> m;
+  for (const auto& x : up.b) m.b.push_back(Mpfr(x, 200));
+  CHECK(coefficient_error(m, e) == 0.0);
+}
+
+TEST_CASE("answer comparison: a missed contact, false and missed collisions, undecided, errors", "[metrics]") {
+  // Exact: an isolated touch at 0.2, then an interval [0.5, 0.6].
+  nlohmann::json exact = answer(true, {{0.2, 0.2}, {0.5, 0.6}}, {0.2, 0.5, 0.6});
+  SECTION("the touch at 0.2 is missed") {
+    nlohmann::json got = answer(true, {{0.5, 0.6 + 1e-9}}, {0.5, 0.6 + 1e-9});
+    AnswerMetrics m = compare_answers(got, exact);
+    CHECK(m.outcome == "correct");  // `collides` itself is right
+    CHECK(m.intervals == 1);
+    CHECK(m.exact_intervals == 2);
+    CHECK(m.missed_contacts == 1);
+    CHECK(m.false_contacts == 0);
+    REQUIRE(m.first_contact_err);
+    CHECK(*m.first_contact_err == Approx(0.3));
+    CHECK_FALSE(m.endpoint_err);  // counts differ: no endpoint error
+    CHECK_FALSE(m.structure_ok);
+  }
+  SECTION("same structure, ends off by 1e-9") {
+    nlohmann::json got = answer(true, {{0.2, 0.2}, {0.5 - 1e-9, 0.6}}, {0.2, 0.5 - 1e-9, 0.6});
+    AnswerMetrics m = compare_answers(got, exact);
+    REQUIRE(m.endpoint_err);
+    CHECK(*m.endpoint_err == Approx(1e-9).epsilon(1e-6));
+    CHECK(m.structure_ok);
+    // ... but not within a tolerance below the error.
+    CHECK_FALSE(compare_answers(got, exact, 1e-10).structure_ok);
+    CHECK(compare_answers(got, exact, 1e-10).missed_contacts == 1);
+    CHECK(compare_answers(got, exact, 1e-10).false_contacts == 1);
+  }
+  SECTION("false negative, false positive, undecided, error") {
+    CHECK(compare_answers(answer(false, {}, {}), exact).outcome == "false_negative");
+    nlohmann::json free_exact = answer(false, {}, {});
+    AnswerMetrics fp = compare_answers(answer(true, {{0.4, 0.4}}, {0.4}), free_exact);
+    CHECK(fp.outcome == "false_positive");
+    CHECK(fp.false_contacts == 1);
+    nlohmann::json unsure = answer(false, {}, {});
+    unsure["undecided"].push_back(inst(0.3));
+    CHECK(compare_answers(unsure, exact).outcome == "undecided");
+    CHECK(compare_answers(nlohmann::json::object(), exact).outcome == "error");
+  }
+}
+
+TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first, errors ordered by precision", "[metrics][harness]") {
+  GeneratorSpec sp;
+  sp.dim = 2;
+  sp.degree = 3;
+  sp.family = "colliding";
+  sp.seed = 7;
+  GeneratedScene g = generate_scene(sp);
+  Scene s = parse_scene(g.doc.dump(), g.name);
+  HarnessOptions o;
+  o.mpfr_bits = {64, 256};
+  auto rows = run_scene(s, scene_info(s, "generated"), o);
+  REQUIRE(rows.size() == harness_pipelines(2, o).size());
+  CHECK(rows[0].pipeline == "exact");
+  CHECK(rows[0].m.outcome == "correct");
+  CHECK(rows[0].m.structure_ok);
+  CHECK(rows[0].scene.family == "colliding");
+  CHECK(rows[0].scene.degree == 3);
+  std::map<std::string, const ResultRow*> by;
+  for (const auto& r : rows) by[r.pipeline] = &r;
+  // Rounding errors shrink with the precision (the same code, more bits).
+  REQUIRE(by.count("double/bernstein"));
+  REQUIRE(by.count("mpfr:256/bernstein"));
+  CHECK(*by["double/bernstein"]->coef_err < 1e-12);
+  CHECK(*by["mpfr:256/bernstein"]->coef_err < 1e-70);
+  CHECK(*by["mpfr:256/power"]->delta_err < *by["mpfr:64/power"]->delta_err);
+  CHECK(*by["mpfr:64/power"]->delta_err < *by["double/power"]->delta_err);
+  // One CSV line per row, 26 fields each.
+  for (const auto& r : rows) {
+    const std::string line = results_csv_line(r);
+    CHECK(std::count(line.begin(), line.end(), ',') == 25);
+  }
+  const std::string head = results_csv_header();
+  CHECK(std::count(head.begin(), head.end(), ',') == 25);
+}
