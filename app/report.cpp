@@ -168,8 +168,15 @@ std::string read_command_output(const std::string& cmd) {
 std::string command_line() {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
   std::string all((std::istreambuf_iterator<char>(in)), {}), out;
-  for (char c : all) out += c ? c : ' ';
-  while (!out.empty() && out.back() == ' ') out.pop_back();
+  std::size_t start = 0;
+  while (start < all.size()) {  // arguments are NUL-terminated; quote the empty or spaced ones
+    std::size_t end = all.find('\0', start);
+    if (end == std::string::npos) end = all.size();
+    std::string arg = all.substr(start, end - start);
+    if (!out.empty()) out += ' ';
+    out += (arg.empty() || arg.find_first_of(" '\"") != std::string::npos) ? shell_quote(arg) : arg;
+    start = end + 1;
+  }
   return out;
 }
 nlohmann::json machine_info() {
@@ -534,7 +541,7 @@ int run_merge(const ReportArgs& a) {
 
 Command add_report_command(CLI::App& app) {
   auto a = std::make_shared<ReportArgs>();
-  a->plan.count = 2;
+  a->plan.count = 3;
   Command c;
   c.sub = app.add_subcommand(
       "report",
