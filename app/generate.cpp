@@ -21,6 +21,18 @@ struct GenerateArgs {
 };
 }  // namespace
 
+void add_plan_options(CLI::App* s, GeneratePlan& plan) {
+  s->add_option("--dims", plan.dims, "Dimensions (2: ellipses, kinematic motions; 3: ellipsoids, euler and affine motions)")
+      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({2, 3}));
+  s->add_option("--degrees", plan.degrees, "Motion degrees (1..8)")->delimiter(',')->capture_default_str()->check(CLI::Range(1, 8));
+  s->add_option("--families", plan.families, "Families: colliding, free, touch, near-miss")
+      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"colliding", "free", "touch", "near-miss"}));
+  s->add_option("--motions", plan.motions, "Restrict motions: kinematic (2D), euler, affine (3D); default all")
+      ->delimiter(',')->check(CLI::IsMember({"kinematic", "euler", "affine"}));
+  s->add_option("--separations", plan.d_exponents, "Near-miss separations as exponents e of d = 10^-e")
+      ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 300));
+}
+
 Command add_generate_command(CLI::App& app) {
   auto args = std::make_shared<GenerateArgs>();
   Command c;
@@ -30,15 +42,7 @@ Command add_generate_command(CLI::App& app) {
                              "near-miss (minimum separation d = 10^-e, constructed).");
   auto* s = c.sub;
   s->add_option("--out", args->out, "Folder to write the scenes into (created if missing)")->required();
-  s->add_option("--dims", args->plan.dims, "Dimensions (2: ellipses, kinematic motions; 3: ellipsoids, euler and affine motions)")
-      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({2, 3}));
-  s->add_option("--degrees", args->plan.degrees, "Motion degrees (1..8)")->delimiter(',')->capture_default_str()->check(CLI::Range(1, 8));
-  s->add_option("--families", args->plan.families, "Families: colliding, free, touch, near-miss")
-      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"colliding", "free", "touch", "near-miss"}));
-  s->add_option("--motions", args->plan.motions, "Restrict motions: kinematic (2D), euler, affine (3D); default all")
-      ->delimiter(',')->check(CLI::IsMember({"kinematic", "euler", "affine"}));
-  s->add_option("--separations", args->plan.d_exponents, "Near-miss separations as exponents e of d = 10^-e")
-      ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 300));
+  add_plan_options(s, args->plan);
   s->add_option("--count", args->plan.count, "Scenes per combination (per separation for near-miss)")->capture_default_str()->check(CLI::Range(1, 100000));
   s->add_option("--seed", args->plan.seed, "Run seed (each scene's seed derives from it and the combination)")->capture_default_str();
   s->add_flag("--force", args->force, "Overwrite existing scene files");

@@ -546,8 +546,9 @@ Command add_report_command(CLI::App& app) {
   c.sub = app.add_subcommand(
       "report",
       "Robustness report: generate seeded scenes (2D and 3D, motion degrees 2-6, families colliding / free / touch / "
-      "near-miss), add the shipped cases, run every pipeline (double power / Bernstein / scaled Bernstein, MPFR at many "
-      "precisions, the 3D Bezier, projection, sampling and marching methods) against the exact pipeline, and write "
+      "near-miss), add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
+      "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and in "
+      "power form (double), the sampling and marching baselines) against the exact pipeline, and write "
       "reports/NAME/: report.md, results.csv, failure_map.csv, meta.json and PNG figures.");
   auto* s = c.sub;
   s->add_option("--name", a->name, "Report name: the output goes to reports/NAME")->capture_default_str();
@@ -555,14 +556,7 @@ Command add_report_command(CLI::App& app) {
   s->add_option("--seed", a->plan.seed, "Run seed (same seed, same scenes, same numbers apart from timings)")->capture_default_str();
   s->add_option("--count", a->plan.count, "Generated scenes per dimension x degree x family x motion (x separation)")
       ->capture_default_str()->check(CLI::Range(0, 100000));
-  s->add_option("--dims", a->plan.dims, "Dimensions")->delimiter(',')->capture_default_str()->check(CLI::IsMember({2, 3}));
-  s->add_option("--degrees", a->plan.degrees, "Motion degrees")->delimiter(',')->capture_default_str()->check(CLI::Range(1, 8));
-  s->add_option("--families", a->plan.families, "Families: colliding, free, touch, near-miss")
-      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"colliding", "free", "touch", "near-miss"}));
-  s->add_option("--motions", a->plan.motions, "Restrict motions: kinematic (2D), euler, affine (3D); default all")
-      ->delimiter(',')->check(CLI::IsMember({"kinematic", "euler", "affine"}));
-  s->add_option("--separations", a->plan.d_exponents, "Near-miss separations d = 10^-e, as the exponents e")
-      ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 300));
+  add_plan_options(s, a->plan);
   s->add_option("--mpfr", a->harness.mpfr_bits, "MPFR precisions in bits")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--grid", a->harness.grid, "N of the 3D sampling:N and marching:N baselines")->capture_default_str()->check(CLI::Range(1, 100000));
   s->add_option("--cases", a->cases, "Also run the scene files under this folder (their stored answers are not used: exact is recomputed); '' for none")

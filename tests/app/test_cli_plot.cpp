@@ -5,6 +5,8 @@
 // matplotlib (scripts/bootstrap.sh installs python3-matplotlib).
 //
 // ECCD_EXE (the eccd binary) and ECCD_SOURCE_DIR are defined by CMake.
+#include "tests/support/cli.hpp"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -28,17 +30,7 @@ std::string quote(const std::string& s) {
   return r + "'";
 }
 
-// Runs cmd through the shell; stdout into `out`, stderr dropped.
-int run(const std::string& cmd, std::string& out) {
-  out.clear();
-  FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = pclose(p);
-  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
+using eccd::test::run;
 
 std::string exe() { return quote(ECCD_EXE); }
 std::string source(const std::string& rel) { return std::string(ECCD_SOURCE_DIR) + "/" + rel; }

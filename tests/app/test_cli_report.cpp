@@ -1,5 +1,7 @@
 // `eccd generate` and `eccd report` from the command line: seeded output,
 // shards that join into the same table as one run, and clear refusals.
+#include "tests/support/cli.hpp"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -15,16 +17,7 @@
 namespace fs = std::filesystem;
 
 namespace {
-int run(const std::string& cmd, std::string& out) {
-  out.clear();
-  FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = pclose(p);
-  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
+using eccd::test::run;
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);
   std::stringstream s;

@@ -1,5 +1,7 @@
 // `eccd solve` from the command line: exactly one JSON object with the spec's
 // answer and the extras, for every arithmetic.
+#include "tests/support/cli.hpp"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -9,16 +11,7 @@
 #include <sys/wait.h>
 
 namespace {
-int run(const std::string& cmd, std::string& out) {
-  out.clear();
-  FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = pclose(p);
-  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
+using eccd::test::run;
 }  // namespace
 
 TEST_CASE("eccd solve --json on 003 Example 2 prints one JSON object with the spec's answer", "[app][cli]") {
