@@ -88,22 +88,10 @@ std::array<std::array<Rational, N>, N> inverse(std::array<std::array<Rational, N
   return inv;
 }
 
+// Exact determinant (Gaussian elimination over the rationals): the kernel's,
+// which no pipeline decision uses (it only balances the pencil).
 template <int N>
-Rational det_rational(std::array<std::array<Rational, N>, N> m) {
-  Rational d = 1;
-  for (int c = 0; c < N; ++c) {
-    int p = c;
-    while (p < N && m[p][c] == 0) ++p;
-    if (p == N) return 0;
-    if (p != c) { std::swap(m[p], m[c]); d = -d; }
-    d *= m[c][c];
-    for (int r = c + 1; r < N; ++r) {
-      Rational f = m[r][c] / m[c][c];
-      for (int j = c; j < N; ++j) m[r][j] -= f * m[c][j];
-    }
-  }
-  return d;
-}
+Rational det_rational(const std::array<std::array<Rational, N>, N>& m) { return matrix_det<N>(m); }
 
 // Distinct negative roots of det(λA(t) - B(t)) with A(t) = M(t)^-T Q M(t)^-1
 // from the motion matrix itself, f interpolated at λ = 0..4, exact Sturm count.
