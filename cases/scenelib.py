@@ -85,3 +85,20 @@ def negative_roots(p):
         v = [x for x in v if x != 0]
         return sum((a > 0) != (b > 0) for a, b in zip(v, v[1:]))
     return changes([q[-1] * (-1) ** (len(q) - 1) for q in seq]) - changes([q[0] for q in seq])
+
+
+def charpoly(A, B):
+    """Power coefficients of det(lambda A - B) for 4x4 A, B, by exact interpolation at lambda = 0..4."""
+    ys = [det([[x * A[i][j] - B[i][j] for j in range(4)] for i in range(4)]) for x in range(5)]
+    coef = [F(0)] * 5
+    for i in range(5):
+        basis, den = [F(1)], F(1)
+        for j in range(5):
+            if j != i:
+                basis = [F(0)] + basis
+                for k in range(len(basis) - 1):
+                    basis[k] -= j * basis[k + 1]
+                den *= i - j
+        for k in range(5):
+            coef[k] += ys[i] * basis[k] / den
+    return coef

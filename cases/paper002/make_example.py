@@ -53,7 +53,7 @@ from fractions import Fraction as F
 import os as _os
 import sys as _sys
 _sys.path.insert(0, _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), ".."))
-from scenelib import det, negative_roots, pev, prem, write as write_in  # noqa: E402
+from scenelib import charpoly, det, negative_roots, pev, prem, write as write_in  # noqa: E402
 
 
 def write(s):
@@ -147,22 +147,6 @@ def world(Q, M):
     return [[sum(N[k][i] * QN[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
 
 
-def charpoly(A, B):
-    """Power coefficients of det(lambda A - B), by exact interpolation at lambda = 0..4."""
-    xs = range(5)
-    ys = [det([[x * A[i][j] - B[i][j] for j in range(4)] for i in range(4)]) for x in xs]
-    coef = [F(0)] * 5
-    for i, xi in enumerate(xs):
-        basis, den = [F(1)], F(1)
-        for j, xj in enumerate(xs):
-            if j != i:
-                basis = [F(0)] + basis
-                for k in range(len(basis) - 1):
-                    basis[k] -= xj * basis[k + 1]
-                den *= xi - xj
-        for k in range(5):
-            coef[k] += ys[i] * basis[k] / den
-    return coef
 
 
 def status(QA, MA, QB, MB, t):

@@ -81,7 +81,7 @@ from fractions import Fraction as F
 import os as _os
 import sys as _sys
 _sys.path.insert(0, _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), ".."))
-from scenelib import det, negative_roots, num, pev, prem, write as write_in  # noqa: E402
+from scenelib import charpoly, det, negative_roots, num, pev, prem, write as write_in  # noqa: E402
 
 
 def write(s):
@@ -304,21 +304,6 @@ def world(o, t):
     return [[sum(N[k][i] * QN[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
 
 
-def charpoly(A, B):
-    """Power coefficients of det(lambda A - B), by exact interpolation at lambda = 0..4."""
-    ys = [det([[x * A[i][j] - B[i][j] for j in range(4)] for i in range(4)]) for x in range(5)]
-    coef = [F(0)] * 5
-    for i in range(5):
-        basis, den = [F(1)], F(1)
-        for j in range(5):
-            if j != i:
-                basis = [F(0)] + basis
-                for k in range(len(basis) - 1):
-                    basis[k] -= j * basis[k + 1]
-                den *= i - j
-        for k in range(5):
-            coef[k] += ys[i] * basis[k] / den
-    return coef
 
 
 def status(s, t):
