@@ -33,6 +33,7 @@
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
 #include "kernel/quartic_status.hpp"
+#include "kernel/quartic_touch_rule.hpp"
 #include "kernel/subresultants.hpp"
 
 #include <chrono>
@@ -57,16 +58,13 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
   auto status_at = [&](const T& t) { return quartic_status_at(g, t); };
   res.status_at_0 = status_at(zero);
 
-  // Subresultant coefficients s_{j,i}(t), built on demand in the Policy's ring.
+  // Subresultant coefficients s_{j,i}(t) (kernel/quartic_touch_rule.hpp), built on demand in the Policy's ring.
   std::map<std::pair<int, int>, Rep> sub;
   auto s = [&](int j, int i) -> const Rep& {
     auto key = std::make_pair(j, i);
     auto it = sub.find(key);
     if (it == sub.end())
-      it = sub.emplace(key, pol.build_n(g, [j, i](const auto& G) {
-                 auto z = G[0] - G[0];
-                 return subresultant_coefficient(G, lambda_derivative(G), j, i, z);
-               })).first;
+      it = sub.emplace(key, pol.build_n(g, [j, i](const auto& G) { return subresultant_evidence(G, j, i); })).first;
     return it->second;
   };
   Rep proj = pol.build_n(g, [](const auto& G) { return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]); });
@@ -80,35 +78,7 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
 
   // Is there a negative multiple root of f at the root r of the projection?
   auto touches_at = [&](const Root& r) -> Sign {  // positive = yes, zero = no, uncertain
-    for (int j = k + 1; j <= 3; ++j) {
-      Sign lead = pol.sign_at(s(j, j), r);
-      if (lead == Sign::uncertain) return Sign::uncertain;
-      if (lead == Sign::zero) continue;
-      if (j == 1 || j == 3) {
-        Sign next = pol.sign_at(s(j, j - 1), r);
-        if (next == Sign::uncertain) return Sign::uncertain;
-        return (next * lead) == Sign::positive ? Sign::positive : Sign::zero;
-      }
-      Sign sb = pol.sign_at(s(2, 1), r), sc = pol.sign_at(s(2, 0), r);
-      auto it = sub.find({2, -1});  // the discriminant of S_2, cached under i = -1
-      if (it == sub.end())
-        it = sub.emplace(std::make_pair(2, -1), pol.build_n(g, [](const auto& G) {
-                   auto z = G[0] - G[0];
-                   auto fp = lambda_derivative(G);
-                   auto a = subresultant_coefficient(G, fp, 2, 2, z);
-                   auto b = subresultant_coefficient(G, fp, 2, 1, z);
-                   auto c = subresultant_coefficient(G, fp, 2, 0, z);
-                   return b * b - 4 * (a * c);
-                 })).first;
-      Sign sd = pol.sign_at(it->second, r);
-      if (sb == Sign::uncertain || sc == Sign::uncertain || sd == Sign::uncertain) return Sign::uncertain;
-      if (sd == Sign::negative) return Sign::zero;  // complex pair of double roots
-      bool neg = (lead * sc) == Sign::negative ||                                   // roots of opposite signs
-                 ((lead * sc) == Sign::positive && (lead * sb) == Sign::positive) ||  // both negative
-                 (sc == Sign::zero && (lead * sb) == Sign::positive);                 // 0 and -b/a < 0
-      return neg ? Sign::positive : Sign::zero;
-    }
-    return Sign::uncertain;  // psc_j(t*) = 0 for every j <= 3: impossible since g4 ≠ 0
+    return negative_multiple_root(k, [&](int j, int i) { return pol.sign_at(s(j, i), r); });
   };
 
   std::vector<const Root*> interior;
@@ -148,6 +118,7 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
     seq[n].status = Status::uncertain;
   }
   check_isolated_instants(seq, scalar_traits<T>::is_exact);
+  res.timeline = seq;
   for (std::size_t n = 0; n < seq.size(); ++n)
     if (node_root[n]) res.critical.push_back({seq[n].t, seq[n].status, pol.multiplicity(*node_root[n])});
   assemble_answer(seq, res.answer, [](std::size_t) {});
