@@ -34,6 +34,22 @@ AKPoly to_integer_poly(const Poly<Rational>& p) {
   return PT::Construct_polynomial()(z.begin(), z.end());
 }
 
+// Back from CGAL, made primitive with a positive leading coefficient.
+Poly<Rational> from_integer_poly(const AKPoly& p) {
+  using PT = CGAL::Polynomial_traits_d<AKPoly>;
+  int n = PT::Degree()(p);
+  std::vector<mpz_class> z;
+  for (int i = 0; i <= n; ++i) z.emplace_back(PT::Get_coefficient()(p, i).mpz());
+  mpz_class c = 0;
+  for (const auto& x : z) mpz_gcd(c.get_mpz_t(), c.get_mpz_t(), x.get_mpz_t());
+  if (c == 0) return Poly<Rational>();
+  if (z.back() < 0) c = -c;
+  Poly<Rational> out;
+  for (const auto& x : z) out.c.push_back(Rational(mpz_class(x / c)));
+  out.trim();
+  return out;
+}
+
 Rational to_rational(const AKBound& b) { return Rational(b.mpq()); }
 AKBound to_bound(const Rational& q) { return AKBound(q.get_mpq_t()); }
 }  // namespace
@@ -112,6 +128,23 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   if (q.is_zero()) return Sign::zero;
   CGAL::Sign s = kernel().sign_at_1_object()(to_integer_poly(q), r.impl->alpha);
   return s == CGAL::NEGATIVE ? Sign::negative : (s == CGAL::POSITIVE ? Sign::positive : Sign::zero);
+}
+
+std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Rational>& p) {
+  if (p.is_zero()) throw std::invalid_argument("square_free_factors: the zero polynomial");
+  using PT = CGAL::Polynomial_traits_d<AKPoly>;
+  std::vector<std::pair<AKPoly, int>> f;
+  PT::Square_free_factorize_up_to_constant_factor()(to_integer_poly(p), std::back_inserter(f));
+  std::vector<std::pair<Poly<Rational>, int>> out;
+  for (auto& [q, m] : f)
+    if (PT::Degree()(q) > 0) out.push_back({from_integer_poly(q), m});
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  return out;
+}
+
+Poly<Rational> polynomial_gcd(const Poly<Rational>& p, const Poly<Rational>& q) {
+  using PT = CGAL::Polynomial_traits_d<AKPoly>;
+  return from_integer_poly(PT::Gcd_up_to_constant_factor()(to_integer_poly(p), to_integer_poly(q)));
 }
 
 void refine(AlgebraicRoot& r, int bits) {

@@ -40,4 +40,12 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r);
 // Shrinks r's bracket to width <= 2^-bits (it stays a bracket of the same root).
 void refine(AlgebraicRoot& r, int bits);
 
+// Square-free factorisation p = c · F_1^m_1 · ... · F_s^m_s (c a rational
+// constant, m_1 < ... < m_s, the F_i square-free and pairwise coprime, each a
+// primitive integer polynomial with positive leading coefficient). A root of p
+// of multiplicity m is a simple root of the F_i with m_i = m.
+std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Rational>& p);
+// gcd(p, q) as a primitive integer polynomial with positive leading coefficient.
+Poly<Rational> polynomial_gcd(const Poly<Rational>& p, const Poly<Rational>& q);
+
 }  // namespace eccd

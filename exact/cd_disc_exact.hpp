@@ -31,10 +31,19 @@ inline Rational simplest_dyadic_between(const Rational& a, const Rational& b) {
   }
 }
 
+// One root isolation the pipeline did: the polynomial and its roots in [0, 1].
+struct Isolation {
+  Poly<Rational> poly;
+  std::vector<AlgebraicRoot> roots;
+};
+
 struct ExactPolicy {
   using Rep = Poly<Rational>;
   using Root = AlgebraicRoot;
   int bits = 64;  // brackets are refined to width <= 2^-bits
+  // If set, every isolation is kept here, in order (exact/certificate.hpp
+  // builds the certificate from the very roots the answer was decided on).
+  std::vector<Isolation>* record = nullptr;
 
   template <class F>
   Poly<Rational> build_n(const std::vector<Poly<Rational>>& g, F formula) const { return formula(g); }
@@ -50,6 +59,7 @@ struct ExactPolicy {
       if (eccd::sign_at(t1, r) == Sign::zero) { r.lo = r.hi = 1; continue; }
       for (int b = 2 * bits; r.lo <= 0 || r.hi >= 1; b *= 2) refine(r, b);  // strictly inside (0, 1)
     }
+    if (record) record->push_back({q, rs});
     return rs;
   }
   Sign sign_at(const Poly<Rational>& q, const Root& r) const { return eccd::sign_at(q, r); }

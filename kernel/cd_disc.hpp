@@ -60,6 +60,7 @@ struct CdDiscResult {
   std::vector<Critical> critical;   // roots of Δ in [0, 1] with their status
   struct Cell { Instant sample; Status status; };
   std::vector<Cell> cells;
+  std::vector<TimelineNode> timeline;  // instant, cell, ..., instant (kernel/collision_timeline.hpp)
   std::vector<std::pair<std::string, long>> counters;  // work done (method-specific)
   double seconds = 0;
 };
@@ -215,6 +216,7 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   }
   push({i1, endpoint_status(one, root1), false}, root1);
   check_isolated_instants(seq, scalar_traits<T>::is_exact);
+  res.timeline = seq;
   for (std::size_t k = 0; k < seq.size(); ++k)
     if (!seq[k].is_cell && node_root[k]) res.critical.push_back({seq[k].t, seq[k].status, pol.multiplicity(*node_root[k])});
 

@@ -1,0 +1,241 @@
+// The certificate writer (exact/certificate.hpp): the exact pipeline's own
+// timeline, with its brackets refined until the simple checks of
+// exact/certificate_check.hpp prove every claim.
+#include "exact/certificate.hpp"
+
+#include "exact/algebraic_roots.hpp"
+#include "exact/cd_disc_exact.hpp"
+#include "exact/certificate_algebra.hpp"
+#include "exact/descartes.hpp"
+#include "kernel/ccd_projection.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <chrono>
+#include <map>
+
+namespace eccd {
+
+namespace {
+
+constexpr int kMaxBits = 1 << 14;  // refinement limit for a bracket
+constexpr int kMaxGapDepth = 200;  // bisection limit for a gap
+
+struct Evidence {
+  std::string name;
+  Poly<Rational> q;
+  Sign sign = Sign::uncertain;
+  Poly<Rational> common;  // zero sign: gcd(q, F_i)
+};
+
+struct RootWork {
+  AlgebraicRoot root;
+  Rational old_lo, old_hi;  // the bracket the pipeline reported
+  int factor = -1;
+  std::vector<Evidence> evidence;
+};
+
+std::string q_str(const Rational& q) { return q.get_str(); }
+
+nlohmann::json coeffs_json(const Poly<Rational>& p) { return integer_coefficients(p); }
+
+// Do the checker's claims about this bracket hold?
+bool bracket_proves(const RootWork& w, const std::vector<std::pair<Poly<Rational>, int>>& F, const Poly<Rational>& P) {
+  const Rational &lo = w.root.lo, &hi = w.root.hi;
+  if (lo == hi) return true;
+  if (sign(P(lo)) == Sign::zero || sign(P(hi)) == Sign::zero) return false;
+  for (std::size_t j = 0; j < F.size(); ++j)
+    if (descartes_variations(F[j].first, lo, hi) != (int(j) == w.factor ? 1 : 0)) return false;
+  for (const auto& e : w.evidence) {
+    if (e.sign == Sign::zero) {
+      if (descartes_variations(e.common, lo, hi) != 1) return false;
+    } else if (sign(e.q(lo)) == Sign::zero || descartes_variations(e.q, lo, hi) != 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Splits (a, b) at points until every factor has 0 sign variations on each piece.
+void clear_gap(const Rational& a, const Rational& b, const std::vector<std::pair<Poly<Rational>, int>>& F,
+               const Poly<Rational>& P, std::vector<Rational>& points, int depth) {
+  bool clean = true;
+  for (const auto& f : F)
+    if (descartes_variations(f.first, a, b) != 0) { clean = false; break; }
+  if (clean) return;
+  if (depth > kMaxGapDepth) throw CertificationError("cannot certify: a gap between two roots could not be cleared by bisection");
+  Rational m = simplest_dyadic_between(Rational((2 * a + b) / 3), Rational((a + 2 * b) / 3));
+  if (sign(P(m)) == Sign::zero) throw std::logic_error("internal error: a root of the projection outside every bracket");
+  clear_gap(a, m, F, P, points, depth + 1);
+  points.push_back(m);
+  clear_gap(m, b, F, P, points, depth + 1);
+}
+
+template <class T>
+CdDiscResult<T> run_exact(const Scene& s, std::vector<Isolation>& record) {
+  ExactPolicy pol;
+  pol.record = &record;
+  if (s.dim == 2) {
+    auto m = to_arithmetic<Rational, 3>(prepare_pair<3>(s), Rational(1));
+    return cd_disc(m, pol, Variant::answer);
+  }
+  auto m = to_arithmetic<Rational, 4>(prepare_pair<4>(s), Rational(1));
+  return ccd_projection(m, pol, false);
+}
+
+}  // namespace
+
+nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc) {
+  auto start = std::chrono::steady_clock::now();
+  std::vector<Isolation> record;
+  CdDiscResult<Rational> res = run_exact<Rational>(s, record);
+  const CertificateAlgebra alg = certificate_algebra(s);
+  if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
+
+  nlohmann::json c;
+  c["format"] = "eccd-certificate/1";
+  c["scene"] = {{"path", s.path}, {"name", s.name}, {"dim", scene_doc.at("dim")}, {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")}};
+  nlohmann::json g = nlohmann::json::array();
+  for (const auto& gk : alg.g) {
+    nlohmann::json row = nlohmann::json::array();
+    for (const auto& x : gk.c) row.push_back(q_str(x));
+    g.push_back(row);
+  }
+  c["f"] = {{"convention", "f(lambda; t) = det(lambda A(t) - B(t)) = sum_k g_k(t) lambda^k; g_k in the power basis, lowest degree first"},
+            {"g", g}};
+  nlohmann::json proj = {{"name", alg.projection_name}, {"vanishing", alg.vanishing}};
+
+  if (alg.projection.is_zero()) {  // 2D, Δ ≡ 0: never separate (003 Corollary 7)
+    if (!res.delta_identically_zero) throw std::logic_error("internal error: Δ ≡ 0 but the pipeline disagrees");
+    proj["identically_zero"] = true;
+    c["projection"] = proj;
+    c["gap_points"] = nlohmann::json::array();
+    c["timeline"] = nlohmann::json::array();
+    Answer ans = res.answer;  // the stored-answer keys only (continuous touching is an extra)
+    ans.contact_points.clear();
+    ans.contact_intervals.clear();
+    c["answer"] = answer_to_json(ans);
+    c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return c;
+  }
+
+  if (record.size() != 1 || record[0].poly != alg.projection)
+    throw std::logic_error("internal error: the pipeline isolated the roots of another polynomial than the projection");
+  const Poly<Rational>& P = alg.projection;
+  const auto F = square_free_factors(P);
+  proj["identically_zero"] = false;
+  proj["degree"] = P.degree();
+  proj["coefficients"] = coeffs_json(P);
+  nlohmann::json fj = nlohmann::json::array();
+  for (const auto& [f, m] : F) fj.push_back({{"multiplicity", m}, {"coefficients", coeffs_json(f)}});
+  proj["square_free_factors"] = fj;
+  c["projection"] = proj;
+
+  // Roots: factor, evidence, refined brackets.
+  std::vector<RootWork> roots;
+  for (const auto& r : record[0].roots) {
+    RootWork w;
+    w.root = r;
+    w.old_lo = r.lo;
+    w.old_hi = r.hi;
+    for (std::size_t j = 0; j < F.size(); ++j)
+      if (F[j].second == r.multiplicity) w.factor = int(j);
+    if (w.factor < 0) throw std::logic_error("internal error: no square-free factor of the root's multiplicity");
+    if (!r.is_rational()) {
+      auto add = [&](const std::string& name) -> Sign {
+        for (const auto& e : w.evidence)
+          if (e.name == name) return e.sign;
+        Evidence e;
+        e.name = name;
+        e.q = alg.evidence(name);
+        e.sign = eccd::sign_at(e.q, r);
+        if (e.sign == Sign::zero) e.common = polynomial_gcd(e.q, F[w.factor].first);
+        w.evidence.push_back(e);
+        return e.sign;
+      };
+      if (s.dim == 2) {
+        add("P");
+        add("D");
+      } else {
+        negative_multiple_root(alg.projection_index, [&](int j, int i) { return add(subresultant_evidence_name(j, i)); });
+      }
+    }
+    for (int bits = 128; !bracket_proves(w, F, P); bits *= 2) {
+      if (bits > kMaxBits)
+        throw CertificationError("cannot certify: the bracket of the root near t = " + decimal_string(w.old_lo) +
+                                 " does not prove its claims even at width 2^-" + std::to_string(kMaxBits));
+      refine(w.root, bits);
+    }
+    roots.push_back(std::move(w));
+  }
+  auto refined = [&](const Instant& i) -> Instant {
+    if (!i.certified()) throw std::logic_error("internal error: an exact instant without a bracket");
+    for (const auto& w : roots)
+      if (w.old_lo == *i.lo && w.old_hi == *i.hi) {
+        Rational mid = (w.root.lo + w.root.hi) / 2;
+        return Instant{decimal_string(mid), w.root.lo, w.root.hi};
+      }
+    return i;
+  };
+
+  // Gaps between consecutive brackets (and 0, 1) hold no root.
+  std::vector<Rational> points;
+  Rational prev = 0;
+  for (const auto& w : roots) {
+    if (prev < w.root.lo) clear_gap(prev, w.root.lo, F, P, points, 0);
+    prev = w.root.hi;
+  }
+  if (prev < Rational(1)) clear_gap(prev, Rational(1), F, P, points, 0);
+  nlohmann::json pts = nlohmann::json::array();
+  for (const auto& p : points) pts.push_back(q_str(p));
+  c["gap_points"] = pts;
+
+  // The timeline with statuses and evidence.
+  nlohmann::json tl = nlohmann::json::array();
+  for (std::size_t k = 0; k < res.timeline.size(); ++k) {
+    const TimelineNode& n = res.timeline[k];
+    if (n.is_cell) {
+      tl.push_back({{"cell_sample", q_str(*n.t.lo)}, {"status", to_string(n.status)}});
+      continue;
+    }
+    Instant t = refined(n.t);
+    nlohmann::json j = {{"instant", {{"approx", t.approx}, {"lo", q_str(*t.lo)}, {"hi", q_str(*t.hi)}}}, {"status", to_string(n.status)}};
+    const RootWork* w = nullptr;
+    for (const auto& x : roots)
+      if (x.root.lo == *t.lo && x.root.hi == *t.hi) w = &x;
+    j["root_of_factor"] = w ? nlohmann::json(w->factor) : nlohmann::json(nullptr);
+    if (!w || w->root.is_rational()) {
+      j["decided_by"] = "static test at the rational instant";
+    } else {
+      nlohmann::json ev = nlohmann::json::array();
+      for (const auto& e : w->evidence) {
+        nlohmann::json x = {{"poly", e.name}, {"sign", to_string(e.sign)}};
+        if (e.sign == Sign::zero) x["common_factor"] = coeffs_json(e.common);
+        ev.push_back(x);
+      }
+      j["evidence"] = ev;
+      if (s.dim == 2) {
+        j["decided_by"] = "signs of P and D at the root (003 Theorem 6)";
+      } else {
+        std::map<std::string, Sign> sg;
+        for (const auto& e : w->evidence) sg[e.name] = e.sign;
+        Sign touch = negative_multiple_root(alg.projection_index, [&](int a, int b) { return sg.at(subresultant_evidence_name(a, b)); });
+        j["decided_by"] = touch == Sign::positive ? "subresultant signs at the root: a negative multiple root (touching)"
+                                                   : "subresultant signs at the root: no negative multiple root, so the status of the neighbouring cells";
+      }
+    }
+    tl.push_back(j);
+  }
+  c["timeline"] = tl;
+
+  Answer ans = res.answer;
+  for (auto& [a, b] : ans.intervals) { a = refined(a); b = refined(b); }
+  if (ans.first_contact) ans.first_contact = refined(*ans.first_contact);
+  for (auto& x : ans.contacts) x = refined(x);
+  ans.contact_points.clear();
+  ans.contact_intervals.clear();
+  c["answer"] = answer_to_json(ans);
+  c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return c;
+}
+
+}  // namespace eccd

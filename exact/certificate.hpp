@@ -1,0 +1,51 @@
+#pragma once
+// The certificate of an exact answer: everything a simpler program needs to
+// re-check it without the solver (exact/certificate_check.hpp checks it).
+//
+// Statement. The exact pipeline (exact/cd_disc_exact.hpp in 2D,
+// kernel/ccd_projection.hpp in 3D) decides the status of two moving objects
+// on the timeline instant, cell, instant, ..., instant over [0, 1]
+// (kernel/collision_timeline.hpp): the instants are 0, 1 and the real roots of
+// the projection polynomial P(t) (exact/certificate_algebra.hpp), the cells
+// the open intervals between them. The certificate writes down:
+//   - the scene it is about (dim, a, b, verbatim) and f's coefficients g_k;
+//   - P with exact integer coefficients, the polynomials that vanished
+//     identically before it, and P's square-free factorisation
+//     P = c · Π F_i^m_i;
+//   - for each root a rational bracket [lo, hi] refined until Descartes' rule
+//     (exact/descartes.hpp) proves it: exactly one root of its factor F_i
+//     (sign variations 1) and none of the other factors (variations 0);
+//     P(lo), P(hi) ≠ 0 (a rational root is written [r, r]);
+//   - gap points splitting the gaps between brackets into pieces where every
+//     factor has 0 variations: so P has no other root in [0, 1];
+//   - one rational sample per cell with its status (exact static test);
+//   - at each instant its status and the evidence: the static test at a
+//     rational instant, or at an irrational root the signs of the evidence
+//     polynomials (2D: P and D of 003 Theorem 6; 3D: the subresultant
+//     coefficients of kernel/quartic_touch_rule.hpp). A non-zero sign is
+//     provable on the bracket (the polynomial has 0 variations on it and that
+//     sign at lo); a zero sign comes with a common factor h of the polynomial
+//     and F_i that has its one root in the bracket;
+//   - the answer, which must follow from the timeline.
+// Brackets are refined (never moved) until all these claims hold, so the
+// certificate's brackets may be narrower than `eccd solve`'s.
+// Requirements: a scene with rational motions.
+#include "kernel/scene.hpp"
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace eccd {
+
+// Thrown when a claim cannot be made provable (e.g. refinement limit reached).
+struct CertificationError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Runs the exact pipeline with the root isolation recorded and returns the
+// certificate (format "eccd-certificate/1"). scene_doc is the scene file's
+// JSON (its dim, a and b are copied into the certificate).
+nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc);
+
+}  // namespace eccd

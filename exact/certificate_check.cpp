@@ -1,0 +1,390 @@
+// The certificate checker (exact/certificate_check.hpp). Deliberately simple:
+// it includes no root isolation and no CCD driver, only the exact algebra of
+// exact/certificate_algebra.hpp, Descartes' rule and the timeline-to-answer step.
+#include "exact/certificate_check.hpp"
+
+#include "exact/certificate_algebra.hpp"
+#include "exact/descartes.hpp"
+#include "kernel/collision_timeline.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <map>
+#include <optional>
+
+namespace eccd {
+
+namespace {
+
+using json = nlohmann::json;
+
+struct Reject {
+  std::string claim, reason;
+};
+
+[[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Reject{claim, reason}; }
+
+const json& at(const json& j, const std::string& key, const std::string& place) {
+  if (!j.is_object() || !j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
+  return j.at(key);
+}
+
+Rational rat(const json& j, const std::string& place) {
+  if (!j.is_string()) reject("certificate format", place + ": expected a rational written as a string \"p/q\"");
+  try {
+    return parse_rational(j.get<std::string>());
+  } catch (const std::exception& e) {
+    reject("certificate format", place + ": " + e.what());
+  }
+}
+
+Poly<Rational> poly(const json& j, const std::string& place) {
+  if (!j.is_array()) reject("certificate format", place + ": expected an array of coefficients");
+  Poly<Rational> p;
+  for (std::size_t i = 0; i < j.size(); ++i) p.c.push_back(rat(j[i], place + "[" + std::to_string(i) + "]"));
+  p.trim();
+  return p;
+}
+
+Status status_named(const json& j, const std::string& place) {
+  if (j.is_string())
+    for (Status s : {Status::separate, Status::touching, Status::overlapping})
+      if (j.get<std::string>() == to_string(s)) return s;
+  reject("certificate format", place + ": expected \"separate\", \"touching\" or \"overlapping\"");
+}
+
+Sign sign_named(const json& j, const std::string& place) {
+  if (j.is_string())
+    for (Sign s : {Sign::negative, Sign::zero, Sign::positive})
+      if (j.get<std::string>() == to_string(s)) return s;
+  reject("certificate format", place + ": expected \"negative\", \"zero\" or \"positive\"");
+}
+
+std::string bracket_text(const Rational& lo, const Rational& hi) {
+  if (lo == hi) return "[" + lo.get_str() + "]";
+  return "[" + lo.get_str() + ", " + hi.get_str() + "] (~" + decimal_string(Rational((lo + hi) / 2), 12) + ")";
+}
+
+bool same_instant(const Instant& a, const Instant& b) {
+  return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi;
+}
+
+struct Node {
+  Rational lo, hi;  // instant bracket, or the cell sample (lo = hi)
+  bool is_cell = false;
+  Status status = Status::uncertain;
+  std::optional<int> factor;
+  json evidence;
+  std::string name;  // for messages
+};
+
+struct Checker {
+  const Scene& s;
+  const json& scene_doc;
+  const json& cert;
+  CertificateAlgebra alg;
+  std::vector<std::pair<Poly<Rational>, int>> F;
+  std::vector<Node> nodes;
+  std::vector<std::string> checked;
+
+  void scene() {
+    const json& sc = at(cert, "scene", "certificate");
+    for (const char* k : {"dim", "a", "b"})
+      if (at(sc, k, "scene") != scene_doc.at(k))
+        reject("scene", std::string("the certificate's \"") + k + "\" differs from the scene file's: it is a certificate for another scene");
+    checked.push_back("scene: dim, a and b are those of " + s.path);
+  }
+
+  void f() {
+    const json& g = at(at(cert, "f", "certificate"), "g", "f");
+    if (!g.is_array() || g.size() != alg.g.size())
+      reject("f", "expected " + std::to_string(alg.g.size()) + " coefficient polynomials g_0 .. g_" + std::to_string(alg.g.size() - 1));
+    for (std::size_t k = 0; k < alg.g.size(); ++k) {
+      Poly<Rational> gk = poly(g[k], "f.g[" + std::to_string(k) + "]");
+      if (!(gk == alg.g[k])) reject("f", "g_" + std::to_string(k) + " differs from det(lambda A(t) - B(t)) recomputed from the scene");
+    }
+    checked.push_back("f: g_0 .. g_" + std::to_string(alg.g.size() - 1) + " equal the recomputed characteristic polynomial");
+  }
+
+  // Returns false when the projection vanishes identically (2D Δ ≡ 0).
+  bool projection() {
+    const json& p = at(cert, "projection", "certificate");
+    const json& name = at(p, "name", "projection");
+    if (!name.is_string() || name.get<std::string>() != alg.projection_name)
+      reject("projection", "the certificate names " + name.dump() + " but the recomputed projection is " + alg.projection_name +
+                               (alg.vanishing.empty() ? "" : " (the candidates before it vanish identically)"));
+    if (at(p, "vanishing", "projection") != json(alg.vanishing))
+      reject("projection", "the list of identically vanishing candidates differs from the recomputed one");
+    bool zero = alg.projection.is_zero();
+    if (at(p, "identically_zero", "projection") != json(zero))
+      reject("projection", zero ? "the recomputed projection vanishes identically" : "the recomputed projection does not vanish identically");
+    if (zero) {
+      checked.push_back("projection: the discriminant vanishes identically (003 Corollary 7: never separate)");
+      return false;
+    }
+    std::vector<std::string> want = integer_coefficients(alg.projection);
+    const json& coeffs = at(p, "coefficients", "projection");
+    if (!coeffs.is_array() || coeffs.size() != want.size())
+      reject("projection", "expected " + std::to_string(want.size()) + " coefficients (degree " + std::to_string(alg.projection.degree()) + ")");
+    for (std::size_t i = 0; i < want.size(); ++i)
+      if (!coeffs[i].is_string() || coeffs[i].get<std::string>() != want[i])
+        reject("projection", "coefficient " + std::to_string(i) + " (of t^" + std::to_string(i) + ") differs from the recomputed " + alg.projection_name);
+    checked.push_back("projection: " + alg.projection_name + " of degree " + std::to_string(alg.projection.degree()) +
+                      ", integer coefficients equal the recomputed ones");
+    // Square-free factors.
+    const json& fj = at(p, "square_free_factors", "projection");
+    if (!fj.is_array() || fj.empty()) reject("factors", "expected a non-empty list of square-free factors");
+    Poly<Rational> prod({Rational(1)});
+    for (std::size_t i = 0; i < fj.size(); ++i) {
+      std::string place = "projection.square_free_factors[" + std::to_string(i) + "]";
+      Poly<Rational> fi = poly(at(fj[i], "coefficients", place), place + ".coefficients");
+      const json& m = at(fj[i], "multiplicity", place);
+      if (!m.is_number_integer() || m.get<int>() < 1 || m.get<int>() > 1000) reject("certificate format", place + ".multiplicity: expected a whole number >= 1");
+      if (fi.degree() < 1) reject("factors", "factor " + std::to_string(i) + " is constant");
+      for (int k = 0; k < m.get<int>(); ++k) prod = prod * fi;
+      F.push_back({fi, m.get<int>()});
+    }
+    Poly<Rational> lhs = prod.lead() * alg.projection, rhs = alg.projection.lead() * prod;
+    if (!(lhs == rhs)) reject("factors", "the product of the square-free factors (with their multiplicities) is not a constant multiple of the projection");
+    checked.push_back("factors: the product of " + std::to_string(F.size()) + " square-free factor(s) is the projection up to a constant");
+    return true;
+  }
+
+  void timeline() {
+    const json& tl = at(cert, "timeline", "certificate");
+    if (!tl.is_array() || tl.size() < 3 || tl.size() % 2 == 0)
+      reject("timeline", "expected instant, cell, instant, ..., instant (an odd number >= 3 of entries)");
+    for (std::size_t k = 0; k < tl.size(); ++k) {
+      std::string place = "timeline[" + std::to_string(k) + "]";
+      Node n;
+      n.is_cell = k % 2 == 1;
+      if (n.is_cell) {
+        n.lo = n.hi = rat(at(tl[k], "cell_sample", place), place + ".cell_sample");
+        n.name = "cell " + std::to_string(k / 2) + " (sample " + n.lo.get_str() + ")";
+      } else {
+        const json& in = at(tl[k], "instant", place);
+        n.lo = rat(at(in, "lo", place + ".instant"), place + ".instant.lo");
+        n.hi = rat(at(in, "hi", place + ".instant"), place + ".instant.hi");
+        n.name = "instant " + std::to_string(k / 2) + " " + bracket_text(n.lo, n.hi);
+        const json& f = at(tl[k], "root_of_factor", place);
+        if (!f.is_null()) {
+          if (!f.is_number_integer() || f.get<int>() < 0 || f.get<int>() >= int(F.size()))
+            reject("certificate format", place + ".root_of_factor: expected null or a factor index below " + std::to_string(F.size()));
+          n.factor = f.get<int>();
+        }
+        n.evidence = tl[k].contains("evidence") ? tl[k]["evidence"] : json::array();
+        if (n.lo > n.hi) reject(n.name, "lo > hi");
+      }
+      n.status = status_named(at(tl[k], "status", place), place + ".status");
+      nodes.push_back(n);
+    }
+    if (!(nodes.front().lo == 0 && nodes.front().hi == 0)) reject("timeline", "the first instant must be [0, 0]");
+    if (!(nodes.back().lo == 1 && nodes.back().hi == 1)) reject("timeline", "the last instant must be [1, 1]");
+    for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
+      if (!(nodes[k].hi < nodes[k + 1].lo))
+        reject(nodes[k].is_cell ? nodes[k].name : nodes[k + 1].name,
+               "the sample of a cell must lie strictly between the brackets of its two instants, and brackets must be disjoint");
+    checked.push_back("timeline: " + std::to_string(nodes.size() / 2 + 1) + " instants and " + std::to_string(nodes.size() / 2) +
+                      " cells, brackets disjoint, each sample strictly between its brackets");
+  }
+
+  void isolation() {
+    const Poly<Rational>& P = alg.projection;
+    int roots = 0;
+    for (std::size_t k = 0; k < nodes.size(); k += 2) {
+      const Node& n = nodes[k];
+      bool end = k == 0 || k + 1 == nodes.size();
+      if (!n.factor) {
+        if (!end) reject(n.name, "an interior instant must be a root of the projection (root_of_factor is null)");
+        if (is_zero(P(n.lo))) reject(n.name, "claimed not to be a root, but the projection vanishes there");
+        continue;
+      }
+      ++roots;
+      const Poly<Rational>& Fi = F[*n.factor].first;
+      if (n.lo == n.hi) {
+        if (!is_zero(Fi(n.lo))) reject(n.name, "claimed to be a root of factor " + std::to_string(*n.factor) + ", which does not vanish there");
+        continue;
+      }
+      if (is_zero(P(n.lo)) || is_zero(P(n.hi))) reject(n.name, "the projection vanishes at an end of the bracket");
+      for (std::size_t j = 0; j < F.size(); ++j) {
+        int v = descartes_variations(F[j].first, n.lo, n.hi);
+        if (int(j) == *n.factor && v != 1)
+          reject(n.name, "does not provably hold exactly one root: factor " + std::to_string(j) + " has " + std::to_string(v) +
+                             " sign variation(s) on the bracket (Descartes needs 1)");
+        if (int(j) != *n.factor && v != 0)
+          reject(n.name, "another factor (" + std::to_string(j) + ") may have a root in the bracket (" + std::to_string(v) + " sign variations)");
+      }
+    }
+    checked.push_back("brackets: each of the " + std::to_string(roots) + " root bracket(s) holds exactly one root of the projection (Descartes)");
+    // Gaps.
+    std::vector<Rational> pts;
+    const json& gp = at(cert, "gap_points", "certificate");
+    if (!gp.is_array()) reject("certificate format", "gap_points: expected an array");
+    for (std::size_t i = 0; i < gp.size(); ++i) pts.push_back(rat(gp[i], "gap_points[" + std::to_string(i) + "]"));
+    std::size_t used = 0;
+    int pieces = 0;
+    for (std::size_t k = 0; k + 2 < nodes.size(); k += 2) {
+      Rational a = nodes[k].hi, b = nodes[k + 2].lo;
+      std::vector<Rational> cut{a};
+      while (used < pts.size() && pts[used] < b) {
+        if (!(cut.back() < pts[used])) reject("gaps", "gap point " + pts[used].get_str() + " is not strictly inside a gap, or the points are not increasing");
+        if (is_zero(P(pts[used]))) reject("gaps", "the projection vanishes at gap point " + pts[used].get_str());
+        cut.push_back(pts[used++]);
+      }
+      cut.push_back(b);
+      for (std::size_t i = 0; i + 1 < cut.size(); ++i, ++pieces)
+        for (std::size_t j = 0; j < F.size(); ++j)
+          if (int v = descartes_variations(F[j].first, cut[i], cut[i + 1]); v != 0)
+            reject("gaps", "the projection may have a root in (" + cut[i].get_str() + ", " + cut[i + 1].get_str() + ") outside every bracket: factor " +
+                               std::to_string(j) + " has " + std::to_string(v) + " sign variation(s) there");
+    }
+    if (used != pts.size()) reject("gaps", "gap point " + pts[used].get_str() + " is not strictly inside a gap");
+    checked.push_back("gaps: no other root of the projection in [0, 1] (" + std::to_string(pieces) + " piece(s), 0 sign variations each)");
+  }
+
+  // The proved sign of an evidence polynomial at the root of node n.
+  Sign evidence_sign(const Node& n, const std::string& want) {
+    for (std::size_t i = 0; i < n.evidence.size(); ++i) {
+      const json& e = n.evidence[i];
+      std::string place = n.name + " evidence[" + std::to_string(i) + "]";
+      const json& nm = at(e, "poly", place);
+      if (!nm.is_string() || nm.get<std::string>() != want) continue;
+      Poly<Rational> q;
+      try {
+        q = alg.evidence(want);
+      } catch (const std::invalid_argument& ex) {
+        reject(n.name, ex.what());
+      }
+      Sign claimed = sign_named(at(e, "sign", place), place + ".sign");
+      if (claimed != Sign::zero) {
+        if (is_zero(q(n.lo)) || descartes_variations(q, n.lo, n.hi) != 0)
+          reject(n.name, "the sign of " + want + " at the root is not proved: " + want + " may vanish on the bracket");
+        if (sign(q(n.lo)) != claimed)
+          reject(n.name, want + " is " + to_string(sign(q(n.lo))) + " on the bracket, not " + to_string(claimed) + " as claimed");
+        return claimed;
+      }
+      Poly<Rational> h = poly(at(e, "common_factor", place), place + ".common_factor"), quo, rem;
+      if (h.degree() < 1) reject(n.name, "the common factor offered for " + want + " = 0 is constant");
+      divide(q, h, quo, rem);
+      if (!rem.is_zero()) reject(n.name, "the common factor offered for " + want + " = 0 does not divide " + want);
+      divide(F[*n.factor].first, h, quo, rem);
+      if (!rem.is_zero()) reject(n.name, "the common factor offered for " + want + " = 0 does not divide the root's factor");
+      if (descartes_variations(h, n.lo, n.hi) != 1) reject(n.name, "the common factor offered for " + want + " = 0 has no proved root in the bracket");
+      return Sign::zero;
+    }
+    reject(n.name, "the evidence for the sign of " + want + " at the root is missing");
+  }
+
+  void statuses() {
+    int cells = 0;
+    for (std::size_t k = 1; k < nodes.size(); k += 2, ++cells) {
+      Status st = alg.status_at(nodes[k].lo);
+      if (st != nodes[k].status)
+        reject(nodes[k].name, std::string("the exact static test gives ") + to_string(st) + ", not " + to_string(nodes[k].status) + " as claimed");
+    }
+    checked.push_back("cells: the exact static test at each of the " + std::to_string(cells) + " sample(s) gives the claimed status");
+    int rational = 0, irrational = 0;
+    for (std::size_t k = 0; k < nodes.size(); k += 2) {
+      Node& n = nodes[k];
+      Status st;
+      if (n.lo == n.hi) {
+        st = alg.status_at(n.lo);
+        ++rational;
+      } else {
+        ++irrational;
+        if (alg.dim == 2) {
+          Sign sp = evidence_sign(n, "P"), sd = evidence_sign(n, "D");
+          st = status_at_multiple_root(sp, sd);
+        } else {
+          Sign touch = negative_multiple_root(alg.projection_index, [&](int j, int i) { return evidence_sign(n, subresultant_evidence_name(j, i)); });
+          if (touch == Sign::positive) {
+            st = Status::touching;
+          } else {
+            st = nodes[k - 1].status;
+            if (nodes[k + 1].status != st)
+              reject(n.name, "no negative multiple root, yet the neighbouring cells have different statuses (the status can only change through a touch)");
+          }
+        }
+      }
+      if (st != n.status)
+        reject(n.name, std::string("the evidence gives ") + to_string(st) + ", not " + to_string(n.status) + " as claimed");
+    }
+    checked.push_back("instants: " + std::to_string(rational) + " rational instant(s) by the exact static test, " + std::to_string(irrational) +
+                      " root(s) by proved signs of the evidence polynomials");
+  }
+
+  void answer(const std::optional<Answer>& derived) {
+    Answer want;
+    try {
+      want = answer_from_json(at(cert, "answer", "certificate"), "certificate", "answer");
+    } catch (const SceneError& e) {
+      reject("certificate format", e.what());
+    }
+    const Answer& got = *derived;
+    if (got.collides != want.collides) reject("answer", std::string("the timeline gives collides = ") + (got.collides ? "true" : "false"));
+    if (got.intervals.size() != want.intervals.size())
+      reject("answer", "the timeline gives " + std::to_string(got.intervals.size()) + " collision interval(s), the certificate " + std::to_string(want.intervals.size()));
+    for (std::size_t i = 0; i < got.intervals.size(); ++i)
+      if (!same_instant(got.intervals[i].first, want.intervals[i].first) || !same_instant(got.intervals[i].second, want.intervals[i].second))
+        reject("answer", "collision interval " + std::to_string(i + 1) + " differs from the one the timeline gives");
+    if (got.first_contact.has_value() != want.first_contact.has_value() ||
+        (got.first_contact && !same_instant(*got.first_contact, *want.first_contact)))
+      reject("answer", "first_contact differs from the one the timeline gives");
+    if (got.contacts.size() != want.contacts.size())
+      reject("answer", "the timeline gives " + std::to_string(got.contacts.size()) + " contact(s), the certificate " + std::to_string(want.contacts.size()));
+    for (std::size_t i = 0; i < got.contacts.size(); ++i)
+      if (!same_instant(got.contacts[i], want.contacts[i])) reject("answer", "contact " + std::to_string(i + 1) + " differs from the one the timeline gives");
+    checked.push_back("answer: follows from the checked timeline");
+  }
+
+  void run() {
+    const json& fmt = at(cert, "format", "certificate");
+    if (fmt != "eccd-certificate/1") reject("certificate format", "format: expected \"eccd-certificate/1\"");
+    scene();
+    f();
+    if (!projection()) {
+      Answer all;  // Δ ≡ 0: the collision set is [0, 1]
+      Instant i0{"0", Rational(0), Rational(0)}, i1{"1", Rational(1), Rational(1)};
+      all.collides = true;
+      all.intervals.push_back({i0, i1});
+      all.first_contact = i0;
+      answer(all);
+      return;
+    }
+    timeline();
+    isolation();
+    statuses();
+    std::vector<TimelineNode> seq;
+    for (const auto& n : nodes) {
+      Rational mid = (n.lo + n.hi) / 2;
+      seq.push_back({Instant{decimal_string(mid), n.lo, n.hi}, n.status, n.is_cell});
+    }
+    if (alg.dim == 2) {
+      try {
+        check_isolated_instants(seq, true);
+      } catch (const std::logic_error& e) {
+        reject("timeline", "the statuses contradict 003 Theorem 6: an overlapping instant between two separate cells");
+      }
+    }
+    Answer derived;
+    assemble_answer(seq, derived, [](std::size_t) {});
+    answer(derived);
+  }
+};
+
+}  // namespace
+
+CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
+  CertificateCheck out;
+  Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}};
+  try {
+    c.run();
+    out.valid = true;
+  } catch (const Reject& r) {
+    out.failed_claim = r.claim;
+    out.reason = r.reason;
+  }
+  out.checked = c.checked;
+  return out;
+}
+
+}  // namespace eccd

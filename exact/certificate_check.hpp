@@ -1,0 +1,50 @@
+#pragma once
+// The certificate checker: re-checks a certificate (exact/certificate.hpp)
+// against its scene without calling the solver.
+//
+// Statement. It trusts only the scene reader and the exact algebra of
+// exact/certificate_algebra.hpp (f, the projection polynomial, the evidence
+// polynomials, the static tests 003 Theorem 6 / 002 Theorem 1), Descartes'
+// rule of signs (exact/descartes.hpp), polynomial multiplication and division
+// over the rationals, and the timeline-to-answer step
+// (kernel/collision_timeline.hpp). It does not isolate roots (no CGAL), does
+// not run CD-DISC or the projection CCD. Claims, in order:
+//   scene      the certificate's dim, a, b equal the scene file's;
+//   f          each g_k equals the one recomputed from the scene;
+//   projection its name (the candidates before it vanish identically) and
+//              its integer coefficients equal the recomputed ones;
+//   factors    Π F_i^m_i equals the projection up to a non-zero constant;
+//   timeline   instant, cell, ..., instant from [0, 0] to [1, 1]; each cell
+//              sample lies strictly between its two brackets;
+//   instant k  a root: lo = hi and P(lo) = 0, or P(lo), P(hi) ≠ 0 and Descartes
+//              gives 1 for its factor and 0 for the others on (lo, hi); not a
+//              root (0 or 1 only): P ≠ 0 there;
+//   gaps       the gap points split the gaps into pieces where every factor
+//              has 0 sign variations (so P has no other root in [0, 1]);
+//   cell k     the exact static test at the sample gives the claimed status;
+//   status of instant k
+//              rational: the static test; irrational: each evidence sign is
+//              proved (0 variations on (lo, hi) and that sign at lo; or a
+//              common factor of the polynomial and F_i with its root in the
+//              bracket), then the status follows by 003 Theorem 6 (2D) or by
+//              kernel/quartic_touch_rule.hpp and the neighbouring cells (3D);
+//   answer     the answer assembled from the checked timeline equals the
+//              certificate's.
+// The first claim that fails is reported by name with the reason.
+#include "kernel/scene.hpp"
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace eccd {
+
+struct CertificateCheck {
+  bool valid = false;
+  std::vector<std::string> checked;  // one line per claim group that holds
+  std::string failed_claim, reason;  // the first claim that does not
+};
+
+CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
+
+}  // namespace eccd
