@@ -19,6 +19,9 @@ struct Command {
 Command add_generate_command(CLI::App& app);  // app/generate.cpp
 Command add_report_command(CLI::App& app);    // app/report.cpp
 Command add_plot_command(CLI::App& app);      // app/plot.cpp
+Command add_certify_command(CLI::App& app);            // app/certify.cpp
+Command add_check_certificate_command(CLI::App& app);  // app/certify.cpp
+Command add_regress_command(CLI::App& app);            // app/regress.cpp
 
 // The generator options shared by `generate` and `report` (--dims, --degrees,
 // --families, --motions, --separations); app/generate.cpp.

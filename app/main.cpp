@@ -2,9 +2,12 @@
 //   eccd solve SCENE [--arith double|mpfr:BITS|exact] [--basis ...] [--variant N] [--json]
 //   eccd table [DIR] [--mpfr BITS ...] [--json]   every scene of DIR in every arithmetic, side by side
 //   eccd generate / report / plot                 app/generate.cpp, app/report.cpp, app/plot.cpp
-// Exit status: 0 success; 1 internal error; 2 bad input (a scene file or an
-// option); 3 a request the pipeline refuses (e.g. a cycloidal motion in exact
-// arithmetic). Nothing is written to stdout unless the command succeeds.
+//   eccd certify / check-certificate              app/certify.cpp
+//   eccd regress [DIR]                            app/regress.cpp
+// Exit status: 0 success; 1 internal error, a rejected certificate
+// (check-certificate) or a regression (regress); 2 bad input (a scene file or
+// an option); 3 a request the pipeline refuses (e.g. a cycloidal motion in
+// exact arithmetic); 4 a scene the certifier cannot certify. Nothing is written to stdout unless the command succeeds.
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
 #include "app/solve.hpp"
@@ -167,7 +170,8 @@ int main(int argc, char** argv) {
   table->add_option("--mpfr", mpfr_bits, "MPFR precisions in bits (repeatable)")->capture_default_str();
   table->add_flag("--json", table_json, "Print all results as one JSON array instead of the table");
 
-  std::vector<Command> commands{add_generate_command(app), add_report_command(app), add_plot_command(app)};
+  std::vector<Command> commands{add_generate_command(app),  add_report_command(app),           add_plot_command(app),
+                                add_certify_command(app),   add_check_certificate_command(app), add_regress_command(app)};
 
   try {
     app.parse(argc, argv);

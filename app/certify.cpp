@@ -1,0 +1,195 @@
+// `eccd certify`: the certified answer of one scene, a verdict for each
+// floating pipeline against it, and a certificate that `eccd
+// check-certificate` re-checks without the solver (exact/certificate.hpp).
+#include "app/atomic_write.hpp"
+#include "app/commands.hpp"
+#include "app/solve.hpp"
+#include "compare/harness.hpp"
+#include "compare/verdict.hpp"
+#include "exact/certificate.hpp"
+#include "exact/certificate_check.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace eccd {
+
+namespace {
+
+struct CertifyArgs {
+  std::string scene, out;
+  std::vector<int> mpfr_bits{128, 256};
+  double tol = 1e-6;
+  bool json = false, no_floating = false;
+};
+
+// The scene file's JSON (after the reader has validated it).
+nlohmann::json scene_document(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return nlohmann::json::parse(ss.str());
+}
+
+std::string instant_text(const nlohmann::json& i) {
+  std::string lo = i["lo"].get<std::string>(), hi = i["hi"].get<std::string>();
+  if (lo == hi) return lo;
+  return i["approx"].get<std::string>() + " in [" + lo + ", " + hi + "]";
+}
+
+std::string certified_text(const nlohmann::json& cert) {
+  std::ostringstream o;
+  const auto& s = cert["scene"];
+  const auto& p = cert["projection"];
+  const auto& a = cert["answer"];
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f s", cert["seconds"].get<double>());
+  o << "scene " << s["name"].get<std::string>() << " (" << s["dim"].get<int>() << "D): certified by the exact pipeline in " << buf << "\n";
+  if (p["identically_zero"].get<bool>()) {
+    o << "  projection: the discriminant vanishes identically (never separate)\n";
+  } else {
+    int roots = 0;
+    for (const auto& n : cert["timeline"]) roots += n.contains("root_of_factor") && !n["root_of_factor"].is_null();
+    o << "  projection: " << p["name"].get<std::string>() << " of degree " << p["degree"].get<int>() << ", " << roots
+      << " root(s) in [0, 1], each in a bracket proved by Descartes' rule\n";
+  }
+  o << "  collides: " << (a["collides"].get<bool>() ? "yes" : "no") << "\n";
+  for (const auto& iv : a["intervals"])
+    o << "  collision interval: [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]" << (iv[0] == iv[1] ? "  (isolated touch)" : "") << "\n";
+  if (!a["first_contact"].is_null()) o << "  first contact: " << instant_text(a["first_contact"]) << "\n";
+  if (a["contacts"].empty()) o << "  external contacts: none\n";
+  for (const auto& c : a["contacts"]) o << "  external contact: " << instant_text(c) << "\n";
+  return o.str();
+}
+
+}  // namespace
+
+Command add_certify_command(CLI::App& app) {
+  auto args = std::make_shared<CertifyArgs>();
+  Command c;
+  c.sub = app.add_subcommand("certify",
+                             "Certify one scene: the exact answer (collision intervals, first contact, external contacts, each "
+                             "instant a proved rational bracket), a verdict for each double and MPFR pipeline against it, and a "
+                             "certificate that `eccd check-certificate` re-checks without the solver.");
+  auto* s = c.sub;
+  s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1)")->required();
+  s->add_option("--out", args->out, "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder)");
+  s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions of the floating pipelines judged")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
+  s->add_option("--tol", args->tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")->capture_default_str()->check(CLI::PositiveNumber);
+  s->add_flag("--no-floating", args->no_floating, "Certify only; do not run the floating pipelines");
+  s->add_flag("--json", args->json, "Print one JSON object (certified answer, verdicts, certificate path) instead of text");
+  c.run = [args]() {
+    Scene scene = read_scene_file(args->scene);
+    nlohmann::json doc = scene_document(args->scene);
+    fs::path out = args->out.empty() ? fs::path(fs::path(args->scene).stem().string() + ".cert.json") : fs::path(args->out);
+    std::cerr << "certify: exact pipeline and certificate ...\n";
+    nlohmann::json cert;
+    try {
+      cert = make_certificate(scene, doc);
+    } catch (const CertificationError& e) {
+      std::cerr << "eccd certify: " << args->scene << ": " << e.what() << "\n";
+      return 4;
+    }
+    // The writer's output must pass the checker before anyone sees it.
+    std::cerr << "certify: re-checking the certificate with the checker ...\n";
+    CertificateCheck chk = check_certificate(scene, doc, cert);
+    if (!chk.valid)
+      throw std::logic_error("the certificate fails its own check (" + chk.failed_claim + ": " + chk.reason + ")");
+
+    std::vector<Verdict> verdicts;
+    if (!args->no_floating) {
+      HarnessOptions ho;
+      ho.mpfr_bits = args->mpfr_bits;
+      for (const auto& p : harness_pipelines(scene.dim, ho)) {
+        if (p.opt.arith.kind == Arithmetic::Exact) continue;
+        std::cerr << "certify: " << p.label << " ...\n";
+        nlohmann::json got;
+        try {
+          got = solve_scene(scene, p.opt);
+        } catch (const std::exception& e) {
+          got = {{"error", e.what()}};
+        }
+        verdicts.push_back(judge(p.label, got, cert["answer"], args->tol));
+      }
+    }
+    nlohmann::json vj = nlohmann::json::array();
+    for (const auto& v : verdicts) vj.push_back(v.to_json());
+    cert["floating_verdicts"] = {{"tolerance", args->tol}, {"note", "informational: not part of what check-certificate proves"}, {"pipelines", vj}};
+    write_text_atomically(out, cert.dump(1) + "\n");
+
+    if (args->json) {
+      nlohmann::json j = {{"scene", scene.path}, {"certificate", out.string()}, {"answer", cert["answer"]}, {"verdicts", vj},
+                          {"projection", cert["projection"]["name"]}, {"certify_seconds", cert["seconds"]}};
+      std::cout << j.dump(2) << "\n";
+      return 0;
+    }
+    std::cout << certified_text(cert);
+    if (!verdicts.empty()) {
+      char tol[32];
+      std::snprintf(tol, sizeof tol, "%g", args->tol);
+      std::cout << "floating pipelines against the certified answer (tolerance " << tol << "):\n";
+      std::size_t w = 0;
+      for (const auto& v : verdicts) w = std::max(w, v.pipeline.size());
+      for (const auto& v : verdicts) {
+        char ms[32];
+        std::snprintf(ms, sizeof ms, "%9.2f ms", v.time_ms);
+        std::cout << "  " << v.pipeline << std::string(w - v.pipeline.size() + 2, ' ') << ms << "  " << v.text() << "\n";
+      }
+    }
+    std::cout << "certificate: " << out.string() << " (passes eccd check-certificate " << args->scene << " " << out.string() << ")\n";
+    return 0;
+  };
+  return c;
+}
+
+Command add_check_certificate_command(CLI::App& app) {
+  struct Args {
+    std::string scene, cert;
+    bool json = false;
+  };
+  auto args = std::make_shared<Args>();
+  Command c;
+  c.sub = app.add_subcommand("check-certificate",
+                             "Re-check a certificate written by `eccd certify` against its scene, without the solver: f and the "
+                             "projection recomputed exactly, one root per bracket and none elsewhere (Descartes' rule), each "
+                             "cell's status by the exact static test, each instant's evidence, and the answer. Exit 0 if every "
+                             "claim holds, 1 naming the first claim that fails, 2 for an unreadable file.");
+  c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about")->required();
+  c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/1)")->required();
+  c.sub->add_flag("--json", args->json, "Print one JSON object {valid, checked, failed_claim, reason}");
+  c.run = [args]() {
+    Scene scene = read_scene_file(args->scene);
+    nlohmann::json doc = scene_document(args->scene);
+    nlohmann::json cert;
+    {
+      std::ifstream in(args->cert, std::ios::binary);
+      if (!in) throw std::invalid_argument(args->cert + ": cannot read the file");
+      try {
+        cert = nlohmann::json::parse(in);
+      } catch (const nlohmann::json::parse_error& e) {
+        throw std::invalid_argument(args->cert + ": malformed JSON: " + e.what());
+      }
+    }
+    CertificateCheck r = check_certificate(scene, doc, cert);
+    if (args->json) {
+      nlohmann::json j = {{"valid", r.valid}, {"checked", r.checked}};
+      j["failed_claim"] = r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.failed_claim);
+      j["reason"] = r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.reason);
+      std::cout << j.dump(2) << "\n";
+    } else {
+      for (const auto& line : r.checked) std::cout << "  ok  " << line << "\n";
+      if (r.valid) std::cout << "VALID: every claim of " << args->cert << " holds for " << args->scene << "\n";
+      else std::cout << "REJECTED: " << r.failed_claim << ": " << r.reason << "\n";
+    }
+    return r.valid ? 0 : 1;
+  };
+  return c;
+}
+
+}  // namespace eccd

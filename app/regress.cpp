@@ -1,0 +1,195 @@
+// `eccd regress [DIR]`: every scene under DIR with a stored answer is
+// recomputed exactly and compared with it (compare/regress.hpp); with
+// --floating, every floating pipeline is also judged against the stored
+// answers (compare/verdict.hpp) and tabulated.
+#include "app/commands.hpp"
+#include "app/solve.hpp"
+#include "compare/harness.hpp"
+#include "compare/regress.hpp"
+#include "compare/verdict.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+namespace fs = std::filesystem;
+
+namespace eccd {
+
+namespace {
+
+struct RegressArgs {
+  std::string dir = "cases";
+  bool floating = false, json = false;
+  std::vector<int> mpfr_bits{128};
+  double tol = 1e-6;
+};
+
+// Does this JSON file claim to be a scene? (Other JSON, e.g. certificates, is skipped.)
+bool is_scene_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  return head.find("ellipse-ccd-scene/") != std::string::npos;
+}
+
+std::string answer_summary(const Answer& a) {
+  std::string s = a.collides ? "collides" : "free";
+  if (a.collides) s += ", " + std::to_string(a.intervals.size()) + " interval(s)";
+  s += ", " + std::to_string(a.contacts.size()) + " contact(s)";
+  return s;
+}
+
+struct PipelineTally {
+  int scenes = 0, agree = 0, wrong_collides = 0, missed = 0, spurious = 0, endpoints_off = 0, undecided = 0, errors = 0;
+  double max_err = 0;
+  std::vector<double> ms;
+};
+
+}  // namespace
+
+Command add_regress_command(CLI::App& app) {
+  auto args = std::make_shared<RegressArgs>();
+  Command c;
+  c.sub = app.add_subcommand("regress",
+                             "Recompute every scene under DIR that has a stored answer with the exact pipeline and compare: same "
+                             "collides, same numbers of intervals and contacts, each recomputed bracket overlapping the stored one. "
+                             "One line per scene, then a summary; exit 1 if any scene differs or fails.");
+  auto* s = c.sub;
+  s->add_option("DIR", args->dir, "Folder searched recursively for scene files (*.json)")->capture_default_str();
+  s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline and tabulate how each fares against the stored answers");
+  s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions for --floating")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
+  s->add_option("--tol", args->tol, "--floating: tolerance on instants (an interval end further off counts as off)")->capture_default_str()->check(CLI::PositiveNumber);
+  s->add_flag("--json", args->json, "Print one JSON object (per-scene results, summary, floating table) instead of text");
+  c.run = [args]() {
+    if (!fs::is_directory(args->dir)) throw std::invalid_argument(args->dir + ": not a directory");
+    std::vector<fs::path> files;
+    for (auto& e : fs::recursive_directory_iterator(args->dir))
+      if (e.is_regular_file() && e.path().extension() == ".json" && is_scene_file(e.path())) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    auto t0 = std::chrono::steady_clock::now();
+    int agree = 0, differ = 0, failed = 0, skipped = 0;
+    nlohmann::json rows = nlohmann::json::array();
+    std::vector<std::string> pipeline_order;
+    std::map<std::string, PipelineTally> tally;
+    std::size_t done = 0;
+    for (const auto& f : files) {
+      ++done;
+      std::string name = fs::relative(f, args->dir).string();
+      nlohmann::json row = {{"scene", name}};
+      std::string line;
+      try {
+        Scene sc = read_scene_file(f.string());
+        if (!sc.answer) {
+          ++skipped;
+          row["result"] = "skipped";
+          row["reason"] = "no stored answer";
+          if (!args->json) std::cout << "skip  " << name << ": no stored answer\n" << std::flush;
+          rows.push_back(row);
+          continue;
+        }
+        SolveOptions opt;
+        opt.arith = parse_arithmetic("exact");
+        nlohmann::json r = solve_scene(sc, opt);
+        Answer got = answer_from_json(nlohmann::json{{"collides", r["collides"]}, {"intervals", r["intervals"]},
+                                                     {"first_contact", r["first_contact"]}, {"contacts", r["contacts"]}},
+                                      "the exact pipeline", "answer");
+        std::vector<std::string> diff = answer_differences(*sc.answer, got);
+        char ms[32];
+        std::snprintf(ms, sizeof ms, "%.0f ms", r["time_ms"].get<double>());
+        row["time_ms"] = r["time_ms"];
+        if (diff.empty()) {
+          ++agree;
+          row["result"] = "ok";
+          line = "ok    " + name + "  " + std::to_string(sc.dim) + "D  " + answer_summary(got) + "  " + ms;
+        } else {
+          ++differ;
+          row["result"] = "differs";
+          row["differences"] = diff;
+          line = "FAIL  " + name + ": the stored answer differs from the recomputed exact one:";
+          for (const auto& d : diff) line += "\n        " + d;
+        }
+        if (args->floating) {
+          nlohmann::json stored = answer_to_json(*sc.answer);
+          nlohmann::json vs = nlohmann::json::array();
+          HarnessOptions ho;
+          ho.mpfr_bits = args->mpfr_bits;
+          for (const auto& p : harness_pipelines(sc.dim, ho)) {
+            if (p.opt.arith.kind == Arithmetic::Exact) continue;
+            nlohmann::json g;
+            try {
+              g = solve_scene(sc, p.opt);
+            } catch (const std::exception& e) {
+              g = {{"error", e.what()}};
+            }
+            Verdict v = judge(p.label, g, stored, args->tol);
+            if (!tally.count(p.label)) pipeline_order.push_back(p.label);
+            PipelineTally& t = tally[p.label];
+            ++t.scenes;
+            t.agree += v.agrees;
+            t.wrong_collides += v.wrong_collides;
+            t.missed += v.missed;
+            t.spurious += v.spurious;
+            t.endpoints_off += v.endpoints_off;
+            t.undecided += v.undecided;
+            t.errors += !v.error.empty();
+            if (v.max_endpoint_error) t.max_err = std::max(t.max_err, *v.max_endpoint_error);
+            t.ms.push_back(v.time_ms);
+            vs.push_back(v.to_json());
+          }
+          row["floating"] = vs;
+        }
+      } catch (const std::exception& e) {  // a bad scene file or a pipeline failure: a failure of this scene
+        ++failed;
+        row["result"] = "error";
+        row["error"] = e.what();
+        line = "FAIL  " + name + ": " + e.what();
+      }
+      rows.push_back(row);
+      if (!args->json) std::cout << line << "\n" << std::flush;
+      else std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), name.c_str());
+    }
+    if (args->json) std::fprintf(stderr, "\n");
+    double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    nlohmann::json table = nlohmann::json::array();
+    for (const auto& label : pipeline_order) {
+      PipelineTally& t = tally[label];
+      std::sort(t.ms.begin(), t.ms.end());
+      double med = t.ms.empty() ? 0 : t.ms[t.ms.size() / 2];
+      table.push_back({{"pipeline", label}, {"scenes", t.scenes}, {"agree", t.agree}, {"wrong_collides", t.wrong_collides},
+                       {"missed", t.missed}, {"false", t.spurious}, {"endpoints_off", t.endpoints_off}, {"undecided", t.undecided},
+                       {"errors", t.errors}, {"max_endpoint_error", t.max_err}, {"median_ms", med}});
+    }
+    int bad = differ + failed;
+    if (args->json) {
+      nlohmann::json j = {{"dir", args->dir}, {"scenes", rows}, {"agree", agree}, {"differ", differ}, {"errors", failed},
+                          {"skipped", skipped}, {"seconds", secs}, {"passed", bad == 0}};
+      if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
+      std::cout << j.dump(2) << "\n";
+      return bad ? 1 : 0;
+    }
+    if (args->floating && !table.empty()) {
+      std::cout << "\nfloating pipelines against the stored exact answers (tolerance " << args->tol << "):\n";
+      std::printf("  %-22s %6s %6s %6s %6s %6s %6s %6s %6s %10s %10s\n", "pipeline", "scenes", "agree", "wrongC", "missed", "false",
+                  "endOff", "undec", "errors", "max end err", "median ms");
+      for (const auto& r : table)
+        std::printf("  %-22s %6d %6d %6d %6d %6d %6d %6d %6d %10.2g %10.2f\n", r["pipeline"].get<std::string>().c_str(), r["scenes"].get<int>(),
+                    r["agree"].get<int>(), r["wrong_collides"].get<int>(), r["missed"].get<int>(), r["false"].get<int>(),
+                    r["endpoints_off"].get<int>(), r["undecided"].get<int>(), r["errors"].get<int>(), r["max_endpoint_error"].get<double>(),
+                    r["median_ms"].get<double>());
+      std::cout << "  (wrongC: wrong `collides`; missed / false: collision intervals or contacts missed or invented; endOff: interval ends off by more than the tolerance)\n";
+    }
+    std::printf("\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n", args->dir.c_str(),
+                agree + differ + failed, agree, differ, failed, skipped, secs);
+    if (bad) std::printf("REGRESSION: %d scene(s) do not match their stored answers (FAIL lines above)\n", bad);
+    return bad ? 1 : 0;
+  };
+  return c;
+}
+
+}  // namespace eccd
