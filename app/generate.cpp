@@ -1,10 +1,15 @@
 // `eccd generate`: seeded, reproducible scene files for the robustness report
-// (compare/scene_generator.hpp has the constructions).
+// (compare/scene_generator.hpp has the constructions). With --answer each
+// scene also carries the exact pipeline's answer (app/solve.hpp), so that a
+// folder of generated scenes is a regression corpus.
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
+#include "app/solve.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/scene_reader.hpp"
 
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -17,7 +22,7 @@ namespace {
 struct GenerateArgs {
   GeneratePlan plan;
   std::string out;
-  bool force = false, json = false;
+  bool force = false, json = false, answer = false;
 };
 }  // namespace
 
@@ -39,7 +44,8 @@ Command add_generate_command(CLI::App& app) {
   c.sub = app.add_subcommand("generate",
                              "Write seeded, reproducible scene files: rational motions of the given degrees in the families "
                              "colliding, free (collision-free), touch (touch-and-separate at a constructed instant) and "
-                             "near-miss (minimum separation d = 10^-e, constructed).");
+                             "near-miss (minimum separation d = 10^-e, constructed). With --answer each file also stores the exact "
+                             "pipeline's answer.");
   auto* s = c.sub;
   s->add_option("--out", args->out, "Folder to write the scenes into (created if missing)")->required();
   add_plan_options(s, args->plan);
@@ -47,20 +53,44 @@ Command add_generate_command(CLI::App& app) {
   s->add_option("--seed", args->plan.seed, "Run seed (each scene's seed derives from it and the combination)")->capture_default_str();
   s->add_flag("--force", args->force, "Overwrite existing scene files");
   s->add_flag("--json", args->json, "Print the list of written files as JSON");
+  s->add_flag("--answer", args->answer,
+              "Solve each scene with the exact pipeline and store its answer (collides, intervals, first_contact, "
+              "contacts) in the file under \"answer\"; progress (scene and exact time) goes to stderr. Exact solving "
+              "can take seconds per scene at high degree; nothing is written until every scene is solved");
   c.run = [args]() {
     auto specs = plan_scenes(args->plan);
-    fs::create_directories(args->out);
     // Build and validate everything before writing anything.
     std::vector<std::pair<fs::path, std::string>> files;
-    for (const auto& sp : specs) {
-      GeneratedScene g = generate_scene(sp);
+    SolveOptions exact;
+    exact.arith = parse_arithmetic("exact");
+    double total_s = 0;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      GeneratedScene g = generate_scene(specs[i]);
       std::string text = compact_json(g.doc.dump(1)) + "\n";
       fs::path path = fs::path(args->out) / (g.name + ".json");
-      parse_scene(text, path.string());  // the reader must accept what we write
       if (fs::exists(path) && !args->force)
         throw std::invalid_argument(path.string() + ": exists (use --force to overwrite)");
+      Scene scene = parse_scene(text, path.string());  // the reader must accept what we write
+      if (args->answer) {
+        std::fprintf(stderr, "[%zu/%zu] %s: ", i + 1, specs.size(), g.name.c_str());
+        std::fflush(stderr);
+        auto start = std::chrono::steady_clock::now();
+        nlohmann::json report = solve_scene(scene, exact);
+        double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        total_s += sec;
+        nlohmann::ordered_json ans;
+        for (const char* k : {"collides", "intervals", "first_contact", "contacts"})
+          ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
+        g.doc["answer"] = ans;
+        text = compact_json(g.doc.dump(1)) + "\n";
+        parse_scene(text, path.string());  // the reader checks the stored answer too
+        std::fprintf(stderr, "exact %.3f s, %s, %zu interval(s)\n", sec,
+                     report["collides"].get<bool>() ? "collides" : "free", report["intervals"].size());
+      }
       files.push_back({path, text});
     }
+    if (args->answer) std::fprintf(stderr, "exact answers: %zu scene(s) in %.3f s\n", specs.size(), total_s);
+    fs::create_directories(args->out);
     nlohmann::json list = nlohmann::json::array();
     for (const auto& [path, text] : files) {
       fs::path tmp = path;
