@@ -7,6 +7,8 @@
 #include "compare/harness.hpp"
 #include "compare/regress.hpp"
 #include "compare/verdict.hpp"
+#include "exact/certificate.hpp"
+#include "exact/certificate_check.hpp"
 #include "kernel/scene_reader.hpp"
 
 #include <algorithm>
@@ -24,7 +26,7 @@ namespace {
 
 struct RegressArgs {
   std::string dir = "cases";
-  bool floating = false, json = false;
+  bool floating = false, json = false, certify = false;
   std::vector<int> mpfr_bits{128};
   double tol = 1e-6;
 };
@@ -63,6 +65,9 @@ Command add_regress_command(CLI::App& app) {
   auto* s = c.sub;
   s->add_option("DIR", args->dir, "Folder searched recursively for scene files (*.json)")->capture_default_str();
   s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline and tabulate how each fares against the stored answers");
+  s->add_flag("--certify", args->certify,
+              "Also write each scene's certificate (in memory) and re-check it with the certificate checker; a certificate "
+              "that cannot be made or fails its check fails the scene");
   s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions for --floating")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--tol", args->tol, "--floating: tolerance on instants (an interval end further off counts as off)")->capture_default_str()->check(CLI::PositiveNumber);
   s->add_flag("--json", args->json, "Print one JSON object (per-scene results, summary, floating table) instead of text");
@@ -113,6 +118,25 @@ Command add_regress_command(CLI::App& app) {
           row["differences"] = diff;
           line = "FAIL  " + name + ": the stored answer differs from the recomputed exact one:";
           for (const auto& d : diff) line += "\n        " + d;
+        }
+        if (args->certify) {
+          std::ifstream in(f, std::ios::binary);
+          nlohmann::json doc = nlohmann::json::parse(in);
+          auto c0 = std::chrono::steady_clock::now();
+          nlohmann::json cert = make_certificate(sc, doc);
+          CertificateCheck chk = check_certificate(sc, doc, cert);
+          double cs = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
+          row["certificate"] = {{"valid", chk.valid}, {"seconds", cs}};
+          char buf[48];
+          std::snprintf(buf, sizeof buf, ", certificate checked (%.2f s)", cs);
+          if (chk.valid) {
+            line += buf;
+          } else {
+            row["certificate"]["failed_claim"] = chk.failed_claim;
+            row["certificate"]["reason"] = chk.reason;
+            if (diff.empty()) { --agree; ++differ; row["result"] = "differs"; }
+            line = "FAIL  " + name + ": its certificate fails the checker: " + chk.failed_claim + ": " + chk.reason;
+          }
         }
         if (args->floating) {
           nlohmann::json stored = answer_to_json(*sc.answer);

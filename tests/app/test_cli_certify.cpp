@@ -120,15 +120,17 @@ TEST_CASE("check-certificate: unreadable or malformed files exit 2 with the file
   fs::remove_all(dir);
 }
 
-TEST_CASE("regress cases/: every stored answer is reproduced; one edited endpoint fails and names the case", "[cli][regress]") {
+TEST_CASE("regress cases/: every stored answer is reproduced and certified; one edited endpoint fails and names the case", "[cli][regress]") {
   std::string out;
-  int rc = run(exe + " regress " + src + "/cases", out);
+  int rc = run(exe + " regress " + src + "/cases --certify", out);
   INFO(out);
   REQUIRE(rc == 0);
   std::smatch m;
   REQUIRE(std::regex_search(out, m, std::regex(R"((\d+) scene\(s\) checked, (\d+) agree, 0 differ, 0 failed)")));
   std::printf("regress cases/: %s scenes agree with their stored answers\n", m[2].str().c_str());
   CHECK(std::stoi(m[1]) >= 100);
+  CHECK(out.find("its certificate fails") == std::string::npos);
+  CHECK(out.find("certificate checked") != std::string::npos);
 
   // Edit the end of the first interval of one stored answer in a copy.
   fs::path dir = temp_dir("regress");
