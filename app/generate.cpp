@@ -2,6 +2,7 @@
 // (compare/scene_generator.hpp has the constructions). With --answer each
 // scene also carries the exact pipeline's answer (app/solve.hpp), so that a
 // folder of generated scenes is a regression corpus.
+#include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
 #include "app/solve.hpp"
@@ -78,10 +79,7 @@ Command add_generate_command(CLI::App& app) {
         nlohmann::json report = solve_scene(scene, exact);
         double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         total_s += sec;
-        nlohmann::ordered_json ans;
-        for (const char* k : {"collides", "intervals", "first_contact", "contacts"})
-          ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
-        g.doc["answer"] = ans;
+        g.doc["answer"] = stored_answer_of(report);
         text = compact_json(g.doc.dump(1)) + "\n";
         parse_scene(text, path.string());  // the reader checks the stored answer too
         std::fprintf(stderr, "exact %.3f s, %s, %zu interval(s)\n", sec,
@@ -93,14 +91,7 @@ Command add_generate_command(CLI::App& app) {
     fs::create_directories(args->out);
     nlohmann::json list = nlohmann::json::array();
     for (const auto& [path, text] : files) {
-      fs::path tmp = path;
-      tmp += ".tmp";
-      {
-        std::ofstream o(tmp);
-        o << text;
-        if (!o) throw std::runtime_error("cannot write " + tmp.string());
-      }
-      fs::rename(tmp, path);
+      write_text_atomically(path, text);
       list.push_back(path.string());
     }
     if (args->json) std::cout << list.dump(2) << "\n";

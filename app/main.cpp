@@ -8,6 +8,7 @@
 // (check-certificate) or a regression (regress); 2 bad input (a scene file or
 // an option); 3 a request the pipeline refuses (e.g. a cycloidal motion in
 // exact arithmetic); 4 a scene the certifier cannot certify. Nothing is written to stdout unless the command succeeds.
+#include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
 #include "app/solve.hpp"
@@ -47,16 +48,8 @@ std::string short_answer(const nlohmann::json& r) {
 void write_answer(const std::string& path, const nlohmann::json& report) {
   std::ifstream in(path);
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(in);
-  nlohmann::ordered_json ans;
-  for (const char* k : {"collides", "intervals", "first_contact", "contacts"}) ans[k] = nlohmann::ordered_json::parse(report[k].dump());
-  doc["answer"] = ans;
-  std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << compact_json(doc.dump(1)) << "\n";
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  fs::rename(tmp, path);
+  doc["answer"] = stored_answer_of(report);
+  write_text_atomically(path, compact_json(doc.dump(1)) + "\n");
 }
 
 int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool json) {

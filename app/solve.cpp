@@ -221,6 +221,12 @@ nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt) {
 }
 }  // namespace
 
+nlohmann::ordered_json stored_answer_of(const nlohmann::json& report) {
+  nlohmann::ordered_json ans;
+  for (const char* k : {"collides", "intervals", "first_contact", "contacts"}) ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
+  return ans;
+}
+
 std::string summary_text(const nlohmann::json& r) {
   std::ostringstream o;
   auto inst = [](const nlohmann::json& i) {

@@ -30,6 +30,9 @@ struct SolveOptions {
 
 // Runs the 2D or 3D pipeline; returns the full JSON report (spec answer + extras).
 nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt);
+// The spec's answer (collides, intervals, first_contact, contacts, in that
+// order) out of that JSON: what a scene file stores under "answer".
+nlohmann::ordered_json stored_answer_of(const nlohmann::json& report);
 // A few human-readable lines from that JSON.
 std::string summary_text(const nlohmann::json& report);
 
