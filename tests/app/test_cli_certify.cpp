@@ -120,7 +120,7 @@ TEST_CASE("check-certificate: unreadable or malformed files exit 2 with the file
   fs::remove_all(dir);
 }
 
-TEST_CASE("regress cases/: every stored answer is reproduced and certified; one edited endpoint fails and names the case", "[cli][regress]") {
+TEST_CASE("regress cases/: every stored answer is reproduced and certified, and one edited endpoint fails and names the case", "[cli][regress]") {
   std::string out;
   int rc = run(exe + " regress " + src + "/cases --certify", out);
   INFO(out);

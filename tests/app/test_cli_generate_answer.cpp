@@ -63,7 +63,7 @@ void check_stored_answer(const std::string& file) {
 }
 }  // namespace
 
-TEST_CASE("eccd generate --answer stores the exact answer; without it there is none", "[app][cli][generator][generate-answer]") {
+TEST_CASE("eccd generate --answer stores the exact answer, and without it there is none", "[app][cli][generator][generate-answer]") {
   TempDir t;
   const std::string exe = ECCD_EXE;
   std::string out;

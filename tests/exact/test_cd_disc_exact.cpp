@@ -34,7 +34,7 @@ TEST_CASE("003 Example 2: the exact pipeline proves a single isolated touch at t
   CHECK(std::abs(std::stod(a.contact_points[0].x[1])) < 1e-9);
 }
 
-TEST_CASE("003 Example 2: f's λ³ coefficient is the paper's up to a constant; Δ has degree 96", "[exact][paper003]") {
+TEST_CASE("003 Example 2: f's λ³ coefficient is the paper's up to a constant, and Δ has degree 96", "[exact][paper003]") {
   Scene s = read_scene_file(case_path("paper003/example2.json"));
   auto r = solve_exact(s);
   // 003 section VI-C prints g3(t) = -4096t^24 + 49152t^23 - ... + 24t - 1.

@@ -21,7 +21,7 @@ TEST_CASE("The quartic discriminant is Res(f, f') / lc(f)", "[subresultants]") {
   }
 }
 
-TEST_CASE("The first non-zero psc gives the gcd degree; S_j is the gcd", "[subresultants]") {
+TEST_CASE("The first non-zero psc gives the gcd degree, and S_j is the gcd", "[subresultants]") {
   // f = (λ+2)² (λ-1)(λ-3): gcd(f, f') = λ + 2, so psc_0 = 0, psc_1 ≠ 0, S_1 ∝ λ + 2
   auto mul = [](std::vector<Rational> a, const std::vector<Rational>& b) {
     std::vector<Rational> r(a.size() + b.size() - 1, Rational(0));
