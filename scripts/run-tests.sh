@@ -1,6 +1,15 @@
 #!/usr/bin/env bash
 # Builds everything and runs the whole test suite (Catch2 tests through CTest).
+# The suite includes `eccd regress cases/ --certify` over the whole corpus and
+# the metamorphic tests over generated scenes; their seeds are printed at the end.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+log=build/Testing/Temporary/LastTest.log
+if [ -f "$log" ]; then
+  echo "== metamorphic tests ran on these generated scenes (rerun: ECCD_METAMORPHIC_SEED=BASE build/eccd_tests '[metamorphic]') =="
+  grep -h '^metamorphic: ' "$log" || true
+  echo "== regression corpus =="
+  grep -h '^regress cases/: ' "$log" || true
+fi
