@@ -1,6 +1,8 @@
 // Scene generators (see compare/scene_generator.hpp for the constructions).
 #include "compare/scene_generator.hpp"
 
+#include "compare/seeded_rng.hpp"
+
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/poly_matrix.hpp"
@@ -15,23 +17,7 @@ namespace eccd {
 
 namespace {
 
-// splitmix64: a small, portable generator (std distributions differ between
-// standard libraries; these numbers must not).
-struct Rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  long uniform(long lo, long hi) { return lo + long(next() % std::uint64_t(hi - lo + 1)); }
-  Rational frac(long lo, long hi, long den) {  // gmpxx's (num, den) constructor does not canonicalize
-    Rational q(uniform(lo, hi), den);
-    q.canonicalize();
-    return q;
-  }
-};
+using Rng = SeededRng;
 
 std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
   Rng r{a ^ (b * 0x2545f4914f6cdd1dULL)};

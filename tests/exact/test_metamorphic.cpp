@@ -18,6 +18,7 @@
 // uniform scaling by a random rational k and the time reversal. The
 // parameters of the transformations derive from the scene's seed.
 #include "compare/scene_generator.hpp"
+#include "compare/seeded_rng.hpp"
 #include "kernel/scene_reader.hpp"
 #include "tests/support/metamorphic.hpp"
 #include "tests/support/scenes3d.hpp"
@@ -54,21 +55,8 @@ std::uint64_t base_seed() {
   return seed;
 }
 
-// splitmix64 for the parameters of the transformations (rotation, translation, k).
-struct Rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  long uniform(long lo, long hi) { return lo + long(next() % std::uint64_t(hi - lo + 1)); }
-  Rational frac(long lo, long hi, long den) {
-    Rational q(uniform(lo, hi), den);
-    q.canonicalize();
-    return q;
-  }
+// Seeded parameters of the transformations (rotation, translation, k).
+struct Rng : SeededRng {
   RPoly poly(int deg) {
     std::vector<Rational> c;
     for (int i = 0; i <= deg; ++i) c.push_back(frac(-9, 9, uniform(1, 4)));
