@@ -95,6 +95,9 @@ Command add_certify_command(CLI::App& app) {
     } catch (const CertificationError& e) {
       std::cerr << "eccd certify: " << args->scene << ": " << e.what() << "\n";
       return 4;
+    } catch (const std::invalid_argument& e) {  // a scene the exact pipeline refuses (cycloidal motion)
+      std::cerr << "eccd certify: " << args->scene << ": " << e.what() << "\n";
+      return 3;
     }
     // The writer's output must pass the checker before anyone sees it.
     std::cerr << "certify: re-checking the certificate with the checker ...\n";

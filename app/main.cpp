@@ -7,7 +7,7 @@
 // Exit status: 0 success; 1 internal error, a rejected certificate
 // (check-certificate) or a regression (regress); 2 bad input (a scene file or
 // an option); 3 a request the pipeline refuses (e.g. a cycloidal motion in
-// exact arithmetic); 4 a scene the certifier cannot certify. Nothing is written to stdout unless the command succeeds.
+// exact arithmetic, also by certify); 4 a scene the certifier cannot certify. Nothing is written to stdout unless the command succeeds.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/json_text.hpp"

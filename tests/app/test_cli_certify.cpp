@@ -117,6 +117,9 @@ TEST_CASE("check-certificate: unreadable or malformed files exit 2 with the file
   CHECK(run(exe + " check-certificate " + scene + " " + (dir / "bad.json").string(), out) == 2);
   CHECK(run(exe + " certify " + (dir / "bad.json").string() + " --out " + (dir / "c.json").string(), out) == 2);
   CHECK_FALSE(fs::exists(dir / "c.json"));
+  // A scene the exact pipeline refuses: exit 3, no certificate.
+  CHECK(run(exe + " certify " + src + "/tests/data/bad/cycloidal_exact.json --out " + (dir / "c.json").string(), out) == 3);
+  CHECK_FALSE(fs::exists(dir / "c.json"));
   fs::remove_all(dir);
 }
 
