@@ -374,8 +374,13 @@ int run_report(const ReportArgs& a) {
     for (auto& e : fs::recursive_directory_iterator(dir))
       if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
     std::sort(files.begin(), files.end());
+    std::size_t corpus = 0;
     for (const auto& f : files) {
       Scene s = read_scene_file(f.string());  // a bad file stops the run before any work (exit 2)
+      if (source == "cases" && spec_from_note(s.note)) {  // cases/generated: the report generates its own
+        ++corpus;
+        continue;
+      }
       if (scene_degree(s) < 0) {
         std::fprintf(stderr, "eccd report: %s: skipped (cycloidal motion: no exact ground truth)\n", f.string().c_str());
         continue;
@@ -385,6 +390,9 @@ int run_report(const ReportArgs& a) {
       tasks.push_back({Task::SceneTask, text, f.string(), source});
       source == "cases" ? ++from_cases : ++generated;
     }
+    if (corpus)
+      std::fprintf(stderr, "eccd report: %s: %zu generated corpus scene(s) left out (the report generates its own; "
+                           "--scenes %s/generated includes them)\n", dir.c_str(), corpus, dir.c_str());
   };
   if (!a.scenes.empty()) add_dir(a.scenes, "generated");
   if (!a.cases.empty()) add_dir(a.cases, "cases");
@@ -559,7 +567,7 @@ Command add_report_command(CLI::App& app) {
   add_plan_options(s, a->plan);
   s->add_option("--mpfr", a->harness.mpfr_bits, "MPFR precisions in bits")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--grid", a->harness.grid, "N of the 3D sampling:N and marching:N baselines")->capture_default_str()->check(CLI::Range(1, 100000));
-  s->add_option("--cases", a->cases, "Also run the scene files under this folder (their stored answers are not used: exact is recomputed); '' for none")
+  s->add_option("--cases", a->cases, "Also run the scene files under this folder (their stored answers are not used: exact is recomputed; scenes written by eccd generate are left out, see --scenes); '' for none")
       ->capture_default_str();
   s->add_option("--scenes", a->scenes, "Run the scene files under this folder instead of generating scenes");
   s->add_option("--jobs", a->jobs, "Worker processes (default: the number of cores)");
