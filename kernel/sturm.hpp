@@ -50,6 +50,7 @@ std::vector<Poly<T>> sturm_sequence(const Poly<T>& p) {
 }
 
 // Sign changes of the sequence at x; x == nullopt with dir = -1 / +1 means -inf / +inf.
+// -1 if a sign is uncertain (interval arithmetic, NaN): then there is no count.
 template <class T>
 int sturm_variations(const std::vector<Poly<T>>& s, const std::optional<T>& x, int dir = 1) {
   int v = 0;
@@ -62,7 +63,8 @@ int sturm_variations(const std::vector<Poly<T>>& s, const std::optional<T>& x, i
       sg = eccd::sign(p.lead());
       if (dir < 0 && p.degree() % 2 == 1) sg = sg * Sign::negative;
     }
-    if (sg == Sign::zero || sg == Sign::uncertain) continue;
+    if (sg == Sign::uncertain) return -1;
+    if (sg == Sign::zero) continue;
     if (last != Sign::zero && sg != last) ++v;
     last = sg;
   }
@@ -70,11 +72,15 @@ int sturm_variations(const std::vector<Poly<T>>& s, const std::optional<T>& x, i
 }
 
 // Distinct real roots of p in (a, b]; a or b = nullopt stands for -inf / +inf.
+// -1: p is the zero polynomial (every point is a root); -2: a sign along the
+// sequence was uncertain, so there is no count (never with exact T).
 template <class T>
 int count_roots(const Poly<T>& p, const std::optional<T>& a, const std::optional<T>& b) {
   auto s = sturm_sequence(p);
-  if (s.empty()) return -1;  // the zero polynomial: every point is a root
-  return sturm_variations(s, a, -1) - sturm_variations(s, b, +1);
+  if (s.empty()) return -1;
+  int va = sturm_variations(s, a, -1), vb = sturm_variations(s, b, +1);
+  if (va < 0 || vb < 0) return -2;
+  return va - vb;
 }
 
 // Distinct real roots of p in the closed interval [a, b] (exact T: a proof).
