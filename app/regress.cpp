@@ -27,6 +27,7 @@ namespace {
 struct RegressArgs {
   std::string dir = "cases";
   bool floating = false, json = false, certify = false;
+  std::string arith = "exact";
   std::vector<int> mpfr_bits{128};
   double tol = 1e-6;
 };
@@ -65,6 +66,11 @@ Command add_regress_command(CLI::App& app) {
   auto* s = c.sub;
   s->add_option("DIR", args->dir, "Folder searched recursively for scene files (*.json)")->capture_default_str();
   s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline and tabulate how each fares against the stored answers");
+  s->add_option("--arith", args->arith,
+                "Certified arithmetic that recomputes the answers: exact, or certified (interval arithmetic escalating to "
+                "exact; the summary says how often it escalated)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exact", "certified"}));
   s->add_flag("--certify", args->certify,
               "Also write each scene's certificate (in memory) and re-check it with the certificate checker; a certificate "
               "that cannot be made or fails its check fails the scene");
@@ -78,7 +84,7 @@ Command add_regress_command(CLI::App& app) {
       if (e.is_regular_file() && e.path().extension() == ".json" && is_scene_file(e.path())) files.push_back(e.path());
     std::sort(files.begin(), files.end());
     auto t0 = std::chrono::steady_clock::now();
-    int agree = 0, differ = 0, failed = 0, skipped = 0;
+    int agree = 0, differ = 0, failed = 0, skipped = 0, escalated = 0;
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::string> pipeline_order;
     std::map<std::string, PipelineTally> tally;
@@ -99,8 +105,19 @@ Command add_regress_command(CLI::App& app) {
           continue;
         }
         SolveOptions opt;
-        opt.arith = parse_arithmetic("exact");
+        opt.arith = parse_arithmetic(args->arith);
         nlohmann::json r = solve_scene(sc, opt);
+        std::string how;
+        if (r.contains("escalated")) {
+          row["escalated"] = r["escalated"];
+          if (r["escalated"].get<bool>()) {
+            ++escalated;
+            row["escalation_reason"] = r["escalation_reason"];
+            how = "  (escalated to exact: " + r["escalation_reason"].get<std::string>() + ")";
+          } else {
+            how = "  (decided in interval arithmetic)";
+          }
+        }
         Answer got = answer_from_json(nlohmann::json::parse(stored_answer_of(r).dump()), "the exact pipeline", "answer");
         std::vector<std::string> diff = answer_differences(*sc.answer, got);
         char ms[32];
@@ -109,12 +126,12 @@ Command add_regress_command(CLI::App& app) {
         if (diff.empty()) {
           ++agree;
           row["result"] = "ok";
-          line = "ok    " + name + "  " + std::to_string(sc.dim) + "D  " + answer_summary(got) + "  " + ms;
+          line = "ok    " + name + "  " + std::to_string(sc.dim) + "D  " + answer_summary(got) + "  " + ms + how;
         } else {
           ++differ;
           row["result"] = "differs";
           row["differences"] = diff;
-          line = "FAIL  " + name + ": the stored answer differs from the recomputed exact one:";
+          line = "FAIL  " + name + ": the stored answer differs from the recomputed " + args->arith + " one:";
           for (const auto& d : diff) line += "\n        " + d;
         }
         if (args->certify) {
@@ -189,8 +206,9 @@ Command add_regress_command(CLI::App& app) {
     }
     int bad = differ + failed;
     if (args->json) {
-      nlohmann::json j = {{"dir", args->dir}, {"scenes", rows}, {"agree", agree}, {"differ", differ}, {"errors", failed},
-                          {"skipped", skipped}, {"seconds", secs}, {"passed", bad == 0}};
+      nlohmann::json j = {{"dir", args->dir}, {"arith", args->arith}, {"scenes", rows}, {"agree", agree}, {"differ", differ},
+                          {"errors", failed}, {"skipped", skipped}, {"seconds", secs}, {"passed", bad == 0}};
+      if (args->arith == "certified") j["escalated"] = escalated;
       if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
       std::cout << j.dump(2) << "\n";
       return bad ? 1 : 0;
@@ -208,6 +226,9 @@ Command add_regress_command(CLI::App& app) {
     }
     std::printf("\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n", args->dir.c_str(),
                 agree + differ + failed, agree, differ, failed, skipped, secs);
+    if (args->arith == "certified")
+      std::printf("certified mode: %d of %d scene(s) escalated to exact arithmetic, %d decided in interval arithmetic\n", escalated,
+                  agree + differ, agree + differ - escalated);
     if (bad) std::printf("REGRESSION: %d scene(s) do not match their stored answers (FAIL lines above)\n", bad);
     return bad ? 1 : 0;
   };

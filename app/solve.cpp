@@ -3,6 +3,7 @@
 #include "app/solve.hpp"
 
 #include "exact/cd_disc_exact.hpp"
+#include "floating/certified_policy.hpp"
 #include "floating/ccd3_baselines.hpp"
 #include "kernel/bezier_ccd.hpp"
 #include "kernel/ccd_projection.hpp"
@@ -21,6 +22,7 @@ std::string Arithmetic::name() const {
   switch (kind) {
     case Double: return "double";
     case Mpfr: return "mpfr:" + std::to_string(bits);
+    case Certified: return "certified";
     default: return "exact";
   }
 }
@@ -29,6 +31,7 @@ Arithmetic parse_arithmetic(const std::string& text) {
   Arithmetic a;
   if (text == "double") { a.kind = Arithmetic::Double; a.bits = 53; return a; }
   if (text == "exact") { a.kind = Arithmetic::Exact; return a; }
+  if (text == "certified") { a.kind = Arithmetic::Certified; a.bits = 53; return a; }
   if (text.rfind("mpfr:", 0) == 0) {
     std::string b = text.substr(5);
     if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6)
@@ -39,7 +42,7 @@ Arithmetic parse_arithmetic(const std::string& text) {
       throw std::invalid_argument("--arith " + text + ": MPFR precision must be between 53 and 65536 bits");
     return a;
   }
-  throw std::invalid_argument("--arith " + text + ": expected double, mpfr:BITS or exact");
+  throw std::invalid_argument("--arith " + text + ": expected double, mpfr:BITS, exact or certified");
 }
 
 namespace {
@@ -152,20 +155,64 @@ nlohmann::json run_floating_3d(const PreparedPair<4>& p, const SolveOptions& opt
   return j;
 }
 
+// The exact pipeline's JSON for a prepared pair (2D: cd_disc, 3D: projection).
+template <int N>
+nlohmann::json run_exact(const PreparedPair<N>& p, const SolveOptions& opt) {
+  ExactPolicy pol;
+  MovingPair<Rational, N> m = to_arithmetic<Rational, N>(p, Rational(1));
+  nlohmann::json j;
+  if constexpr (N == 3) {
+    j = report_json(cd_disc(m, pol, Variant(opt.variant)));
+  } else {
+    j = report_json(ccd_projection(m, pol, opt.first_contact), 3);
+    j["method"] = "projection";
+  }
+  j["basis"] = "exact";
+  j["certified"] = true;
+  return j;
+}
+
+// --arith certified: the same pipeline in interval arithmetic; where a sign is
+// uncertain (Escalate, or an undecided instant) the scene is solved exactly.
+template <int N>
+nlohmann::json run_certified(const PreparedPair<N>& p, const SolveOptions& opt) {
+  auto start = std::chrono::steady_clock::now();
+  std::string reason;
+  try {
+    CertifiedPolicy<Interval> pol;
+    MovingPair<Interval, N> m = to_arithmetic<Interval, N>(p, Interval(0));
+    CdDiscResult<Interval> r;
+    if constexpr (N == 3) r = cd_disc(m, pol, Variant(opt.variant));
+    else r = ccd_projection(m, pol, opt.first_contact);
+    if (r.answer.undecided.empty()) {
+      nlohmann::json j = report_json(r, N - 1);
+      j["work"]["interval_pieces"] = pol.pieces;
+      j["escalated"] = false;
+      j["decided_in"] = "interval";
+      j["basis"] = "bernstein";
+      j["certified"] = true;
+      if (N == 4) j["method"] = "projection";
+      return j;
+    }
+    reason = std::to_string(r.answer.undecided.size()) + " instant(s) undecided in interval arithmetic";
+  } catch (const Escalate& e) {
+    reason = e.what();
+  }
+  nlohmann::json j = run_exact<N>(p, opt);
+  j["escalated"] = true;
+  j["escalation_reason"] = reason;
+  j["decided_in"] = "exact";
+  j["time_ms"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+  return j;
+}
+
 nlohmann::json solve_3d(const Scene& scene, const SolveOptions& opt) {
   PreparedPair<4> p = prepare_pair<4>(scene);
   switch (opt.arith.kind) {
     case Arithmetic::Double: return run_floating_3d<double>(p, opt, 1.0);
     case Arithmetic::Mpfr: return run_floating_3d<eccd::Mpfr>(p, opt, eccd::Mpfr(mpq_class(1), opt.arith.bits));
-    default: {
-      ExactPolicy pol;
-      MovingPair<Rational, 4> m = to_arithmetic<Rational, 4>(p, Rational(1));
-      nlohmann::json j = report_json(ccd_projection(m, pol, opt.first_contact), 3);
-      j["basis"] = "exact";
-      j["method"] = "projection";
-      j["certified"] = true;
-      return j;
-    }
+    case Arithmetic::Certified: return run_certified<4>(p, opt);
+    default: return run_exact<4>(p, opt);
   }
 }
 
@@ -200,21 +247,15 @@ namespace {
 nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt) {
   if (opt.variant < 0 || opt.variant > 3) throw std::invalid_argument("--variant must be 0, 1, 2 or 3");
   bool cyclo = std::holds_alternative<CycloidalMotion>(scene.a.motion) || std::holds_alternative<CycloidalMotion>(scene.b.motion);
-  if (cyclo && opt.arith.kind != Arithmetic::Exact)
+  if (cyclo && (opt.arith.kind == Arithmetic::Double || opt.arith.kind == Arithmetic::Mpfr))
     throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
   PreparedPair<3> p = prepare_pair<3>(scene);  // refuses cycloidal motions for exact arithmetic
   nlohmann::json j;
   switch (opt.arith.kind) {
     case Arithmetic::Double: j = run_floating<double>(p, opt, 1.0); break;
     case Arithmetic::Mpfr: j = run_floating<eccd::Mpfr>(p, opt, eccd::Mpfr(mpq_class(1), opt.arith.bits)); break;
-    case Arithmetic::Exact: {
-      ExactPolicy pol;
-      MovingPair<Rational, 3> m = to_arithmetic<Rational, 3>(p, Rational(1));
-      j = report_json(cd_disc(m, pol, Variant(opt.variant)));
-      j["basis"] = "exact";
-      j["certified"] = true;
-      break;
-    }
+    case Arithmetic::Exact: j = run_exact<3>(p, opt); break;
+    case Arithmetic::Certified: j = run_certified<3>(p, opt); break;
   }
   j["method"] = "cd-disc";
   return j;

@@ -1,7 +1,9 @@
 #pragma once
 // `eccd solve`: one scene, one arithmetic, one answer (JSON and a summary).
 //
-// Arithmetic names: "double", "mpfr:BITS" (53 <= BITS <= 65536), "exact".
+// Arithmetic names: "double", "mpfr:BITS" (53 <= BITS <= 65536), "exact",
+// "certified" (interval arithmetic, escalating to exact where a sign is
+// uncertain: floating/certified_policy.hpp; the JSON says whether it did).
 // Errors: std::invalid_argument for a request the pipeline refuses (a
 // cycloidal motion in exact arithmetic, an unknown arithmetic or method); kernel/scene_reader.hpp's SceneError for bad files.
 #include "kernel/scene.hpp"
@@ -12,8 +14,8 @@
 namespace eccd {
 
 struct Arithmetic {
-  enum Kind { Double, Mpfr, Exact } kind = Exact;
-  int bits = 0;  // MPFR precision; 53 for double; 0 for exact
+  enum Kind { Double, Mpfr, Exact, Certified } kind = Exact;
+  int bits = 0;  // MPFR precision; 53 for double and certified (intervals of doubles); 0 for exact
   std::string name() const;
 };
 Arithmetic parse_arithmetic(const std::string& text);

@@ -1,0 +1,195 @@
+#pragma once
+// The certified policy: kernel/cd_disc.hpp (2D) and kernel/ccd_projection.hpp
+// (3D) in interval arithmetic (floating/interval.hpp), where every decision is
+// proved or the scene escalates (`--arith certified`, app/solve.cpp).
+//
+// Statement. The projection polynomial (Δ in 2D, the discriminant or psc_k in
+// 3D) is built in Bernstein form over intervals that enclose the exact
+// coefficients. Its roots in [0, 1] are isolated by Bernstein subdivision with
+// Descartes' rule for the Bernstein basis (the number V of sign changes of the
+// coefficients bounds the roots in the open interval, with the same parity):
+// a piece where every coefficient has a certain sign and V = 0 holds no root;
+// V = 1 with certain non-zero end values holds exactly one root, and the piece
+// is its bracket, refined by bisection while the midpoint's sign is certain.
+// Every sign at a root is the certain sign of the polynomial's range over the
+// whole bracket (interval evaluation); every cell is decided at a dyadic
+// sample whose static test signs are all certain. Anything uncertain — a
+// coefficient or value whose interval contains 0, a piece that stays
+// undecided down to 2^-max_depth (a multiple root: every touch-and-separate
+// scene), a possible root at a split point, a projection that may vanish
+// identically — throws Escalate, and the caller re-solves the scene in a
+// stronger arithmetic (exact rationals). With no Escalate, the answer is
+// certified: brackets are dyadic rationals that provably hold one root each.
+// Requirements on T: Interval (or any scalar_traits<T> whose sign() is
+// certain-or-uncertain and whose operations enclose exact results).
+#include "exact/cd_disc_exact.hpp"  // simplest_dyadic_between
+#include "floating/interval.hpp"
+#include "kernel/answer.hpp"
+#include "kernel/bernstein.hpp"
+#include "kernel/polynomial.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eccd {
+
+struct Escalate : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct CertifiedRoot {
+  Rational lo, hi;  // dyadic bracket holding exactly one root
+};
+
+template <class T>
+struct CertifiedPolicy {
+  using Rep = Bern<T>;
+  using Root = CertifiedRoot;
+  int max_depth = 48;    // isolation gives up (escalates) below pieces of width 2^-max_depth
+  int refine_bits = 30;  // brackets are refined to width <= 2^-refine_bits while signs are certain
+  T like;
+  mutable long pieces = 0;  // Bernstein pieces examined (work counter)
+
+  explicit CertifiedPolicy(const T& like_value = T(0)) : like(like_value) {}
+
+  static T of(const Rational& q) { return scalar_traits<T>::from_rational(q, T(0)); }
+
+  template <class F>
+  Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
+    std::vector<Bern<T>> b(g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      b[i] = to_bernstein(g[i], std::max(g[i].degree(), 0));
+      if (g[i].is_zero()) b[i].b.assign(1, T(0));
+    }
+    return formula(b);
+  }
+  template <class F>
+  Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
+    return build_n(g, [&](const auto& G) { return formula(G[3], G[2], G[1], G[0]); });
+  }
+  bool identically_zero(const Bern<T>& q) const {
+    bool all_zero = true;
+    for (const auto& x : q.b) {
+      Sign s = eccd::sign(x);
+      if (s == Sign::positive || s == Sign::negative) return false;
+      if (s == Sign::uncertain) all_zero = false;
+    }
+    if (all_zero) return true;
+    throw Escalate("cannot tell in interval arithmetic whether the projection vanishes identically");
+  }
+
+  std::vector<Root> roots(const Bern<T>& q, bool /*first_only*/) const {
+    std::vector<Root> out;
+    if (is_certain_nonzero(q.b.front()) == false || is_certain_nonzero(q.b.back()) == false)
+      throw Escalate("the projection may vanish at t = 0 or t = 1");
+    whole = &q;
+    isolate(q, Rational(0), Rational(1), 0, out);
+    whole = nullptr;
+    return out;
+  }
+  // The certain sign of q over the whole bracket, or uncertain.
+  Sign sign_at(const Bern<T>& q, const Root& r) const {
+    Interval t = hull(r.lo, r.hi);
+    return eccd::sign(q(T(t)));
+  }
+  Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
+  T sample_between(const Root* l, const Root* r) const {
+    return of(simplest_dyadic_between(l ? l->hi : Rational(0), r ? r->lo : Rational(1)));
+  }
+  // Point intervals only (0, 1 and dyadic samples): their exact value.
+  Instant instant_at(const T& t) const {
+    if (t.lo != t.hi) throw std::logic_error("internal error: a certified instant that is not a point");
+    Rational q(t.lo);
+    return Instant{decimal_string(q), q, q};
+  }
+  Instant instant(const Root& r) const {
+    Rational mid = (r.lo + r.hi) / 2;
+    return Instant{decimal_string(mid), r.lo, r.hi};
+  }
+  T value(const Root& r) const { return T(hull(r.lo, r.hi)); }
+  int multiplicity(const Root&) const { return 1; }
+  bool at_zero(const Root&) const { return false; }
+  bool at_one(const Root&) const { return false; }
+
+ private:
+  static Interval hull(const Rational& lo, const Rational& hi) {
+    Interval a = interval_of(lo), b = interval_of(hi);
+    return {a.lo, b.hi};
+  }
+  static bool is_certain_nonzero(const T& x) {
+    Sign s = eccd::sign(x);
+    return s == Sign::positive || s == Sign::negative;
+  }
+  // Sign changes of the coefficients, or -1 if a coefficient's sign is uncertain.
+  static int variations(const Bern<T>& q) {
+    int v = 0;
+    Sign last = Sign::zero;
+    for (const auto& x : q.b) {
+      Sign s = eccd::sign(x);
+      if (s == Sign::uncertain) return -1;
+      if (s == Sign::zero) continue;
+      if (last != Sign::zero && s != last) ++v;
+      last = s;
+    }
+    return v;
+  }
+  // q is the restriction to [a, b] (reparameterised to [0, 1]); its end
+  // coefficients (the values at a and b) have certain non-zero signs.
+  void isolate(const Bern<T>& q, const Rational& a, const Rational& b, int depth, std::vector<Root>& out) const {
+    ++pieces;
+    int v = variations(q);
+    if (v == 0) return;
+    if (v == 1) {
+      refine(q, a, b, out);
+      return;
+    }
+    if (depth >= max_depth)
+      throw Escalate("interval root isolation cannot separate roots near t = " + decimal_string(a, 12) +
+                     " (a multiple root, or roots closer than 2^-" + std::to_string(max_depth) + ")");
+    // Split at the middle, or near it if the value there is not certainly non-zero.
+    for (const char* frac : {"1/2", "7/16", "9/16", "3/8", "5/8"}) {
+      Rational f(frac);
+      auto [left, right] = split(q, of(f));
+      if (!is_certain_nonzero(left.b.back())) continue;
+      Rational m = a + f * (b - a);
+      isolate(left, a, m, depth + 1, out);
+      isolate(right, m, b, depth + 1, out);
+      return;
+    }
+    throw Escalate("the projection may vanish at a subdivision point near t = " + decimal_string(a, 12));
+  }
+  // One root in (a, b) of the piece q: bisect while the midpoint's sign is
+  // certain, evaluating the whole polynomial at the midpoint in O(n).
+  void refine(const Bern<T>& q, Rational a, Rational b, std::vector<Root>& out) const {
+    const Sign sa = eccd::sign(q.b.front());
+    Rational limit(mpz_class(1), mpz_class(1) << refine_bits);
+    while (b - a > limit) {
+      Rational m = (a + b) / 2;
+      Sign sm = eccd::sign(bernstein_at(*whole, m));
+      if (sm != Sign::positive && sm != Sign::negative) break;  // keep the bracket we have
+      if (sm == sa) a = m;
+      else b = m;
+    }
+    out.push_back({a, b});
+  }
+  // q(t) at a rational t in (0, 1) in O(n): (1-t)^n Σ b_i C(n,i) s^i with
+  // s = t/(1-t) for t <= 1/2, and the mirrored form for t > 1/2.
+  static T bernstein_at(const Bern<T>& q, const Rational& t) {
+    const int n = q.degree();
+    bool mirror = t > Rational(1, 2);
+    T x = of(mirror ? Rational(1 - t) : t), y = of(mirror ? t : Rational(1 - t));
+    T s = x / y, acc = T(0), binom = T(1), pw = T(1);
+    // Horner from the top: acc = Σ_{i} b_i C(n,i) s^i, with C(n,i) built downwards from C(n,n) = 1.
+    for (int i = n; i >= 0; --i) {
+      const T& bi = q.b[mirror ? n - i : i];
+      acc = acc * s + bi * binom;
+      if (i > 0) binom = binom * T(i) / T(n - i + 1);  // C(n, i-1) = C(n, i) · i / (n - i + 1)
+    }
+    for (int k = 0; k < n; ++k) pw = pw * y;
+    return acc * pw;
+  }
+  mutable const Bern<T>* whole = nullptr;  // the polynomial being isolated (for refine)
+};
+
+}  // namespace eccd

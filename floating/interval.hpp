@@ -1,0 +1,116 @@
+#pragma once
+// Interval: closed intervals of doubles that provably enclose the exact
+// result of every operation, and scalar_traits<Interval> whose sign() is
+// certain or `uncertain` (the scalar of `--arith certified`).
+//
+// Statement (interval arithmetic, Moore 1966; e.g. the filters of CGAL and
+// Kettner et al. 2004). Each operation computes its end points in
+// round-to-nearest and then moves them outwards by |x|·2^-51 + 2^-1073: the
+// rounding error of one operation is below |x|·2^-52 (plus half the smallest
+// subnormal), and the widening step's own rounding is below |x|·2^-53, so the
+// exact result of the operation on any values inside the operands lies inside
+// the result. (std::nextafter would widen by one ulp but costs a library call
+// per end point: it was half the run time.) NaN end points (inf - inf) make
+// the sign uncertain; products and quotients with a NaN are (-inf, inf). Rationals enter as [RNDD, RNDU] roundings
+// (MPFR), so the scene's exact numbers are enclosed from the start. Division
+// by an interval that contains 0 gives (-inf, inf). The sign of an interval is
+// certain when it lies on one side of 0 (or is exactly [0, 0]); otherwise it
+// is Sign::uncertain and the caller must not decide (design.md: nothing turns
+// "uncertain" into a sign silently). Comparisons `<`, `>` hold only when
+// certain for every pair of values.
+// Requirements: IEEE double with round-to-nearest (the default); no
+// -ffast-math.
+#include "kernel/scalar_traits.hpp"
+
+#include <gmpxx.h>
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+namespace eccd {
+
+struct Interval {
+  double lo = 0, hi = 0;
+
+  Interval() = default;
+  Interval(int k) : lo(k), hi(k) {}  // NOLINT: small integer constants, exact
+  Interval(double l, double h) : lo(l), hi(h) {}
+
+  static double down(double x) { return x - (std::fabs(x) * 0x1p-51 + 0x1p-1073); }
+  static double up(double x) { return x + (std::fabs(x) * 0x1p-51 + 0x1p-1073); }
+  static Interval entire() { return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}; }
+
+  bool contains_zero() const { return lo <= 0 && hi >= 0; }
+  double width() const { return hi - lo; }
+  double mid() const { return lo + 0.5 * (hi - lo); }
+
+  friend Interval operator+(const Interval& a, const Interval& b) { return {down(a.lo + b.lo), up(a.hi + b.hi)}; }
+  friend Interval operator-(const Interval& a, const Interval& b) { return {down(a.lo - b.hi), up(a.hi - b.lo)}; }
+  friend Interval operator-(const Interval& a) { return {-a.hi, -a.lo}; }
+  friend Interval operator*(const Interval& a, const Interval& b) {
+    if (a.lo == a.hi && b.lo == b.hi) {  // point operands (constants, exact dyadics): one product
+      double p = a.lo * b.lo;
+      if (p == 0 && (a.lo == 0 || b.lo == 0)) return {0, 0};
+      return {down(p), up(p)};
+    }
+    double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+    if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4)) return entire();  // 0 * inf
+    return {down(std::min({p1, p2, p3, p4})), up(std::max({p1, p2, p3, p4}))};
+  }
+  friend Interval operator/(const Interval& a, const Interval& b) {
+    if (b.contains_zero() || std::isnan(b.lo) || std::isnan(b.hi) || std::isnan(a.lo) || std::isnan(a.hi)) return entire();
+    double q1 = a.lo / b.lo, q2 = a.lo / b.hi, q3 = a.hi / b.lo, q4 = a.hi / b.hi;
+    return {down(std::min({q1, q2, q3, q4})), up(std::max({q1, q2, q3, q4}))};
+  }
+  Interval& operator+=(const Interval& b) { return *this = *this + b; }
+  Interval& operator-=(const Interval& b) { return *this = *this - b; }
+  Interval& operator*=(const Interval& b) { return *this = *this * b; }
+  Interval& operator/=(const Interval& b) { return *this = *this / b; }
+  // Certainly less / greater for every pair of values.
+  friend bool operator<(const Interval& a, const Interval& b) { return a.hi < b.lo; }
+  friend bool operator>(const Interval& a, const Interval& b) { return a.lo > b.hi; }
+  friend bool operator<=(const Interval& a, const Interval& b) { return a.hi <= b.lo; }
+  friend bool operator>=(const Interval& a, const Interval& b) { return a.lo >= b.hi; }
+};
+
+// Interval from an exact rational, rounded outwards.
+inline Interval interval_of(const mpq_class& q) {
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDD);
+  double lo = mpfr_get_d(r, MPFR_RNDD);
+  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDU);
+  double hi = mpfr_get_d(r, MPFR_RNDU);
+  mpfr_clear(r);
+  return {lo, hi};
+}
+
+template <> struct scalar_traits<Interval> {
+  static constexpr bool is_exact = false;
+  static Sign sign(const Interval& x) {
+    if (std::isnan(x.lo) || std::isnan(x.hi)) return Sign::uncertain;
+    if (x.lo > 0) return Sign::positive;
+    if (x.hi < 0) return Sign::negative;
+    if (x.lo == 0 && x.hi == 0) return Sign::zero;
+    return Sign::uncertain;
+  }
+  static double to_double(const Interval& x) { return x.mid(); }  // display only
+  static Interval from_rational(const mpq_class& q, const Interval& /*like*/ = Interval()) { return interval_of(q); }
+  static Interval abs(const Interval& x) {
+    if (x.lo >= 0) return x;
+    if (x.hi <= 0) return -x;
+    return {0, std::max(-x.lo, x.hi)};
+  }
+  static int precision(const Interval&) { return 53; }
+  static std::string to_string(const Interval& x) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.17g", x.mid());
+    return b;
+  }
+};
+
+}  // namespace eccd
