@@ -1,0 +1,1233 @@
+// eccd_bench: the performance benchmark of the workbench (issue 6, parts 1
+// and 3). Separate from the tests: built only by `cmake --build B --target
+// eccd_bench` (bench/ is added with EXCLUDE_FROM_ALL) and run by
+// scripts/run-benchmarks.sh, which turns its summary into
+// reports/performance.md (bench/performance_report.py).
+//
+// Why Google Benchmark (Debian libbenchmark-dev 1.7.1) and not Catch2's
+// BENCHMARK: it repeats every measurement (repetitions) and computes the
+// median over them itself, chooses the iteration count per repetition from a
+// minimum time, measures per-thread or per-process CPU time as well as wall
+// time, writes machine-readable JSON, and runs benchmarks registered at run
+// time from tables (which is how the groups below are built), all without
+// pulling the test framework and its test discovery into the measurement.
+//
+// What is measured. Every group has one baseline row, run in the same process
+// as the other rows of its group; the summary reports each row's median over
+// the repetitions (CPU time of the benchmark thread; process CPU time, all
+// threads, for the isolation rows, since MPSolve may use a thread pool; wall
+// time alongside) and its ratio to the baseline's median. Groups:
+//   static2d, static3d   the static tests in double on a batch of 1024 random
+//        pairs (half separate): the generic determinant expansion of
+//        det(λA - B) (kernel/characteristic_polynomial.hpp) against, in 3D,
+//        001 Appendix A's 40-multiplication coefficients (kernel/fast_quartic.hpp,
+//        A in standard position), each followed by the status decision
+//        (kernel/contact_status.hpp cubic rule in 2D; Sturm count of the
+//        negative roots, kernel/quartic_status.hpp, in 3D). Anchor: 001 "less
+//        than 1 microsecond" on a 3 GHz Pentium IV for the whole static
+//        procedure including the motion matrices.
+//   ccd2d-degK-vV   2D CD-DISC (kernel/cd_disc.hpp) for motion degree K = 2,
+//        4, 6 (general rational Euclidean motions in the kinematic image, 003
+//        eq. (3), so that Δ has the full degree 24K: 48, 96, 144) and 003's
+//        Variants V = 1 (collides?), 2 (first contact), 3 (all external
+//        contacts), plus V = 0 (the full scene answer: intervals too), in
+//        double, MPFR at 128 and 256 bits (Δ in Bernstein form, the default)
+//        and exact rationals (certified); baseline: double. Anchor: 003 Fig. 8
+//        (2.2 GHz Intel): degree 6, Δ of degree 144, under 1 ms (Variant 1),
+//        5 ms (Variant 2), 7 ms (Variant 3).
+//   ccd3d-SCENE     3D CCD for motion degree 2 and 4 and paper 002's example
+//        (degree 4, projection of degree 216): in double each method (001's
+//        Bézier zero-set method with f in Bernstein and in power form, the
+//        projection pipeline, sampling:64 and marching:64, and Bézier in
+//        first-contact mode) and exact (projection, certified); baseline:
+//        double Bézier. Anchors: 001 3.7 ms (all four intervals, degree-4 affine
+//        pair, Fig. 3) and 0.9 ms (first contact only); 002 Table I: 4.748 s
+//        for degree 4 (Pentium 4, 2 GHz).
+//   isolation-POLY  exact real root isolation of the very polynomials the
+//        exact pipeline isolates (Δ(t) of the 2D scenes above, the 3D
+//        projection polynomials) and of a random degree-200 integer polynomial:
+//        the workbench's eccd::real_roots (CGAL Algebraic_kernel_d_1 over GMP
+//        + MPFI, the baseline) against the same CGAL kernel called directly,
+//        CGAL's kernel over CORE::BigInt, and MPSolve (isolation goal).
+//        Anchor: CORE about 7 ms on a random degree-200 integer polynomial.
+//   phases-*        the pipelines of the targets split into their public
+//        steps, each timed alone on the same inputs (what dominates).
+//   solve_scene-*   rows through eccd::solve_scene (what `eccd solve` runs,
+//        JSON building included), from a table of (label, SolveOptions):
+//        the place where the certified interval mode's rows go (see
+//        kSolveSceneRows below).
+// What "pipeline" means in the ccd rows: what app/solve.cpp runs after the
+// scene is read and prepared (prepare_pair<N>: exact, done once per scene, not
+// timed): 2D to_arithmetic<T, 3> + cd_disc with FloatingPolicy<T> (Bernstein
+// basis) or ExactPolicy; 3D characteristic_bernstein<T, 4> + ccd_bezier /
+// ccd_sampling / ccd_marching, or to_arithmetic<T, 4> + ccd_projection. No JSON.
+//
+// Options (besides Google Benchmark's --benchmark_*):
+//   --eccd_summary=FILE   write the summary JSON (groups, rows, medians,
+//                         ratios, what each row answered) for the report
+//   --eccd_quick          3 repetitions and short minimum times (development)
+//   --eccd_list           print the selected scenes and exit
+#include "app/solve.hpp"
+#include "bench/isolation.hpp"
+#include "exact/algebraic_roots.hpp"
+#include "exact/cd_disc_exact.hpp"
+#include "exact/certificate_algebra.hpp"
+#include "floating/ccd3_baselines.hpp"
+#include "floating/cd_disc_floating.hpp"
+#include "floating/double_traits.hpp"
+#include "floating/mpfr_real.hpp"
+#include "kernel/bezier_ccd.hpp"
+#include "kernel/ccd_projection.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/contact_status.hpp"
+#include "kernel/fast_quartic.hpp"
+#include "kernel/quartic_status.hpp"
+#include "kernel/scene_reader.hpp"
+
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef ECCD_SOURCE_DIR
+#define ECCD_SOURCE_DIR "."
+#endif
+#ifndef ECCD_BUILD_TYPE
+#define ECCD_BUILD_TYPE "unknown"
+#endif
+
+using namespace eccd;
+using json = nlohmann::json;
+using ojson = nlohmann::ordered_json;
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Registry: groups, rows, and what each row answered.
+
+enum class Cost { fast, slow, very_slow };  // repetitions / minimum time policy
+
+struct Group {
+  std::string id, title, description, anchor;
+};
+struct Row {
+  std::string key, group, label, note;
+  bool baseline = false;
+};
+
+std::vector<Group> g_groups;
+std::vector<Row> g_rows;
+std::map<std::string, json> g_results;  // key -> what the row computed (last timed iteration)
+std::map<std::string, json> g_scenes;   // scene id -> description
+bool g_quick = false;
+
+void group(const std::string& id, const std::string& title, const std::string& description, const std::string& anchor) {
+  g_groups.push_back({id, title, description, anchor});
+}
+
+// Registers one benchmark "group/label"; fn runs the timing loop.
+void row(const std::string& grp, const std::string& label, bool baseline, Cost cost, const std::string& note,
+         std::function<void(benchmark::State&)> fn, bool process_cpu = false) {
+  std::string key = grp + "/" + label;
+  g_rows.push_back({key, grp, label, note, baseline});
+  auto* b = benchmark::RegisterBenchmark(key.c_str(), [fn](benchmark::State& st) { fn(st); });
+  int reps = cost == Cost::fast ? 10 : (cost == Cost::slow ? 7 : 5);
+  double min_time = cost == Cost::fast ? 0.1 : 0.05;
+  if (g_quick) { reps = 3; min_time = 0.01; }
+  b->Repetitions(reps)->MinTime(min_time)->Unit(cost == Cost::fast ? benchmark::kNanosecond : benchmark::kMicrosecond);
+  if (process_cpu) b->MeasureProcessCPUTime();
+}
+
+// The timing loop for a function returning a result R; the last result is
+// summarised (after the loop, not timed) into g_results[key].
+template <class F, class S>
+void timed(benchmark::State& st, const std::string& key, F f, S summarise) {
+  using R = decltype(f());
+  std::optional<R> last;
+  for (auto _ : st) {
+    R r = f();
+    benchmark::DoNotOptimize(r);
+    last.emplace(std::move(r));
+  }
+  if (last) g_results[key] = summarise(*last);
+}
+
+// Lazily built, shared inputs (a filtered run builds only what it uses).
+template <class T>
+class Lazy {
+ public:
+  explicit Lazy(std::function<T()> make) : make_(std::move(make)) {}
+  const T& get() {
+    std::call_once(once_, [this] { value_ = std::make_unique<T>(make_()); });
+    return *value_;
+  }
+
+ private:
+  std::function<T()> make_;
+  std::once_flag once_;
+  std::unique_ptr<T> value_;
+};
+
+// ---------------------------------------------------------------------------
+// What a CCD run answered (for the report: the rows must agree on the scene).
+
+std::string short_instant(const Instant& i) { return i.approx.substr(0, std::min<std::size_t>(i.approx.size(), 10)); }
+
+template <class T>
+json summarise_ccd(const CdDiscResult<T>& r) {
+  json j;
+  j["collides"] = r.answer.collides;
+  j["intervals"] = r.answer.intervals.size();
+  j["contacts"] = r.answer.contacts.size();
+  j["undecided"] = r.answer.undecided.size();
+  j["critical"] = r.critical.size();
+  j["delta_degree"] = r.delta_degree;
+  if (r.answer.first_contact) j["first_contact"] = short_instant(*r.answer.first_contact);
+  json iv = json::array();
+  for (const auto& [a, b] : r.answer.intervals) iv.push_back(short_instant(a) + ".." + short_instant(b));
+  j["interval_list"] = iv;
+  json c = json::object();
+  for (const auto& [k, v] : r.counters) c[k] = v;
+  if (!c.empty()) j["work"] = c;
+  return j;
+}
+
+// ---------------------------------------------------------------------------
+// Scenes.
+
+std::string src(const std::string& rel) { return std::string(ECCD_SOURCE_DIR) + "/" + rel; }
+
+// A general rational Euclidean motion of degree 2m in the kinematic image
+// (003 eq. (3)): d0..d3 polynomials of degree m with integer coefficients, so
+// that every entry of M(t) has degree 2m and, generically, Δ(t) has degree 24
+// times the motion degree (003 Table I). The centre is shifted by (cx, 0):
+// d0 += cx d3 / 2, d1 -= cx d2 / 2 (the centre (x, y) of 003 eq. (3) is
+// linear in d0, d1 for given d2, d3).
+ojson kinematic_motion(std::mt19937_64& rng, int m, int cx) {
+  std::uniform_int_distribution<int> small(-2, 2), lead(2, 4), wide(-4, 4);
+  std::array<std::vector<mpq_class>, 4> d;
+  for (int k = 0; k < 4; ++k) d[k].assign(m + 1, 0);
+  for (int i = 0; i <= m; ++i) {
+    d[2][i] = i == 0 ? lead(rng) : small(rng);
+    d[3][i] = small(rng);
+    d[0][i] = wide(rng);
+    d[1][i] = wide(rng);
+  }
+  for (int k : {2, 3}) if (d[k][m] == 0) d[k][m] = 1;  // full degree m
+  for (int i = 0; i <= m; ++i) {
+    mpq_class a = d[0][i] + mpq_class(cx) * d[3][i] / 2, b = d[1][i] - mpq_class(cx) * d[2][i] / 2;
+    d[0][i] = a;
+    d[1][i] = b;
+  }
+  ojson arr = ojson::array();
+  for (int k = 0; k < 4; ++k) {
+    ojson p = ojson::array();
+    for (auto& c : d[k]) { c.canonicalize(); p.push_back(c.get_str()); }
+    arr.push_back(p);
+  }
+  return ojson{{"type", "kinematic"}, {"d", arr}};
+}
+
+Scene kinematic_scene(int motion_degree, std::uint64_t seed, bool apart) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> axis(2, 5);
+  int m = motion_degree / 2;
+  ojson s;
+  s["format"] = "ellipse-ccd-scene/1";
+  s["name"] = "bench-2d-deg" + std::to_string(motion_degree) + (apart ? "-free-" : "-colliding-") + std::to_string(seed);
+  s["dim"] = 2;
+  int gap = apart ? 9 : 4;
+  for (const char* obj : {"a", "b"}) {
+    ojson o;
+    o["shape"] = ojson{{"semi_axes", {std::to_string(axis(rng)), std::to_string(axis(rng))}}};
+    o["motion"] = kinematic_motion(rng, m, std::strcmp(obj, "a") == 0 ? -gap : gap);
+    s[obj] = o;
+  }
+  return parse_scene(s.dump(), s["name"].get<std::string>());
+}
+
+struct Scene2D {
+  std::string id;
+  Scene scene;
+  PreparedPair<3> p;
+  json info;
+};
+
+CdDiscResult<double> run2d_double(const PreparedPair<3>& p, Variant v, Basis basis = Basis::bernstein) {
+  FloatingPolicy<double> pol(basis, 53, 1.0);
+  MovingPair<double, 3> m = to_arithmetic<double, 3>(p, 1.0);
+  return cd_disc(m, pol, v);
+}
+template <class T>
+CdDiscResult<T> run2d_floating(const PreparedPair<3>& p, Variant v, Basis basis, int bits, const T& like) {
+  FloatingPolicy<T> pol(basis, bits, like);
+  MovingPair<T, 3> m = to_arithmetic<T, 3>(p, like);
+  return cd_disc(m, pol, v);
+}
+CdDiscResult<Rational> run2d_exact(const PreparedPair<3>& p, Variant v) {
+  ExactPolicy pol;
+  MovingPair<Rational, 3> m = to_arithmetic<Rational, 3>(p, Rational(1));
+  return cd_disc(m, pol, v);
+}
+
+// The first seed from `seed` on whose scene the exact answer has the wanted
+// kind (separate at t = 0, then colliding with >= 2 external contacts; or free), Δ has the full degree
+// 24 K, and double CD-DISC agrees on collides and the number of contacts.
+Scene2D select_2d(int degree, bool apart, std::uint64_t seed) {
+  for (int tries = 0; tries < 400; ++tries, ++seed) {
+    Scene sc;
+    try {
+      sc = kinematic_scene(degree, seed, apart);
+    } catch (const SceneError&) {
+      continue;  // d2² + d3² vanishes somewhere on [0, 1]: not a motion
+    }
+    PreparedPair<3> p = prepare_pair<3>(sc);
+    auto d = run2d_double(p, Variant::answer);
+    if (d.delta_degree != 24 * degree) continue;
+    if (apart ? d.answer.collides : (!d.answer.collides || d.answer.contacts.size() < 2)) continue;
+    if (d.status_at_0 != Status::separate) continue;  // Variants 1 and 2 must search for the first root
+    if (!d.answer.undecided.empty()) continue;
+    auto e = run2d_exact(p, Variant::answer);
+    if (e.delta_degree != 24 * degree) continue;
+    if (e.answer.collides != d.answer.collides || e.answer.contacts.size() != d.answer.contacts.size()) continue;
+    if (e.status_at_0 != Status::separate) continue;
+    Scene2D out{sc.name, sc, p, json::object()};
+    out.info = {{"dim", 2}, {"motion_degree", degree}, {"family", apart ? "free" : "colliding"}, {"seed", seed},
+                {"tries", tries + 1}, {"delta_degree", e.delta_degree}, {"exact_answer", summarise_ccd(e)},
+                {"source", "generated in-process (bench/eccd_bench.cpp kinematic_scene), general kinematic-image motion"}};
+    return out;
+  }
+  throw std::runtime_error("no 2D scene of degree " + std::to_string(degree) + " found");
+}
+
+Scene2D scene2d_from_file(const std::string& id, const std::string& rel) {
+  Scene sc = read_scene_file(src(rel));
+  PreparedPair<3> p = prepare_pair<3>(sc);
+  auto e = run2d_exact(p, Variant::answer);
+  Scene2D out{id, sc, p, json::object()};
+  out.info = {{"dim", 2}, {"file", rel}, {"delta_degree", e.delta_degree}, {"exact_answer", summarise_ccd(e)}};
+  return out;
+}
+
+struct Scene3D {
+  std::string id;
+  Scene scene;
+  PreparedPair<4> p;
+  json info;
+};
+
+Scene3D scene3d_from_file(const std::string& id, const std::string& rel, const std::string& what) {
+  Scene sc = read_scene_file(src(rel));
+  Scene3D out{id, sc, prepare_pair<4>(sc), json::object()};
+  out.info = {{"dim", 3}, {"file", rel}, {"what", what}};
+  return out;
+}
+
+// Seeds found by select_2d's search (it starts here and takes the first fit).
+constexpr std::uint64_t kSeed2D = 6001;
+
+Lazy<Scene2D> s2d_deg2([] { return select_2d(2, false, kSeed2D); });
+Lazy<Scene2D> s2d_deg4([] { return select_2d(4, false, kSeed2D); });
+Lazy<Scene2D> s2d_deg6([] { return select_2d(6, false, kSeed2D); });
+Lazy<Scene2D> s2d_deg6_free([] { return select_2d(6, true, kSeed2D); });
+Lazy<Scene2D> s2d_paper003([] { return scene2d_from_file("paper003-example2", "cases/paper003/example2.json"); });
+
+Lazy<Scene3D> s3d_deg2([] {
+  return scene3d_from_file("3d-deg2-euler", "cases/generated/3d-euler/3d-deg2-colliding-euler-3526122894755803.json",
+                           "generated corpus, degree-2 Euler-parameter motions, colliding");
+});
+Lazy<Scene3D> s3d_deg4([] {
+  return scene3d_from_file("3d-deg4-euler", "cases/generated/3d-euler/3d-deg4-colliding-euler-4706106488671681.json",
+                           "generated corpus, degree-4 Euler-parameter motions, colliding");
+});
+Lazy<Scene3D> s3d_deg4_affine([] {
+  return scene3d_from_file("3d-deg4-affine", "cases/generated/3d-affine/3d-deg4-colliding-affine-6989596756321537.json",
+                           "generated corpus, degree-4 affine motions, colliding (001 Fig. 3 is a degree-4 affine pair)");
+});
+Lazy<Scene3D> s3d_paper002([] {
+  return scene3d_from_file("paper002-example", "cases/paper002/example.json",
+                           "paper 002's numerical example (degree-4 Euler motions, projection of degree 216)");
+});
+
+Lazy<Scene2D>* scene2d_by_degree(int k) { return k == 2 ? &s2d_deg2 : (k == 4 ? &s2d_deg4 : &s2d_deg6); }
+
+void note_scene(const Scene2D& s) { g_scenes[s.id] = s.info; }
+void note_scene(const Scene3D& s) { g_scenes[s.id] = s.info; }
+
+// ---------------------------------------------------------------------------
+// Static tests: batches of random pairs in double.
+
+constexpr int kBatch = 1024;
+
+using M3 = std::array<std::array<double, 3>, 3>;
+using M4 = std::array<std::array<double, 4>, 4>;
+
+// A: axis-aligned at the origin (standard position, diag(1/a², ..., -1)); B:
+// rotated by a random unit quaternion (or angle), semi-axes in [1, 3], centre
+// at a random distance in [0, 7] (about half the pairs separate).
+struct Static3D {
+  std::vector<std::array<double, 3>> e;  // ea, eb, ec of A
+  std::vector<M4> a, b;                  // A = diag(ea, eb, ec, -1) and B in A's frame
+  std::vector<std::vector<double>> coeffs;  // Appendix A coefficients (for the status-only row)
+};
+struct Static2D {
+  std::vector<M3> a, b;
+  std::vector<std::vector<double>> coeffs;
+};
+
+Static3D make_static3d() {
+  std::mt19937_64 rng(3003);
+  std::uniform_real_distribution<double> ax(1.0, 3.0), dist(0.0, 7.0), nrm(-1.0, 1.0);
+  Static3D s;
+  for (int n = 0; n < kBatch; ++n) {
+    double a1 = ax(rng), a2 = ax(rng), a3 = ax(rng);
+    std::array<double, 3> ea{1 / (a1 * a1), 1 / (a2 * a2), 1 / (a3 * a3)};
+    double q[4];
+    double qn = 0;
+    for (double& x : q) { x = nrm(rng); qn += x * x; }
+    qn = std::sqrt(qn);
+    for (double& x : q) x /= qn;
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    double R[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                      {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                      {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+    double dir[3] = {nrm(rng), nrm(rng), nrm(rng)};
+    double dn = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]) + 1e-12;
+    double r = dist(rng), c[3];
+    for (int i = 0; i < 3; ++i) c[i] = r * dir[i] / dn;
+    double b1 = ax(rng), b2 = ax(rng), b3 = ax(rng);
+    double qb[4] = {1 / (b1 * b1), 1 / (b2 * b2), 1 / (b3 * b3), -1};
+    // B's frame: Y = Rᵀ (X - c); T = [[Rᵀ, -Rᵀ c], [0, 1]]; B = Tᵀ diag(qb) T.
+    double T[4][4] = {};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) T[i][j] = R[j][i];
+      T[i][3] = -(R[0][i] * c[0] + R[1][i] * c[1] + R[2][i] * c[2]);
+    }
+    T[3][3] = 1;
+    M4 B{}, A{};
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        double acc = 0;
+        for (int k = 0; k < 4; ++k) acc += T[k][i] * qb[k] * T[k][j];
+        B[i][j] = acc;
+      }
+    for (int i = 0; i < 3; ++i) A[i][i] = ea[i];
+    A[3][3] = -1;
+    s.e.push_back(ea);
+    s.a.push_back(A);
+    s.b.push_back(B);
+    s.coeffs.push_back(appendix_a_coefficients(ea[0], ea[1], ea[2], B));
+  }
+  return s;
+}
+
+Static2D make_static2d() {
+  std::mt19937_64 rng(2002);
+  std::uniform_real_distribution<double> ax(1.0, 3.0), dist(0.0, 7.0), ang(0.0, 6.283185307179586);
+  Static2D s;
+  for (int n = 0; n < kBatch; ++n) {
+    double a1 = ax(rng), a2 = ax(rng), b1 = ax(rng), b2 = ax(rng), th = ang(rng), ph = ang(rng), r = dist(rng);
+    double c[2] = {r * std::cos(ph), r * std::sin(ph)};
+    double R[2][2] = {{std::cos(th), -std::sin(th)}, {std::sin(th), std::cos(th)}};
+    double qb[3] = {1 / (b1 * b1), 1 / (b2 * b2), -1};
+    double T[3][3] = {};
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) T[i][j] = R[j][i];
+      T[i][2] = -(R[0][i] * c[0] + R[1][i] * c[1]);
+    }
+    T[2][2] = 1;
+    M3 A{}, B{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double acc = 0;
+        for (int k = 0; k < 3; ++k) acc += T[k][i] * qb[k] * T[k][j];
+        B[i][j] = acc;
+      }
+    A[0][0] = 1 / (a1 * a1);
+    A[1][1] = 1 / (a2 * a2);
+    A[2][2] = -1;
+    s.a.push_back(A);
+    s.b.push_back(B);
+    s.coeffs.push_back(characteristic_coefficients_in<double, 3>(A, B, 0.0));
+  }
+  return s;
+}
+
+Lazy<Static3D> static3d(make_static3d);
+Lazy<Static2D> static2d(make_static2d);
+
+json status_counts(const std::vector<Status>& v) {
+  std::map<std::string, int> c;
+  for (Status s : v) c[to_string(s)]++;
+  json j = json::object();
+  for (auto& [k, n] : c) j[k] = n;
+  return j;
+}
+
+void register_static() {
+  group("static3d", "3D static separation test in double (per pair)",
+        "A batch of 1024 random ellipsoid pairs, A in standard position (diag(1/a², 1/b², 1/c², -1)), B rotated and "
+        "translated into A's frame; one pair per iteration. Coefficients of f(λ) = det(λA - B) by the generic "
+        "determinant expansion (2^4 column choices, kernel/characteristic_polynomial.hpp) or by 001 Appendix A "
+        "(kernel/fast_quartic.hpp, 40 multiplications + det B by cofactors); status from the Sturm count of the "
+        "negative roots (kernel/quartic_status.hpp). Rows 'coefficients only' and 'status only' split the time.",
+        "001: the whole static procedure (motion matrices of degree 4 included) in under 1 µs on a 3 GHz Pentium IV; "
+        "issue 6 target: at most 100 ns per pair");
+  auto all3 = [](auto status_of) {
+    const Static3D& s = static3d.get();
+    std::vector<Status> v;
+    for (int i = 0; i < kBatch; ++i) v.push_back(status_of(i));
+    return status_counts(v);
+  };
+  row("static3d", "generic det + Sturm", true, Cost::fast, "characteristic_coefficients_in<double,4> + quartic_contact_status",
+      [all3](benchmark::State& st) {
+        const Static3D& s = static3d.get();
+        int i = 0;
+        auto f = [&] {
+          i = (i + 1) & (kBatch - 1);
+          return quartic_contact_status(characteristic_coefficients_in<double, 4>(s.a[i], s.b[i], 0.0));
+        };
+        timed(st, "static3d/generic det + Sturm", f, [&](Status) {
+          return all3([&](int k) { return quartic_contact_status(characteristic_coefficients_in<double, 4>(s.a[k], s.b[k], 0.0)); });
+        });
+      });
+  row("static3d", "Appendix A + Sturm", false, Cost::fast, "appendix_a_coefficients + quartic_contact_status (the target row)",
+      [all3](benchmark::State& st) {
+        const Static3D& s = static3d.get();
+        int i = 0;
+        auto f = [&] {
+          i = (i + 1) & (kBatch - 1);
+          return quartic_contact_status(appendix_a_coefficients(s.e[i][0], s.e[i][1], s.e[i][2], s.b[i]));
+        };
+        timed(st, "static3d/Appendix A + Sturm", f, [&](Status) {
+          return all3([&](int k) { return quartic_contact_status(appendix_a_coefficients(s.e[k][0], s.e[k][1], s.e[k][2], s.b[k])); });
+        });
+      });
+  row("static3d", "generic det, coefficients only", false, Cost::fast, "characteristic_coefficients_in<double,4>",
+      [](benchmark::State& st) {
+        const Static3D& s = static3d.get();
+        int i = 0;
+        auto f = [&] { i = (i + 1) & (kBatch - 1); return characteristic_coefficients_in<double, 4>(s.a[i], s.b[i], 0.0); };
+        timed(st, "static3d/generic det, coefficients only", f, [](const std::vector<double>&) { return json(); });
+      });
+  row("static3d", "Appendix A, coefficients only", false, Cost::fast, "appendix_a_coefficients (001 Appendix A)",
+      [](benchmark::State& st) {
+        const Static3D& s = static3d.get();
+        int i = 0;
+        auto f = [&] { i = (i + 1) & (kBatch - 1); return appendix_a_coefficients(s.e[i][0], s.e[i][1], s.e[i][2], s.b[i]); };
+        timed(st, "static3d/Appendix A, coefficients only", f, [](const std::vector<double>&) { return json(); });
+      });
+  row("static3d", "Sturm status only", false, Cost::fast, "quartic_contact_status on precomputed coefficients",
+      [](benchmark::State& st) {
+        const Static3D& s = static3d.get();
+        int i = 0;
+        auto f = [&] { i = (i + 1) & (kBatch - 1); return quartic_contact_status(s.coeffs[i]); };
+        timed(st, "static3d/Sturm status only", f, [](Status) { return json(); });
+      });
+
+  group("static2d", "2D static separation test in double (per pair)",
+        "A batch of 1024 random pairs of ellipses, A axis-aligned at the origin, B rotated and translated; one pair per "
+        "iteration. Coefficients g0..g3 of the cubic f(λ) = det(λA - B) by the generic determinant expansion "
+        "(2^3 column choices; 001 Appendix A is a 4x4 formula and has no 2D counterpart in the workbench), status by "
+        "003 Theorem 6 from signs only (discriminant, Descartes; kernel/contact_status.hpp).",
+        "003 gives no static timing; 000: about 8 µs per static 3D test with root solving (for scale)");
+  auto all2 = [](auto status_of) {
+    std::vector<Status> v;
+    for (int i = 0; i < kBatch; ++i) v.push_back(status_of(i));
+    return status_counts(v);
+  };
+  row("static2d", "generic det + cubic rule", true, Cost::fast, "characteristic_coefficients_in<double,3> + cubic_contact_status",
+      [all2](benchmark::State& st) {
+        const Static2D& s = static2d.get();
+        int i = 0;
+        auto st_of = [&](int k) {
+          std::vector<double> g = characteristic_coefficients_in<double, 3>(s.a[k], s.b[k], 0.0);
+          return cubic_contact_status(g[3], g[2], g[1], g[0]);
+        };
+        auto f = [&] { i = (i + 1) & (kBatch - 1); return st_of(i); };
+        timed(st, "static2d/generic det + cubic rule", f, [&](Status) { return all2(st_of); });
+      });
+  row("static2d", "generic det, coefficients only", false, Cost::fast, "characteristic_coefficients_in<double,3>",
+      [](benchmark::State& st) {
+        const Static2D& s = static2d.get();
+        int i = 0;
+        auto f = [&] { i = (i + 1) & (kBatch - 1); return characteristic_coefficients_in<double, 3>(s.a[i], s.b[i], 0.0); };
+        timed(st, "static2d/generic det, coefficients only", f, [](const std::vector<double>&) { return json(); });
+      });
+  row("static2d", "cubic rule only", false, Cost::fast, "cubic_contact_status on precomputed coefficients",
+      [](benchmark::State& st) {
+        const Static2D& s = static2d.get();
+        int i = 0;
+        auto f = [&] {
+          i = (i + 1) & (kBatch - 1);
+          const auto& g = s.coeffs[i];
+          return cubic_contact_status(g[3], g[2], g[1], g[0]);
+        };
+        timed(st, "static2d/cubic rule only", f, [](Status) { return json(); });
+      });
+}
+
+// ---------------------------------------------------------------------------
+// 2D CCD.
+
+const char* variant_title(int v) {
+  switch (v) {
+    case 1: return "Variant 1 (collides?)";
+    case 2: return "Variant 2 (first contact)";
+    case 3: return "Variant 3 (all external contacts)";
+    default: return "full answer (intervals, first contact, contacts)";
+  }
+}
+
+void add_2d_rows(const std::string& grp, Lazy<Scene2D>* sc, int v, bool mpfr = true) {
+  Variant var = Variant(v);
+  auto note = [sc](const std::string& what) { return what; };
+  row(grp, "double", true, Cost::slow, note("to_arithmetic<double,3> + cd_disc, FloatingPolicy<double> (Bernstein)"),
+      [sc, var, grp](benchmark::State& st) {
+        const Scene2D& s = sc->get();
+        note_scene(s);
+        timed(st, grp + "/double", [&] { return run2d_double(s.p, var); }, [](const auto& r) { return summarise_ccd(r); });
+      });
+  if (mpfr)
+    for (int bits : {128, 256}) {
+      std::string label = "mpfr:" + std::to_string(bits);
+      row(grp, label, false, Cost::slow, "to_arithmetic<Mpfr,3> + cd_disc, FloatingPolicy<Mpfr> (Bernstein)",
+          [sc, var, grp, label, bits](benchmark::State& st) {
+            const Scene2D& s = sc->get();
+            note_scene(s);
+            Mpfr like(mpq_class(1), bits);
+            timed(st, grp + "/" + label, [&] { return run2d_floating<Mpfr>(s.p, var, Basis::bernstein, bits, like); },
+                  [](const auto& r) { return summarise_ccd(r); });
+          });
+    }
+  row(grp, "exact", false, Cost::slow, "to_arithmetic<Rational,3> + cd_disc, ExactPolicy (certified)",
+      [sc, var, grp](benchmark::State& st) {
+        const Scene2D& s = sc->get();
+        note_scene(s);
+        timed(st, grp + "/exact", [&] { return run2d_exact(s.p, var); }, [](const auto& r) { return summarise_ccd(r); });
+      });
+}
+
+void register_2d() {
+  for (int k : {2, 4, 6}) {
+    for (int v : {1, 2, 3, 0}) {
+      std::string grp = "ccd2d-deg" + std::to_string(k) + "-v" + std::to_string(v);
+      std::string anchor = k == 6 ? (v == 1 ? "003 Fig. 8: under 1 ms (degree 6, 2.2 GHz Intel)"
+                                   : v == 2 ? "003 Fig. 8: under 5 ms"
+                                   : v == 3 ? "003 Fig. 8: under 7 ms; issue 6 target: double at most 0.5 ms"
+                                            : "issue 6 target: exact certified answer at most 50 ms")
+                                 : "003 Fig. 8 (curves for degrees 2 and 4 lie below the degree-6 figures)";
+      group(grp, "2D CCD, motion degree " + std::to_string(k) + ", " + variant_title(v),
+            "CD-DISC on a colliding pair of ellipses under general rational Euclidean motions of degree " +
+                std::to_string(k) + " (Δ of degree " + std::to_string(24 * k) +
+                ", two or more external contacts); baseline: double.",
+            anchor);
+      add_2d_rows(grp, scene2d_by_degree(k), v);
+    }
+  }
+  group("ccd2d-deg6-free", "2D CCD, motion degree 6, a collision-free pair",
+        "The same pipelines on a pair that never collides (Δ of degree 144 without roots in [0, 1]: 003 Fig. 8(b)).",
+        "003 Fig. 8(b): collision-free pairs, degree 6");
+  {
+    Lazy<Scene2D>* sc = &s2d_deg6_free;
+    for (int v : {1, 3}) {
+      std::string label = "double v" + std::to_string(v);
+      row("ccd2d-deg6-free", label, v == 3, Cost::slow, "to_arithmetic + cd_disc, double, Bernstein",
+          [sc, v, label](benchmark::State& st) {
+            const Scene2D& s = sc->get();
+            note_scene(s);
+            timed(st, "ccd2d-deg6-free/" + label, [&] { return run2d_double(s.p, Variant(v)); },
+                  [](const auto& r) { return summarise_ccd(r); });
+          });
+    }
+    row("ccd2d-deg6-free", "exact v0", false, Cost::slow, "to_arithmetic + cd_disc, ExactPolicy", [sc](benchmark::State& st) {
+      const Scene2D& s = sc->get();
+      note_scene(s);
+      timed(st, "ccd2d-deg6-free/exact v0", [&] { return run2d_exact(s.p, Variant::answer); },
+            [](const auto& r) { return summarise_ccd(r); });
+    });
+  }
+  group("ccd2d-deg6-basis", "2D CCD, motion degree 6, Variant 3: how Δ is built (003 VI-C)",
+        "Double CD-DISC with g_i and Δ in Bernstein form (the default), in power form (converted for the "
+        "subdivision), and in scaled Bernstein form (003's choice for Variant 1); MPFR at 128 bits in power form.",
+        "003 Fig. 8 (dashed lines: time to obtain Δ in Bernstein and scaled Bernstein form)");
+  {
+    Lazy<Scene2D>* sc = &s2d_deg6;
+    struct B { const char* label; Basis basis; int bits; };
+    for (B b : {B{"double bernstein", Basis::bernstein, 53}, B{"double power", Basis::power, 53},
+                B{"double scaled-bernstein", Basis::scaled_bernstein, 53}, B{"mpfr:128 power", Basis::power, 128}}) {
+      std::string label = b.label;
+      row("ccd2d-deg6-basis", label, b.basis == Basis::bernstein, Cost::slow, std::string("cd_disc, basis ") + to_string(b.basis),
+          [sc, b, label](benchmark::State& st) {
+            const Scene2D& s = sc->get();
+            note_scene(s);
+            if (b.bits == 53)
+              timed(st, "ccd2d-deg6-basis/" + label, [&] { return run2d_double(s.p, Variant::all_contacts, b.basis); },
+                    [](const auto& r) { return summarise_ccd(r); });
+            else {
+              Mpfr like(mpq_class(1), b.bits);
+              timed(st, "ccd2d-deg6-basis/" + label,
+                    [&] { return run2d_floating<Mpfr>(s.p, Variant::all_contacts, b.basis, b.bits, like); },
+                    [](const auto& r) { return summarise_ccd(r); });
+            }
+          });
+    }
+  }
+  group("ccd2d-paper003", "2D CCD, paper 003's Example 2 (degree 4, Δ of degree 96, touch at t = 1/2)",
+        "cases/paper003/example2.json: Variant 3 and the full answer.", "003 section VI-C, Example 2");
+  add_2d_rows("ccd2d-paper003", &s2d_paper003, 3, false);
+}
+
+// ---------------------------------------------------------------------------
+// 3D CCD.
+
+template <class T>
+CdDiscResult<T> run3d_floating(const PreparedPair<4>& p, const std::string& method, Basis basis, int bits, const T& like,
+                               bool first_contact) {
+  if (method == "projection") {
+    FloatingPolicy<T> pol(basis, bits, like);
+    return ccd_projection(to_arithmetic<T, 4>(p, like), pol, first_contact);
+  }
+  std::vector<Bern<T>> g = characteristic_bernstein<T, 4>(p, basis == Basis::power, like);
+  if (method == "bezier") {
+    BezierOptions bo;
+    bo.first_contact_only = first_contact;
+    return ccd_bezier(g, like, bits, bo);
+  }
+  if (method.rfind("sampling:", 0) == 0) return ccd_sampling(g, like, std::stoi(method.substr(9)), first_contact);
+  return ccd_marching(g, like, std::stoi(method.substr(9)), first_contact);
+}
+CdDiscResult<Rational> run3d_exact(const PreparedPair<4>& p, bool first_contact = false) {
+  ExactPolicy pol;
+  return ccd_projection(to_arithmetic<Rational, 4>(p, Rational(1)), pol, first_contact);
+}
+
+void register_3d() {
+  struct S { Lazy<Scene3D>* sc; const char* id; const char* title; const char* anchor; };
+  for (S s : {S{&s3d_deg2, "ccd3d-deg2", "3D CCD, motion degree 2 (Euler parameters), colliding",
+                "002 Table I: degree 2, 1.113 s (Pentium 4, 2 GHz)"},
+              S{&s3d_deg4, "ccd3d-deg4", "3D CCD, motion degree 4 (Euler parameters), colliding",
+                "002 Table I: degree 4, 4.748 s"},
+              S{&s3d_deg4_affine, "ccd3d-deg4-affine", "3D CCD, motion degree 4 (affine deformation), colliding",
+                "001 Fig. 3: degree-4 affine pair, all four intervals 3.7 ms, first contact 0.9 ms (3 GHz Pentium IV)"},
+              S{&s3d_paper002, "ccd3d-paper002", "3D CCD, paper 002's example (degree 4, projection of degree 216)",
+                "issue 6 targets: double at most 2 ms, exact at most 1 s; 001: 3.7 ms for a degree-4 affine pair; 002: "
+                "4.7 s (Table I, degree 4)"}}) {
+    group(s.id, s.title,
+          "All collision intervals (and contacts) in double by each method, and the certified answer in exact "
+          "arithmetic (projection); baseline: double Bézier (001 section 4, f in Bernstein form, the default of "
+          "`eccd solve`).",
+          s.anchor);
+    struct M { const char* label; const char* method; Basis basis; bool fc; };
+    for (M m : {M{"double bezier", "bezier", Basis::bernstein, false}, M{"double bezier power", "bezier", Basis::power, false},
+                M{"double projection", "projection", Basis::bernstein, false},
+                M{"double sampling:64", "sampling:64", Basis::bernstein, false},
+                M{"double marching:64", "marching:64", Basis::bernstein, false},
+                M{"double bezier first-contact", "bezier", Basis::bernstein, true}}) {
+      std::string grp = s.id, label = m.label;
+      Lazy<Scene3D>* sc = s.sc;
+      row(grp, label, std::string(m.label) == "double bezier", Cost::slow,
+          std::string(m.method == std::string("projection") ? "to_arithmetic<double,4> + ccd_projection"
+                                                            : "characteristic_bernstein<double,4> + ccd_") +
+              (m.method == std::string("projection") ? "" : m.method) + (m.fc ? " (first contact only)" : ""),
+          [sc, m, grp, label](benchmark::State& st) {
+            const Scene3D& sd = sc->get();
+            note_scene(sd);
+            timed(st, grp + "/" + label, [&] { return run3d_floating<double>(sd.p, m.method, m.basis, 53, 1.0, m.fc); },
+                  [](const auto& r) { return summarise_ccd(r); });
+          });
+    }
+    std::string grp = s.id;
+    Lazy<Scene3D>* sc = s.sc;
+    row(grp, "exact", false, Cost::very_slow, "to_arithmetic<Rational,4> + ccd_projection, ExactPolicy (certified)",
+        [sc, grp](benchmark::State& st) {
+          const Scene3D& sd = sc->get();
+          note_scene(sd);
+          timed(st, grp + "/exact", [&] { return run3d_exact(sd.p); }, [](const auto& r) { return summarise_ccd(r); });
+        });
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Exact real root isolation.
+
+struct IsoPoly {
+  std::string id, what;
+  Poly<Rational> p;
+  std::vector<mpz_class> z;  // primitive integer coefficients
+};
+
+IsoPoly iso_from(const std::string& id, const std::string& what, const Poly<Rational>& p) {
+  IsoPoly ip{id, what, p, {}};
+  for (const auto& s : integer_coefficients(p)) ip.z.emplace_back(s);
+  return ip;
+}
+
+Lazy<IsoPoly> iso_deg2([] { return iso_from("2d-deg2", "Δ(t) of the 2D degree-2 scene", certificate_algebra(s2d_deg2.get().scene).projection); });
+Lazy<IsoPoly> iso_deg4([] { return iso_from("2d-deg4", "Δ(t) of the 2D degree-4 scene", certificate_algebra(s2d_deg4.get().scene).projection); });
+Lazy<IsoPoly> iso_deg6([] { return iso_from("2d-deg6", "Δ(t) of the 2D degree-6 scene", certificate_algebra(s2d_deg6.get().scene).projection); });
+Lazy<IsoPoly> iso_3d_deg2([] {
+  return iso_from("3d-deg2", "projection of the 3D degree-2 Euler scene", certificate_algebra(s3d_deg2.get().scene).projection);
+});
+Lazy<IsoPoly> iso_paper002([] {
+  return iso_from("paper002", "projection (discriminant) of paper 002's example", certificate_algebra(s3d_paper002.get().scene).projection);
+});
+Lazy<IsoPoly> iso_random200([] {
+  std::mt19937_64 rng(200);
+  std::uniform_int_distribution<long> c(-1000, 1000);
+  Poly<Rational> p;
+  for (int i = 0; i <= 200; ++i) p.c.push_back(Rational(c(rng)));
+  if (p.c.back() == 0) p.c.back() = 1;
+  return iso_from("random200", "random integer polynomial of degree 200, coefficients uniform in [-1000, 1000] (seed 200)", p);
+});
+
+json iso_info(const IsoPoly& ip) {
+  std::size_t bits = 0;
+  for (const auto& z : ip.z) bits = std::max(bits, mpz_sizeinbase(z.get_mpz_t(), 2));
+  return {{"what", ip.what}, {"degree", ip.p.degree()}, {"max_coefficient_bits", bits}};
+}
+
+void register_isolation() {
+  struct P { Lazy<IsoPoly>* poly; const char* id; };
+  for (P pp : {P{&iso_deg2, "isolation-2d-deg2"}, P{&iso_deg4, "isolation-2d-deg4"}, P{&iso_deg6, "isolation-2d-deg6"},
+               P{&iso_3d_deg2, "isolation-3d-deg2"}, P{&iso_paper002, "isolation-paper002"},
+               P{&iso_random200, "isolation-random200"}}) {
+    std::string grp = pp.id;
+    group(grp, std::string("Exact real root isolation: ") + (grp.substr(10)),
+          "The same integer polynomial isolated by the workbench (eccd::real_roots on [0, 1], brackets of width "
+          "2^-64: CGAL Algebraic_kernel_d_1 over GMP + MPFI), by that CGAL kernel called directly (all real roots), "
+          "by CGAL's kernel over CORE::BigInt (all real roots) and by MPSolve (isolating discs for all complex "
+          "roots). Process CPU time (all threads).",
+          grp == "isolation-random200" ? "issue 6: CGAL with CORE about 7 ms on a random degree-200 integer polynomial (this machine)"
+                                       : "the workbench's own isolation (baseline)");
+    Lazy<IsoPoly>* poly = pp.poly;
+    row(grp, "workbench real_roots (CGAL GMP+MPFI)", true, Cost::slow,
+        "eccd::real_roots(p, 0, 1, 64): conversion, solve_1, brackets to 2^-64, restriction to [0, 1]",
+        [poly, grp](benchmark::State& st) {
+          const IsoPoly& ip = poly->get();
+          timed(st, grp + "/workbench real_roots (CGAL GMP+MPFI)", [&] { return real_roots(ip.p, Rational(0), Rational(1), 64); },
+                [&](const std::vector<AlgebraicRoot>& r) {
+                  json j = iso_info(ip);
+                  j["in_unit"] = r.size();
+                  return j;
+                });
+        },
+        true);
+    struct L { const char* label; std::unique_ptr<eccd_bench::PreparedIsolation> (*prep)(const std::vector<mpz_class>&); const char* note; };
+    for (L l : {L{"CGAL GMP+MPFI solve_1", eccd_bench::prepare_cgal_gmp_mpfi, "Algebraic_kernel_d_1<Gmpz>, CGAL_USE_MPFI, fresh kernel"},
+                L{"CGAL CORE solve_1", eccd_bench::prepare_cgal_core, "Algebraic_kernel_d_1<CORE::BigInt>, fresh kernel"},
+                L{"MPSolve isolate", eccd_bench::prepare_mpsolve, "mps_mpsolve, goal isolate, secular GA, all complex roots"}}) {
+      std::string label = l.label;
+      row(grp, label, false, Cost::slow, l.note,
+          [poly, grp, label, l](benchmark::State& st) {
+            const IsoPoly& ip = poly->get();
+            auto prepared = l.prep(ip.z);
+            timed(st, grp + "/" + label, [&] { return prepared->run(); }, [&](const eccd_bench::IsolationOutcome& o) {
+              json j = iso_info(ip);
+              j["roots"] = o.roots;
+              j["in_unit"] = o.in_unit;
+              return j;
+            });
+          },
+          true);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Phases: the targets' pipelines split into their public steps.
+
+template <class T, class Policy>
+void add_phases_2d(const std::string& grp, Lazy<Scene2D>* sc, Variant var, std::function<Policy()> make_pol,
+                   std::function<T()> make_like) {
+  struct In {
+    MovingPair<T, 3> m;
+    std::vector<Poly<T>> g;
+    typename Policy::Rep delta, P, D;
+    std::vector<typename Policy::Root> roots;
+  };
+  auto in = std::make_shared<Lazy<In>>([sc, make_pol, make_like] {
+    const Scene2D& s = sc->get();
+    Policy pol = make_pol();
+    In x{to_arithmetic<T, 3>(s.p, make_like()), {}, {}, {}, {}, {}};
+    x.g = characteristic_coefficients<T, 3>(moving_quadric<T, 3>(x.m.qa, x.m.na), moving_quadric<T, 3>(x.m.qb, x.m.nb));
+    x.delta = discriminant_of(x.g, pol);
+    x.P = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) { return double_root_numerator(g3, g2, g1, g0); });
+    x.D = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) { return double_root_denominator(g3, g2, g1); });
+    x.roots = pol.roots(x.delta, false);
+    return x;
+  });
+  auto none = [](const auto&) { return json(); };
+  row(grp, "total pipeline", true, Cost::slow, "to_arithmetic + cd_disc", [=](benchmark::State& st) {
+    const Scene2D& s = sc->get();
+    T like = make_like();
+    timed(st, grp + "/total pipeline", [&] {
+      Policy pol = make_pol();
+      MovingPair<T, 3> m = to_arithmetic<T, 3>(s.p, like);
+      return cd_disc(m, pol, var);
+    }, [](const auto& r) { return summarise_ccd(r); });
+  });
+  row(grp, "1 to_arithmetic", false, Cost::slow, "the exact scene rounded to the arithmetic", [=](benchmark::State& st) {
+    const Scene2D& s = sc->get();
+    T like = make_like();
+    timed(st, grp + "/1 to_arithmetic", [&] { return to_arithmetic<T, 3>(s.p, like); }, none);
+  });
+  row(grp, "2 g = det(λA - B)", false, Cost::slow, "moving_quadric x 2 + characteristic_coefficients (power form)",
+      [=](benchmark::State& st) {
+        const In& x = in->get();
+        timed(st, grp + "/2 g = det(λA - B)", [&] {
+          return characteristic_coefficients<T, 3>(moving_quadric<T, 3>(x.m.qa, x.m.na), moving_quadric<T, 3>(x.m.qb, x.m.nb));
+        }, none);
+      });
+  row(grp, "3 Δ build", false, Cost::slow, "discriminant_of(g, policy)", [=](benchmark::State& st) {
+    const In& x = in->get();
+    Policy pol = make_pol();
+    timed(st, grp + "/3 Δ build", [&] { return discriminant_of(x.g, pol); }, none);
+  });
+  row(grp, "4 P, D build", false, Cost::slow, "policy.build of P = 9g3g0 - g2g1 and D = g2² - 3g3g1", [=](benchmark::State& st) {
+    const In& x = in->get();
+    Policy pol = make_pol();
+    timed(st, grp + "/4 P, D build", [&] {
+      auto P = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) { return double_root_numerator(g3, g2, g1, g0); });
+      auto D = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) { return double_root_denominator(g3, g2, g1); });
+      return std::make_pair(std::move(P), std::move(D));
+    }, none);
+  });
+  row(grp, "5 roots of Δ", false, Cost::slow, "policy.roots(Δ)", [=](benchmark::State& st) {
+    const In& x = in->get();
+    Policy pol = make_pol();
+    timed(st, grp + "/5 roots of Δ", [&] { return pol.roots(x.delta, false); },
+          [](const auto& r) { return json{{"roots", r.size()}}; });
+  });
+  row(grp, "6 signs of P, D at the roots", false, Cost::slow, "policy.sign_at(P, r), policy.sign_at(D, r) for every root",
+      [=](benchmark::State& st) {
+        const In& x = in->get();
+        Policy pol = make_pol();
+        timed(st, grp + "/6 signs of P, D at the roots", [&] {
+          int n = 0;
+          for (const auto& r : x.roots) n += int(pol.sign_at(x.P, r)) + int(pol.sign_at(x.D, r));
+          return n;
+        }, none);
+      });
+}
+
+void register_phases() {
+  group("phases-2d-deg6-double-v3", "Where the time goes: 2D degree 6, Variant 3, double",
+        "The steps of cd_disc timed one by one on the same inputs; the remainder (static tests at the samples, "
+        "contact points, answer assembly) is the total minus the steps.",
+        "issue 6 target for the total: at most 0.5 ms");
+  add_phases_2d<double, FloatingPolicy<double>>("phases-2d-deg6-double-v3", &s2d_deg6, Variant::all_contacts,
+                                                [] { return FloatingPolicy<double>(Basis::bernstein, 53, 1.0); },
+                                                [] { return 1.0; });
+  group("phases-2d-deg6-exact-v0", "Where the time goes: 2D degree 6, full answer, exact",
+        "The steps of cd_disc with ExactPolicy timed one by one on the same inputs (roots: CGAL isolation and "
+        "refinement; signs: exact signs at algebraic numbers).",
+        "issue 6 target for the total: at most 50 ms");
+  add_phases_2d<Rational, ExactPolicy>("phases-2d-deg6-exact-v0", &s2d_deg6, Variant::answer, [] { return ExactPolicy(); },
+                                       [] { return Rational(1); });
+
+  // 3D paper 002, double Bézier: setup of g, F(u, t), the zero-set analysis.
+  std::string grp = "phases-paper002-double-bezier";
+  group(grp, "Where the time goes: paper 002's example, double Bézier",
+        "characteristic_bernstein (g_0..g_4 in Bernstein form from N(t) converted exactly to Bernstein form), "
+        "F(u, t) = det((u-1)A - uB) as a bivariate Bernstein polynomial (BezierZeroSet's constructor), and the "
+        "analysis (static tests at 33 samples, shooting, subdivision, Gaussian-circle tests) = ccd_bezier minus F.",
+        "issue 6 target for the total: at most 2 ms");
+  auto g002 = std::make_shared<Lazy<std::vector<Bern<double>>>>([] { return characteristic_bernstein<double, 4>(s3d_paper002.get().p, false, 1.0); });
+  row(grp, "total pipeline", true, Cost::slow, "characteristic_bernstein + ccd_bezier", [grp](benchmark::State& st) {
+    const Scene3D& s = s3d_paper002.get();
+    timed(st, grp + "/total pipeline", [&] { return run3d_floating<double>(s.p, "bezier", Basis::bernstein, 53, 1.0, false); },
+          [](const auto& r) { return summarise_ccd(r); });
+  });
+  row(grp, "1 setup g (characteristic_bernstein)", false, Cost::slow, "", [grp](benchmark::State& st) {
+    const Scene3D& s = s3d_paper002.get();
+    timed(st, grp + "/1 setup g (characteristic_bernstein)", [&] { return characteristic_bernstein<double, 4>(s.p, false, 1.0); },
+          [](const auto&) { return json(); });
+  });
+  row(grp, "1a to_arithmetic_bernstein (exact conversion)", false, Cost::slow, "part of 1", [grp](benchmark::State& st) {
+    const Scene3D& s = s3d_paper002.get();
+    timed(st, grp + "/1a to_arithmetic_bernstein (exact conversion)", [&] { return to_arithmetic_bernstein<double, 4>(s.p, 1.0); },
+          [](const auto&) { return json(); });
+  });
+  row(grp, "2 F(u,t) build", false, Cost::slow, "BezierZeroSet constructor (ellipsoid_function)", [grp, g002](benchmark::State& st) {
+    const auto& g = g002->get();
+    timed(st, grp + "/2 F(u,t) build", [&] { return BezierZeroSet<double>(g, 1.0, 53, BezierOptions{}).F().degree_t(); },
+          [](int d) { return json{{"degree_t", d}}; });
+  });
+  row(grp, "3 ccd_bezier (F build + analysis)", false, Cost::slow, "", [grp, g002](benchmark::State& st) {
+    const auto& g = g002->get();
+    timed(st, grp + "/3 ccd_bezier (F build + analysis)", [&] { return ccd_bezier(g, 1.0, 53, BezierOptions{}); },
+          [](const auto& r) { return summarise_ccd(r); });
+  });
+
+  // 3D paper 002, exact projection.
+  grp = "phases-paper002-exact";
+  group(grp, "Where the time goes: paper 002's example, exact projection",
+        "ccd_projection with ExactPolicy split: the exact g_k, the discriminant of the quartic (degree 216), its "
+        "isolation on [0, 1] (CGAL), and the rest (exact Sturm counts in the cells, subresultant signs at the roots).",
+        "issue 6 target for the total: at most 1 s");
+  auto gx = std::make_shared<Lazy<std::vector<Poly<Rational>>>>([] {
+    return characteristic_of(to_arithmetic<Rational, 4>(s3d_paper002.get().p, Rational(1)));
+  });
+  auto projx = std::make_shared<Lazy<Poly<Rational>>>([gx] {
+    const auto& g = gx->get();
+    return quartic_discriminant(g[4], g[3], g[2], g[1], g[0]);
+  });
+  row(grp, "total pipeline", true, Cost::very_slow, "to_arithmetic + ccd_projection, ExactPolicy", [grp](benchmark::State& st) {
+    const Scene3D& s = s3d_paper002.get();
+    timed(st, grp + "/total pipeline", [&] { return run3d_exact(s.p); }, [](const auto& r) { return summarise_ccd(r); });
+  });
+  row(grp, "1 g = det(λA - B)", false, Cost::slow, "to_arithmetic<Rational,4> + characteristic_of", [grp](benchmark::State& st) {
+    const Scene3D& s = s3d_paper002.get();
+    timed(st, grp + "/1 g = det(λA - B)", [&] { return characteristic_of(to_arithmetic<Rational, 4>(s.p, Rational(1))); },
+          [](const auto&) { return json(); });
+  });
+  row(grp, "2 projection build", false, Cost::slow, "quartic_discriminant of g (exact)", [grp, gx](benchmark::State& st) {
+    const auto& g = gx->get();
+    timed(st, grp + "/2 projection build", [&] { return quartic_discriminant(g[4], g[3], g[2], g[1], g[0]); },
+          [](const Poly<Rational>& p) { return json{{"degree", p.degree()}}; });
+  });
+  row(grp, "3 roots of the projection", false, Cost::slow, "ExactPolicy::roots (real_roots on [0, 1] + refinement)",
+      [grp, projx](benchmark::State& st) {
+        const auto& p = projx->get();
+        ExactPolicy pol;
+        timed(st, grp + "/3 roots of the projection", [&] { return pol.roots(p, false); },
+              [](const auto& r) { return json{{"roots", r.size()}}; });
+      });
+}
+
+// ---------------------------------------------------------------------------
+// Rows through eccd::solve_scene: a table of (label, SolveOptions).
+//
+// >>> ISSUE 6 part 2 (certified interval arithmetic, `--arith certified`,
+// >>> being built in floating/ and app/solve.cpp): add its rows to
+// >>> kSolveSceneRows below, e.g.
+// >>>   {"solve_scene-2d-deg6", "certified v3", 2, [] { SolveOptions o; o.arith = parse_arithmetic("certified"); o.variant = 3; return o; }},
+// >>>   {"solve_scene-paper002", "certified", 3, [] { SolveOptions o; o.arith = parse_arithmetic("certified"); return o; }},
+// >>> and, if it should have a target, a line in bench/performance_report.py's
+// >>> TARGETS. Nothing stands in for it until then.
+
+struct SolveRow {
+  const char* group;
+  const char* label;
+  int dim;  // 2: the 2D degree-6 scene; 3: paper 002's example
+  SolveOptions (*options)();
+};
+
+SolveOptions opts(const char* arith, int variant, const char* method = "bezier") {
+  SolveOptions o;
+  o.arith = parse_arithmetic(arith);
+  o.variant = variant;
+  o.method = method;
+  return o;
+}
+
+const SolveRow kSolveSceneRows[] = {
+    {"solve_scene-2d-deg6", "double v3", 2, [] { return opts("double", 3); }},
+    {"solve_scene-2d-deg6", "mpfr:128 v3", 2, [] { return opts("mpfr:128", 3); }},
+    {"solve_scene-2d-deg6", "exact v3", 2, [] { return opts("exact", 3); }},
+    {"solve_scene-2d-deg6", "exact v0", 2, [] { return opts("exact", 0); }},
+    {"solve_scene-paper002", "double bezier", 3, [] { return opts("double", 0); }},
+    {"solve_scene-paper002", "exact", 3, [] { return opts("exact", 0); }},
+    // certified rows go here (see above)
+};
+
+void register_solve_scene() {
+  group("solve_scene-2d-deg6", "eccd::solve_scene on the 2D degree-6 scene (JSON included)",
+        "What `eccd solve` computes, through solve_scene(scene, SolveOptions): the pipeline plus preparation of the "
+        "scene (prepare_pair) and the JSON report; the certified mode's rows are added here.",
+        "the first row of the table (double)");
+  group("solve_scene-paper002", "eccd::solve_scene on paper 002's example (JSON included)",
+        "As above, 3D.", "the first row of the table (double Bézier)");
+  std::map<std::string, bool> seen;
+  for (const SolveRow& r : kSolveSceneRows) {
+    std::string grp = r.group, label = r.label;
+    bool baseline = !seen[grp];
+    seen[grp] = true;
+    SolveOptions o = r.options();
+    int dim = r.dim;
+    row(grp, label, baseline, label.find("exact") != std::string::npos && dim == 3 ? Cost::very_slow : Cost::slow,
+        "solve_scene, arith " + o.arith.name() + (dim == 2 ? ", variant " + std::to_string(o.variant) : ", method " + o.method),
+        [grp, label, o, dim](benchmark::State& st) {
+          const Scene& sc = dim == 2 ? s2d_deg6.get().scene : s3d_paper002.get().scene;
+          timed(st, grp + "/" + label, [&] { return solve_scene(sc, o); }, [](const json& j) {
+            return json{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]},
+                        {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
+                        {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
+          });
+        });
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Reporter: medians per row (console shows only the medians) and the summary.
+
+struct Median {
+  double cpu_ns = 0, real_ns = 0;
+  long long iterations = 0;
+  long long repetitions = 0;
+  std::vector<double> rep_cpu_ns;
+  std::string error;
+};
+std::map<std::string, Median> g_medians;
+
+class SummaryReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    std::vector<Run> shown;
+    for (const auto& r : runs) {
+      const std::string key = r.run_name.function_name;
+      Median& m = g_medians[key];
+      if (r.error_occurred) {
+        m.error = r.error_message;
+        shown.push_back(r);
+        continue;
+      }
+      const double to_ns = 1e9 / benchmark::GetTimeUnitMultiplier(r.time_unit);
+      if (r.run_type == Run::RT_Iteration) {
+        m.rep_cpu_ns.push_back(r.GetAdjustedCPUTime() * to_ns);
+        m.iterations += r.iterations;
+      } else if (r.aggregate_name == "median") {
+        m.cpu_ns = r.GetAdjustedCPUTime() * to_ns;
+        m.real_ns = r.GetAdjustedRealTime() * to_ns;
+        m.repetitions = r.repetitions;
+        shown.push_back(r);
+      }
+    }
+    if (!shown.empty()) ConsoleReporter::ReportRuns(shown);
+  }
+};
+
+std::string now_iso() {
+  std::time_t t = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S%z", std::localtime(&t));
+  return buf;
+}
+
+json summary(const std::string& started) {
+  json out;
+  out["started"] = started;
+  out["finished"] = now_iso();
+  out["compiler"] = std::string("g++ ") + __VERSION__;
+  out["build_type"] = ECCD_BUILD_TYPE;
+  out["gmp"] = gmp_version;
+  out["mpfr"] = mpfr_get_version();
+  out["mpsolve"] = eccd_bench::mpsolve_version();
+  out["quick"] = g_quick;
+  json groups = json::array();
+  for (const Group& g : g_groups) {
+    json jg{{"id", g.id}, {"title", g.title}, {"description", g.description}, {"anchor", g.anchor}};
+    json rows = json::array();
+    double base = 0;
+    for (const Row& r : g_rows)
+      if (r.group == g.id && r.baseline && g_medians.count(r.key) && g_medians[r.key].error.empty()) base = g_medians[r.key].cpu_ns;
+    for (const Row& r : g_rows) {
+      if (r.group != g.id || !g_medians.count(r.key)) continue;
+      const Median& m = g_medians[r.key];
+      json jr{{"key", r.key}, {"label", r.label}, {"baseline", r.baseline}, {"note", r.note}};
+      if (!m.error.empty()) {
+        jr["error"] = m.error;
+      } else {
+        jr["median_cpu_ns"] = m.cpu_ns;
+        jr["median_real_ns"] = m.real_ns;
+        jr["repetitions"] = m.repetitions;
+        jr["iterations"] = m.iterations;
+        if (!m.rep_cpu_ns.empty()) {
+          jr["min_cpu_ns"] = *std::min_element(m.rep_cpu_ns.begin(), m.rep_cpu_ns.end());
+          jr["max_cpu_ns"] = *std::max_element(m.rep_cpu_ns.begin(), m.rep_cpu_ns.end());
+        }
+        jr["ratio"] = base > 0 ? json(m.cpu_ns / base) : json();
+      }
+      if (g_results.count(r.key)) jr["result"] = g_results[r.key];
+      rows.push_back(jr);
+    }
+    if (rows.empty()) continue;
+    jg["rows"] = rows;
+    groups.push_back(jg);
+  }
+  out["groups"] = groups;
+  out["scenes"] = g_scenes;
+  return out;
+}
+
+void print_ratios(const json& s) {
+  std::printf("\nMedians (CPU time) and ratios to each group's baseline:\n");
+  for (const auto& g : s["groups"]) {
+    std::printf("\n[%s] %s\n", g["id"].get<std::string>().c_str(), g["title"].get<std::string>().c_str());
+    for (const auto& r : g["rows"]) {
+      if (r.contains("error")) { std::printf("  %-44s ERROR %s\n", r["label"].get<std::string>().c_str(), r["error"].get<std::string>().c_str()); continue; }
+      double ns = r["median_cpu_ns"];
+      char t[32];
+      if (ns < 1e4) std::snprintf(t, sizeof t, "%.1f ns", ns);
+      else if (ns < 1e7) std::snprintf(t, sizeof t, "%.3f ms", ns / 1e6);
+      else std::snprintf(t, sizeof t, "%.1f ms", ns / 1e6);
+      char ratio[32] = "-";
+      if (!r["ratio"].is_null()) std::snprintf(ratio, sizeof ratio, "%.3g", r["ratio"].get<double>());
+      std::printf("  %-44s %14s  x%-10s%s\n", r["label"].get<std::string>().c_str(), t, ratio,
+                  r["baseline"].get<bool>() ? "  (baseline)" : "");
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string started = now_iso();
+  std::string summary_path;
+  bool list = false;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.rfind("--eccd_summary=", 0) == 0) summary_path = a.substr(15);
+    else if (a == "--eccd_quick") g_quick = true;
+    else if (a == "--eccd_list") list = true;
+    else args.push_back(argv[i]);
+  }
+  int n = int(args.size());
+  benchmark::Initialize(&n, args.data());
+  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+
+  if (list) {
+    for (Lazy<Scene2D>* s : {&s2d_deg2, &s2d_deg4, &s2d_deg6, &s2d_deg6_free, &s2d_paper003}) {
+      const Scene2D& x = s->get();
+      std::cout << x.id << ": " << x.info.dump() << "\n";
+    }
+    return 0;
+  }
+
+  register_static();
+  register_2d();
+  register_3d();
+  register_isolation();
+  register_phases();
+  register_solve_scene();
+
+  SummaryReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  json s = summary(started);
+  print_ratios(s);
+  if (!summary_path.empty()) {
+    std::ofstream f(summary_path);
+    f << s.dump(1) << "\n";
+    if (!f) { std::cerr << "cannot write " << summary_path << "\n"; return 1; }
+  }
+  benchmark::Shutdown();
+  return 0;
+}
