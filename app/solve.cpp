@@ -159,14 +159,8 @@ nlohmann::json run_floating_3d(const PreparedPair<4>& p, const SolveOptions& opt
 template <int N>
 nlohmann::json run_exact(const PreparedPair<N>& p, const SolveOptions& opt) {
   ExactPolicy pol;
-  MovingPair<Rational, N> m = to_arithmetic<Rational, N>(p, Rational(1));
-  nlohmann::json j;
-  if constexpr (N == 3) {
-    j = report_json(cd_disc(m, pol, Variant(opt.variant)));
-  } else {
-    j = report_json(ccd_projection(m, pol, opt.first_contact), 3);
-    j["method"] = "projection";
-  }
+  nlohmann::json j = report_json(projection_pipeline(to_arithmetic<Rational, N>(p, Rational(1)), pol, Variant(opt.variant), opt.first_contact), N - 1);
+  if (N == 4) j["method"] = "projection";
   j["basis"] = "exact";
   j["certified"] = true;
   return j;
@@ -180,10 +174,8 @@ nlohmann::json run_certified(const PreparedPair<N>& p, const SolveOptions& opt) 
   std::string reason;
   try {
     CertifiedPolicy<Interval> pol;
-    MovingPair<Interval, N> m = to_arithmetic<Interval, N>(p, Interval(0));
-    CdDiscResult<Interval> r;
-    if constexpr (N == 3) r = cd_disc(m, pol, Variant(opt.variant));
-    else r = ccd_projection(m, pol, opt.first_contact);
+    CdDiscResult<Interval> r =
+        projection_pipeline(to_arithmetic<Interval, N>(p, Interval(0)), pol, Variant(opt.variant), opt.first_contact);
     if (r.answer.undecided.empty()) {
       nlohmann::json j = report_json(r, N - 1);
       j["work"]["interval_pieces"] = pol.pieces;

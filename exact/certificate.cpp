@@ -70,16 +70,11 @@ void clear_gap(const Rational& a, const Rational& b, const std::vector<std::pair
   clear_gap(m, b, F, P, points, depth + 1);
 }
 
-template <class T>
-CdDiscResult<T> run_exact(const Scene& s, std::vector<Isolation>& record) {
+template <int N>
+CdDiscResult<Rational> run_exact(const Scene& s, std::vector<Isolation>& record) {
   ExactPolicy pol;
   pol.record = &record;
-  if (s.dim == 2) {
-    auto m = to_arithmetic<Rational, 3>(prepare_pair<3>(s), Rational(1));
-    return cd_disc(m, pol, Variant::answer);
-  }
-  auto m = to_arithmetic<Rational, 4>(prepare_pair<4>(s), Rational(1));
-  return ccd_projection(m, pol, false);
+  return projection_pipeline(to_arithmetic<Rational, N>(prepare_pair<N>(s), Rational(1)), pol);
 }
 
 }  // namespace
@@ -87,7 +82,7 @@ CdDiscResult<T> run_exact(const Scene& s, std::vector<Isolation>& record) {
 nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc) {
   auto start = std::chrono::steady_clock::now();
   std::vector<Isolation> record;
-  CdDiscResult<Rational> res = run_exact<Rational>(s, record);
+  CdDiscResult<Rational> res = s.dim == 2 ? run_exact<3>(s, record) : run_exact<4>(s, record);
   const CertificateAlgebra alg = certificate_algebra(s);
   if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
 

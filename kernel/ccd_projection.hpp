@@ -128,3 +128,17 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
 }
 
 }  // namespace eccd
+
+namespace eccd {
+
+// The projection pipeline of a dimension: CD-DISC in 2D (N = 3; its projection
+// is Δ) and the projection CCD above in 3D (N = 4). Exact, interval and
+// floating policies all enter here, so the dispatch is written once.
+template <class T, int N, class Policy>
+CdDiscResult<T> projection_pipeline(const MovingPair<T, N>& pair, Policy& pol, Variant variant = Variant::answer,
+                                    bool first_contact_only = false) {
+  if constexpr (N == 3) return cd_disc(pair, pol, variant);
+  else return ccd_projection(pair, pol, first_contact_only);
+}
+
+}  // namespace eccd
