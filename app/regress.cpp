@@ -67,10 +67,15 @@ Command add_regress_command(CLI::App& app) {
   s->add_option("DIR", args->dir, "Folder searched recursively for scene files (*.json)")->capture_default_str();
   s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline and tabulate how each fares against the stored answers");
   s->add_option("--arith", args->arith,
-                "Certified arithmetic that recomputes the answers: exact, or certified (interval arithmetic escalating to "
-                "exact; the summary says how often it escalated)")
+                "Certified arithmetic that recomputes the answers: exact, or certified (intervals of doubles, escalating to "
+                "MPFI intervals of 256 bits, then to exact; certified:B1,B2,... or certified:none choose the MPFI rungs; the "
+                "summary says where each scene was decided)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"exact", "certified"}));
+      ->check([](const std::string& a) -> std::string {
+        if (a != "exact" && a.rfind("certified", 0) != 0) return "expected exact or certified[:BITS,...]";
+        try { parse_arithmetic(a); } catch (const std::exception& e) { return e.what(); }
+        return "";
+      });
   s->add_flag("--certify", args->certify,
               "Also write each scene's certificate (in memory) and re-check it with the certificate checker; a certificate "
               "that cannot be made or fails its check fails the scene");
@@ -85,6 +90,8 @@ Command add_regress_command(CLI::App& app) {
     std::sort(files.begin(), files.end());
     auto t0 = std::chrono::steady_clock::now();
     int agree = 0, differ = 0, failed = 0, skipped = 0, escalated = 0;
+    const bool certified_mode = args->arith != "exact";
+    std::map<std::string, int> decided_in;  // certified mode: scenes per deciding rung
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::string> pipeline_order;
     std::map<std::string, PipelineTally> tally;
@@ -110,10 +117,14 @@ Command add_regress_command(CLI::App& app) {
         std::string how;
         if (r.contains("escalated")) {
           row["escalated"] = r["escalated"];
+          row["decided_in"] = r["decided_in"];
+          row["escalations"] = r["escalations"];
+          const std::string rung = r["decided_in"].get<std::string>();
+          ++decided_in[rung];
           if (r["escalated"].get<bool>()) {
             ++escalated;
             row["escalation_reason"] = r["escalation_reason"];
-            how = "  (escalated to exact: " + r["escalation_reason"].get<std::string>() + ")";
+            how = "  (decided in " + rung + "; escalated: " + r["escalation_reason"].get<std::string>() + ")";
           } else {
             how = "  (decided in interval arithmetic)";
           }
@@ -208,7 +219,10 @@ Command add_regress_command(CLI::App& app) {
     if (args->json) {
       nlohmann::json j = {{"dir", args->dir}, {"arith", args->arith}, {"scenes", rows}, {"agree", agree}, {"differ", differ},
                           {"errors", failed}, {"skipped", skipped}, {"seconds", secs}, {"passed", bad == 0}};
-      if (args->arith == "certified") j["escalated"] = escalated;
+      if (certified_mode) {
+        j["escalated"] = escalated;
+        j["decided_in"] = decided_in;
+      }
       if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
       std::cout << j.dump(2) << "\n";
       return bad ? 1 : 0;
@@ -226,9 +240,12 @@ Command add_regress_command(CLI::App& app) {
     }
     std::printf("\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n", args->dir.c_str(),
                 agree + differ + failed, agree, differ, failed, skipped, secs);
-    if (args->arith == "certified")
-      std::printf("certified mode: %d of %d scene(s) escalated to exact arithmetic, %d decided in interval arithmetic\n", escalated,
-                  agree + differ, agree + differ - escalated);
+    if (certified_mode) {
+      std::printf("certified mode: %d of %d scene(s) decided in intervals of doubles, %d escalated; decided in:", agree + differ - escalated,
+                  agree + differ, escalated);
+      for (const auto& [rung, n] : decided_in) std::printf(" %s %d", rung.c_str(), n);
+      std::printf("\n");
+    }
     if (bad) std::printf("REGRESSION: %d scene(s) do not match their stored answers (FAIL lines above)\n", bad);
     return bad ? 1 : 0;
   };

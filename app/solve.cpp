@@ -4,6 +4,7 @@
 
 #include "exact/cd_disc_exact.hpp"
 #include "floating/certified_policy.hpp"
+#include "floating/mpfi_interval.hpp"
 #include "floating/ccd3_baselines.hpp"
 #include "kernel/bezier_ccd.hpp"
 #include "kernel/ccd_projection.hpp"
@@ -12,7 +13,9 @@
 #include "floating/mpfr_real.hpp"
 #include "kernel/scene_reader.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -22,7 +25,12 @@ std::string Arithmetic::name() const {
   switch (kind) {
     case Double: return "double";
     case Mpfr: return "mpfr:" + std::to_string(bits);
-    case Certified: return "certified";
+    case Certified: {
+      if (rungs == std::vector<int>{256}) return "certified";
+      std::string n = "certified:";
+      for (std::size_t i = 0; i < rungs.size(); ++i) n += (i ? "," : "") + std::to_string(rungs[i]);
+      return rungs.empty() ? n + "none" : n;
+    }
     default: return "exact";
   }
 }
@@ -31,7 +39,27 @@ Arithmetic parse_arithmetic(const std::string& text) {
   Arithmetic a;
   if (text == "double") { a.kind = Arithmetic::Double; a.bits = 53; return a; }
   if (text == "exact") { a.kind = Arithmetic::Exact; return a; }
-  if (text == "certified") { a.kind = Arithmetic::Certified; a.bits = 53; return a; }
+  if (text == "certified") { a.kind = Arithmetic::Certified; a.bits = 53; a.rungs = {256}; return a; }
+  if (text.rfind("certified:", 0) == 0) {
+    a.kind = Arithmetic::Certified;
+    a.bits = 53;
+    std::string list = text.substr(10);
+    if (list == "none") return a;
+    std::size_t at = 0;
+    while (true) {
+      std::size_t comma = list.find(',', at);
+      std::string b = list.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+      if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6)
+        throw std::invalid_argument("--arith " + text + ": expected certified:BITS[,BITS...] (MPFI rungs) or certified:none");
+      int bits = std::stoi(b);
+      if (bits < 54 || bits > 65536 || (!a.rungs.empty() && bits <= a.rungs.back()))
+        throw std::invalid_argument("--arith " + text + ": MPFI rungs must increase, each between 54 and 65536 bits");
+      a.rungs.push_back(bits);
+      if (comma == std::string::npos) break;
+      at = comma + 1;
+    }
+    return a;
+  }
   if (text.rfind("mpfr:", 0) == 0) {
     std::string b = text.substr(5);
     if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6)
@@ -166,36 +194,71 @@ nlohmann::json run_exact(const PreparedPair<N>& p, const SolveOptions& opt) {
   return j;
 }
 
-// --arith certified: the same pipeline in interval arithmetic; where a sign is
-// uncertain (Escalate, or an undecided instant) the scene is solved exactly.
-template <int N>
-nlohmann::json run_certified(const PreparedPair<N>& p, const SolveOptions& opt) {
-  auto start = std::chrono::steady_clock::now();
-  std::string reason;
+// --arith certified: the same pipeline in interval arithmetic, up a ladder of
+// rungs — intervals of doubles, then MPFI intervals at each precision of
+// opt.arith.rungs — and, where every rung leaves a sign uncertain (Escalate,
+// or an undecided instant), the exact pipeline. The JSON names the rung that
+// decided (`decided_in`) and why each lower rung gave up (`escalations`).
+template <class T, int N>
+std::optional<nlohmann::json> try_certified_rung(const PreparedPair<N>& p, const SolveOptions& opt, const T& like,
+                                                 int max_depth, std::string& reason, bool& multiple_root) {
   try {
-    CertifiedPolicy<Interval> pol;
-    CdDiscResult<Interval> r =
-        projection_pipeline(to_arithmetic<Interval, N>(p, Interval(0)), pol, Variant(opt.variant), opt.first_contact);
+    CertifiedPolicy<T> pol(like);
+    pol.max_depth = max_depth;
+    CdDiscResult<T> r = projection_pipeline(to_arithmetic<T, N>(p, like), pol, Variant(opt.variant), opt.first_contact);
     if (r.answer.undecided.empty()) {
       nlohmann::json j = report_json(r, N - 1);
       j["work"]["interval_pieces"] = pol.pieces;
-      j["escalated"] = false;
-      j["decided_in"] = "interval";
-      j["basis"] = "bernstein";
-      j["certified"] = true;
-      if (N == 4) j["method"] = "projection";
       return j;
     }
-    reason = std::to_string(r.answer.undecided.size()) + " instant(s) undecided in interval arithmetic";
+    reason = std::to_string(r.answer.undecided.size()) + " instant(s) undecided";
   } catch (const Escalate& e) {
     reason = e.what();
+    multiple_root = e.kind == Escalate::multiple_root;
   }
-  nlohmann::json j = run_exact<N>(p, opt);
-  j["escalated"] = true;
-  j["escalation_reason"] = reason;
-  j["decided_in"] = "exact";
-  j["time_ms"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
-  return j;
+  return std::nullopt;
+}
+
+template <int N>
+nlohmann::json run_certified(const PreparedPair<N>& p, const SolveOptions& opt) {
+  auto start = std::chrono::steady_clock::now();
+  nlohmann::json escalations = nlohmann::json::array();
+  auto finish = [&](nlohmann::json j, const std::string& rung) {
+    j["escalated"] = !escalations.empty();
+    for (const auto& e : escalations)  // the last rung that was tried, and why it gave up
+      if (e["reason"].get<std::string>().rfind("skipped", 0) != 0) j["escalation_reason"] = e["rung"].get<std::string>() + ": " + e["reason"].get<std::string>();
+    j["escalations"] = escalations;
+    j["decided_in"] = rung;
+    j["certified"] = true;
+    j["time_ms"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+    return j;
+  };
+  auto interval_json = [&](nlohmann::json j) {
+    j["basis"] = "bernstein";
+    if (N == 4) j["method"] = "projection";
+    return j;
+  };
+  std::string reason;
+  bool multiple_root = false;
+  if (auto j = try_certified_rung<Interval, N>(p, opt, Interval(0), 48, reason, multiple_root))
+    return finish(interval_json(*j), "interval");
+  escalations.push_back({{"rung", "interval"}, {"reason", reason}});
+  for (int bits : opt.arith.rungs) {
+    if (multiple_root) {  // no precision separates a multiple root: straight to exact
+      escalations.push_back({{"rung", "mpfi:" + std::to_string(bits)}, {"reason", "skipped: the rung below met a multiple root"}});
+      break;
+    }
+    // Deeper subdivision at higher precision (roots closer than 2^-48 can be
+    // told apart when the coefficients are known to `bits` bits), but not so
+    // deep that a true multiple root (every touch scene) costs much before
+    // the exact rung: 2^-64 at the default 256 bits.
+    int depth = std::clamp(bits / 4, 48, 256);
+    std::string rung = "mpfi:" + std::to_string(bits);
+    if (auto j = try_certified_rung<MpfiInterval, N>(p, opt, MpfiInterval(Rational(0), bits), depth, reason, multiple_root))
+      return finish(interval_json(*j), rung);
+    escalations.push_back({{"rung", rung}, {"reason", reason}});
+  }
+  return finish(run_exact<N>(p, opt), "exact");
 }
 
 nlohmann::json solve_3d(const Scene& scene, const SolveOptions& opt) {

@@ -2,20 +2,24 @@
 // `eccd solve`: one scene, one arithmetic, one answer (JSON and a summary).
 //
 // Arithmetic names: "double", "mpfr:BITS" (53 <= BITS <= 65536), "exact",
-// "certified" (interval arithmetic, escalating to exact where a sign is
-// uncertain: floating/certified_policy.hpp; the JSON says whether it did).
+// "certified" (interval arithmetic, escalating where a sign is uncertain to
+// MPFI intervals of 256 bits, then to exact: floating/certified_policy.hpp;
+// the JSON says where it was decided), "certified:B1,B2,..." (other MPFI
+// rungs, increasing) or "certified:none" (straight from doubles to exact).
 // Errors: std::invalid_argument for a request the pipeline refuses (a
 // cycloidal motion in exact arithmetic, an unknown arithmetic or method); kernel/scene_reader.hpp's SceneError for bad files.
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace eccd {
 
 struct Arithmetic {
   enum Kind { Double, Mpfr, Exact, Certified } kind = Exact;
   int bits = 0;  // MPFR precision; 53 for double and certified (intervals of doubles); 0 for exact
+  std::vector<int> rungs;  // certified: the MPFI precisions tried after intervals of doubles, before exact
   std::string name() const;
 };
 Arithmetic parse_arithmetic(const std::string& text);

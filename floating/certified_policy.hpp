@@ -18,24 +18,35 @@
 // undecided down to 2^-max_depth (a multiple root: every touch-and-separate
 // scene), a possible root at a split point, a projection that may vanish
 // identically — throws Escalate, and the caller re-solves the scene in a
-// stronger arithmetic (exact rationals). With no Escalate, the answer is
-// certified: brackets are dyadic rationals that provably hold one root each.
-// Requirements on T: Interval (or any scalar_traits<T> whose sign() is
-// certain-or-uncertain and whose operations enclose exact results).
+// stronger arithmetic: the same policy over MPFI intervals of higher
+// precision, then exact rationals (the ladder is app/solve.cpp's
+// run_certified). With no Escalate, the answer is certified: brackets are
+// dyadic rationals that provably hold one root each.
+// Requirements on T: Interval or MpfiInterval — scalar_traits<T> whose sign()
+// is certain-or-uncertain and whose operations enclose exact results, plus
+// interval_hull(lo, hi, like) and exact_point(x) (floating/interval.hpp,
+// floating/mpfi_interval.hpp).
 #include "exact/cd_disc_exact.hpp"  // simplest_dyadic_between
 #include "floating/interval.hpp"
+#include "floating/mpfi_interval.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/polynomial.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace eccd {
 
+// Why a rung gave up: `precision` (an interval too wide: more bits may
+// decide it) or `multiple_root` (a piece with two or more sign changes left at
+// 2^-max_depth: almost always a true multiple root, which no precision
+// separates — every touch scene — so the ladder goes straight to exact).
 struct Escalate : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  enum Kind { precision, multiple_root } kind;
+  explicit Escalate(const std::string& what, Kind k = precision) : std::runtime_error(what), kind(k) {}
 };
 
 struct CertifiedRoot {
@@ -53,7 +64,7 @@ struct CertifiedPolicy {
 
   explicit CertifiedPolicy(const T& like_value = T(0)) : like(like_value) {}
 
-  static T of(const Rational& q) { return scalar_traits<T>::from_rational(q, T(0)); }
+  T of(const Rational& q) const { return scalar_traits<T>::from_rational(q, like); }
 
   template <class F>
   Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
@@ -88,10 +99,20 @@ struct CertifiedPolicy {
     whole = nullptr;
     return out;
   }
-  // The certain sign of q over the whole bracket, or uncertain.
+  // The certain sign of q over the whole bracket, or uncertain: the sign
+  // shared by all Bernstein coefficients of q restricted to [lo, hi] (they
+  // enclose its range there; two de Casteljau splits). Evaluating q at the
+  // interval [lo, hi] instead would suffer the dependency problem: for
+  // degree 100+ its width is many times q's true range.
   Sign sign_at(const Bern<T>& q, const Root& r) const {
-    Interval t = hull(r.lo, r.hi);
-    return eccd::sign(q(T(t)));
+    if (q.degree() <= 0) return eccd::sign(q.b.empty() ? T(0) : q.b[0]);
+    Bern<T> piece = q;
+    if (r.lo > 0) piece = split(piece, of(r.lo)).second;
+    if (r.hi < 1) piece = split(piece, of((r.hi - r.lo) / (1 - r.lo))).first;
+    Sign s = eccd::sign(piece.b.front());
+    for (const auto& x : piece.b)
+      if (eccd::sign(x) != s) return Sign::uncertain;
+    return s;
   }
   Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
   T sample_between(const Root* l, const Root* r) const {
@@ -99,24 +120,20 @@ struct CertifiedPolicy {
   }
   // Point intervals only (0, 1 and dyadic samples): their exact value.
   Instant instant_at(const T& t) const {
-    if (t.lo != t.hi) throw std::logic_error("internal error: a certified instant that is not a point");
-    Rational q(t.lo);
-    return Instant{decimal_string(q), q, q};
+    std::optional<Rational> q = exact_point(t);
+    if (!q) throw std::logic_error("internal error: a certified instant that is not a point");
+    return Instant{decimal_string(*q), *q, *q};
   }
   Instant instant(const Root& r) const {
     Rational mid = (r.lo + r.hi) / 2;
     return Instant{decimal_string(mid), r.lo, r.hi};
   }
-  T value(const Root& r) const { return T(hull(r.lo, r.hi)); }
+  T value(const Root& r) const { return interval_hull(r.lo, r.hi, like); }
   int multiplicity(const Root&) const { return 1; }
   bool at_zero(const Root&) const { return false; }
   bool at_one(const Root&) const { return false; }
 
  private:
-  static Interval hull(const Rational& lo, const Rational& hi) {
-    Interval a = interval_of(lo), b = interval_of(hi);
-    return {a.lo, b.hi};
-  }
   static bool is_certain_nonzero(const T& x) {
     Sign s = eccd::sign(x);
     return s == Sign::positive || s == Sign::negative;
@@ -146,7 +163,8 @@ struct CertifiedPolicy {
     }
     if (depth >= max_depth)
       throw Escalate("interval root isolation cannot separate roots near t = " + decimal_string(a, 12) +
-                     " (a multiple root, or roots closer than 2^-" + std::to_string(max_depth) + ")");
+                     " (a multiple root, or roots closer than 2^-" + std::to_string(max_depth) + ")",
+                     Escalate::multiple_root);
     // Split at the middle, or near it if the value there is not certainly non-zero.
     for (const char* frac : {"1/2", "7/16", "9/16", "3/8", "5/8"}) {
       Rational f(frac);
@@ -175,7 +193,7 @@ struct CertifiedPolicy {
   }
   // q(t) at a rational t in (0, 1) in O(n): (1-t)^n Σ b_i C(n,i) s^i with
   // s = t/(1-t) for t <= 1/2, and the mirrored form for t > 1/2.
-  static T bernstein_at(const Bern<T>& q, const Rational& t) {
+  T bernstein_at(const Bern<T>& q, const Rational& t) const {
     const int n = q.degree();
     bool mirror = t > Rational(1, 2);
     T x = of(mirror ? Rational(1 - t) : t), y = of(mirror ? t : Rational(1 - t));

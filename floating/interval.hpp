@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace eccd {
@@ -87,6 +88,16 @@ inline Interval interval_of(const mpq_class& q) {
   double hi = mpfr_get_d(r, MPFR_RNDU);
   mpfr_clear(r);
   return {lo, hi};
+}
+
+// What the certified policy needs of an interval type (also for MpfiInterval):
+// the hull of two rationals, and a point's exact value.
+inline Interval interval_hull(const mpq_class& lo, const mpq_class& hi, const Interval& /*like*/) {
+  return {interval_of(lo).lo, interval_of(hi).hi};
+}
+inline std::optional<mpq_class> exact_point(const Interval& x) {
+  if (x.lo != x.hi || !std::isfinite(x.lo)) return std::nullopt;
+  return mpq_class(x.lo);
 }
 
 template <> struct scalar_traits<Interval> {

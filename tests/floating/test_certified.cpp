@@ -5,6 +5,7 @@
 #include "compare/regress.hpp"
 #include "compare/seeded_rng.hpp"
 #include "floating/interval.hpp"
+#include "floating/mpfi_interval.hpp"
 #include "kernel/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,6 +18,10 @@ namespace {
 bool contains(const Interval& x, const Rational& q) {
   Rational lo(x.lo), hi(x.hi);
   return lo <= q && q <= hi;
+}
+bool contains(const MpfiInterval& x, const Rational& q) {
+  mpq_class v(q);
+  return mpfi_is_inside_q(v.get_mpq_t(), x.get()) > 0;
 }
 Answer answer_of(const nlohmann::json& r) {
   return answer_from_json(nlohmann::json::parse(stored_answer_of(r).dump()), "certified", "answer");
@@ -43,6 +48,68 @@ TEST_CASE("Interval operations enclose the exact rational results", "[certified]
   CHECK(scalar_traits<Interval>::sign(interval_of(Rational(1, 3)) - interval_of(Rational(1, 3))) == Sign::uncertain);
   CHECK(scalar_traits<Interval>::sign(Interval(0, 0)) == Sign::zero);
   CHECK(scalar_traits<Interval>::sign(Interval(1, 1) / Interval(-1, 1)) == Sign::uncertain);
+}
+
+TEST_CASE("MPFI intervals enclose the exact rational results and carry their precision", "[certified][interval]") {
+  SeededRng rng{20261122};
+  for (int k = 0; k < 500; ++k) {
+    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)), b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
+    MpfiInterval A(a, 80), B(b, 200);
+    INFO(a << " " << b);
+    REQUIRE(contains(A, a));
+    CHECK(contains(A + B, Rational(a + b)));
+    CHECK(contains(A - B, Rational(a - b)));
+    CHECK(contains(A * B, Rational(a * b)));
+    CHECK((A * B).precision() == 200);
+    CHECK((A * MpfiInterval(3)).precision() == 80);  // a small constant adopts its partner's precision
+    if (b != 0) CHECK(contains(A / B, Rational(a / b)));
+    Rational third(1, 3);
+    MpfiInterval chain = (A * B - A) * (B + MpfiInterval(third, 80));
+    CHECK(contains(chain, Rational((a * b - a) * (b + third))));
+    // a long chain stays an enclosure: sum of (a*b)/(k+1)
+    MpfiInterval acc(0);
+    Rational exact(0);
+    for (int i = 0; i < 50; ++i) {
+      acc = acc + A * B / MpfiInterval(Rational(i + 1), 80);
+      exact += a * b / Rational(i + 1);
+    }
+    CHECK(contains(acc, exact));
+  }
+  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(Rational(1, 3), 300) - MpfiInterval(Rational(1, 3), 300)) == Sign::uncertain);
+  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(0)) == Sign::zero);
+  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(Rational(-1, 7), 60)) == Sign::negative);
+  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(1) / (MpfiInterval(Rational(1, 3), 60) - MpfiInterval(Rational(1, 3), 60))) == Sign::uncertain);
+  CHECK(exact_point(MpfiInterval(Rational(3, 8), 60)) == Rational(3, 8));
+  CHECK(!exact_point(MpfiInterval(Rational(1, 3), 60)));
+}
+
+TEST_CASE("certified arithmetic names its ladder of MPFI rungs", "[certified]") {
+  CHECK(parse_arithmetic("certified").rungs == std::vector<int>{256});
+  CHECK(parse_arithmetic("certified:none").rungs.empty());
+  CHECK(parse_arithmetic("certified:128,1024").rungs == std::vector<int>{128, 1024});
+  CHECK(parse_arithmetic("certified:128,1024").name() == "certified:128,1024");
+  CHECK(parse_arithmetic("certified").name() == "certified");
+  CHECK_THROWS_AS(parse_arithmetic("certified:512,256"), std::invalid_argument);
+  CHECK_THROWS_AS(parse_arithmetic("certified:53"), std::invalid_argument);
+  CHECK_THROWS_AS(parse_arithmetic("certified:abc"), std::invalid_argument);
+}
+
+TEST_CASE("a scene that intervals of doubles cannot decide is decided by the MPFI rung, with the exact answer", "[certified]") {
+  // 2D degree-4 colliding scene whose Δ is too ill-conditioned for intervals
+  // of doubles near t = 0.8 (found by `eccd regress cases --arith certified`).
+  Scene s = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/generated/2d/2d-deg4-colliding-kinematic-572211152701880.json");
+  SolveOptions opt;
+  opt.arith = parse_arithmetic("certified");
+  nlohmann::json r = solve_scene(s, opt);
+  CHECK(r["decided_in"] == "mpfi:256");
+  REQUIRE(r["escalations"].size() == 1);
+  CHECK(r["escalations"][0]["rung"] == "interval");
+  CHECK(answer_differences(*s.answer, answer_of(r)).empty());
+  // Without the MPFI rung the same scene goes from doubles to exact.
+  opt.arith = parse_arithmetic("certified:none");
+  nlohmann::json e = solve_scene(s, opt);
+  CHECK(e["decided_in"] == "exact");
+  CHECK(answer_differences(*s.answer, answer_of(e)).empty());
 }
 
 TEST_CASE("certified mode gives the stored exact answers on the 2D corpus and decides most non-touch scenes in intervals", "[certified]") {
