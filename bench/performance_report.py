@@ -78,6 +78,99 @@ TARGETS = [
     ),
 ]
 
+# Targets on a ratio over a set of scenes: per scene, the row `SCENE certified`
+# over the row `SCENE double` of the group; the target is on the median ratio.
+SET_TARGETS = [
+    dict(name="Certified mode, degree-4 2D generated set: median cost against double",
+         group="certified-set-2d-deg4", limit_ratio=3.0,
+         anchor="issue 6: a certified mode that costs at most 3x the double pipeline (the approach of CGAL's filtered predicates)"),
+    dict(name="Certified mode, degree-4 3D generated set: median cost against double",
+         group="certified-set-3d-deg4", limit_ratio=3.0,
+         anchor="issue 6: a certified mode that costs at most 3x the double pipeline (the approach of CGAL's filtered predicates)"),
+]
+
+
+def set_verdicts(summ):
+    out = []
+    for t in SET_TARGETS:
+        g = next((g for g in summ["groups"] if g["id"] == t["group"]), None)
+        v = dict(t)
+        v["scenes"] = []
+        if g is None:
+            v["status"] = "not measured"
+            out.append(v)
+            continue
+        by = {}
+        for r in g["rows"]:
+            if "median_cpu_ns" not in r:
+                continue
+            name, _, arith = r["label"].rpartition(" ")
+            by.setdefault(name, {})[arith] = r
+        for name in sorted(by):
+            d, c = by[name].get("double"), by[name].get("certified")
+            if not d or not c:
+                continue
+            res = c.get("result") if isinstance(c.get("result"), dict) else {}
+            v["scenes"].append(dict(name=name, double_ns=d["median_cpu_ns"], certified_ns=c["median_cpu_ns"],
+                                    ratio=c["median_cpu_ns"] / d["median_cpu_ns"], decided_in=res.get("decided_in", "?"),
+                                    reason=res.get("escalation_reason", "")))
+        if not v["scenes"]:
+            v["status"] = "not measured"
+        else:
+            ratios = sorted(x["ratio"] for x in v["scenes"])
+            n = len(ratios)
+            v["median_ratio"] = ratios[n // 2] if n % 2 else 0.5 * (ratios[n // 2 - 1] + ratios[n // 2])
+            v["met"] = v["median_ratio"] <= t["limit_ratio"]
+            v["status"] = "met" if v["met"] else "missed"
+            # The profile (when missed) is of the certified row of the scene at the median.
+            v["median_scene"] = min(v["scenes"], key=lambda x: abs(x["ratio"] - v["median_ratio"]))["name"]
+        out.append(v)
+    return out
+
+
+def write_set_targets(w, sets):
+    w("## The certified mode against double (set targets)")
+    w("")
+    w("Per scene of the set: `eccd::solve_scene` with `--arith double` and with `--arith certified`, each the median "
+      "over its repetitions; the ratio is certified / double. *Decided in*: `interval` (intervals of doubles), "
+      "`mpfi:256` (the MPFI rung) or `exact` (the last rung).")
+    w("")
+    for v in sets:
+        w(f"### {v['name']}")
+        w("")
+        w(f"Anchor: {v['anchor']}. Limit: median ratio ×{v['limit_ratio']:.0f}.")
+        w("")
+        if v["status"] == "not measured":
+            w("Not measured in this run.")
+            w("")
+            continue
+        verdict = (f"**met** (median ×{v['median_ratio']:.2f})" if v["met"] else
+                   f"**missed** by ×{v['median_ratio'] / v['limit_ratio']:.1f} (median ×{v['median_ratio']:.1f})")
+        w(f"Verdict: {verdict}.")
+        w("")
+        w("| scene | double | certified | ratio | decided in | why it escalated |")
+        w("| --- | --- | --- | --- | --- | --- |")
+        for x in v["scenes"]:
+            w(f"| {x['name']} | {fmt_time(x['double_ns'])} | {fmt_time(x['certified_ns'])} | ×{x['ratio']:.1f} | "
+              f"{x['decided_in']} | {md_escape(x['reason'][:140])} |")
+        w("")
+        counts = {}
+        for x in v["scenes"]:
+            counts[x["decided_in"]] = counts.get(x["decided_in"], 0) + 1
+        w("Decided in: " + ", ".join(f"{k} {n}" for k, n in sorted(counts.items())) + ".")
+        w("")
+        if v.get("perf"):
+            w(f"Profile of the certified row of the scene at the median ({v['median_scene']}), self time:")
+            w("")
+            w("| % | symbol |")
+            w("| --- | --- |")
+            for pct, name in v["perf"].get("symbol", []):
+                w(f"| {pct:.1f} | `{md_escape(name)}` |")
+            w("")
+        elif v.get("perf_error"):
+            w(f"No sampling profile: {v['perf_error']}.")
+            w("")
+
 
 ALLOC_SYMBOLS = re.compile(r"^(malloc|free|cfree(@.*)?|_int_malloc|_int_free|_int_realloc|realloc|calloc|"
                            r"malloc_consolidate|unlink_chunk.*|operator new.*|operator delete.*|tcache.*)$")
@@ -347,6 +440,18 @@ def main():
         else:
             v["perf_error"] = why_not
 
+    sets = set_verdicts(summ)
+    for v in sets:
+        if v["status"] != "missed":
+            continue
+        if ok:
+            key = v["group"] + "/" + v["median_scene"] + " certified"
+            print(f"profiling {key} under perf", file=sys.stderr)
+            v["perf"], v["perf_error"] = perf_profile(args.bench, key, args.work, args.profile_seconds)
+        else:
+            v["perf_error"] = why_not
+    info["set_targets"] = sets
+
     total_seconds = time.time() - started
     write_report(args.out, summ, info, verdicts, rows, bench_seconds, total_seconds, args)
     print(f"wrote {args.out} (benchmark {bench_seconds:.0f} s, whole run {total_seconds:.0f} s)", file=sys.stderr)
@@ -441,6 +546,8 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
             continue
         w(f"- {v['name']}: " + "; ".join(f"`{k}` {fmt_time(rows[k][1]['median_cpu_ns'])}" for k in rel) + ".")
     w("")
+
+    write_set_targets(w, info.get("set_targets", []))
 
     # What dominates.
     missed = [v for v in verdicts if v["status"] == "missed" or v.get("borderline")]
