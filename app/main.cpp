@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
   bool json = false;
   auto* solve = app.add_subcommand("solve", "Solve one scene: collision intervals, first contact and external contacts over t in [0, 1].");
   solve->add_option("SCENE", scene_path, "Scene file (format ellipse-ccd-scene/1)")->required();
-  solve->add_option("--arith", arith, "Arithmetic: double, mpfr:BITS (53..65536), exact (certified brackets) or certified (interval arithmetic with certified brackets, escalating to exact where a sign is uncertain)")->capture_default_str();
+  solve->add_option("--arith", arith, "Arithmetic: double, mpfr:BITS (53..65536), exact (certified brackets) or certified (interval arithmetic with certified brackets: intervals of doubles, then MPFI intervals of 256 bits, then exact, each rung only where a sign stayed uncertain; certified:B1,B2,... other MPFI rungs, certified:none no MPFI rung)")->capture_default_str();
   solve->add_option("--basis", basis, "Floating only: basis in which the discriminant (2D) or projection (3D --method projection) is built: power, bernstein or scaled-bernstein")->capture_default_str();
   solve->add_option("--variant", variant, "2D: 0: full answer with intervals; 1: collides? only; 2: first contact; 3: all external contacts (003 VI-C). 3D: 2 = --first-contact")->capture_default_str();
   solve->add_flag("--json", json, "Print exactly one JSON object (the spec's answer plus timing, degree of the discriminant, contact points)");
