@@ -1,45 +1,79 @@
-// CGAL's Algebraic_kernel_d_1 behind exact/algebraic_roots.hpp (the only CGAL
-// translation unit of the workbench: CGAL is header heavy).
+// Real roots of rational polynomials behind exact/algebraic_roots.hpp (the
+// only CGAL translation unit of the workbench: CGAL is header heavy).
+//
+// CGAL's Algebraic_kernel_d_1 over CORE::BigInt does the square-free
+// factorisation and the isolation (solve_1) and the polynomial gcds. CORE is
+// header-only in CGAL 5.5 (Debian libcgal-dev) and enabled by CGAL itself when
+// GMP and MPFR are there (CGAL_USE_CORE); nothing else to link. Everything
+// after isolation is done here on the isolating intervals, in integer
+// arithmetic: refinement by quadratic interval refinement (QIR, Abbott 2006:
+// secant steps snapped to a dyadic grid, bisection after a failed step) with
+// exact signs of the square-free factor at dyadic points, comparisons with
+// the ends of the range, and signs of other polynomials at the roots (a
+// mean-value bound first, a gcd for the zero case, refinement otherwise).
+// CGAL's own refinement and Sign_at_1 evaluate at rationals in rational
+// arithmetic (a gcd per operation): with refinement of every root to 2^-64
+// that was two thirds of the exact 2D pipeline before (issue 6).
 #include "exact/algebraic_roots.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
-#include <CGAL/Gmpz.h>
+#include <CGAL/CORE_BigInt.h>
+#include <CGAL/CORE_arithmetic_kernel.h>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace eccd {
 
 namespace {
-using AK = CGAL::Algebraic_kernel_d_1<CGAL::Gmpz>;
+using AK = CGAL::Algebraic_kernel_d_1<CORE::BigInt>;  // CORE's BigInt and BigRat (GMP inside)
 using AKPoly = AK::Polynomial_1;
 using AKReal = AK::Algebraic_real_1;
-using AKBound = AK::Bound;  // CGAL::Gmpq
+using PT = CGAL::Polynomial_traits_d<AKPoly>;
+using IntPoly = std::vector<mpz_class>;  // lowest degree first, nonzero leading coefficient
+
+constexpr unsigned long kMaxLevel = 1ul << 20;  // refinement limit (bits of a bracket's ends): a bug guard
 
 AK& kernel() {
   static thread_local AK ak;
   return ak;
 }
 
-AKPoly to_integer_poly(const Poly<Rational>& p) {
+// A positive rational multiple of p with coprime integer coefficients.
+IntPoly integer_multiple(const Poly<Rational>& p) {
   mpz_class l = 1;
   for (const auto& c : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
-  std::vector<CGAL::Gmpz> z;
-  z.reserve(p.c.size());
-  for (const auto& c : p.c) {
-    mpz_class n = c.get_num() * (l / c.get_den());
-    z.emplace_back(n.get_mpz_t());
+  IntPoly z(p.c.size());
+  mpz_class g = 0, t;
+  for (std::size_t i = 0; i < p.c.size(); ++i) {
+    mpz_divexact(t.get_mpz_t(), l.get_mpz_t(), p.c[i].get_den_mpz_t());
+    mpz_mul(z[i].get_mpz_t(), p.c[i].get_num_mpz_t(), t.get_mpz_t());
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), z[i].get_mpz_t());
   }
-  using PT = CGAL::Polynomial_traits_d<AKPoly>;
-  return PT::Construct_polynomial()(z.begin(), z.end());
+  if (g > 1)
+    for (auto& x : z) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+  return z;
+}
+
+AKPoly to_ak(const IntPoly& z) {
+  std::vector<CORE::BigInt> c;
+  c.reserve(z.size());
+  for (const auto& x : z) c.emplace_back(x.get_mpz_t());
+  return PT::Construct_polynomial()(c.begin(), c.end());
+}
+
+IntPoly from_ak(const AKPoly& p) {
+  int n = PT::Degree()(p);
+  IntPoly z;
+  z.reserve(n + 1);
+  for (int i = 0; i <= n; ++i) z.emplace_back(PT::Get_coefficient()(p, i).get_mp());
+  return z;
 }
 
 // Back from CGAL, made primitive with a positive leading coefficient.
-Poly<Rational> from_integer_poly(const AKPoly& p) {
-  using PT = CGAL::Polynomial_traits_d<AKPoly>;
-  int n = PT::Degree()(p);
-  std::vector<mpz_class> z;
-  for (int i = 0; i <= n; ++i) z.emplace_back(PT::Get_coefficient()(p, i).mpz());
+Poly<Rational> poly_from_ak(const AKPoly& p) {
+  IntPoly z = from_ak(p);
   mpz_class c = 0;
   for (const auto& x : z) mpz_gcd(c.get_mpz_t(), c.get_mpz_t(), x.get_mpz_t());
   if (c == 0) return Poly<Rational>();
@@ -50,29 +84,235 @@ Poly<Rational> from_integer_poly(const AKPoly& p) {
   return out;
 }
 
-Rational to_rational(const AKBound& b) { return Rational(b.mpq()); }
-AKBound to_bound(const Rational& q) { return AKBound(q.get_mpq_t()); }
-}  // namespace
+Rational to_rational(const AK::Bound& b) { return Rational(b.get_mp()); }
 
-struct AlgebraicRootImpl {
-  AKReal alpha;
-};
-
-// A bracket of width <= 2^-bits; when r already has one, the new bracket is
-// intersected with it, so that refining never moves a bracket outwards.
-static void set_bracket(AlgebraicRoot& r, int bits, bool keep_old) {
-  auto iv = kernel().approximate_absolute_1_object()(r.impl->alpha, bits);
-  Rational lo = to_rational(iv.first), hi = to_rational(iv.second);
-  if (keep_old) {
-    if (r.lo > lo) lo = r.lo;
-    if (r.hi < hi) hi = r.hi;
+// out = 2^(k·n) f(a / 2^k), n = deg f: the exact value, up to a positive factor.
+void eval_dyadic(mpz_class& out, const IntPoly& f, const mpz_class& a, unsigned long k) {
+  static thread_local mpz_class t;
+  const int n = int(f.size()) - 1;
+  mpz_set(out.get_mpz_t(), f[n].get_mpz_t());
+  for (int i = n - 1; i >= 0; --i) {
+    mpz_mul(out.get_mpz_t(), out.get_mpz_t(), a.get_mpz_t());
+    if (mpz_sgn(f[i].get_mpz_t()) == 0) continue;
+    mpz_mul_2exp(t.get_mpz_t(), f[i].get_mpz_t(), k * static_cast<unsigned long>(n - i));
+    mpz_add(out.get_mpz_t(), out.get_mpz_t(), t.get_mpz_t());
   }
-  r.lo = lo;
-  r.hi = hi;
 }
 
+// The exact sign of f at the rational x (den^n f(num / den) by Horner).
+int sign_at_rational(const IntPoly& f, const Rational& x) {
+  const int n = int(f.size()) - 1;
+  if (n < 0) return 0;
+  mpz_class s = f[n], pw = 1, t;
+  for (int i = n - 1; i >= 0; --i) {
+    pw *= x.get_den();
+    s *= x.get_num();
+    mpz_mul(t.get_mpz_t(), f[i].get_mpz_t(), pw.get_mpz_t());
+    s += t;
+  }
+  return sgn(s);
+}
+
+// x = a / 2^j (lowest terms) when x's denominator is a power of two.
+bool dyadic_parts(const Rational& x, mpz_class& a, unsigned long& j) {
+  if (mpz_popcount(x.get_den_mpz_t()) != 1) return false;
+  j = mpz_scan1(x.get_den_mpz_t(), 0);
+  a = x.get_num();
+  return true;
+}
+
+Rational dyadic(const mpz_class& a, unsigned long k) {
+  Rational r(a);
+  mpq_div_2exp(r.get_mpq_t(), r.get_mpq_t(), k);
+  return r;
+}
+
+// An isolating bracket on the dyadic grid of level k: the open interval
+// (A / 2^k, B / 2^k), A < B, holds exactly one root of the square-free f, and
+// f is not zero at its ends: FA = 2^(k·n) f(A / 2^k) and FB (likewise) are
+// nonzero and of opposite signs.
+struct Dyadic {
+  unsigned long k = 0;
+  mpz_class A, B, FA, FB;
+};
+
+// Refinement of a root of the square-free integer polynomial f. Every step
+// decides on exact signs of f at dyadic points; a zero there is the root
+// itself (the only root of f in the bracket), which is then exact.
+class Refiner {
+ public:
+  explicit Refiner(const IntPoly& f) : f_(f), n_(static_cast<unsigned long>(f.size() - 1)) {}
+
+  // From an isolating open interval (lo, hi) with arbitrary rational ends.
+  // Returns false and sets `exact` if the root turned out to be a grid point.
+  bool init(const Rational& lo_in, const Rational& hi_in, Dyadic& d, std::optional<Rational>& exact) {
+    Rational lo = lo_in, hi = hi_in;
+    mpz_class a, b;
+    unsigned long ja, jb;
+    if (dyadic_parts(lo, a, ja) && dyadic_parts(hi, b, jb)) {
+      d.k = std::max(ja, jb);
+      d.A = a << (d.k - ja);
+      d.B = b << (d.k - jb);
+      eval_dyadic(d.FA, f_, d.A, d.k);
+      eval_dyadic(d.FB, f_, d.B, d.k);
+      if (sgn(d.FA) * sgn(d.FB) >= 0) throw std::logic_error("internal error: not an isolating interval of a simple root");
+      return true;
+    }
+    // Rational ends: take grid points j1 < j2 inside (lo, hi) (at least three
+    // of them at level k); the root lies in (lo, j1), [j1, j2] or (j2, hi),
+    // and the outer pieces shrink by 4 or more each round.
+    int s_lo = sign_at_rational(f_, lo);
+    if (s_lo == 0 || s_lo == sign_at_rational(f_, hi)) throw std::logic_error("internal error: not an isolating interval of a simple root");
+    for (;;) {
+      Rational w = hi - lo;
+      unsigned long k = 0;
+      for (Rational s = w; s < 4; s *= 2) ++k;
+      if (k > kMaxLevel) throw std::logic_error("internal error: bracket refinement does not converge");
+      Rational L = lo, H = hi;
+      mpq_mul_2exp(L.get_mpq_t(), L.get_mpq_t(), k);
+      mpq_mul_2exp(H.get_mpq_t(), H.get_mpq_t(), k);
+      mpz_class j1, j2;
+      mpz_fdiv_q(j1.get_mpz_t(), L.get_num_mpz_t(), L.get_den_mpz_t());
+      j1 += 1;
+      mpz_cdiv_q(j2.get_mpz_t(), H.get_num_mpz_t(), H.get_den_mpz_t());
+      j2 -= 1;
+      mpz_class F1, F2;
+      eval_dyadic(F1, f_, j1, k);
+      if (sgn(F1) == 0) { exact = dyadic(j1, k); return false; }
+      eval_dyadic(F2, f_, j2, k);
+      if (sgn(F2) == 0) { exact = dyadic(j2, k); return false; }
+      if (sgn(F1) != s_lo) {
+        hi = dyadic(j1, k);
+      } else if (sgn(F2) == s_lo) {
+        lo = dyadic(j2, k);
+      } else {
+        d.k = k;
+        d.A = j1;
+        d.B = j2;
+        d.FA = F1;
+        d.FB = F2;
+        return true;
+      }
+      if (dyadic_parts(lo, a, ja) && dyadic_parts(hi, b, jb)) return init(lo, hi, d, exact);
+    }
+  }
+
+  // Shrinks d until its width is at most 2^-bits. Returns false and sets
+  // `exact` if the root turned out to be a grid point.
+  bool refine(Dyadic& d, long bits, std::optional<Rational>& exact) {
+    bool failed = false;
+    for (;;) {
+      long need = halvings_needed(d, bits);
+      if (need <= 0) return true;
+      if (d.k > kMaxLevel) throw std::logic_error("internal error: bracket refinement does not converge");
+      if (failed) {  // after a failed secant step, one bisection (progress is certain)
+        if (!bisect(d, exact)) return false;
+        failed = false;
+        continue;
+      }
+      // a successful step shrinks the bracket 2^L-fold: no finer than asked
+      int L = int(std::min<long>(log2n_, need));
+      int result = qir_step(d, L, exact);
+      if (result < 0) return false;
+      if (result == 1) {
+        log2n_ = std::min(2 * log2n_, 1 << 12);
+      } else {
+        log2n_ = std::max(1, log2n_ / 2);
+        failed = true;
+      }
+    }
+  }
+
+ private:
+  // How many halvings until (B - A) / 2^k <= 2^-bits (0 if none).
+  static long halvings_needed(const Dyadic& d, long bits) {
+    mpz_class w = d.B - d.A;
+    long e = long(mpz_sizeinbase(w.get_mpz_t(), 2));  // 2^(e-1) <= w < 2^e
+    if (mpz_popcount(w.get_mpz_t()) == 1) e -= 1;     // w = 2^e exactly
+    // width = w / 2^k <= 2^(e - k); need e - k <= -bits
+    return e - long(d.k) + bits;
+  }
+
+  void lift(Dyadic& d, unsigned long L) {
+    d.k += L;
+    d.A <<= L;
+    d.B <<= L;
+    d.FA <<= L * n_;
+    d.FB <<= L * n_;
+  }
+
+  // One bisection at the midpoint.
+  bool bisect(Dyadic& d, std::optional<Rational>& exact) {
+    mpz_class s = d.A + d.B;
+    if (mpz_odd_p(s.get_mpz_t())) {
+      lift(d, 1);
+      s = d.A + d.B;
+    }
+    mpz_class M = s >> 1, FM;
+    eval_dyadic(FM, f_, M, d.k);
+    if (sgn(FM) == 0) { exact = dyadic(M, d.k); return false; }
+    if (sgn(FM) == sgn(d.FA)) { d.A = M; d.FA = FM; } else { d.B = M; d.FB = FM; }
+    return true;
+  }
+
+  // A QIR step with N = 2^L: the secant point of the bracket snapped to the
+  // grid, and the point one N-th of the bracket further on the side of the
+  // root. Returns 1 when the root was caught between the two (the bracket
+  // shrank N-fold), 0 when the bracket only shrank, -1 when the root is a
+  // grid point (exact).
+  int qir_step(Dyadic& d, int L, std::optional<Rational>& exact) {
+    mpz_class w = d.B - d.A;
+    long bl = long(mpz_sizeinbase(w.get_mpz_t(), 2)) - 1;  // 2^bl <= w
+    if (bl < L + 1) {                                      // room for N steps of at least 2 grid cells
+      lift(d, static_cast<unsigned long>(L + 1 - bl));
+      w = d.B - d.A;
+    }
+    mpz_class h = w >> static_cast<unsigned long>(L);  // the step, >= 2
+    // the secant point A + round(w·|FA| / (|FA| + |FB|)), inside (A, B)
+    mpz_class aFA = abs(d.FA), aFB = abs(d.FB);
+    mpz_class den = aFA + aFB, num = w * aFA, off;
+    num = 2 * num + den;
+    den *= 2;
+    mpz_fdiv_q(off.get_mpz_t(), num.get_mpz_t(), den.get_mpz_t());
+    if (off < 1) off = 1;
+    if (off > w - 1) off = w - 1;
+    mpz_class M = d.A + off, FM;
+    eval_dyadic(FM, f_, M, d.k);
+    if (sgn(FM) == 0) { exact = dyadic(M, d.k); return -1; }
+    const int sa = sgn(d.FA);
+    if (sgn(FM) == sa) {  // the root is in (M, B)
+      d.A = M;
+      d.FA = FM;
+      mpz_class M1 = M + h;
+      if (M1 >= d.B) return 1;
+      mpz_class F1;
+      eval_dyadic(F1, f_, M1, d.k);
+      if (sgn(F1) == 0) { exact = dyadic(M1, d.k); return -1; }
+      if (sgn(F1) == sa) { d.A = M1; d.FA = F1; return 0; }
+      d.B = M1;
+      d.FB = F1;
+      return 1;
+    }
+    d.B = M;  // the root is in (A, M)
+    d.FB = FM;
+    mpz_class M1 = M - h;
+    if (M1 <= d.A) return 1;
+    mpz_class F1;
+    eval_dyadic(F1, f_, M1, d.k);
+    if (sgn(F1) == 0) { exact = dyadic(M1, d.k); return -1; }
+    if (sgn(F1) != sa) { d.B = M1; d.FB = F1; return 0; }
+    d.A = M1;
+    d.FA = F1;
+    return 1;
+  }
+
+  const IntPoly& f_;
+  unsigned long n_;
+  int log2n_ = 2;
+};
+
 // The rational with the smallest denominator in [lo, hi] (continued fractions).
-static Rational simplest_rational_in(const Rational& lo, const Rational& hi) {
+Rational simplest_rational_in(const Rational& lo, const Rational& hi) {
   // an integer in [lo, hi] if there is one
   mpz_class fl;
   mpz_fdiv_q(fl.get_mpz_t(), lo.get_num_mpz_t(), lo.get_den_mpz_t());
@@ -86,70 +326,271 @@ static Rational simplest_rational_in(const Rational& lo, const Rational& hi) {
   return r;
 }
 
+// Is the rational q (lowest terms) a root of the primitive integer f? By the
+// rational root theorem only if its denominator divides the leading and its
+// numerator the constant coefficient; only then is f evaluated.
+bool is_root(const IntPoly& f, const Rational& q) {
+  if (sgn(q) == 0) return sgn(f[0]) == 0;
+  if (!mpz_divisible_p(f.back().get_mpz_t(), q.get_den_mpz_t())) return false;
+  if (!mpz_divisible_p(f[0].get_mpz_t(), q.get_num_mpz_t())) return false;
+  return sign_at_rational(f, q) == 0;
+}
+
+// Where the root in the isolating bracket (lo, hi) of f (s_lo: the sign of f
+// at lo) lies with respect to the rational c: -1 below, 0 at, 1 above.
+int compare_root(const IntPoly& f, const Rational& lo, const Rational& hi, int s_lo, const Rational& c) {
+  if (c <= lo) return 1;
+  if (c >= hi) return -1;
+  int s = sign_at_rational(f, c);
+  if (s == 0) return 0;
+  return s == s_lo ? 1 : -1;
+}
+
+// Sign of Q on the closed interval [A, B] / 2^k when a bound proves it
+// constant there, else 0 (unknown). With m the midpoint, r the half-width and
+// x in the interval, Taylor at m with Lagrange's remainder:
+//   |Q(x) - Q(m)| <= sum_{j=1}^{J-1} |Q^(j)(m) / j!| r^j + r^J max |Q^(J) / J!|,
+//   max |Q^(J)(ξ) / J!| <= N_J = sum_i C(i, J) |c_i| 2^(e (i - J))
+// over |ξ| <= 2^e, e >= 0 with max(|lo|, |hi|) <= 2^e. J = 1 (the mean-value
+// bound: one evaluation) is tried first; then J up to 8, which does not suffer
+// from the power basis' cancellation (N_J is multiplied by r^J; the first
+// terms are the exact local derivatives). In integers, at level s = k + 1,
+// M = A + B, R = B - A, b_j = 2^(s(n-j)) Q^(j)(m) / j!:
+//   |b_0| > sum_{j=1}^{J-1} |b_j| R^j + R^J 2^(s(n-J)) N_J.
+int constant_sign(const IntPoly& Q, const Dyadic& d) {
+  const int n = int(Q.size()) - 1;
+  const unsigned long s = d.k + 1;
+  const mpz_class& mx = mpz_cmpabs(d.A.get_mpz_t(), d.B.get_mpz_t()) >= 0 ? d.A : d.B;
+  long e = long(mpz_sizeinbase(mx.get_mpz_t(), 2)) - long(d.k);  // |x| < 2^e on the interval
+  if (e < 0) e = 0;
+  const mpz_class M = d.A + d.B, R = d.B - d.A;
+  const int J = std::min(n, 8);
+  // N_j for j <= J: Taylor coefficients of sum |c_i| x^i at x = 2^e (Horner's
+  // scheme for derivatives); b_j likewise for the scaled polynomial at M.
+  std::vector<mpz_class> N(J + 1), b(J + 1);
+  auto taylor_of_abs = [&](int jmax) {  // N_0..N_jmax
+    for (auto& x : N) x = 0;
+    N[0] = abs(Q[n]);
+    for (int i = n - 1; i >= 0; --i) {
+      for (int j = std::min(jmax, n - i); j >= 1; --j) {
+        N[j] <<= static_cast<unsigned long>(e);
+        N[j] += N[j - 1];
+      }
+      N[0] <<= static_cast<unsigned long>(e);
+      N[0] += abs(Q[i]);
+    }
+  };
+  mpz_class t;
+  // J = 1 first: b_0 alone
+  taylor_of_abs(1);
+  eval_dyadic(b[0], Q, M, s);
+  mpz_class rhs = R * N[1];
+  rhs <<= s * static_cast<unsigned long>(n - 1);
+  if (mpz_cmpabs(b[0].get_mpz_t(), rhs.get_mpz_t()) > 0) return sgn(b[0]);
+  if (J < 2) return 0;
+  taylor_of_abs(J);
+  b[0] = Q[n];
+  for (int i = n - 1; i >= 0; --i) {
+    for (int j = std::min(J - 1, n - i); j >= 1; --j) {
+      b[j] *= M;
+      b[j] += b[j - 1];
+    }
+    b[0] *= M;
+    mpz_mul_2exp(t.get_mpz_t(), Q[i].get_mpz_t(), s * static_cast<unsigned long>(n - i));
+    b[0] += t;
+  }
+  // rhs for J: sum_{j<J} |b_j| R^j + R^J 2^(s(n-J)) N_J, by increasing J
+  mpz_class sum = 0, Rj = 1;
+  for (int j = 1; j <= J; ++j) {
+    Rj *= R;  // R^j
+    rhs = Rj * N[j];
+    rhs <<= s * static_cast<unsigned long>(n - j);
+    rhs += sum;
+    if (mpz_cmpabs(b[0].get_mpz_t(), rhs.get_mpz_t()) > 0) return sgn(b[0]);
+    if (j < J) {
+      t = abs(b[j]);
+      t *= Rj;
+      sum += t;
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+struct AlgebraicRootImpl {
+  IntPoly f;   // the square-free factor of p that the root is a simple root of (primitive, integer)
+  AKPoly fak;  // the same, as CGAL's polynomial (for gcds)
+};
+
+namespace {
+
+void set_bracket(AlgebraicRoot& r, const Dyadic& d) {
+  r.lo = dyadic(d.A, d.k);
+  r.hi = dyadic(d.B, d.k);
+}
+
+// Refines r (with its dyadic bracket d) to width <= 2^-bits.
+void refine_to(AlgebraicRoot& r, Dyadic& d, Refiner& rf, long bits) {
+  std::optional<Rational> exact;
+  if (!rf.refine(d, bits, exact)) {
+    r.lo = r.hi = *exact;
+    return;
+  }
+  set_bracket(r, d);
+}
+
+}  // namespace
+
 std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a, const Rational& b, int bits) {
   if (p.is_zero()) throw std::invalid_argument("real_roots: the zero polynomial has every number as a root");
-  std::vector<AlgebraicRoot> all;
-  if (p.degree() < 1) return all;
+  std::vector<AlgebraicRoot> out;
+  if (p.degree() < 1) return out;
   std::vector<std::pair<AKReal, AK::Multiplicity_type>> roots;
-  kernel().solve_1_object()(to_integer_poly(p), std::back_inserter(roots));
-  for (auto& [alpha, mult] : roots) {
+  kernel().solve_1_object()(to_ak(integer_multiple(p)), std::back_inserter(roots));
+  // CGAL returns them sorted. Only those whose isolating interval meets [a, b]
+  // are worked on; the others are known to be outside.
+  struct Work {
     AlgebraicRoot r;
-    r.multiplicity = int(mult);
-    r.impl = std::make_shared<AlgebraicRootImpl>(AlgebraicRootImpl{alpha});
-    set_bracket(r, bits, false);
-    all.push_back(std::move(r));
+    Dyadic d;
+  };
+  std::vector<Work> all;
+  std::vector<std::shared_ptr<AlgebraicRootImpl>> factors;
+  for (auto& [alpha, mult] : roots) {
+    Work w;
+    w.r.multiplicity = int(mult);
+    Rational lo = to_rational(alpha.low()), hi = to_rational(alpha.high());
+    if (alpha.is_rational() || lo == hi) {
+      Rational x = alpha.is_rational() ? to_rational(alpha.rational()) : lo;
+      if (x < a || x > b) continue;
+      w.r.lo = w.r.hi = x;
+    } else {
+      if (hi <= a || lo >= b) continue;  // the root is in the open (lo, hi)
+      std::shared_ptr<AlgebraicRootImpl> impl;
+      for (const auto& f : factors)
+        if (f->fak == alpha.polynomial()) impl = f;
+      if (!impl) {
+        impl = std::make_shared<AlgebraicRootImpl>(AlgebraicRootImpl{from_ak(alpha.polynomial()), alpha.polynomial()});
+        factors.push_back(impl);
+      }
+      w.r.impl = impl;
+      Refiner rf(impl->f);
+      std::optional<Rational> exact;
+      if (!rf.init(lo, hi, w.d, exact)) {
+        w.r.lo = w.r.hi = *exact;
+      } else {
+        refine_to(w.r, w.d, rf, bits);
+      }
+      if (!w.r.is_rational()) {
+        // exactly where it lies with respect to [a, b]
+        int ca = compare_root(impl->f, w.r.lo, w.r.hi, sgn(w.d.FA), a);
+        if (ca < 0) continue;
+        int cb = compare_root(impl->f, w.r.lo, w.r.hi, sgn(w.d.FA), b);
+        if (cb > 0) continue;
+        if (ca == 0) w.r.lo = w.r.hi = a;
+        else if (cb == 0) w.r.lo = w.r.hi = b;
+      } else if (w.r.lo < a || w.r.lo > b) {
+        continue;
+      }
+    }
+    all.push_back(std::move(w));
   }
-  // CGAL returns them sorted; refine until consecutive brackets are disjoint.
-  for (int b2 = bits; ; b2 *= 2) {
+  // Consecutive brackets made disjoint (the roots are distinct and sorted).
+  for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
     bool disjoint = true;
-    for (std::size_t i = 0; i + 1 < all.size(); ++i)
-      if (!(all[i].hi < all[i + 1].lo)) { disjoint = false; set_bracket(all[i], b2 * 2, true); set_bracket(all[i + 1], b2 * 2, true); }
+    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
+      if (all[i].r.hi < all[i + 1].r.lo) continue;
+      if (all[i + 1].r.hi < all[i].r.lo) throw std::logic_error("internal error: the roots are not in increasing order");
+      if (b2 > long(kMaxLevel)) throw std::logic_error("internal error: brackets of distinct roots do not separate");
+      disjoint = false;
+      for (Work* w : {&all[i], &all[i + 1]})
+        if (!w->r.is_rational()) {
+          Refiner rf(w->r.impl->f);
+          refine_to(w->r, w->d, rf, b2);
+        }
+    }
     if (disjoint) break;
   }
   // A rational root with a small denominator is written exactly: the simplest
-  // rational in the bracket is a root of p iff it is the bracket's root.
-  for (auto& r : all) {
-    if (r.lo == r.hi) continue;
-    Rational q = simplest_rational_in(r.lo, r.hi);
-    if (p(q) == 0) r.lo = r.hi = q;
-  }
-  std::vector<AlgebraicRoot> out;
-  auto cmp = kernel().compare_1_object();
-  AKBound ba = to_bound(a), bb = to_bound(b);
-  for (auto& r : all) {
-    if (cmp(r.impl->alpha, AKReal(ba)) == CGAL::SMALLER) continue;
-    if (cmp(r.impl->alpha, AKReal(bb)) == CGAL::LARGER) continue;
-    out.push_back(std::move(r));
+  // rational in the bracket is a root of the factor iff it is the bracket's root.
+  for (auto& w : all) {
+    if (!w.r.is_rational()) {
+      Rational q = simplest_rational_in(w.r.lo, w.r.hi);
+      if (is_root(w.r.impl->f, q)) w.r.lo = w.r.hi = q;
+    }
+    out.push_back(std::move(w.r));
   }
   return out;
 }
 
 Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   if (q.is_zero()) return Sign::zero;
-  CGAL::Sign s = kernel().sign_at_1_object()(to_integer_poly(q), r.impl->alpha);
-  return s == CGAL::NEGATIVE ? Sign::negative : (s == CGAL::POSITIVE ? Sign::positive : Sign::zero);
+  if (q.degree() == 0) return sign(q.c[0]);
+  IntPoly Q = integer_multiple(q);  // a positive multiple: same signs
+  if (r.is_rational()) return sign_of_int(sign_at_rational(Q, r.lo));
+  if (!r.impl) throw std::invalid_argument("sign_at: a root without its polynomial");
+  // The bracket as it is (no evaluation of the factor yet).
+  Dyadic d;
+  mpz_class A, B;
+  unsigned long ja, jb;
+  bool have_dyadic = dyadic_parts(r.lo, A, ja) && dyadic_parts(r.hi, B, jb);
+  if (have_dyadic) {
+    d.k = std::max(ja, jb);
+    d.A = A << (d.k - ja);
+    d.B = B << (d.k - jb);
+    if (int s = constant_sign(Q, d)) return sign_of_int(s);
+  }
+  // Zero iff gcd(q, f) has the root: it divides f, whose only root in the
+  // bracket is simple, so it has it iff it changes sign over the bracket.
+  const IntPoly& f = r.impl->f;
+  AKPoly g = PT::Gcd_up_to_constant_factor()(to_ak(Q), r.impl->fak);
+  if (PT::Degree()(g) > 0) {
+    IntPoly gi = from_ak(g);
+    int glo = sign_at_rational(gi, r.lo), ghi = sign_at_rational(gi, r.hi);
+    if (glo == 0 || ghi == 0) throw std::invalid_argument("sign_at: the root's factor vanishes at an end of its bracket");
+    if (glo != ghi) return Sign::zero;
+  }
+  // q(root) != 0: refine a copy of the bracket until the bound decides.
+  std::optional<Rational> exact;
+  Refiner rf(f);
+  if (!rf.init(r.lo, r.hi, d, exact)) return sign_of_int(sign_at_rational(Q, *exact));
+  for (long bits = std::max<long>(64, long(d.k));; bits *= 2) {
+    if (int s = constant_sign(Q, d)) return sign_of_int(s);
+    if (bits > long(kMaxLevel)) throw std::logic_error("internal error: the sign at an algebraic number does not converge");
+    if (!rf.refine(d, bits, exact)) return sign_of_int(sign_at_rational(Q, *exact));
+  }
 }
 
 std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Rational>& p) {
   if (p.is_zero()) throw std::invalid_argument("square_free_factors: the zero polynomial");
-  using PT = CGAL::Polynomial_traits_d<AKPoly>;
   std::vector<std::pair<AKPoly, int>> f;
-  PT::Square_free_factorize_up_to_constant_factor()(to_integer_poly(p), std::back_inserter(f));
+  PT::Square_free_factorize_up_to_constant_factor()(to_ak(integer_multiple(p)), std::back_inserter(f));
   std::vector<std::pair<Poly<Rational>, int>> out;
   for (auto& [q, m] : f)
-    if (PT::Degree()(q) > 0) out.push_back({from_integer_poly(q), m});
+    if (PT::Degree()(q) > 0) out.push_back({poly_from_ak(q), m});
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   return out;
 }
 
 Poly<Rational> polynomial_gcd(const Poly<Rational>& p, const Poly<Rational>& q) {
-  using PT = CGAL::Polynomial_traits_d<AKPoly>;
-  return from_integer_poly(PT::Gcd_up_to_constant_factor()(to_integer_poly(p), to_integer_poly(q)));
+  return poly_from_ak(PT::Gcd_up_to_constant_factor()(to_ak(integer_multiple(p)), to_ak(integer_multiple(q))));
 }
 
 void refine(AlgebraicRoot& r, int bits) {
   if (r.is_rational()) return;
-  set_bracket(r, bits, true);
+  if (!r.impl) throw std::invalid_argument("refine: a root without its polynomial");
+  // already narrow enough?
+  Rational w = r.hi - r.lo;
+  mpq_mul_2exp(w.get_mpq_t(), w.get_mpq_t(), static_cast<unsigned long>(std::max(bits, 0)));
+  if (w <= 1) return;
+  Dyadic d;
+  std::optional<Rational> exact;
+  Refiner rf(r.impl->f);
+  if (!rf.init(r.lo, r.hi, d, exact)) {
+    r.lo = r.hi = *exact;
+    return;
+  }
+  refine_to(r, d, rf, bits);
 }
 
 }  // namespace eccd

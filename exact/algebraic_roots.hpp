@@ -6,17 +6,32 @@
 // root of Δ(t) or of a projection polynomial: a real algebraic number) in a
 // rational bracket that provably holds it and no other root, and must decide
 // signs of polynomials at t0 exactly, never by evaluating near t0 in floating
-// point (design.md, "Mathematics the code must get right"). Both are done by
-// CGAL's Algebraic_kernel_d_1 over GMP integers (square-free factorisation by
-// modular gcd, isolation by the Bitstream Descartes method, signs at algebraic
-// numbers by gcd and refinement), behind this small interface so that only
-// exact/algebraic_roots.cpp includes CGAL.
+// point (design.md, "Mathematics the code must get right"). Square-free
+// factorisation (modular gcd) and isolation (Descartes' method) are CGAL's
+// Algebraic_kernel_d_1 over CORE::BigInt (CORE ships inside CGAL's headers;
+// issue 6 measured it 1.5-4x faster than the kernel over CGAL::Gmpz with MPFI
+// on the workbench's polynomials). What follows isolation is done in
+// exact/algebraic_roots.cpp on the isolating intervals, with integers only:
+// refinement by quadratic interval refinement (Abbott, "Quadratic interval
+// refinement for real roots", 2006; exact signs of the square-free factor at
+// dyadic points), exact comparison with the ends of the range, and signs at a
+// root (a Taylor bound at the bracket's midpoint proves the sign constant on
+// the bracket; when it cannot, gcd with the factor: zero iff the gcd changes
+// sign over the bracket; else refinement until the bound decides).
+// Only exact/algebraic_roots.cpp includes CGAL.
 // Requirements: polynomials with exact rational coefficients (mpq_class); they
 // are scaled to primitive integer polynomials (a positive factor).
 // Guarantees of real_roots(): every real root of p in [a, b] is listed once,
 // in increasing order, with its multiplicity; brackets are pairwise disjoint,
-// each holds exactly one real root of p, has width <= 2^-bits, and is [r, r]
-// when CGAL has found the root to be rational r.
+// each holds exactly one real root of p (and of its square-free factor, which
+// does not vanish at non-degenerate bracket ends), has width <= 2^-bits, and
+// is [r, r] when the root is found to be the rational r (a root at a or b, a
+// dyadic grid point hit by refinement, or the simplest rational in the
+// bracket).
+// Brackets are dyadic; refine() and sign_at() accept any other bracket
+// lo < hi of the root (not only those real_roots() made) that isolates it for
+// its square-free factor: the factor has no other root in [lo, hi] and does
+// not vanish at lo and hi.
 #include "exact/rational_traits.hpp"
 #include "kernel/polynomial.hpp"
 
@@ -25,12 +40,12 @@
 
 namespace eccd {
 
-struct AlgebraicRootImpl;  // holds CGAL's Algebraic_real_1
+struct AlgebraicRootImpl;  // the root's square-free factor (integer coefficients, and as CGAL's polynomial)
 
 struct AlgebraicRoot {
   Rational lo, hi;
   int multiplicity = 1;
-  std::shared_ptr<const AlgebraicRootImpl> impl;
+  std::shared_ptr<const AlgebraicRootImpl> impl;  // may be null for a rational root
   bool is_rational() const { return lo == hi; }
 };
 
