@@ -8,14 +8,15 @@
 // multiplicities) on a polynomial converted once beforehand, from a freshly
 // constructed kernel each run (so no state of an earlier run helps):
 //   - Algebraic_kernel_d_1<CGAL::Gmpz> with CGAL_USE_MPFI (GMP integers, MPFI
-//     bigfloat intervals): the kernel the workbench uses. The difference to
-//     the workbench's row (eccd::real_roots, baseline of each isolation group)
-//     is the workbench's own work around it: Poly<Rational> -> integer
-//     conversion, brackets refined to width 2^-64 and made disjoint, the
-//     rational-root check and the restriction to [0, 1];
+//     bigfloat intervals): the kernel the workbench used until issue 6;
 //   - Algebraic_kernel_d_1<CORE::BigInt> (CORE's BigInt / BigFloat arithmetic
 //     kernel, header-only inside CGAL 5.5; anchor: about 7 ms for a random
-//     degree-200 integer polynomial on this machine, issue 6).
+//     degree-200 integer polynomial on this machine, issue 6): the kernel the
+//     workbench uses now. The difference to the workbench's row
+//     (eccd::real_roots, baseline of each isolation group) is the workbench's
+//     own work around it: Poly<Rational> -> integer conversion, the roots that
+//     can lie in [0, 1] refined to width 2^-64 (quadratic interval
+//     refinement, exact/algebraic_roots.cpp), the rational-root check.
 // Counted: distinct real roots, and those in [0, 1] (compared exactly with
 // the kernel's compare_1 against the rationals 0 and 1).
 #include "bench/isolation.hpp"
