@@ -449,7 +449,7 @@ Static3D make_static3d() {
     s.e.push_back(ea);
     s.a.push_back(A);
     s.b.push_back(B);
-    s.coeffs.push_back(appendix_a_coefficients(ea[0], ea[1], ea[2], B));
+    { auto c = appendix_a_coefficients(ea[0], ea[1], ea[2], B); s.coeffs.emplace_back(c.begin(), c.end()); }
   }
   return s;
 }
@@ -548,7 +548,7 @@ void register_static() {
         const Static3D& s = static3d.get();
         int i = 0;
         auto f = [&] { i = (i + 1) & (kBatch - 1); return appendix_a_coefficients(s.e[i][0], s.e[i][1], s.e[i][2], s.b[i]); };
-        timed(st, "static3d/Appendix A, coefficients only", f, [](const std::vector<double>&) { return json(); });
+        timed(st, "static3d/Appendix A, coefficients only", f, [](const std::array<double, 5>&) { return json(); });
       });
   row("static3d", "Sturm status only", false, Cost::fast, "quartic_contact_status on precomputed coefficients",
       [](benchmark::State& st) {
@@ -834,17 +834,18 @@ void register_isolation() {
     std::string grp = pp.id;
     group(grp, std::string("Exact real root isolation: ") + (grp.substr(10)),
           "The same integer polynomial isolated by the workbench (eccd::real_roots on [0, 1], brackets of width "
-          "2^-64: CGAL Algebraic_kernel_d_1 over GMP + MPFI), by that CGAL kernel called directly (all real roots), "
-          "by CGAL's kernel over CORE::BigInt (all real roots) and by MPSolve (isolating discs for all complex "
+          "2^-64: CGAL Algebraic_kernel_d_1 over CORE::BigInt isolates, the workbench refines the roots in [0, 1] "
+          "by quadratic interval refinement), by CGAL's kernel over GMP + MPFI (all real roots), by CGAL's kernel over "
+          "CORE::BigInt called directly (all real roots) and by MPSolve (isolating discs for all complex "
           "roots). Process CPU time (all threads).",
           grp == "isolation-random200" ? "issue 6: CGAL with CORE about 7 ms on a random degree-200 integer polynomial (this machine)"
                                        : "the workbench's own isolation (baseline)");
     Lazy<IsoPoly>* poly = pp.poly;
-    row(grp, "workbench real_roots (CGAL GMP+MPFI)", true, Cost::slow,
+    row(grp, "workbench real_roots (CGAL CORE + own refinement)", true, Cost::slow,
         "eccd::real_roots(p, 0, 1, 64): conversion, solve_1, brackets to 2^-64, restriction to [0, 1]",
         [poly, grp](benchmark::State& st) {
           const IsoPoly& ip = poly->get();
-          timed(st, grp + "/workbench real_roots (CGAL GMP+MPFI)", [&] { return real_roots(ip.p, Rational(0), Rational(1), 64); },
+          timed(st, grp + "/workbench real_roots (CGAL CORE + own refinement)", [&] { return real_roots(ip.p, Rational(0), Rational(1), 64); },
                 [&](const std::vector<AlgebraicRoot>& r) {
                   json j = iso_info(ip);
                   j["in_unit"] = r.size();
@@ -1217,7 +1218,9 @@ void register_certified_sets() {
             std::string("solve_scene, arith ") + arith + ", " + rel,
             [key = std::string(set.id) + "/" + name + " " + arith, sc, o](benchmark::State& st) {
               timed(st, key, [&] { return solve_scene(sc->get(), o); }, [](const json& j) {
-                json r{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]}};
+                json r{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]},
+                       {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
+                       {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
                 for (const char* k : {"escalated", "decided_in", "escalation_reason"})
                   if (j.contains(k)) r[k] = j[k];
                 return r;

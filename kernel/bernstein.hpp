@@ -12,16 +12,73 @@
 // Operations: conversion to and from power form, sum and product carried out
 // in Bernstein form (degrees are elevated to match for a sum), degree
 // elevation, derivative, evaluation and subdivision by de Casteljau.
+// Cost (the 3D Bézier pipeline calls these in its inner loops): binomial
+// rows come from a per-thread cache (kernel/binomial.hpp); evaluation,
+// subdivision and restriction work in place on any coefficient storage
+// (std::span: a Bern, a row of a BiBern), evaluation of a double polynomial
+// of degree < 64 on the stack; elevate_into / derivative_into reuse the
+// caller's storage. Every variant performs the same operations in the same
+// order as the plain de Casteljau triangle, so results are bit for bit the same.
 // Requirements on T: scalar_traits<T>; +, -, *, / by binomial values.
 // Known failure modes: power -> Bernstein conversion of high degree in rounded
 // arithmetic amplifies errors (Farouki 1991): that is measured, not hidden.
 #include "kernel/binomial.hpp"
 #include "kernel/polynomial.hpp"
 
+#include <algorithm>
+#include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace eccd {
+
+// de Casteljau's triangle in place on w (n + 1 values): after the call w[0]
+// is the value at t.
+template <class T>
+void de_casteljau_in_place(std::span<T> w, const T& t) {
+  T s = T(1) - t;
+  for (int r = 1; r < int(w.size()); ++r)
+    for (int i = 0; i + r < int(w.size()); ++i) { T x = s * w[i]; T y = t * w[i + 1]; w[i] = x + y; }
+}
+
+// The value at t of the polynomial with Bernstein coefficients b (any
+// storage: a Bern, a row of a BiBern). The working copy lives on the stack
+// for plain types (double) of degree < 64, so an evaluation allocates nothing.
+template <class T>
+T bernstein_value(std::span<const T> b, const T& t) {
+  if (b.empty()) return T(0);
+  if constexpr (std::is_trivially_copyable_v<T>) {
+    if (b.size() <= 64) {
+      T w[64];
+      std::copy(b.begin(), b.end(), w);
+      de_casteljau_in_place(std::span<T>(w, b.size()), t);
+      return w[0];
+    }
+  }
+  std::vector<T> w(b.begin(), b.end());
+  de_casteljau_in_place(std::span<T>(w), t);
+  return w[0];
+}
+
+// In place: c becomes the Bernstein coefficients of its polynomial on
+// [tau, 1] (keep_right) or [0, tau] (keep_left), reparameterised to [0, 1].
+// The same products and sums as split() below, in one buffer.
+template <class T>
+void keep_right(std::span<T> c, const T& tau) {
+  const int n = int(c.size()) - 1;
+  T s = T(1) - tau;
+  for (int r = 1; r <= n; ++r)
+    for (int i = 0; i + r <= n; ++i) { T x = s * c[i]; T y = tau * c[i + 1]; c[i] = x + y; }
+}
+template <class T>
+void keep_left(std::span<T> c, const T& tau) {
+  const int n = int(c.size()) - 1;
+  T s = T(1) - tau;
+  // round r computes the same values as split()'s, stored one place to the right (c[i + r] for its w[i])
+  for (int r = 1; r <= n; ++r)
+    for (int i = n; i >= r; --i) { T x = s * c[i - 1]; T y = tau * c[i]; c[i] = x + y; }
+}
 
 template <class T>
 struct Bern {
@@ -32,14 +89,7 @@ struct Bern {
   int degree() const { return int(b.size()) - 1; }
 
   // p(t) at one value by de Casteljau (stable, no power form involved).
-  T operator()(const T& t) const {
-    if (b.empty()) return T(0);
-    std::vector<T> w = b;
-    T s = T(1) - t;
-    for (int r = 1; r < int(w.size()); ++r)
-      for (int i = 0; i + r < int(w.size()); ++i) { T x = s * w[i]; T y = t * w[i + 1]; w[i] = x + y; }
-    return w[0];
-  }
+  T operator()(const T& t) const { return bernstein_value(std::span<const T>(b), t); }
   // Number of sign changes of the coefficient sequence (zeros skipped): an
   // upper bound on the number of roots in (0, 1), equal to it modulo 2.
   int sign_variations() const {
@@ -67,10 +117,9 @@ Bern<T> to_bernstein(const Poly<T>& p, int n) {  // n >= degree(p)
   r.b.assign(n + 1, T(0));
   if (p.is_zero()) return r;
   const T& like = p.c.front();
-  std::vector<T> cn = binomial_row(n, like);
-  std::vector<T> ck(1, cn[0]);
+  const std::vector<T>& cn = binomial_row(n, like);
   for (int k = 0; k <= n; ++k) {
-    if (k > 0) ck = binomial_row(k, like);
+    const std::vector<T>& ck = binomial_row(k, like);
     T acc = T(0);
     for (int i = 0; i <= k && i <= p.degree(); ++i) { T term = ck[i] * p.c[i] / cn[i]; acc = acc + term; }
     r.b[k] = acc;
@@ -86,10 +135,10 @@ Poly<T> to_power(const Bern<T>& q) {
   Poly<T> r;
   if (n < 0) return r;
   const T& like = q.b.front();
-  std::vector<T> cn = binomial_row(n, like);
+  const std::vector<T>& cn = binomial_row(n, like);
   r.c.assign(n + 1, T(0));
   for (int i = 0; i <= n; ++i) {
-    std::vector<T> ci = binomial_row(i, like);
+    const std::vector<T>& ci = binomial_row(i, like);
     T acc = T(0);
     for (int k = 0; k <= i; ++k) {
       T term = ci[k] * q.b[k];
@@ -101,28 +150,42 @@ Poly<T> to_power(const Bern<T>& q) {
   return r;
 }
 
+// Degree elevation by r >= 1 of the coefficients q into e (e's storage is
+// reused: callers in loops keep one e): the same polynomial in the basis of
+// degree n + r.
+template <class T>
+void elevate_into(std::span<const T> q, int r, std::vector<T>& e) {
+  int n = int(q.size()) - 1;
+  const T& like = q.front();
+  const std::vector<T>& cn = binomial_row(n, like);
+  const std::vector<T>& cr = binomial_row(r, like);
+  const std::vector<T>& cnr = binomial_row(n + r, like);
+  e.resize(n + r + 1);
+  for (int k = 0; k <= n + r; ++k) {
+    T acc = T(0);
+    for (int j = std::max(0, k - r); j <= std::min(n, k); ++j) { T term = cn[j] * cr[k - j] * q[j]; acc = acc + term; }
+    e[k] = acc / cnr[k];
+  }
+}
 // Degree elevation by r: the same polynomial in the basis of degree n + r.
 template <class T>
 Bern<T> elevate(const Bern<T>& q, int r) {
   if (r <= 0) return q;
-  int n = q.degree();
-  const T& like = q.b.front();
-  std::vector<T> cn = binomial_row(n, like), cr = binomial_row(r, like), cnr = binomial_row(n + r, like);
   Bern<T> e;
-  e.b.assign(n + r + 1, T(0));
-  for (int k = 0; k <= n + r; ++k) {
-    T acc = T(0);
-    for (int j = std::max(0, k - r); j <= std::min(n, k); ++j) { T term = cn[j] * cr[k - j] * q.b[j]; acc = acc + term; }
-    e.b[k] = acc / cnr[k];
-  }
+  elevate_into(std::span<const T>(q.b), r, e.b);
   return e;
 }
 
 template <class T>
 Bern<T> operator+(const Bern<T>& x, const Bern<T>& y) {
   int n = std::max(x.degree(), y.degree());
-  Bern<T> a = elevate(x, n - x.degree()), c = elevate(y, n - y.degree());
-  for (int i = 0; i <= n; ++i) a.b[i] = a.b[i] + c.b[i];
+  Bern<T> a = elevate(x, n - x.degree());
+  if (y.degree() == n) {
+    for (int i = 0; i <= n; ++i) a.b[i] = a.b[i] + y.b[i];
+  } else {
+    Bern<T> c = elevate(y, n - y.degree());
+    for (int i = 0; i <= n; ++i) a.b[i] = a.b[i] + c.b[i];
+  }
   return a;
 }
 template <class T>
@@ -139,7 +202,9 @@ template <class T>
 Bern<T> operator*(const Bern<T>& x, const Bern<T>& y) {
   int m = x.degree(), n = y.degree();
   const T& like = x.b.front();
-  std::vector<T> cm = binomial_row(m, like), cn = binomial_row(n, like), cmn = binomial_row(m + n, like);
+  const std::vector<T>& cm = binomial_row(m, like);
+  const std::vector<T>& cn = binomial_row(n, like);
+  const std::vector<T>& cmn = binomial_row(m + n, like);
   std::vector<T> xs(m + 1, T(0)), ys(n + 1, T(0));
   for (int i = 0; i <= m; ++i) xs[i] = cm[i] * x.b[i];
   for (int j = 0; j <= n; ++j) ys[j] = cn[j] * y.b[j];
@@ -151,33 +216,38 @@ Bern<T> operator*(const Bern<T>& x, const Bern<T>& y) {
   return r;
 }
 
+// The derivative's coefficients into d (storage reused, as elevate_into).
+template <class T>
+void derivative_into(std::span<const T> q, std::vector<T>& d) {
+  int n = int(q.size()) - 1;
+  d.clear();
+  if (n <= 0) { d.push_back(T(0)); return; }
+  for (int i = 0; i < n; ++i) { T diff = q[i + 1] - q[i]; d.push_back(T(n) * diff); }
+}
 template <class T>
 Bern<T> derivative(const Bern<T>& q) {
-  int n = q.degree();
   Bern<T> d;
-  if (n <= 0) { d.b.assign(1, T(0)); return d; }
-  for (int i = 0; i < n; ++i) { T diff = q.b[i + 1] - q.b[i]; d.b.push_back(T(n) * diff); }
+  derivative_into(std::span<const T>(q.b), d.b);
   return d;
 }
 
 // de Casteljau subdivision at tau: the pieces on [0, tau] and [tau, 1], each
 // reparameterised to [0, 1].
+// (The working row of the triangle ends as the right piece: round r leaves
+// w[n - r] final, so right is computed in place.)
 template <class T>
 std::pair<Bern<T>, Bern<T>> split(const Bern<T>& q, const T& tau) {
   int n = q.degree();
-  std::vector<T> w = q.b;
-  Bern<T> left, right;
+  Bern<T> left, right(q.b);
+  std::vector<T>& w = right.b;
   left.b.resize(n + 1);
-  right.b.resize(n + 1);
   left.b[0] = w[0];
-  right.b[n] = w[n];
   T s = T(1) - tau;
   for (int r = 1; r <= n; ++r) {
     for (int i = 0; i + r <= n; ++i) { T x = s * w[i]; T y = tau * w[i + 1]; w[i] = x + y; }
     left.b[r] = w[0];
-    right.b[n - r] = w[n - r];
   }
-  return {left, right};
+  return {std::move(left), std::move(right)};
 }
 
 }  // namespace eccd

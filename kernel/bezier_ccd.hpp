@@ -39,6 +39,9 @@
 // pipeline decides those instants by projection (kernel/ccd_projection.hpp).
 // Requirements on T: an ordered field with scalar_traits<T>. Shooting and the
 // Gaussian test need rounded T (the test's angles are compared in double).
+// Cost: the inner loops (static tests, shooting, Gaussian test) restrict and
+// subdivide F in place and use the constants 0, 1, 1/2 made once per run
+// (zero_, one_, half_) instead of converting rationals each time.
 #include "floating/bernstein_roots.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/characteristic_polynomial.hpp"
@@ -51,6 +54,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <vector>
 
 namespace eccd {
@@ -66,25 +71,39 @@ struct BezierOptions {
   bool first_contact_only = false;
 };
 
-// q restricted to [a, b] ⊂ [0, 1] (two de Casteljau splits).
+// c restricted to [a, b] ⊂ [0, 1] in place (two de Casteljau splits, each
+// keeping one piece); `one` is 1 at a's precision.
 template <class T>
-Bern<T> restrict_to(const Bern<T>& q, const T& a, const T& b) {
-  Bern<T> r = q;
+void restrict_in_place(std::span<T> c, const T& a, const T& b, const T& one) {
   const T zero = a - a;
-  const T one = scalar_traits<T>::from_rational(mpq_class(1), a);
-  if (a > zero) r = split(r, a).second;
+  if (a > zero) keep_right(c, a);
   if (b < one) {
     T tau = (b - a) / (one - a);
-    r = split(r, tau).first;
+    keep_left(c, tau);
   }
+}
+
+// q restricted to [a, b] ⊂ [0, 1].
+template <class T>
+Bern<T> restrict_to(const Bern<T>& q, const T& a, const T& b, const T& one) {
+  Bern<T> r = q;
+  restrict_in_place(std::span<T>(r.b), a, b, one);
   return r;
+}
+template <class T>
+Bern<T> restrict_to(const Bern<T>& q, const T& a, const T& b) {
+  return restrict_to(q, a, b, scalar_traits<T>::from_rational(mpq_class(1), a));
 }
 
 template <class T>
-BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
-  BiBern<T> r;
-  for (const auto& row : f.b) r.b.push_back(restrict_to(Bern<T>(row), a, b).b);
+BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b, const T& one) {
+  BiBern<T> r = f;
+  for (auto& row : r.b) restrict_in_place(std::span<T>(row), a, b, one);
   return r;
+}
+template <class T>
+BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
+  return restrict_t(f, a, b, scalar_traits<T>::from_rational(mpq_class(1), a));
 }
 
 // argmax of a univariate Bernstein polynomial on [0, 1] by the roots of its
@@ -92,10 +111,9 @@ BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
 template <class U>
 struct Peak { U u, value; };
 
+// u0, u1: 0 and 1 at the precision of f's coefficients.
 template <class U>
-Peak<U> bern_argmax(const Bern<U>& f, int bits) {
-  const U& like = f.b.front();
-  U u0 = scalar_traits<U>::from_rational(mpq_class(0), like), u1 = scalar_traits<U>::from_rational(mpq_class(1), like);
+Peak<U> bern_argmax(const Bern<U>& f, int bits, const U& u0, const U& u1) {
   Peak<U> best{u0, f(u0)};
   U v1 = f(u1);
   if (v1 > best.value) best = {u1, v1};
@@ -107,6 +125,55 @@ Peak<U> bern_argmax(const Bern<U>& f, int bits) {
   }
   return best;
 }
+template <class U>
+Peak<U> bern_argmax(const Bern<U>& f, int bits) {
+  const U& like = f.b.front();
+  return bern_argmax(f, bits, scalar_traits<U>::from_rational(mpq_class(0), like),
+                     scalar_traits<U>::from_rational(mpq_class(1), like));
+}
+
+namespace bezier_detail {
+
+// The largest cyclic gap between the sorted angles (what the Gaussian-circle
+// test decides by: the points lie in an open half-plane iff it exceeds π).
+inline double max_angle_gap(std::vector<double> ang) {
+  std::sort(ang.begin(), ang.end());
+  double gap = ang.front() + 2 * M_PI - ang.back();
+  for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
+  return gap;
+}
+
+// All points strictly inside one open half-plane through the origin, i.e.
+// max_angle_gap of their angles (atan2) > π. Only two gaps can exceed π: the
+// cyclic one, min + 2π - max, and the one across 0 between the largest
+// negative and the smallest positive angle (both ends of any other gap lie in
+// [-π, 0] or in [0, π], so its computed difference is at most π). So no sort
+// is needed, and the decision is max_angle_gap's to the last bit; with a NaN
+// angle max_angle_gap itself decides.
+inline bool pointed(const std::vector<std::pair<double, double>>& pts) {
+  if (pts.empty()) return true;
+  std::vector<double> ang;
+  ang.reserve(pts.size());
+  for (auto [x, y] : pts) {
+    if (x == 0 && y == 0) return false;
+    ang.push_back(std::atan2(y, x));
+  }
+  double lo = ang.front(), hi = ang.front();
+  double neg = -std::numeric_limits<double>::infinity(), pos = std::numeric_limits<double>::infinity();
+  bool zero = false;
+  for (double a : ang) {
+    if (std::isnan(a)) return max_angle_gap(ang) > M_PI;
+    lo = std::min(lo, a);
+    hi = std::max(hi, a);
+    if (a < 0) neg = std::max(neg, a);
+    else if (a > 0) pos = std::min(pos, a);
+    else zero = true;
+  }
+  if (lo + 2 * M_PI - hi > M_PI) return true;
+  return !zero && std::isfinite(neg) && std::isfinite(pos) && pos - neg > M_PI;
+}
+
+}  // namespace bezier_detail
 
 template <class T>
 class BezierZeroSet {
@@ -159,7 +226,7 @@ class BezierZeroSet {
   // Certificate of overlap on [a, b]: every control point of F over
   // (0,1) x [a, b] negative, after splitting u into up to 2^gauss_depth pieces
   // (the control net in u alone is often too loose near u's ends).
-  bool overlap_on(const T& a, const T& b) const { return negative_in_u(restrict_t(F_, a, b), opt_.u_depth); }
+  bool overlap_on(const T& a, const T& b) const { return negative_in_u(restrict_t(F_, a, b, one_), opt_.u_depth); }
   bool negative_in_u(const BiBern<T>& f, int depth) const {
     int s = f.strict_sign();
     if (s == -1) return true;
@@ -173,7 +240,7 @@ class BezierZeroSet {
 
   // Certificate of separation on [a, b]: F(u*, t) > 0 on [a, b] (all Bernstein coefficients positive).
   bool separate_on(const T& ustar, const T& a, const T& b) const {
-    Bern<T> G = restrict_to(ellipsoid_function_along(F_, ustar), a, b);
+    Bern<T> G = restrict_to(ellipsoid_function_along(F_, ustar), a, b, one_);
     for (const auto& x : G.b)
       if (sign(x) != Sign::positive) return false;
     return true;
@@ -205,7 +272,7 @@ class BezierZeroSet {
       Peak p = peak(t);
       if (!(p.value > zero_)) return {ShotKind::converged, t};
       bool forward = to > t;
-      Bern<T> G = restrict_to(ellipsoid_function_along(F_, p.u), forward ? t : to, forward ? to : t);
+      Bern<T> G = restrict_to(ellipsoid_function_along(F_, p.u), forward ? t : to, forward ? to : t, one_);
       if (!forward) std::reverse(G.b.begin(), G.b.end());  // parameter s runs from t towards `to`
       bool positive = true;
       for (const auto& x : G.b) positive = positive && sign(x) == Sign::positive;
@@ -231,11 +298,11 @@ class BezierZeroSet {
   // The Gaussian-circle test on (0, 1) x [a, b] (001 section 4, case 3).
   bool loop_free(const T& a, const T& b) {
     ++gauss_tests;
-    BiBern<T> Fab = restrict_t(F_, a, b);
+    BiBern<T> Fab = restrict_t(F_, a, b, one_);
     std::vector<std::pair<double, double>> pts;
     const double wt = to_double(b - a);
     collect_gradient(Fab, opt_.gauss_depth, 1.0, wt, pts);
-    bool ok = pointed(pts);
+    bool ok = bezier_detail::pointed(pts);
     if (ok) ++gauss_passed;
     return ok;
   }
@@ -282,7 +349,7 @@ class BezierZeroSet {
       T u(ud);
       return {u, f(u)};
     } else {
-      return bern_argmax(f, bits_);
+      return bern_argmax(f, bits_, zero_, one_);
     }
   }
 
@@ -296,34 +363,28 @@ class BezierZeroSet {
       collect_gradient(hi, depth - 1, wu / 2, wt, pts);
       return;
     }
+    // pts gets (F_u, F_t) at control point (i, j) as entry i (n + 1) + j; the
+    // derivatives are elevated back to degree (m, n) (scratch d, e reused).
     const int m = f.degree_u(), n = f.degree_t();
-    std::vector<std::vector<double>> fu(m + 1, std::vector<double>(n + 1)), ft(m + 1, std::vector<double>(n + 1));
+    const std::size_t base = pts.size();
+    pts.resize(base + std::size_t(m + 1) * std::size_t(n + 1));
+    auto at = [&](int i, int j) -> std::pair<double, double>& { return pts[base + std::size_t(i) * std::size_t(n + 1) + j]; };
+    std::vector<T> col(m + 1), d, e;
     for (int j = 0; j <= n; ++j) {
-      Bern<T> col;
-      for (int i = 0; i <= m; ++i) col.b.push_back(f.b[i][j]);
-      Bern<T> d = elevate(derivative(col), 1);
-      for (int i = 0; i <= m; ++i) fu[i][j] = to_double(d.b[i]) / wu;
+      for (int i = 0; i <= m; ++i) col[i] = f.b[i][j];
+      derivative_into(std::span<const T>(col), d);
+      elevate_into(std::span<const T>(d), 1, e);
+      for (int i = 0; i <= m; ++i) at(i, j).first = to_double(e[i]) / wu;
     }
     for (int i = 0; i <= m; ++i) {
-      Bern<T> d = n > 0 ? elevate(derivative(Bern<T>(f.b[i])), 1) : Bern<T>(std::vector<T>(1, zero_));
-      for (int j = 0; j <= n; ++j) ft[i][j] = to_double(d.b[j]) / wt;
+      if (n > 0) {
+        derivative_into(std::span<const T>(f.b[i]), d);
+        elevate_into(std::span<const T>(d), 1, e);
+        for (int j = 0; j <= n; ++j) at(i, j).second = to_double(e[j]) / wt;
+      } else {
+        at(i, 0).second = to_double(zero_) / wt;
+      }
     }
-    for (int i = 0; i <= m; ++i)
-      for (int j = 0; j <= n; ++j) pts.push_back({fu[i][j], ft[i][j]});
-  }
-
-  // All points strictly inside one open half-plane through the origin?
-  static bool pointed(const std::vector<std::pair<double, double>>& pts) {
-    if (pts.empty()) return true;
-    std::vector<double> ang;
-    for (auto [x, y] : pts) {
-      if (x == 0 && y == 0) return false;
-      ang.push_back(std::atan2(y, x));
-    }
-    std::sort(ang.begin(), ang.end());
-    double gap = ang.front() + 2 * M_PI - ang.back();
-    for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
-    return gap > M_PI;
   }
 
   void push_instant(const T& t, Status s) { seq_.push_back({instant(t), s, false}); }

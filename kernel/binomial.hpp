@@ -5,23 +5,39 @@
 // precision, so that an Mpfr row carries the run's precision and a rational
 // row is exact. Used by the Bernstein conversions (Farouki and Rajan 1987,
 // cited by 003 section VI-C as [25]).
+// Cost. The rows are cached: each thread keeps, per T and per precision of
+// `like` (scalar_traits<T>::precision; from_rational depends on nothing
+// else), the rows 0, 1, ... of Pascal's triangle built so far, and extends
+// them on demand. A row is built once (O(n) from the previous one) instead of
+// O(n²) on every call. The cache only grows and its rows never move (a
+// std::deque), so a returned reference stays valid for the thread's life,
+// calls for different degrees and precisions may interleave freely, and
+// threads share nothing. The values are those of the uncached Pascal rule.
 // Requirements on T: +, construction from int. Rounded for n > 56 in double.
 #include "kernel/scalar_traits.hpp"
 
+#include <deque>
+#include <map>
+#include <stdexcept>
 #include <vector>
 
 namespace eccd {
 
+// Row n of Pascal's triangle, C(n, 0..n), at like's precision.
 template <class T>
-std::vector<T> binomial_row(int n, const T& like) {
-  T one = scalar_traits<T>::from_rational(mpq_class(1), like);
-  std::vector<T> row(1, one);
-  for (int m = 1; m <= n; ++m) {
-    std::vector<T> next(m + 1, one);
+const std::vector<T>& binomial_row(int n, const T& like) {
+  if (n < 0) throw std::invalid_argument("binomial_row: negative degree");
+  thread_local std::map<int, std::deque<std::vector<T>>> cache;  // precision -> rows 0, 1, ...
+  std::deque<std::vector<T>>& rows = cache[scalar_traits<T>::precision(like)];
+  if (rows.empty()) rows.emplace_back(1, scalar_traits<T>::from_rational(mpq_class(1), like));
+  while (int(rows.size()) <= n) {
+    const std::vector<T>& row = rows.back();
+    const int m = int(row.size());
+    std::vector<T> next(m + 1, row[0]);  // row[0] is the run's one
     for (int k = 1; k < m; ++k) next[k] = row[k - 1] + row[k];
-    row = std::move(next);
+    rows.push_back(std::move(next));
   }
-  return row;
+  return rows[n];
 }
 
 }  // namespace eccd

@@ -7,10 +7,14 @@
 // polynomial, whose control points bound F (convex hull) and subdivide by de
 // Casteljau in either direction. Here: conversion from power form
 // (a[i][j] u^i t^j), evaluation, subdivision in u or in t, and the sign test
-// "all control points strictly of one sign".
+// "all control points strictly of one sign". Subdivision works in place on
+// copies of the control net (no per-row or per-column temporaries), with the
+// products and sums of univariate de Casteljau (kernel/bernstein.hpp).
 // Requirements on T: those of kernel/bernstein.hpp.
 #include "kernel/bernstein.hpp"
 
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace eccd {
@@ -23,7 +27,8 @@ struct BiBern {
 
   T operator()(const T& u, const T& t) const {
     Bern<T> col;  // evaluate every row in t, then the result in u
-    for (const auto& row : b) col.b.push_back(Bern<T>(row)(t));
+    col.b.reserve(b.size());
+    for (const auto& row : b) col.b.push_back(bernstein_value(std::span<const T>(row), t));
     return col(u);
   }
   // Every control point strictly positive (+1), strictly negative (-1), or neither (0).
@@ -58,29 +63,26 @@ BiBern<T> to_bibernstein(const std::vector<Poly<T>>& a, int m, int n) {
 // de Casteljau in t at tau: the pieces over [0, tau] and [tau, 1] in t.
 template <class T>
 std::pair<BiBern<T>, BiBern<T>> split_t(const BiBern<T>& f, const T& tau) {
-  BiBern<T> lo, hi;
-  for (const auto& row : f.b) {
-    auto [l, h] = split(Bern<T>(row), tau);
-    lo.b.push_back(l.b);
-    hi.b.push_back(h.b);
-  }
-  return {lo, hi};
+  BiBern<T> lo = f, hi = f;
+  for (auto& row : lo.b) keep_left(std::span<T>(row), tau);
+  for (auto& row : hi.b) keep_right(std::span<T>(row), tau);
+  return {std::move(lo), std::move(hi)};
 }
 
-// de Casteljau in u at tau.
+// de Casteljau in u at tau: the same products and sums as split() on every
+// column, carried out row by row in place (no column copies).
 template <class T>
 std::pair<BiBern<T>, BiBern<T>> split_u(const BiBern<T>& f, const T& tau) {
-  int m = f.degree_u(), n = f.degree_t();
-  BiBern<T> lo, hi;
-  lo.b.assign(m + 1, std::vector<T>(n + 1, T(0)));
-  hi.b.assign(m + 1, std::vector<T>(n + 1, T(0)));
-  for (int j = 0; j <= n; ++j) {
-    Bern<T> col;
-    for (int i = 0; i <= m; ++i) col.b.push_back(f.b[i][j]);
-    auto [l, h] = split(col, tau);
-    for (int i = 0; i <= m; ++i) { lo.b[i][j] = l.b[i]; hi.b[i][j] = h.b[i]; }
+  const int m = f.degree_u(), n = f.degree_t();
+  BiBern<T> lo = f, hi = f;
+  T s = T(1) - tau;
+  for (int r = 1; r <= m; ++r) {
+    for (int i = 0; i + r <= m; ++i)  // as keep_right, on rows
+      for (int j = 0; j <= n; ++j) { T x = s * hi.b[i][j]; T y = tau * hi.b[i + 1][j]; hi.b[i][j] = x + y; }
+    for (int i = m; i >= r; --i)  // as keep_left, on rows
+      for (int j = 0; j <= n; ++j) { T x = s * lo.b[i - 1][j]; T y = tau * lo.b[i][j]; lo.b[i][j] = x + y; }
   }
-  return {lo, hi};
+  return {std::move(lo), std::move(hi)};
 }
 
 }  // namespace eccd

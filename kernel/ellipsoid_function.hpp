@@ -19,6 +19,7 @@
 #include "kernel/polynomial.hpp"
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 namespace eccd {
@@ -63,7 +64,8 @@ BiBern<T> ellipsoid_function(const std::vector<Poly<T>>& g, const T& like) {
 template <class T>
 Bern<T> ellipsoid_function_at(const BiBern<T>& F, const T& t0) {
   Bern<T> r;
-  for (const auto& row : F.b) r.b.push_back(Bern<T>(row)(t0));
+  r.b.reserve(F.b.size());
+  for (const auto& row : F.b) r.b.push_back(bernstein_value(std::span<const T>(row), t0));
   return r;
 }
 
@@ -72,10 +74,11 @@ template <class T>
 Bern<T> ellipsoid_function_along(const BiBern<T>& F, const T& u0) {
   const int n = F.degree_t();
   Bern<T> r;
+  r.b.reserve(n + 1);
+  std::vector<T> col(F.b.size());  // one column, reused
   for (int j = 0; j <= n; ++j) {
-    Bern<T> col;
-    for (int i = 0; i <= F.degree_u(); ++i) col.b.push_back(F.b[i][j]);
-    r.b.push_back(col(u0));
+    for (int i = 0; i <= F.degree_u(); ++i) col[i] = F.b[i][j];
+    r.b.push_back(bernstein_value(std::span<const T>(col), u0));
   }
   return r;
 }

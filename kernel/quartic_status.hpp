@@ -14,26 +14,36 @@
 // gcd(f, f'), so it counts distinct roots even with a double root). With
 // rounded T it is the count the arithmetic computes; a count the theory
 // forbids (3, 4) gives `uncertain`.
+// Cost. As in 001 section 3, the Sturm sequence of the quartic has a fixed
+// size (at most 5 polynomials of degree <= 4): it is held in fixed-capacity
+// storage (count_roots_inline, kernel/sturm.hpp), so the static test
+// allocates nothing in double and runs fully unrolled (the hot path of the
+// sampling pipeline and of the static benchmark); the count is the one the
+// Poly<T> version of the same Sturm code gives.
 // Requirements on T: a field, scalar_traits<T>.
 #include "kernel/bernstein.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/polynomial.hpp"
 #include "kernel/sturm.hpp"
 
+#include <array>
+#include <optional>
+#include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace eccd {
 
-// Distinct negative roots of the quartic with coefficients g[0..4] (increasing powers).
+// Distinct negative roots of the quartic with coefficients g[0..4] (increasing
+// powers; at most 5 values, zero leading ones allowed).
 template <class T>
-int negative_root_count(const std::vector<T>& g) {
-  Poly<T> f(g);
-  return count_roots(f, std::optional<T>(), std::optional<T>(g[0] - g[0]));
+int negative_root_count(std::span<const T> g) {
+  return count_roots_inline<5, T>(g, std::optional<T>(), std::optional<T>(g[0] - g[0]));
 }
 
 template <class T>
-Status quartic_contact_status(const std::vector<T>& g) {
+Status quartic_contact_status(std::span<const T> g) {
   int n = negative_root_count(g);
   if (n == 2) return Status::separate;
   if (n == 1) return Status::touching;
@@ -43,21 +53,27 @@ Status quartic_contact_status(const std::vector<T>& g) {
                            " distinct negative roots (at most 2 for two ellipsoids)");
   return Status::uncertain;
 }
+template <class T>
+Status quartic_contact_status(const std::array<T, 5>& g) { return quartic_contact_status(std::span<const T>(g)); }
+template <class T>
+Status quartic_contact_status(const std::vector<T>& g) { return quartic_contact_status(std::span<const T>(g)); }
 
-// The status at instant t from the coefficient polynomials g_i(t).
+// The status at instant t from the coefficient polynomials g_i(t) (at most 5).
 template <class T>
 Status quartic_status_at(const std::vector<Poly<T>>& g, const T& t) {
-  std::vector<T> v;
-  for (const auto& gi : g) v.push_back(gi.is_zero() ? t - t : gi(t));
-  return quartic_contact_status(v);
+  if (g.size() > 5) throw std::invalid_argument("quartic_status_at: more than 5 coefficients");
+  std::array<T, 5> v;
+  for (std::size_t i = 0; i < g.size(); ++i) v[i] = g[i].is_zero() ? t - t : g[i](t);
+  return quartic_contact_status(std::span<const T>(v.data(), g.size()));
 }
 
 // The same from g_i(t) in Bernstein form (the floating 3D pipelines' setup).
 template <class T>
 Status quartic_status_at(const std::vector<Bern<T>>& g, const T& t) {
-  std::vector<T> v;
-  for (const auto& gi : g) v.push_back(gi(t));
-  return quartic_contact_status(v);
+  if (g.size() > 5) throw std::invalid_argument("quartic_status_at: more than 5 coefficients");
+  std::array<T, 5> v;
+  for (std::size_t i = 0; i < g.size(); ++i) v[i] = g[i](t);
+  return quartic_contact_status(std::span<const T>(v.data(), g.size()));
 }
 
 }  // namespace eccd

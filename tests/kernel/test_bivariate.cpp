@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <random>
+#include <type_traits>
 
 using namespace eccd;
 using namespace eccd::test;
@@ -68,4 +69,33 @@ TEST_CASE("4x4 characteristic polynomial: two spheres always have the double roo
     CHECK(df1 == 0);  // f'(1) = 0: a double root
   }
   CHECK(g[4].degree() == 0);  // det A, constant
+}
+
+TEMPLATE_TEST_CASE("split_u and split_t in place equal split() of every column and row", "[kernel][bivariate]", double, Mpfr, mpq_class) {
+  using T = TestType;
+  std::mt19937_64 rng(seed_from_env(2718));
+  std::vector<Poly<T>> at;
+  for (int i = 0; i <= 4; ++i) at.push_back(from_q<T>(random_poly(rng, 9)));
+  BiBern<T> f = to_bibernstein(at, 4, 9);
+  auto same = [](const T& a, const T& b) {
+    if constexpr (std::is_same_v<T, Mpfr>) return a.precision() == b.precision() && mpfr_equal_p(a.get(), b.get());
+    else return a == b;
+  };
+  for (Q tq : {Q(1, 2), Q(3, 11)}) {
+    const T tau = from_q<T>(tq);
+    auto [ul, uh] = split_u(f, tau);
+    auto [tl, th] = split_t(f, tau);
+    bool all = true;
+    for (int j = 0; j <= 9; ++j) {
+      Bern<T> col;
+      for (int i = 0; i <= 4; ++i) col.b.push_back(f.b[i][j]);
+      auto [l, h] = split(col, tau);
+      for (int i = 0; i <= 4; ++i) all = all && same(ul.b[i][j], l.b[i]) && same(uh.b[i][j], h.b[i]);
+    }
+    for (int i = 0; i <= 4; ++i) {
+      auto [l, h] = split(Bern<T>(f.b[i]), tau);
+      for (int j = 0; j <= 9; ++j) all = all && same(tl.b[i][j], l.b[j]) && same(th.b[i][j], h.b[j]);
+    }
+    CHECK(all);
+  }
 }

@@ -114,7 +114,7 @@ TEST_CASE("001 Appendix A: the 40-multiplication coefficients equal det(λA - B)
     if (trial % 5 == 0) b[0][1] = b[1][0] = 0;  // zeros, as in axis-aligned data
     INFO("trial " << trial << ": ea = " << ea.get_str() << ", eb = " << eb.get_str() << ", ec = " << ec.get_str()
                   << ", b = " << show(b));
-    std::vector<Q> fast = appendix_a_coefficients(ea, eb, ec, b);
+    std::array<Q, 5> fast = appendix_a_coefficients(ea, eb, ec, b);
     std::vector<Q> generic = generic_coefficients<Q>(diag_a(ea, eb, ec), b);
     REQUIRE(fast.size() == 5);
     REQUIRE(generic.size() == 5);
@@ -137,10 +137,10 @@ TEST_CASE("001 Appendix A in double agrees with the exact coefficients to 1e-12 
       for (int j = i; j < 4; ++j) b[i][j] = b[j][i] = random_rational(rng, -9, 9);
     INFO("trial " << trial << ": ea = " << ea.get_str() << ", eb = " << eb.get_str() << ", ec = " << ec.get_str()
                   << ", b = " << show(b));
-    std::vector<Q> exact = appendix_a_coefficients(ea, eb, ec, b);
+    std::array<Q, 5> exact = appendix_a_coefficients(ea, eb, ec, b);
     auto bd = convert<double>(b);
     auto d = [](const Q& q) { return scalar_traits<double>::from_rational(q); };
-    std::vector<double> fast = appendix_a_coefficients(d(ea), d(eb), d(ec), bd);
+    std::array<double, 5> fast = appendix_a_coefficients(d(ea), d(eb), d(ec), bd);
     std::vector<double> generic = generic_coefficients<double>(convert<double>(diag_a(ea, eb, ec)), bd);
     double norm = 0;
     for (const auto& c : exact) norm += c.get_d() * c.get_d();

@@ -1,5 +1,7 @@
 // Polynomials in power, Bernstein and scaled Bernstein form, in all three
-// arithmetics, checked against exact rational arithmetic.
+// arithmetics, checked against exact rational arithmetic; the allocation-free
+// paths (cached binomial rows, de Casteljau in place, fixed-capacity Sturm)
+// checked bit for bit against the straightforward computations.
 #include "kernel/bernstein.hpp"
 #include "kernel/discriminant.hpp"
 #include "kernel/scaled_bernstein.hpp"
@@ -8,7 +10,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <optional>
 #include <random>
+#include <span>
+#include <type_traits>
+#include <utility>
 
 using namespace eccd;
 using namespace eccd::test;
@@ -109,4 +116,115 @@ TEST_CASE("exact Sturm counts distinct roots of a polynomial with a multiple roo
   CHECK(count_roots<Q>(p, std::optional<Q>(), std::optional<Q>(Q(0))) == 1);
   CHECK(count_roots<Q>(p, std::optional<Q>(), std::optional<Q>()) == 3);
   CHECK(count_roots_closed(p, Q(1, 3), Q(1, 2)) == 2);
+}
+
+namespace {
+// The pre-cache Pascal rule (binomial.hpp before the rows were cached): the oracle for the cache.
+template <class T>
+std::vector<T> pascal_row_uncached(int n, const T& like) {
+  T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  std::vector<T> row(1, one);
+  for (int m = 1; m <= n; ++m) {
+    std::vector<T> next(m + 1, one);
+    for (int k = 1; k < m; ++k) next[k] = row[k - 1] + row[k];
+    row = std::move(next);
+  }
+  return row;
+}
+// Same value and, for Mpfr, same precision: bit for bit what the uncached code computed.
+template <class T>
+bool same(const T& a, const T& b) {
+  if constexpr (std::is_same_v<T, Mpfr>) return a.precision() == b.precision() && mpfr_equal_p(a.get(), b.get());
+  else return a == b;
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("binomial rows from the per-thread cache equal Pascal's rule afresh, degrees and precisions interleaved",
+                   "[kernel][binomial]", double, Mpfr, mpq_class) {
+  using T = TestType;
+  std::vector<T> likes{like<T>()};
+  if constexpr (std::is_same_v<T, Mpfr>) likes = {Mpfr(mpq_class(1), 64), Mpfr(mpq_class(1), 200), Mpfr(3), Mpfr(mpq_class(1), 64)};
+  for (int n : {60, 3, 0, 150, 57, 1, 149, 200, 56}) {
+    for (const T& lk : likes) {
+      INFO("n = " << n << ", precision " << scalar_traits<T>::precision(lk));
+      const std::vector<T>& row = binomial_row(n, lk);
+      std::vector<T> ref = pascal_row_uncached(n, lk);
+      REQUIRE(row.size() == ref.size());
+      bool all = true;
+      for (std::size_t k = 0; k < ref.size(); ++k) all = all && same(row[k], ref[k]);
+      CHECK(all);
+    }
+  }
+  // A reference stays valid while later calls extend the cache.
+  const std::vector<T>& r10 = binomial_row(10, likes.front());
+  (void)binomial_row(400, likes.front());
+  CHECK(to_double(r10[5]) == 252.0);
+}
+
+TEMPLATE_TEST_CASE("de Casteljau in place (bernstein_value, keep_left, keep_right, split) equals the triangle step by step",
+                   "[kernel][bernstein]", double, Mpfr, mpq_class) {
+  using T = TestType;
+  std::mt19937_64 rng(seed_from_env(424242));
+  for (int n : {0, 1, 4, 36, 63, 64, 100}) {
+    Poly<Q> p = random_poly(rng, n);
+    std::vector<T> b = to_bernstein(from_q<T>(p), n).b;
+    for (Q tq : {Q(0), Q(1, 3), Q(7, 8), Q(1)}) {
+      T tau = from_q<T>(tq);
+      INFO("degree " << n << ", tau = " << tq.get_str());
+      // the triangle as split() computed it before (one working row w, pieces read off its ends)
+      std::vector<T> w = b, left(n + 1), right(n + 1);
+      left[0] = w[0];
+      right[n] = w[n];
+      T s = T(1) - tau;
+      for (int r = 1; r <= n; ++r) {
+        for (int i = 0; i + r <= n; ++i) { T x = s * w[i]; T y = tau * w[i + 1]; w[i] = x + y; }
+        left[r] = w[0];
+        right[n - r] = w[n - r];
+      }
+      CHECK(same(bernstein_value(std::span<const T>(b), tau), left[n]));
+      std::vector<T> kl = b, kr = b;
+      keep_left(std::span<T>(kl), tau);
+      keep_right(std::span<T>(kr), tau);
+      auto [sl, sr] = split(Bern<T>(b), tau);
+      bool all = true;
+      for (int i = 0; i <= n; ++i)
+        all = all && same(kl[i], left[i]) && same(kr[i], right[i]) && same(sl.b[i], left[i]) && same(sr.b[i], right[i]);
+      CHECK(all);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("fixed-capacity Sturm (count_roots_inline) counts as the Poly<T> version", "[kernel][sturm]", double, Mpfr, mpq_class) {
+  using T = TestType;
+  std::mt19937_64 rng(seed_from_env(31337));
+  for (int trial = 0; trial < 200; ++trial) {
+    Poly<Q> pq = random_poly(rng, trial % 5);
+    if (trial % 7 == 0) pq = Poly<Q>({Q(-1, 3), Q(1)}) * Poly<Q>({Q(-1, 3), Q(1)}) * random_poly(rng, trial % 3);  // a double root
+    std::vector<T> c;
+    for (int i = 0; i <= 4; ++i) c.push_back(from_q<T>(pq.coeff(i)));  // zero leading coefficients included
+    Poly<T> p(c);
+    INFO("trial " << trial << ", degree " << pq.degree());
+    for (auto [a, b] : {std::pair<std::optional<Q>, std::optional<Q>>{std::nullopt, Q(0)}, {std::nullopt, std::nullopt},
+                        {Q(-1), Q(1, 3)}, {Q(0), Q(1)}}) {
+      std::optional<T> at = a ? std::optional<T>(from_q<T>(*a)) : std::nullopt;
+      std::optional<T> bt = b ? std::optional<T>(from_q<T>(*b)) : std::nullopt;
+      CHECK(count_roots_inline<5, T>(std::span<const T>(c), at, bt) == count_roots(p, at, bt));
+    }
+  }
+  if constexpr (scalar_traits<T>::is_exact) {
+    // (t - 1/3)² (t + 2): the gcd division counts the double root at an end once
+    Poly<Q> p = Poly<Q>({Q(-1, 3), Q(1)}) * Poly<Q>({Q(-1, 3), Q(1)}) * Poly<Q>({Q(2), Q(1)});
+    CHECK(count_roots_inline<5, Q>(std::span<const Q>(p.c), Q(-3), Q(1, 3)) == 2);
+    CHECK(count_roots_inline<5, Q>(std::span<const Q>(p.c), Q(1, 3), std::nullopt) == 0);
+  }
+  if constexpr (std::is_same_v<T, double>) {  // an uncertain sign (NaN): no count, as for intervals
+    std::vector<double> c{1.0, std::nan(""), -3.0, 0.5, 1.0};
+    CHECK(count_roots_inline<5, double>(std::span<const double>(c), std::nullopt, 0.0) == -2);
+    CHECK(count_roots(Poly<double>(c), std::optional<double>(), std::optional<double>(0.0)) == -2);
+  }
+  std::vector<T> zero(3, from_q<T>(Q(0)));
+  CHECK(count_roots_inline<5, T>(std::span<const T>(zero), std::nullopt, std::nullopt) == -1);
+  std::vector<T> six(6, from_q<T>(Q(1)));
+  auto too_many = [&] { return count_roots_inline<5, T>(std::span<const T>(six), std::nullopt, std::nullopt); };
+  CHECK_THROWS_AS(too_many(), std::length_error);
 }
