@@ -15,6 +15,7 @@
 // arithmetic (a gcd per operation): with refinement of every root to 2^-64
 // that was two thirds of the exact 2D pipeline before (issue 6).
 #include "exact/algebraic_roots.hpp"
+#include "exact/integer_polynomial.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/CORE_BigInt.h>
@@ -41,20 +42,7 @@ AK& kernel() {
 }
 
 // A positive rational multiple of p with coprime integer coefficients.
-IntPoly integer_multiple(const Poly<Rational>& p) {
-  mpz_class l = 1;
-  for (const auto& c : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
-  IntPoly z(p.c.size());
-  mpz_class g = 0, t;
-  for (std::size_t i = 0; i < p.c.size(); ++i) {
-    mpz_divexact(t.get_mpz_t(), l.get_mpz_t(), p.c[i].get_den_mpz_t());
-    mpz_mul(z[i].get_mpz_t(), p.c[i].get_num_mpz_t(), t.get_mpz_t());
-    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), z[i].get_mpz_t());
-  }
-  if (g > 1)
-    for (auto& x : z) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
-  return z;
-}
+IntPoly integer_multiple(const Poly<Rational>& p) { return primitive_integer_multiple(p); }
 
 AKPoly to_ak(const IntPoly& z) {
   std::vector<CORE::BigInt> c;

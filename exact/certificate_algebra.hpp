@@ -21,6 +21,7 @@
 // method: this is the part of the workbench a certificate checker trusts.
 // Requirements: a scene with rational motions (cycloidal motions are refused
 // by prepare_pair).
+#include "exact/integer_polynomial.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/discriminant.hpp"
@@ -91,15 +92,8 @@ inline CertificateAlgebra certificate_algebra(const Scene& s) {
 // Primitive integer coefficients (lowest degree first) of a positive multiple
 // of p, as decimal strings: how a certificate writes a polynomial.
 inline std::vector<std::string> integer_coefficients(const Poly<Rational>& p) {
-  mpz_class l = 1, c = 0;
-  for (const auto& x : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
-  std::vector<mpz_class> z;
-  for (const auto& x : p.c) {
-    z.push_back(x.get_num() * (l / x.get_den()));
-    mpz_gcd(c.get_mpz_t(), c.get_mpz_t(), z.back().get_mpz_t());
-  }
   std::vector<std::string> out;
-  for (auto& x : z) out.push_back(c == 0 ? std::string("0") : mpz_class(x / c).get_str());
+  for (const auto& x : primitive_integer_multiple(p)) out.push_back(x.get_str());
   return out;
 }
 

@@ -15,6 +15,7 @@
 // O(n²) passes over integers (n = deg p <= a few hundred for the projection
 // polynomials of the workbench).
 // Requirements: exact rationals; a < b.
+#include "exact/integer_polynomial.hpp"
 #include "exact/rational_traits.hpp"
 #include "kernel/polynomial.hpp"
 
@@ -29,10 +30,7 @@ inline int descartes_variations(const Poly<Rational>& p, const Rational& a, cons
   const int n = p.degree();
   if (n < 1) return 0;
   // Integer coefficients c_i (a positive multiple of p).
-  mpz_class l = 1;
-  for (const auto& c : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
-  std::vector<mpz_class> c(n + 1);
-  for (int i = 0; i <= n; ++i) c[i] = p.c[i].get_num() * (l / p.c[i].get_den());
+  const std::vector<mpz_class> c = primitive_integer_multiple(p);
   // a = A/d, b - a = W/d with a common denominator d.
   mpz_class d;
   mpz_lcm(d.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());

@@ -34,6 +34,7 @@
 #include "kernel/polynomial.hpp"
 
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -106,11 +107,11 @@ struct CertifiedPolicy {
   // degree 100+ its width is many times q's true range.
   Sign sign_at(const Bern<T>& q, const Root& r) const {
     if (q.degree() <= 0) return eccd::sign(q.b.empty() ? T(0) : q.b[0]);
-    Bern<T> piece = q;
-    if (r.lo > 0) piece = split(piece, of(r.lo)).second;
-    if (r.hi < 1) piece = split(piece, of((r.hi - r.lo) / (1 - r.lo))).first;
-    Sign s = eccd::sign(piece.b.front());
-    for (const auto& x : piece.b)
+    std::vector<T> piece = q.b;
+    if (r.lo > 0) keep_right(std::span<T>(piece), of(r.lo));
+    if (r.hi < 1) keep_left(std::span<T>(piece), of((r.hi - r.lo) / (1 - r.lo)));
+    Sign s = eccd::sign(piece.front());
+    for (const auto& x : piece)
       if (eccd::sign(x) != s) return Sign::uncertain;
     return s;
   }
@@ -203,13 +204,10 @@ struct CertifiedPolicy {
     const int n = q.degree();
     bool mirror = t > Rational(1, 2);
     T x = of(mirror ? Rational(1 - t) : t), y = of(mirror ? t : Rational(1 - t));
-    T s = x / y, acc = T(0), binom = T(1), pw = T(1);
-    // Horner from the top: acc = Σ_{i} b_i C(n,i) s^i, with C(n,i) built downwards from C(n,n) = 1.
-    for (int i = n; i >= 0; --i) {
-      const T& bi = q.b[mirror ? n - i : i];
-      acc = acc * s + bi * binom;
-      if (i > 0) binom = binom * T(i) / T(n - i + 1);  // C(n, i-1) = C(n, i) · i / (n - i + 1)
-    }
+    T s = x / y, acc = T(0), pw = T(1);
+    const std::vector<T>& binom = binomial_row(n, like);  // cached (kernel/binomial.hpp)
+    // Horner from the top: acc = Σ_{i} b_i C(n,i) s^i.
+    for (int i = n; i >= 0; --i) acc = acc * s + q.b[mirror ? n - i : i] * binom[i];
     for (int k = 0; k < n; ++k) pw = pw * y;
     return acc * pw;
   }
