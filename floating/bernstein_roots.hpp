@@ -14,15 +14,24 @@
 // (Variant 2). Nothing here is certified: with rounded coefficients a
 // reported root may be spurious and a double root may be missed; that is what
 // the harness measures against the exact pipeline.
+// Work bound (issue 14): at most `max_pieces` pieces are examined, and the
+// run's deadline (kernel/budget.hpp) is asked once per piece. When either is
+// hit, every piece not yet examined (in order, leftmost first) is reported as
+// an `unresolved` root cluster covering it, and `stopped` says why: the
+// caller turns those into undecided instants, never into an answer. A
+// polynomial whose coefficients are not all finite is unresolved on [0, 1].
 // Requirements on T: +, -, *, comparison, scalar_traits<T> (precision).
 // Known failure modes: a double root perturbed by ε splits or vanishes at
 // distance ~ sqrt(ε), so roots closer than cluster_width = 2^-min(p/2+2, 64)
 // are merged; when the rounding noise of Δ is far above 2^-p a double root
 // can still split into two reported roots.
+#include "floating/pow2_scaling.hpp"
 #include "kernel/bernstein.hpp"
+#include "kernel/budget.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace eccd {
@@ -31,12 +40,15 @@ template <class T>
 struct FloatRoot {
   T lo, hi, value;     // the root lies in [lo, hi] as far as rounded arithmetic can tell
   bool cluster = false;  // true: a multiple root or an unresolved cluster
+  bool unresolved = false;  // true: the work bound or the deadline stopped the search here (roots unknown)
 };
 
 template <class T>
 struct BernsteinRootOptions {
   int precision_bits = 53;
   bool first_only = false;
+  long max_pieces = 20000;  // work bound: pieces examined (de Casteljau splits are O(n^2) each)
+  mutable std::string stopped;  // out: "" or why the search stopped early
 };
 
 template <class T>
@@ -63,7 +75,8 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
     return true;
   };
   auto add = [&](FloatRoot<T> r) {
-    if (!out.empty() && !(r.lo - out.back().hi > cluster_width)) {
+    if (!out.empty() && (!(r.lo - out.back().hi > cluster_width) || (r.unresolved && out.back().unresolved))) {
+      out.back().unresolved = out.back().unresolved || r.unresolved;
       // closer to the previous one than the arithmetic can separate two
       // roots (a perturbed double root splits by ~sqrt(eps)): one cluster
       out.back().hi = r.hi;
@@ -78,8 +91,26 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
   std::vector<Piece> stack;  // depth-first, leftmost first
   const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
   const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  for (const auto& x : p.b)
+    if (!is_finite_value(x)) {  // NaN or Inf: nothing can be decided
+      opt.stopped = "non-finite coefficient";
+      out.push_back({zero, one, half, true, true});
+      return out;
+    }
   stack.push_back({p, zero, one});
+  long pieces = 0;
   while (!stack.empty()) {
+    if (++pieces > opt.max_pieces || deadline_passed()) {
+      opt.stopped = deadline_passed() ? deadline_reason()
+                                       : "root isolation stopped at its work bound of " + std::to_string(opt.max_pieces) + " pieces";
+      while (!stack.empty()) {  // leftmost first: what is left is unresolved
+        Piece rest = std::move(stack.back());
+        stack.pop_back();
+        if (strict_one_sign(rest.q)) continue;
+        add({rest.a, rest.b, half * (rest.a + rest.b), true, true});
+      }
+      break;
+    }
     Piece pc = std::move(stack.back());
     stack.pop_back();
     if (opt.first_only && !out.empty() && pc.a > out.back().hi) break;  // leftmost root is final

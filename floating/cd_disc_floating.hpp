@@ -12,8 +12,17 @@
 //                     plain convolutions (003's Variant 1).
 // Signs at a root are the signs of the computed values at the root's
 // approximation: nothing here is certified.
+// Scaling and termination (issue 14): g_0..g_N and every polynomial built
+// from them (Δ, P, D, subresultant coefficients) are scaled by a power of two
+// so that the largest coefficient has exponent 0 (floating/pow2_scaling.hpp;
+// exact, changes no root and no sign). A non-finite value sets `trouble` (the
+// pipeline then answers undecided on [0, 1] with it). Root isolation has a
+// work bound and asks the deadline (floating/bernstein_roots.hpp); a root
+// cluster it could not resolve has uncertain signs, so its instant is
+// undecided, and the reason is kept in `notes`.
 // Requirements on T: scalar_traits<T> with is_exact == false.
 #include "floating/bernstein_roots.hpp"
+#include "floating/pow2_scaling.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/scaled_bernstein.hpp"
@@ -46,12 +55,28 @@ struct FloatingPolicy {
   Basis basis = Basis::bernstein;
   int bits = 53;
   T like;
+  long max_pieces = 20000;               // root isolation work bound (per polynomial)
+  mutable std::string trouble;           // "" or why nothing can be decided (a non-finite value)
+  mutable std::vector<std::string> notes;  // why parts were left undecided (work bound, deadline)
 
   FloatingPolicy(Basis b, int precision_bits, const T& like_value) : basis(b), bits(precision_bits), like(like_value) {}
 
   // formula(G) with G = {g_0, ..., g_N} in the ring of the basis; the result in Bernstein form.
   template <class F>
   Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
+    Bern<T> out = build_raw(g, formula);
+    if (!normalise_pow2<T>([&](auto f) { for (auto& x : out.b) f(x); }) && trouble.empty())
+      trouble = "overflow: a non-finite coefficient in a polynomial built from f (Δ, P, D or a subresultant)";
+    return out;
+  }
+  // Scales g_0..g_N by one power of two (the caller's first step); false if not finite.
+  bool normalise_g(std::vector<Poly<T>>& g) const {
+    bool ok = normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.c) f(x); });
+    if (!ok && trouble.empty()) trouble = "overflow: a non-finite coefficient of f (g_k)";
+    return ok;
+  }
+  template <class F>
+  Bern<T> build_raw(const std::vector<Poly<T>>& g, F formula) const {
     if (basis == Basis::power) {
       Poly<T> r = formula(g);
       Bern<T> out = to_bernstein(r, std::max(r.degree(), 0));
@@ -80,9 +105,15 @@ struct FloatingPolicy {
     BernsteinRootOptions<T> o;
     o.precision_bits = bits;
     o.first_only = first_only;
-    return bernstein_roots(q, o);
+    o.max_pieces = max_pieces;
+    auto r = bernstein_roots(q, o);
+    if (!o.stopped.empty()) notes.push_back(o.stopped);
+    return r;
   }
-  Sign sign_at(const Bern<T>& q, const Root& r) const { return eccd::sign(q(r.value)); }
+  Sign sign_at(const Bern<T>& q, const Root& r) const {
+    if (r.unresolved) return Sign::uncertain;
+    return eccd::sign(q(r.value));
+  }
   Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
   T sample_between(const Root* l, const Root* r) const {
     T a = l ? l->hi : scalar_traits<T>::from_rational(mpq_class(0), like);
