@@ -12,6 +12,7 @@
 #include "floating/double_traits.hpp"
 #include "floating/mpfr_real.hpp"
 #include "floating/rounded_input.hpp"
+#include "floating/running_error.hpp"
 #include "kernel/scene_reader.hpp"
 
 #include <algorithm>
@@ -301,8 +302,9 @@ nlohmann::json run_certified(const PreparedPair<N>& p, const SolveOptions& opt) 
 
 nlohmann::json solve_3d(const Scene& scene, const SolveOptions& opt) {
   switch (opt.arith.kind) {
-    case Arithmetic::Double: return run_floating_3d<double>(scene, opt, 1.0);
-    case Arithmetic::Mpfr: return run_floating_3d<eccd::Mpfr>(scene, opt, eccd::Mpfr(mpq_class(1), opt.arith.bits));
+    case Arithmetic::Double: return run_floating_3d<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0));
+    case Arithmetic::Mpfr:
+      return run_floating_3d<Bounded<eccd::Mpfr>>(scene, opt, Bounded<eccd::Mpfr>(eccd::Mpfr(mpq_class(1), opt.arith.bits), 0));
     case Arithmetic::Certified: return run_certified<4>(prepare_pair<4>(scene), opt);
     default: return run_exact<4>(prepare_pair<4>(scene), opt);
   }
@@ -345,8 +347,10 @@ nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt) {
     throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
   nlohmann::json j;
   switch (opt.arith.kind) {  // prepare_pair refuses cycloidal motions for exact arithmetic
-    case Arithmetic::Double: j = run_floating<double>(scene, opt, 1.0); break;
-    case Arithmetic::Mpfr: j = run_floating<eccd::Mpfr>(scene, opt, eccd::Mpfr(mpq_class(1), opt.arith.bits)); break;
+    case Arithmetic::Double: j = run_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0)); break;
+    case Arithmetic::Mpfr:
+      j = run_floating<Bounded<eccd::Mpfr>>(scene, opt, Bounded<eccd::Mpfr>(eccd::Mpfr(mpq_class(1), opt.arith.bits), 0));
+      break;
     case Arithmetic::Exact: j = run_exact<3>(prepare_pair<3>(scene), opt); break;
     case Arithmetic::Certified: j = run_certified<3>(prepare_pair<3>(scene), opt); break;
   }

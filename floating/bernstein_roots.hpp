@@ -26,6 +26,7 @@
 // are merged; when the rounding noise of Δ is far above 2^-p a double root
 // can still split into two reported roots.
 #include "floating/pow2_scaling.hpp"
+#include "floating/running_error.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/budget.hpp"
 
@@ -80,7 +81,7 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
       // closer to the previous one than the arithmetic can separate two
       // roots (a perturbed double root splits by ~sqrt(eps)): one cluster
       out.back().hi = r.hi;
-      out.back().value = half * (out.back().lo + out.back().hi);
+      out.back().value = point_of(T(half * (out.back().lo + out.back().hi)));
       out.back().cluster = true;
       return;
     }
@@ -116,18 +117,31 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
     if (opt.first_only && !out.empty() && pc.a > out.back().hi) break;  // leftmost root is final
     if (strict_one_sign(pc.q)) continue;
     T w = pc.b - pc.a;
+    if constexpr (has_error_bound_v<T>) {
+      // Every coefficient within its error bound of 0: the polynomial is noise
+      // here, and subdivision cannot make the bound smaller; a cluster (its
+      // signs are uncertain to the caller).
+      bool all_uncertain = true;
+      for (const auto& x : pc.q.b) all_uncertain = all_uncertain && sign(x) == Sign::uncertain;
+      if (all_uncertain) { add({pc.a, pc.b, point_of(T(half * (pc.a + pc.b))), true}); continue; }
+    }
     Sign sa = sign(pc.q.b.front()), sb = sign(pc.q.b.back());
-    if (pc.q.sign_variations() == 1 && sa != Sign::zero && sb != Sign::zero && sa != sb) {
+    bool all_sure = true;  // Descartes' rule needs every coefficient's sign (a running error bound may leave some uncertain)
+    for (const auto& x : pc.q.b) all_sure = all_sure && sign(x) != Sign::uncertain;
+    if (all_sure && pc.q.sign_variations() == 1 && sa != Sign::zero && sb != Sign::zero && sa != sb) {
       // exactly one simple root: Illinois (modified regula falsi), which
       // converges superlinearly, down to the working precision
       T lo = zero, hi = one, flo = pc.q.b.front(), fhi = pc.q.b.back();
       int side = 0;
       for (int it = 0; it < 4 * opt.precision_bits && hi - lo > simple_width; ++it) {
         T den = fhi - flo;
-        T x = (lo * fhi - hi * flo) / den;
-        if (!(x > lo && x < hi)) x = half * (lo + hi);
+        T x = point_of(T((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
+        if (!(x > lo && x < hi)) x = point_of(T(half * (lo + hi)));
         T fx = pc.q(x);
-        Sign sx = sign(fx);
+        // The root is proved to be in the piece; where the bound leaves fx's sign
+        // uncertain, its location is refined by the value's sign (best effort, as plain T).
+        Sign sx = value_sign(fx);
+        if (sx == Sign::uncertain) break;
         if (sx == Sign::zero) { lo = x; hi = x; break; }
         if (sx == sa) {
           lo = x; flo = fx;
@@ -139,13 +153,13 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
           side = 1;
         }
       }
-      T rlo = pc.a + w * lo, rhi = pc.a + w * hi;
-      add({rlo, rhi, half * (rlo + rhi), false});
+      T rlo = point_of(T(pc.a + w * lo)), rhi = point_of(T(pc.a + w * hi));
+      add({rlo, rhi, point_of(T(half * (rlo + rhi))), false});
     } else if (!(w > cluster_width)) {
       add({pc.a, pc.b, half * (pc.a + pc.b), true});
     } else {
       auto [l, r] = split(pc.q, half);
-      T m = half * (pc.a + pc.b);
+      T m = point_of(T(half * (pc.a + pc.b)));
       stack.push_back({std::move(r), m, pc.b});
       stack.push_back({std::move(l), pc.a, m});
     }

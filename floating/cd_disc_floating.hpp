@@ -27,7 +27,9 @@
 #include "kernel/cd_disc.hpp"
 #include "kernel/scaled_bernstein.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <type_traits>
 #include <string>
 
 namespace eccd {
@@ -105,13 +107,19 @@ struct FloatingPolicy {
     BernsteinRootOptions<T> o;
     o.precision_bits = bits;
     o.first_only = first_only;
-    o.max_pieces = max_pieces;
+    // Work bound: about 1e8 coefficient operations in double, 2e6 in MPFR (each de Casteljau split is O(n^2)).
+    const double ops = (std::is_same_v<T, double> || std::is_same_v<T, Bounded<double>>) ? 1e8 : 2e6;
+    const double n1 = double(q.b.size());
+    o.max_pieces = std::clamp(long(ops / (n1 * n1)), 64L, max_pieces);
     auto r = bernstein_roots(q, o);
     if (!o.stopped.empty()) notes.push_back(o.stopped);
     return r;
   }
+  // With a running error bound (floating/running_error.hpp) a cluster is a
+  // place where Δ's sign is unknown: there may be a double root (a touch),
+  // two close roots or none, so nothing is claimed there.
   Sign sign_at(const Bern<T>& q, const Root& r) const {
-    if (r.unresolved) return Sign::uncertain;
+    if (unknown_inside(r)) return Sign::uncertain;
     return eccd::sign(q(r.value));
   }
   Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
@@ -119,14 +127,21 @@ struct FloatingPolicy {
     T a = l ? l->hi : scalar_traits<T>::from_rational(mpq_class(0), like);
     T b = r ? r->lo : scalar_traits<T>::from_rational(mpq_class(1), like);
     T s = a + b;
-    return scalar_traits<T>::from_rational(mpq_class(1, 2), like) * s;
+    return point_of(T(scalar_traits<T>::from_rational(mpq_class(1, 2), like) * s));
   }
   Instant instant_at(const T& t) const { return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt}; }
   Instant instant(const Root& r) const { return instant_at(r.value); }
   T value(const Root& r) const { return r.value; }
   int multiplicity(const Root& r) const { return r.cluster ? 2 : 1; }
-  bool at_zero(const Root& r) const { return !(r.lo > scalar_traits<T>::from_rational(mpq_class(0), like)); }
-  bool at_one(const Root& r) const { return !(r.hi < scalar_traits<T>::from_rational(mpq_class(1), like)); }
+  // An unresolved stretch is at an end only if it is all there (else it is interior, with uncertain status).
+  // With a running error bound so is a cluster (nothing is known inside it).
+  bool unknown_inside(const Root& r) const { return r.unresolved || (has_error_bound_v<T> && r.cluster); }
+  bool at_zero(const Root& r) const {
+    return !((unknown_inside(r) ? r.hi : r.lo) > scalar_traits<T>::from_rational(mpq_class(0), like));
+  }
+  bool at_one(const Root& r) const {
+    return !((unknown_inside(r) ? r.lo : r.hi) < scalar_traits<T>::from_rational(mpq_class(1), like));
+  }
 };
 
 }  // namespace eccd

@@ -21,6 +21,7 @@
 #include <climits>
 #include <cmath>
 #include <mpfr.h>
+#include <vector>
 
 namespace eccd {
 

@@ -46,7 +46,7 @@ namespace rounded_detail {
 // det of a small matrix in T by Gaussian elimination with partial pivoting.
 template <class T, int N>
 T det_in(Matrix<T, N> m) {
-  T d = m[0][0] / m[0][0];
+  T d = scalar_traits<T>::from_rational(mpq_class(1), m[0][0]);
   for (int c = 0; c < N; ++c) {
     int p = c;
     for (int r = c + 1; r < N; ++r)

@@ -37,6 +37,15 @@
 // root of F_u) whose Bernstein coefficients of F(u*, .) on [a, b] are all
 // positive. Near a contact instant no such certificate exists; the exact
 // pipeline decides those instants by projection (kernel/ccd_projection.hpp).
+// Termination and honesty (issue 14): g is scaled by a power of two first
+// and a non-finite coefficient or control point makes [0, 1] undecided with
+// the reason; when the subdivision cap (max_subdivisions) or the run's
+// deadline is hit, every gap not yet resolved is an undecided cell (never a
+// guess), and shots stop at the deadline. With a running error bound
+// (T = Bounded<U>, floating/running_error.hpp) static tests decide by signs
+// sure under the bound (else uncertain), misses of a shot are proofs, and a
+// touch found by two shots meeting is reported uncertain (a tangency cannot
+// be told from a near-miss in rounded arithmetic).
 // Requirements on T: an ordered field with scalar_traits<T>. Shooting and the
 // Gaussian test need rounded T (the test's angles are compared in double).
 // Cost: the inner loops (static tests, shooting, Gaussian test) restrict and
@@ -215,6 +224,17 @@ class BezierZeroSet {
     } else {
       Bern<T> f = ellipsoid_function_at(F_, t0);
       Peak p = argmax(f);
+      if constexpr (has_error_bound_v<T>) {
+        // With a running error bound the sign of the peak decides, or nothing does.
+        // A peak value that is not certainly positive may still hide a separating u
+        // elsewhere, so try the control points: all certainly negative = overlap.
+        Sign s = sign(p.value);
+        if (s == Sign::positive) return Status::separate;
+        bool all_negative = true;
+        for (const auto& x : f.b) all_negative = all_negative && sign(x) == Sign::negative;
+        if (all_negative || s == Sign::negative) return Status::overlapping;
+        return Status::uncertain;
+      }
       // A peak within rounding noise of 0 (relative to F(., t0)'s coefficients) is a touch as far
       // as this arithmetic can tell.
       T scale = zero_;
@@ -293,7 +313,7 @@ class BezierZeroSet {
       auto roots = bernstein_roots(G, ro);
       if (roots.empty()) return {ShotKind::miss, to};
       T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
-      T tn = t + s * (to - t);
+      T tn = point_of(T(t + s * (to - t)));  // an evaluation point (floating/running_error.hpp)
       T step = tn - t;
       if (sign(step) == Sign::negative) step = -step;
       t = tn;
@@ -408,7 +428,7 @@ class BezierZeroSet {
     }
     return false;
   }
-  T mid(const T& a, const T& b) const { return half_ * (a + b); }
+  T mid(const T& a, const T& b) const { return point_of(T(half_ * (a + b))); }
 
   // Fills the open interval (a, b) between two decided instants.
   void resolve(const T& a, Status sa, const T& b, Status sb, int depth) {
@@ -451,7 +471,8 @@ class BezierZeroSet {
         if (!(gap > touch_tol_)) {  // both shots met: a tangential touch
           T c = mid(f.t, k.t);
           push_cell(a, c, Status::separate);
-          push_instant(c, Status::touching);
+          // With a running error bound a tangency is never sure (it may be a near-miss): undecided.
+          push_instant(c, has_error_bound_v<T> ? Status::uncertain : Status::touching);
           push_cell(c, b, Status::separate);
           return;
         }
