@@ -12,10 +12,11 @@
 //                     plain convolutions (003's Variant 1).
 // Signs at a root are the signs of the computed values at the root's
 // approximation: nothing here is certified.
-// Scaling and termination (issue 14): g_0..g_N and every polynomial built
-// from them (Δ, P, D, subresultant coefficients) are scaled by a power of two
+// Scaling and termination (issue 14): g_0..g_N are scaled by a power of two
 // so that the largest coefficient has exponent 0 (floating/pow2_scaling.hpp;
-// exact, changes no root and no sign). A non-finite value sets `trouble` (the
+// exact, changes no root and no sign; Δ, P, D and the subresultant
+// coefficients built from them then stay in range: products of a few values
+// below 1 with binomial weights). A non-finite value sets `trouble` (the
 // pipeline then answers undecided on [0, 1] with it). Root isolation has a
 // work bound and asks the deadline (floating/bernstein_roots.hpp); a root
 // cluster it could not resolve has uncertain signs, so its instant is
@@ -66,8 +67,10 @@ struct FloatingPolicy {
   // formula(G) with G = {g_0, ..., g_N} in the ring of the basis; the result in Bernstein form.
   template <class F>
   Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
+    // Not rescaled: g is (normalise_g), so Δ and the others stay in range, and
+    // the harness measures these coefficients against exact ones unscaled.
     Bern<T> out = build_raw(g, formula);
-    if (!normalise_pow2<T>([&](auto f) { for (auto& x : out.b) f(x); }) && trouble.empty())
+    if (!all_finite(out.b) && trouble.empty())
       trouble = "overflow: a non-finite coefficient in a polynomial built from f (Δ, P, D or a subresultant)";
     return out;
   }

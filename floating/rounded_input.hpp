@@ -65,10 +65,10 @@ T det_in(Matrix<T, N> m) {
 template <class T, int N>
 Matrix<T, N> quadric_value(const Matrix<T, N>& q, const PolyMatrix<T, N>& n, const T& t) {
   Matrix<T, N> nt{}, r{};
-  for (int i = 0; i < N; ++i) for (int j = 0; j < N; ++j) nt[i][j] = n[i][j].is_zero() ? t - t : n[i][j](t);
+  for (int i = 0; i < N; ++i) for (int j = 0; j < N; ++j) nt[i][j] = n[i][j].is_zero() ? scalar_traits<T>::from_rational(mpq_class(0), t) : n[i][j](t);
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
-      T s = t - t;
+      T s = scalar_traits<T>::from_rational(mpq_class(0), t);
       for (int k = 0; k < N; ++k)
         for (int l = 0; l < N; ++l) s = s + nt[k][i] * q[k][l] * nt[l][j];
       r[i][j] = s;
@@ -129,7 +129,7 @@ template <class T, int N>
 MovingPairBern<T, N> to_bernstein_pair(const MovingPair<T, N>& m) {
   const T& like = m.qa[0][0];
   auto bern = [&](const Poly<T>& e) {
-    if (e.is_zero()) { Bern<T> r; r.b.push_back(like - like); return r; }
+    if (e.is_zero()) { Bern<T> r; r.b.push_back(scalar_traits<T>::from_rational(mpq_class(0), like)); return r; }
     return to_bernstein(e, std::max(e.degree(), 0));
   };
   MovingPairBern<T, N> out;
@@ -150,7 +150,7 @@ std::vector<Bern<T>> characteristic_bernstein_of(const MovingPair<T, N>& m, bool
   std::vector<Bern<T>> out;
   for (const auto& gi : characteristic_of(m)) {
     Bern<T> b = to_bernstein(gi, std::max(gi.degree(), 0));
-    if (gi.is_zero()) b.b.assign(1, like - like);
+    if (gi.is_zero()) b.b.assign(1, scalar_traits<T>::from_rational(mpq_class(0), like));
     out.push_back(b);
   }
   return out;

@@ -129,7 +129,9 @@ Peak<U> bern_argmax(const Bern<U>& f, int bits, const U& u0, const U& u1) {
   if (v1 > best.value) best = {u1, v1};
   BernsteinRootOptions<U> ro;
   ro.precision_bits = bits;
-  for (const auto& r : bernstein_roots(derivative(f), ro)) {
+  Bern<U> df = derivative(f);
+  for (auto& x : df.b) x = point_of(x);  // where the peak is: a witness u, located as plain U would (no claim)
+  for (const auto& r : bernstein_roots(df, ro)) {
     U v = f(r.value);
     if (v > best.value) best = {r.value, v};
   }
@@ -310,7 +312,11 @@ class BezierZeroSet {
       ro.precision_bits = std::min(bits_, 56);
       ro.first_only = true;
       ro.max_pieces = 2000;
-      auto roots = bernstein_roots(G, ro);
+      // The hit is located as plain T would locate it (a lower bound of the
+      // contact, refined by the next shot); only the miss above is a claim.
+      Bern<T> Gv = G;
+      for (auto& x : Gv.b) x = point_of(x);
+      auto roots = bernstein_roots(Gv, ro);
       if (roots.empty()) return {ShotKind::miss, to};
       T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
       T tn = point_of(T(t + s * (to - t)));  // an evaluation point (floating/running_error.hpp)
