@@ -1,5 +1,5 @@
 // eccd: the workbench's command-line front door.
-//   eccd solve SCENE [--arith double|mpfr:BITS|exact] [--basis ...] [--variant N] [--json]
+//   eccd solve SCENE [--arith double|mpfr:BITS|exact] [--basis ...] [--input rounded|prepared] [--variant N] [--json]
 //   eccd table [DIR] [--mpfr BITS ...] [--json]   every scene of DIR in every arithmetic, side by side
 //   eccd generate / report / plot                 app/generate.cpp, app/report.cpp, app/plot.cpp
 //   eccd certify / check-certificate              app/certify.cpp
@@ -152,6 +152,10 @@ int main(int argc, char** argv) {
                     "marching:N (marching squares on an N x N grid of F(u,t), 002 section IV)")->capture_default_str();
   bool first_contact = false;
   solve->add_flag("--first-contact", first_contact, "3D: compute the first collision interval only (first-contact mode of 001 section 4)");
+  std::string input = "rounded";
+  auto* input_opt = solve->add_option("--input", input,
+                    "Floating only: rounded (each number of the scene rounded to the arithmetic, everything after computed in it: "
+                    "what a user's program does) or prepared (the scene prepared exactly, then rounded)")->capture_default_str();
   bool store = false;
   solve->add_flag("--write-answer", store, "Store the answer in the scene file under \"answer\" (exact arithmetic only)");
 
@@ -181,6 +185,10 @@ int main(int argc, char** argv) {
       opt.method = method;
       check_method(method);
       opt.first_contact = first_contact || (variant == 2);
+      opt.input = parse_input_mode(input);
+      if (input_opt->count() && opt.arith.kind != Arithmetic::Double && opt.arith.kind != Arithmetic::Mpfr)
+        std::cerr << "eccd solve: warning: --input applies to double and mpfr only; " << opt.arith.name()
+                  << " starts from the exactly prepared scene\n";
       Scene s = read_scene_file(scene_path);
       nlohmann::json r;
       try {

@@ -11,6 +11,8 @@
 #include "floating/cd_disc_floating.hpp"
 #include "floating/double_traits.hpp"
 #include "floating/mpfr_real.hpp"
+#include "floating/rounded_input.hpp"
+#include "floating/running_error.hpp"
 #include "kernel/scene_reader.hpp"
 
 #include <algorithm>
@@ -120,6 +122,7 @@ nlohmann::json report_json(const CdDiscResult<T>& r, int dim = 2) {
   for (const auto& c : r.critical)
     crit.push_back({{"t", instant_json(c.t)}, {"status", to_string(c.status)}, {"multiplicity", c.multiplicity}});
   j["critical_instants"] = crit;
+  j["undecided_reasons"] = r.undecided_reasons;
   nlohmann::json cells = nlohmann::json::array();
   for (const auto& c : r.cells) cells.push_back({{"sample", instant_json(c.sample)}, {"status", to_string(c.status)}});
   j["cells"] = cells;
@@ -130,16 +133,35 @@ nlohmann::json report_json(const CdDiscResult<T>& r, int dim = 2) {
   return j;
 }
 
+// The pair a floating run starts from: the scene's numbers rounded to T and
+// prepared in T (input mode rounded, floating/rounded_input.hpp), or the
+// exactly prepared pair rounded (input mode prepared). trouble: "" or why a
+// value is not finite.
+template <class T, int N>
+MovingPair<T, N> floating_pair(const Scene& scene, const SolveOptions& opt, const T& like, std::string& trouble) {
+  trouble.clear();
+  if (opt.input == InputMode::prepared) return to_arithmetic<T, N>(prepare_pair<N>(scene), like);
+  return round_pair<T, N>(scene, like, trouble);
+}
+
 template <class T>
-nlohmann::json run_floating(const PreparedPair<3>& p, const SolveOptions& opt, const T& like) {
+nlohmann::json run_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
   FloatingPolicy<T> pol(parse_basis(opt.basis), opt.arith.bits, like);
-  MovingPair<T, 3> m = to_arithmetic<T, 3>(p, like);
-  nlohmann::json j = report_json(cd_disc(m, pol, Variant(opt.variant)));
+  std::string trouble;
+  MovingPair<T, 3> m = floating_pair<T, 3>(scene, opt, like, trouble);
+  CdDiscResult<T> r;
+  if (!trouble.empty()) {
+    r.variant = Variant(opt.variant);
+    undecided_everywhere(r, pol.instant_at(scalar_traits<T>::from_rational(0, like)),
+                         pol.instant_at(scalar_traits<T>::from_rational(1, like)), trouble);
+  } else {
+    r = cd_disc(m, pol, Variant(opt.variant));
+  }
+  nlohmann::json j = report_json(r);
   j["basis"] = opt.basis;
   j["certified"] = false;
   return j;
 }
-
 
 // "sampling:N" / "marching:N" -> N (0 if the method has another name).
 int method_grid(const std::string& method, const std::string& name) {
@@ -151,18 +173,35 @@ int method_grid(const std::string& method, const std::string& name) {
 }
 
 template <class T>
-nlohmann::json run_floating_3d(const PreparedPair<4>& p, const SolveOptions& opt, const T& like) {
+nlohmann::json run_floating_3d(const Scene& scene, const SolveOptions& opt, const T& like) {
   auto start = std::chrono::steady_clock::now();
   Basis basis = parse_basis(opt.basis);
   if (basis == Basis::scaled_bernstein && opt.method != "projection")
     throw std::invalid_argument("--basis scaled-bernstein applies to --method projection only in 3D");
+  std::string trouble;
+  std::optional<PreparedPair<4>> p;
+  if (opt.input == InputMode::prepared) p = prepare_pair<4>(scene);
+  MovingPair<T, 4> m = p ? to_arithmetic<T, 4>(*p, like) : round_pair<T, 4>(scene, like, trouble);
   // g_0..g_4: products in Bernstein form from N(t) in Bernstein form, or in power form.
-  std::vector<Bern<T>> g = characteristic_bernstein<T, 4>(p, basis == Basis::power, like);
+  std::vector<Bern<T>> g;
+  if (trouble.empty() && opt.method != "projection")
+    g = p ? characteristic_bernstein<T, 4>(*p, basis == Basis::power, like) : characteristic_bernstein_of<T, 4>(m, basis == Basis::power);
   double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!trouble.empty()) {
+    CdDiscResult<T> r;
+    undecided_everywhere(r, Instant{"0", std::nullopt, std::nullopt}, Instant{"1", std::nullopt, std::nullopt}, trouble);
+    check_method(opt.method);
+    nlohmann::json j = report_json(r, 3);
+    j["setup_ms"] = setup * 1e3;
+    j["basis"] = opt.basis;
+    j["method"] = opt.method;
+    j["certified"] = false;
+    return j;
+  }
   nlohmann::json j;
   if (opt.method == "projection") {
     FloatingPolicy<T> pol(basis, opt.arith.bits, like);
-    j = report_json(ccd_projection(to_arithmetic<T, 4>(p, like), pol, opt.first_contact), 3);
+    j = report_json(ccd_projection(m, pol, opt.first_contact), 3);
     setup = 0;  // ccd_projection builds its own coefficients and times them
   } else if (opt.method == "bezier") {
     BezierOptions bo;
@@ -262,12 +301,12 @@ nlohmann::json run_certified(const PreparedPair<N>& p, const SolveOptions& opt) 
 }
 
 nlohmann::json solve_3d(const Scene& scene, const SolveOptions& opt) {
-  PreparedPair<4> p = prepare_pair<4>(scene);
   switch (opt.arith.kind) {
-    case Arithmetic::Double: return run_floating_3d<double>(p, opt, 1.0);
-    case Arithmetic::Mpfr: return run_floating_3d<eccd::Mpfr>(p, opt, eccd::Mpfr(mpq_class(1), opt.arith.bits));
-    case Arithmetic::Certified: return run_certified<4>(p, opt);
-    default: return run_exact<4>(p, opt);
+    case Arithmetic::Double: return run_floating_3d<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0));
+    case Arithmetic::Mpfr:
+      return run_floating_3d<Bounded<eccd::Mpfr>>(scene, opt, Bounded<eccd::Mpfr>(eccd::Mpfr(mpq_class(1), opt.arith.bits), 0));
+    case Arithmetic::Certified: return run_certified<4>(prepare_pair<4>(scene), opt);
+    default: return run_exact<4>(prepare_pair<4>(scene), opt);
   }
 }
 
@@ -294,6 +333,8 @@ nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt) {
   out["dim"] = scene.dim;
   out["arith"] = opt.arith.name();
   out["precision_bits"] = opt.arith.bits;
+  const bool floating = opt.arith.kind == Arithmetic::Double || opt.arith.kind == Arithmetic::Mpfr;
+  out["input"] = to_string(floating ? opt.input : InputMode::prepared);
   for (auto& [k, v] : j.items()) out[k] = v;
   return out;
 }
@@ -304,13 +345,14 @@ nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt) {
   bool cyclo = std::holds_alternative<CycloidalMotion>(scene.a.motion) || std::holds_alternative<CycloidalMotion>(scene.b.motion);
   if (cyclo && (opt.arith.kind == Arithmetic::Double || opt.arith.kind == Arithmetic::Mpfr))
     throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
-  PreparedPair<3> p = prepare_pair<3>(scene);  // refuses cycloidal motions for exact arithmetic
   nlohmann::json j;
-  switch (opt.arith.kind) {
-    case Arithmetic::Double: j = run_floating<double>(p, opt, 1.0); break;
-    case Arithmetic::Mpfr: j = run_floating<eccd::Mpfr>(p, opt, eccd::Mpfr(mpq_class(1), opt.arith.bits)); break;
-    case Arithmetic::Exact: j = run_exact<3>(p, opt); break;
-    case Arithmetic::Certified: j = run_certified<3>(p, opt); break;
+  switch (opt.arith.kind) {  // prepare_pair refuses cycloidal motions for exact arithmetic
+    case Arithmetic::Double: j = run_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0)); break;
+    case Arithmetic::Mpfr:
+      j = run_floating<Bounded<eccd::Mpfr>>(scene, opt, Bounded<eccd::Mpfr>(eccd::Mpfr(mpq_class(1), opt.arith.bits), 0));
+      break;
+    case Arithmetic::Exact: j = run_exact<3>(prepare_pair<3>(scene), opt); break;
+    case Arithmetic::Certified: j = run_certified<3>(prepare_pair<3>(scene), opt); break;
   }
   j["method"] = "cd-disc";
   return j;
@@ -335,7 +377,8 @@ std::string summary_text(const nlohmann::json& r) {
   };
   o << "scene " << r["scene"].get<std::string>() << " (" << r["dim"].get<int>() << "D), arithmetic "
     << r["arith"].get<std::string>() << (r["certified"].get<bool>() ? ", certified" : ", not certified")
-    << (r["basis"] != "exact" ? ", basis " + r["basis"].get<std::string>() : std::string()) << "\n";
+    << (r["basis"] != "exact" ? ", basis " + r["basis"].get<std::string>() : std::string())
+    << (r.contains("input") && r["input"] == "rounded" ? ", input rounded" : "") << "\n";
   o << "  status at t = 0: " << r["status_at_0"].get<std::string>() << "; discriminant degree "
     << r["delta_degree"].get<int>() << (r["delta_identically_zero"].get<bool>() ? " (identically zero)" : "") << ", "
     << r["critical_instants"].size() << " root(s) in [0, 1]\n";
@@ -353,6 +396,8 @@ std::string summary_text(const nlohmann::json& r) {
       o << "\n";
     }
   for (const auto& u : r["undecided"]) o << "  undecided near t = " << u["approx"].get<std::string>() << "\n";
+  if (r.contains("undecided_reasons") && !r["undecided"].empty())
+    for (const auto& why : r["undecided_reasons"]) o << "  undecided because: " << why.get<std::string>() << "\n";
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.3f", r["time_ms"].get<double>());
   o << "  time: " << buf << " ms\n";

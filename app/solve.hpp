@@ -8,6 +8,7 @@
 // rungs, increasing) or "certified:none" (straight from doubles to exact).
 // Errors: std::invalid_argument for a request the pipeline refuses (a
 // cycloidal motion in exact arithmetic, an unknown arithmetic or method); kernel/scene_reader.hpp's SceneError for bad files.
+#include "kernel/prepared_scene.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -32,6 +33,10 @@ struct SolveOptions {
   int variant = 0;                   // 2D: 0 answer, 1 collides, 2 first contact, 3 all contacts
   std::string method = "bezier";     // 3D floating: bezier | projection | sampling:N | marching:N
   bool first_contact = false;        // 3D: stop after the first collision interval (001 section 4)
+  // Floating only (double, mpfr): start from the scene's numbers rounded to the
+  // arithmetic (default) or from the exactly prepared scene (kernel/prepared_scene.hpp).
+  // Ignored by exact and certified runs (the JSON then says "prepared").
+  InputMode input = InputMode::rounded;
 };
 
 // Runs the 2D or 3D pipeline; returns the full JSON report (spec answer + extras).

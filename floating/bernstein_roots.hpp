@@ -14,15 +14,25 @@
 // (Variant 2). Nothing here is certified: with rounded coefficients a
 // reported root may be spurious and a double root may be missed; that is what
 // the harness measures against the exact pipeline.
+// Work bound (issue 14): at most `max_pieces` pieces are examined, and the
+// run's deadline (kernel/budget.hpp) is asked once per piece. When either is
+// hit, every piece not yet examined (in order, leftmost first) is reported as
+// an `unresolved` root cluster covering it, and `stopped` says why: the
+// caller turns those into undecided instants, never into an answer. A
+// polynomial whose coefficients are not all finite is unresolved on [0, 1].
 // Requirements on T: +, -, *, comparison, scalar_traits<T> (precision).
 // Known failure modes: a double root perturbed by ε splits or vanishes at
 // distance ~ sqrt(ε), so roots closer than cluster_width = 2^-min(p/2+2, 64)
 // are merged; when the rounding noise of Δ is far above 2^-p a double root
 // can still split into two reported roots.
+#include "floating/pow2_scaling.hpp"
+#include "floating/running_error.hpp"
 #include "kernel/bernstein.hpp"
+#include "kernel/budget.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace eccd {
@@ -31,12 +41,15 @@ template <class T>
 struct FloatRoot {
   T lo, hi, value;     // the root lies in [lo, hi] as far as rounded arithmetic can tell
   bool cluster = false;  // true: a multiple root or an unresolved cluster
+  bool unresolved = false;  // true: the work bound or the deadline stopped the search here (roots unknown)
 };
 
 template <class T>
 struct BernsteinRootOptions {
   int precision_bits = 53;
   bool first_only = false;
+  long max_pieces = 20000;  // work bound: pieces examined (de Casteljau splits are O(n^2) each)
+  mutable std::string stopped;  // out: "" or why the search stopped early
 };
 
 template <class T>
@@ -63,11 +76,12 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
     return true;
   };
   auto add = [&](FloatRoot<T> r) {
-    if (!out.empty() && !(r.lo - out.back().hi > cluster_width)) {
+    if (!out.empty() && (!(r.lo - out.back().hi > cluster_width) || (r.unresolved && out.back().unresolved))) {
+      out.back().unresolved = out.back().unresolved || r.unresolved;
       // closer to the previous one than the arithmetic can separate two
       // roots (a perturbed double root splits by ~sqrt(eps)): one cluster
       out.back().hi = r.hi;
-      out.back().value = half * (out.back().lo + out.back().hi);
+      out.back().value = point_of(T(half * (out.back().lo + out.back().hi)));
       out.back().cluster = true;
       return;
     }
@@ -78,25 +92,56 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
   std::vector<Piece> stack;  // depth-first, leftmost first
   const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
   const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  for (const auto& x : p.b)
+    if (!is_finite_value(x)) {  // NaN or Inf: nothing can be decided
+      opt.stopped = "non-finite coefficient";
+      out.push_back({zero, one, half, true, true});
+      return out;
+    }
   stack.push_back({p, zero, one});
+  long pieces = 0;
   while (!stack.empty()) {
+    if (++pieces > opt.max_pieces || deadline_passed()) {
+      opt.stopped = deadline_passed() ? deadline_reason()
+                                       : "root isolation stopped at its work bound of " + std::to_string(opt.max_pieces) + " pieces";
+      while (!stack.empty()) {  // leftmost first: what is left is unresolved
+        Piece rest = std::move(stack.back());
+        stack.pop_back();
+        if (strict_one_sign(rest.q)) continue;
+        add({rest.a, rest.b, half * (rest.a + rest.b), true, true});
+      }
+      break;
+    }
     Piece pc = std::move(stack.back());
     stack.pop_back();
     if (opt.first_only && !out.empty() && pc.a > out.back().hi) break;  // leftmost root is final
     if (strict_one_sign(pc.q)) continue;
     T w = pc.b - pc.a;
+    if constexpr (has_error_bound_v<T>) {
+      // Every coefficient within its error bound of 0: the polynomial is noise
+      // here, and subdivision cannot make the bound smaller; a cluster (its
+      // signs are uncertain to the caller).
+      bool all_uncertain = true;
+      for (const auto& x : pc.q.b) all_uncertain = all_uncertain && sign(x) == Sign::uncertain;
+      if (all_uncertain) { add({pc.a, pc.b, point_of(T(half * (pc.a + pc.b))), true}); continue; }
+    }
     Sign sa = sign(pc.q.b.front()), sb = sign(pc.q.b.back());
-    if (pc.q.sign_variations() == 1 && sa != Sign::zero && sb != Sign::zero && sa != sb) {
+    bool all_sure = true;  // Descartes' rule needs every coefficient's sign (a running error bound may leave some uncertain)
+    for (const auto& x : pc.q.b) all_sure = all_sure && sign(x) != Sign::uncertain;
+    if (all_sure && pc.q.sign_variations() == 1 && sa != Sign::zero && sb != Sign::zero && sa != sb) {
       // exactly one simple root: Illinois (modified regula falsi), which
       // converges superlinearly, down to the working precision
       T lo = zero, hi = one, flo = pc.q.b.front(), fhi = pc.q.b.back();
       int side = 0;
       for (int it = 0; it < 4 * opt.precision_bits && hi - lo > simple_width; ++it) {
         T den = fhi - flo;
-        T x = (lo * fhi - hi * flo) / den;
-        if (!(x > lo && x < hi)) x = half * (lo + hi);
+        T x = point_of(T((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
+        if (!(x > lo && x < hi)) x = point_of(T(half * (lo + hi)));
         T fx = pc.q(x);
-        Sign sx = sign(fx);
+        // The root is proved to be in the piece; where the bound leaves fx's sign
+        // uncertain, its location is refined by the value's sign (best effort, as plain T).
+        Sign sx = value_sign(fx);
+        if (sx == Sign::uncertain) break;
         if (sx == Sign::zero) { lo = x; hi = x; break; }
         if (sx == sa) {
           lo = x; flo = fx;
@@ -108,13 +153,13 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
           side = 1;
         }
       }
-      T rlo = pc.a + w * lo, rhi = pc.a + w * hi;
-      add({rlo, rhi, half * (rlo + rhi), false});
+      T rlo = point_of(T(pc.a + w * lo)), rhi = point_of(T(pc.a + w * hi));
+      add({rlo, rhi, point_of(T(half * (rlo + rhi))), false});
     } else if (!(w > cluster_width)) {
       add({pc.a, pc.b, half * (pc.a + pc.b), true});
     } else {
       auto [l, r] = split(pc.q, half);
-      T m = half * (pc.a + pc.b);
+      T m = point_of(T(half * (pc.a + pc.b)));
       stack.push_back({std::move(r), m, pc.b});
       stack.push_back({std::move(l), pc.a, m});
     }

@@ -105,12 +105,19 @@
 // and compiles with mpq_class. N >= 1.
 // Known failure modes: those listed above; cost sampling O(N · Sturm of a
 // quartic), marching O(N · (deg_t F)² + N²).
+// Termination (issue 14): g is scaled by a power of two first (a non-finite
+// coefficient: undecided on [0, 1] with the reason); at most kBaselineWork
+// status tests (sampling) or values of F (marching) per run, and the run's
+// deadline (kernel/budget.hpp) is asked per sample or row. When either is hit,
+// the rest of [0, 1] is one undecided cell ending in an undecided instant 1.
 #include "floating/double_traits.hpp"
 #include "floating/mpfr_real.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/collision_timeline.hpp"
+#include "floating/pow2_scaling.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/ellipsoid_function.hpp"
 #include "kernel/prepared_scene.hpp"
@@ -157,6 +164,29 @@ inline Status cell_between_samples(Status l, Status r) {
   return l == r ? l : Status::overlapping;  // both in collision
 }
 
+// Floating: g scaled by a power of two (floating/pow2_scaling.hpp); "" or why nothing can be decided.
+template <class T>
+std::string prepare_g(std::vector<Bern<T>>& g) {
+  if constexpr (scalar_traits<T>::is_exact) return {};
+  else {
+    if (!normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.b) f(x); }))
+      return "overflow: a non-finite coefficient of f (g_k)";
+    return {};
+  }
+}
+
+// The rest of [0, 1] from the last observed instant `from` is undecided (work bound or deadline).
+template <class T>
+void rest_undecided(std::vector<TimelineNode>& seq, CdDiscResult<T>& res, const T& from, const T& like, const std::string& why) {
+  T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  seq.push_back({cell_instant(from, one, like), Status::uncertain, true});
+  seq.push_back({uncertified_instant(one), Status::uncertain, false});
+  res.undecided_reasons.push_back(why);
+}
+
+// Work bound of the baselines: status tests (sampling) or values of F (marching) per run.
+constexpr long kBaselineWork = 50'000'000;
+
 inline void check_grid(int n) {
   if (n < 1) throw std::invalid_argument("baseline grid size N must be at least 1, got " + std::to_string(n));
 }
@@ -168,15 +198,25 @@ CdDiscResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int N
   using namespace baseline_detail;
   check_grid(N);
   auto start = std::chrono::steady_clock::now();
-  CdDiscResult<T> res = result_from_bernstein(g, first_contact_only);
+  std::vector<Bern<T>> gs = g;
+  const std::string trouble = prepare_g(gs);
+  CdDiscResult<T> res = result_from_bernstein(gs, first_contact_only);
+  if (!trouble.empty()) {
+    undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
+    return res;
+  }
 
   std::vector<TimelineNode> seq;
   std::vector<Status> st;  // status of sample k (== seq[2k].status)
   bool seen_collision = false;
   std::optional<T> prev;
   for (int k = 0; k <= N; ++k) {
+    if (prev && (deadline_passed() || k > kBaselineWork)) {
+      rest_undecided(seq, res, *prev, like, deadline_passed() ? deadline_reason() : "sampling stopped at its work bound");
+      break;
+    }
     T t = grid_value(k, N, like);
-    Status s = quartic_status_at(g, t);
+    Status s = quartic_status_at(gs, t);
     if (k == 0) res.status_at_0 = s;
     res.cells.push_back({uncertified_instant(t), s});
     if (prev) seq.push_back({cell_instant(*prev, t, like), cell_between_samples(st.back(), s), true});
@@ -204,8 +244,14 @@ CdDiscResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int N
   using namespace baseline_detail;
   check_grid(N);
   auto start = std::chrono::steady_clock::now();
-  CdDiscResult<T> res = result_from_bernstein(g, first_contact_only);
-  const BiBern<T> F = ellipsoid_function(g, like);
+  std::vector<Bern<T>> gs = g;
+  const std::string trouble = prepare_g(gs);
+  CdDiscResult<T> res = result_from_bernstein(gs, first_contact_only);
+  if (!trouble.empty()) {
+    undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
+    return res;
+  }
+  const BiBern<T> F = ellipsoid_function(gs, like);
 
   std::vector<T> u;
   for (int i = 0; i <= N; ++i) u.push_back(grid_value(i, N, like));
@@ -244,7 +290,13 @@ CdDiscResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int N
   seq.push_back({uncertified_instant(t0), s0, false});
   bool seen_collision = in_collision(s0);
   int last_critical_row = -1;
+  long work = long(N) + 1;
   for (int j = 0; j < N; ++j) {
+    work += long(N) + 1;
+    if (deadline_passed() || work > kBaselineWork) {
+      rest_undecided(seq, res, t0, like, deadline_passed() ? deadline_reason() : "marching stopped at its work bound of " + std::to_string(kBaselineWork) + " values of F");
+      break;
+    }
     T t1 = grid_value(j + 1, N, like);
     std::vector<T> v1 = row_values(t1);
     Status s1 = row_status(v1);

@@ -12,13 +12,25 @@
 //                     plain convolutions (003's Variant 1).
 // Signs at a root are the signs of the computed values at the root's
 // approximation: nothing here is certified.
+// Scaling and termination (issue 14): g_0..g_N are scaled by a power of two
+// so that the largest coefficient has exponent 0 (floating/pow2_scaling.hpp;
+// exact, changes no root and no sign; Δ, P, D and the subresultant
+// coefficients built from them then stay in range: products of a few values
+// below 1 with binomial weights). A non-finite value sets `trouble` (the
+// pipeline then answers undecided on [0, 1] with it). Root isolation has a
+// work bound and asks the deadline (floating/bernstein_roots.hpp); a root
+// cluster it could not resolve has uncertain signs, so its instant is
+// undecided, and the reason is kept in `notes`.
 // Requirements on T: scalar_traits<T> with is_exact == false.
 #include "floating/bernstein_roots.hpp"
+#include "floating/pow2_scaling.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/scaled_bernstein.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <type_traits>
 #include <string>
 
 namespace eccd {
@@ -46,12 +58,30 @@ struct FloatingPolicy {
   Basis basis = Basis::bernstein;
   int bits = 53;
   T like;
+  long max_pieces = 20000;               // root isolation work bound (per polynomial)
+  mutable std::string trouble;           // "" or why nothing can be decided (a non-finite value)
+  mutable std::vector<std::string> notes;  // why parts were left undecided (work bound, deadline)
 
   FloatingPolicy(Basis b, int precision_bits, const T& like_value) : basis(b), bits(precision_bits), like(like_value) {}
 
   // formula(G) with G = {g_0, ..., g_N} in the ring of the basis; the result in Bernstein form.
   template <class F>
   Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
+    // Not rescaled: g is (normalise_g), so Δ and the others stay in range, and
+    // the harness measures these coefficients against exact ones unscaled.
+    Bern<T> out = build_raw(g, formula);
+    if (!all_finite(out.b) && trouble.empty())
+      trouble = "overflow: a non-finite coefficient in a polynomial built from f (Δ, P, D or a subresultant)";
+    return out;
+  }
+  // Scales g_0..g_N by one power of two (the caller's first step); false if not finite.
+  bool normalise_g(std::vector<Poly<T>>& g) const {
+    bool ok = normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.c) f(x); });
+    if (!ok && trouble.empty()) trouble = "overflow: a non-finite coefficient of f (g_k)";
+    return ok;
+  }
+  template <class F>
+  Bern<T> build_raw(const std::vector<Poly<T>>& g, F formula) const {
     if (basis == Basis::power) {
       Poly<T> r = formula(g);
       Bern<T> out = to_bernstein(r, std::max(r.degree(), 0));
@@ -80,22 +110,41 @@ struct FloatingPolicy {
     BernsteinRootOptions<T> o;
     o.precision_bits = bits;
     o.first_only = first_only;
-    return bernstein_roots(q, o);
+    // Work bound: about 1e8 coefficient operations in double, 2e6 in MPFR (each de Casteljau split is O(n^2)).
+    const double ops = (std::is_same_v<T, double> || std::is_same_v<T, Bounded<double>>) ? 1e8 : 2e6;
+    const double n1 = double(q.b.size());
+    o.max_pieces = std::clamp(long(ops / (n1 * n1)), 64L, max_pieces);
+    auto r = bernstein_roots(q, o);
+    if (!o.stopped.empty()) notes.push_back(o.stopped);
+    return r;
   }
-  Sign sign_at(const Bern<T>& q, const Root& r) const { return eccd::sign(q(r.value)); }
+  // With a running error bound (floating/running_error.hpp) a cluster is a
+  // place where Δ's sign is unknown: there may be a double root (a touch),
+  // two close roots or none, so nothing is claimed there.
+  Sign sign_at(const Bern<T>& q, const Root& r) const {
+    if (unknown_inside(r)) return Sign::uncertain;
+    return eccd::sign(q(r.value));
+  }
   Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
   T sample_between(const Root* l, const Root* r) const {
     T a = l ? l->hi : scalar_traits<T>::from_rational(mpq_class(0), like);
     T b = r ? r->lo : scalar_traits<T>::from_rational(mpq_class(1), like);
     T s = a + b;
-    return scalar_traits<T>::from_rational(mpq_class(1, 2), like) * s;
+    return point_of(T(scalar_traits<T>::from_rational(mpq_class(1, 2), like) * s));
   }
   Instant instant_at(const T& t) const { return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt}; }
   Instant instant(const Root& r) const { return instant_at(r.value); }
   T value(const Root& r) const { return r.value; }
   int multiplicity(const Root& r) const { return r.cluster ? 2 : 1; }
-  bool at_zero(const Root& r) const { return !(r.lo > scalar_traits<T>::from_rational(mpq_class(0), like)); }
-  bool at_one(const Root& r) const { return !(r.hi < scalar_traits<T>::from_rational(mpq_class(1), like)); }
+  // An unresolved stretch is at an end only if it is all there (else it is interior, with uncertain status).
+  // With a running error bound so is a cluster (nothing is known inside it).
+  bool unknown_inside(const Root& r) const { return r.unresolved || (has_error_bound_v<T> && r.cluster); }
+  bool at_zero(const Root& r) const {
+    return !((unknown_inside(r) ? r.hi : r.lo) > scalar_traits<T>::from_rational(mpq_class(0), like));
+  }
+  bool at_one(const Root& r) const {
+    return !((unknown_inside(r) ? r.lo : r.hi) < scalar_traits<T>::from_rational(mpq_class(1), like));
+  }
 };
 
 }  // namespace eccd

@@ -37,12 +37,22 @@
 // root of F_u) whose Bernstein coefficients of F(u*, .) on [a, b] are all
 // positive. Near a contact instant no such certificate exists; the exact
 // pipeline decides those instants by projection (kernel/ccd_projection.hpp).
+// Termination and honesty (issue 14): g is scaled by a power of two first
+// and a non-finite coefficient or control point makes [0, 1] undecided with
+// the reason; when the subdivision cap (max_subdivisions) or the run's
+// deadline is hit, every gap not yet resolved is an undecided cell (never a
+// guess), and shots stop at the deadline. With a running error bound
+// (T = Bounded<U>, floating/running_error.hpp) static tests decide by signs
+// sure under the bound (else uncertain), misses of a shot are proofs, and a
+// touch found by two shots meeting is reported uncertain (a tangency cannot
+// be told from a near-miss in rounded arithmetic).
 // Requirements on T: an ordered field with scalar_traits<T>. Shooting and the
 // Gaussian test need rounded T (the test's angles are compared in double).
 // Cost: the inner loops (static tests, shooting, Gaussian test) restrict and
 // subdivide F in place and use the constants 0, 1, 1/2 made once per run
 // (zero_, one_, half_) instead of converting rationals each time.
 #include "floating/bernstein_roots.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/collision_timeline.hpp"
@@ -119,7 +129,9 @@ Peak<U> bern_argmax(const Bern<U>& f, int bits, const U& u0, const U& u1) {
   if (v1 > best.value) best = {u1, v1};
   BernsteinRootOptions<U> ro;
   ro.precision_bits = bits;
-  for (const auto& r : bernstein_roots(derivative(f), ro)) {
+  Bern<U> df = derivative(f);
+  for (auto& x : df.b) x = point_of(x);  // where the peak is: a witness u, located as plain U would (no claim)
+  for (const auto& r : bernstein_roots(df, ro)) {
     U v = f(r.value);
     if (v > best.value) best = {r.value, v};
   }
@@ -191,14 +203,18 @@ class BezierZeroSet {
     eps_t_ = pow2(-(bits * 3 / 4));
     // Contacts closer than this are one tangential touch, and no interval is
     // split below it: a double root's instant is known to ~sqrt(eps) at best,
-    // and shooting converges only linearly onto a tangency.
-    touch_tol_ = pow2(-std::min(bits / 2, 30));
+    // and shooting converges only linearly onto a tangency. It follows the
+    // precision all the way (2^-(p/2); no fixed cap: a near-miss at 1e-14 is
+    // not a touch at 4096 bits); where subdivision reaches its depth limit
+    // before that, the instant is reported uncertain, not as a touch.
+    touch_tol_ = pow2(-(bits / 2));
     noise_ = pow2(-(bits - 8));
   }
 
   const BiBern<T>& F() const { return F_; }
   long shots = 0, shot_iterations = 0, subdivisions = 0, gauss_tests = 0, gauss_passed = 0, overlap_certificates = 0,
        overlap_unverified = 0;
+  std::string stopped;  // "" or why part of [0, 1] was left undecided (work bound, deadline)
 
   // argmax of F(., t0) on [0, 1] and the value there.
   Peak peak(const T& t0) const { return argmax(ellipsoid_function_at(F_, t0)); }
@@ -210,6 +226,17 @@ class BezierZeroSet {
     } else {
       Bern<T> f = ellipsoid_function_at(F_, t0);
       Peak p = argmax(f);
+      if constexpr (has_error_bound_v<T>) {
+        // With a running error bound the sign of the peak decides, or nothing does.
+        // A peak value that is not certainly positive may still hide a separating u
+        // elsewhere, so try the control points: all certainly negative = overlap.
+        Sign s = sign(p.value);
+        if (s == Sign::positive) return Status::separate;
+        bool all_negative = true;
+        for (const auto& x : f.b) all_negative = all_negative && sign(x) == Sign::negative;
+        if (all_negative || s == Sign::negative) return Status::overlapping;
+        return Status::uncertain;
+      }
       // A peak within rounding noise of 0 (relative to F(., t0)'s coefficients) is a touch as far
       // as this arithmetic can tell.
       T scale = zero_;
@@ -268,6 +295,7 @@ class BezierZeroSet {
     ++shots;
     T t = from;
     for (int it = 0; it < opt_.max_shots; ++it) {
+      if (deadline_passed()) return {ShotKind::inconclusive, t};
       ++shot_iterations;
       Peak p = peak(t);
       if (!(p.value > zero_)) return {ShotKind::converged, t};
@@ -283,10 +311,15 @@ class BezierZeroSet {
       // would make the subdivision explore an exponential number of pieces).
       ro.precision_bits = std::min(bits_, 56);
       ro.first_only = true;
-      auto roots = bernstein_roots(G, ro);
+      ro.max_pieces = 2000;
+      // The hit is located as plain T would locate it (a lower bound of the
+      // contact, refined by the next shot); only the miss above is a claim.
+      Bern<T> Gv = G;
+      for (auto& x : Gv.b) x = point_of(x);
+      auto roots = bernstein_roots(Gv, ro);
       if (roots.empty()) return {ShotKind::miss, to};
       T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
-      T tn = t + s * (to - t);
+      T tn = point_of(T(t + s * (to - t)));  // an evaluation point (floating/running_error.hpp)
       T step = tn - t;
       if (sign(step) == Sign::negative) step = -step;
       t = tn;
@@ -401,7 +434,7 @@ class BezierZeroSet {
     }
     return false;
   }
-  T mid(const T& a, const T& b) const { return half_ * (a + b); }
+  T mid(const T& a, const T& b) const { return point_of(T(half_ * (a + b))); }
 
   // Fills the open interval (a, b) between two decided instants.
   void resolve(const T& a, Status sa, const T& b, Status sb, int depth) {
@@ -412,8 +445,17 @@ class BezierZeroSet {
       push_cell(a, b, Status::uncertain);
       return;
     } else {
+      // Out of work (the run's subdivision cap or its deadline): this gap is
+      // undecided, with the reason; never guessed (issue 14).
+      if (subdivisions >= opt_.max_subdivisions || deadline_passed()) {
+        if (stopped.empty())
+          stopped = deadline_passed() ? deadline_reason()
+                                      : "Bezier subdivision stopped at its work bound of " + std::to_string(opt_.max_subdivisions) + " subdivisions";
+        push_cell(a, b, Status::uncertain);
+        return;
+      }
       const bool sepa = sa == Status::separate, sepb = sb == Status::separate;
-      const bool at_limit = depth >= opt_.max_depth || !(b - a > touch_tol_) || subdivisions >= opt_.max_subdivisions;
+      const bool at_limit = depth >= opt_.max_depth || !(b - a > touch_tol_);
       if ((sa == Status::touching && sepb) || (sepa && sb == Status::touching)) {
         // A sample at a touch: separate up to it if shooting from the separate end reaches it.
         Shot s = sepb ? shoot(b, a) : shoot(a, b);
@@ -435,7 +477,8 @@ class BezierZeroSet {
         if (!(gap > touch_tol_)) {  // both shots met: a tangential touch
           T c = mid(f.t, k.t);
           push_cell(a, c, Status::separate);
-          push_instant(c, Status::touching);
+          // With a running error bound a tangency is never sure (it may be a near-miss): undecided.
+          push_instant(c, has_error_bound_v<T> ? Status::uncertain : Status::touching);
           push_cell(c, b, Status::separate);
           return;
         }
@@ -495,8 +538,30 @@ class BezierZeroSet {
 template <class T>
 CdDiscResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bits, BezierOptions opt = {}) {
   auto start = std::chrono::steady_clock::now();
-  CdDiscResult<T> res = result_from_bernstein(g, opt.first_contact_only);
-  BezierZeroSet<T> z(g, like, bits, opt);
+  std::vector<Bern<T>> gs = g;
+  std::string trouble;
+  if constexpr (!scalar_traits<T>::is_exact) {  // scaled by a power of two; non-finite: nothing to decide
+    if (!normalise_pow2<T>([&](auto f) { for (auto& gi : gs) for (auto& x : gi.b) f(x); }))
+      trouble = "overflow: a non-finite coefficient of f (g_k)";
+  }
+  CdDiscResult<T> res = result_from_bernstein(gs, opt.first_contact_only);
+  if (!trouble.empty()) {
+    Instant i0{"0", std::nullopt, std::nullopt}, i1{"1", std::nullopt, std::nullopt};
+    undecided_everywhere(res, i0, i1, trouble);
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return res;
+  }
+  BezierZeroSet<T> z(gs, like, bits, opt);
+  if constexpr (!scalar_traits<T>::is_exact) {
+    bool finite = true;
+    for (const auto& row : z.F().b) for (const auto& x : row) finite = finite && is_finite_value(x);
+    if (!finite) {
+      Instant i0{"0", std::nullopt, std::nullopt}, i1{"1", std::nullopt, std::nullopt};
+      undecided_everywhere(res, i0, i1, "overflow: a non-finite control point of F(u, t)");
+      res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return res;
+    }
+  }
   std::vector<TimelineNode> seq = z.run();
   res.status_at_0 = seq.front().status;
   res.delta_degree = z.F().degree_t();
@@ -510,6 +575,9 @@ CdDiscResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bit
   res.counters = {{"shots", z.shots}, {"shot_iterations", z.shot_iterations}, {"subdivisions", z.subdivisions},
                   {"gauss_tests", z.gauss_tests}, {"gauss_passed", z.gauss_passed}, {"overlap_certificates", z.overlap_certificates},
                   {"overlap_unverified", z.overlap_unverified}};
+  if (!z.stopped.empty()) res.undecided_reasons.push_back(z.stopped);
+  if (!res.answer.undecided.empty() && res.undecided_reasons.empty())
+    res.undecided_reasons.push_back("a status or contact the Bezier method could not resolve in this arithmetic");
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }

@@ -51,10 +51,20 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
   CdDiscResult<T> res;
   res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
   res.g = characteristic_of(pair);
+  policy_hooks::normalise_g(pol, res.g);  // floating: scaled by a power of two (kernel/cd_disc.hpp)
   const auto& g = res.g;
   const T& like = pair.qa[0][0];
   const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
   const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  auto finish = [&]() {
+    collect_reasons(res, pol);
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return res;
+  };
+  if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
+    undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
+    return finish();
+  }
   auto status_at = [&](const T& t) { return quartic_status_at(g, t); };
   res.status_at_0 = status_at(zero);
 
@@ -71,6 +81,10 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
   int k = 0;
   while (pol.identically_zero(proj) && k < 3) { ++k; proj = s(k, k); }
   if (pol.identically_zero(proj)) throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
+  if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
+    undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
+    return finish();
+  }
   res.projection_index = k;
   res.delta_degree = proj.degree();
   res.delta_identically_zero = k > 0;
@@ -123,8 +137,7 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
     if (node_root[n]) res.critical.push_back({seq[n].t, seq[n].status, pol.multiplicity(*node_root[n])});
   assemble_answer(seq, res.answer, [](std::size_t) {});
   if (first_contact_only && res.answer.intervals.size() > 1) res.answer.intervals.resize(1);
-  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return res;
+  return finish();
 }
 
 }  // namespace eccd

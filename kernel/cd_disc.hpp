@@ -39,6 +39,7 @@
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -62,8 +63,58 @@ struct CdDiscResult {
   std::vector<Cell> cells;
   std::vector<TimelineNode> timeline;  // instant, cell, ..., instant (kernel/collision_timeline.hpp)
   std::vector<std::pair<std::string, long>> counters;  // work done (method-specific)
+  std::vector<std::string> undecided_reasons;  // floating: why the undecided instants are undecided
   double seconds = 0;
 };
+
+// Hooks of floating policies (issue 14): scaling of g by a power of two,
+// non-finite values ("trouble": nothing can be decided) and notes on parts
+// left undecided (work bound, deadline). Exact and interval policies have
+// none of them, and these do nothing for them.
+namespace policy_hooks {
+template <class Policy, class G>
+void normalise_g(const Policy& pol, G& g) {
+  if constexpr (requires { pol.normalise_g(g); }) pol.normalise_g(g);
+}
+template <class Policy>
+std::string trouble(const Policy& pol) {
+  if constexpr (requires { pol.trouble; }) return pol.trouble;
+  else return {};
+}
+template <class Policy>
+std::vector<std::string> notes(const Policy& pol) {
+  if constexpr (requires { pol.notes; }) return pol.notes;
+  else return {};
+}
+template <class Root>
+bool unresolved(const Root& r) {
+  if constexpr (requires { r.unresolved; }) return r.unresolved;
+  else return false;
+}
+}  // namespace policy_hooks
+
+// Nothing can be decided (a non-finite value): the whole of [0, 1] is
+// undecided, with the reason; never a confident answer.
+template <class T>
+void undecided_everywhere(CdDiscResult<T>& res, const Instant& i0, const Instant& i1, const std::string& reason) {
+  res.answer = Answer{};
+  res.answer.collides = false;
+  res.answer.undecided = {i0, i1};
+  res.status_at_0 = Status::uncertain;
+  res.timeline = {{i0, Status::uncertain, false}, {i0, Status::uncertain, true}, {i1, Status::uncertain, false}};
+  res.cells = {{i0, Status::uncertain}};
+  res.undecided_reasons.push_back(reason);
+}
+
+// The reasons a floating policy gave, once each, if anything is undecided.
+template <class T, class Policy>
+void collect_reasons(CdDiscResult<T>& res, const Policy& pol) {
+  if (res.answer.undecided.empty()) return;
+  for (const auto& n : policy_hooks::notes(pol))
+    if (std::find(res.undecided_reasons.begin(), res.undecided_reasons.end(), n) == res.undecided_reasons.end())
+      res.undecided_reasons.push_back(n);
+  if (res.undecided_reasons.empty()) res.undecided_reasons.push_back("a sign too close to zero to decide in this arithmetic");
+}
 
 // The start of a 3D result from g_0..g_4 in Bernstein form: variant, and g in power form for reporting.
 template <class T>
@@ -121,10 +172,20 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   const PolyMatrix<T, 3> A = moving_quadric<T, 3>(pair.qa, pair.na);
   const PolyMatrix<T, 3> B = moving_quadric<T, 3>(pair.qb, pair.nb);
   res.g = characteristic_coefficients<T, 3>(A, B);
+  policy_hooks::normalise_g(pol, res.g);
   const auto& g = res.g;
   const T& like = pair.qa[0][0];
   const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
   const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
+  auto finish = [&]() {
+    collect_reasons(res, pol);
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return res;
+  };
+  if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
+    undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
+    return finish();
+  }
 
   auto status_at = [&](const T& t) { return cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t)); };
   res.status_at_0 = status_at(zero);
@@ -139,11 +200,10 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   res.delta_degree = delta.degree();
   Answer& ans = res.answer;
   const Instant i0 = pol.instant_at(zero), i1 = pol.instant_at(one);
-
-  auto finish = [&]() {
-    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return res;
-  };
+  if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
+    undecided_everywhere(res, i0, i1, why);
+    return finish();
+  }
 
   if (pol.identically_zero(delta)) {
     res.delta_identically_zero = true;
@@ -177,6 +237,12 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   }
   auto rts = pol.roots(delta, first_only);
   if (first_only) {
+    if (!rts.empty() && policy_hooks::unresolved(rts.front())) {  // the first root is not known: undecided from there
+      ans.collides = false;
+      ans.undecided.push_back(pol.instant(rts.front()));
+      res.critical.push_back({pol.instant(rts.front()), Status::uncertain, 0});
+      return finish();
+    }
     ans.collides = !rts.empty();
     if (!rts.empty()) ans.first_contact = pol.instant(rts.front());
     for (auto& r : rts) res.critical.push_back({pol.instant(r), Status::touching, 0});

@@ -54,7 +54,7 @@ std::vector<Poly<T>> characteristic_of(const MovingPair<T, N>& p) {
 template <class T, int N>
 std::vector<Bern<T>> characteristic_of(const MovingPairBern<T, N>& p) {
   Bern<T> zero;
-  zero.b.push_back(p.qa[0][0] - p.qa[0][0]);
+  zero.b.push_back(scalar_traits<T>::from_rational(mpq_class(0), p.qa[0][0]));  // an exact 0 (not x - x, which carries x's error bound)
   auto a = moving_quadric_in<Bern<T>, T, N>(p.qa, p.na, zero);
   auto b = moving_quadric_in<Bern<T>, T, N>(p.qb, p.nb, zero);
   return characteristic_coefficients_in<Bern<T>, N>(a, b, zero);

@@ -15,14 +15,34 @@
 // these same coefficients, rounded to its own arithmetic; all later work
 // (A(t), f, Δ, roots, decisions) is done in that arithmetic, which is what
 // the harness measures. Requirements on T: scalar_traits<T>::from_rational.
+//
+// Input modes (issue 14). This exact preparation is the start of the exact
+// and certified pipelines, and of the floating ones in input mode `prepared`.
+// No user's program works this way, so the floating pipelines' default is
+// `rounded` (floating/rounded_input.hpp): each number of the scene rounded to
+// the arithmetic, and N(t), A(t), f, Δ or F(u,t) computed in it, with power-
+// of-two scaling instead of the exact gcd and integer scaling (so Δ of 003
+// Example 2 has degree 192 there, not 96). Comparing the two modes separates
+// the error of rounding the input from the error of the computation.
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/scene.hpp"
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace eccd {
+
+// Where a floating pipeline starts (see the header prose). Exact arithmetic always starts prepared.
+enum class InputMode { rounded, prepared };
+inline const char* to_string(InputMode m) { return m == InputMode::rounded ? "rounded" : "prepared"; }
+// Throws std::invalid_argument unless s is "rounded" or "prepared".
+inline InputMode parse_input_mode(const std::string& s) {
+  if (s == "rounded") return InputMode::rounded;
+  if (s == "prepared") return InputMode::prepared;
+  throw std::invalid_argument("--input " + s + ": expected rounded or prepared");
+}
 
 template <int N>
 struct PreparedPair {

@@ -24,8 +24,13 @@ TEST_CASE("eccd solve --json on 003 Example 2 prints one JSON object with the sp
     REQUIRE(j.is_object());
     for (const char* k : {"collides", "intervals", "first_contact", "contacts", "time_ms", "delta_degree", "contact_points", "arith"})
       CHECK(j.contains(k));
-    CHECK(j["collides"] == true);
-    CHECK(j["delta_degree"] == 96);
+    // Exact proves a touch at t = 1/2. A floating run with its running error
+    // bound cannot tell a tangency from a near-miss: it finds it or says undecided
+    // (issue 14). In the default input mode (rounded) Δ keeps the adjugate's
+    // factor, degree 192; exact starts from the prepared scene, degree 96.
+    if (std::string(arith) == "exact") CHECK(j["collides"] == true);
+    else CHECK((j["collides"] == true || !j["undecided"].empty()));
+    CHECK(j["delta_degree"] == (std::string(arith) == "exact" ? 96 : 192));
     CHECK(j["arith"] == arith);
     if (std::string(arith) == "exact") {
       REQUIRE(j["intervals"].size() == 1);

@@ -1,0 +1,158 @@
+#pragma once
+// Bounded<T>: a floating value with a running a-priori bound on its absolute
+// error, so that a floating pipeline knows which signs it cannot trust.
+//
+// Statement (issue 14, point 4; Higham, "Accuracy and Stability of Numerical
+// Algorithms", 2nd ed., sections 2.2 and 3.1, the standard model
+// fl(a op b) = (a op b)(1 + δ), |δ| <= u). The value part is computed by
+// exactly the same T operations as plain T, in the same order, so a pipeline
+// run in Bounded<T> gives the plain-T answer wherever it is sure. Beside it a
+// bound e >= |value - exact| is carried, where "exact" is the same formula
+// evaluated exactly on the scene's exact numbers:
+//   input q rounded to x:  e = 0 if x == q, else u|x|   (the input's own rounding)
+//   a ± b:  e = ea + eb + u|a ± b|
+//   a * b:  e = |a| eb + |b| ea + ea eb + u|ab| (+ the smallest subnormal, for underflow)
+//   a / b:  e = (|a| eb + |b| ea) / (|b| (|b| - eb)) + u|a/b|, infinite if |b| <= eb
+// with u = 2^-p the unit roundoff of the result's precision p. The bound
+// itself is computed in E (double for T = double, long double for Mpfr, whose
+// bounds would underflow a double's range above ~1000 bits) and enlarged by a
+// relative 2^-50 at each step, which covers the rounding of the bound's own
+// arithmetic. scalar_traits<Bounded<T>>::sign is Sign::uncertain when
+// |value| <= e (and for NaN): the pipelines' uncertain-sign handling turns
+// that into "undecided" at that instant.
+// Evaluation points (sample instants, a root's approximation, the u of a
+// shot) are points chosen by the pipeline, not approximations of an exact
+// quantity whose error matters: point_of(x) drops their bound, so that a
+// value computed at x is bounded against the exact value at that same x.
+// For Mpfr, |x| enters the bound as its leading 53 bits rounded away from 0
+// (mpfr_get_d_2exp: cheaper than a long double conversion, and >= |x|).
+// Requirements on T: double or Mpfr. Cost: see the report of issue 14.
+#include "floating/double_traits.hpp"
+#include "floating/mpfr_real.hpp"
+#include "floating/pow2_scaling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace eccd {
+
+template <class T>
+class Bounded {
+ public:
+  using E = std::conditional_t<std::is_same_v<T, double>, double, long double>;
+
+  Bounded() : v_(T(0)), e_(0) {}
+  Bounded(int k) : v_(T(k)), e_(0) {}  // NOLINT: small exact constants, as T(3) in templated code
+  Bounded(long k) : v_(T(k)), e_(0) {}  // NOLINT
+  Bounded(T v, E e) : v_(std::move(v)), e_(e) {}
+
+  const T& value() const { return v_; }
+  E bound() const { return e_; }
+
+  static E mag(const T& x) {
+    if constexpr (std::is_same_v<T, double>) return std::fabs(x);
+    else {  // the leading 53 bits rounded away from 0, then scaled: >= |x|, at any exponent
+      if (mpfr_zero_p(x.get())) return E(0);
+      if (!mpfr_number_p(x.get())) return std::numeric_limits<E>::infinity();
+      long ex = 0;
+      double d = mpfr_get_d_2exp(&ex, x.get(), MPFR_RNDA);
+      return std::ldexp(E(std::fabs(d)), int(std::clamp<long>(ex, -20000, 20000)));
+    }
+  }
+  // The unit roundoff of a result of x's precision.
+  static E unit(const T& x) {
+    if constexpr (std::is_same_v<T, double>) { (void)x; return E(0x1p-53); }
+    else {
+      int p = x.precision() > 0 ? x.precision() : int(Mpfr::kConstBits);
+      return std::ldexp(E(1), -p);
+    }
+  }
+  static E grow(E e) { return e + e * E(0x1p-50); }
+  static E tiny() {
+    if constexpr (std::is_same_v<T, double>) return std::numeric_limits<double>::denorm_min();
+    else return E(0);
+  }
+
+  Bounded& operator+=(const Bounded& o) { v_ += o.v_; e_ = grow(e_ + o.e_ + unit(v_) * mag(v_)); return *this; }
+  Bounded& operator-=(const Bounded& o) { v_ -= o.v_; e_ = grow(e_ + o.e_ + unit(v_) * mag(v_)); return *this; }
+  Bounded& operator*=(const Bounded& o) {
+    E a = mag(v_), b = mag(o.v_);
+    E e = a * o.e_ + b * e_ + e_ * o.e_;
+    v_ *= o.v_;
+    e_ = grow(e + unit(v_) * mag(v_) + tiny());
+    return *this;
+  }
+  Bounded& operator/=(const Bounded& o) {
+    E a = mag(v_), b = mag(o.v_);
+    v_ /= o.v_;
+    if (!(b > o.e_)) e_ = std::numeric_limits<E>::infinity();
+    else e_ = grow((a * o.e_ + b * e_) / (b * (b - o.e_)) + unit(v_) * mag(v_) + tiny());
+    return *this;
+  }
+  Bounded operator-() const { return Bounded(-v_, e_); }
+
+  friend Bounded operator+(Bounded a, const Bounded& b) { a += b; return a; }
+  friend Bounded operator-(Bounded a, const Bounded& b) { a -= b; return a; }
+  friend Bounded operator*(Bounded a, const Bounded& b) { a *= b; return a; }
+  friend Bounded operator/(Bounded a, const Bounded& b) { a /= b; return a; }
+  friend bool operator<(const Bounded& a, const Bounded& b) { return a.v_ < b.v_; }
+  friend bool operator>(const Bounded& a, const Bounded& b) { return a.v_ > b.v_; }
+  friend bool operator<=(const Bounded& a, const Bounded& b) { return a.v_ <= b.v_; }
+  friend bool operator>=(const Bounded& a, const Bounded& b) { return a.v_ >= b.v_; }
+  friend bool operator==(const Bounded& a, const Bounded& b) { return a.v_ == b.v_; }
+  friend bool operator!=(const Bounded& a, const Bounded& b) { return a.v_ != b.v_; }
+
+ private:
+  T v_;
+  E e_;
+};
+
+template <class T> struct is_bounded : std::false_type {};
+template <class T> struct is_bounded<Bounded<T>> : std::true_type {};
+template <class T> inline constexpr bool has_error_bound_v = is_bounded<T>::value;
+
+// An evaluation point: the same value, error bound 0 (see the header prose).
+template <class T> inline T point_of(const T& x) { return x; }
+template <class T> inline Bounded<T> point_of(const Bounded<T>& x) { return Bounded<T>(x.value(), 0); }
+
+// The sign of the value held, ignoring the bound (for best-effort refinement
+// of something already proved, e.g. a simple root's location).
+template <class T> inline Sign value_sign(const T& x) { return sign(x); }
+template <class T> inline Sign value_sign(const Bounded<T>& x) { return sign(x.value()); }
+
+template <class T>
+struct scalar_traits<Bounded<T>> {
+  using B = Bounded<T>;
+  static constexpr bool is_exact = false;
+  static Sign sign(const B& x) {
+    Sign s = scalar_traits<T>::sign(x.value());
+    if (s == Sign::uncertain || !(x.bound() == x.bound())) return Sign::uncertain;
+    if (x.bound() == 0) return s;
+    if (!(B::mag(x.value()) > x.bound())) return Sign::uncertain;
+    return s;
+  }
+  static double to_double(const B& x) { return scalar_traits<T>::to_double(x.value()); }
+  static B from_rational(const mpq_class& q, const B& like) {
+    T v = scalar_traits<T>::from_rational(q, like.value());
+    bool exact;
+    if constexpr (std::is_same_v<T, double>) exact = std::isfinite(v) && mpq_class(v) == q;
+    else exact = mpfr_number_p(v.get()) && mpfr_cmp_q(v.get(), q.get_mpq_t()) == 0;
+    typename B::E e = exact ? 0 : B::grow(B::unit(v) * B::mag(v) + B::tiny());
+    return B(std::move(v), e);
+  }
+  static B abs(const B& x) { return B(scalar_traits<T>::abs(x.value()), x.bound()); }
+  static int precision(const B& x) { return scalar_traits<T>::precision(x.value()); }
+  static std::string to_string(const B& x) { return scalar_traits<T>::to_string(x.value()); }
+};
+
+template <class T> inline bool is_finite_value(const Bounded<T>& x) {
+  return is_finite_value(x.value()) && std::isfinite(x.bound());
+}
+template <class T> inline long binary_exponent(const Bounded<T>& x) { return binary_exponent(x.value()); }
+template <class T> inline Bounded<T> times_pow2(const Bounded<T>& x, long k) {
+  return Bounded<T>(times_pow2(x.value(), k), std::ldexp(x.bound(), int(std::clamp(k, -20000L, 20000L))));
+}
+
+}  // namespace eccd
