@@ -31,12 +31,21 @@ void add_plan_options(CLI::App* s, GeneratePlan& plan) {
   s->add_option("--dims", plan.dims, "Dimensions (2: ellipses, kinematic motions; 3: ellipsoids, euler and affine motions)")
       ->delimiter(',')->capture_default_str()->check(CLI::IsMember({2, 3}));
   s->add_option("--degrees", plan.degrees, "Motion degrees (1..8)")->delimiter(',')->capture_default_str()->check(CLI::Range(1, 8));
-  s->add_option("--families", plan.families, "Families: colliding, free, touch, near-miss")
-      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"colliding", "free", "touch", "near-miss"}));
+  s->add_option("--families", plan.families,
+                "Families: colliding, free, touch, near-miss; overlap (linear translations that just overlap, depth "
+                "10^-e, degree 1), graze (linear translations with an isolated touch, degree 1); decimal (a generic "
+                "scene with every number rounded to --digits significant digits), keyframe (keyframed rigid motions "
+                "with decimal key poses, degrees 2-6)")
+      ->delimiter(',')->capture_default_str()
+      ->check(CLI::IsMember({"colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe"}));
   s->add_option("--motions", plan.motions, "Restrict motions: kinematic (2D), euler, affine (3D); default all")
       ->delimiter(',')->check(CLI::IsMember({"kinematic", "euler", "affine"}));
   s->add_option("--separations", plan.d_exponents, "Near-miss separations as exponents e of d = 10^-e")
       ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 300));
+  s->add_option("--depths", plan.depth_exponents, "Overlap depths as exponents e of 10^-e")
+      ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 300));
+  s->add_option("--digits", plan.digits, "Significant decimal digits of the decimal and keyframe families")
+      ->delimiter(',')->capture_default_str()->check(CLI::Range(1, 30));
 }
 
 Command add_generate_command(CLI::App& app) {
@@ -44,9 +53,11 @@ Command add_generate_command(CLI::App& app) {
   Command c;
   c.sub = app.add_subcommand("generate",
                              "Write seeded, reproducible scene files: rational motions of the given degrees in the families "
-                             "colliding, free (collision-free), touch (touch-and-separate at a constructed instant) and "
-                             "near-miss (minimum separation d = 10^-e, constructed). With --answer each file also stores the exact "
-                             "pipeline's answer.");
+                             "colliding, free (collision-free), touch (touch-and-separate at a constructed instant), "
+                             "near-miss (minimum separation d = 10^-e, constructed), overlap and graze (linear translations "
+                             "that just overlap or touch once), and the realistic-input families decimal and keyframe "
+                             "(numbers written as decimals of 6, 9, 12, 15 significant digits). With --answer each file also "
+                             "stores the exact pipeline's answer.");
   auto* s = c.sub;
   s->add_option("--out", args->out, "Folder to write the scenes into (created if missing)")->required();
   add_plan_options(s, args->plan);

@@ -13,6 +13,7 @@
 #include "app/commands.hpp"
 #include "compare/harness.hpp"
 #include "compare/scene_generator.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/scene_reader.hpp"
 
 #include <sys/mman.h>
@@ -129,19 +130,19 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
   }
   SolveOptions ex;
   ex.arith = parse_arithmetic("exact");
-  std::string exact = answer_kind(solve_scene(s, ex));
+  std::string exact;
+  {
+    ScopedDeadline budget(a.harness.exact_budget_s);
+    exact = answer_kind(solve_scene(s, ex));
+  }
   int h = map->n / 2;
   for (const auto& p : map->pipelines) {
     SolveOptions o;
     auto slash = p.find('/');
     o.arith = parse_arithmetic(p.substr(0, slash));
     o.basis = p.substr(slash + 1);
-    std::string kind;
-    try {
-      kind = answer_kind(solve_scene(s, o));
-    } catch (const std::exception&) {
-      kind = "error";
-    }
+    BoundedRun br = run_bounded(s, o, a.harness.budget_s, a.harness.isolate);
+    std::string kind = br.timed_out ? "undecided" : !br.error.empty() ? "error" : answer_kind(br.got);  // a time-out decides nothing
     out.push_back("M" + p + "," + std::to_string(t.ix) + "," + std::to_string(t.iy) + "," + std::to_string(t.ix - h) + "," +
                   std::to_string(t.iy - h) + "," + kind + "," + exact);
   }
@@ -221,10 +222,13 @@ std::string fmt_duration(double s) {
 // scene keep their pipeline order under a stable sort).
 std::vector<std::string> scene_key(const std::string& line) {
   auto f = split(line, ',');
-  static const std::map<std::string, std::string> fam{{"colliding", "0"}, {"free", "1"}, {"touch", "2"}, {"near-miss", "3"}, {"case", "4"}};
+  static const std::map<std::string, std::string> fam{{"colliding", "0"}, {"free", "1"}, {"touch", "2"}, {"near-miss", "3"},
+                                                       {"overlap", "4"}, {"graze", "5"}, {"decimal", "6"}, {"keyframe", "7"},
+                                                       {"case", "8"}};
   auto pad = [](const std::string& x) { return std::string(8 - std::min<std::size_t>(8, x.size()), '0') + x; };
   std::string d = f.size() > 6 && !f[6].empty() ? pad(f[6].substr(3)) : "";
-  return {f[1], f[2], pad(f[3]), fam.count(f[4]) ? fam.at(f[4]) : f[4], f[5], d, f[0]};
+  std::string digits = f.size() > 27 ? pad(f[27]) : "";  // results_csv_header(): column 28 is digits
+  return {f[1], f[2], pad(f[3]), fam.count(f[4]) ? fam.at(f[4]) : f[4], f[5], d, digits, f[0]};
 }
 void sort_results(std::vector<std::string>& lines) {
   std::stable_sort(lines.begin(), lines.end(), [](const std::string& a, const std::string& b) { return scene_key(a) < scene_key(b); });
@@ -445,6 +449,12 @@ int run_report(const ReportArgs& a) {
   meta["dims"] = a.plan.dims;
   meta["families"] = a.plan.families;
   meta["separations"] = a.plan.d_exponents;
+  meta["overlap_depths"] = a.plan.depth_exponents;
+  meta["digits"] = a.plan.digits;
+  meta["inputs"] = a.harness.inputs;
+  meta["input_modes_in_solver"] = solver_has_input_modes();
+  meta["budget_seconds"] = a.harness.budget_s;
+  meta["exact_budget_seconds"] = a.harness.exact_budget_s;
   meta["count_per_combination"] = a.plan.count;
   meta["grid"] = a.harness.grid;
   std::vector<std::string> labels;
@@ -554,9 +564,11 @@ Command add_report_command(CLI::App& app) {
   c.sub = app.add_subcommand(
       "report",
       "Robustness report: generate seeded scenes (2D and 3D, motion degrees 2-6, families colliding / free / touch / "
-      "near-miss), add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
+      "near-miss, overlap / graze (linear translations, degree 1), and the realistic-input families decimal / keyframe), "
+      "add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
       "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and in "
-      "power form (double), the sampling and marching baselines) against the exact pipeline, and write "
+      "power form (double), the sampling and marching baselines), each floating one per input mode (--input) and under a "
+      "time budget (--budget), against the exact pipeline, and write "
       "reports/NAME/: report.md, results.csv, failure_map.csv, meta.json and PNG figures.");
   auto* s = c.sub;
   s->add_option("--name", a->name, "Report name: the output goes to reports/NAME")->capture_default_str();
@@ -566,6 +578,15 @@ Command add_report_command(CLI::App& app) {
       ->capture_default_str()->check(CLI::Range(0, 100000));
   add_plan_options(s, a->plan);
   s->add_option("--mpfr", a->harness.mpfr_bits, "MPFR precisions in bits")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
+  s->add_option("--input", a->harness.inputs,
+                "Input modes of the floating pipelines, each a row of its own: rounded (the scene's numbers rounded to "
+                "the arithmetic) and prepared (coefficients prepared exactly, then rounded); a solver without input "
+                "modes runs prepared only")
+      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"rounded", "prepared"}));
+  s->add_option("--budget", a->harness.budget_s, "Time budget of one floating pipeline run in seconds (a run that hits it is undecided, reason time budget)")
+      ->capture_default_str()->check(CLI::Range(0.001, 86400.0));
+  s->add_option("--exact-budget", a->harness.exact_budget_s, "Time budget of the exact run of one scene in seconds (exhausted: the scene fails)")
+      ->capture_default_str()->check(CLI::Range(0.001, 864000.0));
   s->add_option("--grid", a->harness.grid, "N of the 3D sampling:N and marching:N baselines")->capture_default_str()->check(CLI::Range(1, 100000));
   s->add_option("--cases", a->cases, "Also run the scene files under this folder (their stored answers are not used: exact is recomputed; scenes written by eccd generate are left out, see --scenes); '' for none")
       ->capture_default_str();

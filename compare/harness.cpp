@@ -10,9 +10,17 @@
 #include "kernel/discriminant.hpp"
 #include "kernel/ellipsoid_function.hpp"
 #include "kernel/motion.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/prepared_scene.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <cerrno>
+#include <csignal>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <sstream>
 
 namespace eccd {
@@ -64,6 +72,14 @@ void coefficients_3d(const Reference3& ref, const PipelineSpec& ps, const T& lik
   row.delta_err = coefficient_error(ellipsoid_function(g, like), ref.F);
 }
 
+// Free text in one CSV field (the CSV has no quoting): no commas, no line breaks, at most 200 characters.
+std::string csv_text(std::string t) {
+  for (char& c : t)
+    if (c == ',' || c == '\n' || c == '\r') c = c == ',' ? ';' : ' ';
+  if (t.size() > 200) t = t.substr(0, 197) + "...";
+  return t;
+}
+
 std::string fmt(double x, const char* f = "%.6g") {
   char b[64];
   std::snprintf(b, sizeof b, f, x);
@@ -86,7 +102,8 @@ SceneInfo scene_info(const Scene& s, const std::string& source) {
     i.family = sp->family;
     i.motion = sp->motion;
     i.degree = sp->degree;
-    i.d_exponent = sp->family == "near-miss" ? sp->d_exponent : 0;
+    i.d_exponent = sp->family == "near-miss" || sp->family == "overlap" ? sp->d_exponent : 0;
+    i.digits = sp->digits;
     i.seed = sp->seed;
   } else {
     i.degree = scene_degree(s);
@@ -94,17 +111,59 @@ SceneInfo scene_info(const Scene& s, const std::string& source) {
   return i;
 }
 
+namespace {
+template <class O>
+constexpr bool has_input_member = requires(O o) { o.input; };
+
+template <class O>
+void set_input(O& o, const std::string& mode) {
+  if constexpr (has_input_member<O>) {
+    using M = decltype(o.input);
+    o.input = mode == "prepared" ? M::prepared : M::rounded;
+  }
+}
+}  // namespace
+
+bool solver_has_input_modes() { return has_input_member<SolveOptions>; }
+
+std::vector<std::string> default_input_modes() {
+  if (solver_has_input_modes()) return {"rounded", "prepared"};
+  return {"prepared"};
+}
+
+void apply_input_mode(SolveOptions& opt, const std::string& mode) {
+  if (mode != "rounded" && mode != "prepared")
+    throw std::invalid_argument("input mode '" + mode + "': expected rounded or prepared");
+  set_input(opt, mode);
+}
+
 std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
   std::vector<PipelineSpec> v;
+  std::vector<std::string> modes;
+  for (const auto& m : o.inputs) {
+    if (m != "rounded" && m != "prepared") throw std::invalid_argument("input mode '" + m + "': expected rounded or prepared");
+    if (!solver_has_input_modes() && m == "rounded") continue;  // this solver always starts from the prepared scene
+    if (std::find(modes.begin(), modes.end(), m) == modes.end()) modes.push_back(m);
+  }
+  if (modes.empty()) modes.push_back("prepared");
+  const bool both = modes.size() > 1;
   auto add = [&](const std::string& arith, const std::string& basis, const std::string& method, const std::string& variant) {
-    PipelineSpec p;
-    p.opt.arith = parse_arithmetic(arith);
-    p.opt.basis = basis;
-    p.opt.method = method;
-    p.basis = arith == "exact" ? "exact" : basis;
-    p.method = arith == "exact" ? (dim == 2 ? "cd-disc" : "projection") : method;
-    p.label = arith == "exact" ? "exact" : arith + "/" + variant;
-    v.push_back(p);
+    for (const auto& mode : modes) {
+      if (arith == "exact" && mode != modes.front()) continue;
+      PipelineSpec p;
+      p.opt.arith = parse_arithmetic(arith);
+      p.opt.basis = basis;
+      p.opt.method = method;
+      p.basis = arith == "exact" ? "exact" : basis;
+      p.method = arith == "exact" ? (dim == 2 ? "cd-disc" : "projection") : method;
+      p.label = arith == "exact" ? "exact" : arith + "/" + variant;
+      p.input = arith == "exact" ? "prepared" : mode;
+      if (arith != "exact") {
+        apply_input_mode(p.opt, mode);
+        if (both && mode == "prepared") p.label += "@prepared";
+      }
+      v.push_back(p);
+    }
   };
   add("exact", "bernstein", "bezier", "");
   if (dim == 2) {
@@ -131,10 +190,104 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
   return v;
 }
 
+BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s, bool isolate) {
+  BoundedRun r;
+  auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  auto in_process = [&](BoundedRun& out) {
+    try {
+      ScopedDeadline budget(budget_s);
+      out.got = solve_scene(s, opt);
+    } catch (const BudgetExhausted& e) {
+      out.timed_out = true;
+      out.reason = std::string("time budget: ") + e.what();
+    } catch (const std::exception& e) {
+      out.error = e.what();
+      out.got = nlohmann::json::object();
+    }
+  };
+  int fds[2];
+  if (!isolate || budget_s <= 0 || pipe(fds) != 0) {
+    in_process(r);
+  } else {
+    std::fflush(nullptr);
+    pid_t pid = fork();
+    if (pid == 0) {  // the child: run, write one JSON line, leave without running the parent's destructors
+      close(fds[0]);
+      BoundedRun c;
+      in_process(c);
+      nlohmann::json msg = {{"got", c.got}, {"timed_out", c.timed_out}, {"error", c.error}, {"reason", c.reason}};
+      std::string text = msg.dump();
+      const char* p = text.data();
+      std::size_t left = text.size();
+      while (left > 0) {
+        ssize_t w = write(fds[1], p, left);
+        if (w <= 0) break;
+        p += w;
+        left -= std::size_t(w);
+      }
+      close(fds[1]);
+      _exit(0);
+    }
+    close(fds[1]);
+    if (pid < 0) {
+      close(fds[0]);
+      in_process(r);
+    } else {
+      std::string text;
+      const double hard = 2 * budget_s + 1;
+      bool killed = false;
+      char buf[65536];
+      while (true) {
+        double left = hard - elapsed();
+        if (left <= 0) { kill(pid, SIGKILL); killed = true; break; }
+        pollfd pf{fds[0], POLLIN, 0};
+        int pr = poll(&pf, 1, int(std::min(left, 1.0) * 1000) + 1);
+        if (pr < 0 && errno == EINTR) continue;
+        if (pr <= 0) continue;
+        ssize_t n = read(fds[0], buf, sizeof buf);
+        if (n <= 0) break;  // end of the child's message
+        text.append(buf, std::size_t(n));
+      }
+      close(fds[0]);
+      int status = 0;
+      waitpid(pid, &status, 0);
+      if (killed) {
+        r.timed_out = true;
+        r.reason = "time budget: " + fmt(budget_s, "%g") + " s; the run did not stop and was killed after " +
+                   fmt(elapsed(), "%.3g") + " s";
+      } else {
+        try {
+          nlohmann::json msg = nlohmann::json::parse(text);
+          r.got = msg["got"];
+          r.timed_out = msg["timed_out"].get<bool>();
+          r.error = msg["error"].get<std::string>();
+          r.reason = msg["reason"].get<std::string>();
+        } catch (const std::exception&) {
+          r.error = "the run's process ended without an answer (status " + std::to_string(status) + ")";
+          r.got = nlohmann::json::object();
+        }
+      }
+    }
+  }
+  r.wall_s = elapsed();
+  if (!r.timed_out && r.error.empty() && budget_s > 0 && r.wall_s > budget_s) {  // came back, but later than its budget
+    r.timed_out = true;
+    r.reason = "time budget: " + fmt(budget_s, "%g") + " s exceeded (the answer after " + fmt(r.wall_s, "%.3g") +
+               " s is not used)";
+  }
+  if (!r.error.empty()) r.reason = r.error;
+  return r;
+}
+
 std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const HarnessOptions& opt) {
   std::vector<ResultRow> rows;
   auto pipes = harness_pipelines(s.dim, opt);
-  nlohmann::json exact = solve_scene(s, pipes[0].opt);  // throws for a scene the exact pipeline refuses
+  nlohmann::json exact;
+  {
+    ScopedDeadline budget(opt.exact_budget_s);  // BudgetExhausted: no ground truth, the scene fails
+    exact = solve_scene(s, pipes[0].opt);       // throws for a scene the exact pipeline refuses
+  }
   Reference2 r2;
   Reference3 r3;
   if (s.dim == 2) {
@@ -156,20 +309,42 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     row.bits = ps.opt.arith.bits;
     row.basis = ps.basis;
     row.method = ps.method;
+    row.input = ps.input;
     nlohmann::json got;
+    bool timed_out = false;
+    double wall = 0;
     if (ps.label == "exact") {
       got = exact;
     } else {
-      try {
-        got = solve_scene(s, ps.opt);
-      } catch (const std::exception& e) {
-        row.error = e.what();
-        got = nlohmann::json::object();
+      BoundedRun br = run_bounded(s, ps.opt, opt.budget_s, opt.isolate);
+      got = std::move(br.got);
+      timed_out = br.timed_out;
+      wall = br.wall_s;
+      row.error = br.error;
+      row.reason = br.reason;
+    }
+    if (timed_out) {
+      row.m = compare_answers(nlohmann::json::object(), exact);
+      row.m.outcome = "undecided";
+      row.time_us = wall * 1e6;
+    } else {
+      row.m = compare_answers(got, exact);
+      if (got.contains("time_ms")) row.time_us = got["time_ms"].get<double>() * 1e3;
+      if (got.contains("input") && got["input"].is_string()) row.input = got["input"].get<std::string>();
+      if (row.m.outcome == "undecided") {
+        // the pipeline's own reasons where it gives them ("why"/"reason" per instant), else where
+        std::string why;
+        for (const auto& u : got["undecided"]) {
+          std::string w = u.is_object() ? u.value("why", u.value("reason", std::string())) : std::string();
+          if (w.empty() && u.is_object() && u.contains("approx")) w = "undecided near t = " + u["approx"].get<std::string>();
+          if (!w.empty() && why.find(w) == std::string::npos) why += (why.empty() ? "" : "; ") + w;
+        }
+        row.reason = why.empty() ? "undecided" : why;
       }
     }
-    row.m = compare_answers(got, exact);
-    if (got.contains("time_ms")) row.time_us = got["time_ms"].get<double>() * 1e3;
-    if (ps.label != "exact") {
+    // Coefficient errors are recomputed from the prepared scene, i.e. for the prepared input mode only (a rounded
+    // row leaves them empty rather than show another mode's numbers).
+    if (ps.label != "exact" && ps.input == "prepared") {
       Basis basis = parse_basis(ps.opt.basis);
       if (ps.opt.arith.kind == Arithmetic::Double) {
         if (s.dim == 2) coefficients_2d<double>(r2, basis, 53, 1.0, row);
@@ -188,7 +363,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
 std::string results_csv_header() {
   return "scene,source,dim,degree,family,motion,d,seed,pipeline,arith,bits,basis,method,coef_err,delta_err,outcome,"
          "collides,exact_collides,intervals,exact_intervals,missed_contacts,false_contacts,first_contact_err,"
-         "endpoint_err,time_us,structure_ok";
+         "endpoint_err,time_us,structure_ok,input,digits,reason";
 }
 
 std::string results_csv_line(const ResultRow& r) {
@@ -196,12 +371,13 @@ std::string results_csv_line(const ResultRow& r) {
   const SceneInfo& s = r.scene;
   auto opt = [](const std::optional<double>& x) { return x ? fmt(*x) : std::string(); };
   o << s.name << "," << s.source << "," << s.dim << "," << s.degree << "," << s.family << "," << s.motion << ","
-    << (s.family == "near-miss" ? separation_label(s.d_exponent) : "") << "," << (s.seed ? std::to_string(*s.seed) : "")
+    << (s.family == "near-miss" || s.family == "overlap" ? separation_label(s.d_exponent) : "") << "," << (s.seed ? std::to_string(*s.seed) : "")
     << "," << r.pipeline << "," << r.arith << "," << r.bits << "," << r.basis << "," << r.method << "," << opt(r.coef_err)
     << "," << opt(r.delta_err) << "," << r.m.outcome << "," << (r.m.collides ? (*r.m.collides ? "1" : "0") : "") << ","
     << (r.m.exact_collides ? 1 : 0) << "," << r.m.intervals << "," << r.m.exact_intervals << "," << r.m.missed_contacts
     << "," << r.m.false_contacts << "," << opt(r.m.first_contact_err) << "," << opt(r.m.endpoint_err) << ","
-    << fmt(r.time_us, "%.1f") << "," << (r.m.structure_ok ? 1 : 0);
+    << fmt(r.time_us, "%.1f") << "," << (r.m.structure_ok ? 1 : 0) << "," << r.input << ","
+    << (s.digits ? std::to_string(s.digits) : "") << "," << csv_text(r.reason);
   return o.str();
 }
 

@@ -19,6 +19,21 @@
 // The coefficients are recomputed by the very functions the pipelines call
 // (characteristic_of, characteristic_bernstein, discriminant_of,
 // ellipsoid_function), in the pipeline's arithmetic.
+// Coefficient errors are measured for the prepared input mode only (they are
+// recomputed from the prepared scene); rounded rows leave them empty.
+// Every run is bounded (issue 14, point 3): each floating run under a
+// ScopedDeadline of `budget_s` (kernel/budget.hpp); a run that hits it, or
+// comes back later than it, is recorded as undecided with the reason "time
+// budget". The exact run has its own, larger budget; when it is exhausted the
+// scene has no ground truth and run_scene throws BudgetExhausted.
+// Input modes (issue 14, point 1): each floating pipeline runs once per mode
+// in `inputs`: "rounded" (the scene's numbers rounded to the arithmetic, as a
+// user's program holds them) and "prepared" (coefficients prepared exactly,
+// then rounded). The row's `input` is what the pipeline's JSON says it used
+// ("input"); a solver without input modes starts from the prepared scene, and
+// then only "prepared" rows are written. Rows of the mode "prepared" carry the
+// label suffix "@prepared" when both modes are run, so that the report can put
+// the error of rounding the input apart from the error of the computation.
 // Requirements: a scene with rational motions (the exact pipeline refuses
 // cycloidal motions, and so does the harness).
 #include "app/solve.hpp"
@@ -35,9 +50,10 @@ struct SceneInfo {
   std::string name;
   std::string source = "generated";  // generated | cases
   int dim = 2, degree = 0;
-  std::string family = "case";       // colliding | free | touch | near-miss | case
-  std::string motion = "case";       // kinematic | euler | affine | case
-  int d_exponent = 0;                // near-miss only
+  std::string family = "case";       // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe | case
+  std::string motion = "case";       // kinematic | euler | affine | translation | case
+  int d_exponent = 0;                // near-miss: separation 10^-e; overlap: depth 10^-e
+  int digits = 0;                    // decimal, keyframe: significant digits of the scene's numbers
   std::optional<std::uint64_t> seed;
 };
 
@@ -47,15 +63,45 @@ SceneInfo scene_info(const Scene& s, const std::string& source);
 int scene_degree(const Scene& s);
 
 struct PipelineSpec {
-  std::string label;  // "double/power", "mpfr:128/bezier", "exact", ...
+  std::string label;  // "double/power", "mpfr:128/bezier", "exact", "double/power@prepared", ...
   SolveOptions opt;
   std::string basis, method;
+  std::string input = "prepared";  // rounded | prepared (exact: prepared)
 };
+
+// Whether app/solve.hpp's SolveOptions has an input mode (`input`, an enum
+// with the values rounded and prepared); if not, floating runs start from the
+// prepared scene.
+bool solver_has_input_modes();
+// The input modes a run uses by default: both where the solver has them.
+std::vector<std::string> default_input_modes();
+// Sets opt's input mode ("rounded" or "prepared"; std::invalid_argument
+// otherwise); a no-op for a solver without input modes.
+void apply_input_mode(SolveOptions& opt, const std::string& mode);
+
+// One floating run under a time budget. With `isolate` the run happens in a
+// forked child process that is killed at 2 x budget + 1 s, so that a pipeline
+// which does not ask the deadline (or is stuck in a library call) still
+// cannot hold up the caller; without it the budget is the ScopedDeadline alone.
+// `timed_out`: the run hit its budget (BudgetExhausted), came back after it,
+// or was killed; `reason` says which. `error`: the exception message of a run
+// that failed otherwise (then `got` is empty).
+struct BoundedRun {
+  nlohmann::json got = nlohmann::json::object();
+  bool timed_out = false;
+  std::string error, reason;
+  double wall_s = 0;
+};
+BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s, bool isolate);
 
 struct HarnessOptions {
   std::vector<int> mpfr_bits{53, 64, 80, 100, 128, 160, 192, 256, 384, 512};
   int grid = 64;               // N of the 3D sampling:N and marching:N baselines
   bool mpfr_power_3d = false;  // also run mpfr:B/bezier-power in 3D
+  std::vector<std::string> inputs = default_input_modes();  // input modes of the floating pipelines
+  double budget_s = 20;         // time budget of one floating run (seconds; <= 0: none)
+  double exact_budget_s = 600;  // time budget of the exact run (ground truth)
+  bool isolate = true;          // each floating run in a child process killed at 2 x budget + 1 s (run_bounded)
 };
 
 std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& opt);
@@ -67,7 +113,9 @@ struct ResultRow {
   std::optional<double> coef_err, delta_err;
   AnswerMetrics m;
   double time_us = 0;
-  std::string error;  // the pipeline's exception message, if any
+  std::string error;   // the pipeline's exception message, if any
+  std::string input;   // rounded | prepared: where the floating run started
+  std::string reason;  // undecided rows: why (time budget, the pipeline's undecided instants); error rows: the message
 };
 
 // Every pipeline on one scene; the exact row first.

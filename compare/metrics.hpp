@@ -33,14 +33,24 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace eccd {
 
-inline mpq_class exact_value(double x) { return mpq_class(x); }
+// A non-finite value (an overflow: ±inf or NaN) has no exact value; GMP would
+// raise SIGFPE on it. It is recorded here and makes the error +inf.
+struct NonFinite {
+  static bool& seen() { thread_local bool s = false; return s; }
+};
+inline mpq_class exact_value(double x) {
+  if (!std::isfinite(x)) { NonFinite::seen() = true; return mpq_class(0); }
+  return mpq_class(x);
+}
 inline mpq_class exact_value(const Mpfr& x) {
+  if (!mpfr_number_p(x.get())) { NonFinite::seen() = true; return mpq_class(0); }
   mpq_class q;
   mpfr_get_q(q.get_mpq_t(), x.get());
   return q;
@@ -48,7 +58,12 @@ inline mpq_class exact_value(const Mpfr& x) {
 inline mpq_class exact_value(const mpq_class& x) { return x; }
 
 // max |approx_i - exact_i| / max |exact_i| (missing entries count as 0).
+// +inf if a value of the approximate list was not finite (see NonFinite).
 inline double normwise_relative_error(const std::vector<mpq_class>& approx, const std::vector<mpq_class>& exact) {
+  if (NonFinite::seen()) {
+    NonFinite::seen() = false;
+    return std::numeric_limits<double>::infinity();
+  }
   mpq_class num = 0, den = 0;
   for (std::size_t i = 0; i < std::max(approx.size(), exact.size()); ++i) {
     mpq_class a = i < approx.size() ? approx[i] : mpq_class(0);

@@ -6,6 +6,7 @@
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/poly_matrix.hpp"
+#include "kernel/scene_reader.hpp"
 #include "kernel/sturm.hpp"
 
 #include <algorithm>
@@ -287,11 +288,20 @@ Motion random_motion(Rng& r, const std::string& kind, int deg, const std::vector
 
 // ---- JSON ------------------------------------------------------------------
 
+thread_local bool g_decimal_output = false;  // set while writing a realistic-input scene (decimal strings)
+std::string number_text(const Rational& x) { return g_decimal_output ? exact_decimal(x) : Rational(x).get_str(); }
+
 nlohmann::ordered_json poly_json(const RPoly& p) {
   nlohmann::ordered_json a = nlohmann::ordered_json::array();
   if (p.is_zero()) a.push_back("0");
-  for (const auto& c : p.c) a.push_back(Rational(c).get_str());
+  for (const auto& c : p.c) a.push_back(number_text(Rational(c)));
   return a;
+}
+// A degree-1 polynomial given by its key values (Bernstein form on [0, 1]).
+nlohmann::ordered_json bern_json(const Rational& c0, const Rational& c1) {
+  nlohmann::ordered_json j;
+  j["bernstein"] = {number_text(c0), number_text(c1)};
+  return j;
 }
 nlohmann::ordered_json motion_json(const Motion& m) {
   nlohmann::ordered_json j;
@@ -320,6 +330,11 @@ nlohmann::ordered_json shape_json(const Vec& alpha) {
   for (auto& a : alpha) j["semi_axes_squared"].push_back(Rational(a).get_str());
   return j;
 }
+nlohmann::ordered_json semi_axes_json(const Vec& axes) {
+  nlohmann::ordered_json j;
+  for (auto& a : axes) j["semi_axes"].push_back(number_text(a));
+  return j;
+}
 
 Vec random_axes(Rng& r, int dim) {
   Vec a;
@@ -335,6 +350,9 @@ struct Built {
   Vec alpha_a, alpha_b;
   Motion ma, mb;
   std::optional<Rational> t0;
+  Vec axes_a, axes_b;  // realistic families: semi-axes (decimals) instead of alpha
+  std::optional<nlohmann::ordered_json> json_a, json_b;  // keyframe: the motion as written (Bernstein key values)
+  std::string base;     // decimal: the family it was rounded from
 };
 
 // colliding / free: independent motions with controlled centre paths.
@@ -449,6 +467,257 @@ Built build_touch(Rng& r, const GeneratorSpec& s) {
   return b;
 }
 
+// ---- realistic input and linear overlap ---------------------------------------
+
+Rational pow10(int e) {
+  mpz_class t = 1;
+  for (int i = 0; i < std::abs(e); ++i) t *= 10;
+  return e >= 0 ? Rational(t) : Rational(mpz_class(1), t);
+}
+
+// A "real-valued" number picked by the seed, written with `digits` significant digits.
+Rational decimal_in(Rng& r, double lo, double hi, int digits) {
+  double u = double(r.next() >> 11) / double(1ULL << 53);
+  return round_significant(Rational(lo + (hi - lo) * u), digits);
+}
+
+// sqrt(a) for a > 0, to ~digits + 3 decimals (a choice of number, checked by nobody).
+Rational sqrt_approx(const Rational& a, int digits) {
+  int m = digits + 6;
+  mpz_class num = a.get_num() * mpz_class(pow10(2 * m).get_num()), root;
+  num /= a.get_den();
+  mpz_sqrt(root.get_mpz_t(), num.get_mpz_t());
+  return Rational(root) / pow10(m);
+}
+
+// Each non-zero coefficient times (1 + j), |j| <= 10^-3 picked by the seed (the
+// generator's numbers have short denominators; a measured value has all its
+// digits), then rounded to `digits` significant digits. Zeros stay zero.
+RPoly round_poly(Rng& r, const RPoly& p, int digits) {
+  std::vector<Rational> c;
+  for (const auto& x : p.c) {
+    Rational j = r.frac(-1000000, 1000000, 1000000000);
+    c.push_back(round_significant(Rational(x) * (1 + j), digits));
+  }
+  return RPoly(c);
+}
+Motion round_motion(Rng& rng, const Motion& m, int digits) {
+  auto rp = [&](const RPoly& p) { return round_poly(rng, p, digits); };
+  if (auto* k = std::get_if<KinematicMotion>(&m)) {
+    KinematicMotion r;
+    for (int i = 0; i < 4; ++i) r.d[i] = rp(k->d[i]);
+    return r;
+  }
+  if (auto* e = std::get_if<EulerMotion>(&m)) {
+    EulerMotion r;
+    for (int i = 0; i < 4; ++i) r.e[i] = rp(e->e[i]);
+    for (int i = 0; i < 3; ++i) r.v[i] = rp(e->v[i]);
+    r.v3 = e->v3;  // the translation denominator stays 1
+    return r;
+  }
+  if (auto* mm = std::get_if<MatrixMotion>(&m)) {
+    MatrixMotion r = *mm;
+    for (auto& row : r.m)
+      for (auto& x : row) x = rp(x);
+    return r;
+  }
+  return m;
+}
+
+Built build_touch(Rng& r, const GeneratorSpec& s);
+Built build_random(Rng& r, const GeneratorSpec& s);
+
+// decimal: a generic scene, every number rounded to `digits` significant digits.
+Built build_decimal(Rng& r, const GeneratorSpec& s) {
+  GeneratorSpec base = s;
+  static const char* bases[] = {"colliding", "free", "touch"};
+  base.family = bases[r.uniform(0, s.degree >= 2 ? 2 : 1)];
+  Built b = base.family == "touch" ? build_touch(r, base) : build_random(r, base);
+  b.base = base.family;
+  b.t0.reset();
+  b.ma = round_motion(r, b.ma, s.digits);
+  b.mb = round_motion(r, b.mb, s.digits);
+  auto axis = [&](const Rational& a) {
+    return round_significant(sqrt_approx(a, s.digits) * (1 + r.frac(-1000000, 1000000, 1000000000)), s.digits);
+  };
+  for (auto& a : b.alpha_a) b.axes_a.push_back(axis(a));
+  for (auto& a : b.alpha_b) b.axes_b.push_back(axis(a));
+  return b;
+}
+
+// keyframe: one body under a chain of keyframed joints (see the header).
+struct Keyframed {
+  Motion motion;
+  nlohmann::ordered_json json;
+};
+// A unit quaternion (2D: a unit pair [w, z]) picked in double, written with `digits` digits.
+Vec random_orientation(Rng& r, int dim, int digits) {
+  int n = dim == 3 ? 4 : 2;
+  while (true) {
+    std::vector<double> q(n);
+    double len = 0;
+    for (auto& x : q) { x = double(r.next() >> 11) / double(1ULL << 52) - 1.0; len += x * x; }
+    len = std::sqrt(len);
+    if (len < 0.2 || len > 1.0) continue;
+    Vec out;
+    for (double x : q) out.push_back(round_significant(Rational(x / len), digits));
+    return out;
+  }
+}
+// Rotation part of one joint as a homogeneous matrix of degree 2 (size dim + 1).
+HMat joint_rotation(const Vec& q0, const Vec& q1, int dim) {
+  auto lin = [](const Rational& a, const Rational& b) { return RPoly(std::vector<Rational>{a, b - a}); };
+  HMat h(dim + 1, std::vector<RPoly>(dim + 1));
+  if (dim == 2) {
+    RPoly w = lin(q0[0], q1[0]), z = lin(q0[1], q1[1]);
+    h[0][0] = w * w - z * z;
+    h[0][1] = constant(-2) * w * z;
+    h[1][0] = constant(2) * w * z;
+    h[1][1] = w * w - z * z;
+    h[2][2] = w * w + z * z;
+    return h;
+  }
+  Poly<Rational> q[4];
+  for (int i = 0; i < 4; ++i) q[i] = lin(q0[i], q1[i]);
+  auto R = quaternion_matrix(q);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) h[i][j] = R[i][j];
+  h[3][3] = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+  return h;
+}
+Keyframed keyframed_body(Rng& r, int dim, int degree, int digits, const Vec& box_lo, const Vec& box_hi) {
+  const int joints = degree / 2;          // 2 -> 1, 3 -> 1, 4 -> 2, 5 -> 2, 6 -> 3
+  const bool moving_root = degree % 2 == 1;
+  Vec c0, c1;
+  for (int i = 0; i < dim; ++i) {
+    c0.push_back(decimal_in(r, box_lo[i].get_d(), box_hi[i].get_d(), digits));
+    c1.push_back(moving_root ? decimal_in(r, box_lo[i].get_d(), box_hi[i].get_d(), digits) : c0[i]);
+  }
+  std::vector<std::pair<Vec, Vec>> keys;
+  for (int k = 0; k < joints; ++k) {
+    Vec q0 = random_orientation(r, dim, digits), q1 = random_orientation(r, dim, digits);
+    // animation-format.md: q'_1 = -q_1 when q_0 . q_1 < 0 (the shorter way round)
+    if (dot(q0, q1) < 0)
+      for (auto& x : q1) x = -x;
+    keys.push_back({q0, q1});
+  }
+  Keyframed out;
+  if (joints == 1) {
+    const Vec& q0 = keys[0].first;
+    const Vec& q1 = keys[0].second;
+    auto lin = [](const Rational& a, const Rational& b) { return RPoly(std::vector<Rational>{a, b - a}); };
+    nlohmann::ordered_json j;
+    if (dim == 3) {
+      EulerMotion em;
+      j["type"] = "euler";
+      for (int i = 0; i < 4; ++i) { em.e[i] = lin(q0[i], q1[i]); j["e"].push_back(bern_json(q0[i], q1[i])); }
+      for (int i = 0; i < 3; ++i) {
+        em.v[i] = lin(c0[i], c1[i]);
+        j["translation"].push_back(moving_root ? bern_json(c0[i], c1[i]) : nlohmann::ordered_json(number_text(c0[i])));
+      }
+      em.v3 = constant(1);
+      j["translation_denominator"] = "1";
+      out.motion = em;
+    } else {
+      // kinematic: d2 = w(τ), d3 = -z(τ); centre (x, y) through d0 = (x d3 + y d2)/2, d1 = (y d3 - x d2)/2
+      KinematicMotion km;
+      RPoly x = lin(c0[0], c1[0]), y = lin(c0[1], c1[1]);
+      km.d[2] = lin(q0[0], q1[0]);
+      km.d[3] = lin(-q0[1], -q1[1]);
+      km.d[0] = Rational(1, 2) * (x * km.d[3] + y * km.d[2]);
+      km.d[1] = Rational(1, 2) * (y * km.d[3] - x * km.d[2]);
+      j["type"] = "kinematic";
+      j["d"].push_back(poly_json(km.d[0]));
+      j["d"].push_back(poly_json(km.d[1]));
+      j["d"].push_back(bern_json(q0[0], q1[0]));
+      j["d"].push_back(bern_json(-q0[1], -q1[1]));
+      out.motion = km;
+    }
+    out.json = j;
+    return out;
+  }
+  // A chain: root translation c(τ), then joint k's rotation, then bone offset o_k.
+  HMat M(dim + 1, std::vector<RPoly>(dim + 1));
+  for (int i = 0; i <= dim; ++i) M[i][i] = constant(1);
+  for (int i = 0; i < dim; ++i) M[i][dim] = RPoly(std::vector<Rational>{c0[i], c1[i] - c0[i]});
+  for (int k = 0; k < joints; ++k) {
+    M = hmul(M, joint_rotation(keys[k].first, keys[k].second, dim));
+    Vec o;
+    for (int i = 0; i < dim; ++i) o.push_back(decimal_in(r, -0.8, 0.8, digits));
+    M = hmul(M, hconst(identity(dim), o));
+  }
+  MatrixMotion mm;
+  mm.m = M;
+  out.motion = mm;
+  out.json = motion_json(mm);
+  return out;
+}
+
+Built build_keyframe(Rng& r, const GeneratorSpec& s) {
+  Built b;
+  const int dim = s.dim;
+  for (int i = 0; i < dim; ++i) b.axes_a.push_back(decimal_in(r, 0.4, 1.6, s.digits));
+  for (int i = 0; i < dim; ++i) b.axes_b.push_back(decimal_in(r, 0.4, 1.6, s.digits));
+  Vec lo(dim, Rational(-2)), hi(dim, Rational(2));
+  int other = int(r.uniform(2, s.degree));
+  bool swap = r.uniform(0, 1) == 1;
+  Keyframed ka = keyframed_body(r, dim, swap ? other : s.degree, s.digits, lo, hi);
+  Keyframed kb = keyframed_body(r, dim, swap ? s.degree : other, s.digits, lo, hi);
+  b.ma = ka.motion;
+  b.mb = kb.motion;
+  b.json_a = ka.json;
+  b.json_b = kb.json;
+  return b;
+}
+
+// overlap / graze: see the header. Both motions are matrix motions of degree 1.
+Built build_linear_overlap(Rng& r, const GeneratorSpec& s) {
+  Built b;
+  const int dim = s.dim;
+  Rational t0 = r.frac(4, 16, 20);
+  b.t0 = t0;
+  Rational delta = s.family == "overlap" ? pow10(-s.d_exponent) : Rational(0);
+  Vec n = random_unit(r, dim), m;
+  do m = random_unit(r, dim); while (dot(m, n) == -1);
+  Tangency ta = shape_with_normal(r, n), tb = shape_with_normal(r, m);
+  b.alpha_a = ta.alpha;
+  b.alpha_b = tb.alpha;
+  Mat RB = rotation_taking(r, m, n);
+  Vec cB = mat_vec(RB, tb.point);
+  for (int i = 0; i < dim; ++i) cB[i] = ta.point[i] - cB[i];
+  // B's translation s(t) = -δ n + (t - t0) v τ, τ ⊥ n: along the tangent plane.
+  Vec tau = dim == 2 ? Vec{-n[1], n[0]} : orthogonal_to(r, n);
+  Rational v = r.frac(1, 8, 2);
+  // The common motion G: a constant rational rotation and a linear translation.
+  Vec ga = random_unit(r, dim), gb = random_unit(r, dim);
+  Mat RG = dot(ga, gb) == -1 ? identity(dim) : rotation_taking(r, ga, gb);
+  Vec g0, g1;
+  for (int i = 0; i < dim; ++i) { g0.push_back(r.frac(-24, 24, 8)); g1.push_back(r.frac(-24, 24, 8)); }
+  auto affine = [&](const Mat& L, const std::vector<RPoly>& tr) {
+    MatrixMotion mm;
+    mm.m.assign(dim + 1, std::vector<RPoly>(dim + 1));
+    for (int i = 0; i < dim; ++i) {
+      for (int j = 0; j < dim; ++j) mm.m[i][j] = constant(L[i][j]);
+      mm.m[i][dim] = tr[i];
+    }
+    mm.m[dim][dim] = constant(1);
+    return mm;
+  };
+  // A: x -> RG x + g(t);  B: x -> RG (RB x + cB + s(t)) + g(t).
+  std::vector<RPoly> ta_tr, tb_tr;
+  Mat LB = mat_mul(RG, RB);
+  Vec rc = mat_vec(RG, cB), rn = mat_vec(RG, n), rt = mat_vec(RG, tau);
+  for (int i = 0; i < dim; ++i) {
+    RPoly g(std::vector<Rational>{g0[i], g1[i]});
+    ta_tr.push_back(g);
+    RPoly sB(std::vector<Rational>{rc[i] - delta * rn[i] - t0 * v * rt[i], v * rt[i]});
+    tb_tr.push_back(g + sB);
+  }
+  b.ma = affine(RG, ta_tr);
+  b.mb = affine(LB, tb_tr);
+  return b;
+}
+
 }  // namespace
 
 std::vector<std::string> motions_for(int dim) {
@@ -456,11 +725,53 @@ std::vector<std::string> motions_for(int dim) {
   return {"euler", "affine"};
 }
 
+bool linear_family(const std::string& family) { return family == "overlap" || family == "graze"; }
+bool realistic_family(const std::string& family) { return family == "decimal" || family == "keyframe"; }
+
 bool family_applies(const std::string& family, const std::string& motion) {
-  return !(family == "near-miss" && motion == "affine");
+  if (linear_family(family)) return motion == "translation";
+  if (motion == "translation") return false;
+  return !((family == "near-miss" || family == "keyframe") && motion == "affine");
 }
 
 std::string separation_label(int e) { return "1e-" + std::to_string(e); }
+
+Rational round_significant(const Rational& x, int digits) {
+  if (x == 0) return x;
+  Rational a = abs(x);
+  // e with 10^e <= a < 10^(e+1), from a double guess corrected exactly
+  int e = int(std::floor(std::log10(a.get_d())));
+  while (pow10(e) > a) --e;
+  while (pow10(e + 1) <= a) ++e;
+  Rational unit = pow10(e - digits + 1);
+  Rational q = a / unit;
+  mpz_class n = q.get_num() / q.get_den();  // floor
+  if (Rational(n) + Rational(1, 2) <= q) n += 1;  // half away from zero
+  Rational out = Rational(n) * unit;
+  out.canonicalize();
+  return x < 0 ? -out : out;
+}
+
+std::string exact_decimal(const Rational& x0) {
+  Rational x = x0;
+  x.canonicalize();
+  mpz_class den = x.get_den();
+  int twos = 0, fives = 0;
+  while (den % 2 == 0) { den /= 2; ++twos; }
+  while (den % 5 == 0) { den /= 5; ++fives; }
+  if (den != 1) return x.get_str();
+  int k = std::max(twos, fives);
+  mpz_class n = x.get_num() * mpz_class(pow10(k).get_num()) / x.get_den();
+  bool neg = n < 0;
+  std::string digits = mpz_class(abs(n)).get_str();
+  if (k > 0) {
+    if (int(digits.size()) <= k) digits = std::string(k - digits.size() + 1, '0') + digits;
+    digits.insert(digits.size() - k, ".");
+    while (digits.back() == '0') digits.pop_back();
+    if (digits.back() == '.') digits.pop_back();
+  }
+  return (neg ? "-" : "") + digits;
+}
 
 std::uint64_t scene_seed(std::uint64_t run_seed, const GeneratorSpec& c, int index) {
   std::uint64_t h = mix(run_seed, std::uint64_t(c.dim));
@@ -468,61 +779,98 @@ std::uint64_t scene_seed(std::uint64_t run_seed, const GeneratorSpec& c, int ind
   h = mix(h, hash_string(c.family));
   h = mix(h, hash_string(c.motion));
   h = mix(h, std::uint64_t(c.d_exponent));
+  if (c.digits) h = mix(h, std::uint64_t(c.digits) + 0x100);  // only the realistic families: old seeds stay
   return mix(h, std::uint64_t(index)) >> 11;  // 53 bits: exact in JSON and in a double
 }
 
 GeneratedScene generate_scene(const GeneratorSpec& spec) {
   if (spec.dim != 2 && spec.dim != 3) throw std::invalid_argument("dimension must be 2 or 3");
   if (spec.degree < 1 || spec.degree > 8) throw std::invalid_argument("motion degree must be between 1 and 8");
+  const bool linear = linear_family(spec.family), realistic = realistic_family(spec.family);
   auto ms = motions_for(spec.dim);
-  if (std::find(ms.begin(), ms.end(), spec.motion) == ms.end())
+  if (!linear && std::find(ms.begin(), ms.end(), spec.motion) == ms.end())
     throw std::invalid_argument("motion '" + spec.motion + "' is not a " + std::to_string(spec.dim) +
                                 "D motion (2D: kinematic; 3D: euler, affine)");
   bool touchy = spec.family == "touch" || spec.family == "near-miss";
-  if (!touchy && spec.family != "colliding" && spec.family != "free")
-    throw std::invalid_argument("unknown family '" + spec.family + "' (colliding, free, touch, near-miss)");
+  if (!touchy && !linear && !realistic && spec.family != "colliding" && spec.family != "free")
+    throw std::invalid_argument("unknown family '" + spec.family +
+                                "' (colliding, free, touch, near-miss, overlap, graze, decimal, keyframe)");
+  if (linear && (spec.motion != "translation" || spec.degree != 1))
+    throw std::invalid_argument(spec.family + " scenes are linear translations: motion 'translation', degree 1");
   if (!family_applies(spec.family, spec.motion))
-    throw std::invalid_argument("near-miss scenes need a rigid motion (an affine motion does not keep distances)");
+    throw std::invalid_argument(spec.family + " scenes need a rigid motion (an affine motion does not keep distances)");
   if (touchy && spec.degree < 2) throw std::invalid_argument("touch and near-miss scenes need motion degree >= 2");
   if (spec.family == "near-miss" && (spec.d_exponent < 1 || spec.d_exponent > 300))
     throw std::invalid_argument("near-miss separation must be 10^-e with 1 <= e <= 300");
+  if (spec.family == "overlap" && (spec.d_exponent < 1 || spec.d_exponent > 300))
+    throw std::invalid_argument("overlap depth must be 10^-e with 1 <= e <= 300");
+  if (realistic && (spec.digits < 1 || spec.digits > 30))
+    throw std::invalid_argument(spec.family + " scenes need 1 to 30 significant digits");
+  if (spec.family == "keyframe" && (spec.degree < 2 || spec.degree > 6))
+    throw std::invalid_argument("keyframe scenes have motion degree 2 to 6 (1 to 3 keyframed joints)");
 
   Rng r{spec.seed};
   for (int attempt = 0; attempt < 1000; ++attempt) {
     Built b;
+    g_decimal_output = realistic;  // keyframe motions are written while they are built
     try {
-      b = touchy ? build_touch(r, spec) : build_random(r, spec);
+      if (linear) b = build_linear_overlap(r, spec);
+      else if (spec.family == "decimal") b = build_decimal(r, spec);
+      else if (spec.family == "keyframe") b = build_keyframe(r, spec);
+      else b = touchy ? build_touch(r, spec) : build_random(r, spec);
     } catch (const std::domain_error&) {
+      g_decimal_output = false;
       continue;
     }
+    g_decimal_output = false;
     if (std::max(motion_degree(spec.dim, b.ma), motion_degree(spec.dim, b.mb)) != spec.degree) continue;
     GeneratedScene g;
     g.spec = spec;
     g.t0 = b.t0;
     std::ostringstream name;
     name << spec.dim << "d-deg" << spec.degree << "-" << spec.family;
-    if (spec.family == "near-miss") name << "-" << separation_label(spec.d_exponent);
+    if (spec.family == "near-miss" || spec.family == "overlap") name << "-" << separation_label(spec.d_exponent);
+    if (realistic) name << "-" << spec.digits << "digits";
     name << "-" << spec.motion << "-" << spec.seed;
     g.name = name.str();
     std::ostringstream note;
     note << "generated by eccd generate: family=" << spec.family << " dim=" << spec.dim << " degree=" << spec.degree
          << " motion=" << spec.motion;
     if (spec.family == "near-miss") note << " d=" << separation_label(spec.d_exponent);
+    if (spec.family == "overlap") note << " depth=" << separation_label(spec.d_exponent);
+    if (realistic) note << " digits=" << spec.digits;
+    if (!b.base.empty()) note << " base=" << b.base;
     if (b.t0) note << " t0=" << b.t0->get_str();
     note << " seed=" << spec.seed << ".";
     if (spec.family == "touch") note << " The solids touch at t0 only (constructed).";
     if (spec.family == "near-miss") note << " Minimum separation d at t0, never colliding (constructed).";
     if (spec.family == "colliding") note << " The centres coincide at one instant (constructed).";
     if (spec.family == "free") note << " The plane x = 0 separates the solids throughout (constructed).";
+    if (spec.family == "overlap") note << " Linear translations; at t0 B is pushed depth into A along the common normal (constructed).";
+    if (spec.family == "graze") note << " Linear translations; the solids touch at t0 only (constructed).";
+    if (spec.family == "decimal") note << " A " << b.base << " scene with every number rounded to that many significant digits.";
+    if (spec.family == "keyframe")
+      note << " Keyframed rigid motions (animation-format.md: centres linear, orientations by a linear quaternion curve), "
+              "key values with that many significant digits.";
     auto& d = g.doc;
+    d = nlohmann::ordered_json();
     d["format"] = "ellipse-ccd-scene/1";
     d["name"] = g.name;
     d["dim"] = spec.dim;
-    d["a"]["shape"] = shape_json(b.alpha_a);
-    d["a"]["motion"] = motion_json(b.ma);
-    d["b"]["shape"] = shape_json(b.alpha_b);
-    d["b"]["motion"] = motion_json(b.mb);
+    g_decimal_output = realistic;
+    d["a"]["shape"] = b.axes_a.empty() ? shape_json(b.alpha_a) : semi_axes_json(b.axes_a);
+    d["a"]["motion"] = b.json_a ? *b.json_a : motion_json(b.ma);
+    d["b"]["shape"] = b.axes_b.empty() ? shape_json(b.alpha_b) : semi_axes_json(b.axes_b);
+    d["b"]["motion"] = b.json_b ? *b.json_b : motion_json(b.mb);
+    g_decimal_output = false;
     d["note"] = note.str();
+    if (realistic) {  // rounding may make a weight vanish on [0, 1]: the reader decides, and we pick again
+      try {
+        parse_scene(d.dump(), g.name);
+      } catch (const SceneError&) {
+        continue;
+      }
+    }
     return g;
   }
   throw std::runtime_error("generator: no scene of degree " + std::to_string(spec.degree) + " after 1000 attempts");
@@ -530,25 +878,37 @@ GeneratedScene generate_scene(const GeneratorSpec& spec) {
 
 std::vector<GeneratorSpec> plan_scenes(const GeneratePlan& plan) {
   std::vector<GeneratorSpec> out;
-  for (int dim : plan.dims)
+  auto emit = [&](int dim, int deg, const std::string& fam, const std::string& mot) {
+    std::vector<int> exps = fam == "near-miss" ? plan.d_exponents : fam == "overlap" ? plan.depth_exponents : std::vector<int>{0};
+    std::vector<int> digs = realistic_family(fam) ? plan.digits : std::vector<int>{0};
+    for (int e : exps)
+      for (int dg : digs)
+        for (int i = 0; i < plan.count; ++i) {
+          GeneratorSpec s;
+          s.dim = dim;
+          s.degree = deg;
+          s.family = fam;
+          s.motion = mot;
+          s.d_exponent = e;
+          s.digits = dg;
+          s.seed = scene_seed(plan.seed, s, i);
+          out.push_back(s);
+        }
+  };
+  for (int dim : plan.dims) {
     for (int deg : plan.degrees)
-      for (const auto& fam : plan.families)
+      for (const auto& fam : plan.families) {
+        if (linear_family(fam)) continue;
+        if (fam == "keyframe" && (deg < 2 || deg > 6)) continue;
         for (const auto& mot : motions_for(dim)) {
           if (!plan.motions.empty() && std::find(plan.motions.begin(), plan.motions.end(), mot) == plan.motions.end()) continue;
           if (!family_applies(fam, mot)) continue;
-          std::vector<int> exps = fam == "near-miss" ? plan.d_exponents : std::vector<int>{0};
-          for (int e : exps)
-            for (int i = 0; i < plan.count; ++i) {
-              GeneratorSpec s;
-              s.dim = dim;
-              s.degree = deg;
-              s.family = fam;
-              s.motion = mot;
-              s.d_exponent = e;
-              s.seed = scene_seed(plan.seed, s, i);
-              out.push_back(s);
-            }
+          emit(dim, deg, fam, mot);
         }
+      }
+    for (const auto& fam : plan.families)  // degree 1, once per dimension
+      if (linear_family(fam)) emit(dim, 1, fam, "translation");
+  }
   return out;
 }
 
@@ -568,7 +928,8 @@ std::optional<GeneratorSpec> spec_from_note(const std::string& note) {
       else if (k == "dim") s.dim = std::stoi(v);
       else if (k == "degree") s.degree = std::stoi(v);
       else if (k == "motion") s.motion = v;
-      else if (k == "d" && v.rfind("1e-", 0) == 0) s.d_exponent = std::stoi(v.substr(3));
+      else if ((k == "d" || k == "depth") && v.rfind("1e-", 0) == 0) s.d_exponent = std::stoi(v.substr(3));
+      else if (k == "digits") s.digits = std::stoi(v);
       else if (k == "seed") s.seed = std::stoull(v);
     } catch (const std::exception&) {
       return std::nullopt;

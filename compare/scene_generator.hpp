@@ -42,6 +42,36 @@
 //              over [0, 1] is exactly d, reached at t0, and the pair never
 //              collides. (Not generated for affine motions, which do not keep
 //              distances.)
+//   overlap    (issue 14, point 5) both solids translate linearly (degree 1,
+//              motion "translation"): at t0 B is pushed δ = 10^-e into A along
+//              the common normal of a touching pose (as for touch), and moves
+//              along the tangent plane with constant velocity, so the pair
+//              just overlaps on a short interval around t0 (overlap depth δ
+//              along the normal; lengths ~ sqrt(δ)). This is the class of
+//              "missed-0.021", which the double Bézier method once reported
+//              collision-free (kernel/bezier_ccd.hpp, step 2).
+//   graze      the same with δ = 0: the collision set is exactly {t0}, an
+//              isolated touch (strict convexity, as for touch).
+//   decimal    realistic input (issue 14, point 6): a scene of a generic
+//              family (colliding, free or touch, chosen by the seed; the note
+//              says which) whose every coefficient and semi-axis is rounded to
+//              a decimal of `digits` significant digits (6, 9, 12, 15), as a
+//              simulator or CAD file writes it. Written as decimals; they are
+//              exact rationals, so the exact pipeline stays the ground truth.
+//   keyframe   keyframed rigid motions: each body has two key poses (position,
+//              orientation quaternion; 2D: [w, z]) written as decimals of
+//              `digits` significant digits, interpolated exactly by the rule of
+//              ../shared/spec/animation-format.md, "The motion of a body in
+//              frame k" (paper 001 section 5): centre (1-τ)c_0 + τc_1,
+//              orientation (1-τ)q_0 + τq'_1 with q'_1 = -q_1 when q_0·q_1 < 0,
+//              rotation of 3D: the `euler` matrix of e = q(τ), 2D: `kinematic`
+//              with d2 = w(τ), d3 = -z(τ). One such joint gives degree 2 (fixed
+//              centre) or 3; degrees 4-6 chain 2 or 3 keyframed joints with
+//              constant decimal bone offsets (a skeleton: root joint, elbow,
+//              wrist), the root's centre fixed or interpolated; every joint
+//              follows the same rule. One joint is written as `euler` (3D) or
+//              `kinematic` (2D) with Bernstein coefficients = the key values;
+//              a chain as a `matrix` motion (exact products of the decimals).
 // The pipelines never see these facts: the harness takes the exact pipeline
 // as ground truth, and a test checks the construction against it.
 // Requirements: exact rationals only (no floating value decides anything;
@@ -60,9 +90,10 @@ namespace eccd {
 struct GeneratorSpec {
   int dim = 2;
   int degree = 2;                    // motion degree, 1..8 (the report uses 2..6)
-  std::string family = "colliding";  // colliding | free | touch | near-miss
-  std::string motion = "kinematic";  // 2D: kinematic; 3D: euler | affine
-  int d_exponent = 0;                // near-miss: separation d = 10^-d_exponent (>= 1)
+  std::string family = "colliding";  // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe
+  std::string motion = "kinematic";  // 2D: kinematic; 3D: euler | affine; overlap and graze: translation
+  int d_exponent = 0;                // near-miss: separation d = 10^-d_exponent (>= 1); overlap: depth 10^-d_exponent
+  int digits = 0;                    // decimal, keyframe: significant digits of every number (1..30)
   std::uint64_t seed = 1;            // this scene's seed
 };
 
@@ -74,37 +105,53 @@ struct GeneratedScene {
 };
 
 // Throws std::invalid_argument for a spec it cannot build (unknown family or
-// motion, a motion of the other dimension, near-miss with affine motion,
-// touch/near-miss below degree 2).
+// motion, a motion of the other dimension, near-miss or keyframe with affine
+// motion, touch/near-miss below degree 2, overlap/graze not of degree 1 with
+// motion translation, decimal/keyframe without digits, keyframe outside 2..6).
 GeneratedScene generate_scene(const GeneratorSpec& spec);
 
 // The per-scene seed of scene `index` of a combination, from the run's seed.
 std::uint64_t scene_seed(std::uint64_t run_seed, const GeneratorSpec& combination, int index);
 
 // The motions of a dimension ("kinematic" in 2D; "euler", "affine" in 3D) and
-// whether a family is generated for a motion.
+// whether a family is generated for a motion (overlap and graze: only the
+// motion "translation", of degree 1, in both dimensions).
 std::vector<std::string> motions_for(int dim);
 bool family_applies(const std::string& family, const std::string& motion);
+// Families whose scenes are linear translations (degree 1 whatever the plan's degrees).
+bool linear_family(const std::string& family);
+// The families of the realistic-input kind (decimal, keyframe).
+bool realistic_family(const std::string& family);
 
 // A run of the generator: every combination dim x degree x family x motion
-// (x separation for near-miss), `count` scenes each, seeds from scene_seed.
+// (x separation for near-miss, x depth for overlap, x digits for decimal and
+// keyframe), `count` scenes each, seeds from scene_seed. Overlap and graze
+// scenes are generated once per dimension (degree 1), not per degree.
 struct GeneratePlan {
   std::vector<int> dims{2, 3};
   std::vector<int> degrees{2, 3, 4, 5, 6};
-  std::vector<std::string> families{"colliding", "free", "touch", "near-miss"};
+  std::vector<std::string> families{"colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe"};
   std::vector<std::string> motions;  // empty = every motion of the dimension
   std::vector<int> d_exponents{2, 4, 6, 8, 10, 12, 14, 16};
+  std::vector<int> depth_exponents{3, 5, 7, 9};  // overlap depths 10^-e
+  std::vector<int> digits{6, 9, 12, 15};         // decimal and keyframe
   int count = 1;
   std::uint64_t seed = 20261121;
 };
 std::vector<GeneratorSpec> plan_scenes(const GeneratePlan& plan);
 
 // The "key=value" facts the generator writes into the scene's note
-// (family, dim, degree, motion, d, t0, seed), read back; nullopt if the note
-// is not a generator's.
+// (family, dim, degree, motion, d, depth, digits, base, t0, seed), read back;
+// nullopt if the note is not a generator's.
 std::optional<GeneratorSpec> spec_from_note(const std::string& note);
 
 // "1e-8" for exponent 8.
 std::string separation_label(int d_exponent);
+
+// x rounded to `digits` significant decimal digits (half away from zero),
+// exactly; and an exact decimal string for a rational whose denominator has
+// no prime factor but 2 and 5 (else "p/q").
+Rational round_significant(const Rational& x, int digits);
+std::string exact_decimal(const Rational& x);
 
 }  // namespace eccd

@@ -16,7 +16,15 @@
 //     (iterative shooting, quadratic convergence at a regular contact, 001
 //     Appendix B). Every hit t̂ is a lower bound of the first contact after a,
 //     so the iteration converges to it. Shooting from both ends onto one
-//     instant is a tangential touch; otherwise the gap is subdivided;
+//     instant is a tangential touch; otherwise the gap is subdivided.
+//     A miss needs F(û, .) > 0 on the whole of [t, b]. Rounded, the shot's
+//     start F(û, t) is computed twice (the peak over u at t, and G(0) after
+//     restricting F(û, .) to [t, b]); as t converges onto a contact both are
+//     at the noise level and may differ in sign. An empty root list with
+//     G(0) <= 0 was once read as a miss (issue 14's scene "missed-0.021":
+//     both shots converged, the one from the far end then "missed", and a
+//     collision of 2 % of [0, 1] was reported separate). Now a non-positive
+//     G(0) means the shot has converged at t;
 //  3. between two overlapping samples (case 2): all control points of F over
 //     (0, 1) x [a, b] negative = overlap on [a, b]; else subdivide in t;
 //  4. a transition (case 3): the Gaussian-circle test — all 2D control points
@@ -305,6 +313,11 @@ class BezierZeroSet {
       bool positive = true;
       for (const auto& x : G.b) positive = positive && sign(x) == Sign::positive;
       if (positive) return {ShotKind::miss, to};
+      // G(0) = F(û, t) is the peak value again, by another rounding: at the
+      // noise level it can come out <= 0 although p.value > 0. Then G has no
+      // root to find (possibly all negative), which is no miss: t is the
+      // contact as far as this arithmetic can tell (issue 14, "missed-0.021").
+      if (sign(G.b.front()) != Sign::positive) return {ShotKind::converged, t};
       BernsteinRootOptions<T> ro;
       // Relative to [t, to]: roots to 2^-53 of it, clusters below 2^-30 of it
       // (near a tangency G is rounding noise throughout, and finer clusters

@@ -75,9 +75,10 @@ class InputError(Exception):
 OUTCOMES = ("correct", "false_positive", "false_negative", "undecided", "error")
 ARITHS = ("double", "mpfr", "exact")
 BASES = ("power", "bernstein", "scaled-bernstein", "exact")
-FAMILIES = ("colliding", "free", "touch", "near-miss", "case")
+FAMILIES = ("colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe", "case")
 SOURCES = ("generated", "cases")
-MOTIONS = ("kinematic", "euler", "affine", "case")
+MOTIONS = ("kinematic", "euler", "affine", "translation", "case")
+INPUTS = ("rounded", "prepared")
 ANSWERS = ("separate", "touching", "colliding", "undecided", "error")
 
 # column -> (kind, empty allowed, choices); empty allowed: True, False, "error" (only on rows whose outcome is
@@ -111,6 +112,14 @@ RESULT_COLUMNS = [
     ("structure_ok", "int", "error", (0, 1)),
 ]
 
+# Columns added later (issue 14): a results.csv without them reads with these defaults (before input modes
+# existed every floating pipeline started from the prepared scene).
+OPTIONAL_RESULT_COLUMNS = [
+    ("input", "str", False, INPUTS, "prepared"),
+    ("digits", "int", True, None, None),
+    ("reason", "str", True, None, None),
+]
+
 FAILURE_COLUMNS = [
     ("pipeline", "str", False, None),
     ("ix", "int", False, None),
@@ -140,10 +149,11 @@ def _convert(text, kind, where):
     return v
 
 
-def read_csv(path, columns):
+def read_csv(path, columns, optional=()):
     """Rows of a comma-separated file without quoting, converted per `columns`.
 
-    Each row is a dict (plus '_line', its line number in the file)."""
+    `optional`: (column, kind, empty allowed, choices, default) of columns that may be absent from the header (every
+    row then gets the default). Each row is a dict (plus '_line', its line number in the file)."""
     name = os.path.basename(path)
     if not os.path.isfile(path):
         raise InputError(f"{path}: not found")
@@ -163,6 +173,9 @@ def read_csv(path, columns):
     for col, *_ in columns:
         if col not in index:
             raise InputError(f"{name} line 1: the header lacks column '{col}'")
+    present_optional = [o[:4] for o in optional if o[0] in index]
+    absent_optional = [(o[0], o[4]) for o in optional if o[0] not in index]
+    columns = list(columns) + present_optional
     rows = []
     for ln, line in enumerate(lines[1:], start=2):
         if not line.strip():
@@ -189,6 +202,8 @@ def read_csv(path, columns):
             row[col] = v
             if col == "d" and v is not None:
                 row["d_text"] = text
+        for col, default in absent_optional:
+            row[col] = default
         rows.append(row)
     return rows
 
@@ -799,7 +814,7 @@ def compute_minbits(data):
             out[dim][grp] = {}
             for deg in data.degrees[dim]:
                 # touch scenes are left out: see MINBITS_NOTE
-                rb = {b: [r for r in data.sel(dim=dim, degree=deg, pipeline=p) if r["family"] != "touch"]
+                rb = {b: [r for r in data.sel(dim=dim, degree=deg, pipeline=p) if r["family"] not in ("touch", "graze")]
                       for b, p in by_bits.items()}
                 rb = {b: rs for b, rs in rb.items() if rs}
                 if rb:
@@ -822,6 +837,15 @@ def section_what_was_run(data):
     out.append(f"- Seed: {m['seed']}")
     out.append(f"- MPFR precisions (bits): {', '.join(str(b) for b in m['mpfr_bits']) or 'none'}")
     out.append(f"- Pipelines: {', '.join(data.order)}")
+    modes = getattr(data, "input_modes", None) or [getattr(data, "primary_input", "prepared")]
+    line = f"- Input modes of the floating pipelines: {', '.join(modes)}"
+    if len(modes) > 1:
+        line += (f" (rows of the mode *{modes[1]}* carry the suffix @{modes[1]}; the sections below the next one "
+                 f"show the mode *{modes[0]}*)")
+    if m.get("budget_seconds") is not None:
+        line += (f"; every floating run under a time budget of {fmt_seconds(m['budget_seconds'])}, the exact run "
+                 f"under {fmt_seconds(m.get('exact_budget_seconds', 0))} (kernel/budget.hpp; a time-out is undecided)")
+    out.append(line)
     out.append(f"- Machine: {machine or 'not recorded'}")
     out.append(f"- Version: {m['version']}")
     out.append(f"- Started: {m['started']}")
@@ -856,6 +880,107 @@ def section_what_was_run(data):
             "rows without error, the share whose collision intervals (ends within 1e-6), contacts or answer differ "
             "from the exact ones. The exact pipeline is the ground truth.", ""]
     return out
+
+
+FAMILY_GROUPS = (
+    ("generic colliding", ("colliding",)),
+    ("generic free", ("free",)),
+    ("near-miss", ("near-miss",)),
+    ("touch (isolated contact)", ("touch", "graze")),
+    ("just overlapping (linear)", ("overlap",)),
+    ("realistic decimals", ("decimal", "keyframe")),
+    ("shipped cases", ("case",)),
+)
+
+
+def arith_level(r):
+    return "double" if r["arith"] == "double" else f"mpfr:{r['bits']}"
+
+
+def level_key(level):
+    return (0, 0) if level == "double" else (1, int(level.split(":")[1]))
+
+
+def section_trust(data):
+    """Per family group and input mode: where double and each MPFR precision stay trustworthy."""
+    rows = [r for r in data.all_rows if r["arith"] != "exact"]
+    out = ["## Where each arithmetic stays trustworthy, per family and input mode", ""]
+    if not rows:
+        return out + ["No floating pipeline in results.csv.", ""]
+    modes = data.input_modes or [data.primary_input]
+    out += ["A floating answer is *trustworthy* here when it is never confidently wrong: no false positive or false "
+            "negative against the exact answer (an *undecided* answer, which the pipeline gives itself from its error "
+            "bound or its time budget, is honest and not wrong). Each cell: confidently wrong / runs, then undecided "
+            "runs; all pipelines (bases, methods) of that arithmetic pooled. Input *rounded*: the scene's numbers "
+            "rounded to the arithmetic, as a user's program holds them; *prepared*: the coefficients prepared exactly, "
+            "then rounded. The difference between the two rows of a family is the error of rounding the input.", ""]
+    if len(modes) == 1:
+        out += [f"Only the input mode *{modes[0]}* is in results.csv"
+                + (" (this solver has no rounded input mode; every floating run started from the prepared scene)."
+                   if modes[0] == "prepared" else "."), ""]
+    levels = sorted({arith_level(r) for r in rows}, key=level_key)
+    body, notes = [], []
+    for gname, fams in FAMILY_GROUPS:
+        grows = [r for r in rows if r["family"] in fams]
+        if not grows:
+            continue
+        for mode in modes:
+            mrows = [r for r in grows if r["input"] == mode]
+            if not mrows:
+                continue
+            cells, clean, undec = [], {}, {}
+            for lv in levels:
+                lr = [r for r in mrows if arith_level(r) == lv]
+                if not lr:
+                    cells.append("—")
+                    continue
+                wrong = sum(1 for r in lr if r["outcome"] in ("false_positive", "false_negative"))
+                und = sum(1 for r in lr if r["outcome"] == "undecided")
+                err = sum(1 for r in lr if r["outcome"] == "error")
+                clean[lv] = wrong == 0 and err == 0
+                undec[lv] = (und, len(lr))
+                cell = f"{wrong}/{len(lr)}"
+                if und:
+                    cell += f", {und} und."
+                if err:
+                    cell += f", {err} err."
+                cells.append(cell)
+            body.append([gname, mode, scenes_of(mrows)] + cells)
+            tested = [lv for lv in levels if lv in clean]
+            ok_from = None
+            for lv in reversed(tested):
+                if clean[lv]:
+                    ok_from = lv
+                else:
+                    break
+            dbl = clean.get("double")
+            mp = [lv for lv in tested if lv != "double"]
+            if ok_from is None:
+                verdict = "no tested arithmetic is free of confident errors"
+            elif ok_from == "double":
+                verdict = "trustworthy from double on (every tested arithmetic)"
+            else:
+                verdict = (f"double {'trustworthy' if dbl else 'not trustworthy' if dbl is not None else 'not run'}; "
+                           f"MPFR trustworthy from {ok_from} on")
+                if mp and ok_from == mp[0]:
+                    verdict += " (the lowest tested precision)"
+            und_levels = [f"{lv} {u} of {n}" for lv, (u, n) in undec.items() if u]
+            if und_levels:
+                verdict += "; undecided (honest, but no answer): " + ", ".join(und_levels)
+            notes.append(f"- {gname}, input {mode} ({scenes_of(mrows)} scenes{few(scenes_of(mrows))}): {verdict}.")
+    out.append(md_table(["family", "input", "scenes"] + levels, body, ["---", "---", "---:"] + ["---:"] * len(levels)))
+    out += [""] + notes + [""]
+    reasons = {}
+    for r in rows:
+        if r["outcome"] == "undecided" and r.get("reason"):
+            key = "time budget" if r["reason"].startswith("time budget") else r["reason"].split(";")[0][:60]
+            reasons[key] = reasons.get(key, 0) + 1
+    if reasons:
+        top = sorted(reasons.items(), key=lambda kv: -kv[1])[:6]
+        out += ["Undecided runs by reason (the pipelines' own words, first reason per run): "
+                + "; ".join(f"{k}: {v}" for k, v in top) + ".", ""]
+    return out
+
 
 
 def section_findings(data, minbits):
@@ -1095,6 +1220,7 @@ def figure_block(figs, name):
 def build_report(data, figs, minbits):
     out = [f"# Robustness report: {data.meta['name']}", ""]
     out += section_what_was_run(data)
+    out += section_trust(data)
     out += section_findings(data, minbits)
     out += section_tables(data)
     out += ["## Coefficient error", ""]
@@ -1127,7 +1253,13 @@ def main(argv):
     out_dir = argv[1]
     if not os.path.isdir(out_dir):
         raise InputError(f"{out_dir}: not a directory")
-    rows = read_csv(os.path.join(out_dir, "results.csv"), RESULT_COLUMNS)
+    all_rows = read_csv(os.path.join(out_dir, "results.csv"), RESULT_COLUMNS, OPTIONAL_RESULT_COLUMNS)
+    check_results(all_rows)
+    # The main sections read one input mode (rounded where present: what users run); the section on input modes
+    # and families reads every row.
+    modes = [m for m in INPUTS if any(r["input"] == m and r["arith"] != "exact" for r in all_rows)]
+    primary = modes[0] if modes else "prepared"
+    rows = [r for r in all_rows if r["arith"] == "exact" or r["input"] == primary]
     pinfo = check_results(rows)
     meta = read_meta(os.path.join(out_dir, "meta.json"))
     fmap = None
@@ -1137,6 +1269,7 @@ def main(argv):
         exact_at, ux, uy = check_failure_map(fm_rows)
         fmap = {"rows": fm_rows, "exact": exact_at, "ux": ux, "uy": uy}
     data = Data(rows, pinfo, meta, fmap)
+    data.all_rows, data.primary_input, data.input_modes = all_rows, primary, modes
     minbits = compute_minbits(data)
 
     tmp = tempfile.mkdtemp(prefix=".report_figures-", dir=out_dir)
