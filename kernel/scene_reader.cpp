@@ -3,7 +3,8 @@
 
 #include "kernel/bernstein.hpp"
 #include "kernel/quadric_classification.hpp"
-#include "kernel/sturm.hpp"
+#include "exact/algebraic_roots.hpp"
+#include "kernel/budget.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -226,6 +227,22 @@ std::string place_text(const std::string& ptr) {
   return r.size() > 2000 ? r.substr(0, 2000) + "..." : r;
 }
 
+// A message with each run of more than 40 digits shortened to its first 20
+// and last 8 digits and the count (a 1000-digit number is not echoed whole).
+std::string shorten_digits(const std::string& m) {
+  std::string r;
+  std::size_t i = 0;
+  while (i < m.size()) {
+    if (m[i] < '0' || m[i] > '9') { r += m[i++]; continue; }
+    std::size_t j = i;
+    while (j < m.size() && m[j] >= '0' && m[j] <= '9') ++j;
+    if (j - i > 40) r += m.substr(i, 20) + "...(" + std::to_string(j - i) + " digits)..." + m.substr(j - 8, 8);
+    else r += m.substr(i, j - i);
+    i = j;
+  }
+  return r;
+}
+
 // A user string in a message: JSON-quoted, shortened.
 std::string quote(const std::string& s) {
   std::string t = s.size() > 80 ? s.substr(0, 80) + "..." : s;
@@ -276,39 +293,21 @@ std::string poly_text(const RPoly& p) {
   return r;
 }
 
-// The simplest rational (smallest denominator) in [a, b], 0 <= a <= b.
-mpq_class simplest_between(const mpq_class& a, const mpq_class& b) {
-  mpz_class fl;
-  mpz_fdiv_q(fl.get_mpz_t(), a.get_num_mpz_t(), a.get_den_mpz_t());
-  if (mpq_class(fl) == a) return a;
-  mpz_class up = fl + 1;
-  if (mpq_class(up) <= b) return mpq_class(up);
-  mpq_class x = b - fl, y = a - fl;  // both in (0, 1)
-  mpq_class ix = 1 / x, iy = 1 / y;
-  mpq_class s = simplest_between(ix, iy);
-  mpq_class r = mpq_class(fl) + 1 / s;
-  return r;
+// The roots of p (not identically zero) in [0, 1], isolated by the exact
+// root isolation (exact/algebraic_roots.hpp: CGAL, guarded and bounded) with
+// brackets of width <= 2^-30. (Sturm sequences over the rationals took minutes
+// on motions with 100-digit coefficients: issue 15's fuzzing.)
+std::vector<AlgebraicRoot> roots_in_unit(const RPoly& p) {
+  if (p.degree() < 1) return {};
+  return real_roots(p, mpq_class(0), mpq_class(1), 30);
 }
 
-// Where p (not identically zero, with a root in [0, 1]) vanishes on [0, 1].
-std::string locate_root(const RPoly& p) {
-  mpq_class lo = 0, hi = 1;
-  if (sgn(p(lo)) == 0) return "at t = 0";
-  if (sgn(p(hi)) == 0) return "at t = 1";
-  const auto seq = sturm_sequence(p);
-  auto roots_in = [&](const mpq_class& a, const mpq_class& b) {  // in (a, b]
-    return sturm_variations(seq, std::optional<mpq_class>(a), -1) -
-           sturm_variations(seq, std::optional<mpq_class>(b), +1);
-  };
-  for (int k = 0; k < 30; ++k) {  // invariant: a root in (lo, hi), p(lo), p(hi) != 0
-    mpq_class m = (lo + hi) / 2;
-    if (sgn(p(m)) == 0) return "at t = " + m.get_str();
-    if (roots_in(lo, m) > 0) hi = m; else lo = m;
-  }
-  mpq_class s = simplest_between(lo, hi);
-  if (sgn(p(s)) == 0) return "at t = " + s.get_str();
-  mpq_class mid = (lo + hi) / 2;
-  return "at t in [" + lo.get_str() + ", " + hi.get_str() + "] (t ~ " + approx_text(mid) + ")";
+// Where p (not identically zero) vanishes on [0, 1], given its roots there.
+std::string locate_root(const std::vector<AlgebraicRoot>& roots) {
+  const AlgebraicRoot& r = roots.front();
+  if (r.is_rational()) return "at t = " + r.lo.get_str();
+  mpq_class mid = (r.lo + r.hi) / 2;
+  return "at t in [" + r.lo.get_str() + ", " + r.hi.get_str() + "] (t ~ " + approx_text(mid) + ")";
 }
 
 // SAX handler building the DOM, with duplicate-key detection, a depth limit,
@@ -412,7 +411,7 @@ class Reader {
       : label_(std::move(label)), float_text_(float_text) {}
 
   [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
-    throw SceneError(label_ + ": " + place_text(ptr) + ": " + what);
+    throw SceneError(label_ + ": " + place_text(ptr) + ": " + shorten_digits(what));
   }
 
   Scene scene(const json& root);
@@ -462,11 +461,18 @@ class Reader {
     for (std::size_t i = 0; i < n; ++i) r.push_back(poly(j[i], child(ptr, i)));
     return r;
   }
+  std::vector<AlgebraicRoot> unit_roots(const RPoly& p, const std::string& ptr, const std::string& name) const {
+    try {
+      return roots_in_unit(p);
+    } catch (const BudgetExhausted& e) {
+      fail(ptr, name + " cannot be checked for roots on [0, 1]: " + e.what() + " (beyond the input limits)");
+    }
+  }
   void check_nonvanishing(const RPoly& p, const std::string& ptr, const std::string& name,
                           const std::string& consequence) const {
     if (p.is_zero()) fail(ptr, name + " is identically zero" + consequence);
-    if (count_roots_closed(p, mpq_class(0), mpq_class(1)) > 0)
-      fail(ptr, name + " vanishes on [0, 1]: " + name + " = 0 " + locate_root(p) + consequence);
+    if (auto roots = unit_roots(p, ptr, name); !roots.empty())
+      fail(ptr, name + " vanishes on [0, 1]: " + name + " = 0 " + locate_root(roots) + consequence);
   }
 
   std::vector<std::vector<Rational>> shape(const json& j, const std::string& ptr) const;
@@ -680,8 +686,8 @@ Motion Reader::motion(const json& j, const std::string& ptr) const {
     const std::string bs = std::to_string(dim_) + "x" + std::to_string(dim_);
     if (d.is_zero())
       fail(mp, "singular affine block for every t: the upper-left " + bs + " block of M(t) has determinant 0");
-    if (count_roots_closed(d, mpq_class(0), mpq_class(1)) > 0)
-      fail(mp, "singular affine block " + locate_root(d) + ": the upper-left " + bs +
+    if (auto roots = unit_roots(d, mp, "the determinant of the affine block"); !roots.empty())
+      fail(mp, "singular affine block " + locate_root(roots) + ": the upper-left " + bs +
                    " block of M(t) must be non-singular on [0, 1] (its determinant is " + poly_text(d) + ")");
     return mm;
   }
@@ -851,6 +857,8 @@ std::string json_error_text(const std::string& text, std::size_t pos, const std:
     reason = reason.substr(k + 2);
   if (reason.rfind("parse error", 0) == 0)
     if (auto k = reason.find(": "); k != std::string::npos) reason = reason.substr(k + 2);
+  reason = shorten_digits(reason);
+  if (reason.size() > 300) reason = reason.substr(0, 300) + "...";
   if (reason.find("number overflow") != std::string::npos)
     reason += " (write large numbers as strings, e.g. \"1e400\")";
   return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": malformed JSON: " + reason;
@@ -874,11 +882,11 @@ Scene parse_scene(const std::string& json_text, const std::string& file_label) {
     throw SceneError(file_label + ": " + std::to_string(json_text.size()) + " bytes, beyond the input limit of " +
                      std::to_string(input_limits().max_file_bytes) + " bytes (--max-file-bytes)");
   if (json_text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw SceneError(file_label + ": the file is empty (a scene is a JSON object)");
+    throw SceneError(file_label + ": line 1, column 1: malformed JSON: the file is empty or blank (a scene is a JSON object)");
   if (auto nul = json_text.find('\0'); nul != std::string::npos) {
     std::size_t line = 1 + std::size_t(std::count(json_text.begin(), json_text.begin() + long(nul), '\n'));
     throw SceneError(file_label + ": line " + std::to_string(line) + ", byte " + std::to_string(nul + 1) +
-                     ": a NUL byte: this is a binary file, not a JSON text");
+                     ": malformed JSON: a NUL byte: this is a binary file, not a JSON text");
   }
   DomBuilder b;
   bool ok = false;
