@@ -25,7 +25,10 @@
 #include "kernel/budget.hpp"
 #include "kernel/scene_reader.hpp"
 
+#include <signal.h>
 #include <sys/resource.h>
+#include <sys/time.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
@@ -42,6 +45,30 @@ namespace fs = std::filesystem;
 using namespace eccd;
 
 namespace {
+
+// The backstop of --time-limit for commands that are one pipeline run (solve,
+// certify, check-certificate): if a loop does not ask the deadline
+// (kernel/budget.hpp), SIGALRM at 1.5 x the limit + 2 s ends the process with
+// exit 5 (nothing on stdout; output files are only ever renamed into place).
+void on_backstop(int) {
+  static const char msg[] =
+      "eccd: resource budget exhausted: the time limit passed (--time-limit) and the run did not stop by itself; ended\n";
+  ssize_t n = write(2, msg, sizeof msg - 1);
+  (void)n;
+  _exit(5);
+}
+void arm_backstop(double seconds) {
+  if (seconds <= 0) return;
+  double at = seconds * 1.5 + 2;
+  struct sigaction sa {};
+  sa.sa_handler = on_backstop;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGALRM, &sa, nullptr);
+  itimerval t{};
+  t.it_value.tv_sec = time_t(at);
+  t.it_value.tv_usec = suseconds_t((at - double(time_t(at))) * 1e6);
+  setitimer(ITIMER_REAL, &t, nullptr);
+}
 
 // A message for stderr: at most 2000 characters (a user's 10 MB key is not echoed whole).
 std::string cut_message(const std::string& m) { return m.size() > 2000 ? m.substr(0, 2000) + "... (cut)" : m; }
@@ -231,6 +258,7 @@ int main(int argc, char** argv) {
       opt.method = method;
       check_method(method);
       opt.first_contact = first_contact || (variant == 2);
+      arm_backstop(run_budget().time_limit_s);
       Scene s = read_scene_file(scene_path);
       nlohmann::json r;
       try {
@@ -240,6 +268,7 @@ int main(int argc, char** argv) {
         std::cerr << "eccd solve: " << scene_path << ": " << e.what() << "\n";
         return 3;
       }
+      { itimerval off{}; setitimer(ITIMER_REAL, &off, nullptr); }  // solved: the backstop is not needed for writing
       if (store) {
         if (opt.arith.kind != Arithmetic::Exact) throw std::invalid_argument("--write-answer stores exact answers only: use --arith exact");
         write_answer(scene_path, r);
@@ -255,6 +284,7 @@ int main(int argc, char** argv) {
         // report set the deadline per scene / task themselves.
         const bool one_run = c.sub->get_name() == "certify" || c.sub->get_name() == "check-certificate";
         ScopedDeadline deadline(one_run ? run_budget().time_limit_s : 0);
+        if (one_run) arm_backstop(run_budget().time_limit_s);
         if (c.sub->get_name() != "check-certificate") return c.run();
         try {
           return c.run();

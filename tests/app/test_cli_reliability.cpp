@@ -121,6 +121,20 @@ TEST_CASE("a time limit ends a long exact run with exit 5", "[cli][reliability][
   CHECK(r.out.empty());
 }
 
+TEST_CASE("every single run ends within its time limit, whatever the arithmetic", "[cli][reliability][item2]") {
+  // issue 15: double spun in bernstein_roots on a shape entry "-1e-300" and on a 12-digit semi-axis
+  for (const std::string f : {"tiny_shape_entry.json", "twelve_digit_axis.json"})
+    for (const std::string arith : {"double", "mpfr:128", "certified", "exact"}) {
+      INFO(f << " " << arith);
+      Run r = run_eccd("solve " + q(bad(f)) + " --arith " + arith + " --time-limit 3", 40);
+      INFO("stderr: " << r.err);
+      CHECK(!r.timed_out);
+      CHECK((r.code == 0 || r.code == 5));  // an answer (perhaps with undecided parts) or the budget
+      CHECK(r.seconds < 30);
+      CHECK(r.err_bytes < 4096);
+    }
+}
+
 TEST_CASE("/dev/zero and a degree-1000 motion are refused quickly", "[cli][reliability][item3]") {
   Run z = run_eccd("solve /dev/zero --arith exact", 30);
   INFO("stderr: " << z.err);
@@ -365,6 +379,12 @@ TEST_CASE("generate validates its arguments before any work", "[cli][reliability
   } else {
     CHECK(!fs::exists(w.path / "d1"));
   }
+  Run d1 = run_eccd("generate --out " + q((w.path / "d2").string()) + " --degrees 1 --count 1 --answer", 30);
+  INFO("stderr: " << d1.err);
+  CHECK(d1.code == 2);  // touch and near-miss need degree 2: refused before any scene is solved
+  CHECK(contains(d1.err, "--degrees 1"));
+  CHECK(!contains(d1.err, "exact"));
+  CHECK(!fs::exists(w.path / "d2"));
   Run rs = run_eccd("report --seed -1" + kReportQuick, 30, w.str());
   CHECK(rs.code == 2);
 }
