@@ -908,7 +908,9 @@ Scene parse_scene(const std::string& json_text, const std::string& file_label) {
   }
 }
 
-Scene read_scene_file(const std::string& path) {
+Scene read_scene_file(const std::string& path) { return parse_scene(read_file_bytes(path), path); }
+
+std::string read_file_bytes(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw SceneError(path + ": cannot read the file: it is a directory");
   std::ifstream in(path, std::ios::binary);
@@ -927,7 +929,7 @@ Scene read_scene_file(const std::string& path) {
   if (in.bad()) throw SceneError(path + ": cannot read the file: read error");
   if (text.size() > limit)
     throw SceneError(path + ": larger than the input limit of " + std::to_string(limit) + " bytes (--max-file-bytes)");
-  return parse_scene(text, path);
+  return text;
 }
 
 }  // namespace eccd

@@ -91,6 +91,10 @@ InputLimits& input_limits();
 // Reads and validates a scene; throws SceneError "FILE: PLACE: what is wrong".
 Scene read_scene_file(const std::string& path);
 Scene parse_scene(const std::string& json_text, const std::string& file_label);
+// The bytes of a file, read once and at most max_file_bytes of them (choice
+// 14): a directory, an unreadable or too large file throws SceneError
+// "FILE: ...".
+std::string read_file_bytes(const std::string& path);
 
 // Exact value of a number string (choice 1 above). Throws std::invalid_argument
 // whose what() is the reason (the reader turns it into a SceneError).
