@@ -40,15 +40,14 @@ struct RegressArgs {
 // "a" and "b") with another or no format, is reported as an error; other JSON
 // (certificates, plot data: another "format") is not a scene.
 enum class FileKind { Scene, NotScene, Broken };
-FileKind classify_file(const fs::path& p, std::string& why) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) { why = "cannot read the file"; return FileKind::Broken; }
-  const std::size_t limit = input_limits().max_file_bytes;
-  std::string text;
-  std::vector<char> buf(1 << 16);
-  while (text.size() <= limit && in.read(buf.data(), std::streamsize(buf.size())).gcount() > 0)
-    text.append(buf.data(), std::size_t(in.gcount()));
-  if (text.size() > limit) { why = "larger than the input limit of " + std::to_string(limit) + " bytes (--max-file-bytes)"; return FileKind::Broken; }
+FileKind classify_file(const fs::path& p, std::string& text, std::string& why) {
+  try {
+    text = read_file_bytes(p.string());
+  } catch (const SceneError& e) {
+    why = e.what();
+    why = why.substr(std::min(why.size(), p.string().size() + 2));  // without the path (the caller adds it)
+    return FileKind::Broken;
+  }
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded()) { why = "not a JSON text (malformed or truncated): cannot tell whether it is a scene"; return FileKind::Broken; }
   if (!j.is_object()) return FileKind::NotScene;
@@ -110,12 +109,14 @@ Command add_regress_command(CLI::App& app) {
     if (!fs::is_directory(args->dir)) throw std::invalid_argument(args->dir + ": not a directory");
     std::vector<fs::path> files;
     std::map<fs::path, std::string> broken;  // files that may be scenes but cannot be read as such
+    std::map<fs::path, std::string> texts;   // each scene's bytes, read once
     for (auto& e : fs::recursive_directory_iterator(args->dir)) {
       if (!e.is_regular_file() || e.path().extension() != ".json") continue;
-      std::string why;
-      FileKind k = classify_file(e.path(), why);
+      std::string why, text;
+      FileKind k = classify_file(e.path(), text, why);
       if (k == FileKind::NotScene) continue;
       if (k == FileKind::Broken) broken[e.path()] = why;
+      else texts[e.path()] = std::move(text);
       files.push_back(e.path());
     }
     std::sort(files.begin(), files.end());
@@ -137,7 +138,7 @@ Command add_regress_command(CLI::App& app) {
       try {
         if (auto b = broken.find(f); b != broken.end()) throw SceneError(f.string() + ": " + b->second);
         ScopedDeadline deadline(run_budget().time_limit_s);
-        Scene sc = read_scene_file(f.string());
+        Scene sc = parse_scene(texts[f], f.string());
         if (!sc.answer) {
           ++skipped;
           row["result"] = "skipped";
@@ -181,8 +182,7 @@ Command add_regress_command(CLI::App& app) {
           for (const auto& d : diff) line += "\n        " + d;
         }
         if (args->certify) {
-          std::ifstream in(f, std::ios::binary);
-          nlohmann::json doc = nlohmann::json::parse(in);
+          nlohmann::json doc = nlohmann::json::parse(texts[f]);
           auto c0 = std::chrono::steady_clock::now();
           nlohmann::json cert = make_certificate(sc, doc);
           CertificateCheck chk = check_certificate(sc, doc, cert);
