@@ -1,8 +1,10 @@
 #pragma once
 // Sub-commands of `eccd` that live in their own source file. Each adds its
 // CLI11 sub-command to the app and returns the function that runs it (called
-// by app/main.cpp inside its error handling: SceneError / std::invalid_argument
-// -> exit 2, any other exception -> exit 1). `run` returns the exit status.
+// by app/main.cpp inside its error handling, README "Exit codes": SceneError,
+// OutputError, std::invalid_argument, filesystem errors -> exit 2;
+// BudgetExhausted, std::bad_alloc -> exit 5; any other exception -> exit 1, an
+// internal error). `run` returns the exit status.
 #include "compare/scene_generator.hpp"
 
 #include <CLI/CLI.hpp>
@@ -10,6 +12,26 @@
 #include <functional>
 
 namespace eccd {
+
+// The resource budget of this run (README "Limits"), set by app/main.cpp from
+// --time-limit and --memory-limit: each pipeline run (a solve, a certify, one
+// scene of regress, one task of report) gets time_limit_s seconds
+// (kernel/budget.hpp ScopedDeadline; 0 = none); the process's address space is
+// capped at memory_limit_mb MiB (0 = none).
+struct RunBudget {
+  double time_limit_s = 300;
+  std::size_t memory_limit_mb = 4096;
+};
+inline RunBudget& run_budget() {
+  static RunBudget b;
+  return b;
+}
+
+// Validates the generator options (also for report) before any work: exit 2
+// for a combination that generates no scene; app/generate.cpp.
+void check_plan(const GeneratePlan& plan);
+// CLI11 check of a --seed text: "" if it is a decimal integer 0 .. 2^64-1.
+std::string check_seed_text(const std::string& text);
 
 struct Command {
   CLI::App* sub = nullptr;

@@ -9,11 +9,13 @@
 #include "compare/scene_generator.hpp"
 #include "kernel/scene_reader.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 namespace fs = std::filesystem;
 
@@ -27,10 +29,36 @@ struct GenerateArgs {
 };
 }  // namespace
 
+// A seed is a decimal integer 0 .. 2^64-1 (CLI11 would wrap "-1" to 2^64-1).
+std::string check_seed_text(const std::string& t) {
+  if (t.empty() || t.size() > 20 || t.find_first_not_of("0123456789") != std::string::npos)
+    return "expected a non-negative integer below 2^64, got " + t.substr(0, 40);
+  if (t.size() == 20 && t > "18446744073709551615") return "expected a non-negative integer below 2^64, got " + t;
+  return "";
+}
+
+void check_plan(const GeneratePlan& plan) {
+  const std::map<std::string, int> dim_of{{"kinematic", 2}, {"euler", 3}, {"affine", 3}};
+  for (const auto& m : plan.motions) {
+    int d = dim_of.at(m);
+    if (std::find(plan.dims.begin(), plan.dims.end(), d) == plan.dims.end())
+      throw std::invalid_argument("--motions " + m + " is a " + std::to_string(d) + "D motion, but --dims does not include " +
+                                  std::to_string(d) + ": that combination generates no scene (kinematic is 2D; euler and affine are 3D)");
+  }
+  const bool deg1 = std::find(plan.degrees.begin(), plan.degrees.end(), 1) != plan.degrees.end();
+  for (const char* f : {"touch", "near-miss"})
+    if (deg1 && std::find(plan.families.begin(), plan.families.end(), f) != plan.families.end())
+      throw std::invalid_argument(std::string("--degrees 1 with the family ") + f +
+                                  ": touch and near-miss scenes need motion degree >= 2 (degree 1 works with "
+                                  "--families colliding,free)");
+  if (plan.dims.empty() || plan.degrees.empty() || plan.families.empty())
+    throw std::invalid_argument("--dims, --degrees and --families must each name at least one value");
+}
+
 void add_plan_options(CLI::App* s, GeneratePlan& plan) {
   s->add_option("--dims", plan.dims, "Dimensions (2: ellipses, kinematic motions; 3: ellipsoids, euler and affine motions)")
       ->delimiter(',')->capture_default_str()->check(CLI::IsMember({2, 3}));
-  s->add_option("--degrees", plan.degrees, "Motion degrees (1..8)")->delimiter(',')->capture_default_str()->check(CLI::Range(1, 8));
+  s->add_option("--degrees", plan.degrees, "Motion degrees (1..8; the families touch and near-miss need 2..8)")->delimiter(',')->capture_default_str()->check(CLI::Range(1, 8));
   s->add_option("--families", plan.families,
                 "Families: colliding, free, touch, near-miss; overlap (linear translations that just overlap, depth "
                 "10^-e, degree 1), graze (linear translations with an isolated touch, degree 1); decimal (a generic "
@@ -62,7 +90,8 @@ Command add_generate_command(CLI::App& app) {
   s->add_option("--out", args->out, "Folder to write the scenes into (created if missing)")->required();
   add_plan_options(s, args->plan);
   s->add_option("--count", args->plan.count, "Scenes per combination (per separation for near-miss)")->capture_default_str()->check(CLI::Range(1, 100000));
-  s->add_option("--seed", args->plan.seed, "Run seed (each scene's seed derives from it and the combination)")->capture_default_str();
+  s->add_option("--seed", args->plan.seed, "Run seed (each scene's seed derives from it and the combination)")
+      ->capture_default_str()->check(check_seed_text);
   s->add_flag("--force", args->force, "Overwrite existing scene files");
   s->add_flag("--json", args->json, "Print the list of written files as JSON");
   s->add_flag("--answer", args->answer,
@@ -70,7 +99,22 @@ Command add_generate_command(CLI::App& app) {
               "contacts) in the file under \"answer\"; progress (scene and exact time) goes to stderr. Exact solving "
               "can take seconds per scene at high degree; nothing is written until every scene is solved");
   c.run = [args]() {
+    check_output_path("--out", args->out);
+    check_plan(args->plan);
+    {  // the folder must be creatable (or exist) before any scene is solved
+      std::error_code ec;
+      fs::path o(args->out);
+      if (fs::exists(o, ec) && !fs::is_directory(o, ec)) throw OutputError(args->out + ": exists and is not a folder");
+      for (fs::path p = o.parent_path(); !p.empty(); p = p.parent_path()) {
+        if (fs::exists(p, ec)) {
+          if (!fs::is_directory(p, ec)) throw OutputError(args->out + ": cannot create the folder: " + p.string() + " is not a folder");
+          break;
+        }
+        if (p == p.parent_path()) break;
+      }
+    }
     auto specs = plan_scenes(args->plan);
+    if (specs.empty()) throw std::invalid_argument("the options select no scene to generate");
     // Build and validate everything before writing anything.
     std::vector<std::pair<fs::path, std::string>> files;
     SolveOptions exact;
@@ -78,7 +122,7 @@ Command add_generate_command(CLI::App& app) {
     double total_s = 0;
     for (std::size_t i = 0; i < specs.size(); ++i) {
       GeneratedScene g = generate_scene(specs[i]);
-      std::string text = compact_json(g.doc.dump(1)) + "\n";
+      std::string text = compact_json(g.doc) + "\n";
       fs::path path = fs::path(args->out) / (g.name + ".json");
       if (fs::exists(path) && !args->force)
         throw std::invalid_argument(path.string() + ": exists (use --force to overwrite)");
@@ -91,7 +135,7 @@ Command add_generate_command(CLI::App& app) {
         double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         total_s += sec;
         g.doc["answer"] = stored_answer_of(report);
-        text = compact_json(g.doc.dump(1)) + "\n";
+        text = compact_json(g.doc) + "\n";
         parse_scene(text, path.string());  // the reader checks the stored answer too
         std::fprintf(stderr, "exact %.3f s, %s, %zu interval(s)\n", sec,
                      report["collides"].get<bool>() ? "collides" : "free", report["intervals"].size());
@@ -99,7 +143,11 @@ Command add_generate_command(CLI::App& app) {
       files.push_back({path, text});
     }
     if (args->answer) std::fprintf(stderr, "exact answers: %zu scene(s) in %.3f s\n", specs.size(), total_s);
-    fs::create_directories(args->out);
+    {
+      std::error_code ec;
+      fs::create_directories(args->out, ec);
+      if (ec) throw OutputError(args->out + ": cannot create the folder: " + ec.message());
+    }
     nlohmann::json list = nlohmann::json::array();
     for (const auto& [path, text] : files) {
       write_text_atomically(path, text);

@@ -4,15 +4,31 @@
 //   eccd generate / report / plot                 app/generate.cpp, app/report.cpp, app/plot.cpp
 //   eccd certify / check-certificate              app/certify.cpp
 //   eccd regress [DIR]                            app/regress.cpp
-// Exit status: 0 success; 1 internal error, a rejected certificate
-// (check-certificate) or a regression (regress); 2 bad input (a scene file or
-// an option); 3 a request the pipeline refuses (e.g. a cycloidal motion in
-// exact arithmetic, also by certify); 4 a scene the certifier cannot certify. Nothing is written to stdout unless the command succeeds.
+// Exit status (README "Exit codes"): 0 success; 1 an internal error (a bug),
+// a rejected certificate (check-certificate) or a regression (regress); 2 bad
+// input or a bad option, including input beyond the input limits and output
+// paths that cannot be written; 3 a request the pipeline refuses (e.g. a
+// cycloidal motion in exact arithmetic, also by certify); 4 a scene the
+// certifier cannot certify; 5 a resource budget (time, memory) exhausted while
+// solving; 130 report interrupted (SIGINT/SIGTERM). Nothing is written to
+// stdout unless the command succeeds.
+//
+// Resource budget (issue 15): --time-limit SECONDS per pipeline run (default
+// 300), --memory-limit MIB for the process (setrlimit RLIMIT_AS, default 4096),
+// --max-file-bytes / --max-digits / --max-degree for scene files
+// (kernel/scene_reader.hpp InputLimits). They are options of `eccd` and of
+// every sub-command.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
 #include "app/solve.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/scene_reader.hpp"
+
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
@@ -22,13 +38,40 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <regex>
+#include <new>
 #include <sstream>
 
 namespace fs = std::filesystem;
 using namespace eccd;
 
 namespace {
+
+// The backstop of --time-limit for commands that are one pipeline run (solve,
+// certify, check-certificate): if a loop does not ask the deadline
+// (kernel/budget.hpp), SIGALRM at 1.5 x the limit + 2 s ends the process with
+// exit 5 (nothing on stdout; output files are only ever renamed into place).
+void on_backstop(int) {
+  static const char msg[] =
+      "eccd: resource budget exhausted: the time limit passed (--time-limit) and the run did not stop by itself; ended\n";
+  ssize_t n = write(2, msg, sizeof msg - 1);
+  (void)n;
+  _exit(5);
+}
+void arm_backstop(double seconds) {
+  if (seconds <= 0) return;
+  double at = seconds * 1.5 + 2;
+  struct sigaction sa {};
+  sa.sa_handler = on_backstop;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGALRM, &sa, nullptr);
+  itimerval t{};
+  t.it_value.tv_sec = time_t(at);
+  t.it_value.tv_usec = suseconds_t((at - double(time_t(at))) * 1e6);
+  setitimer(ITIMER_REAL, &t, nullptr);
+}
+
+// A message for stderr: at most 2000 characters (a user's 10 MB key is not echoed whole).
+std::string cut_message(const std::string& m) { return m.size() > 2000 ? m.substr(0, 2000) + "... (cut)" : m; }
 
 std::string short_answer(const nlohmann::json& r) {
   if (!r.contains("collides")) return "error";
@@ -46,10 +89,15 @@ std::string short_answer(const nlohmann::json& r) {
 // Stores the spec's answer (the four keys) into the scene file: written to a
 // temporary file first and renamed, so a failure leaves the file untouched.
 void write_answer(const std::string& path, const nlohmann::json& report) {
-  std::ifstream in(path);
-  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(in);
+  std::ifstream in(path, std::ios::binary);
+  nlohmann::ordered_json doc;
+  try {
+    doc = nlohmann::ordered_json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw SceneError(path + ": the file changed while it was solved (" + e.what() + "): the answer is not written");
+  }
   doc["answer"] = stored_answer_of(report);
-  write_text_atomically(path, compact_json(doc.dump(1)) + "\n");
+  write_text_atomically(path, compact_json(doc) + "\n");
 }
 
 int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool json) {
@@ -76,6 +124,7 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
       Scene s = read_scene_file(f.string());
       for (const auto& c : cols) {
         try {
+          ScopedDeadline deadline(run_budget().time_limit_s);
           nlohmann::json r = solve_scene(s, c.opt);
           js[c.label] = r;
           std::string cell = short_answer(r);
@@ -135,6 +184,7 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
 int main(int argc, char** argv) {
   CLI::App app{"eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and ellipsoids"};
   app.require_subcommand(1);
+  app.fallthrough();  // before the sub-commands are added: they inherit it (the budget options below work after them too)
 
   std::string scene_path, arith = "exact", basis = "bernstein";
   int variant = 0;
@@ -167,6 +217,23 @@ int main(int argc, char** argv) {
   table->add_option("--mpfr", mpfr_bits, "MPFR precisions in bits (repeatable)")->capture_default_str();
   table->add_flag("--json", table_json, "Print all results as one JSON array instead of the table");
 
+  // The budget: options of eccd and (through fallthrough) of every sub-command.
+  InputLimits& lim = input_limits();
+  app.add_option("--time-limit", run_budget().time_limit_s,
+                 "Seconds each pipeline run may take (a solve, a certify, one scene of regress, one task of report); "
+                 "beyond it the exact pipeline stops with exit 5 and floating ones report undecided; 0 = none")
+      ->capture_default_str()->check(CLI::Range(0.0, 1e9));
+  app.add_option("--memory-limit", run_budget().memory_limit_mb,
+                 "Address space of the process in MiB (setrlimit RLIMIT_AS); exhausted: exit 5; 0 = none")
+      ->capture_default_str()->check(CLI::Range(std::size_t(0), std::size_t(1) << 30));
+  app.add_option("--max-file-bytes", lim.max_file_bytes, "Largest scene file read (bytes); larger: exit 2")
+      ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+  app.add_option("--max-digits", lim.max_digits,
+                 "Most decimal digits in the numerator or denominator of a scene's number (its exact value in lowest terms); more: exit 2")
+      ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
+  app.add_option("--max-degree", lim.max_degree, "Highest degree of a polynomial in a scene file; higher: exit 2")
+      ->capture_default_str()->check(CLI::Range(0, 100000));
+
   std::vector<Command> commands{add_generate_command(app),  add_report_command(app),           add_plot_command(app),
                                 add_certify_command(app),   add_check_certificate_command(app), add_regress_command(app)};
 
@@ -175,7 +242,17 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  if (run_budget().memory_limit_mb > 0) {
+    rlimit rl{};
+    rl.rlim_cur = rl.rlim_max = rlim_t(run_budget().memory_limit_mb) << 20;
+    rlimit old{};
+    if (getrlimit(RLIMIT_AS, &old) == 0 && old.rlim_max != RLIM_INFINITY && old.rlim_max < rl.rlim_max) rl.rlim_cur = rl.rlim_max = old.rlim_max;
+    setrlimit(RLIMIT_AS, &rl);
+  }
 
+  std::ostringstream hint;
+  hint << " (--time-limit " << run_budget().time_limit_s << " s, --memory-limit " << run_budget().memory_limit_mb << " MiB)";
+  const std::string budget_hint = hint.str();
   try {
     if (*solve) {
       SolveOptions opt;
@@ -189,14 +266,17 @@ int main(int argc, char** argv) {
       if (input_opt->count() && opt.arith.kind != Arithmetic::Double && opt.arith.kind != Arithmetic::Mpfr)
         std::cerr << "eccd solve: warning: --input applies to double and mpfr only; " << opt.arith.name()
                   << " starts from the exactly prepared scene\n";
+      arm_backstop(run_budget().time_limit_s);
       Scene s = read_scene_file(scene_path);
       nlohmann::json r;
       try {
+        ScopedDeadline deadline(run_budget().time_limit_s);
         r = solve_scene(s, opt);
       } catch (const std::invalid_argument& e) {
         std::cerr << "eccd solve: " << scene_path << ": " << e.what() << "\n";
         return 3;
       }
+      { itimerval off{}; setitimer(ITIMER_REAL, &off, nullptr); }  // solved: the backstop is not needed for writing
       if (store) {
         if (opt.arith.kind != Arithmetic::Exact) throw std::invalid_argument("--write-answer stores exact answers only: use --arith exact");
         write_answer(scene_path, r);
@@ -207,15 +287,47 @@ int main(int argc, char** argv) {
     }
     if (*table) return run_table(dir, mpfr_bits, table_json);
     for (auto& c : commands)
-      if (*c.sub) return c.run();
+      if (*c.sub) {
+        // certify and check-certificate are one pipeline run each; regress and
+        // report set the deadline per scene / task themselves.
+        const bool one_run = c.sub->get_name() == "certify" || c.sub->get_name() == "check-certificate";
+        ScopedDeadline deadline(one_run ? run_budget().time_limit_s : 0);
+        if (one_run) arm_backstop(run_budget().time_limit_s);
+        if (c.sub->get_name() != "check-certificate") return c.run();
+        try {
+          return c.run();
+        } catch (const std::invalid_argument& e) {  // e.g. a cycloidal scene: name the file if the message does not
+          const std::string scene = c.sub->get_option("SCENE")->as<std::string>();
+          std::string m = e.what();
+          if (m.find(scene) == std::string::npos) throw std::invalid_argument(scene + ": " + m);
+          throw;
+        }
+      }
   } catch (const SceneError& e) {
-    std::cerr << "eccd: " << e.what() << "\n";
+    std::cerr << "eccd: " << cut_message(e.what()) << "\n";
+    return 2;
+  } catch (const OutputError& e) {
+    std::cerr << "eccd: " << cut_message(e.what()) << "\n";
     return 2;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "eccd: " << e.what() << "\n";
+    std::cerr << "eccd: " << cut_message(e.what()) << "\n";
     return 2;
+  } catch (const fs::filesystem_error& e) {  // a file or folder the user named: missing, unreadable, read-only
+    std::string p = e.path1().string();
+    if (!e.path2().empty()) p += " -> " + e.path2().string();
+    std::cerr << "eccd: " << cut_message(p) << ": " << e.code().message() << "\n";
+    return 2;
+  } catch (const nlohmann::json::parse_error& e) {
+    std::cerr << "eccd: malformed JSON: " << cut_message(e.what()) << "\n";
+    return 2;
+  } catch (const BudgetExhausted& e) {
+    std::cerr << "eccd: resource budget exhausted: " << cut_message(e.what()) << budget_hint << "\n";
+    return 5;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "eccd: resource budget exhausted: out of memory" << budget_hint << "\n";
+    return 5;
   } catch (const std::exception& e) {
-    std::cerr << "eccd: internal error: " << e.what() << "\n";
+    std::cerr << "eccd: internal error: " << cut_message(e.what()) << "\n";
     return 1;
   }
   return 0;

@@ -36,10 +36,12 @@
 //   - 3D contact points (display only): u0 = argmax F(., t0) on (0, 1), the
 //     double root λ0 = (u0 - 1)/u0 of f, and the null vector of λ0 A - B
 //     (largest column of its adjugate), A and B as the pipelines build them.
+#include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/solve.hpp"
 #include "floating/double_traits.hpp"
 #include "kernel/characteristic_polynomial.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/discriminant.hpp"
 #include "kernel/ellipsoid_function.hpp"
 #include "kernel/motion.hpp"
@@ -476,10 +478,14 @@ std::string answer_words(const json& rep) {
 
 int run_plot(const PlotOptions& o) {
   Scene s = read_scene_file(o.scene);  // SceneError -> exit 2
-  for (const std::string& f : {o.out, o.data}) {
+  for (const auto& [opt_name, f] : {std::pair<std::string, std::string>{"--output", o.out}, {"--data", o.data}}) {
+    if (f.empty()) continue;
+    check_output_path(opt_name, f);
     fs::path dir = fs::path(f).parent_path();
-    if (!f.empty() && !dir.empty() && !fs::is_directory(dir))
-      throw std::invalid_argument(f + ": folder " + dir.string() + " does not exist");
+    std::error_code ec;
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+      throw OutputError(f + ": folder " + dir.string() + " does not exist");
+    if (fs::is_directory(f, ec)) throw OutputError(f + ": cannot write the file: it is a directory");
   }
   bool cyclo = std::holds_alternative<CycloidalMotion>(s.a.motion) || std::holds_alternative<CycloidalMotion>(s.b.motion);
   std::string arith_text = o.arith, arith_note;
@@ -492,6 +498,7 @@ int run_plot(const PlotOptions& o) {
   opt.arith = parse_arithmetic(arith_text);  // std::invalid_argument -> exit 2
   json rep;
   try {
+    ScopedDeadline deadline(run_budget().time_limit_s);
     rep = solve_scene(s, opt);
     if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
   } catch (const std::invalid_argument& e) {
@@ -543,7 +550,11 @@ int run_plot(const PlotOptions& o) {
   {
     std::ofstream f(tmp_data);
     f << data.dump() << "\n";
-    if (!f) { cleanup(); throw std::runtime_error("cannot write " + tmp_data.string()); }
+    if (!f) {
+      int e = errno;
+      cleanup();
+      throw OutputError(tmp_data.string() + ": cannot write the file: " + errno_text(e));
+    }
   }
   const std::string cmd = quote(python) + " " + quote(script.string()) + " " + quote(tmp_data.string()) + " " +
                           quote(tmp_png.string()) + " 1>&2";
@@ -555,8 +566,16 @@ int run_plot(const PlotOptions& o) {
               << "); its messages are above; nothing was written\n";
     return 1;
   }
-  fs::rename(tmp_png, out);
-  if (!o.data.empty()) fs::rename(tmp_data, o.data);
+  if (std::rename(tmp_png.c_str(), out.c_str()) != 0) {
+    int e = errno;
+    cleanup();
+    throw OutputError(out.string() + ": cannot write the file: " + errno_text(e));
+  }
+  if (!o.data.empty() && std::rename(tmp_data.c_str(), o.data.c_str()) != 0) {
+    int e = errno;
+    cleanup();
+    throw OutputError(o.data + ": cannot write the file: " + errno_text(e));
+  }
   else fs::remove(tmp_data, ec);
   std::cout << "wrote " << out.string() << ": scene " << s.name << " (" << s.dim << "D), " << answer_words(rep)
             << " [" << opt.arith.name() << (rep["certified"].get<bool>() ? ", certified" : ", not certified") << "]";

@@ -7,6 +7,7 @@
 #include "compare/harness.hpp"
 #include "compare/regress.hpp"
 #include "compare/verdict.hpp"
+#include "kernel/budget.hpp"
 #include "exact/certificate.hpp"
 #include "exact/certificate_check.hpp"
 #include "kernel/scene_reader.hpp"
@@ -32,13 +33,35 @@ struct RegressArgs {
   double tol = 1e-6;
 };
 
-// Does this JSON file claim to be a scene? (Other JSON, e.g. certificates, is skipped.)
-bool is_scene_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::string head(4096, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(std::size_t(in.gcount()));
-  return head.find("ellipse-ccd-scene/") != std::string::npos;
+// What a .json file under DIR is (issue 15: never skip a scene silently).
+// Decided by parsing the whole file: an object whose "format" is the scene
+// format is a scene; a file that does not parse, or an object that looks like
+// a scene (a "format" starting with "ellipse-ccd-scene", or the keys "dim",
+// "a" and "b") with another or no format, is reported as an error; other JSON
+// (certificates, plot data: another "format") is not a scene.
+enum class FileKind { Scene, NotScene, Broken };
+FileKind classify_file(const fs::path& p, std::string& text, std::string& why) {
+  try {
+    text = read_file_bytes(p.string());
+  } catch (const SceneError& e) {
+    why = e.what();
+    why = why.substr(std::min(why.size(), p.string().size() + 2));  // without the path (the caller adds it)
+    return FileKind::Broken;
+  }
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded()) { why = "not a JSON text (malformed or truncated): cannot tell whether it is a scene"; return FileKind::Broken; }
+  if (!j.is_object()) return FileKind::NotScene;
+  auto f = j.find("format");
+  const std::string scene_format = "ellipse-ccd-scene/1";
+  if (f != j.end() && f->is_string() && f->get<std::string>() == scene_format) return FileKind::Scene;
+  const bool scene_like = (f != j.end() && f->is_string() && f->get<std::string>().rfind("ellipse-ccd-scene", 0) == 0) ||
+                          (j.contains("dim") && j.contains("a") && j.contains("b"));
+  if (scene_like) {
+    std::string got = f == j.end() ? std::string("no \"format\" key") : "\"format\" " + f->dump().substr(0, 80);
+    why = "looks like a scene but has " + got + " (a scene has \"format\": \"" + scene_format + "\")";
+    return FileKind::Broken;
+  }
+  return FileKind::NotScene;
 }
 
 std::string answer_summary(const Answer& a) {
@@ -85,9 +108,20 @@ Command add_regress_command(CLI::App& app) {
   c.run = [args]() {
     if (!fs::is_directory(args->dir)) throw std::invalid_argument(args->dir + ": not a directory");
     std::vector<fs::path> files;
-    for (auto& e : fs::recursive_directory_iterator(args->dir))
-      if (e.is_regular_file() && e.path().extension() == ".json" && is_scene_file(e.path())) files.push_back(e.path());
+    std::map<fs::path, std::string> broken;  // files that may be scenes but cannot be read as such
+    std::map<fs::path, std::string> texts;   // each scene's bytes, read once
+    for (auto& e : fs::recursive_directory_iterator(args->dir)) {
+      if (!e.is_regular_file() || e.path().extension() != ".json") continue;
+      std::string why, text;
+      FileKind k = classify_file(e.path(), text, why);
+      if (k == FileKind::NotScene) continue;
+      if (k == FileKind::Broken) broken[e.path()] = why;
+      else texts[e.path()] = std::move(text);
+      files.push_back(e.path());
+    }
     std::sort(files.begin(), files.end());
+    if (files.empty())
+      throw std::invalid_argument(args->dir + ": no scene found (no *.json file with \"format\": \"ellipse-ccd-scene/1\")");
     auto t0 = std::chrono::steady_clock::now();
     int agree = 0, differ = 0, failed = 0, skipped = 0, escalated = 0;
     const bool certified_mode = args->arith != "exact";
@@ -102,7 +136,9 @@ Command add_regress_command(CLI::App& app) {
       nlohmann::json row = {{"scene", name}};
       std::string line;
       try {
-        Scene sc = read_scene_file(f.string());
+        if (auto b = broken.find(f); b != broken.end()) throw SceneError(f.string() + ": " + b->second);
+        ScopedDeadline deadline(run_budget().time_limit_s);
+        Scene sc = parse_scene(texts[f], f.string());
         if (!sc.answer) {
           ++skipped;
           row["result"] = "skipped";
@@ -146,8 +182,7 @@ Command add_regress_command(CLI::App& app) {
           for (const auto& d : diff) line += "\n        " + d;
         }
         if (args->certify) {
-          std::ifstream in(f, std::ios::binary);
-          nlohmann::json doc = nlohmann::json::parse(in);
+          nlohmann::json doc = nlohmann::json::parse(texts[f]);
           auto c0 = std::chrono::steady_clock::now();
           nlohmann::json cert = make_certificate(sc, doc);
           CertificateCheck chk = check_certificate(sc, doc, cert);

@@ -10,13 +10,17 @@
 // output does not depend on the schedule. `--shard i/n` runs every n-th task
 // (for several machines) and writes only the raw part; `--merge` joins parts.
 // Output goes to OUT.partial and replaces OUT only when everything succeeded.
+#include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "compare/harness.hpp"
+#include "kernel/budget.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/scene_reader.hpp"
 
+#include <signal.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -43,6 +47,7 @@ namespace {
 struct ReportArgs {
   std::string name = "default";
   std::string out;
+  bool out_given = false;  // --out given (even as '')
   GeneratePlan plan;
   HarnessOptions harness;
   std::string cases = "cases";
@@ -151,6 +156,16 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
 
 // ---- helpers -----------------------------------------------------------------
 
+// SIGINT / SIGTERM while the workers run: the parent forwards the signal to its
+// workers, waits for them, removes NAME.partial and exits 130 (128 + SIGINT).
+volatile sig_atomic_t g_interrupted = 0;
+void on_interrupt(int sig) { g_interrupted = sig; }
+
+struct Interrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -200,7 +215,7 @@ std::string now_iso() {
 void write_file(const fs::path& p, const std::string& text) {
   std::ofstream o(p);
   o << text;
-  if (!o) throw std::runtime_error("cannot write " + p.string());
+  if (!o) throw OutputError(p.string() + ": cannot write: " + errno_text(errno));
 }
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> v;
@@ -253,14 +268,29 @@ std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportA
   auto* sh = new (mem) Shared{{0}, {0}};
   std::fflush(nullptr);
   std::vector<pid_t> kids;
+  g_interrupted = 0;
+  struct sigaction sa {}, old_int{}, old_term{};
+  sa.sa_handler = on_interrupt;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &old_int);
+  sigaction(SIGTERM, &sa, &old_term);
+  struct Restore {
+    struct sigaction i, t;
+    ~Restore() { sigaction(SIGINT, &i, nullptr); sigaction(SIGTERM, &t, nullptr); }
+  } restore{old_int, old_term};
   for (int w = 0; w < jobs; ++w) {
     pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {
+      signal(SIGINT, SIG_DFL);
+      signal(SIGTERM, SIG_DFL);
+      prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the parent
+      if (getppid() == 1) _exit(1);
       try {
       std::ofstream o(work / ("worker-" + std::to_string(w) + ".txt"));
       for (long k; (k = sh->next.fetch_add(1)) < long(tasks.size());) {
         try {
+          ScopedDeadline deadline(run_budget().time_limit_s);
           for (const auto& l : run_task(tasks[k], a, map)) o << k << "\t" << l << "\n";
         } catch (const std::exception& e) {
           std::string msg = e.what();
@@ -283,6 +313,12 @@ std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportA
   double last_print = -1e9;
   int running = jobs, bad = 0;
   while (running > 0) {
+    if (g_interrupted) {  // stop the workers now, then report the interruption
+      for (pid_t k : kids) kill(k, SIGKILL);
+      for (pid_t k : kids) waitpid(k, nullptr, 0);
+      munmap(mem, sizeof(Shared));
+      throw Interrupted(std::string("interrupted by ") + (g_interrupted == SIGINT ? "SIGINT" : "SIGTERM"));
+    }
     int status = 0;
     pid_t r = waitpid(-1, &status, WNOHANG);
     if (r > 0) {
@@ -290,7 +326,7 @@ std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportA
       if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) ++bad;
       continue;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    if (!g_interrupted) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     long done = sh->done.load();
     if (el - last_print >= (tty ? 0.5 : 10.0)) {
@@ -337,10 +373,46 @@ void run_figures(const fs::path& dir) {
                              ". It needs python3 with matplotlib: apt-get install python3-matplotlib");
 }
 
-void finish_output(const fs::path& partial, const fs::path& out) {
-  if (fs::exists(out)) fs::remove_all(out);
-  fs::rename(partial, out);
+// Output folders: every folder `report` writes carries this marker, and only
+// a folder with it (or an older report folder holding nothing but report files)
+// is ever replaced or removed (issue 15, item 1).
+const char* const kMarker = ".eccd-report";
+
+bool looks_like_old_report(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_regular_file(dir / "meta.json", ec)) return false;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string n = e.path().filename().string();
+    if (!e.is_regular_file()) return false;
+    if (n != "report.md" && n != "results.csv" && n != "failure_map.csv" && n != "meta.json" && e.path().extension() != ".png")
+      return false;
+  }
+  return !ec;
 }
+
+// Where the output goes, validated before anything is touched.
+fs::path output_folder(const ReportArgs& a, const std::string& name) {
+  if (a.out_given) {
+    check_output_path("--out", a.out);
+    return fs::path(a.out);
+  }
+  check_output_name("--name", a.name);
+  return fs::path("reports") / name;
+}
+
+// Makes a fresh NAME.partial (a leftover one of ours is removed), marked as ours.
+void start_partial(const fs::path& partial, const fs::path& out) {
+  check_replaceable(out, kMarker, looks_like_old_report);
+  remove_our_folder(partial, kMarker);
+  std::error_code ec;
+  fs::create_directories(partial, ec);
+  if (ec) throw OutputError(partial.string() + ": cannot create the output folder: " + ec.message());
+  std::ofstream m(partial / kMarker);
+  m << "written by eccd report; a folder with this file may be replaced by the next eccd report of the same name\n";
+  if (!m) throw OutputError((partial / kMarker).string() + ": cannot write: " + errno_text(errno));
+}
+
+void finish_output(const fs::path& partial, const fs::path& out) { replace_output_folder(partial, out, kMarker, looks_like_old_report); }
 
 // ---- the two modes -----------------------------------------------------------
 
@@ -359,8 +431,12 @@ int run_report(const ReportArgs& a) {
     }
     if (shard_n < 1 || shard_i < 0 || shard_i >= shard_n) throw std::invalid_argument("--shard " + a.shard + ": expected i/n with 0 <= i < n");
   }
-  fs::path out = a.out.empty() ? fs::path("reports") / a.name : fs::path(a.out);
-  if (shard_n > 1 && a.out.empty()) out = fs::path("reports") / (a.name + "-shard-" + std::to_string(shard_i) + "-of-" + std::to_string(shard_n));
+  if (a.scenes.empty()) check_plan(a.plan);
+  fs::path out = output_folder(a, shard_n > 1 ? a.name + "-shard-" + std::to_string(shard_i) + "-of-" + std::to_string(shard_n) : a.name);
+  fs::path partial = out;
+  partial += ".partial";
+  check_replaceable(out, kMarker, looks_like_old_report);  // before any work: never replace what is not ours
+  check_replaceable(partial, kMarker);
 
   // Tasks: generated scenes (or scene files), the shipped cases, the map cells.
   std::vector<Task> tasks;
@@ -419,12 +495,16 @@ int run_report(const ReportArgs& a) {
                shard_n > 1 ? (", shard " + a.shard + ": " + std::to_string(mine.size()) + " task(s)").c_str() : "",
                out.string().c_str());
 
-  fs::path partial = out;
-  partial += ".partial";
-  if (fs::exists(partial)) fs::remove_all(partial);
-  fs::create_directories(partial);
+  start_partial(partial, out);
   std::vector<std::string> failures;
-  auto lines = run_tasks(mine, a, map ? &*map : nullptr, partial, failures);
+  std::vector<std::string> lines;
+  try {
+    lines = run_tasks(mine, a, map ? &*map : nullptr, partial, failures);
+  } catch (const Interrupted&) {
+    std::error_code ec;
+    fs::remove_all(partial, ec);
+    throw;
+  }
   for (const auto& f : failures) std::fprintf(stderr, "eccd report: failed: %s\n", f.c_str());
 
   std::vector<std::string> rows, cells;
@@ -472,6 +552,8 @@ int run_report(const ReportArgs& a) {
   meta["shard"] = shard_n > 1 ? nlohmann::json(a.shard) : nlohmann::json(nullptr);
   meta["scene_count"] = generated + from_cases;
   meta["failed"] = failures;
+  meta["result_rows"] = rows.size();  // --merge checks a part's row counts against these
+  meta["map_rows"] = cells.size();
   if (map) {
     meta["failure_map"] = {{"scene", map->scene},
                            {"x_input", "constant coefficient of B's x-translation entry m[0][2] (nearest double " + std::to_string(map->x0) + ")"},
@@ -493,47 +575,133 @@ int run_report(const ReportArgs& a) {
   return failures.empty() ? 0 : 1;
 }
 
+// A file of a part, read whole (merge validation needs the exact bytes).
+std::string read_part_file(const fs::path& p, bool required) {
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec)) {
+    if (!required) return {};
+    throw std::invalid_argument(p.string() + ": missing (not an `eccd report --shard` part)");
+  }
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::invalid_argument(p.string() + ": cannot read the file: " + errno_text(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Strict "i/n": digits only, 0 <= i < n <= 100000.
+std::pair<int, int> parse_shard_text(const std::string& t, const std::string& where) {
+  auto bad = [&]() -> std::pair<int, int> {
+    throw std::invalid_argument(where + ": shard \"" + t.substr(0, 40) + "\" is not i/n with 0 <= i < n");
+  };
+  auto slash = t.find('/');
+  if (slash == std::string::npos) return bad();
+  auto num = [&](const std::string& d) {
+    if (d.empty() || d.size() > 6 || d.find_first_not_of("0123456789") != std::string::npos) bad();
+    return std::stoi(d);
+  };
+  int i = num(t.substr(0, slash)), n = num(t.substr(slash + 1));
+  if (n < 1 || n > 100000 || i >= n) return bad();
+  return {i, n};
+}
+
+// The complete lines of a CSV part after its header; a truncated last line or a
+// row with the wrong number of fields is an error naming the file and the line.
+std::vector<std::string> csv_rows(const std::string& text, const std::string& header, const fs::path& file) {
+  auto fields = [](const std::string& l) { return std::count(l.begin(), l.end(), ',') + 1; };
+  if (!text.empty() && text.back() != '\n')
+    throw std::invalid_argument(file.string() + ": truncated (the last line is incomplete)");
+  std::vector<std::string> lines = split(text, '\n');
+  if (!lines.empty() && lines.back().empty()) lines.pop_back();
+  if (lines.empty() || lines[0] != header) throw std::invalid_argument(file.string() + ": line 1: not the expected header");
+  std::vector<std::string> rows(lines.begin() + 1, lines.end());
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (fields(rows[k]) != fields(header))
+      throw std::invalid_argument(file.string() + ": line " + std::to_string(k + 2) + ": " + std::to_string(fields(rows[k])) +
+                                  " fields, expected " + std::to_string(fields(header)) + " (truncated or edited?)");
+  return rows;
+}
+
 int run_merge(const ReportArgs& a) {
   if (a.merge.size() < 1) throw std::invalid_argument("--merge needs the part folders");
-  fs::path out = a.out.empty() ? fs::path("reports") / a.name : fs::path(a.out);
-  std::vector<std::string> rows, cells;
-  nlohmann::json meta;
-  std::vector<bool> seen;
-  double wall = 0;
-  std::string header = results_csv_header();
-  for (const auto& dir : a.merge) {
-    fs::path d(dir);
-    std::ifstream mi(d / "meta.json");
-    if (!mi) throw std::invalid_argument(dir + ": no meta.json (not an `eccd report --shard` part)");
-    nlohmann::json m = nlohmann::json::parse(mi);
-    int n = m.value("shards", 1);
-    if (meta.is_null()) {
-      meta = m;
-      seen.assign(n, false);
-    } else {
-      for (const char* k : {"seed", "mpfr_bits", "degrees", "dims", "families", "separations", "count_per_combination", "grid", "shards"})
-        if (m[k] != meta[k]) throw std::invalid_argument(dir + ": was run with a different " + std::string(k) + " than " + a.merge[0]);
-    }
-    auto sh = m["shard"].is_string() ? split(m["shard"].get<std::string>(), '/') : std::vector<std::string>{"0", "1"};
-    int i = std::stoi(sh[0]);
-    if (seen[i]) throw std::invalid_argument(dir + ": shard " + std::to_string(i) + " given twice");
-    seen[i] = true;
-    wall += m.value("wall_seconds", 0.0);
-    std::ifstream ri(d / "results.csv");
-    std::string line;
-    if (!std::getline(ri, line) || line != header) throw std::invalid_argument((d / "results.csv").string() + ": missing or not a results table");
-    while (std::getline(ri, line)) rows.push_back(line);
-    std::ifstream fi(d / "failure_map.csv");
-    if (fi && std::getline(fi, line))
-      while (std::getline(fi, line)) cells.push_back(line);
-  }
-  for (std::size_t i = 0; i < seen.size(); ++i)
-    if (!seen[i]) throw std::invalid_argument("--merge: shard " + std::to_string(i) + "/" + std::to_string(seen.size()) + " is missing");
-  sort_results(rows);
+  fs::path out = output_folder(a, a.name);
   fs::path partial = out;
   partial += ".partial";
-  if (fs::exists(partial)) fs::remove_all(partial);
-  fs::create_directories(partial);
+  check_replaceable(out, kMarker, looks_like_old_report);
+  check_replaceable(partial, kMarker);
+  std::vector<std::string> rows, cells;
+  nlohmann::json meta;
+  std::vector<std::string> seen;  // part folder per shard index
+  double wall = 0;
+  std::string header = results_csv_header();
+  const std::string map_header = "pipeline,ix,iy,dx_ulps,dy_ulps,answer,exact";
+  for (const auto& dir : a.merge) {
+    fs::path d(dir);
+    const fs::path mp = d / "meta.json";
+    std::error_code ec;
+    if (!fs::is_directory(d, ec)) throw std::invalid_argument(dir + ": not a folder (an `eccd report --shard` part)");
+    std::string mtext = read_part_file(mp, true);
+    nlohmann::json m;
+    try {
+      m = nlohmann::json::parse(mtext);
+    } catch (const nlohmann::json::exception& e) {
+      throw std::invalid_argument(mp.string() + ": malformed JSON (truncated?): " + std::string(e.what()));
+    }
+    if (!m.is_object()) throw std::invalid_argument(mp.string() + ": not a report's meta.json (expected a JSON object)");
+    const nlohmann::json& shards = m["shards"];
+    if (!shards.is_number_unsigned() || shards.get<std::uint64_t>() < 1 || shards.get<std::uint64_t>() > 100000)
+      throw std::invalid_argument(mp.string() + ": /shards: expected a positive integer");
+    int n = shards.get<int>(), i = 0;
+    if (m["shard"].is_string()) {
+      auto [si, sn] = parse_shard_text(m["shard"].get<std::string>(), mp.string() + ": /shard");
+      if (sn != n) throw std::invalid_argument(mp.string() + ": /shard says " + std::to_string(sn) + " shards but /shards is " + std::to_string(n));
+      i = si;
+    } else if (!m["shard"].is_null() || n != 1) {
+      throw std::invalid_argument(mp.string() + ": /shard: expected \"i/n\"");
+    }
+    if (!m["command"].is_string()) throw std::invalid_argument(mp.string() + ": /command: expected a string");
+    if (!m["wall_seconds"].is_number()) throw std::invalid_argument(mp.string() + ": /wall_seconds: expected a number");
+    if (meta.is_null()) {
+      meta = m;
+      seen.assign(std::size_t(n), "");
+    } else {
+      for (const char* k : {"seed", "mpfr_bits", "degrees", "dims", "families", "separations", "count_per_combination", "grid", "shards", "failure_map"})
+        if (m[k] != meta[k]) throw std::invalid_argument(dir + ": was run with a different " + std::string(k) + " than " + a.merge[0]);
+    }
+    if (!seen[std::size_t(i)].empty())
+      throw std::invalid_argument(dir + ": shard " + std::to_string(i) + "/" + std::to_string(n) + " given twice (also " + seen[std::size_t(i)] + ")");
+    seen[std::size_t(i)] = dir;
+    wall += m["wall_seconds"].get<double>();
+    const fs::path rp = d / "results.csv";
+    std::vector<std::string> r = csv_rows(read_part_file(rp, true), header, rp);
+    if (m.contains("result_rows") && (!m["result_rows"].is_number_unsigned() || m["result_rows"].get<std::uint64_t>() != r.size()))
+      throw std::invalid_argument(rp.string() + ": " + std::to_string(r.size()) + " row(s), but " + mp.string() + " says " +
+                                  m["result_rows"].dump() + " (truncated?)");
+    rows.insert(rows.end(), r.begin(), r.end());
+    const fs::path fp = d / "failure_map.csv";
+    std::string ftext = read_part_file(fp, !m["failure_map"].is_null());
+    if (!ftext.empty() || !m["failure_map"].is_null()) {
+      std::vector<std::string> c = csv_rows(ftext, map_header, fp);
+      if (m.contains("map_rows") && (!m["map_rows"].is_number_unsigned() || m["map_rows"].get<std::uint64_t>() != c.size()))
+        throw std::invalid_argument(fp.string() + ": " + std::to_string(c.size()) + " row(s), but " + mp.string() + " says " +
+                                    m["map_rows"].dump() + " (truncated?)");
+      cells.insert(cells.end(), c.begin(), c.end());
+    }
+  }
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (seen[i].empty()) throw std::invalid_argument("--merge: shard " + std::to_string(i) + "/" + std::to_string(seen.size()) + " is missing");
+  if (!meta["failure_map"].is_null() &&
+      (!meta["failure_map"].is_object() || !meta["failure_map"]["pipelines"].is_array() ||
+       !std::all_of(meta["failure_map"]["pipelines"].begin(), meta["failure_map"]["pipelines"].end(), [](const nlohmann::json& x) { return x.is_string(); })))
+    throw std::invalid_argument((fs::path(a.merge[0]) / "meta.json").string() + ": /failure_map/pipelines: expected an array of strings");
+  for (const auto& c : cells) {  // sort_map reads ix and iy as integers
+    auto f = split(c, ',');
+    for (int k : {1, 2})
+      if (f[std::size_t(k)].empty() || f[std::size_t(k)].size() > 6 || f[std::size_t(k)].find_first_not_of("0123456789") != std::string::npos)
+        throw std::invalid_argument("--merge: failure_map.csv row \"" + c.substr(0, 80) + "\": ix and iy must be small non-negative integers");
+  }
+  sort_results(rows);
+  start_partial(partial, out);
   std::string csv = header + "\n";
   for (auto& r : rows) csv += r + "\n";
   write_file(partial / "results.csv", csv);
@@ -547,6 +715,8 @@ int run_merge(const ReportArgs& a) {
   meta["command"] = meta["command"].get<std::string>() + "  (parts joined by: " + command_line() + ")";
   meta["wall_seconds"] = wall;
   meta["shard"] = nullptr;
+  meta["result_rows"] = rows.size();
+  meta["map_rows"] = cells.size();
   write_file(partial / "meta.json", meta.dump(2) + "\n");
   if (!a.no_figures) run_figures(partial);
   finish_output(partial, out);
@@ -571,9 +741,14 @@ Command add_report_command(CLI::App& app) {
       "time budget (--budget), against the exact pipeline, and write "
       "reports/NAME/: report.md, results.csv, failure_map.csv, meta.json and PNG figures.");
   auto* s = c.sub;
-  s->add_option("--name", a->name, "Report name: the output goes to reports/NAME")->capture_default_str();
-  s->add_option("--out", a->out, "Output folder instead of reports/NAME (replaced only when the run succeeds)");
-  s->add_option("--seed", a->plan.seed, "Run seed (same seed, same scenes, same numbers apart from timings)")->capture_default_str();
+  s->add_option("--name", a->name,
+                "Report name: the output goes to reports/NAME (a plain name: no '/', no '..'; an existing reports/NAME is "
+                "replaced only if an earlier eccd report wrote it)")->capture_default_str();
+  auto* out_opt = s->add_option("--out", a->out,
+                                "Output folder instead of reports/NAME (replaced only when the run succeeds, and only if an "
+                                "earlier eccd report wrote it); no '..'");
+  s->add_option("--seed", a->plan.seed, "Run seed (same seed, same scenes, same numbers apart from timings)")
+      ->capture_default_str()->check(check_seed_text);
   s->add_option("--count", a->plan.count, "Generated scenes per dimension x degree x family x motion (x separation)")
       ->capture_default_str()->check(CLI::Range(0, 100000));
   add_plan_options(s, a->plan);
@@ -598,7 +773,15 @@ Command add_report_command(CLI::App& app) {
       ->capture_default_str()->check(CLI::Range(2, 1024));
   s->add_flag("--no-map", a->no_map, "Skip the failure map");
   s->add_flag("--no-figures", a->no_figures, "Write the CSV and meta.json only (no report.md, no PNG)");
-  c.run = [a]() { return a->merge.empty() ? run_report(*a) : run_merge(*a); };
+  c.run = [a, out_opt]() {
+    a->out_given = out_opt->count() > 0;
+    try {
+      return a->merge.empty() ? run_report(*a) : run_merge(*a);
+    } catch (const Interrupted& e) {
+      std::fprintf(stderr, "eccd report: %s: workers stopped, the unfinished output removed\n", e.what());
+      return 130;
+    }
+  };
   return c;
 }
 

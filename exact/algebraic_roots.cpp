@@ -14,16 +14,28 @@
 // CGAL's own refinement and Sign_at_1 evaluate at rationals in rational
 // arithmetic (a gcd per operation): with refinement of every root to 2^-64
 // that was two thirds of the exact 2D pipeline before (issue 6).
+//
+// Bounded (issue 15): every refinement loop asks the running thread's deadline
+// (kernel/budget.hpp: BudgetExhausted when it passed). CGAL's modular gcd has
+// 2000 primes of about 26 bits; a gcd that needs more loops forever printing
+// "primes in the array exhausted" to std::cerr. Every call into CGAL is made
+// under CgalGuard: polynomials with coefficients beyond kMaxCgalBits are
+// refused up front (BudgetExhausted), CGAL's std::cerr output is captured (it
+// never reaches the user), and that message ends the call with BudgetExhausted.
 #include "exact/algebraic_roots.hpp"
 #include "exact/integer_polynomial.hpp"
+#include "kernel/budget.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/CORE_BigInt.h>
 #include <CGAL/CORE_arithmetic_kernel.h>
 
 #include <algorithm>
+#include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <streambuf>
+#include <string>
 
 namespace eccd {
 
@@ -39,6 +51,80 @@ constexpr unsigned long kMaxLevel = 1ul << 20;  // refinement limit (bits of a b
 AK& kernel() {
   static thread_local AK ak;
   return ak;
+}
+
+// The deadline read from the clock now (not after 256 calls as deadline_passed
+// does): for the coarse steps (each isolation, gcd, sign), which are few.
+void check_deadline_now(const char* where) {
+  auto& s = detail::deadline_state();
+  if (!s.passed && s.at != Clock::time_point::max()) s.passed = Clock::now() >= s.at;
+  check_deadline(where);
+}
+
+// Largest coefficient (bits) of a polynomial handed to CGAL's modular gcd:
+// well inside what its 2000 primes (~52 000 bits) can reconstruct.
+constexpr std::size_t kMaxCgalBits = 20000;
+
+// std::cerr while CGAL runs: keeps what CGAL prints (never shown) and stops
+// the run on the prime-exhaustion message.
+class CgalErrBuf : public std::streambuf {
+ public:
+  std::string text;
+ protected:
+  int overflow(int ch) override {
+    if (ch != EOF) put(char(ch));
+    return ch == EOF ? 0 : ch;
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    for (std::streamsize i = 0; i < n; ++i) put(s[i]);
+    return n;
+  }
+ private:
+  void put(char c) {
+    if (text.size() < 4096) text += c;
+    if (text.find("primes in the array exhausted") != std::string::npos)
+      throw BudgetExhausted("exact root isolation: the coefficients are too large for CGAL's modular gcd (it ran out of primes)");
+  }
+};
+
+class CgalGuard {
+ public:
+  CgalGuard() : old_(std::cerr.rdbuf(&buf_)), old_ex_(std::cerr.exceptions()) {
+    std::cerr.exceptions(std::ios::badbit);
+  }
+  ~CgalGuard() {
+    std::cerr.rdbuf(old_);
+    std::cerr.clear();
+    std::cerr.exceptions(old_ex_);
+  }
+  CgalGuard(const CgalGuard&) = delete;
+  CgalGuard& operator=(const CgalGuard&) = delete;
+  // Refuses coefficients that CGAL's modular gcd cannot reconstruct.
+  static void check_size(const std::vector<mpz_class>& z, const char* what) {
+    for (const auto& x : z)
+      if (mpz_sizeinbase(x.get_mpz_t(), 2) > kMaxCgalBits)
+        throw BudgetExhausted(std::string(what) + ": a polynomial coefficient of " + std::to_string(mpz_sizeinbase(x.get_mpz_t(), 2)) +
+                              " bits, beyond the " + std::to_string(kMaxCgalBits) +
+                              "-bit limit of CGAL's modular gcd (the scene's numbers have too many digits)");
+    check_deadline_now(what);
+  }
+
+ private:
+  CgalErrBuf buf_;
+  std::streambuf* old_;
+  std::ios::iostate old_ex_;
+};
+
+// Runs f (a call into CGAL) under CgalGuard; an exception escaping CGAL's
+// stream code is turned back into the BudgetExhausted that started it.
+template <class F>
+auto with_cgal(F&& f) {
+  CgalGuard g;
+  try {
+    return f();
+  } catch (const std::ios::failure&) {
+    throw BudgetExhausted("exact root isolation: the coefficients are too large for CGAL's modular gcd (it ran out of primes)");
+  }
 }
 
 // A positive rational multiple of p with coprime integer coefficients.
@@ -152,6 +238,7 @@ class Refiner {
     int s_lo = sign_at_rational(f_, lo);
     if (s_lo == 0 || s_lo == sign_at_rational(f_, hi)) throw std::logic_error("internal error: not an isolating interval of a simple root");
     for (;;) {
+      check_deadline("exact root refinement");
       Rational w = hi - lo;
       unsigned long k = 0;
       for (Rational s = w; s < 4; s *= 2) ++k;
@@ -190,6 +277,7 @@ class Refiner {
   bool refine(Dyadic& d, long bits, std::optional<Rational>& exact) {
     bool failed = false;
     for (;;) {
+      check_deadline("exact root refinement");
       long need = halvings_needed(d, bits);
       if (need <= 0) return true;
       if (d.k > kMaxLevel) throw std::logic_error("internal error: bracket refinement does not converge");
@@ -435,7 +523,11 @@ std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a
   std::vector<AlgebraicRoot> out;
   if (p.degree() < 1) return out;
   std::vector<std::pair<AKReal, AK::Multiplicity_type>> roots;
-  kernel().solve_1_object()(to_ak(integer_multiple(p)), std::back_inserter(roots));
+  {
+    IntPoly z = integer_multiple(p);
+    CgalGuard::check_size(z, "exact root isolation");
+    with_cgal([&] { kernel().solve_1_object()(to_ak(z), std::back_inserter(roots)); return 0; });
+  }
   // CGAL returns them sorted. Only those whose isolating interval meets [a, b]
   // are worked on; the others are known to be outside.
   struct Work {
@@ -485,6 +577,7 @@ std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a
   }
   // Consecutive brackets made disjoint (the roots are distinct and sorted).
   for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
+    check_deadline("separating root brackets");
     bool disjoint = true;
     for (std::size_t i = 0; i + 1 < all.size(); ++i) {
       if (all[i].r.hi < all[i + 1].r.lo) continue;
@@ -517,6 +610,7 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   IntPoly Q = integer_multiple(q);  // a positive multiple: same signs
   if (r.is_rational()) return sign_of_int(sign_at_rational(Q, r.lo));
   if (!r.impl) throw std::invalid_argument("sign_at: a root without its polynomial");
+  check_deadline_now("sign at an algebraic number");
   // The bracket as it is (no evaluation of the factor yet).
   Dyadic d;
   mpz_class A, B;
@@ -531,7 +625,8 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   // Zero iff gcd(q, f) has the root: it divides f, whose only root in the
   // bracket is simple, so it has it iff it changes sign over the bracket.
   const IntPoly& f = r.impl->f;
-  AKPoly g = PT::Gcd_up_to_constant_factor()(to_ak(Q), r.impl->fak);
+  CgalGuard::check_size(Q, "sign at an algebraic number");
+  AKPoly g = with_cgal([&] { return PT::Gcd_up_to_constant_factor()(to_ak(Q), r.impl->fak); });
   if (PT::Degree()(g) > 0) {
     IntPoly gi = from_ak(g);
     int glo = sign_at_rational(gi, r.lo), ghi = sign_at_rational(gi, r.hi);
@@ -543,6 +638,7 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   Refiner rf(f);
   if (!rf.init(r.lo, r.hi, d, exact)) return sign_of_int(sign_at_rational(Q, *exact));
   for (long bits = std::max<long>(64, long(d.k));; bits *= 2) {
+    check_deadline("sign at an algebraic number");
     if (int s = constant_sign(Q, d)) return sign_of_int(s);
     if (bits > long(kMaxLevel)) throw std::logic_error("internal error: the sign at an algebraic number does not converge");
     if (!rf.refine(d, bits, exact)) return sign_of_int(sign_at_rational(Q, *exact));
@@ -552,7 +648,9 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
 std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Rational>& p) {
   if (p.is_zero()) throw std::invalid_argument("square_free_factors: the zero polynomial");
   std::vector<std::pair<AKPoly, int>> f;
-  PT::Square_free_factorize_up_to_constant_factor()(to_ak(integer_multiple(p)), std::back_inserter(f));
+  IntPoly z = integer_multiple(p);
+  CgalGuard::check_size(z, "square-free factorisation");
+  with_cgal([&] { PT::Square_free_factorize_up_to_constant_factor()(to_ak(z), std::back_inserter(f)); return 0; });
   std::vector<std::pair<Poly<Rational>, int>> out;
   for (auto& [q, m] : f)
     if (PT::Degree()(q) > 0) out.push_back({poly_from_ak(q), m});
@@ -561,7 +659,10 @@ std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Ratio
 }
 
 Poly<Rational> polynomial_gcd(const Poly<Rational>& p, const Poly<Rational>& q) {
-  return poly_from_ak(PT::Gcd_up_to_constant_factor()(to_ak(integer_multiple(p)), to_ak(integer_multiple(q))));
+  IntPoly zp = integer_multiple(p), zq = integer_multiple(q);
+  CgalGuard::check_size(zp, "polynomial gcd");
+  CgalGuard::check_size(zq, "polynomial gcd");
+  return poly_from_ak(with_cgal([&] { return PT::Gcd_up_to_constant_factor()(to_ak(zp), to_ak(zq)); }));
 }
 
 void refine(AlgebraicRoot& r, int bits) {

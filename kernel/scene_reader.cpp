@@ -3,8 +3,10 @@
 
 #include "kernel/bernstein.hpp"
 #include "kernel/quadric_classification.hpp"
-#include "kernel/sturm.hpp"
+#include "exact/algebraic_roots.hpp"
+#include "kernel/budget.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -37,8 +39,44 @@ const char* const kNumberForms =
 
 }  // namespace
 
+InputLimits& input_limits() {
+  static InputLimits limits;
+  return limits;
+}
+
+namespace {
+[[noreturn]] void beyond_digits(const char* part, std::size_t digits, bool at_least = false) {
+  bad_number(std::string(part) + " has " + (at_least ? "at least " : "") + std::to_string(digits) + " digits, beyond the input limit of " +
+             std::to_string(input_limits().max_digits) + " digits per number (--max-digits)");
+}
+void check_digits(const mpq_class& q) {
+  const std::size_t lim = input_limits().max_digits;
+  // mpz_sizeinbase(.,10) may be one too large: confirm with the exact count only near the limit
+  auto digits = [](const mpz_class& z) {
+    std::size_t d = mpz_sizeinbase(z.get_mpz_t(), 10);
+    if (d > 1) {
+      mpz_class p;
+      mpz_ui_pow_ui(p.get_mpz_t(), 10, d - 1);
+      if (abs(z) < p) --d;
+    }
+    return d;
+  };
+  if (mpz_sizeinbase(q.get_num_mpz_t(), 10) > lim) {
+    std::size_t d = digits(q.get_num());
+    if (d > lim) beyond_digits(q.get_den() == 1 ? "the number" : "its numerator", d);
+  }
+  if (mpz_sizeinbase(q.get_den_mpz_t(), 10) > lim) {
+    std::size_t d = digits(q.get_den());
+    if (d > lim) beyond_digits("its denominator (in lowest terms)", d);
+  }
+}
+}  // namespace
+
 Rational parse_rational(const std::string& text) {
   if (text.empty()) bad_number(std::string("empty string; ") + kNumberForms);
+  if (text.size() > 100 * input_limits().max_digits + 16)
+    bad_number("a number text of " + std::to_string(text.size()) + " characters, beyond the input limit of " +
+               std::to_string(100 * input_limits().max_digits + 16) + " characters (100 x --max-digits)");
   for (char ch : text)
     if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r' || ch == '\f' || ch == '\v')
       bad_number("contains whitespace");
@@ -57,6 +95,7 @@ Rational parse_rational(const std::string& text) {
     if (d == 0) bad_number("zero denominator");
     mpq_class q(n, d);
     q.canonicalize();
+    check_digits(q);
     if (negative) q = -q;
     return q;
   }
@@ -87,12 +126,26 @@ Rational parse_rational(const std::string& text) {
   if (j != text.size())
     bad_number("unexpected '" + std::string(1, text[j]) + "' at character " + std::to_string(j + 1) + "; " +
                kNumberForms);
+  {  // the value's size before building it: significant digits + exponent
+    std::size_t nz = mantissa.find_first_not_of('0');
+    if (nz == std::string::npos) return Rational(0);
+    std::size_t sig = mantissa.size() - nz;
+    std::size_t last = mantissa.find_last_not_of('0');
+    long trailing = long(mantissa.size() - 1 - last);
+    long e0 = exponent - frac_len + trailing;  // value = (significant digits) * 10^e0
+    std::size_t core = sig - std::size_t(trailing);
+    std::size_t lim = input_limits().max_digits;
+    if (e0 >= 0 && core + std::size_t(e0) > lim + 1) beyond_digits("the number", core + std::size_t(e0));
+    // the denominator in lowest terms is at least 10^-e0 / core: more than -e0 - core digits
+    if (e0 < 0 && std::size_t(-e0) > core + lim + 1) beyond_digits("its denominator (in lowest terms)", std::size_t(-e0) - core, true);
+  }
   mpz_class m(mantissa, 10);
   const long e = exponent - frac_len;
   mpz_class p;
   mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
   mpq_class q = e >= 0 ? mpq_class(mpz_class(m * p)) : mpq_class(m, p);
   q.canonicalize();
+  check_digits(q);
   if (negative) q = -q;
   return q;
 }
@@ -158,11 +211,41 @@ std::string escape_token(const std::string& k) {
 }
 std::string child(const std::string& ptr, const std::string& key) { return ptr + "/" + escape_token(key); }
 std::string child(const std::string& ptr, std::size_t i) { return ptr + "/" + std::to_string(i); }
-std::string place_text(const std::string& ptr) { return ptr.empty() ? std::string("top level") : ptr; }
+// A JSON pointer for a message: each token cut to 80 characters.
+std::string place_text(const std::string& ptr) {
+  if (ptr.empty()) return "top level";
+  if (ptr.size() <= 200) return ptr;
+  std::string r;
+  std::size_t i = 0;
+  while (i < ptr.size()) {
+    std::size_t j = ptr.find('/', i + 1);
+    if (j == std::string::npos) j = ptr.size();
+    std::string tok = ptr.substr(i, j - i);
+    r += tok.size() > 81 ? tok.substr(0, 81) + "..." : tok;
+    i = j;
+  }
+  return r.size() > 2000 ? r.substr(0, 2000) + "..." : r;
+}
+
+// A message with each run of more than 40 digits shortened to its first 20
+// and last 8 digits and the count (a 1000-digit number is not echoed whole).
+std::string shorten_digits(const std::string& m) {
+  std::string r;
+  std::size_t i = 0;
+  while (i < m.size()) {
+    if (m[i] < '0' || m[i] > '9') { r += m[i++]; continue; }
+    std::size_t j = i;
+    while (j < m.size() && m[j] >= '0' && m[j] <= '9') ++j;
+    if (j - i > 40) r += m.substr(i, 20) + "...(" + std::to_string(j - i) + " digits)..." + m.substr(j - 8, 8);
+    else r += m.substr(i, j - i);
+    i = j;
+  }
+  return r;
+}
 
 // A user string in a message: JSON-quoted, shortened.
 std::string quote(const std::string& s) {
-  std::string t = s.size() > 60 ? s.substr(0, 60) + "..." : s;
+  std::string t = s.size() > 80 ? s.substr(0, 80) + "..." : s;
   return json(t).dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
@@ -210,39 +293,21 @@ std::string poly_text(const RPoly& p) {
   return r;
 }
 
-// The simplest rational (smallest denominator) in [a, b], 0 <= a <= b.
-mpq_class simplest_between(const mpq_class& a, const mpq_class& b) {
-  mpz_class fl;
-  mpz_fdiv_q(fl.get_mpz_t(), a.get_num_mpz_t(), a.get_den_mpz_t());
-  if (mpq_class(fl) == a) return a;
-  mpz_class up = fl + 1;
-  if (mpq_class(up) <= b) return mpq_class(up);
-  mpq_class x = b - fl, y = a - fl;  // both in (0, 1)
-  mpq_class ix = 1 / x, iy = 1 / y;
-  mpq_class s = simplest_between(ix, iy);
-  mpq_class r = mpq_class(fl) + 1 / s;
-  return r;
+// The roots of p (not identically zero) in [0, 1], isolated by the exact
+// root isolation (exact/algebraic_roots.hpp: CGAL, guarded and bounded) with
+// brackets of width <= 2^-30. (Sturm sequences over the rationals took minutes
+// on motions with 100-digit coefficients: issue 15's fuzzing.)
+std::vector<AlgebraicRoot> roots_in_unit(const RPoly& p) {
+  if (p.degree() < 1) return {};
+  return real_roots(p, mpq_class(0), mpq_class(1), 30);
 }
 
-// Where p (not identically zero, with a root in [0, 1]) vanishes on [0, 1].
-std::string locate_root(const RPoly& p) {
-  mpq_class lo = 0, hi = 1;
-  if (sgn(p(lo)) == 0) return "at t = 0";
-  if (sgn(p(hi)) == 0) return "at t = 1";
-  const auto seq = sturm_sequence(p);
-  auto roots_in = [&](const mpq_class& a, const mpq_class& b) {  // in (a, b]
-    return sturm_variations(seq, std::optional<mpq_class>(a), -1) -
-           sturm_variations(seq, std::optional<mpq_class>(b), +1);
-  };
-  for (int k = 0; k < 30; ++k) {  // invariant: a root in (lo, hi), p(lo), p(hi) != 0
-    mpq_class m = (lo + hi) / 2;
-    if (sgn(p(m)) == 0) return "at t = " + m.get_str();
-    if (roots_in(lo, m) > 0) hi = m; else lo = m;
-  }
-  mpq_class s = simplest_between(lo, hi);
-  if (sgn(p(s)) == 0) return "at t = " + s.get_str();
-  mpq_class mid = (lo + hi) / 2;
-  return "at t in [" + lo.get_str() + ", " + hi.get_str() + "] (t ~ " + approx_text(mid) + ")";
+// Where p (not identically zero) vanishes on [0, 1], given its roots there.
+std::string locate_root(const std::vector<AlgebraicRoot>& roots) {
+  const AlgebraicRoot& r = roots.front();
+  if (r.is_rational()) return "at t = " + r.lo.get_str();
+  mpq_class mid = (r.lo + r.hi) / 2;
+  return "at t in [" + r.lo.get_str() + ", " + r.hi.get_str() + "] (t ~ " + approx_text(mid) + ")";
 }
 
 // SAX handler building the DOM, with duplicate-key detection, a depth limit,
@@ -346,7 +411,7 @@ class Reader {
       : label_(std::move(label)), float_text_(float_text) {}
 
   [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
-    throw SceneError(label_ + ": " + place_text(ptr) + ": " + what);
+    throw SceneError(label_ + ": " + place_text(ptr) + ": " + shorten_digits(what));
   }
 
   Scene scene(const json& root);
@@ -396,11 +461,18 @@ class Reader {
     for (std::size_t i = 0; i < n; ++i) r.push_back(poly(j[i], child(ptr, i)));
     return r;
   }
+  std::vector<AlgebraicRoot> unit_roots(const RPoly& p, const std::string& ptr, const std::string& name) const {
+    try {
+      return roots_in_unit(p);
+    } catch (const BudgetExhausted& e) {
+      fail(ptr, name + " cannot be checked for roots on [0, 1]: " + e.what() + " (beyond the input limits)");
+    }
+  }
   void check_nonvanishing(const RPoly& p, const std::string& ptr, const std::string& name,
                           const std::string& consequence) const {
     if (p.is_zero()) fail(ptr, name + " is identically zero" + consequence);
-    if (count_roots_closed(p, mpq_class(0), mpq_class(1)) > 0)
-      fail(ptr, name + " vanishes on [0, 1]: " + name + " = 0 " + locate_root(p) + consequence);
+    if (auto roots = unit_roots(p, ptr, name); !roots.empty())
+      fail(ptr, name + " vanishes on [0, 1]: " + name + " = 0 " + locate_root(roots) + consequence);
   }
 
   std::vector<std::vector<Rational>> shape(const json& j, const std::string& ptr) const;
@@ -415,7 +487,8 @@ Rational Reader::number(const json& j, const std::string& ptr) const {
     try {
       return parse_rational(s);
     } catch (const std::invalid_argument& e) {
-      fail(ptr, quote(s) + " is not an exact number: " + e.what());
+      const bool limit = std::string(e.what()).find("input limit") != std::string::npos;
+      fail(ptr, quote(s) + (limit ? ": " : " is not an exact number: ") + e.what());
     }
   }
   if (j.is_number_integer()) {  // signed or unsigned: exact
@@ -445,8 +518,14 @@ Rational Reader::number(const json& j, const std::string& ptr) const {
 }
 
 RPoly Reader::poly(const json& j, const std::string& ptr) const {
+  const auto too_long = [&](const json& arr, const std::string& p) {
+    if (arr.size() > std::size_t(input_limits().max_degree) + 1)
+      fail(p, "a polynomial of degree " + std::to_string(arr.size() - 1) + ", beyond the input limit of degree " +
+                  std::to_string(input_limits().max_degree) + " (--max-degree)");
+  };
   if (j.is_array()) {
     if (j.empty()) fail(ptr, "empty coefficient array; write [\"0\"] for the zero polynomial");
+    too_long(j, ptr);
     std::vector<Rational> c;
     for (std::size_t i = 0; i < j.size(); ++i) c.push_back(number(j[i], child(ptr, i)));
     return RPoly(std::move(c));
@@ -457,6 +536,7 @@ RPoly Reader::poly(const json& j, const std::string& ptr) const {
     const json& b = member(j, ptr, "bernstein", "a polynomial in Bernstein form");
     if (!b.is_array()) fail(bp, "Bernstein coefficients must be an array [\"c0\", ..., \"cn\"], got " + type_name(b));
     if (b.empty()) fail(bp, "empty Bernstein coefficient array");
+    too_long(b, bp);
     Bern<Rational> q;
     for (std::size_t i = 0; i < b.size(); ++i) q.b.push_back(number(b[i], child(bp, i)));
     return to_power(q);
@@ -606,8 +686,8 @@ Motion Reader::motion(const json& j, const std::string& ptr) const {
     const std::string bs = std::to_string(dim_) + "x" + std::to_string(dim_);
     if (d.is_zero())
       fail(mp, "singular affine block for every t: the upper-left " + bs + " block of M(t) has determinant 0");
-    if (count_roots_closed(d, mpq_class(0), mpq_class(1)) > 0)
-      fail(mp, "singular affine block " + locate_root(d) + ": the upper-left " + bs +
+    if (auto roots = unit_roots(d, mp, "the determinant of the affine block"); !roots.empty())
+      fail(mp, "singular affine block " + locate_root(roots) + ": the upper-left " + bs +
                    " block of M(t) must be non-singular on [0, 1] (its determinant is " + poly_text(d) + ")");
     return mm;
   }
@@ -777,6 +857,8 @@ std::string json_error_text(const std::string& text, std::size_t pos, const std:
     reason = reason.substr(k + 2);
   if (reason.rfind("parse error", 0) == 0)
     if (auto k = reason.find(": "); k != std::string::npos) reason = reason.substr(k + 2);
+  reason = shorten_digits(reason);
+  if (reason.size() > 300) reason = reason.substr(0, 300) + "...";
   if (reason.find("number overflow") != std::string::npos)
     reason += " (write large numbers as strings, e.g. \"1e400\")";
   return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": malformed JSON: " + reason;
@@ -796,6 +878,16 @@ Answer answer_from_json(const json& j, const std::string& file_label, const std:
 }
 
 Scene parse_scene(const std::string& json_text, const std::string& file_label) {
+  if (json_text.size() > input_limits().max_file_bytes)
+    throw SceneError(file_label + ": " + std::to_string(json_text.size()) + " bytes, beyond the input limit of " +
+                     std::to_string(input_limits().max_file_bytes) + " bytes (--max-file-bytes)");
+  if (json_text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw SceneError(file_label + ": line 1, column 1: malformed JSON: the file is empty or blank (a scene is a JSON object)");
+  if (auto nul = json_text.find('\0'); nul != std::string::npos) {
+    std::size_t line = 1 + std::size_t(std::count(json_text.begin(), json_text.begin() + long(nul), '\n'));
+    throw SceneError(file_label + ": line " + std::to_string(line) + ", byte " + std::to_string(nul + 1) +
+                     ": malformed JSON: a NUL byte: this is a binary file, not a JSON text");
+  }
   DomBuilder b;
   bool ok = false;
   try {
@@ -816,15 +908,28 @@ Scene parse_scene(const std::string& json_text, const std::string& file_label) {
   }
 }
 
-Scene read_scene_file(const std::string& path) {
+Scene read_scene_file(const std::string& path) { return parse_scene(read_file_bytes(path), path); }
+
+std::string read_file_bytes(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw SceneError(path + ": cannot read the file: it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot read the file: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  // At most max_file_bytes + 1 bytes are read: a huge file or a device such as
+  // /dev/zero is refused without reading it whole.
+  const std::size_t limit = input_limits().max_file_bytes;
+  std::string text;
+  std::vector<char> buf(1 << 16);
+  while (text.size() <= limit) {
+    in.read(buf.data(), std::streamsize(buf.size()));
+    std::streamsize n = in.gcount();
+    if (n <= 0) break;
+    text.append(buf.data(), std::size_t(n));
+  }
   if (in.bad()) throw SceneError(path + ": cannot read the file: read error");
-  return parse_scene(ss.str(), path);
+  if (text.size() > limit)
+    throw SceneError(path + ": larger than the input limit of " + std::to_string(limit) + " bytes (--max-file-bytes)");
+  return text;
 }
 
 }  // namespace eccd

@@ -53,6 +53,16 @@
 //     answer).
 // 13. Scene::path is set to the file label (the path for read_scene_file).
 //     An unreadable file gives "FILE: cannot read the file: reason".
+// 14. Input limits (issue 15; InputLimits below, changed by the command line's
+//     --max-file-bytes, --max-digits, --max-degree): a scene file of more than
+//     max_file_bytes is refused before it is read whole (so /dev/zero ends at
+//     once); a number whose exact value p/q has more than max_digits decimal
+//     digits in p or q (or whose text is longer than 100 * max_digits
+//     characters) is refused at its place; so is a polynomial of degree above
+//     max_degree. The messages say "beyond the input limit" and name the
+//     option. A NUL byte in the file is reported as such (a binary file), an
+//     empty file as empty. Long keys and values are cut in messages (80
+//     characters and "...").
 #include "exact/rational_traits.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/scene.hpp"
@@ -68,9 +78,23 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Limits on what a scene may ask for (choice 14). Defaults: 8 MiB files,
+// 1000 digits per numerator / denominator, motion polynomials of degree 32.
+struct InputLimits {
+  std::size_t max_file_bytes = std::size_t(8) << 20;
+  std::size_t max_digits = 1000;
+  int max_degree = 32;
+};
+// The process-wide limits (read by every scene reader call).
+InputLimits& input_limits();
+
 // Reads and validates a scene; throws SceneError "FILE: PLACE: what is wrong".
 Scene read_scene_file(const std::string& path);
 Scene parse_scene(const std::string& json_text, const std::string& file_label);
+// The bytes of a file, read once and at most max_file_bytes of them (choice
+// 14): a directory, an unreadable or too large file throws SceneError
+// "FILE: ...".
+std::string read_file_bytes(const std::string& path);
 
 // Exact value of a number string (choice 1 above). Throws std::invalid_argument
 // whose what() is the reason (the reader turns it into a SceneError).
