@@ -29,12 +29,17 @@ struct CertifyArgs {
   bool json = false, no_floating = false;
 };
 
-// The scene file's JSON (after the reader has validated it).
-nlohmann::json scene_document(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return nlohmann::json::parse(ss.str());
+// The scene and its JSON from ONE read of the file's bytes: a file that
+// changes between two reads (a FIFO serving two scenes, a race) cannot pair
+// one scene's certificate or answer with another scene.
+struct SceneBytes {
+  Scene scene;
+  nlohmann::json doc;
+};
+SceneBytes read_scene_once(const std::string& path) {
+  const std::string text = read_file_bytes(path);
+  SceneBytes r{parse_scene(text, path), parse_json_document(text, path)};
+  return r;
 }
 
 std::string instant_text(const nlohmann::json& i) {
@@ -63,6 +68,9 @@ std::string certified_text(const nlohmann::json& cert) {
   for (const auto& iv : a["intervals"])
     o << "  collision interval: [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]" << (iv[0] == iv[1] ? "  (isolated touch)" : "") << "\n";
   if (!a["first_contact"].is_null()) o << "  first contact: " << instant_text(a["first_contact"]) << "\n";
+  if (a.contains("contact_intervals"))
+    for (const auto& iv : a["contact_intervals"])
+      o << "  continuous touching (contact interval): [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]\n";
   if (a["contacts"].empty()) o << "  external contacts: none\n";
   for (const auto& c : a["contacts"]) o << "  external contact: " << instant_text(c) << "\n";
   return o.str();
@@ -85,8 +93,9 @@ Command add_certify_command(CLI::App& app) {
   s->add_flag("--no-floating", args->no_floating, "Certify only; do not run the floating pipelines");
   s->add_flag("--json", args->json, "Print one JSON object (certified answer, verdicts, certificate path) instead of text");
   c.run = [args]() {
-    Scene scene = read_scene_file(args->scene);
-    nlohmann::json doc = scene_document(args->scene);
+    SceneBytes sb = read_scene_once(args->scene);
+    const Scene& scene = sb.scene;
+    const nlohmann::json& doc = sb.doc;
     fs::path out = args->out.empty() ? fs::path(fs::path(args->scene).stem().string() + ".cert.json") : fs::path(args->out);
     std::cerr << "certify: exact pipeline and certificate ...\n";
     nlohmann::json cert;
@@ -167,19 +176,15 @@ Command add_check_certificate_command(CLI::App& app) {
   c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/1)")->required();
   c.sub->add_flag("--json", args->json, "Print one JSON object {valid, checked, failed_claim, reason}");
   c.run = [args]() {
-    Scene scene = read_scene_file(args->scene);
-    nlohmann::json doc = scene_document(args->scene);
-    nlohmann::json cert;
-    {
-      std::ifstream in(args->cert, std::ios::binary);
-      if (!in) throw std::invalid_argument(args->cert + ": cannot read the file");
-      try {
-        cert = nlohmann::json::parse(in);
-      } catch (const nlohmann::json::parse_error& e) {
-        throw std::invalid_argument(args->cert + ": malformed JSON: " + e.what());
-      }
+    // Each file read once; a directory or unreadable file is exit 2 with its path (SceneError).
+    SceneBytes sb = read_scene_once(args->scene);
+    const std::string cert_text = read_file_bytes(args->cert);
+    CertificateCheck r;
+    try {
+      r = check_certificate_text(sb.scene, sb.doc, cert_text, args->cert);
+    } catch (const std::invalid_argument& e) {  // a scene the exact algebra refuses (cycloidal motion)
+      throw std::invalid_argument(args->scene + ": " + e.what());
     }
-    CertificateCheck r = check_certificate(scene, doc, cert);
     if (args->json) {
       nlohmann::json j = {{"valid", r.valid}, {"checked", r.checked}};
       j["failed_claim"] = r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.failed_claim);

@@ -362,6 +362,9 @@ nlohmann::json solve_2d(const Scene& scene, const SolveOptions& opt) {
 nlohmann::ordered_json stored_answer_of(const nlohmann::json& report) {
   nlohmann::ordered_json ans;
   for (const char* k : {"collides", "intervals", "first_contact", "contacts"}) ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
+  // Continuous touching (docs/answer-format.md): stored only when there is some, so older answers keep their keys.
+  if (report.contains("contact_intervals") && report["contact_intervals"].is_array() && !report["contact_intervals"].empty())
+    ans["contact_intervals"] = nlohmann::ordered_json::parse(report["contact_intervals"].dump());
   return ans;
 }
 
@@ -395,6 +398,8 @@ std::string summary_text(const nlohmann::json& r) {
         o << " at (" << r["contact_points"][i][0].get<std::string>() << ", " << r["contact_points"][i][1].get<std::string>() << ")";
       o << "\n";
     }
+  for (const auto& iv : r["contact_intervals"])
+    o << "  continuous touching (contact interval): [" << inst(iv[0]) << ", " << inst(iv[1]) << "]\n";
   for (const auto& u : r["undecided"]) o << "  undecided near t = " << u["approx"].get<std::string>() << "\n";
   if (r.contains("undecided_reasons") && !r["undecided"].empty())
     for (const auto& why : r["undecided_reasons"]) o << "  undecided because: " << why.get<std::string>() << "\n";

@@ -2,9 +2,11 @@
 // Regression against stored exact answers (eccd regress, and the CI test).
 //
 // Statement (issue 5): a stored answer and a recomputed exact answer agree when
-// they have the same `collides`, the same number of collision intervals and of
-// external contacts, and each recomputed bracket overlaps the stored one
-// (intervals' starts and ends, first contact, contacts). Two certified
+// they have the same `collides`, the same number of collision intervals, of
+// external contacts and of contact intervals (continuous touching; a stored
+// answer without the key has none), and each recomputed bracket overlaps the
+// stored one (intervals' starts and ends, first contact, contacts, contact
+// intervals' ends). Two certified
 // brackets that overlap may still hold different instants in principle; but a
 // bracket of the recomputed answer holds exactly one root of the projection,
 // so a stored bracket that overlaps it and is itself certified cannot be off
@@ -69,6 +71,18 @@ inline std::vector<std::string> answer_differences(const Answer& stored, const A
     for (std::size_t i = 0; i < got.contacts.size(); ++i)
       if (!matches(stored.contacts[i], got.contacts[i]))
         d.push_back("contact " + std::to_string(i + 1) + ": stored " + show(stored.contacts[i]) + ", recomputed " + show(got.contacts[i]));
+  }
+  // Continuous touching (a stored answer without the key has none).
+  if (stored.contact_intervals.size() != got.contact_intervals.size()) {
+    d.push_back("contact_intervals: stored " + std::to_string(stored.contact_intervals.size()) + ", recomputed " +
+                std::to_string(got.contact_intervals.size()));
+  } else {
+    for (std::size_t i = 0; i < got.contact_intervals.size(); ++i) {
+      const auto &s = stored.contact_intervals[i], &g = got.contact_intervals[i];
+      if (!matches(s.first, g.first) || !matches(s.second, g.second))
+        d.push_back("contact interval " + std::to_string(i + 1) + ": stored [" + show(s.first) + ", " + show(s.second) + "], recomputed [" +
+                    show(g.first) + ", " + show(g.second) + "]");
+    }
   }
   return d;
 }

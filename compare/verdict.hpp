@@ -11,7 +11,8 @@
 // they overlap after widening by tol. The verdict is "agrees" when collides is
 // the same, every certified interval is matched by exactly one reported
 // interval and vice versa, every interval end is within tol, the contacts
-// match one to one within tol, and nothing is left undecided.
+// match one to one within tol, the numbers of contact intervals (continuous
+// touching) are the same, and nothing is left undecided.
 // This is reporting, not deciding: doubles are fine here (design.md).
 #include "kernel/answer.hpp"
 
@@ -179,6 +180,16 @@ inline Verdict judge(const std::string& pipeline, const nlohmann::json& got, con
     }
   for (std::size_t i = 0; i < gcs.size(); ++i)
     if (!used[i] && !in(flagged_got, gcs[i])) { ++v.spurious; v.differences.push_back("false contact near t ≈ " + num(gcs[i])); }
+  // Continuous touching (docs/answer-format.md): the count must match, else a
+  // continuous touch was reported as an overlap (or the reverse).
+  auto ncontact_intervals = [](const nlohmann::json& a) {
+    return a.contains("contact_intervals") && a["contact_intervals"].is_array() ? a["contact_intervals"].size() : std::size_t(0);
+  };
+  if (std::size_t e = ncontact_intervals(certified), g = ncontact_intervals(got); e != g) {
+    if (e > g) v.missed += int(e - g);
+    else v.spurious += int(g - e);
+    v.differences.push_back("reports " + std::to_string(g) + " interval(s) of continuous touching, the certified answer " + std::to_string(e));
+  }
   if (got.contains("undecided") && got["undecided"].is_array())
     for (const auto& u : got["undecided"]) { ++v.undecided; v.differences.push_back("undecided near t ≈ " + num(value(u))); }
   if (all_matched && !E.empty()) v.max_endpoint_error = worst;

@@ -17,7 +17,7 @@ namespace eccd {
 
 namespace {
 
-constexpr int kMaxBits = 1 << 14;  // refinement limit for a bracket
+constexpr int kMaxBits = 1 << 14;  // refinement limit for a bracket (also certificate_max_bits)
 constexpr int kMaxGapDepth = 200;  // bisection limit for a gap
 
 struct Evidence {
@@ -105,9 +105,31 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
     c["projection"] = proj;
     c["gap_points"] = nlohmann::json::array();
     c["timeline"] = nlohmann::json::array();
-    Answer ans = res.answer;  // the stored-answer keys only (continuous touching is an extra)
+    // Continuous touching: P·D without a root in [0, 1] keeps the status of
+    // the double root constant (exact/certificate_check.hpp).
+    const Poly<Rational> PD = alg.evidence("P") * alg.evidence("D");
+    const Rational half(1, 2);
+    nlohmann::json ct = {{"convention", PD.is_zero() ? "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D vanishes identically: the "
+                                                       "double root is 0 or triple, overlapping on all of [0, 1]"
+                                                     : "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D has no root in [0, 1] (gap "
+                                                       "points, Descartes), so the status (touching iff the double root P/(2D) is "
+                                                       "negative) is that of the sample on all of [0, 1]"},
+                         {"identically_zero", PD.is_zero()}, {"sample", q_str(half)}, {"status", to_string(alg.status_at(half))}};
+    std::vector<Rational> pts;
+    if (!PD.is_zero()) {
+      if (sign(PD(Rational(0))) == Sign::zero || sign(PD(Rational(1))) == Sign::zero || res.cells.size() != 1)
+        throw CertificationError("cannot certify: the discriminant vanishes identically and the status changes inside [0, 1] "
+                                 "(P*D has a root there), which the certificate format does not cover");
+      clear_gap(Rational(0), Rational(1), {{PD, 1}}, PD, pts, 0);
+    }
+    nlohmann::json ptj = nlohmann::json::array();
+    for (const auto& x : pts) ptj.push_back(q_str(x));
+    ct["gap_points"] = ptj;
+    c["continuous_touching"] = ct;
+    Answer ans = res.answer;  // the answer keys only (contact points are a display extra)
     ans.contact_points.clear();
-    ans.contact_intervals.clear();
+    if (ans.contact_intervals.size() != (alg.status_at(half) == Status::touching ? 1u : 0u))
+      throw std::logic_error("internal error: the pipeline's contact intervals disagree with the status at t = 1/2");
     c["answer"] = answer_to_json(ans);
     c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return c;
@@ -117,6 +139,8 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
     throw std::logic_error("internal error: the pipeline isolated the roots of another polynomial than the projection");
   const Poly<Rational>& P = alg.projection;
   const auto F = square_free_factors(P);
+  // The checker's size bound (exact/certificate.hpp), a few bits of slack for refine's rounding.
+  const int max_bits = std::min<int>(kMaxBits, int(certificate_max_bits(std::size_t(P.degree()), integer_coefficient_bits(P))) - 8);
   proj["identically_zero"] = false;
   proj["degree"] = P.degree();
   proj["coefficients"] = coeffs_json(P);
@@ -155,21 +179,19 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
       }
     }
     for (int bits = 128; !bracket_proves(w, F, P); bits *= 2) {
-      if (bits > kMaxBits)
+      if (bits > max_bits)
         throw CertificationError("cannot certify: the bracket of the root near t = " + decimal_string(w.old_lo) +
-                                 " does not prove its claims even at width 2^-" + std::to_string(kMaxBits));
+                                 " does not prove its claims even at width 2^-" + std::to_string(max_bits));
       refine(w.root, bits);
     }
     roots.push_back(std::move(w));
   }
+  // The refined bracket of a pipeline instant, with an approx that lies in it.
   auto refined = [&](const Instant& i) -> Instant {
     if (!i.certified()) throw std::logic_error("internal error: an exact instant without a bracket");
     for (const auto& w : roots)
-      if (w.old_lo == *i.lo && w.old_hi == *i.hi) {
-        Rational mid = (w.root.lo + w.root.hi) / 2;
-        return Instant{decimal_string(mid), w.root.lo, w.root.hi};
-      }
-    return i;
+      if (w.old_lo == *i.lo && w.old_hi == *i.hi) return Instant{approx_in_bracket(w.root.lo, w.root.hi), w.root.lo, w.root.hi};
+    return Instant{approx_in_bracket(*i.lo, *i.hi), *i.lo, *i.hi};
   };
 
   // Gaps between consecutive brackets (and 0, 1) hold no root.
@@ -180,6 +202,9 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
     prev = w.root.hi;
   }
   if (prev < Rational(1)) clear_gap(prev, Rational(1), F, P, points, 0);
+  if (points.size() > certificate_max_gap_points(std::size_t(P.degree())))
+    throw CertificationError("cannot certify: clearing the gaps between the brackets takes more than " +
+                             std::to_string(certificate_max_gap_points(std::size_t(P.degree()))) + " points");
   nlohmann::json pts = nlohmann::json::array();
   for (const auto& p : points) pts.push_back(q_str(p));
   c["gap_points"] = pts;
@@ -226,8 +251,8 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
   for (auto& [a, b] : ans.intervals) { a = refined(a); b = refined(b); }
   if (ans.first_contact) ans.first_contact = refined(*ans.first_contact);
   for (auto& x : ans.contacts) x = refined(x);
+  for (auto& [a, b] : ans.contact_intervals) { a = refined(a); b = refined(b); }
   ans.contact_points.clear();
-  ans.contact_intervals.clear();
   c["answer"] = answer_to_json(ans);
   c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return c;

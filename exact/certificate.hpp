@@ -33,10 +33,29 @@
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
 namespace eccd {
+
+// Size bounds of a certificate, relative to its scene (denial of service,
+// issue 15): every rational it holds (bracket ends, cell samples, gap points)
+// has numerator and denominator of at most certificate_max_bits(n, τ) bits,
+// n the degree of the projection polynomial (of P·D for a 2D Δ ≡ 0) and τ the
+// bit size of its primitive integer coefficients; there are at most
+// certificate_max_gap_points(n) gap points. The bound is four times τ plus a
+// constant, and at most what keeps the checker's Descartes test (about n²
+// multiplications of n·b-bit by b-bit integers) near a second: n²·b <= 2^26,
+// but never below 512 bits. Genuine brackets are 64 to a few hundred bits;
+// the writer refines no further than the bound and otherwise cannot certify.
+inline std::size_t certificate_max_bits(std::size_t n, std::size_t tau) {
+  const std::size_t by_size = 4 * tau + 1024;
+  const std::size_t by_work = std::max<std::size_t>(512, (std::size_t(1) << 26) / std::max<std::size_t>(n * n, 1));
+  return std::min(by_size, by_work);
+}
+inline std::size_t certificate_max_gap_points(std::size_t n) { return 8 * n + 64; }
 
 // Thrown when a claim cannot be made provable (e.g. refinement limit reached).
 struct CertificationError : std::runtime_error {

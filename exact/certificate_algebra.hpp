@@ -29,7 +29,10 @@
 #include "kernel/quartic_status.hpp"
 #include "kernel/quartic_touch_rule.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -86,6 +89,109 @@ inline CertificateAlgebra certificate_algebra(const Scene& s) {
     a.projection_index = k;
   }
   if (a.projection.is_zero()) throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
+  return a;
+}
+
+// The largest bit size of the numerators and denominators of p's coefficients.
+inline std::size_t coefficient_bits(const Poly<Rational>& p) {
+  std::size_t b = 0;
+  for (const auto& x : p.c)
+    b = std::max({b, mpz_sizeinbase(x.get_num_mpz_t(), 2), mpz_sizeinbase(x.get_den_mpz_t(), 2)});
+  return b;
+}
+
+// τ: the largest bit size of p's primitive integer coefficients.
+inline std::size_t integer_coefficient_bits(const Poly<Rational>& p) {
+  std::size_t tau = 0;
+  for (const auto& x : primitive_integer_multiple(p)) tau = std::max(tau, mpz_sizeinbase(x.get_mpz_t(), 2));
+  return tau;
+}
+
+// How a certificate writes an instant's `approx` (and how the checker reads
+// it back): a plain decimal "[-]digits[.digits][e[-]digits]". For a bracket
+// lo < hi it is the midpoint rounded to the fewest decimal places that keep
+// it inside [lo, hi]; for a point [r, r] it is r exactly when r has at most 40
+// decimal places, else r rounded to 40 places. So approx lies in its bracket,
+// and a point's approx is r correctly rounded to its own last digit.
+inline std::string decimal_with_places(const Rational& x, int k) {  // round(x 10^k) / 10^k, half up
+  mpz_class p10;
+  mpz_ui_pow_ui(p10.get_mpz_t(), 10, unsigned(k));
+  Rational y = x * Rational(p10) + Rational(1, 2);
+  mpz_class m;
+  mpz_fdiv_q(m.get_mpz_t(), y.get_num_mpz_t(), y.get_den_mpz_t());
+  const bool neg = sgn(m) < 0;
+  std::string d = mpz_class(abs(m)).get_str();
+  if (k > 0) {
+    if (d.size() <= std::size_t(k)) d = std::string(std::size_t(k) + 1 - d.size(), '0') + d;
+    d.insert(d.size() - std::size_t(k), ".");
+  }
+  return (neg ? "-" : "") + d;
+}
+inline Rational decimal_value(const Rational& x, int k) {
+  mpz_class p10;
+  mpz_ui_pow_ui(p10.get_mpz_t(), 10, unsigned(k));
+  Rational y = x * Rational(p10) + Rational(1, 2);
+  mpz_class m;
+  mpz_fdiv_q(m.get_mpz_t(), y.get_num_mpz_t(), y.get_den_mpz_t());
+  Rational v(m, p10);
+  v.canonicalize();
+  return v;
+}
+inline std::string approx_in_bracket(const Rational& lo, const Rational& hi) {
+  if (lo == hi) {
+    for (int k = 0; k < 40; ++k)
+      if (decimal_value(lo, k) == lo) return decimal_with_places(lo, k);
+    return decimal_with_places(lo, 40);
+  }
+  const Rational mid = (lo + hi) / 2;
+  for (int k = 0;; ++k) {
+    Rational v = decimal_value(mid, k);
+    if (lo <= v && v <= hi) return decimal_with_places(mid, k);
+  }
+}
+
+// An approx read back: its exact value and the unit of its last written digit;
+// nullopt when it is not a plain decimal of at most max_chars characters (or
+// its exponent is beyond ±100000).
+struct ApproxValue {
+  Rational value, unit;
+};
+inline std::optional<ApproxValue> read_approx(const std::string& s, std::size_t max_chars) {
+  if (s.empty() || s.size() > max_chars) return std::nullopt;
+  std::size_t i = 0;
+  bool neg = false;
+  if (s[i] == '-' || s[i] == '+') neg = s[i++] == '-';
+  std::string digits;
+  long places = 0;
+  bool dot = false;
+  for (; i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || (s[i] == '.' && !dot)); ++i) {
+    if (s[i] == '.') { dot = true; continue; }
+    digits += s[i];
+    if (dot) ++places;
+  }
+  if (digits.empty()) return std::nullopt;
+  long ex = 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    bool eneg = false;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) eneg = s[i++] == '-';
+    std::size_t start = i;
+    for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
+      if (ex < 1000000) ex = ex * 10 + (s[i] - '0');
+    if (i == start || ex > 100000) return std::nullopt;
+    if (eneg) ex = -ex;
+  }
+  if (i != s.size()) return std::nullopt;
+  const long e = ex - places;  // value = digits · 10^e
+  mpz_class p10;
+  mpz_ui_pow_ui(p10.get_mpz_t(), 10, unsigned(e < 0 ? -e : e));
+  ApproxValue a;
+  mpz_class m(digits, 10);
+  if (neg) m = -m;
+  a.value = e < 0 ? Rational(m, p10) : Rational(m * p10);
+  a.unit = e < 0 ? Rational(mpz_class(1), p10) : Rational(p10);
+  a.value.canonicalize();
+  a.unit.canonicalize();
   return a;
 }
 

@@ -3,6 +3,7 @@
 // exact/certificate_algebra.hpp, Descartes' rule and the timeline-to-answer step.
 #include "exact/certificate_check.hpp"
 
+#include "exact/certificate.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "exact/descartes.hpp"
 #include "kernel/collision_timeline.hpp"
@@ -24,25 +25,56 @@ struct Reject {
 [[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Reject{claim, reason}; }
 
 const json& at(const json& j, const std::string& key, const std::string& place) {
-  if (!j.is_object() || !j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
+  if (!j.is_object()) reject("certificate format", place + ": expected an object with the key \"" + key + "\", got " + j.dump().substr(0, 40));
+  if (!j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
   return j.at(key);
 }
 
-Rational rat(const json& j, const std::string& place) {
+// A rational of at most max_bits bits in numerator and denominator: longer
+// strings are refused before they are parsed, so a forged 10^6-digit number
+// costs nothing (denial of service, issue 15).
+Rational rat(const json& j, const std::string& place, std::size_t max_bits) {
   if (!j.is_string()) reject("certificate format", place + ": expected a rational written as a string \"p/q\"");
+  const std::string& text = j.get_ref<const std::string&>();
+  const std::size_t max_chars = 2 * (max_bits * 30103 / 100000 + 2) + 8;
+  auto too_big = [&]() {
+    reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) +
+                                     " bits, beyond what any certificate of this scene needs (" + std::to_string(text.size()) + " characters)");
+  };
+  if (text.size() > max_chars) too_big();
+  Rational q;
   try {
-    return parse_rational(j.get<std::string>());
+    q = parse_rational(text);
   } catch (const std::exception& e) {
     reject("certificate format", place + ": " + e.what());
   }
+  if (mpz_sizeinbase(q.get_num_mpz_t(), 2) > max_bits || mpz_sizeinbase(q.get_den_mpz_t(), 2) > max_bits) too_big();
+  return q;
 }
 
-Poly<Rational> poly(const json& j, const std::string& place) {
+Poly<Rational> poly(const json& j, const std::string& place, std::size_t max_bits, std::size_t max_terms) {
   if (!j.is_array()) reject("certificate format", place + ": expected an array of coefficients");
+  if (j.size() > max_terms) reject("certificate format", place + ": " + std::to_string(j.size()) + " coefficients, more than the degree allows");
   Poly<Rational> p;
-  for (std::size_t i = 0; i < j.size(); ++i) p.c.push_back(rat(j[i], place + "[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < j.size(); ++i) p.c.push_back(rat(j[i], place + "[" + std::to_string(i) + "]", max_bits));
   p.trim();
   return p;
+}
+
+// A JSON integer in [lo, hi] (no truncation: 4294967296 is not 0).
+long long whole(const json& j, const std::string& place, long long lo, long long hi) {
+  bool ok = j.is_number_integer();
+  long long v = 0;
+  if (ok && j.is_number_unsigned()) {
+    ok = j.get<std::uint64_t>() <= std::uint64_t(hi) && hi >= 0;
+    if (ok) v = (long long)j.get<std::uint64_t>();
+  } else if (ok) {
+    v = j.get<std::int64_t>();
+  }
+  if (!ok || v < lo || v > hi)
+    reject("certificate format", place + ": expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " +
+                                     j.dump().substr(0, 40));
+  return v;
 }
 
 Status status_named(const json& j, const std::string& place) {
@@ -57,6 +89,22 @@ Sign sign_named(const json& j, const std::string& place) {
     for (Sign s : {Sign::negative, Sign::zero, Sign::positive})
       if (j.get<std::string>() == to_string(s)) return s;
   reject("certificate format", place + ": expected \"negative\", \"zero\" or \"positive\"");
+}
+
+// An instant's approx must be a plain decimal lying in its bracket [lo, hi];
+// for a point [r, r] whose r needs more digits, r correctly rounded to the
+// approx's own last digit (exact/certificate_algebra.hpp, approx_in_bracket).
+void check_approx(const json& approx, const Rational& lo, const Rational& hi, const std::string& claim, const std::string& place,
+                  std::size_t max_chars) {
+  if (!approx.is_string()) reject(claim, place + ": approx must be a decimal string, got " + approx.dump().substr(0, 40));
+  const std::string& a = approx.get_ref<const std::string&>();
+  const std::string shown = json(a.size() > 40 ? a.substr(0, 40) + "..." : a).dump();
+  auto v = read_approx(a, max_chars);
+  if (!v) reject(claim, place + ": approx " + shown + " is not a decimal number");
+  bool ok = lo == hi ? abs(Rational(v->value - lo)) * 2 <= v->unit : (lo <= v->value && v->value <= hi);
+  if (!ok)
+    reject(claim, place + ": approx " + shown + " lies outside its bracket [" + lo.get_str() + ", " + hi.get_str() + "] (~" +
+                      decimal_string(Rational((lo + hi) / 2), 12) + ")");
 }
 
 std::string bracket_text(const Rational& lo, const Rational& hi) {
@@ -74,7 +122,8 @@ struct Node {
   Status status = Status::uncertain;
   std::optional<int> factor;
   json evidence;
-  std::string name;  // for messages
+  std::string name;   // for messages
+  std::string place;  // JSON place, e.g. timeline[2]
 };
 
 struct Checker {
@@ -85,6 +134,19 @@ struct Checker {
   std::vector<std::pair<Poly<Rational>, int>> F;
   std::vector<Node> nodes;
   std::vector<std::string> checked;
+  // Size bounds relative to the scene (denial of service): every rational the
+  // checker computes with has at most max_bits bits; factor coefficients at
+  // most factor_bits; a decimal approx at most approx_chars characters.
+  std::size_t max_bits = 0, factor_bits = 0, approx_chars = 0, degree = 0;
+  Answer continuous;  // Δ ≡ 0: the answer the continuous-touching claim gives
+
+  void set_bounds(const Poly<Rational>& p) {
+    const std::size_t tau = integer_coefficient_bits(p);
+    degree = std::size_t(std::max(p.degree(), 0));
+    max_bits = certificate_max_bits(degree, tau);
+    factor_bits = tau + 2 * degree + 64;
+    approx_chars = max_bits * 30103 / 100000 + 64;
+  }
 
   void scene() {
     const json& sc = at(cert, "scene", "certificate");
@@ -99,7 +161,7 @@ struct Checker {
     if (!g.is_array() || g.size() != alg.g.size())
       reject("f", "expected " + std::to_string(alg.g.size()) + " coefficient polynomials g_0 .. g_" + std::to_string(alg.g.size() - 1));
     for (std::size_t k = 0; k < alg.g.size(); ++k) {
-      Poly<Rational> gk = poly(g[k], "f.g[" + std::to_string(k) + "]");
+      Poly<Rational> gk = poly(g[k], "f.g[" + std::to_string(k) + "]", coefficient_bits(alg.g[k]) + 64, std::size_t(alg.g[k].degree() + 2));
       if (!(gk == alg.g[k])) reject("f", "g_" + std::to_string(k) + " differs from det(lambda A(t) - B(t)) recomputed from the scene");
     }
     checked.push_back("f: g_0 .. g_" + std::to_string(alg.g.size() - 1) + " equal the recomputed characteristic polynomial");
@@ -119,8 +181,13 @@ struct Checker {
       reject("projection", zero ? "the recomputed projection vanishes identically" : "the recomputed projection does not vanish identically");
     if (zero) {
       checked.push_back("projection: the discriminant vanishes identically (003 Corollary 7: never separate)");
+      continuous_touching();
       return false;
     }
+    set_bounds(alg.projection);
+    if (whole(at(p, "degree", "projection"), "projection.degree", 0, 1 << 30) != alg.projection.degree())
+      reject("projection", "projection.degree says " + at(p, "degree", "projection").dump() + " but the recomputed " + alg.projection_name +
+                               " has degree " + std::to_string(alg.projection.degree()));
     std::vector<std::string> want = integer_coefficients(alg.projection);
     const json& coeffs = at(p, "coefficients", "projection");
     if (!coeffs.is_array() || coeffs.size() != want.size())
@@ -132,47 +199,116 @@ struct Checker {
                       ", integer coefficients equal the recomputed ones");
     // Square-free factors.
     const json& fj = at(p, "square_free_factors", "projection");
-    if (!fj.is_array() || fj.empty()) reject("factors", "expected a non-empty list of square-free factors");
-    Poly<Rational> prod({Rational(1)});
+    if (!fj.is_array() || fj.empty() || fj.size() > degree)
+      reject("factors", "expected a non-empty list of at most " + std::to_string(degree) + " square-free factors");
+    long long total = 0;
     for (std::size_t i = 0; i < fj.size(); ++i) {
       std::string place = "projection.square_free_factors[" + std::to_string(i) + "]";
-      Poly<Rational> fi = poly(at(fj[i], "coefficients", place), place + ".coefficients");
-      const json& m = at(fj[i], "multiplicity", place);
-      if (!m.is_number_integer() || m.get<int>() < 1 || m.get<int>() > 1000) reject("certificate format", place + ".multiplicity: expected a whole number >= 1");
+      Poly<Rational> fi = poly(at(fj[i], "coefficients", place), place + ".coefficients", factor_bits, degree + 1);
+      int m = int(whole(at(fj[i], "multiplicity", place), place + ".multiplicity", 1, (long long)degree));
       if (fi.degree() < 1) reject("factors", "factor " + std::to_string(i) + " is constant");
-      for (int k = 0; k < m.get<int>(); ++k) prod = prod * fi;
-      F.push_back({fi, m.get<int>()});
+      total += (long long)m * fi.degree();
+      F.push_back({fi, m});
     }
+    if (total != alg.projection.degree())  // checked before multiplying: a forged multiplicity costs nothing
+      reject("factors", "the degrees of the square-free factors times their multiplicities add up to " + std::to_string(total) +
+                            ", not the projection's degree " + std::to_string(alg.projection.degree()));
+    Poly<Rational> prod({Rational(1)});
+    for (const auto& [fi, m] : F)
+      for (int k = 0; k < m; ++k) prod = prod * fi;
     Poly<Rational> lhs = prod.lead() * alg.projection, rhs = alg.projection.lead() * prod;
     if (!(lhs == rhs)) reject("factors", "the product of the square-free factors (with their multiplicities) is not a constant multiple of the projection");
     checked.push_back("factors: the product of " + std::to_string(F.size()) + " square-free factor(s) is the projection up to a constant");
     return true;
   }
 
+  // 2D, Δ ≡ 0: never separate (003 Corollary 7), so C = [0, 1]. The double
+  // root of f is P/(2D) (P, D of 003 Theorem 6); where P·D has no root the
+  // status is constant: touching (negative double root) or overlapping. The
+  // certificate claims P·D has no root in [0, 1] (gap points, Descartes 0 on
+  // each piece, P·D ≠ 0 at 0, 1 and the points) and gives the status at one
+  // sample (the exact static test); touching means the contact interval
+  // [0, 1]. If P·D ≡ 0, the double root is 0 or triple: overlapping.
+  void continuous_touching() {
+    const json& ct = at(cert, "continuous_touching", "certificate");
+    const Poly<Rational> PD = alg.evidence("P") * alg.evidence("D");
+    set_bounds(PD.is_zero() ? alg.g[0] : PD);
+    const bool zero = PD.is_zero();
+    if (at(ct, "identically_zero", "continuous_touching") != json(zero))
+      reject("continuous touching", zero ? "P·D vanishes identically (recomputed), the certificate says it does not"
+                                         : "P·D does not vanish identically (recomputed), the certificate says it does");
+    const Rational sample = rat(at(ct, "sample", "continuous_touching"), "continuous_touching.sample", max_bits);
+    if (!(Rational(0) < sample && sample < Rational(1))) reject("continuous touching", "continuous_touching.sample must lie in (0, 1)");
+    Status claimed = status_named(at(ct, "status", "continuous_touching"), "continuous_touching.status");
+    Status st = alg.status_at(sample);
+    if (st != claimed)
+      reject("continuous touching", std::string("the exact static test at the sample gives ") + to_string(st) + ", not " + to_string(claimed));
+    if (st == Status::separate) reject("continuous touching", "separate at the sample although the discriminant vanishes identically");
+    const json& gp = at(ct, "gap_points", "continuous_touching");
+    const std::size_t max_points = certificate_max_gap_points(degree);
+    if (!gp.is_array() || gp.size() > max_points)
+      reject("certificate format", "continuous_touching.gap_points: expected an array of at most " + std::to_string(max_points) + " points");
+    if (zero) {
+      if (!gp.empty()) reject("certificate format", "continuous_touching.gap_points: expected [] when P·D vanishes identically");
+      if (st != Status::overlapping) reject("continuous touching", "P·D ≡ 0 means a triple or zero double root: overlapping, not touching");
+    } else {
+      if (is_zero(PD(Rational(0))) || is_zero(PD(Rational(1))))
+        reject("continuous touching", "P·D vanishes at t = 0 or t = 1: the status may change there (not certifiable in this format)");
+      std::vector<Rational> cut{Rational(0)};
+      for (std::size_t i = 0; i < gp.size(); ++i) {
+        Rational x = rat(gp[i], "continuous_touching.gap_points[" + std::to_string(i) + "]", max_bits);
+        if (!(cut.back() < x && x < Rational(1)))
+          reject("continuous touching", "continuous_touching.gap_points[" + std::to_string(i) + "] is not increasing inside (0, 1)");
+        if (is_zero(PD(x))) reject("continuous touching", "P·D vanishes at gap point " + x.get_str());
+        cut.push_back(x);
+      }
+      cut.push_back(Rational(1));
+      for (std::size_t i = 0; i + 1 < cut.size(); ++i)
+        if (int v = descartes_variations(PD, cut[i], cut[i + 1]); v != 0)
+          reject("continuous touching", "P·D may have a root in (" + cut[i].get_str() + ", " + cut[i + 1].get_str() + "): " + std::to_string(v) +
+                                            " sign variation(s), so the status may change inside [0, 1]");
+    }
+    Instant i0{"0", Rational(0), Rational(0)}, i1{"1", Rational(1), Rational(1)};
+    continuous.collides = true;
+    continuous.intervals.push_back({i0, i1});
+    continuous.first_contact = i0;
+    if (st == Status::touching) continuous.contact_intervals.push_back({i0, i1});
+    checked.push_back(std::string("continuous touching: ") +
+                      (zero ? "P·D vanishes identically, overlapping on [0, 1]"
+                            : std::string("P·D has no root in [0, 1], so the status is ") + to_string(st) + " on all of [0, 1]" +
+                                  (st == Status::touching ? " (contact interval [0, 1])" : "")));
+  }
+
   void timeline() {
     const json& tl = at(cert, "timeline", "certificate");
-    if (!tl.is_array() || tl.size() < 3 || tl.size() % 2 == 0)
-      reject("timeline", "expected instant, cell, instant, ..., instant (an odd number >= 3 of entries)");
+    if (!tl.is_array() || tl.size() < 3 || tl.size() % 2 == 0 || tl.size() > 2 * degree + 3)
+      reject("timeline", "expected instant, cell, instant, ..., instant (an odd number >= 3 of entries, at most " +
+                             std::to_string(2 * degree + 3) + " for a projection of degree " + std::to_string(degree) + ")");
     for (std::size_t k = 0; k < tl.size(); ++k) {
       std::string place = "timeline[" + std::to_string(k) + "]";
       Node n;
       n.is_cell = k % 2 == 1;
       if (n.is_cell) {
-        n.lo = n.hi = rat(at(tl[k], "cell_sample", place), place + ".cell_sample");
+        n.lo = n.hi = rat(at(tl[k], "cell_sample", place), place + ".cell_sample", max_bits);
         n.name = "cell " + std::to_string(k / 2) + " (sample " + n.lo.get_str() + ")";
       } else {
         const json& in = at(tl[k], "instant", place);
-        n.lo = rat(at(in, "lo", place + ".instant"), place + ".instant.lo");
-        n.hi = rat(at(in, "hi", place + ".instant"), place + ".instant.hi");
+        n.lo = rat(at(in, "lo", place + ".instant"), place + ".instant.lo", max_bits);
+        n.hi = rat(at(in, "hi", place + ".instant"), place + ".instant.hi", max_bits);
         n.name = "instant " + std::to_string(k / 2) + " " + bracket_text(n.lo, n.hi);
+        if (n.lo > n.hi) reject(n.name, place + ".instant: lo > hi");
+        check_approx(at(in, "approx", place + ".instant"), n.lo, n.hi, n.name, place + ".instant.approx", approx_chars);
         const json& f = at(tl[k], "root_of_factor", place);
-        if (!f.is_null()) {
-          if (!f.is_number_integer() || f.get<int>() < 0 || f.get<int>() >= int(F.size()))
-            reject("certificate format", place + ".root_of_factor: expected null or a factor index below " + std::to_string(F.size()));
-          n.factor = f.get<int>();
-        }
+        if (!f.is_null()) n.factor = int(whole(f, place + ".root_of_factor", 0, (long long)F.size() - 1));
         n.evidence = tl[k].contains("evidence") ? tl[k]["evidence"] : json::array();
-        if (n.lo > n.hi) reject(n.name, "lo > hi");
+        if (!n.evidence.is_array() || n.evidence.size() > 16)
+          reject("certificate format", place + ".evidence: expected an array of at most 16 objects {\"poly\", \"sign\"}, got " +
+                                           n.evidence.dump().substr(0, 40));
+        for (std::size_t i = 0; i < n.evidence.size(); ++i)
+          if (!n.evidence[i].is_object())
+            reject("certificate format", place + ".evidence[" + std::to_string(i) + "]: expected an object {\"poly\", \"sign\", ...}, got " +
+                                             n.evidence[i].dump().substr(0, 40));
+        n.place = place;
       }
       n.status = status_named(at(tl[k], "status", place), place + ".status");
       nodes.push_back(n);
@@ -218,8 +354,10 @@ struct Checker {
     // Gaps.
     std::vector<Rational> pts;
     const json& gp = at(cert, "gap_points", "certificate");
-    if (!gp.is_array()) reject("certificate format", "gap_points: expected an array");
-    for (std::size_t i = 0; i < gp.size(); ++i) pts.push_back(rat(gp[i], "gap_points[" + std::to_string(i) + "]"));
+    const std::size_t max_points = certificate_max_gap_points(degree);
+    if (!gp.is_array() || gp.size() > max_points)
+      reject("certificate format", "gap_points: expected an array of at most " + std::to_string(max_points) + " points");
+    for (std::size_t i = 0; i < gp.size(); ++i) pts.push_back(rat(gp[i], "gap_points[" + std::to_string(i) + "]", max_bits));
     std::size_t used = 0;
     int pieces = 0;
     for (std::size_t k = 0; k + 2 < nodes.size(); k += 2) {
@@ -245,7 +383,7 @@ struct Checker {
   Sign evidence_sign(const Node& n, const std::string& want) {
     for (std::size_t i = 0; i < n.evidence.size(); ++i) {
       const json& e = n.evidence[i];
-      std::string place = n.name + " evidence[" + std::to_string(i) + "]";
+      std::string place = n.place + ".evidence[" + std::to_string(i) + "]";
       const json& nm = at(e, "poly", place);
       if (!nm.is_string() || nm.get<std::string>() != want) continue;
       Poly<Rational> q;
@@ -262,7 +400,7 @@ struct Checker {
           reject(n.name, want + " is " + to_string(sign(q(n.lo))) + " on the bracket, not " + to_string(claimed) + " as claimed");
         return claimed;
       }
-      Poly<Rational> h = poly(at(e, "common_factor", place), place + ".common_factor"), quo, rem;
+      Poly<Rational> h = poly(at(e, "common_factor", place), place + ".common_factor", factor_bits, degree + 1), quo, rem;
       if (h.degree() < 1) reject(n.name, "the common factor offered for " + want + " = 0 is constant");
       divide(q, h, quo, rem);
       if (!rem.is_zero()) reject(n.name, "the common factor offered for " + want + " = 0 does not divide " + want);
@@ -320,6 +458,20 @@ struct Checker {
       reject("certificate format", e.what());
     }
     const Answer& got = *derived;
+    auto approx_ok = [&](const Instant& i, const std::string& place) {
+      if (!i.certified()) reject("answer", place + ": the instant has no bracket (lo, hi null)");
+      check_approx(json(i.approx), *i.lo, *i.hi, "answer", place + ".approx", approx_chars ? approx_chars : 200);
+    };
+    for (std::size_t i = 0; i < want.intervals.size(); ++i) {
+      approx_ok(want.intervals[i].first, "answer.intervals[" + std::to_string(i) + "][0]");
+      approx_ok(want.intervals[i].second, "answer.intervals[" + std::to_string(i) + "][1]");
+    }
+    if (want.first_contact) approx_ok(*want.first_contact, "answer.first_contact");
+    for (std::size_t i = 0; i < want.contacts.size(); ++i) approx_ok(want.contacts[i], "answer.contacts[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < want.contact_intervals.size(); ++i) {
+      approx_ok(want.contact_intervals[i].first, "answer.contact_intervals[" + std::to_string(i) + "][0]");
+      approx_ok(want.contact_intervals[i].second, "answer.contact_intervals[" + std::to_string(i) + "][1]");
+    }
     if (got.collides != want.collides) reject("answer", std::string("the timeline gives collides = ") + (got.collides ? "true" : "false"));
     if (got.intervals.size() != want.intervals.size())
       reject("answer", "the timeline gives " + std::to_string(got.intervals.size()) + " collision interval(s), the certificate " + std::to_string(want.intervals.size()));
@@ -333,7 +485,15 @@ struct Checker {
       reject("answer", "the timeline gives " + std::to_string(got.contacts.size()) + " contact(s), the certificate " + std::to_string(want.contacts.size()));
     for (std::size_t i = 0; i < got.contacts.size(); ++i)
       if (!same_instant(got.contacts[i], want.contacts[i])) reject("answer", "contact " + std::to_string(i + 1) + " differs from the one the timeline gives");
-    checked.push_back("answer: follows from the checked timeline");
+    if (got.contact_intervals.size() != want.contact_intervals.size())
+      reject("answer", "the timeline gives " + std::to_string(got.contact_intervals.size()) +
+                           " contact interval(s) (continuous touching), the certificate " + std::to_string(want.contact_intervals.size()) +
+                           (got.contact_intervals.size() > want.contact_intervals.size() ? ": it would pass a continuous touch off as an overlap" : ""));
+    for (std::size_t i = 0; i < got.contact_intervals.size(); ++i)
+      if (!same_instant(got.contact_intervals[i].first, want.contact_intervals[i].first) ||
+          !same_instant(got.contact_intervals[i].second, want.contact_intervals[i].second))
+        reject("answer", "contact interval " + std::to_string(i + 1) + " differs from the one the timeline gives");
+    checked.push_back("answer: follows from the checked timeline, every approx in its bracket");
   }
 
   void run() {
@@ -342,12 +502,7 @@ struct Checker {
     scene();
     f();
     if (!projection()) {
-      Answer all;  // Δ ≡ 0: the collision set is [0, 1]
-      Instant i0{"0", Rational(0), Rational(0)}, i1{"1", Rational(1), Rational(1)};
-      all.collides = true;
-      all.intervals.push_back({i0, i1});
-      all.first_contact = i0;
-      answer(all);
+      answer(continuous);  // Δ ≡ 0: the collision set is [0, 1], continuous touching as checked
       return;
     }
     timeline();
@@ -382,9 +537,25 @@ CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_d
   } catch (const Reject& r) {
     out.failed_claim = r.claim;
     out.reason = r.reason;
+  } catch (const std::exception& e) {  // safety net: a malformed part the checks above did not foresee
+    out.failed_claim = "certificate format";
+    out.reason = std::string("malformed certificate after the claims checked so far: ") + e.what();
   }
   out.checked = c.checked;
   return out;
+}
+
+CertificateCheck check_certificate_text(const Scene& s, const nlohmann::json& scene_doc, const std::string& cert_text,
+                                        const std::string& cert_label) {
+  std::string structure;
+  nlohmann::json cert = parse_json_document(cert_text, cert_label, &structure);
+  if (!structure.empty()) {
+    CertificateCheck out;
+    out.failed_claim = "certificate format";
+    out.reason = structure;
+    return out;
+  }
+  return check_certificate(s, scene_doc, cert);
 }
 
 }  // namespace eccd

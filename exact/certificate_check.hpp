@@ -30,7 +30,20 @@
 //              kernel/quartic_touch_rule.hpp and the neighbouring cells (3D);
 //   answer     the answer assembled from the checked timeline equals the
 //              certificate's.
-// The first claim that fails is reported by name with the reason.
+//   continuous touching (2D, Δ ≡ 0)
+//              P·D has no root in [0, 1] (gap points, Descartes) and the static
+//              test at one sample gives the status: touching means the answer
+//              has the contact interval [0, 1] (docs/answer-format.md);
+// Every approx is a decimal inside its bracket; every integer is range
+// checked (no truncation); duplicate keys are refused (one strict parse);
+// every rational has at most certificate_max_bits(n, τ) bits
+// (exact/certificate.hpp: 4τ + 1024, and n²·b <= 2^26 but >= 512; τ the bit
+// size of the projection's integer coefficients, n its degree), every factor
+// coefficient τ + 2n + 64, at most 8n + 64 gap points,
+// multiplicities at most n = deg P and their degree sum equal to n, before
+// any arithmetic, so a forged certificate cannot make the checker slow.
+// The first claim that fails is reported by name with the reason and the JSON
+// place; a malformed part is REJECTED, never an internal error.
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -46,5 +59,10 @@ struct CertificateCheck {
 };
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
+// The same from the certificate's bytes (read once by the caller): a duplicate
+// key or over-deep nesting is REJECTED naming its JSON place; malformed JSON
+// throws SceneError "LABEL: line L, column C: ..." (an unreadable file).
+CertificateCheck check_certificate_text(const Scene& s, const nlohmann::json& scene_doc, const std::string& cert_text,
+                                        const std::string& cert_label);
 
 }  // namespace eccd

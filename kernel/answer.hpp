@@ -10,6 +10,14 @@
 // external tangency. Each instant carries a decimal approximation and, when
 // certified, a rational bracket [lo, hi] that provably contains it and no
 // other instant of its list (0 and 1 are written exactly).
+// Beyond the spec's four keys, `contact_intervals` (docs/answer-format.md):
+// the maximal intervals of positive length on which the objects touch
+// externally the whole time (continuous touching, e.g. 2D Δ ≡ 0 with a
+// negative double root, 003 Corollary 7 and section VI-B). Such an interval
+// is part of C, so it is also inside a collision interval and `collides` is
+// true (the spec: touching counts as collision); its instants are not listed
+// in `contacts`, which keeps the isolated instants of external tangency.
+// Without contact_intervals a continuous touch would read as an overlap.
 #include <gmpxx.h>
 #include <mpfr.h>
 
@@ -35,9 +43,9 @@ struct Answer {
   std::vector<std::pair<Instant, Instant>> intervals;
   std::optional<Instant> first_contact;
   std::vector<Instant> contacts;
+  std::vector<std::pair<Instant, Instant>> contact_intervals;  // continuous touching; JSON key optional, default []
   // Extras: not part of the stored answer, reported by `eccd solve --json`.
   std::vector<ContactPoint> contact_points;      // one per contact
-  std::vector<std::pair<Instant, Instant>> contact_intervals;  // continuous touching (Δ ≡ 0)
   std::vector<Instant> undecided;                 // floating: instants it could not classify
 };
 

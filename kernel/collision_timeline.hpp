@@ -13,6 +13,10 @@
 // has its end instants in C, since C is closed); a run that starts or ends on
 // a cell because of rounding is widened to the neighbouring instant.
 // `contacts` are the touching instants; `undecided` the uncertain nodes.
+// A touching cell (continuous touching, 3D e.g. two balls rolling on each
+// other) gives a `contact_interval` over the cell's closure, runs merged; the
+// touching instants inside it are not listed in `contacts`
+// (docs/answer-format.md).
 // Requirements: none on the arithmetic (statuses and display instants only).
 #include "kernel/answer.hpp"
 #include "kernel/contact_status.hpp"
@@ -42,19 +46,35 @@ inline void check_isolated_instants(std::vector<TimelineNode>& seq, bool exact) 
   }
 }
 
-// Fills ans (collides, intervals, first_contact, contacts, undecided).
+// Fills ans (collides, intervals, first_contact, contacts, contact_intervals, undecided).
 // on_contact(k) is called for each touching instant node k, in order.
 template <class OnContact>
 void assemble_answer(const std::vector<TimelineNode>& seq, Answer& ans, OnContact on_contact) {
+  // Continuous touching (docs/answer-format.md): a touching cell makes a
+  // contact interval from its left to its right instant (runs merged); the
+  // instants inside such an interval are not isolated contacts.
+  auto touching_cell = [&](std::size_t k) { return k < seq.size() && seq[k].is_cell && seq[k].status == Status::touching; };
+  auto contact = [&](std::size_t k) {
+    if (touching_cell(k + 1) || (k > 0 && touching_cell(k - 1))) return;
+    ans.contacts.push_back(seq[k].t);
+    on_contact(k);
+  };
+  for (std::size_t k = 0; k < seq.size(); ++k) {
+    if (!touching_cell(k)) continue;
+    std::size_t e = k;
+    while (touching_cell(e + 2) && seq[e + 1].status == Status::touching) e += 2;
+    ans.contact_intervals.push_back({k > 0 ? seq[k - 1].t : seq[k].t, e + 1 < seq.size() ? seq[e + 1].t : seq[e].t});
+    k = e;
+  }
   for (std::size_t k = 0; k < seq.size(); ++k) {
     const TimelineNode& n = seq[k];
     if (n.status == Status::uncertain) { ans.undecided.push_back(n.t); continue; }
-    if (!n.is_cell && n.status == Status::touching) { ans.contacts.push_back(n.t); on_contact(k); }
+    if (!n.is_cell && n.status == Status::touching) contact(k);
     if (!in_collision(n.status)) continue;
     std::size_t e = k;
     while (e + 1 < seq.size() && in_collision(seq[e + 1].status)) {
       ++e;
-      if (!seq[e].is_cell && seq[e].status == Status::touching) { ans.contacts.push_back(seq[e].t); on_contact(e); }
+      if (!seq[e].is_cell && seq[e].status == Status::touching) contact(e);
     }
     const Instant& first = seq[k].is_cell ? seq[k - 1].t : seq[k].t;
     const Instant& last = seq[e].is_cell ? seq[e + 1].t : seq[e].t;

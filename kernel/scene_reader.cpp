@@ -770,7 +770,7 @@ Instant Reader::instant(const json& j, const std::string& ptr) const {
 Answer Reader::answer(const json& j, const std::string& ptr) {
   const std::string what = "an answer";
   require_object(j, ptr, what);
-  check_keys(j, ptr, {"collides", "intervals", "first_contact", "contacts"}, what);
+  check_keys(j, ptr, {"collides", "intervals", "first_contact", "contacts", "contact_intervals"}, what);
   const json& c = member(j, ptr, "collides", what);
   if (!c.is_boolean()) fail(child(ptr, "collides"), "collides must be true or false, got " + type_name(c));
   Answer a;
@@ -787,6 +787,20 @@ Answer Reader::answer(const json& j, const std::string& ptr) {
                     (pair.is_array() ? std::to_string(pair.size()) + " entries" : type_name(pair)));
       a.intervals.emplace_back(instant(pair[0], child(p, 0)), instant(pair[1], child(p, 1)));
     }
+  }
+  // contact_intervals (docs/answer-format.md): [start, end] pairs like intervals; missing = [].
+  if (const json* ci = find(j, "contact_intervals")) {
+    const std::string cip = child(ptr, "contact_intervals");
+    if (!ci->is_array()) fail(cip, "contact_intervals must be an array of [start, end] pairs of instants, got " + type_name(*ci));
+    for (std::size_t i = 0; i < ci->size(); ++i) {
+      const std::string p = child(cip, i);
+      const json& pair = (*ci)[i];
+      if (!pair.is_array() || pair.size() != 2)
+        fail(p, "a contact interval must be [start, end], an array of 2 instants, got " +
+                    (pair.is_array() ? std::to_string(pair.size()) + " entries" : type_name(pair)));
+      a.contact_intervals.emplace_back(instant(pair[0], child(p, 0)), instant(pair[1], child(p, 1)));
+    }
+    if (!a.collides && !a.contact_intervals.empty()) fail(cip, "collides is false but contact_intervals is not empty");
   }
   const json* fc = find(j, "first_contact");
   if (fc && !fc->is_null()) a.first_contact = instant(*fc, fp);
@@ -877,27 +891,47 @@ Answer answer_from_json(const json& j, const std::string& file_label, const std:
   }
 }
 
-Scene parse_scene(const std::string& json_text, const std::string& file_label) {
-  if (json_text.size() > input_limits().max_file_bytes)
-    throw SceneError(file_label + ": " + std::to_string(json_text.size()) + " bytes, beyond the input limit of " +
-                     std::to_string(input_limits().max_file_bytes) + " bytes (--max-file-bytes)");
+namespace {
+// One strict parse: the DOM with duplicate keys and over-deep nesting refused.
+// Syntax errors always throw; structure errors (duplicate key, depth) throw
+// unless `structure_error` is given, which then receives "PLACE: what".
+void parse_dom(const std::string& json_text, const std::string& file_label, DomBuilder& b, std::string* structure_error) {
   if (json_text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw SceneError(file_label + ": line 1, column 1: malformed JSON: the file is empty or blank (a scene is a JSON object)");
+    throw SceneError(file_label + ": line 1, column 1: malformed JSON: the file is empty or blank (expected a JSON object)");
   if (auto nul = json_text.find('\0'); nul != std::string::npos) {
     std::size_t line = 1 + std::size_t(std::count(json_text.begin(), json_text.begin() + long(nul), '\n'));
     throw SceneError(file_label + ": line " + std::to_string(line) + ", byte " + std::to_string(nul + 1) +
                      ": malformed JSON: a NUL byte: this is a binary file, not a JSON text");
   }
-  DomBuilder b;
   bool ok = false;
   try {
     ok = json::sax_parse(json_text, &b);
   } catch (const std::exception& e) {
     throw SceneError(file_label + ": " + json_error_text(json_text, json_text.size(), e.what()));
   }
-  if (!b.error_what.empty()) throw SceneError(file_label + ": " + place_text(b.error_place) + ": " + b.error_what);
+  if (!b.error_what.empty()) {
+    const std::string what = place_text(b.error_place) + ": " + b.error_what;
+    if (!structure_error) throw SceneError(file_label + ": " + what);
+    *structure_error = what;
+    return;
+  }
   if (b.json_error || !ok)
     throw SceneError(file_label + ": " + json_error_text(json_text, b.error_byte, b.json_error_what));
+}
+}  // namespace
+
+nlohmann::json parse_json_document(const std::string& json_text, const std::string& file_label, std::string* structure_error) {
+  DomBuilder b;
+  parse_dom(json_text, file_label, b, structure_error);
+  return structure_error && !structure_error->empty() ? json() : std::move(b.root);
+}
+
+Scene parse_scene(const std::string& json_text, const std::string& file_label) {
+  if (json_text.size() > input_limits().max_file_bytes)
+    throw SceneError(file_label + ": " + std::to_string(json_text.size()) + " bytes, beyond the input limit of " +
+                     std::to_string(input_limits().max_file_bytes) + " bytes (--max-file-bytes)");
+  DomBuilder b;
+  parse_dom(json_text, file_label, b, nullptr);
   Reader r(file_label, &b.float_text);
   try {
     return r.scene(b.root);

@@ -41,14 +41,15 @@
 // 10. Where a polynomial vanishes on [0, 1], the message gives the root
 //     exactly ("at t = 1/3") when it is rational with denominator < 2^15,
 //     otherwise a rational bracket of width 2^-30 ("at t in [lo, hi]").
-// 11. Answer: "collides" is required; "intervals" and "contacts" default to
-//     [], "first_contact" to null. In an instant, "approx" is a required
+// 11. Answer: "collides" is required; "intervals", "contacts" and
+//     "contact_intervals" (continuous touching, docs/answer-format.md) default
+//     to [], "first_contact" to null. In an instant, "approx" is a required
 //     string (not parsed); "lo"/"hi" may be missing (= null) but must be
 //     both null or both numbers, with lo <= hi. collides = false requires
 //     empty intervals/contacts and a null first_contact; collides = true
 //     with an explicitly empty "intervals" is an error.
-// 12. answer_to_json writes the four spec keys always, and the extras
-//     (contact_points, contact_intervals, undecided) only when non-empty;
+// 12. answer_to_json writes the four spec keys always, contact_intervals and
+//     the extras (contact_points, undecided) only when non-empty;
 //     answer_from_json rejects the extras (they are not part of a stored
 //     answer).
 // 13. Scene::path is set to the file label (the path for read_scene_file).
@@ -91,10 +92,18 @@ InputLimits& input_limits();
 // Reads and validates a scene; throws SceneError "FILE: PLACE: what is wrong".
 Scene read_scene_file(const std::string& path);
 Scene parse_scene(const std::string& json_text, const std::string& file_label);
-// The bytes of a file, read once and at most max_file_bytes of them (choice
-// 14): a directory, an unreadable or too large file throws SceneError
-// "FILE: ...".
+// The bytes of a file, read once and at most max_file_bytes of them (a
+// directory, an unreadable or too large file throws SceneError "FILE: ..."). Callers that need both the
+// Scene and its JSON (certify, check-certificate) parse these same bytes twice
+// instead of opening the file twice.
 std::string read_file_bytes(const std::string& path);
+// A JSON document read with the checks of choice 6 (duplicate keys, nesting
+// depth); throws SceneError "LABEL: line L, column C: malformed JSON: ..." for a
+// syntax error. A duplicate key or over-deep nesting throws SceneError too,
+// unless structure_error is given: then it receives "PLACE: what" and the
+// result is null (the certificate checker rejects such a certificate).
+nlohmann::json parse_json_document(const std::string& json_text, const std::string& file_label,
+                                   std::string* structure_error = nullptr);
 
 // Exact value of a number string (choice 1 above). Throws std::invalid_argument
 // whose what() is the reason (the reader turns it into a SceneError).

@@ -2,6 +2,7 @@
 // (exact/certificate_check.hpp): Descartes' rule on intervals, certificates
 // of the shipped cases accepted, and tampered ones rejected with the claim named.
 #include "exact/certificate.hpp"
+#include "exact/certificate_algebra.hpp"
 #include "exact/certificate_check.hpp"
 #include "exact/descartes.hpp"
 #include "kernel/scene_reader.hpp"
@@ -110,6 +111,7 @@ TEST_CASE("A tampered 2D certificate is rejected and the failing claim is named"
     Rational nlo = (prev + lo) / 2, nhi = nlo + w;  // same width, between the sample and the old bracket
     t["timeline"][k]["instant"]["lo"] = nlo.get_str();
     t["timeline"][k]["instant"]["hi"] = nhi.get_str();
+    t["timeline"][k]["instant"]["approx"] = approx_in_bracket(nlo, nhi);  // a consistent forgery: approx in the new bracket
     CertificateCheck r = check_certificate(c.s, c.doc, t);
     CHECK_FALSE(r.valid);
     CHECK(r.failed_claim.rfind("instant 1 ", 0) == 0);
