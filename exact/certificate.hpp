@@ -63,7 +63,9 @@ struct CertificationError : std::runtime_error {
 };
 
 // Runs the exact pipeline with the root isolation recorded and returns the
-// certificate (format "eccd-certificate/1"). scene_doc is the scene file's
+// certificate (format "eccd-certificate/2": format 1 plus approx inside its
+// bracket, contact_intervals in the answer and the continuous_touching claim
+// of a 2D Δ ≡ 0; the checker refuses format 1). scene_doc is the scene file's
 // JSON (its dim, a and b are copied into the certificate).
 nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc);
 
