@@ -173,7 +173,7 @@ Command add_check_certificate_command(CLI::App& app) {
                              "cell's status by the exact static test, each instant's evidence, and the answer. Exit 0 if every "
                              "claim holds, 1 naming the first claim that fails, 2 for an unreadable file.");
   c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about")->required();
-  c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/1)")->required();
+  c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/2)")->required();
   c.sub->add_flag("--json", args->json, "Print one JSON object {valid, checked, failed_claim, reason}");
   c.run = [args]() {
     // Each file read once; a directory or unreadable file is exit 2 with its path (SceneError).

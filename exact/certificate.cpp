@@ -87,7 +87,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
   if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
 
   nlohmann::json c;
-  c["format"] = "eccd-certificate/1";
+  c["format"] = "eccd-certificate/2";
   c["scene"] = {{"path", s.path}, {"name", s.name}, {"dim", scene_doc.at("dim")}, {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")}};
   nlohmann::json g = nlohmann::json::array();
   for (const auto& gk : alg.g) {

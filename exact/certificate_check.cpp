@@ -498,7 +498,11 @@ struct Checker {
 
   void run() {
     const json& fmt = at(cert, "format", "certificate");
-    if (fmt != "eccd-certificate/1") reject("certificate format", "format: expected \"eccd-certificate/1\"");
+    if (fmt != "eccd-certificate/2")
+      reject("certificate format", std::string("format: expected \"eccd-certificate/2\"") +
+                                       (fmt == "eccd-certificate/1" ? " (format 1, written by an older eccd, has no checked approx and no "
+                                                                     "continuous touching: run eccd certify again)"
+                                                                   : ""));
     scene();
     f();
     if (!projection()) {

@@ -85,6 +85,7 @@ TEST_CASE("certify paper 002's example: both intervals certified, verdicts, a ce
   SECTION("one bracket moved off its root") {
     c["timeline"][k]["instant"]["lo"] = "5/32";
     c["timeline"][k]["instant"]["hi"] = "21/128";  // inside (1/8, 0.1698...): holds no root
+    c["timeline"][k]["instant"]["approx"] = "0.16";  // consistent with the moved bracket (approx is checked too)
     save(dir / "t.json", c);
     CHECK(run(exe + " check-certificate " + scene + " " + (dir / "t.json").string(), out) == 1);
     CHECK(out.find("REJECTED: instant 1 ") != std::string::npos);

@@ -115,6 +115,9 @@ forge("multiplicity-1000", "2d", "multiplicity 1000 on a factor", "certificate f
       "projection.square_free_factors[0].multiplicity", setp(["projection", "square_free_factors", 0, "multiplicity"], 1000))
 forge("bracket-exponent-bomb", "2d", "a bracket end written 1e-10000 style with a huge exponent", "certificate format",
       f"timeline[{k2}].instant.lo", setp(["timeline", k2, "instant", "lo"], "4e-99999"))
+# An older format (no checked approx, no continuous touching) is refused, not misread.
+forge("format-1", "2d", "a format-1 certificate", "certificate format", "format: expected \"eccd-certificate/2\"",
+      setp(["format"], "eccd-certificate/1"))
 # Item 7: continuous touching must be in the answer and cannot be called an overlap.
 forge("rolling-2d-contact-interval-dropped", "rolling2d", "circles rolling in contact, contact_intervals dropped",
       "answer", "continuous touch off as an overlap", lambda c: c["answer"].pop("contact_intervals"))
