@@ -85,7 +85,8 @@ Command add_regress_command(CLI::App& app) {
   c.sub = app.add_subcommand("regress",
                              "Recompute every scene under DIR that has a stored answer with the exact pipeline and compare: same "
                              "collides, same numbers of intervals and contacts, each recomputed bracket overlapping the stored one. "
-                             "One line per scene, then a summary; exit 1 if any scene differs or fails.");
+                             "One line per scene, then a summary; exit 1 if any scene differs or fails (a scene over --time-limit, a file that "
+                             "looks like a scene but does not read as one, e.g. a misspelled format, fails); exit 2 if DIR has no scene.");
   auto* s = c.sub;
   s->add_option("DIR", args->dir, "Folder searched recursively for scene files (*.json)")->capture_default_str();
   s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline and tabulate how each fares against the stored answers");

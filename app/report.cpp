@@ -456,7 +456,8 @@ int run_report(const ReportArgs& a) {
     std::sort(files.begin(), files.end());
     std::size_t corpus = 0;
     for (const auto& f : files) {
-      Scene s = read_scene_file(f.string());  // a bad file stops the run before any work (exit 2)
+      std::string text = read_file_bytes(f.string());  // read once: the bytes checked are the bytes run
+      Scene s = parse_scene(text, f.string());  // a bad file stops the run before any work (exit 2)
       if (source == "cases" && spec_from_note(s.note)) {  // cases/generated: the report generates its own
         ++corpus;
         continue;
@@ -465,8 +466,6 @@ int run_report(const ReportArgs& a) {
         std::fprintf(stderr, "eccd report: %s: skipped (cycloidal motion: no exact ground truth)\n", f.string().c_str());
         continue;
       }
-      std::ifstream in(f);
-      std::string text((std::istreambuf_iterator<char>(in)), {});
       tasks.push_back({Task::SceneTask, text, f.string(), source});
       source == "cases" ? ++from_cases : ++generated;
     }

@@ -42,6 +42,20 @@ class Mutator {
   std::size_t pick(std::size_t n) { return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_); }
   const std::string& any_corpus() { return corpus_[pick(corpus_.size())]; }
 
+  // A mutant that stays JSON (for readers behind a JSON parser, e.g. the
+  // certificate checker): values replaced, deleted, duplicated or made huge.
+  std::string mutate_value(std::string text, std::string& how) {
+    how.clear();
+    int rounds = 1 + int(pick(3));
+    for (int r = 0; r < rounds; ++r) {
+      switch (pick(3)) {
+        case 0: huge_number(text, how); break;
+        default: structural(text, how); break;
+      }
+    }
+    return text;
+  }
+
   // One mutant of `text` and a short description of what was done (for failure messages).
   std::string mutate(std::string text, std::string& how) {
     how.clear();
@@ -158,14 +172,17 @@ class Mutator {
     collect(j, nodes);
     if (nodes.empty()) return;
     nlohmann::ordered_json& n = *nodes[pick(nodes.size())];
-    switch (pick(8)) {
+    switch (pick(9)) {
+      case 8:  // a copy of another value of the document in its place (wrong type or wrong number)
+        n = nlohmann::ordered_json(*nodes[pick(nodes.size())]);
+        break;
       case 0: n = nullptr; break;
       case 1: n = ""; break;
       case 2: n = nlohmann::ordered_json::array(); break;
       case 3: n = nlohmann::ordered_json::object(); break;
       case 4: n = std::uint64_t(1) << 63; break;
       case 5: n = "not a number"; break;
-      case 6: n = -1; break;
+      case 6: n = pick(2) ? nlohmann::ordered_json(-1) : nlohmann::ordered_json(4294967297ull); break;
       default:
         if (n.is_array() && !n.empty()) n.erase(n.begin() + long(pick(n.size())));
         else if (n.is_object() && !n.empty()) n.erase(std::next(n.begin(), long(pick(n.size()))));
