@@ -99,7 +99,7 @@ struct HarnessOptions {
   int grid = 64;               // N of the 3D sampling:N and marching:N baselines
   bool mpfr_power_3d = false;  // also run mpfr:B/bezier-power in 3D
   std::vector<std::string> inputs = default_input_modes();  // input modes of the floating pipelines
-  double budget_s = 20;         // time budget of one floating run (seconds; <= 0: none)
+  double budget_s = 10;         // time budget of one floating run (seconds; <= 0: none)
   double exact_budget_s = 600;  // time budget of the exact run (ground truth)
   bool isolate = true;          // each floating run in a child process killed at 2 x budget + 1 s (run_bounded)
 };

@@ -25,6 +25,16 @@ Definitions used throughout (they are repeated in report.md):
                            undecided or error; "none of the tested" otherwise.
   time                     medians of time_us over rows whose outcome is not `error` (an error row
                            has no measured time; the harness writes 0 there).
+  trustworthy              per family group and input mode, an arithmetic (double, mpfr:B; all its
+                           pipelines pooled) with no false positive, false negative or error; undecided
+                           answers (the pipelines' own, from an error bound or a time budget) are
+                           honest and counted apart. "Trustworthy from mpfr:B on": B and every larger
+                           tested precision are.
+  input modes              results.csv's `input` column: `rounded` (the scene's numbers rounded to the
+                           arithmetic) or `prepared` (coefficients prepared exactly, then rounded). The
+                           main sections read the rounded rows where there are any; the section on
+                           input modes reads both. Columns `input`, `digits` and `reason` may be absent
+                           (older files: input `prepared`).
 
 Everything is written to a temporary folder inside DIR and moved into place at the end
 (figures first, report.md last), so a failure leaves no half-written report. Exit status:

@@ -120,6 +120,7 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
   Scene s = parse_scene(g.doc.dump(), g.name);
   HarnessOptions o;
   o.mpfr_bits = {64, 256};
+  o.inputs = {"prepared"};  // coefficient errors are measured for this mode; one mode: labels without suffix
   auto rows = run_scene(s, scene_info(s, "generated"), o);
   REQUIRE(rows.size() == harness_pipelines(2, o).size());
   CHECK(rows[0].pipeline == "exact");
@@ -136,11 +137,48 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
   CHECK(*by["mpfr:256/bernstein"]->coef_err < 1e-70);
   CHECK(*by["mpfr:256/power"]->delta_err < *by["mpfr:64/power"]->delta_err);
   CHECK(*by["mpfr:64/power"]->delta_err < *by["double/power"]->delta_err);
-  // One CSV line per row, 26 fields each.
+  for (const auto& r : rows) CHECK(r.input == "prepared");
+  // One CSV line per row, 29 fields each.
   for (const auto& r : rows) {
     const std::string line = results_csv_line(r);
-    CHECK(std::count(line.begin(), line.end(), ',') == 25);
+    CHECK(std::count(line.begin(), line.end(), ',') == 28);
   }
   const std::string head = results_csv_header();
-  CHECK(std::count(head.begin(), head.end(), ',') == 25);
+  CHECK(std::count(head.begin(), head.end(), ',') == 28);
+}
+
+TEST_CASE("harness: both input modes are rows of their own where the solver has them", "[metrics][harness]") {
+  HarnessOptions o;
+  o.mpfr_bits = {64};
+  o.inputs = {"rounded", "prepared"};
+  auto pipes = harness_pipelines(2, o);
+  int prepared = 0, rounded = 0;
+  for (const auto& p : pipes) {
+    if (p.label == "exact") continue;
+    (p.input == "prepared" ? prepared : rounded)++;
+    if (solver_has_input_modes()) CHECK((p.input == "prepared") == (p.label.find("@prepared") != std::string::npos));
+  }
+  CHECK(prepared == 5);  // double x 3 bases, mpfr:64 x 2
+  CHECK(rounded == (solver_has_input_modes() ? 5 : 0));
+  SolveOptions so;
+  CHECK_THROWS_AS(apply_input_mode(so, "rounding"), std::invalid_argument);
+}
+
+TEST_CASE("harness: a run that does not stop is killed and recorded as a time-out", "[metrics][harness]") {
+  // A 2D decimal scene whose double run took minutes before issue 14 (or, after it, ends well within the budget):
+  // either way run_bounded returns within 2 x budget + 1 s.
+  GeneratorSpec sp;
+  sp.dim = 2;
+  sp.degree = 2;
+  sp.family = "decimal";
+  sp.digits = 6;
+  sp.seed = 132530586833523ULL;
+  GeneratedScene g = generate_scene(sp);
+  Scene s = parse_scene(g.doc.dump(), g.name);
+  SolveOptions opt;
+  opt.arith = parse_arithmetic("double");
+  BoundedRun r = run_bounded(s, opt, 0.2, true);
+  CHECK(r.wall_s < 2 * 0.2 + 1 + 0.5);
+  if (r.timed_out) CHECK(r.reason.rfind("time budget", 0) == 0);
+  else CHECK(r.got.contains("collides"));
 }

@@ -20,6 +20,7 @@ nlohmann::json solve_exact(const Scene& s) {
 
 TEST_CASE("generated scenes are reproducible, readable and of the requested degree", "[generator]") {
   GeneratePlan plan;
+  plan.families = {"colliding", "free", "touch", "near-miss"};
   plan.degrees = {2, 5};
   plan.d_exponents = {3};
   plan.seed = 11;
@@ -47,6 +48,7 @@ TEST_CASE("generated scenes are reproducible, readable and of the requested degr
 
 TEST_CASE("each family has the answer its construction promises, by the exact pipeline", "[generator][exact]") {
   GeneratePlan plan;
+  plan.families = {"colliding", "free", "touch", "near-miss"};
   plan.degrees = {2, 3};
   plan.d_exponents = {2, 12};
   plan.seed = 20261121;
