@@ -106,7 +106,7 @@ TEST_CASE("approx: the writer's decimal lies in its bracket and the checker read
   CHECK_FALSE(read_approx(std::string(300, '1'), 200));
 }
 
-TEST_CASE("A duplicate key anywhere in a certificate is rejected at its JSON place; malformed JSON is an unreadable file", "[certificate][forgery]") {
+TEST_CASE("A duplicate key anywhere in a certificate is rejected at its JSON place, and malformed JSON is an unreadable file", "[certificate][forgery]") {
   SceneAndDoc sd = scene_of("rolling/circles-rolling.json");
   std::string text = read_file_bytes(data + "valid-rolling2d.cert.json");
   REQUIRE(check_certificate_text(sd.s, sd.doc, text, "c.json").valid);
@@ -168,7 +168,7 @@ TEST_CASE("Continuous touching is in the certified answer: circles and spheres r
   CHECK(r.failed_claim == "continuous touching");
 }
 
-TEST_CASE("check-certificate and certify read each file once: a FIFO serving two scenes cannot pair them; a directory is exit 2", "[certificate][cli]") {
+TEST_CASE("check-certificate and certify read each file once: a FIFO serving two scenes cannot pair them, and a directory is exit 2", "[certificate][cli]") {
   fs::path dir = temp_dir("cert-once");
   const std::string x = src + "/cases/paper003/example2-towards-1e-9.json", y = src + "/cases/paper003/example2-away-1e-12.json";
   std::string out;
