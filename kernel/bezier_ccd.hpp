@@ -317,7 +317,12 @@ class BezierZeroSet {
       Bern<T> Gv = G;
       for (auto& x : Gv.b) x = point_of(x);
       auto roots = bernstein_roots(Gv, ro);
-      if (roots.empty()) return {ShotKind::miss, to};
+      // With a running error bound only the all-positive test above proves a
+      // miss; no root among the values alone may be a tangency within the bound.
+      if (roots.empty()) {
+        if constexpr (has_error_bound_v<T>) return {ShotKind::inconclusive, t};
+        else return {ShotKind::miss, to};
+      }
       T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
       T tn = point_of(T(t + s * (to - t)));  // an evaluation point (floating/running_error.hpp)
       T step = tn - t;

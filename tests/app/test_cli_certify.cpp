@@ -66,7 +66,9 @@ TEST_CASE("certify paper 002's example: both intervals certified, verdicts, a ce
     if (v["pipeline"] == "double/bezier") CHECK(v["agrees"] == true);
     if (v["pipeline"] == "double/bezier-power") {
       CHECK(v["agrees"] == false);
-      CHECK(v["differences"].dump().find("collision interval 2 off by") != std::string::npos);
+      // Off on the second interval, or (with the running error bound of issue 14) undecided there.
+      const std::string d = v["differences"].dump();
+      CHECK((d.find("collision interval 2 off by") != std::string::npos || d.find("undecided") != std::string::npos));
     }
   }
   REQUIRE(run(exe + " check-certificate " + scene + " " + cert.string(), out) == 0);
