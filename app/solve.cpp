@@ -206,6 +206,7 @@ nlohmann::json run_floating_3d(const Scene& scene, const SolveOptions& opt, cons
   } else if (opt.method == "bezier") {
     BezierOptions bo;
     bo.first_contact_only = opt.first_contact;
+    if (opt.arith.kind == Arithmetic::Mpfr) bo.max_subdivisions = 2000;  // MPFR steps cost 10-100x double's
     j = report_json(ccd_bezier(g, like, opt.arith.bits, bo), 3);
   } else if (int n = method_grid(opt.method, "sampling")) {
     j = report_json(ccd_sampling(g, like, n, opt.first_contact), 3);
@@ -322,6 +323,11 @@ void check_method(const std::string& method) {
 
 nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt) {
   nlohmann::json j;
+  // Floating runs always end: each method has work bounds, and a run that the
+  // caller did not bound otherwise gets this deadline (the earlier of the two
+  // deadlines counts, kernel/budget.hpp); what is left then is undecided.
+  const bool floating_run = opt.arith.kind == Arithmetic::Double || opt.arith.kind == Arithmetic::Mpfr;
+  ScopedDeadline default_budget(floating_run ? kDefaultFloatingSeconds : 0);
   if (scene.dim == 3) {
     j = solve_3d(scene, opt);
   } else {

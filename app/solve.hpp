@@ -39,6 +39,10 @@ struct SolveOptions {
   InputMode input = InputMode::rounded;
 };
 
+// The deadline a floating run gets when its caller set none (or a later one):
+// it then ends with what it has not resolved undecided, reason "time budget".
+inline constexpr double kDefaultFloatingSeconds = 30.0;
+
 // Runs the 2D or 3D pipeline; returns the full JSON report (spec answer + extras).
 nlohmann::json solve_scene(const Scene& scene, const SolveOptions& opt);
 // The spec's answer (collides, intervals, first_contact, contacts, in that

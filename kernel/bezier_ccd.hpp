@@ -325,18 +325,28 @@ class BezierZeroSet {
       ro.precision_bits = std::min(bits_, 56);
       ro.first_only = true;
       ro.max_pieces = 2000;
-      // The hit is located as plain T would locate it (a lower bound of the
-      // contact, refined by the next shot); only the miss above is a claim.
-      Bern<T> Gv = G;
-      for (auto& x : Gv.b) x = point_of(x);
-      auto roots = bernstein_roots(Gv, ro);
-      if (roots.empty()) return {ShotKind::miss, to};
+      // With a running error bound the first root (or cluster, where G's sign
+      // is uncertain) starts where G may first vanish: G is surely positive
+      // before it, so the hit stays a lower bound of the contact. No root at
+      // all: every piece had one sure sign, so G > 0 throughout if it starts so.
+      auto roots = bernstein_roots(G, ro);
+      if (roots.empty()) {
+        if constexpr (has_error_bound_v<T>)
+          if (sign(G.b.front()) != Sign::positive) return {ShotKind::inconclusive, t};
+        return {ShotKind::miss, to};
+      }
       T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
       T tn = point_of(T(t + s * (to - t)));  // an evaluation point (floating/running_error.hpp)
       T step = tn - t;
       if (sign(step) == Sign::negative) step = -step;
       t = tn;
-      if (!(step > eps_t_)) return {ShotKind::converged, t};
+      if (!(step > eps_t_)) {
+        // Stuck at the start of a stretch where G's sign is uncertain: the contact is
+        // somewhere at or after t, not known to be at t.
+        if constexpr (has_error_bound_v<T>)
+          if (roots.front().cluster) return {ShotKind::inconclusive, t};
+        return {ShotKind::converged, t};
+      }
     }
     return {ShotKind::inconclusive, t};
   }

@@ -63,10 +63,23 @@ TEST_CASE("certify paper 002's example: both intervals certified, verdicts, a ce
   CHECK(mp);
   // The Bernstein-form double Bézier pipeline agrees; the power-form one is reported off on the second interval.
   for (const auto& v : r["verdicts"]) {
-    if (v["pipeline"] == "double/bezier") CHECK(v["agrees"] == true);
+    if (v["pipeline"] == "double/bezier") {
+      // Agrees, or (with the running error bound of issue 14) leaves some
+      // instants undecided: the verdict then lists them, and the contacts at
+      // them as missed; nothing else may differ (collides, intervals).
+      bool only_undecided = true;
+      for (const auto& d : v["differences"]) {
+        const std::string t = d.get<std::string>();
+        only_undecided = only_undecided && (t.rfind("undecided", 0) == 0 || t.rfind("missed contact", 0) == 0);
+      }
+      INFO(v["differences"].dump());
+      CHECK((v["agrees"] == true || only_undecided));
+    }
     if (v["pipeline"] == "double/bezier-power") {
       CHECK(v["agrees"] == false);
-      CHECK(v["differences"].dump().find("collision interval 2 off by") != std::string::npos);
+      // Off on the second interval, or (with the running error bound of issue 14) undecided there.
+      const std::string d = v["differences"].dump();
+      CHECK((d.find("collision interval 2 off by") != std::string::npos || d.find("undecided") != std::string::npos));
     }
   }
   REQUIRE(run(exe + " check-certificate " + scene + " " + cert.string(), out) == 0);
