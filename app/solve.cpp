@@ -210,8 +210,10 @@ nlohmann::json run_floating_3d(const Scene& scene, const SolveOptions& opt, cons
     j = report_json(ccd_bezier(g, like, opt.arith.bits, bo), 3);
   } else if (int n = method_grid(opt.method, "sampling")) {
     j = report_json(ccd_sampling(g, like, n, opt.first_contact), 3);
+    j["sampled"] = true;  // a grid of instants: nothing is claimed about the gaps between them
   } else if (int n = method_grid(opt.method, "marching")) {
     j = report_json(ccd_marching(g, like, n, opt.first_contact), 3);
+    j["sampled"] = true;
   } else {
     throw std::invalid_argument("--method " + opt.method + ": expected bezier, projection, sampling:N or marching:N");
   }

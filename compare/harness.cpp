@@ -254,6 +254,7 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       waitpid(pid, &status, 0);
       if (killed) {
         r.timed_out = true;
+        r.killed = true;
         r.reason = "time budget: " + fmt(budget_s, "%g") + " s; the run did not stop and was killed after " +
                    fmt(elapsed(), "%.3g") + " s";
       } else {

@@ -88,7 +88,8 @@ void apply_input_mode(SolveOptions& opt, const std::string& mode);
 // that failed otherwise (then `got` is empty).
 struct BoundedRun {
   nlohmann::json got = nlohmann::json::object();
-  bool timed_out = false;
+  bool timed_out = false;  // no answer used: the budget ran out (or the answer came after it)
+  bool killed = false;     // the run did not stop by itself within 2 x budget + 1 s and was killed
   std::string error, reason;
   double wall_s = 0;
 };
