@@ -22,6 +22,7 @@
 // Requirements on T: scalar_traits<T>; +, -, *, / by binomial values.
 // Known failure modes: power -> Bernstein conversion of high degree in rounded
 // arithmetic amplifies errors (Farouki 1991): that is measured, not hidden.
+#include "kernel/budget.hpp"
 #include "kernel/binomial.hpp"
 #include "kernel/polynomial.hpp"
 
@@ -200,6 +201,7 @@ Bern<T> operator*(int s, const Bern<T>& x) { return T(s) * x; }
 // Product in Bernstein form: c_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) a_i b_j.
 template <class T>
 Bern<T> operator*(const Bern<T>& x, const Bern<T>& y) {
+  check_deadline("polynomial product");  // as Poly<T>::operator* (kernel/polynomial.hpp)
   int m = x.degree(), n = y.degree();
   const T& like = x.b.front();
   const std::vector<T>& cm = binomial_row(m, like);

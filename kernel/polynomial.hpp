@@ -11,6 +11,7 @@
 // Division (divide_exact, pseudo-remainders) is used only with exact T.
 // Known failure modes: Horner evaluation of high degree in rounded arithmetic
 // near a cluster of roots; trim() only drops coefficients that are exactly 0.
+#include "kernel/budget.hpp"
 #include "kernel/scalar_traits.hpp"
 
 #include <algorithm>
@@ -60,7 +61,11 @@ struct Poly {
   friend Poly operator+(Poly a, const Poly& b) { a += b; return a; }
   friend Poly operator-(Poly a, const Poly& b) { a -= b; return a; }
   friend Poly operator-(Poly a) { for (auto& x : a.c) x = -x; return a; }
+  // A product is where building f, Δ or a subresultant spends its time (degree
+  // up to 432 in 3D, millions of MPFR operations): it asks the run's deadline
+  // (kernel/budget.hpp) and throws BudgetExhausted once it has passed.
   friend Poly operator*(const Poly& a, const Poly& b) {
+    check_deadline("polynomial product");
     Poly r;
     if (a.c.empty() || b.c.empty()) return r;
     r.c.assign(a.c.size() + b.c.size() - 1, T(0));

@@ -8,6 +8,7 @@
 // Variants 2 and 3. The sign pattern of s equals that of the Bernstein
 // coefficients, so sign variations bound the roots in (0, 1) the same way.
 // Requirements on T: +, -, *, construction from int.
+#include "kernel/budget.hpp"
 #include "kernel/bernstein.hpp"
 
 namespace eccd {
@@ -59,6 +60,7 @@ template <class T>
 ScaledBern<T> operator*(int k, ScaledBern<T> x) { for (auto& v : x.s) v = T(k) * v; return x; }
 template <class T>
 ScaledBern<T> operator*(const ScaledBern<T>& x, const ScaledBern<T>& y) {
+  check_deadline("polynomial product");  // as Poly<T>::operator* (kernel/polynomial.hpp)
   ScaledBern<T> r;
   r.s.assign(x.s.size() + y.s.size() - 1, T(0));
   for (std::size_t i = 0; i < x.s.size(); ++i)
