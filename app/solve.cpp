@@ -13,6 +13,7 @@
 #include "floating/mpfr_real.hpp"
 #include "floating/rounded_input.hpp"
 #include "floating/running_error.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/scene_reader.hpp"
 
 #include <algorithm>
@@ -144,8 +145,21 @@ MovingPair<T, N> floating_pair(const Scene& scene, const SolveOptions& opt, cons
   return round_pair<T, N>(scene, like, trouble);
 }
 
+// A floating run whose deadline passed inside a stage that cannot stop half-way
+// (a polynomial product, kernel/polynomial.hpp, throws BudgetExhausted) ends
+// like every other floating stop: [0, 1] undecided, with the reason.
 template <class T>
-nlohmann::json run_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
+nlohmann::json undecided_run(const std::string& reason, int dim, Variant v) {
+  CdDiscResult<T> r;
+  r.variant = v;
+  undecided_everywhere(r, Instant{"0", std::nullopt, std::nullopt}, Instant{"1", std::nullopt, std::nullopt}, reason);
+  nlohmann::json j = report_json(r, dim);
+  j["certified"] = false;
+  return j;
+}
+
+template <class T>
+nlohmann::json run_floating(const Scene& scene, const SolveOptions& opt, const T& like) try {
   FloatingPolicy<T> pol(parse_basis(opt.basis), opt.arith.bits, like);
   std::string trouble;
   MovingPair<T, 3> m = floating_pair<T, 3>(scene, opt, like, trouble);
@@ -161,6 +175,10 @@ nlohmann::json run_floating(const Scene& scene, const SolveOptions& opt, const T
   j["basis"] = opt.basis;
   j["certified"] = false;
   return j;
+} catch (const BudgetExhausted& e) {
+  nlohmann::json j = undecided_run<T>(e.what(), 2, Variant(opt.variant));
+  j["basis"] = opt.basis;
+  return j;
 }
 
 // "sampling:N" / "marching:N" -> N (0 if the method has another name).
@@ -173,11 +191,27 @@ int method_grid(const std::string& method, const std::string& name) {
 }
 
 template <class T>
+nlohmann::json run_floating_3d_stages(const Scene& scene, const SolveOptions& opt, const T& like);
+
+template <class T>
 nlohmann::json run_floating_3d(const Scene& scene, const SolveOptions& opt, const T& like) {
+  if (parse_basis(opt.basis) == Basis::scaled_bernstein && opt.method != "projection")
+    throw std::invalid_argument("--basis scaled-bernstein applies to --method projection only in 3D");
+  check_method(opt.method);
+  try {
+    return run_floating_3d_stages(scene, opt, like);
+  } catch (const BudgetExhausted& e) {
+    nlohmann::json j = undecided_run<T>(e.what(), 3, Variant::answer);
+    j["basis"] = opt.basis;
+    j["method"] = opt.method;
+    return j;
+  }
+}
+
+template <class T>
+nlohmann::json run_floating_3d_stages(const Scene& scene, const SolveOptions& opt, const T& like) {
   auto start = std::chrono::steady_clock::now();
   Basis basis = parse_basis(opt.basis);
-  if (basis == Basis::scaled_bernstein && opt.method != "projection")
-    throw std::invalid_argument("--basis scaled-bernstein applies to --method projection only in 3D");
   std::string trouble;
   std::optional<PreparedPair<4>> p;
   if (opt.input == InputMode::prepared) p = prepare_pair<4>(scene);
