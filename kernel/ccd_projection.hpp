@@ -56,15 +56,8 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
   const T& like = pair.qa[0][0];
   const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
   const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
-  auto finish = [&]() {
-    collect_reasons(res, pol);
-    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return res;
-  };
-  if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
-    undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
-    return finish();
-  }
+  auto finish = [&]() { return finish_run(res, pol, start); };
+  if (undecided_on_trouble(res, pol, zero, one)) return finish();
   auto status_at = [&](const T& t) { return quartic_status_at(g, t); };
   res.status_at_0 = status_at(zero);
 
@@ -81,10 +74,7 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
   int k = 0;
   while (pol.identically_zero(proj) && k < 3) { ++k; proj = s(k, k); }
   if (pol.identically_zero(proj)) throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
-  if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
-    undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
-    return finish();
-  }
+  if (undecided_on_trouble(res, pol, zero, one)) return finish();
   res.projection_index = k;
   res.delta_degree = proj.degree();
   res.delta_identically_zero = k > 0;

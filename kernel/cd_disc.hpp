@@ -157,6 +157,24 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
 
 // Δ(t) from g_0..g_3 in the Policy's representation: what cd_disc root-finds
 // (the harness in compare/ measures its coefficient error through this call).
+// The common frame of a pipeline run, shared by CD-DISC (2D, below) and the
+// projection (3D, kernel/ccd_projection.hpp): the run ends by collecting the
+// policy's reasons and its time; a policy that already reported trouble
+// (floating: a non-finite value) leaves [0, 1] undecided.
+template <class T, class Policy>
+CdDiscResult<T> finish_run(CdDiscResult<T>& res, const Policy& pol, std::chrono::steady_clock::time_point start) {
+  collect_reasons(res, pol);
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
+template <class T, class Policy>
+bool undecided_on_trouble(CdDiscResult<T>& res, Policy& pol, const T& zero, const T& one) {
+  std::string why = policy_hooks::trouble(pol);
+  if (why.empty()) return false;
+  undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
+  return true;
+}
+
 template <class T, class Policy>
 auto discriminant_of(const std::vector<Poly<T>>& g, const Policy& pol) {
   return pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
@@ -177,15 +195,8 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   const T& like = pair.qa[0][0];
   const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
   const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
-  auto finish = [&]() {
-    collect_reasons(res, pol);
-    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return res;
-  };
-  if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
-    undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
-    return finish();
-  }
+  auto finish = [&]() { return finish_run(res, pol, start); };
+  if (undecided_on_trouble(res, pol, zero, one)) return finish();
 
   auto status_at = [&](const T& t) { return cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t)); };
   res.status_at_0 = status_at(zero);
