@@ -1,14 +1,14 @@
 // `eccd certify`: the certified answer of one scene, a verdict for each
 // floating pipeline against it, and a certificate that `eccd
-// check-certificate` re-checks without the solver (exact/certificate.hpp).
+// check-certificate` re-checks without the solver (io/certificate.hpp).
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "compare/harness.hpp"
 #include "compare/verdict.hpp"
-#include "exact/certificate.hpp"
-#include "exact/certificate_check.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/certificate.hpp"
+#include "io/certificate_check.hpp"
+#include "io/scene_reader.hpp"
 
 #include <chrono>
 #include <cstdio>

@@ -1,13 +1,13 @@
 // `eccd generate`: seeded, reproducible scene files for the robustness report
 // (compare/scene_generator.hpp has the constructions). With --answer each
-// scene also carries the exact pipeline's answer (app/solve.hpp), so that a
+// scene also carries the exact pipeline's answer (api/solve.hpp), so that a
 // folder of generated scenes is a regression corpus.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "compare/scene_generator.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -16,14 +16,14 @@
 // Resource budget (issue 15): --time-limit SECONDS per pipeline run (default
 // 300), --memory-limit MIB for the process (setrlimit RLIMIT_AS, default 4096),
 // --max-file-bytes / --max-digits / --max-degree for scene files
-// (kernel/scene_reader.hpp InputLimits). They are options of `eccd` and of
+// (io/scene_reader.hpp InputLimits). They are options of `eccd` and of
 // every sub-command.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "kernel/budget.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <signal.h>
 #include <sys/resource.h>

@@ -15,7 +15,7 @@
 //
 // What is computed how:
 //   - the answer (critical instants, intervals, contacts, 2D contact points):
-//     solve_scene (app/solve.hpp) in --arith;
+//     solve_scene (api/solve.hpp) in --arith;
 //   - the curve: Δ (2D) or the Bernstein coefficients in u of F (3D) are built
 //     exactly from the prepared scene with the kernel templates
 //     (characteristic_coefficients, cubic_discriminant, ellipsoid_function) and
@@ -38,8 +38,8 @@
 //     (largest column of its adjugate), A and B as the pipelines build them.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
-#include "app/solve.hpp"
-#include "floating/double_traits.hpp"
+#include "api/solve.hpp"
+#include "number/double_traits.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/discriminant.hpp"
@@ -47,7 +47,7 @@
 #include "kernel/motion.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -3,14 +3,14 @@
 // --floating, every floating pipeline is also judged against the stored
 // answers (compare/verdict.hpp) and tabulated.
 #include "app/commands.hpp"
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "compare/harness.hpp"
 #include "compare/regress.hpp"
 #include "compare/verdict.hpp"
 #include "kernel/budget.hpp"
-#include "exact/certificate.hpp"
-#include "exact/certificate_check.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/certificate.hpp"
+#include "io/certificate_check.hpp"
+#include "io/scene_reader.hpp"
 
 #include <algorithm>
 #include <chrono>

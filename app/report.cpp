@@ -16,7 +16,7 @@
 #include "kernel/budget.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/budget.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <signal.h>
 #include <sys/mman.h>

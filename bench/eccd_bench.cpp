@@ -59,7 +59,7 @@
 //        JSON building included), from a table of (label, SolveOptions),
 //        kSolveSceneRows below: double, MPFR, exact and the certified interval
 //        mode (`--arith certified`, issue 6 part 2; its rows go there).
-// What "pipeline" means in the ccd rows: what app/solve.cpp runs after the
+// What "pipeline" means in the ccd rows: what api/solve.cpp runs after the
 // scene is read and prepared (prepare_pair<N>: exact, done once per scene, not
 // timed): 2D to_arithmetic<T, 3> + cd_disc with FloatingPolicy<T> (Bernstein
 // basis) or ExactPolicy; 3D characteristic_bernstein<T, 4> + ccd_bezier /
@@ -72,22 +72,22 @@
 //   --eccd_list           print the selected scenes and exit
 //   --eccd_profile_seconds=S  one repetition of at least S seconds per row
 //                         (the report runs a missed target's row so under perf)
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "bench/isolation.hpp"
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "floating/ccd3_baselines.hpp"
 #include "floating/cd_disc_floating.hpp"
-#include "floating/double_traits.hpp"
-#include "floating/mpfr_real.hpp"
-#include "kernel/bezier_ccd.hpp"
+#include "number/double_traits.hpp"
+#include "number/mpfr_real.hpp"
+#include "floating/bezier_ccd.hpp"
 #include "kernel/ccd_projection.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/fast_quartic.hpp"
 #include "kernel/quartic_status.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -1109,7 +1109,7 @@ void register_phases() {
 // Rows through eccd::solve_scene: a table of (label, SolveOptions).
 //
 // >>> ISSUE 6 part 2: the certified interval mode (`--arith certified`,
-// >>> floating/certified_policy.hpp and app/solve.cpp) is measured HERE, through
+// >>> certified/certified_policy.hpp and api/solve.cpp) is measured HERE, through
 // >>> solve_scene, like `eccd solve` runs it (it may escalate to exact; the JSON
 // >>> says so and the row's result shows it). More of its rows go into
 // >>> kSolveSceneRows below; a target for it goes into TARGETS in

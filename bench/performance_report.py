@@ -502,7 +502,7 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
       "(nanosecond rows; after a 0.05 s warm-up), 9 times (most rows) or 5 times (3D exact rows), each repetition "
       "running as many iterations as fill 0.1 s (nanosecond rows) or 0.05 s, and the repetitions of all rows are "
       "interleaved in random order (Google Benchmark's random interleaving), so that a burst of load from another "
-      "user becomes a few outlying repetitions spread over many rows, which the medians discard. The CCD rows time the pipelines as `app/solve.cpp` runs them after the "
+      "user becomes a few outlying repetitions spread over many rows, which the medians discard. The CCD rows time the pipelines as `api/solve.cpp` runs them after the "
       "scene has been prepared (`prepare_pair`, exact, once per scene): 2D `to_arithmetic` + `cd_disc` "
       "(double and MPFR with Δ in Bernstein form, exact with `ExactPolicy`), 3D `characteristic_bernstein` + "
       "`ccd_bezier` / `ccd_sampling` / `ccd_marching`, or `to_arithmetic` + `ccd_projection`; no JSON. The "

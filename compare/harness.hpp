@@ -36,7 +36,7 @@
 // the error of rounding the input apart from the error of the computation.
 // Requirements: a scene with rational motions (the exact pipeline refuses
 // cycloidal motions, and so does the harness).
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "compare/metrics.hpp"
 #include "kernel/scene.hpp"
 
@@ -69,7 +69,7 @@ struct PipelineSpec {
   std::string input = "prepared";  // rounded | prepared (exact: prepared)
 };
 
-// Whether app/solve.hpp's SolveOptions has an input mode (`input`, an enum
+// Whether api/solve.hpp's SolveOptions has an input mode (`input`, an enum
 // with the values rounded and prepared); if not, floating runs start from the
 // prepared scene.
 bool solver_has_input_modes();

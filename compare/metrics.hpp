@@ -23,9 +23,9 @@
 //    This follows the habit of CCD benchmarks against an exact ground truth
 //    (Wang et al., ACM TOG 2021: false positives, false negatives, time).
 // Requirements: T is double, eccd::Mpfr or mpq_class (exact_value below).
-#include "exact/rational_traits.hpp"
-#include "floating/double_traits.hpp"
-#include "floating/mpfr_real.hpp"
+#include "number/rational_traits.hpp"
+#include "number/double_traits.hpp"
+#include "number/mpfr_real.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/bivariate_bernstein.hpp"
 #include "kernel/polynomial.hpp"

@@ -15,7 +15,7 @@
 // widened by 1e-12, must contain it.
 // Decisions use exact rationals (brackets); the decimal fallback is a report.
 #include "kernel/answer.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <string>
 #include <vector>

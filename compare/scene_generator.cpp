@@ -6,7 +6,7 @@
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/poly_matrix.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 #include "kernel/sturm.hpp"
 
 #include <algorithm>

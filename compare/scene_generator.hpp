@@ -49,7 +49,7 @@
 //              just overlaps on a short interval around t0 (overlap depth δ
 //              along the normal; lengths ~ sqrt(δ)). This is the class of
 //              "missed-0.021", which the double Bézier method once reported
-//              collision-free (kernel/bezier_ccd.hpp, step 2).
+//              collision-free (floating/bezier_ccd.hpp, step 2).
 //   graze      the same with δ = 0: the collision set is exactly {t0}, an
 //              isolated touch (strict convexity, as for touch).
 //   decimal    realistic input (issue 14, point 6): a scene of a generic
@@ -76,7 +76,7 @@
 // as ground truth, and a test checks the construction against it.
 // Requirements: exact rationals only (no floating value decides anything;
 // a double square root only picks a rational radius that is then checked).
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 // generator (compare/scene_generator.cpp) and the tests that derive
 // parameters from a printed seed use this instead.
 // Requirements: none; rationals are exact and canonical.
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 
 #include <cstdint>
 

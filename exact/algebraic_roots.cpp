@@ -23,6 +23,7 @@
 // refused up front (BudgetExhausted), CGAL's std::cerr output is captured (it
 // never reaches the user), and that message ends the call with BudgetExhausted.
 #include "exact/algebraic_roots.hpp"
+#include "number/simplest_rational.hpp"
 #include "exact/integer_polynomial.hpp"
 #include "kernel/budget.hpp"
 
@@ -386,21 +387,6 @@ class Refiner {
   unsigned long n_;
   int log2n_ = 2;
 };
-
-// The rational with the smallest denominator in [lo, hi] (continued fractions).
-Rational simplest_rational_in(const Rational& lo, const Rational& hi) {
-  // an integer in [lo, hi] if there is one
-  mpz_class fl;
-  mpz_fdiv_q(fl.get_mpz_t(), lo.get_num_mpz_t(), lo.get_den_mpz_t());
-  if (Rational(fl) == lo) return lo;
-  mpz_class c = fl + 1;
-  if (Rational(c) <= hi) return Rational(c);
-  // lo and hi share the integer part fl: recurse on the reciprocals of the fractional parts
-  Rational a = lo - Rational(fl), b = hi - Rational(fl);
-  Rational inner = simplest_rational_in(1 / b, 1 / a);
-  Rational r = Rational(fl) + 1 / inner;
-  return r;
-}
 
 // Is the rational q (lowest terms) a root of the primitive integer f? By the
 // rational root theorem only if its denominator divides the leading and its

@@ -32,7 +32,7 @@
 // lo < hi of the root (not only those real_roots() made) that isolates it for
 // its square-free factor: the factor has no other root in [lo, hi] and does
 // not vanish at lo and hi.
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 #include "kernel/polynomial.hpp"
 
 #include <memory>

@@ -14,22 +14,9 @@
 #include "exact/algebraic_roots.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
+#include "number/simplest_rational.hpp"
 
 namespace eccd {
-
-// The dyadic rational m / 2^k with the smallest k strictly between a < b.
-inline Rational simplest_dyadic_between(const Rational& a, const Rational& b) {
-  for (unsigned k = 0;; ++k) {
-    mpz_class den = mpz_class(1) << k;
-    Rational scaled = a * Rational(den);
-    mpz_class m;
-    mpz_fdiv_q(m.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
-    m += 1;
-    Rational c(m, den);
-    c.canonicalize();
-    if (c < b) return c;
-  }
-}
 
 // One root isolation the pipeline did: the polynomial and its roots in [0, 1].
 struct Isolation {
@@ -41,7 +28,7 @@ struct ExactPolicy {
   using Rep = Poly<Rational>;
   using Root = AlgebraicRoot;
   int bits = 64;  // brackets are refined to width <= 2^-bits
-  // If set, every isolation is kept here, in order (exact/certificate.hpp
+  // If set, every isolation is kept here, in order (io/certificate.hpp
   // builds the certificate from the very roots the answer was decided on).
   std::vector<Isolation>* record = nullptr;
 

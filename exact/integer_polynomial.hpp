@@ -8,7 +8,7 @@
 // Descartes' rule (exact/descartes.hpp) and the certificate's written
 // polynomials (exact/certificate_algebra.hpp) all work on it.
 // Requirements: exact rationals (mpq_class in lowest terms, as GMP keeps them).
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 #include "kernel/polynomial.hpp"
 
 #include <vector>

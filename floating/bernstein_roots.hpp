@@ -25,8 +25,8 @@
 // distance ~ sqrt(ε), so roots closer than cluster_width = 2^-min(p/2+2, 64)
 // are merged; when the rounding noise of Δ is far above 2^-p a double root
 // can still split into two reported roots.
-#include "floating/pow2_scaling.hpp"
-#include "floating/running_error.hpp"
+#include "number/pow2_scaling.hpp"
+#include "number/running_error.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/budget.hpp"
 

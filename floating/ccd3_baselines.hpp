@@ -110,13 +110,13 @@
 // status tests (sampling) or values of F (marching) per run, and the run's
 // deadline (kernel/budget.hpp) is asked per sample or row. When either is hit,
 // the rest of [0, 1] is one undecided cell ending in an undecided instant 1.
-#include "floating/double_traits.hpp"
-#include "floating/mpfr_real.hpp"
+#include "number/double_traits.hpp"
+#include "number/mpfr_real.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/collision_timeline.hpp"
-#include "floating/pow2_scaling.hpp"
+#include "number/pow2_scaling.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/ellipsoid_function.hpp"
@@ -164,7 +164,7 @@ inline Status cell_between_samples(Status l, Status r) {
   return l == r ? l : Status::overlapping;  // both in collision
 }
 
-// Floating: g scaled by a power of two (floating/pow2_scaling.hpp); "" or why nothing can be decided.
+// Floating: g scaled by a power of two (number/pow2_scaling.hpp); "" or why nothing can be decided.
 template <class T>
 std::string prepare_g(std::vector<Bern<T>>& g) {
   if constexpr (scalar_traits<T>::is_exact) return {};

@@ -13,7 +13,7 @@
 // Signs at a root are the signs of the computed values at the root's
 // approximation: nothing here is certified.
 // Scaling and termination (issue 14): g_0..g_N are scaled by a power of two
-// so that the largest coefficient has exponent 0 (floating/pow2_scaling.hpp;
+// so that the largest coefficient has exponent 0 (number/pow2_scaling.hpp;
 // exact, changes no root and no sign; Δ, P, D and the subresultant
 // coefficients built from them then stay in range: products of a few values
 // below 1 with binomial weights). A non-finite value sets `trouble` (the
@@ -23,7 +23,7 @@
 // undecided, and the reason is kept in `notes`.
 // Requirements on T: scalar_traits<T> with is_exact == false.
 #include "floating/bernstein_roots.hpp"
-#include "floating/pow2_scaling.hpp"
+#include "number/pow2_scaling.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/scaled_bernstein.hpp"
@@ -118,7 +118,7 @@ struct FloatingPolicy {
     if (!o.stopped.empty()) notes.push_back(o.stopped);
     return r;
   }
-  // With a running error bound (floating/running_error.hpp) a cluster is a
+  // With a running error bound (number/running_error.hpp) a cluster is a
   // place where Δ's sign is unknown: there may be a double root (a touch),
   // two close roots or none, so nothing is claimed there.
   Sign sign_at(const Bern<T>& q, const Root& r) const {

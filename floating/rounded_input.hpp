@@ -17,7 +17,7 @@
 //     rounded arithmetic): a matrix motion keeps the adjugate's factor w, so
 //     Δ of 003 Example 2 has degree 192 here, not the paper's 96;
 //   - no rational content is removed and nothing is scaled to integers;
-//     instead each stage is scaled by a power of two (floating/pow2_scaling.hpp):
+//     instead each stage is scaled by a power of two (number/pow2_scaling.hpp):
 //     each Q, each N(t), and the pencil is balanced by 2^-k on B's Q, k the
 //     nearest integer to the mean of (log2|det B(t)| - log2|det A(t)|)/N over
 //     t = 0, 1/2, 1 computed in T (the same rule as prepared mode, which
@@ -28,8 +28,8 @@
 // form in T (the prepared start converts exactly and then rounds).
 // A non-finite value at any of these stages is reported in `trouble`, and the
 // caller answers undecided on [0, 1] with that reason.
-// Requirements on T: double or Mpfr (floating/pow2_scaling.hpp), division.
-#include "floating/pow2_scaling.hpp"
+// Requirements on T: double or Mpfr (number/pow2_scaling.hpp), division.
+#include "number/pow2_scaling.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/prepared_scene.hpp"

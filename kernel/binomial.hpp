@@ -14,7 +14,7 @@
 // calls for different degrees and precisions may interleave freely, and
 // threads share nothing. The values are those of the uncached Pascal rule.
 // Requirements on T: +, construction from int. Rounded for n > 56 in double.
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <deque>
 #include <map>

@@ -17,7 +17,7 @@
 // that Lemma 1 forbids (1 or 3 sign changes) is reported as `uncertain`.
 // Requirements on T: ring operations, scalar_traits<T>::sign.
 #include "kernel/discriminant.hpp"
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 namespace eccd {
 

@@ -12,7 +12,7 @@
 // Known failure modes: Horner evaluation of high degree in rounded arithmetic
 // near a cluster of roots; trim() only drops coefficients that are exactly 0.
 #include "kernel/budget.hpp"
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <algorithm>
 #include <cstddef>

@@ -14,7 +14,7 @@
 // Requirements: exact rationals only (mpq_class).
 // Known failure modes: none in exact arithmetic; the determinant is computed
 // by fraction-exact Gaussian elimination (n + 1 <= 4, no growth concern).
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 
 #include <string>
 #include <utility>

@@ -20,7 +20,7 @@
 // exact pipeline answers with exact signs at the algebraic number t*, the
 // checker with signs it has verified from a certificate.
 // Requirements: sign_of returns Sign (uncertain propagates to the answer).
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 #include "kernel/subresultants.hpp"
 
 #include <string>

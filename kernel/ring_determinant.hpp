@@ -9,7 +9,7 @@
 // subresultants (kernel/subresultants.hpp) in whichever basis a pipeline
 // computes in, so that the basis, not the formula, is what the harness varies.
 // Requirements on R: R + R, R - R, R * R, and a zero element passed in.
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <bit>
 #include <cstdint>

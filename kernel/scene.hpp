@@ -7,7 +7,7 @@
 // Motions are kept in the form the file gave (static, matrix, kinematic,
 // euler, cycloidal); kernel/motion.hpp turns the rational forms into
 // polynomial matrices.
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/polynomial.hpp"
 

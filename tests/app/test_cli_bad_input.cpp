@@ -5,7 +5,7 @@
 // valid scene whose motion the exact pipeline must refuse.
 //
 // ECCD_EXE (the eccd binary) and ECCD_SOURCE_DIR are defined by CMake.
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // `eccd generate --answer` from the command line: each written scene stores
 // the exact pipeline's answer (the spec's four keys), equal to a fresh exact
 // solve of the scene read back from the file; without --answer there is none.
-#include "app/solve.hpp"
-#include "kernel/scene_reader.hpp"
+#include "api/solve.hpp"
+#include "io/scene_reader.hpp"
 #include "tests/support/cli.hpp"
 
 #include <catch2/catch.hpp>

@@ -3,7 +3,7 @@
 #include "compare/harness.hpp"
 #include "compare/metrics.hpp"
 #include "compare/scene_generator.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
 

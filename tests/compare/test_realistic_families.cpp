@@ -7,12 +7,12 @@
 // Seeds: ECCD_OVERLAP_SEED and ECCD_REALISTIC_SEED override the defaults; the
 // seed in use is printed. ECCD_REALISTIC_BUDGET: seconds per floating run
 // (default 0.5: CI time; a run is killed at 2 x budget + 1 s; the long run uses 2).
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "compare/harness.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/motion.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -303,7 +303,7 @@ TEST_CASE("on the overlap family no floating pipeline is confidently collision-f
 }
 
 // The sampling and marching baselines look at a fixed grid of instants: an overlap shorter than a grid step can
-// fall between samples, and their answers say so ("sampled": true, app/solve.cpp), so they are never confident in
+// fall between samples, and their answers say so ("sampled": true, api/solve.cpp), so they are never confident in
 // the sense above; the report counts their misses (compare/metrics.hpp).
 
 namespace {
@@ -412,7 +412,7 @@ TEST_CASE("realistic-input scenes, long run", "[.realistic-long]") {
 
 // Issue 14's scene "missed-0.021": exact proves a collision on [0.504798, 0.525770]; the double Bézier method
 // answered "collides: no" after 33 shots (a converged shot whose G(0) rounded to <= 0 was read as a miss,
-// kernel/bezier_ccd.hpp). Every Bézier setup in double and mpfr:64 must now see it, or say undecided there.
+// floating/bezier_ccd.hpp). Every Bézier setup in double and mpfr:64 must now see it, or say undecided there.
 TEST_CASE("the Bezier method finds the collision of issue 14's scene missed-0.021", "[families][overlap-family]") {
   const std::string text = R"({"format":"ellipse-ccd-scene/1","name":"missed-0.021","dim":3,"a":{"shape":{"semi_axes":["1845/1000","1156/1000","682/1000"]},"motion":{"type":"euler","e":["9","0","8","7"],"translation":[["847/1000","-1949/1000"],["361/1000","795/1000"],["-449/1000","427/1000"]],"translation_denominator":"1"}},"b":{"shape":{"semi_axes":["676/1000","1660/1000","1454/1000"]},"motion":{"type":"euler","e":["2","1","-3","0"],"translation":[["-634450599237978188179/1000000000000000000000","515222857830281712583/200000000000000000000"],["1540186683275002448023/2500000000000000000000","17306096437427776020047/10000000000000000000000"],["850681931231624518787/250000000000000000000","-2800476784914803542613/1000000000000000000000"]],"translation_denominator":"1"}}})";
   Scene s = parse_scene(text, "missed-0.021");

@@ -1,10 +1,10 @@
 // The scene generators (compare/scene_generator.hpp): reproducible, of the
 // requested degree, accepted by the scene reader, and of the kind their
 // construction promises, checked against the exact pipeline.
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "compare/harness.hpp"
 #include "compare/scene_generator.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -19,7 +19,7 @@
 // parameters of the transformations derive from the scene's seed.
 #include "compare/scene_generator.hpp"
 #include "compare/seeded_rng.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 #include "tests/support/metamorphic.hpp"
 #include "tests/support/scenes3d.hpp"
 

@@ -6,10 +6,10 @@
 // number of intervals, ends within 1e-6, when nothing is undecided).
 // The scenes are in tests/data/float/ (made by tests/data/float/round_scene.py
 // and the text).
-#include "app/solve.hpp"
-#include "floating/running_error.hpp"
+#include "api/solve.hpp"
+#include "number/running_error.hpp"
 #include "kernel/budget.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
 

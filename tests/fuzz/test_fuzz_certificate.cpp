@@ -1,4 +1,4 @@
-// Fuzz: the certificate checker (exact/certificate_check.hpp) on mutated
+// Fuzz: the certificate checker (io/certificate_check.hpp) on mutated
 // certificates of a few corpus scenes. The certificate text is mutated, then
 // parsed (a text that is not JSON is an unreadable file: exit 2 at the command
 // line, not the checker's business) and checked. Every mutant must give a
@@ -8,9 +8,9 @@
 // the genuine answer (a mutant cannot forge another one). Runs
 // ECCD_FUZZ_SECONDS (default 10) from ECCD_FUZZ_SEED (default random; printed).
 #include "compare/regress.hpp"
-#include "exact/certificate.hpp"
-#include "exact/certificate_check.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/certificate.hpp"
+#include "io/certificate_check.hpp"
+#include "io/scene_reader.hpp"
 #include "tests/support/mutate.hpp"
 
 #include <catch2/catch.hpp>

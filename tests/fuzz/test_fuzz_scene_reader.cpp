@@ -5,7 +5,7 @@
 // may take long (a hang), and no message may echo a huge input (cut at a few
 // hundred characters per value). Runs ECCD_FUZZ_SECONDS (default 10) from
 // seed ECCD_FUZZ_SEED (default random; printed).
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 #include "tests/support/mutate.hpp"
 
 #include <catch2/catch.hpp>

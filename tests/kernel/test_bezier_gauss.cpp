@@ -1,9 +1,9 @@
-// The Gaussian-circle test of the Bézier zero-set analysis (kernel/bezier_ccd.hpp,
+// The Gaussian-circle test of the Bézier zero-set analysis (floating/bezier_ccd.hpp,
 // 001 section 4, case 3): bezier_detail::pointed decides "all points in one
 // open half-plane through the origin" without sorting; it must agree to the
 // last bit with its definition, max gap between the sorted angles > π.
-#include "floating/double_traits.hpp"
-#include "kernel/bezier_ccd.hpp"
+#include "number/double_traits.hpp"
+#include "floating/bezier_ccd.hpp"
 #include "tests/support/arith.hpp"
 
 #include <catch2/catch.hpp>

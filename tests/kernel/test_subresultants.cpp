@@ -1,6 +1,6 @@
 // Subresultants and the quartic discriminant (kernel/subresultants.hpp,
 // kernel/discriminant.hpp), exactly over the rationals.
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 #include "kernel/discriminant.hpp"
 #include "kernel/subresultants.hpp"
 #include "tests/support/arith.hpp"

@@ -1,9 +1,9 @@
 #pragma once
 // Test support: the three arithmetics as types, a `like` value per arithmetic,
 // and exact -> T conversion, so that kernel tests are written once.
-#include "exact/rational_traits.hpp"
-#include "floating/double_traits.hpp"
-#include "floating/mpfr_real.hpp"
+#include "number/rational_traits.hpp"
+#include "number/double_traits.hpp"
+#include "number/mpfr_real.hpp"
 #include "kernel/polynomial.hpp"
 
 #include <random>

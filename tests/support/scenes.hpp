@@ -3,7 +3,7 @@
 // independent exact oracle for the status at a rational instant.
 #include "exact/cd_disc_exact.hpp"
 #include "floating/cd_disc_floating.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 #include "kernel/sturm.hpp"
 #include "tests/support/arith.hpp"
 

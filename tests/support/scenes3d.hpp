@@ -2,12 +2,12 @@
 // Test support for the 3D pipelines: running them on a scene, random
 // ellipsoid scenes under Euler-parameter motions, and an independent exact
 // oracle for the status at a rational instant.
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "exact/cd_disc_exact.hpp"
 #include "floating/cd_disc_floating.hpp"
-#include "kernel/bezier_ccd.hpp"
+#include "floating/bezier_ccd.hpp"
 #include "kernel/ccd_projection.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 #include "kernel/sturm.hpp"
 #include "tests/support/scenes.hpp"
 

@@ -1,8 +1,8 @@
-// Tests for the scene reader (kernel/scene_reader.hpp): exact numbers, valid
+// Tests for the scene reader (io/scene_reader.hpp): exact numbers, valid
 // 2D and 3D scenes, one test per kind of bad input (message names the file,
 // the JSON pointer and what is wrong), answers to and from JSON, and a
 // robustness sweep (truncated / mangled files give SceneError, never a crash).
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

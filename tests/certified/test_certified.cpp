@@ -1,12 +1,12 @@
 // --arith certified: interval arithmetic that encloses exact results
-// (floating/interval.hpp), and the certified policy's answers, which must be
+// (number/interval.hpp), and the certified policy's answers, which must be
 // the exact pipeline's on the corpus, escalating where a sign is uncertain.
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 #include "compare/regress.hpp"
 #include "compare/seeded_rng.hpp"
-#include "floating/interval.hpp"
-#include "floating/mpfi_interval.hpp"
-#include "kernel/scene_reader.hpp"
+#include "number/interval.hpp"
+#include "number/mpfi_interval.hpp"
+#include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
 

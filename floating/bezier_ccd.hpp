@@ -50,7 +50,7 @@
 // the reason; when the subdivision cap (max_subdivisions) or the run's
 // deadline is hit, every gap not yet resolved is an undecided cell (never a
 // guess), and shots stop at the deadline. With a running error bound
-// (T = Bounded<U>, floating/running_error.hpp) static tests decide by signs
+// (T = Bounded<U>, number/running_error.hpp) static tests decide by signs
 // sure under the bound (else uncertain), misses of a shot are proofs, and a
 // touch found by two shots meeting is reported uncertain (a tangency cannot
 // be told from a near-miss in rounded arithmetic).
@@ -336,7 +336,7 @@ class BezierZeroSet {
         return {ShotKind::miss, to};
       }
       T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
-      T tn = point_of(T(t + s * (to - t)));  // an evaluation point (floating/running_error.hpp)
+      T tn = point_of(T(t + s * (to - t)));  // an evaluation point (number/running_error.hpp)
       T step = tn - t;
       if (sign(step) == Sign::negative) step = -step;
       t = tn;

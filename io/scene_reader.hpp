@@ -10,7 +10,7 @@
 // where PLACE is the JSON pointer of the offending value (e.g. /a/motion/d/2),
 // "top level" for the whole document, or "line L, column C" for malformed
 // JSON. No other exception escapes read_scene_file / parse_scene (apart from
-// std::bad_alloc). Requirements: GMP rationals (exact/rational_traits.hpp),
+// std::bad_alloc). Requirements: GMP rationals (number/rational_traits.hpp),
 // nlohmann json 3.11. All decisions (positivity, symmetry, conic type,
 // vanishing of w(t), det, E(t), ...) are exact: rationals and Sturm counts.
 //
@@ -64,7 +64,7 @@
 //     option. A NUL byte in the file is reported as such (a binary file), an
 //     empty file as empty. Long keys and values are cut in messages (80
 //     characters and "...").
-#include "exact/rational_traits.hpp"
+#include "number/rational_traits.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/scene.hpp"
 

@@ -2,9 +2,9 @@
 // scalar_traits<T>: what the templated kernel needs to know about an arithmetic.
 //
 // Statement. Every stage of the workbench is a function template of the scalar
-// type T. The three arithmetics are `double` (floating/double_traits.hpp),
-// `Mpfr` with a per-value precision (floating/mpfr_real.hpp) and exact GMP
-// rationals `mpq_class` (exact/rational_traits.hpp). Only where the
+// type T. The three arithmetics are `double` (number/double_traits.hpp),
+// `Mpfr` with a per-value precision (number/mpfr_real.hpp) and exact GMP
+// rationals `mpq_class` (number/rational_traits.hpp). Only where the
 // mathematics really differs does code branch, on `scalar_traits<T>::is_exact`.
 //
 // Each specialisation provides

@@ -6,10 +6,10 @@
 // once (a FIFO serving two scenes cannot pair one scene's certificate with
 // another); continuous touching is in the certified answer and in regress.
 #include "compare/regress.hpp"
-#include "exact/certificate.hpp"
+#include "io/certificate.hpp"
 #include "exact/certificate_algebra.hpp"
-#include "exact/certificate_check.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/certificate_check.hpp"
+#include "io/scene_reader.hpp"
 #include "tests/support/cli.hpp"
 
 #include <catch2/catch.hpp>

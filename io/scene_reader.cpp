@@ -1,5 +1,5 @@
-// Scene reader (see kernel/scene_reader.hpp for the statement and the choices).
-#include "kernel/scene_reader.hpp"
+// Scene reader (see io/scene_reader.hpp for the statement and the choices).
+#include "io/scene_reader.hpp"
 
 #include "kernel/bernstein.hpp"
 #include "kernel/quadric_classification.hpp"

@@ -15,8 +15,8 @@
 // this is what issue 14 asks of a floating implementation.
 // Requirements on T: double or Mpfr (overloads below); exact arithmetics
 // never call this.
-#include "floating/double_traits.hpp"
-#include "floating/mpfr_real.hpp"
+#include "number/double_traits.hpp"
+#include "number/mpfr_real.hpp"
 
 #include <climits>
 #include <cmath>

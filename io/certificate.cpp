@@ -1,14 +1,14 @@
-// The certificate writer (exact/certificate.hpp): the exact pipeline's own
+// The certificate writer (io/certificate.hpp): the exact pipeline's own
 // timeline, with its brackets refined until the simple checks of
-// exact/certificate_check.hpp prove every claim.
-#include "exact/certificate.hpp"
+// io/certificate_check.hpp prove every claim.
+#include "io/certificate.hpp"
 
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "exact/descartes.hpp"
 #include "kernel/ccd_projection.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <chrono>
 #include <map>
@@ -106,7 +106,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
     c["gap_points"] = nlohmann::json::array();
     c["timeline"] = nlohmann::json::array();
     // Continuous touching: P·D without a root in [0, 1] keeps the status of
-    // the double root constant (exact/certificate_check.hpp).
+    // the double root constant (io/certificate_check.hpp).
     const Poly<Rational> PD = alg.evidence("P") * alg.evidence("D");
     const Rational half(1, 2);
     nlohmann::json ct = {{"convention", PD.is_zero() ? "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D vanishes identically: the "
@@ -139,7 +139,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
     throw std::logic_error("internal error: the pipeline isolated the roots of another polynomial than the projection");
   const Poly<Rational>& P = alg.projection;
   const auto F = square_free_factors(P);
-  // The checker's size bound (exact/certificate.hpp), a few bits of slack for refine's rounding.
+  // The checker's size bound (io/certificate.hpp), a few bits of slack for refine's rounding.
   const int max_bits = std::min<int>(kMaxBits, int(certificate_max_bits(std::size_t(P.degree()), integer_coefficient_bits(P))) - 8);
   proj["identically_zero"] = false;
   proj["degree"] = P.degree();

@@ -5,7 +5,7 @@
 // display and reports only and must never be used on the way to a decision.
 // With gmpxx expression templates, never keep an arithmetic result in `auto`:
 // write `mpq_class x = a * b;`.
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <mpfr.h>
 

@@ -1,13 +1,13 @@
-// The certificate checker (exact/certificate_check.hpp). Deliberately simple:
+// The certificate checker (io/certificate_check.hpp). Deliberately simple:
 // it includes no root isolation and no CCD driver, only the exact algebra of
 // exact/certificate_algebra.hpp, Descartes' rule and the timeline-to-answer step.
-#include "exact/certificate_check.hpp"
+#include "io/certificate_check.hpp"
 
-#include "exact/certificate.hpp"
+#include "io/certificate.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "exact/descartes.hpp"
 #include "kernel/collision_timeline.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <map>
 #include <optional>

@@ -1,11 +1,11 @@
-// Certificates (exact/certificate.hpp) and their checker
-// (exact/certificate_check.hpp): Descartes' rule on intervals, certificates
+// Certificates (io/certificate.hpp) and their checker
+// (io/certificate_check.hpp): Descartes' rule on intervals, certificates
 // of the shipped cases accepted, and tampered ones rejected with the claim named.
-#include "exact/certificate.hpp"
+#include "io/certificate.hpp"
 #include "exact/certificate_algebra.hpp"
-#include "exact/certificate_check.hpp"
+#include "io/certificate_check.hpp"
 #include "exact/descartes.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 #include "tests/support/scenes.hpp"
 
 #include <catch2/catch.hpp>

@@ -27,9 +27,9 @@
 // For Mpfr, |x| enters the bound as its leading 53 bits rounded away from 0
 // (mpfr_get_d_2exp: cheaper than a long double conversion, and >= |x|).
 // Requirements on T: double or Mpfr. Cost: see the report of issue 14.
-#include "floating/double_traits.hpp"
-#include "floating/mpfr_real.hpp"
-#include "floating/pow2_scaling.hpp"
+#include "number/double_traits.hpp"
+#include "number/mpfr_real.hpp"
+#include "number/pow2_scaling.hpp"
 
 #include <algorithm>
 #include <cmath>

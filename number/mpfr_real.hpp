@@ -12,7 +12,7 @@
 // Requirements: none beyond MPFR. Known failure modes: an operation between
 // two unset constants is carried out at kConstBits bits; templated code only
 // multiplies constants into values that carry a precision.
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <mpfr.h>
 

@@ -20,7 +20,7 @@
 // certain for every pair of values.
 // Requirements: IEEE double with round-to-nearest (the default); no
 // -ffast-math.
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <gmpxx.h>
 #include <mpfr.h>

@@ -1,5 +1,5 @@
 #pragma once
-// The certificate checker: re-checks a certificate (exact/certificate.hpp)
+// The certificate checker: re-checks a certificate (io/certificate.hpp)
 // against its scene without calling the solver.
 //
 // Statement. It trusts only the scene reader and the exact algebra of
@@ -37,7 +37,7 @@
 // Every approx is a decimal inside its bracket; every integer is range
 // checked (no truncation); duplicate keys are refused (one strict parse);
 // every rational has at most certificate_max_bits(n, τ) bits
-// (exact/certificate.hpp: 4τ + 1024, and n²·b <= 2^24 but >= 256; τ the bit
+// (io/certificate.hpp: 4τ + 1024, and n²·b <= 2^24 but >= 256; τ the bit
 // size of the projection's integer coefficients, n its degree), every factor
 // coefficient τ + 2n + 64, at most 8n + 64 gap points,
 // multiplicities at most n = deg P and their degree sum equal to n, before

@@ -8,7 +8,7 @@
 // doubles, and one IEEE division is correctly rounded (the quotient is
 // normal, |p/q| > 2^-53), so small constants (1/2, k/N, 2^-e) skip MPFR.
 // Known failure modes: everything the robustness report measures.
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -3,11 +3,11 @@
 //
 // Arithmetic names: "double", "mpfr:BITS" (53 <= BITS <= 65536), "exact",
 // "certified" (interval arithmetic, escalating where a sign is uncertain to
-// MPFI intervals of 256 bits, then to exact: floating/certified_policy.hpp;
+// MPFI intervals of 256 bits, then to exact: certified/certified_policy.hpp;
 // the JSON says where it was decided), "certified:B1,B2,..." (other MPFI
 // rungs, increasing) or "certified:none" (straight from doubles to exact).
 // Errors: std::invalid_argument for a request the pipeline refuses (a
-// cycloidal motion in exact arithmetic, an unknown arithmetic or method); kernel/scene_reader.hpp's SceneError for bad files.
+// cycloidal motion in exact arithmetic, an unknown arithmetic or method); io/scene_reader.hpp's SceneError for bad files.
 #include "kernel/prepared_scene.hpp"
 #include "kernel/scene.hpp"
 

@@ -1,20 +1,20 @@
 // `eccd solve`: dispatch to the one templated CD-DISC pipeline in the chosen
 // arithmetic, and present its result.
-#include "app/solve.hpp"
+#include "api/solve.hpp"
 
 #include "exact/cd_disc_exact.hpp"
-#include "floating/certified_policy.hpp"
-#include "floating/mpfi_interval.hpp"
+#include "certified/certified_policy.hpp"
+#include "number/mpfi_interval.hpp"
 #include "floating/ccd3_baselines.hpp"
-#include "kernel/bezier_ccd.hpp"
+#include "floating/bezier_ccd.hpp"
 #include "kernel/ccd_projection.hpp"
 #include "floating/cd_disc_floating.hpp"
-#include "floating/double_traits.hpp"
-#include "floating/mpfr_real.hpp"
+#include "number/double_traits.hpp"
+#include "number/mpfr_real.hpp"
 #include "floating/rounded_input.hpp"
-#include "floating/running_error.hpp"
+#include "number/running_error.hpp"
 #include "kernel/budget.hpp"
-#include "kernel/scene_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 #pragma once
 // The certificate of an exact answer: everything a simpler program needs to
-// re-check it without the solver (exact/certificate_check.hpp checks it).
+// re-check it without the solver (io/certificate_check.hpp checks it).
 //
 // Statement. The exact pipeline (exact/cd_disc_exact.hpp in 2D,
 // kernel/ccd_projection.hpp in 3D) decides the status of two moving objects

@@ -1,12 +1,12 @@
 #pragma once
 // MpfiInterval: closed intervals with MPFR end points (MPFI), precision
 // travelling with the value — the higher-precision rung of `--arith certified`
-// between intervals of doubles (floating/interval.hpp) and exact rationals.
+// between intervals of doubles (number/interval.hpp) and exact rationals.
 //
 // Statement (interval arithmetic, Moore 1966; MPFI, Revol & Rouillier 2005).
 // Every MPFI operation rounds its lower end down and its upper end up, so the
 // result encloses the exact result of the operation on any values inside the
-// operands. As with `Mpfr` (floating/mpfr_real.hpp), a value made by
+// operands. As with `Mpfr` (number/mpfr_real.hpp), a value made by
 // `MpfiInterval(q, bits)` carries `bits`; an operation's result carries the
 // larger precision of its operands; a small integer constant written in
 // templated code (`T(18) * x`) is held exactly ([k, k] at kConstBits bits,
@@ -19,7 +19,7 @@
 // only when certain for every pair of values.
 // Requirements: MPFI (Debian libmpfi-dev, which CGAL's GMP+MPFI kernel
 // already links).
-#include "kernel/scalar_traits.hpp"
+#include "number/scalar_traits.hpp"
 
 #include <gmpxx.h>
 #include <mpfi.h>

@@ -1,0 +1,4 @@
+#pragma once
+// eccd's one public header: `#include <eccd/eccd.hpp>`, link eccd::eccd.
+// Everything a program needs (namespace eccd) comes from the API layer, api/.
+#include "api/solve.hpp"

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The layers' include arrows point one way (README "What is where"):
+#   number -> kernel -> floating | exact -> certified -> io -> api -> compare -> app
+# A file may include headers of its own folder and of layers strictly below
+# it (floating and exact are siblings: neither includes the other). Prints
+# every include that points up or sideways and exits 1 if there is one.
+# The grep it runs:  grep -n '#include "' number kernel floating exact certified io api compare app include
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rank() {
+  case "$1" in
+    number) echo 0 ;; kernel) echo 1 ;; floating|exact) echo 2 ;; certified) echo 3 ;;
+    io) echo 4 ;; api) echo 5 ;; include) echo 5 ;; compare) echo 6 ;; app) echo 7 ;; *) echo 99 ;;
+  esac
+}
+bad=0
+while IFS= read -r line; do
+  file=${line%%:*}; rest=${line#*:}; lineno=${rest%%:*}
+  inc=$(sed -n 's/.*#include "\([^"]*\)".*/\1/p' <<<"$rest")
+  from=${file%%/*}; to=${inc%%/*}
+  [ "$to" = "$inc" ] && continue          # a file of the same folder, included by bare name
+  [ "$from" = "$to" ] && continue
+  [ "$from" = include ] && [ "$to" = eccd ] && continue
+  if [ "$(rank "$to")" -ge "$(rank "$from")" ]; then
+    echo "$file:$lineno: $from/ includes $inc (layer $to/ is not below $from/)"
+    bad=1
+  fi
+done < <(grep -rn '#include "' number kernel floating exact certified io api compare app include --include='*.hpp' --include='*.cpp')
+if [ "$bad" -ne 0 ]; then echo "check-layers: an include arrow points up or sideways (see above)"; exit 1; fi
+echo "check-layers: every include arrow points down (number -> kernel -> floating|exact -> certified -> io -> api -> compare -> app)"
