@@ -1,0 +1,29 @@
+#pragma once
+// The API's entry points (namespace eccd; `#include <eccd/eccd.hpp>`):
+// read a scene, solve it in a chosen arithmetic, get a typed Solution.
+//
+//   eccd::Scene s = eccd::read_scene("cases/paper002/example.json");
+//   eccd::SolveOptions o;                       // exact by default
+//   eccd::Solution r = eccd::solve(s, o);
+//   r.answer.collides, r.answer.intervals, r.answer.first_contact, ...
+//
+// Errors: SceneError (io/scene_reader.hpp) "FILE: PLACE: what is wrong" for a
+// bad scene; std::invalid_argument for a request the pipelines refuse (a
+// cycloidal motion in exact arithmetic, scaled-bernstein outside the 3D
+// projection, ...). A floating run never throws for lack of time or
+// precision: what it cannot decide is in answer.undecided with the reasons.
+#include "api/options.hpp"
+#include "api/solution.hpp"
+#include "kernel/scene.hpp"
+
+#include <string>
+
+namespace eccd {
+
+// A scene from a file or from text (the scene-format.md contract; throws SceneError).
+Scene read_scene(const std::string& path);
+Scene scene_from_text(const std::string& json_text, const std::string& label = "<string>");
+
+Solution solve(const Scene& scene, const SolveOptions& options = {});
+
+}  // namespace eccd
