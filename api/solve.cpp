@@ -94,7 +94,7 @@ nlohmann::json instant_json(const Instant& i) {
 }
 
 template <class T>
-nlohmann::json report_json(const CdDiscResult<T>& r, int dim = 2) {
+nlohmann::json report_json(const PipelineResult<T>& r, int dim = 2) {
   nlohmann::json j = answer_to_json(r.answer);
   j["variant"] = variant_name(r.variant);
   if (dim == 3) {
@@ -115,9 +115,9 @@ nlohmann::json report_json(const CdDiscResult<T>& r, int dim = 2) {
   nlohmann::json und = nlohmann::json::array();
   for (const auto& u : r.answer.undecided) und.push_back(instant_json(u));
   j["undecided"] = und;
-  j["delta_degree"] = r.delta_degree;
+  j["projection_degree"] = r.projection_degree;
   j["projection"] = r.projection_index == 0 ? std::string("discriminant") : "psc_" + std::to_string(r.projection_index);
-  j["delta_identically_zero"] = r.delta_identically_zero;
+  j["projection_identically_zero"] = r.projection_identically_zero;
   j["status_at_0"] = to_string(r.status_at_0);
   nlohmann::json crit = nlohmann::json::array();
   for (const auto& c : r.critical)
@@ -150,7 +150,7 @@ MovingPair<T, N> floating_pair(const Scene& scene, const SolveOptions& opt, cons
 // like every other floating stop: [0, 1] undecided, with the reason.
 template <class T>
 nlohmann::json undecided_run(const std::string& reason, int dim, Variant v) {
-  CdDiscResult<T> r;
+  PipelineResult<T> r;
   r.variant = v;
   undecided_everywhere(r, Instant{"0", std::nullopt, std::nullopt}, Instant{"1", std::nullopt, std::nullopt}, reason);
   nlohmann::json j = report_json(r, dim);
@@ -163,7 +163,7 @@ nlohmann::json run_floating(const Scene& scene, const SolveOptions& opt, const T
   FloatingPolicy<T> pol(parse_basis(opt.basis), opt.arith.bits, like);
   std::string trouble;
   MovingPair<T, 3> m = floating_pair<T, 3>(scene, opt, like, trouble);
-  CdDiscResult<T> r;
+  PipelineResult<T> r;
   if (!trouble.empty()) {
     r.variant = Variant(opt.variant);
     undecided_everywhere(r, pol.instant_at(scalar_traits<T>::from_rational(0, like)),
@@ -222,7 +222,7 @@ nlohmann::json run_floating_3d_stages(const Scene& scene, const SolveOptions& op
     g = p ? characteristic_bernstein<T, 4>(*p, basis == Basis::power, like) : characteristic_bernstein_of<T, 4>(m, basis == Basis::power);
   double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!trouble.empty()) {
-    CdDiscResult<T> r;
+    PipelineResult<T> r;
     undecided_everywhere(r, Instant{"0", std::nullopt, std::nullopt}, Instant{"1", std::nullopt, std::nullopt}, trouble);
     check_method(opt.method);
     nlohmann::json j = report_json(r, 3);
@@ -281,7 +281,7 @@ std::optional<nlohmann::json> try_certified_rung(const PreparedPair<N>& p, const
   try {
     CertifiedPolicy<T> pol(like);
     pol.max_depth = max_depth;
-    CdDiscResult<T> r = projection_pipeline(to_arithmetic<T, N>(p, like), pol, Variant(opt.variant), opt.first_contact);
+    PipelineResult<T> r = projection_pipeline(to_arithmetic<T, N>(p, like), pol, Variant(opt.variant), opt.first_contact);
     if (r.answer.undecided.empty()) {
       nlohmann::json j = report_json(r, N - 1);
       j["work"]["interval_pieces"] = pol.pieces;
@@ -425,7 +425,7 @@ std::string summary_text(const nlohmann::json& r) {
     << (r["basis"] != "exact" ? ", basis " + r["basis"].get<std::string>() : std::string())
     << (r.contains("input") && r["input"] == "rounded" ? ", input rounded" : "") << "\n";
   o << "  status at t = 0: " << r["status_at_0"].get<std::string>() << "; discriminant degree "
-    << r["delta_degree"].get<int>() << (r["delta_identically_zero"].get<bool>() ? " (identically zero)" : "") << ", "
+    << r["projection_degree"].get<int>() << (r["projection_identically_zero"].get<bool>() ? " (identically zero)" : "") << ", "
     << r["critical_instants"].size() << " root(s) in [0, 1]\n";
   o << "  collides: " << (r["collides"].get<bool>() ? "yes" : "no") << "\n";
   if (r["intervals"].is_array())

@@ -203,14 +203,14 @@ class Lazy {
 std::string short_instant(const Instant& i) { return i.approx.substr(0, std::min<std::size_t>(i.approx.size(), 10)); }
 
 template <class T>
-json summarise_ccd(const CdDiscResult<T>& r) {
+json summarise_ccd(const PipelineResult<T>& r) {
   json j;
   j["collides"] = r.answer.collides;
   j["intervals"] = r.answer.intervals.size();
   j["contacts"] = r.answer.contacts.size();
   j["undecided"] = r.answer.undecided.size();
   j["critical"] = r.critical.size();
-  j["delta_degree"] = r.delta_degree;
+  j["projection_degree"] = r.projection_degree;
   if (r.answer.first_contact) j["first_contact"] = short_instant(*r.answer.first_contact);
   json iv = json::array();
   for (const auto& [a, b] : r.answer.intervals) iv.push_back(short_instant(a) + ".." + short_instant(b));
@@ -282,18 +282,18 @@ struct Scene2D {
   json info;
 };
 
-CdDiscResult<double> run2d_double(const PreparedPair<3>& p, Variant v, Basis basis = Basis::bernstein) {
+PipelineResult<double> run2d_double(const PreparedPair<3>& p, Variant v, Basis basis = Basis::bernstein) {
   FloatingPolicy<double> pol(basis, 53, 1.0);
   MovingPair<double, 3> m = to_arithmetic<double, 3>(p, 1.0);
   return cd_disc(m, pol, v);
 }
 template <class T>
-CdDiscResult<T> run2d_floating(const PreparedPair<3>& p, Variant v, Basis basis, int bits, const T& like) {
+PipelineResult<T> run2d_floating(const PreparedPair<3>& p, Variant v, Basis basis, int bits, const T& like) {
   FloatingPolicy<T> pol(basis, bits, like);
   MovingPair<T, 3> m = to_arithmetic<T, 3>(p, like);
   return cd_disc(m, pol, v);
 }
-CdDiscResult<Rational> run2d_exact(const PreparedPair<3>& p, Variant v) {
+PipelineResult<Rational> run2d_exact(const PreparedPair<3>& p, Variant v) {
   ExactPolicy pol;
   MovingPair<Rational, 3> m = to_arithmetic<Rational, 3>(p, Rational(1));
   return cd_disc(m, pol, v);
@@ -312,17 +312,17 @@ Scene2D select_2d(int degree, bool apart, std::uint64_t seed) {
     }
     PreparedPair<3> p = prepare_pair<3>(sc);
     auto d = run2d_double(p, Variant::answer);
-    if (d.delta_degree != 24 * degree) continue;
+    if (d.projection_degree != 24 * degree) continue;
     if (apart ? d.answer.collides : (!d.answer.collides || d.answer.contacts.size() < 2)) continue;
     if (d.status_at_0 != Status::separate) continue;  // Variants 1 and 2 must search for the first root
     if (!d.answer.undecided.empty()) continue;
     auto e = run2d_exact(p, Variant::answer);
-    if (e.delta_degree != 24 * degree) continue;
+    if (e.projection_degree != 24 * degree) continue;
     if (e.answer.collides != d.answer.collides || e.answer.contacts.size() != d.answer.contacts.size()) continue;
     if (e.status_at_0 != Status::separate) continue;
     Scene2D out{sc.name, sc, p, json::object()};
     out.info = {{"dim", 2}, {"motion_degree", degree}, {"family", apart ? "free" : "colliding"}, {"seed", seed},
-                {"tries", tries + 1}, {"delta_degree", e.delta_degree}, {"exact_answer", summarise_ccd(e)},
+                {"tries", tries + 1}, {"projection_degree", e.projection_degree}, {"exact_answer", summarise_ccd(e)},
                 {"source", "generated in-process (bench/eccd_bench.cpp kinematic_scene), general kinematic-image motion"}};
     return out;
   }
@@ -334,7 +334,7 @@ Scene2D scene2d_from_file(const std::string& id, const std::string& rel) {
   PreparedPair<3> p = prepare_pair<3>(sc);
   auto e = run2d_exact(p, Variant::answer);
   Scene2D out{id, sc, p, json::object()};
-  out.info = {{"dim", 2}, {"file", rel}, {"delta_degree", e.delta_degree}, {"exact_answer", summarise_ccd(e)}};
+  out.info = {{"dim", 2}, {"file", rel}, {"projection_degree", e.projection_degree}, {"exact_answer", summarise_ccd(e)}};
   return out;
 }
 
@@ -715,7 +715,7 @@ void register_2d() {
 // 3D CCD.
 
 template <class T>
-CdDiscResult<T> run3d_floating(const PreparedPair<4>& p, const std::string& method, Basis basis, int bits, const T& like,
+PipelineResult<T> run3d_floating(const PreparedPair<4>& p, const std::string& method, Basis basis, int bits, const T& like,
                                bool first_contact) {
   if (method == "projection") {
     FloatingPolicy<T> pol(basis, bits, like);
@@ -730,7 +730,7 @@ CdDiscResult<T> run3d_floating(const PreparedPair<4>& p, const std::string& meth
   if (method.rfind("sampling:", 0) == 0) return ccd_sampling(g, like, std::stoi(method.substr(9)), first_contact);
   return ccd_marching(g, like, std::stoi(method.substr(9)), first_contact);
 }
-CdDiscResult<Rational> run3d_exact(const PreparedPair<4>& p, bool first_contact = false) {
+PipelineResult<Rational> run3d_exact(const PreparedPair<4>& p, bool first_contact = false) {
   ExactPolicy pol;
   return ccd_projection(to_arithmetic<Rational, 4>(p, Rational(1)), pol, first_contact);
 }

@@ -660,12 +660,12 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
             src += f"; seed {s['seed']} (the first of the search that fits: {s.get('family')}, motion degree {s.get('motion_degree')})"
         if s.get("what"):
             src += "; " + s["what"]
-        deg = s.get("delta_degree", "")
+        deg = s.get("projection_degree", "")
         ans = answer_text(s.get("exact_answer")) if s.get("exact_answer") else ""
         exact_row = rows.get(s.get("group", "") + "/exact")
         if exact_row and isinstance(exact_row[1].get("result"), dict):
             res = exact_row[1]["result"]
-            deg = deg or res.get("delta_degree", "")
+            deg = deg or res.get("projection_degree", "")
             ans = ans or answer_text(res)
         w(f"| `{sid}` | {md_escape(src)} | {deg} | {md_escape(ans)} |")
     w("")

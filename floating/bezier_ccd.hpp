@@ -559,7 +559,7 @@ class BezierZeroSet {
 
 // The Bézier pipeline: 001 section 4 on F(u, t), from g_0..g_4 in Bernstein form.
 template <class T>
-CdDiscResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bits, BezierOptions opt = {}) {
+PipelineResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bits, BezierOptions opt = {}) {
   auto start = std::chrono::steady_clock::now();
   std::vector<Bern<T>> gs = g;
   std::string trouble;
@@ -567,7 +567,7 @@ CdDiscResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bit
     if (!normalise_pow2<T>([&](auto f) { for (auto& gi : gs) for (auto& x : gi.b) f(x); }))
       trouble = "overflow: a non-finite coefficient of f (g_k)";
   }
-  CdDiscResult<T> res = result_from_bernstein(gs, opt.first_contact_only);
+  PipelineResult<T> res = result_from_bernstein(gs, opt.first_contact_only);
   if (!trouble.empty()) {
     Instant i0{"0", std::nullopt, std::nullopt}, i1{"1", std::nullopt, std::nullopt};
     undecided_everywhere(res, i0, i1, trouble);
@@ -587,7 +587,7 @@ CdDiscResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int bit
   }
   std::vector<TimelineNode> seq = z.run();
   res.status_at_0 = seq.front().status;
-  res.delta_degree = z.F().degree_t();
+  res.projection_degree = z.F().degree_t();
   for (std::size_t k = 0; k < seq.size(); ++k) {
     if (seq[k].is_cell) res.cells.push_back({seq[k].t, seq[k].status});
     else if (seq[k].status == Status::touching || seq[k].status == Status::uncertain) res.critical.push_back({seq[k].t, seq[k].status, 0});

@@ -177,7 +177,7 @@ std::string prepare_g(std::vector<Bern<T>>& g) {
 
 // The rest of [0, 1] from the last observed instant `from` is undecided (work bound or deadline).
 template <class T>
-void rest_undecided(std::vector<TimelineNode>& seq, CdDiscResult<T>& res, const T& from, const T& like, const std::string& why) {
+void rest_undecided(std::vector<TimelineNode>& seq, PipelineResult<T>& res, const T& from, const T& like, const std::string& why) {
   T one = scalar_traits<T>::from_rational(mpq_class(1), like);
   seq.push_back({cell_instant(from, one, like), Status::uncertain, true});
   seq.push_back({uncertified_instant(one), Status::uncertain, false});
@@ -194,13 +194,13 @@ inline void check_grid(int n) {
 }  // namespace baseline_detail
 
 template <class T>
-CdDiscResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int N, bool first_contact_only) {
+PipelineResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int N, bool first_contact_only) {
   using namespace baseline_detail;
   check_grid(N);
   auto start = std::chrono::steady_clock::now();
   std::vector<Bern<T>> gs = g;
   const std::string trouble = prepare_g(gs);
-  CdDiscResult<T> res = result_from_bernstein(gs, first_contact_only);
+  PipelineResult<T> res = result_from_bernstein(gs, first_contact_only);
   if (!trouble.empty()) {
     undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
     return res;
@@ -240,13 +240,13 @@ CdDiscResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int N
 }
 
 template <class T>
-CdDiscResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int N, bool first_contact_only) {
+PipelineResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int N, bool first_contact_only) {
   using namespace baseline_detail;
   check_grid(N);
   auto start = std::chrono::steady_clock::now();
   std::vector<Bern<T>> gs = g;
   const std::string trouble = prepare_g(gs);
-  CdDiscResult<T> res = result_from_bernstein(gs, first_contact_only);
+  PipelineResult<T> res = result_from_bernstein(gs, first_contact_only);
   if (!trouble.empty()) {
     undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
     return res;
@@ -352,12 +352,12 @@ CdDiscResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int N
 // The same from a moving pair, with f's coefficients built in power form
 // (the setup the tests use; `eccd solve --basis` chooses the setup).
 template <class T>
-CdDiscResult<T> ccd_sampling(const MovingPair<T, 4>& pair, int N, bool first_contact_only) {
+PipelineResult<T> ccd_sampling(const MovingPair<T, 4>& pair, int N, bool first_contact_only) {
   const T& like = pair.qa[0][0];
   return ccd_sampling(to_bernstein_all(characteristic_of(pair), like), like, N, first_contact_only);
 }
 template <class T>
-CdDiscResult<T> ccd_marching(const MovingPair<T, 4>& pair, int N, bool first_contact_only) {
+PipelineResult<T> ccd_marching(const MovingPair<T, 4>& pair, int N, bool first_contact_only) {
   const T& like = pair.qa[0][0];
   return ccd_marching(to_bernstein_all(characteristic_of(pair), like), like, N, first_contact_only);
 }

@@ -71,7 +71,7 @@ void clear_gap(const Rational& a, const Rational& b, const std::vector<std::pair
 }
 
 template <int N>
-CdDiscResult<Rational> run_exact(const Scene& s, std::vector<Isolation>& record) {
+PipelineResult<Rational> run_exact(const Scene& s, std::vector<Isolation>& record) {
   ExactPolicy pol;
   pol.record = &record;
   return projection_pipeline(to_arithmetic<Rational, N>(prepare_pair<N>(s), Rational(1)), pol);
@@ -82,7 +82,7 @@ CdDiscResult<Rational> run_exact(const Scene& s, std::vector<Isolation>& record)
 nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc) {
   auto start = std::chrono::steady_clock::now();
   std::vector<Isolation> record;
-  CdDiscResult<Rational> res = s.dim == 2 ? run_exact<3>(s, record) : run_exact<4>(s, record);
+  PipelineResult<Rational> res = s.dim == 2 ? run_exact<3>(s, record) : run_exact<4>(s, record);
   const CertificateAlgebra alg = certificate_algebra(s);
   if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
 
@@ -100,7 +100,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
   nlohmann::json proj = {{"name", alg.projection_name}, {"vanishing", alg.vanishing}};
 
   if (alg.projection.is_zero()) {  // 2D, Δ ≡ 0: never separate (003 Corollary 7)
-    if (!res.delta_identically_zero) throw std::logic_error("internal error: Δ ≡ 0 but the pipeline disagrees");
+    if (!res.projection_identically_zero) throw std::logic_error("internal error: Δ ≡ 0 but the pipeline disagrees");
     proj["identically_zero"] = true;
     c["projection"] = proj;
     c["gap_points"] = nlohmann::json::array();

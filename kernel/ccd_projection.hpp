@@ -44,11 +44,11 @@
 namespace eccd {
 
 template <class T, class Policy>
-CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool first_contact_only = false) {
+PipelineResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool first_contact_only = false) {
   auto start = std::chrono::steady_clock::now();
   using Rep = typename Policy::Rep;
   using Root = typename Policy::Root;
-  CdDiscResult<T> res;
+  PipelineResult<T> res;
   res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
   res.g = characteristic_of(pair);
   policy_hooks::normalise_g(pol, res.g);  // floating: scaled by a power of two (kernel/cd_disc.hpp)
@@ -76,8 +76,8 @@ CdDiscResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool f
   if (pol.identically_zero(proj)) throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
   res.projection_index = k;
-  res.delta_degree = proj.degree();
-  res.delta_identically_zero = k > 0;
+  res.projection_degree = proj.degree();
+  res.projection_identically_zero = k > 0;
   auto rts = pol.roots(proj, false);
 
   // Is there a negative multiple root of f at the root r of the projection?
@@ -138,7 +138,7 @@ namespace eccd {
 // is Δ) and the projection CCD above in 3D (N = 4). Exact, interval and
 // floating policies all enter here, so the dispatch is written once.
 template <class T, int N, class Policy>
-CdDiscResult<T> projection_pipeline(const MovingPair<T, N>& pair, Policy& pol, Variant variant = Variant::answer,
+PipelineResult<T> projection_pipeline(const MovingPair<T, N>& pair, Policy& pol, Variant variant = Variant::answer,
                                     bool first_contact_only = false) {
   if constexpr (N == 3) return cd_disc(pair, pol, variant);
   else return ccd_projection(pair, pol, first_contact_only);

@@ -49,12 +49,12 @@ namespace eccd {
 enum class Variant { answer = 0, collides = 1, first_contact = 2, all_contacts = 3 };
 
 template <class T>
-struct CdDiscResult {
+struct PipelineResult {
   Answer answer;
   Variant variant = Variant::answer;
   std::vector<Poly<T>> g;           // g_0 .. g_N (g_3 in 2D, g_4 in 3D), power form
-  int delta_degree = -1;            // degree of Δ as built in this arithmetic and basis
-  bool delta_identically_zero = false;
+  int projection_degree = -1;            // degree of Δ as built in this arithmetic and basis
+  bool projection_identically_zero = false;
   int projection_index = 0;         // 3D: 0 = discriminant, k = psc_k (kernel/ccd_projection.hpp)
   Status status_at_0 = Status::uncertain;
   struct Critical { Instant t; Status status; int multiplicity = 0; };
@@ -96,7 +96,7 @@ bool unresolved(const Root& r) {
 // Nothing can be decided (a non-finite value): the whole of [0, 1] is
 // undecided, with the reason; never a confident answer.
 template <class T>
-void undecided_everywhere(CdDiscResult<T>& res, const Instant& i0, const Instant& i1, const std::string& reason) {
+void undecided_everywhere(PipelineResult<T>& res, const Instant& i0, const Instant& i1, const std::string& reason) {
   res.answer = Answer{};
   res.answer.collides = false;
   res.answer.undecided = {i0, i1};
@@ -108,7 +108,7 @@ void undecided_everywhere(CdDiscResult<T>& res, const Instant& i0, const Instant
 
 // The reasons a floating policy gave, once each, if anything is undecided.
 template <class T, class Policy>
-void collect_reasons(CdDiscResult<T>& res, const Policy& pol) {
+void collect_reasons(PipelineResult<T>& res, const Policy& pol) {
   if (res.answer.undecided.empty()) return;
   for (const auto& n : policy_hooks::notes(pol))
     if (std::find(res.undecided_reasons.begin(), res.undecided_reasons.end(), n) == res.undecided_reasons.end())
@@ -118,8 +118,8 @@ void collect_reasons(CdDiscResult<T>& res, const Policy& pol) {
 
 // The start of a 3D result from g_0..g_4 in Bernstein form: variant, and g in power form for reporting.
 template <class T>
-CdDiscResult<T> result_from_bernstein(const std::vector<Bern<T>>& g, bool first_contact_only) {
-  CdDiscResult<T> res;
+PipelineResult<T> result_from_bernstein(const std::vector<Bern<T>>& g, bool first_contact_only) {
+  PipelineResult<T> res;
   res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
   for (const auto& gi : g) res.g.push_back(to_power(gi));
   return res;
@@ -162,13 +162,13 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
 // policy's reasons and its time; a policy that already reported trouble
 // (floating: a non-finite value) leaves [0, 1] undecided.
 template <class T, class Policy>
-CdDiscResult<T> finish_run(CdDiscResult<T>& res, const Policy& pol, std::chrono::steady_clock::time_point start) {
+PipelineResult<T> finish_run(PipelineResult<T>& res, const Policy& pol, std::chrono::steady_clock::time_point start) {
   collect_reasons(res, pol);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }
 template <class T, class Policy>
-bool undecided_on_trouble(CdDiscResult<T>& res, Policy& pol, const T& zero, const T& one) {
+bool undecided_on_trouble(PipelineResult<T>& res, Policy& pol, const T& zero, const T& one) {
   std::string why = policy_hooks::trouble(pol);
   if (why.empty()) return false;
   undecided_everywhere(res, pol.instant_at(zero), pol.instant_at(one), why);
@@ -183,9 +183,9 @@ auto discriminant_of(const std::vector<Poly<T>>& g, const Policy& pol) {
 }
 
 template <class T, class Policy>
-CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant variant = Variant::answer) {
+PipelineResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant variant = Variant::answer) {
   auto start = std::chrono::steady_clock::now();
-  CdDiscResult<T> res;
+  PipelineResult<T> res;
   res.variant = variant;
   const PolyMatrix<T, 3> A = moving_quadric<T, 3>(pair.qa, pair.na);
   const PolyMatrix<T, 3> B = moving_quadric<T, 3>(pair.qb, pair.nb);
@@ -208,7 +208,7 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   auto D = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) {
     return double_root_denominator(g3, g2, g1);
   });
-  res.delta_degree = delta.degree();
+  res.projection_degree = delta.degree();
   Answer& ans = res.answer;
   const Instant i0 = pol.instant_at(zero), i1 = pol.instant_at(one);
   if (std::string why = policy_hooks::trouble(pol); !why.empty()) {
@@ -217,7 +217,7 @@ CdDiscResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant varia
   }
 
   if (pol.identically_zero(delta)) {
-    res.delta_identically_zero = true;
+    res.projection_identically_zero = true;
     ans.collides = true;
     ans.intervals.push_back({i0, i1});
     ans.first_contact = i0;

@@ -22,7 +22,7 @@ TEST_CASE("eccd solve --json on 003 Example 2 prints one JSON object with the sp
     REQUIRE(run(std::string(ECCD_EXE) + " solve " + scene + " --arith " + arith + " --json", out) == 0);
     nlohmann::json j = nlohmann::json::parse(out);  // throws (fails) on anything but one JSON value
     REQUIRE(j.is_object());
-    for (const char* k : {"collides", "intervals", "first_contact", "contacts", "time_ms", "delta_degree", "contact_points", "arith"})
+    for (const char* k : {"collides", "intervals", "first_contact", "contacts", "time_ms", "projection_degree", "contact_points", "arith"})
       CHECK(j.contains(k));
     // Exact proves a touch at t = 1/2. A floating run with its running error
     // bound cannot tell a tangency from a near-miss: it finds it or says undecided
@@ -30,7 +30,7 @@ TEST_CASE("eccd solve --json on 003 Example 2 prints one JSON object with the sp
     // factor, degree 192; exact starts from the prepared scene, degree 96.
     if (std::string(arith) == "exact") CHECK(j["collides"] == true);
     else CHECK((j["collides"] == true || !j["undecided"].empty()));
-    CHECK(j["delta_degree"] == (std::string(arith) == "exact" ? 96 : 192));
+    CHECK(j["projection_degree"] == (std::string(arith) == "exact" ? 96 : 192));
     CHECK(j["arith"] == arith);
     if (std::string(arith) == "exact") {
       REQUIRE(j["intervals"].size() == 1);

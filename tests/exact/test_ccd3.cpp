@@ -41,7 +41,7 @@ TEST_CASE("Paper 002's example: exactly two intervals, the first is the paper's 
   Scene s = read_scene_file(case_path("paper002/example.json"));
   auto r = solve_exact_3d(s);
   check_certified(r.answer);
-  CHECK(r.delta_degree == 216);  // Disc of a quartic whose g_i have degree 36 (002 Table I: k_f = 36)
+  CHECK(r.projection_degree == 216);  // Disc of a quartic whose g_i have degree 36 (002 Table I: k_f = 36)
   REQUIRE(r.answer.collides);
   REQUIRE(r.answer.intervals.size() == 2);
   CHECK(std::fabs(approx(r.answer.intervals[0].first) - 0.1699) < 5e-5);
@@ -69,7 +69,7 @@ TEST_CASE("Sphere-sphere: the projection is psc_1 and the brackets hold the anal
                         Case{"spheres/spheres-overlap-end.json", rp({17, -40, 16}), 1}}) {
     INFO(c.file);
     auto r = solve_exact_3d(read_scene_file(case_path(c.file)));
-    CHECK(r.delta_identically_zero);  // Disc ≡ 0: λ = r_A²/r_B² is a double root for every t
+    CHECK(r.projection_identically_zero);  // Disc ≡ 0: λ = r_A²/r_B² is a double root for every t
     CHECK(r.projection_index >= 1);
     check_certified(r.answer);
     REQUIRE(r.answer.intervals.size() == 1);

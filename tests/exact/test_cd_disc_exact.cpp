@@ -48,7 +48,7 @@ TEST_CASE("003 Example 2: f's λ³ coefficient is the paper's up to a constant, 
     INFO("coefficient of t^" << i);
     CHECK(g3.c[i] == factor * Q(printed[i]));
   }
-  CHECK(r.delta_degree == 96);
+  CHECK(r.projection_degree == 96);
 }
 
 TEST_CASE("003 Table I: Δ has degree 8 for linear translations", "[exact][paper003]") {
@@ -59,7 +59,7 @@ TEST_CASE("003 Table I: Δ has degree 8 for linear translations", "[exact][paper
   CHECK(r.g[0].degree() == 0);
   CHECK(r.g[1].degree() == 2);
   CHECK(r.g[2].degree() == 2);
-  CHECK(r.delta_degree == 8);
+  CHECK(r.projection_degree == 8);
 }
 
 TEST_CASE("003 Example 2 shifted by d: away is collision-free, towards is one short overlap around 1/2", "[exact][paper003]") {
@@ -83,7 +83,7 @@ TEST_CASE("003 Example 2 shifted by d: away is collision-free, towards is one sh
 TEST_CASE("identical disks on identical motions: Δ ≡ 0 is handled, the collision set is [0, 1]", "[exact][degenerate]") {
   Scene s = translation_scene(3, 2, rp({0, 5}), rp({1}), 3, 2, rp({0, 5}), rp({1}));
   auto r = solve_exact(s);
-  CHECK(r.delta_identically_zero);
+  CHECK(r.projection_identically_zero);
   REQUIRE(r.answer.intervals.size() == 1);
   CHECK(*r.answer.intervals[0].first.lo == 0);
   CHECK(*r.answer.intervals[0].second.hi == 1);

@@ -33,7 +33,7 @@ Scene sphere_scene(const std::string& name) { return read_scene_file(case_path("
 template <class T>
 MovingPair<T, 4> pair_in(const Scene& s) { return to_arithmetic<T, 4>(prepare_pair<4>(s), base_like<T>()); }
 
-CdDiscResult<Rational> exact_3d(const Scene& s, bool first_contact = false) {
+PipelineResult<Rational> exact_3d(const Scene& s, bool first_contact = false) {
   ExactPolicy pol;
   MovingPair<Rational, 4> m = to_arithmetic<Rational, 4>(prepare_pair<4>(s), Rational(1));
   return ccd_projection(m, pol, first_contact);
@@ -273,7 +273,7 @@ TEST_CASE("baseline endpoint errors against exact on the sphere scenes (printed)
     auto pd = pair_in<double>(s);
     auto pm = pair_in<Mpfr>(s);
     // marching:1000 in MPFR (10^6 grid values, ~3 s a scene) is left out: "-"
-    struct Run { const char* method; CdDiscResult<double> d; std::optional<CdDiscResult<Mpfr>> m; };
+    struct Run { const char* method; PipelineResult<double> d; std::optional<PipelineResult<Mpfr>> m; };
     std::vector<Run> runs;
     runs.push_back({"sampling:1000", ccd_sampling(pd, 1000, false), ccd_sampling(pm, 1000, false)});
     runs.push_back({"sampling:100", ccd_sampling(pd, 100, false), ccd_sampling(pm, 100, false)});

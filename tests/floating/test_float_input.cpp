@@ -91,8 +91,8 @@ TEST_CASE("003 Example 2 in rounded input (Δ of degree 192): an answer within t
   nlohmann::json ex = solve_with(s, "exact");
   for (const char* a : {"double", "mpfr:53", "mpfr:128"}) check_run(s, ex, a, "bezier", 5.0);
   nlohmann::json d = solve_with(s, "double");
-  CHECK(d["delta_degree"] == 192);  // no exact gcd in rounded input (floating/rounded_input.hpp)
-  CHECK(solve_with(s, "double", "bezier", InputMode::prepared)["delta_degree"] == 96);
+  CHECK(d["projection_degree"] == 192);  // no exact gcd in rounded input (floating/rounded_input.hpp)
+  CHECK(solve_with(s, "double", "bezier", InputMode::prepared)["projection_degree"] == 96);
 }
 
 TEST_CASE("003 Example 2 with a semi-axis 1.333333333333 and a shape entry -1e-300 terminates", "[float-input][floating]") {

@@ -14,14 +14,14 @@ namespace eccd::test {
 
 inline std::string case_path(const std::string& rel) { return std::string(ECCD_SOURCE_DIR) + "/cases/" + rel; }
 
-inline CdDiscResult<Rational> solve_exact(const Scene& s, Variant v = Variant::answer) {
+inline PipelineResult<Rational> solve_exact(const Scene& s, Variant v = Variant::answer) {
   ExactPolicy pol;
   auto m = to_arithmetic<Rational, 3>(prepare_pair<3>(s), Rational(1));
   return cd_disc(m, pol, v);
 }
 
 template <class T>
-CdDiscResult<T> solve_floating(const Scene& s, Basis basis, int bits, const T& like, Variant v = Variant::answer) {
+PipelineResult<T> solve_floating(const Scene& s, Basis basis, int bits, const T& like, Variant v = Variant::answer) {
   FloatingPolicy<T> pol(basis, bits, like);
   auto m = to_arithmetic<T, 3>(prepare_pair<3>(s), like);
   return cd_disc(m, pol, v);

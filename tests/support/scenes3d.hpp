@@ -15,7 +15,7 @@
 
 namespace eccd::test {
 
-inline CdDiscResult<Rational> solve_exact_3d(const Scene& s, bool first_contact = false) {
+inline PipelineResult<Rational> solve_exact_3d(const Scene& s, bool first_contact = false) {
   ExactPolicy pol;
   auto m = to_arithmetic<Rational, 4>(prepare_pair<4>(s), Rational(1));
   return ccd_projection(m, pol, first_contact);
@@ -23,7 +23,7 @@ inline CdDiscResult<Rational> solve_exact_3d(const Scene& s, bool first_contact 
 
 // The Bézier pipeline with f built in Bernstein form (the `eccd solve` default).
 template <class T>
-CdDiscResult<T> solve_bezier_3d(const Scene& s, int bits, const T& like, bool first_contact = false) {
+PipelineResult<T> solve_bezier_3d(const Scene& s, int bits, const T& like, bool first_contact = false) {
   auto g = characteristic_of(to_arithmetic_bernstein<T, 4>(prepare_pair<4>(s), like));
   BezierOptions o;
   o.first_contact_only = first_contact;
