@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 rank() {
   case "$1" in
     number) echo 0 ;; kernel) echo 1 ;; floating|exact) echo 2 ;; certified) echo 3 ;;
-    io) echo 4 ;; api) echo 5 ;; include) echo 5 ;; compare) echo 6 ;; app) echo 7 ;; *) echo 99 ;;
+    io) echo 4 ;; api) echo 5 ;; include|compare) echo 6 ;; app) echo 7 ;; *) echo 99 ;;
   esac
 }
 bad=0
