@@ -167,7 +167,7 @@ Command add_regress_command(CLI::App& app) {
           }
         }
         Answer got = answer_from_json(nlohmann::json::parse(stored_answer_of(r).dump()), "the exact pipeline", "answer");
-        std::vector<std::string> diff = answer_differences(*sc.answer, got);
+        std::vector<std::string> diff = regress_differences(*sc.answer, got);
         char ms[32];
         std::snprintf(ms, sizeof ms, "%.0f ms", r["time_ms"].get<double>());
         row["time_ms"] = r["time_ms"];

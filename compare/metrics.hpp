@@ -12,25 +12,26 @@
 //    different degrees are compared after exact degree elevation of the lower
 //    one (elevation does not change the polynomial). If the exact list is
 //    all zero the error is the absolute max |ã_i|.
-//  * Answer comparison against the exact answer (both as `eccd solve` JSON):
+//  * Answer comparison against the exact answer (typed answers; the counts
+//    come from api/answer_difference.hpp, the one comparison of answers):
 //    the outcome of `collides` (correct, false_positive = reports a collision
 //    that does not happen, false_negative = misses one, undecided = the
 //    pipeline said it could not classify an instant: never folded into right
 //    or wrong, error = the pipeline threw); the numbers of intervals; missed
-//    and false contacts (matched within `tol`); the first-contact error and
-//    the largest interval-end error (only when the interval counts agree);
-//    structure_ok = correct, same intervals (ends within tol), same contacts.
+//    and false contacts (matched one to one within `tol`); the first-contact
+//    error and the largest interval-end error (only when the interval counts
+//    agree; 0 without intervals); structure_ok = correct, the same intervals
+//    one to one (ends matching), the same contacts and contact intervals.
 //    This follows the habit of CCD benchmarks against an exact ground truth
 //    (Wang et al., ACM TOG 2021: false positives, false negatives, time).
 // Requirements: T is double, eccd::Mpfr or mpq_class (exact_value below).
+#include "api/answer_difference.hpp"
 #include "number/rational_traits.hpp"
 #include "number/double_traits.hpp"
 #include "number/mpfr_real.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/bivariate_bernstein.hpp"
 #include "kernel/polynomial.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <limits>
@@ -143,60 +144,41 @@ struct AnswerMetrics {
   bool structure_ok = false;
 };
 
-inline double instant_value(const nlohmann::json& i) { return std::stod(i.at("approx").get<std::string>()); }
-
-// Instants of a JSON list (null = none).
-inline std::vector<double> instant_list(const nlohmann::json& j) {
-  std::vector<double> v;
-  if (j.is_array())
-    for (const auto& i : j) v.push_back(instant_value(i));
-  return v;
-}
-
-// Greedy matching of sorted instant lists within tol: how many of `from` have no partner in `to`.
-inline int unmatched(const std::vector<double>& from, const std::vector<double>& to, double tol) {
-  std::vector<bool> used(to.size(), false);
-  int miss = 0;
-  for (double x : from) {
-    int best = -1;
-    for (std::size_t k = 0; k < to.size(); ++k)
-      if (!used[k] && std::abs(to[k] - x) <= tol && (best < 0 || std::abs(to[k] - x) < std::abs(to[best] - x))) best = int(k);
-    if (best < 0) ++miss; else used[best] = true;
-  }
-  return miss;
-}
-
-// got: a pipeline's report (or {"error": ...}); exact: the exact report.
-inline AnswerMetrics compare_answers(const nlohmann::json& got, const nlohmann::json& exact, double tol = 1e-6) {
+// got: a pipeline's answer (nullptr: the pipeline failed); exact: the exact
+// answer. The counts come from the one answer comparison
+// (api/answer_difference.hpp).
+inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, double tol = 1e-6) {
   AnswerMetrics m;
-  m.exact_collides = exact.at("collides").get<bool>();
-  m.exact_intervals = exact["intervals"].is_array() ? int(exact["intervals"].size()) : 0;
-  if (!got.contains("collides")) {
+  m.exact_collides = exact.collides;
+  m.exact_intervals = int(exact.intervals.size());
+  if (!got) {
     m.outcome = "error";
     return m;
   }
-  bool c = got["collides"].get<bool>();
-  m.collides = c;
-  m.intervals = got["intervals"].is_array() ? int(got["intervals"].size()) : 0;
-  bool unsure = got.contains("undecided") && got["undecided"].is_array() && !got["undecided"].empty();
-  if (unsure) m.outcome = "undecided";
-  else if (c == m.exact_collides) m.outcome = "correct";
-  else m.outcome = c ? "false_positive" : "false_negative";
-
-  std::vector<double> gc = instant_list(got["contacts"]), ec = instant_list(exact["contacts"]);
-  m.missed_contacts = unmatched(ec, gc, tol);
-  m.false_contacts = unmatched(gc, ec, tol);
-  if (!got["first_contact"].is_null() && !exact["first_contact"].is_null())
-    m.first_contact_err = std::abs(instant_value(got["first_contact"]) - instant_value(exact["first_contact"]));
-  if (m.intervals == m.exact_intervals && got["intervals"].is_array()) {
-    double e = 0;
-    for (int k = 0; k < m.intervals; ++k)
-      for (int s = 0; s < 2; ++s)
-        e = std::max(e, std::abs(instant_value(got["intervals"][k][s]) - instant_value(exact["intervals"][k][s])));
-    m.endpoint_err = e;
+  DifferenceOptions o;
+  o.tol = tol;
+  AnswerDifference d = answer_difference(*got, exact, o);
+  m.collides = got->collides;
+  m.intervals = d.intervals;
+  if (!got->undecided.empty()) m.outcome = "undecided";
+  else if (!d.collides_differs) m.outcome = "correct";
+  else m.outcome = got->collides ? "false_positive" : "false_negative";
+  m.missed_contacts = d.missed_contacts;
+  m.false_contacts = d.false_contacts;
+  m.first_contact_err = d.first_contact_error;
+  if (m.intervals == m.exact_intervals) {  // matched one to one, else interval k against interval k
+    if (d.max_endpoint_error) {
+      m.endpoint_err = d.max_endpoint_error;
+    } else {
+      double e = 0;
+      for (std::size_t k = 0; k < exact.intervals.size(); ++k)
+        e = std::max({e, std::abs(got->intervals[k].first.value - exact.intervals[k].first.value),
+                      std::abs(got->intervals[k].second.value - exact.intervals[k].second.value)});
+      m.endpoint_err = e;
+    }
   }
-  m.structure_ok = m.outcome == "correct" && m.intervals == m.exact_intervals && m.endpoint_err && *m.endpoint_err <= tol &&
-                   m.missed_contacts == 0 && m.false_contacts == 0;
+  m.structure_ok = m.outcome == "correct" && m.intervals == m.exact_intervals && d.split == 0 && d.merged == 0 &&
+                   d.endpoints_off == 0 && m.missed_contacts == 0 && m.false_contacts == 0 && d.contact_intervals_differ == 0;
   return m;
 }
 

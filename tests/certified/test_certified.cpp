@@ -104,12 +104,12 @@ TEST_CASE("a scene that intervals of doubles cannot decide is decided by the MPF
   CHECK(r["decided_in"] == "mpfi:256");
   REQUIRE(r["escalations"].size() == 1);
   CHECK(r["escalations"][0]["rung"] == "interval");
-  CHECK(answer_differences(*s.answer, answer_of(r)).empty());
+  CHECK(regress_differences(*s.answer, answer_of(r)).empty());
   // Without the MPFI rung the same scene goes from doubles to exact.
   opt.arith = parse_arithmetic("certified:none");
   nlohmann::json e = solve_scene(s, opt);
   CHECK(e["decided_in"] == "exact");
-  CHECK(answer_differences(*s.answer, answer_of(e)).empty());
+  CHECK(regress_differences(*s.answer, answer_of(e)).empty());
 }
 
 TEST_CASE("certified mode gives the stored exact answers on the 2D corpus and decides most non-touch scenes in intervals", "[certified]") {
@@ -122,7 +122,7 @@ TEST_CASE("certified mode gives the stored exact answers on the 2D corpus and de
     INFO(e.path().string());
     nlohmann::json r = solve_scene(s, opt);
     CHECK(r["certified"] == true);
-    CHECK(answer_differences(*s.answer, answer_of(r)).empty());
+    CHECK(regress_differences(*s.answer, answer_of(r)).empty());
     bool is_touch = s.note.find("family=touch") != std::string::npos;
     bool esc = r["escalated"].get<bool>();
     if (is_touch) { ++touch; touch_escalated += esc; }
@@ -146,5 +146,5 @@ TEST_CASE("certified mode on paper 002's example escalates to exact and keeps bo
   nlohmann::json r = solve_scene(s, opt);
   CHECK(r["escalated"] == true);
   CHECK(r["escalation_reason"].get<std::string>().size() > 0);
-  CHECK(answer_differences(*s.answer, answer_of(r)).empty());
+  CHECK(regress_differences(*s.answer, answer_of(r)).empty());
 }

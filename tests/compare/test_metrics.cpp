@@ -13,22 +13,6 @@ using namespace eccd;
 
 namespace {
 Poly<mpq_class> qpoly(std::vector<mpq_class> c) { return Poly<mpq_class>(std::move(c)); }
-nlohmann::json inst(double t) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", t);
-  return {{"approx", b}, {"lo", nullptr}, {"hi", nullptr}};
-}
-nlohmann::json answer(bool collides, std::vector<std::pair<double, double>> ivs, std::vector<double> contacts) {
-  nlohmann::json j;
-  j["collides"] = collides;
-  j["intervals"] = nlohmann::json::array();
-  for (auto [a, b] : ivs) j["intervals"].push_back({inst(a), inst(b)});
-  j["first_contact"] = ivs.empty() ? nlohmann::json(nullptr) : inst(ivs[0].first);
-  j["contacts"] = nlohmann::json::array();
-  for (double c : contacts) j["contacts"].push_back(inst(c));
-  j["undecided"] = nlohmann::json::array();
-  return j;
-}
 }  // namespace
 
 TEST_CASE("normwise relative error of one perturbed coefficient is the perturbation over the largest coefficient", "[metrics]") {
@@ -70,45 +54,7 @@ TEST_CASE("coefficient error in Bernstein form compares after exact degree eleva
   CHECK(coefficient_error(m, e) == 0.0);
 }
 
-TEST_CASE("answer comparison: a missed contact, false and missed collisions, undecided, errors", "[metrics]") {
-  // Exact: an isolated touch at 0.2, then an interval [0.5, 0.6].
-  nlohmann::json exact = answer(true, {{0.2, 0.2}, {0.5, 0.6}}, {0.2, 0.5, 0.6});
-  SECTION("the touch at 0.2 is missed") {
-    nlohmann::json got = answer(true, {{0.5, 0.6 + 1e-9}}, {0.5, 0.6 + 1e-9});
-    AnswerMetrics m = compare_answers(got, exact);
-    CHECK(m.outcome == "correct");  // `collides` itself is right
-    CHECK(m.intervals == 1);
-    CHECK(m.exact_intervals == 2);
-    CHECK(m.missed_contacts == 1);
-    CHECK(m.false_contacts == 0);
-    REQUIRE(m.first_contact_err);
-    CHECK(*m.first_contact_err == Approx(0.3));
-    CHECK_FALSE(m.endpoint_err);  // counts differ: no endpoint error
-    CHECK_FALSE(m.structure_ok);
-  }
-  SECTION("same structure, ends off by 1e-9") {
-    nlohmann::json got = answer(true, {{0.2, 0.2}, {0.5 - 1e-9, 0.6}}, {0.2, 0.5 - 1e-9, 0.6});
-    AnswerMetrics m = compare_answers(got, exact);
-    REQUIRE(m.endpoint_err);
-    CHECK(*m.endpoint_err == Approx(1e-9).epsilon(1e-6));
-    CHECK(m.structure_ok);
-    // ... but not within a tolerance below the error.
-    CHECK_FALSE(compare_answers(got, exact, 1e-10).structure_ok);
-    CHECK(compare_answers(got, exact, 1e-10).missed_contacts == 1);
-    CHECK(compare_answers(got, exact, 1e-10).false_contacts == 1);
-  }
-  SECTION("false negative, false positive, undecided, error") {
-    CHECK(compare_answers(answer(false, {}, {}), exact).outcome == "false_negative");
-    nlohmann::json free_exact = answer(false, {}, {});
-    AnswerMetrics fp = compare_answers(answer(true, {{0.4, 0.4}}, {0.4}), free_exact);
-    CHECK(fp.outcome == "false_positive");
-    CHECK(fp.false_contacts == 1);
-    nlohmann::json unsure = answer(false, {}, {});
-    unsure["undecided"].push_back(inst(0.3));
-    CHECK(compare_answers(unsure, exact).outcome == "undecided");
-    CHECK(compare_answers(nlohmann::json::object(), exact).outcome == "error");
-  }
-}
+// The answer comparison itself: tests/api/test_answer_difference.cpp.
 
 TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first, errors ordered by precision", "[metrics][harness]") {
   GeneratorSpec sp;

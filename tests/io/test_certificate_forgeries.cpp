@@ -138,13 +138,13 @@ TEST_CASE("Continuous touching is in the certified answer: circles and spheres r
     CHECK(check_certificate(sd.s, sd.doc, cert).valid);
     // The stored exact answer of the shipped case says the same.
     REQUIRE(sd.s.answer);
-    CHECK(answer_differences(*sd.s.answer, a).empty());
+    CHECK(regress_differences(*sd.s.answer, a).empty());
     // A stored answer without the key reads as no continuous touching, and regress reports the difference.
     json stored = cert["answer"];
     stored.erase("contact_intervals");
     Answer old = answer_from_json(stored, "scene", "/answer");
     CHECK(old.contact_intervals.empty());
-    auto d = answer_differences(old, a);
+    auto d = regress_differences(old, a);
     REQUIRE(d.size() == 1);
     CHECK(d[0].find("contact_intervals: stored 0, recomputed 1") == 0);
   }
