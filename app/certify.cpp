@@ -117,18 +117,18 @@ Command add_certify_command(CLI::App& app) {
 
     std::vector<Verdict> verdicts;
     if (!args->no_floating) {
+      const Answer certified = answer_from_json(cert["answer"], "the certificate", "/answer");
       HarnessOptions ho;
       ho.mpfr_bits = args->mpfr_bits;
       for (const auto& p : harness_pipelines(scene.dim, ho)) {
         if (p.opt.arith.kind == Arithmetic::Exact) continue;
         std::cerr << "certify: " << p.label << " ...\n";
-        nlohmann::json got;
         try {
-          got = solution_to_json(solve(scene, p.opt));
+          const Solution got = solve(scene, p.opt);
+          verdicts.push_back(judge(p.label, got.answer, certified, args->tol, got.time_ms));
         } catch (const std::exception& e) {
-          got = {{"error", e.what()}};
+          verdicts.push_back(failed_verdict(p.label, e.what()));
         }
-        verdicts.push_back(judge(p.label, got, cert["answer"], args->tol));
       }
     }
     nlohmann::json vj = nlohmann::json::array();

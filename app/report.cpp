@@ -115,12 +115,14 @@ std::string map_cell_scene(const FailureMap& f, int ix, int iy) {
   return d.dump();
 }
 
-std::string answer_kind(const nlohmann::json& r) {
-  if (!r.contains("collides")) return "error";
-  if (r.contains("undecided") && !r["undecided"].empty()) return "undecided";
-  if (!r["collides"].get<bool>()) return "separate";
-  for (const auto& iv : r["intervals"])
-    if (iv[0]["approx"] != iv[1]["approx"]) return "colliding";
+// The failure map's classes of an answer: separate, touching (only isolated
+// touches), colliding, undecided; "error" without an answer.
+std::string answer_kind(const std::optional<Solution>& r) {
+  if (!r) return "error";
+  if (!r->answer.undecided.empty()) return "undecided";
+  if (!r->answer.collides) return "separate";
+  for (const auto& [a, b] : r->answer.intervals)
+    if (a.approx != b.approx) return "colliding";
   return "touching";
 }
 
@@ -138,7 +140,7 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
   std::string exact;
   {
     ScopedDeadline budget(a.harness.exact_budget_s);
-    exact = answer_kind(solution_to_json(solve(s, ex)));
+    exact = answer_kind(solve(s, ex));
   }
   int h = map->n / 2;
   for (const auto& p : map->pipelines) {

@@ -2,6 +2,7 @@
 #include "compare/harness.hpp"
 
 #include "compare/scene_generator.hpp"
+#include "io/solution_json.hpp"
 #include "exact/cd_disc_exact.hpp"
 #include "floating/cd_disc_floating.hpp"
 #include "number/double_traits.hpp"
@@ -198,13 +199,13 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
   auto in_process = [&](BoundedRun& out) {
     try {
       ScopedDeadline budget(budget_s);
-      out.got = solution_to_json(solve(s, opt));
+      out.got = solve(s, opt);
     } catch (const BudgetExhausted& e) {
       out.timed_out = true;
       out.reason = std::string("time budget: ") + e.what();
     } catch (const std::exception& e) {
       out.error = e.what();
-      out.got = nlohmann::json::object();
+      out.got.reset();
     }
   };
   int fds[2];
@@ -217,7 +218,8 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       close(fds[0]);
       BoundedRun c;
       in_process(c);
-      nlohmann::json msg = {{"got", c.got}, {"timed_out", c.timed_out}, {"error", c.error}, {"reason", c.reason}};
+      nlohmann::json msg = {{"got", c.got ? solution_to_json(*c.got) : nlohmann::json(nullptr)},
+                            {"timed_out", c.timed_out}, {"error", c.error}, {"reason", c.reason}};
       std::string text = msg.dump();
       const char* p = text.data();
       std::size_t left = text.size();
@@ -261,13 +263,13 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       } else {
         try {
           nlohmann::json msg = nlohmann::json::parse(text);
-          r.got = msg["got"];
+          if (!msg["got"].is_null()) r.got = solution_from_json(msg["got"], "the run's process");
           r.timed_out = msg["timed_out"].get<bool>();
           r.error = msg["error"].get<std::string>();
           r.reason = msg["reason"].get<std::string>();
         } catch (const std::exception&) {
           r.error = "the run's process ended without an answer (status " + std::to_string(status) + ")";
-          r.got = nlohmann::json::object();
+          r.got.reset();
         }
       }
     }
@@ -285,10 +287,10 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
 std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const HarnessOptions& opt) {
   std::vector<ResultRow> rows;
   auto pipes = harness_pipelines(s.dim, opt);
-  nlohmann::json exact;
+  Solution exact;
   {
     ScopedDeadline budget(opt.exact_budget_s);  // BudgetExhausted: no ground truth, the scene fails
-    exact = solution_to_json(solve(s, pipes[0].opt));       // throws for a scene the exact pipeline refuses
+    exact = solve(s, pipes[0].opt);             // throws for a scene the exact pipeline refuses
   }
   Reference2 r2;
   Reference3 r3;
@@ -312,7 +314,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     row.basis = ps.basis;
     row.method = ps.method;
     row.input = ps.input;
-    nlohmann::json got;
+    std::optional<Solution> got;
     bool timed_out = false;
     double wall = 0;
     if (ps.label == "exact") {
@@ -326,21 +328,22 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
       row.reason = br.reason;
     }
     if (timed_out) {
-      row.m = compare_answers(nlohmann::json::object(), exact);
+      row.m = answer_metrics(nullptr, exact.answer);
       row.m.outcome = "undecided";
       row.time_us = wall * 1e6;
     } else {
-      row.m = compare_answers(got, exact);
-      if (got.contains("time_ms")) row.time_us = got["time_ms"].get<double>() * 1e3;
-      if (got.contains("input") && got["input"].is_string()) row.input = got["input"].get<std::string>();
+      row.m = answer_metrics(got ? &got->answer : nullptr, exact.answer);
+      if (got) {
+        row.time_us = got->time_ms * 1e3;
+        row.input = to_string(got->input);
+      }
       if (row.m.outcome == "undecided") {
-        // the pipeline's own reasons where it gives them ("why"/"reason" per instant), else where
+        // the pipeline's own reasons, else where
         std::string why;
-        for (const auto& u : got["undecided"]) {
-          std::string w = u.is_object() ? u.value("why", u.value("reason", std::string())) : std::string();
-          if (w.empty() && u.is_object() && u.contains("approx")) w = "undecided near t = " + u["approx"].get<std::string>();
+        for (const auto& w : got->undecided_reasons)
           if (!w.empty() && why.find(w) == std::string::npos) why += (why.empty() ? "" : "; ") + w;
-        }
+        if (why.empty())
+          for (const auto& u : got->answer.undecided) why += (why.empty() ? "" : "; ") + ("undecided near t = " + u.approx);
         row.reason = why.empty() ? "undecided" : why;
       }
     }

@@ -37,7 +37,6 @@
 // Requirements: a scene with rational motions (the exact pipeline refuses
 // cycloidal motions, and so does the harness).
 #include "api/solve.hpp"
-#include "io/solution_json.hpp"
 #include "compare/metrics.hpp"
 #include "kernel/scene.hpp"
 
@@ -86,9 +85,10 @@ void apply_input_mode(SolveOptions& opt, const std::string& mode);
 // cannot hold up the caller; without it the budget is the ScopedDeadline alone.
 // `timed_out`: the run hit its budget (BudgetExhausted), came back after it,
 // or was killed; `reason` says which. `error`: the exception message of a run
-// that failed otherwise (then `got` is empty).
+// that failed otherwise (then `got` is empty). The child sends its Solution
+// back as JSON (io/solution_json.hpp, both ways).
 struct BoundedRun {
-  nlohmann::json got = nlohmann::json::object();
+  std::optional<Solution> got;  // the run's solution (none: it failed, hit its budget or was killed)
   bool timed_out = false;  // no answer used: the budget ran out (or the answer came after it)
   bool killed = false;     // the run did not stop by itself within 2 x budget + 1 s and was killed
   std::string error, reason;

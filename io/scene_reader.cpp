@@ -417,6 +417,7 @@ class Reader {
 
   Scene scene(const json& root);
   Answer answer(const json& j, const std::string& ptr);
+  Instant instant(const json& j, const std::string& ptr) const;
 
  private:
   std::string label_;
@@ -479,7 +480,6 @@ class Reader {
   std::vector<std::vector<Rational>> shape(const json& j, const std::string& ptr) const;
   Motion motion(const json& j, const std::string& ptr) const;
   SceneObject object(const json& j, const std::string& ptr) const;
-  Instant instant(const json& j, const std::string& ptr) const;
 };
 
 Rational Reader::number(const json& j, const std::string& ptr) const {
@@ -895,6 +895,11 @@ Answer answer_from_json(const json& j, const std::string& file_label, const std:
   } catch (const std::exception& e) {  // safety net: never let a library exception escape
     r.fail(place, std::string("internal error while reading the answer: ") + e.what());
   }
+}
+
+Instant instant_from_json(const json& j, const std::string& file_label, const std::string& place) {
+  Reader r(file_label, nullptr);
+  return r.instant(j, place);
 }
 
 namespace {

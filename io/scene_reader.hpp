@@ -117,5 +117,7 @@ nlohmann::json instant_to_json(const Instant& instant);
 // The stored "answer" of a scene at JSON pointer `place` of file `file_label`;
 // throws SceneError.
 Answer answer_from_json(const nlohmann::json& j, const std::string& file_label, const std::string& place);
+// One instant as instant_to_json writes it (the same checks as in an answer); throws SceneError.
+Instant instant_from_json(const nlohmann::json& j, const std::string& file_label, const std::string& place);
 
 }  // namespace eccd

@@ -91,6 +91,99 @@ nlohmann::ordered_json stored_answer_of(const json& report) {
 
 nlohmann::ordered_json stored_answer_of(const Solution& s) { return stored_answer_of(solution_to_json(s)); }
 
+Solution solution_from_json(const json& j, const std::string& label) {
+  auto fail = [&](const std::string& place, const std::string& what) -> void {
+    throw SceneError(label + ": " + (place.empty() ? std::string("top level") : place) + ": " + what);
+  };
+  if (!j.is_object()) fail("", "expected a solution report (a JSON object)");
+  auto text = [&](const char* k, const std::string& def = "") {
+    const json* v = j.contains(k) ? &j[k] : nullptr;
+    if (!v || v->is_null()) return def;
+    if (!v->is_string()) fail(std::string("/") + k, "expected a string");
+    return v->get<std::string>();
+  };
+  auto number = [&](const char* k, double def) {
+    if (!j.contains(k) || j[k].is_null()) return def;
+    if (!j[k].is_number()) fail(std::string("/") + k, "expected a number");
+    return j[k].get<double>();
+  };
+  auto status = [&](const json& v, const std::string& place) {
+    for (Status st : {Status::separate, Status::touching, Status::overlapping, Status::uncertain})
+      if (v.is_string() && v.get<std::string>() == to_string(st)) return st;
+    fail(place, "expected a status (separate, touching, overlapping, uncertain)");
+    return Status::uncertain;
+  };
+  auto list = [&](const char* k) {
+    if (!j.contains(k) || j[k].is_null()) return json::array();
+    if (!j[k].is_array()) fail(std::string("/") + k, "expected an array");
+    return j[k];
+  };
+  Solution s;
+  // The answer: the spec's keys (null lists of the 2D variants read as empty), then the extras.
+  json ans = json::object();
+  ans["collides"] = j.contains("collides") ? j["collides"] : json(nullptr);
+  for (const char* k : {"intervals", "contacts", "contact_intervals"}) ans[k] = list(k);
+  ans["first_contact"] = j.contains("first_contact") ? j["first_contact"] : json(nullptr);
+  s.answer = answer_from_json(ans, label, "");
+  const json und = list("undecided");
+  for (std::size_t i = 0; i < und.size(); ++i) s.answer.undecided.push_back(instant_from_json(und[i], label, "/undecided/" + std::to_string(i)));
+  const json pts = list("contact_points");
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    ContactPoint p;
+    if (!pts[i].is_array()) fail("/contact_points/" + std::to_string(i), "expected an array of decimal strings");
+    for (const auto& x : pts[i]) {
+      if (!x.is_string()) fail("/contact_points/" + std::to_string(i), "expected an array of decimal strings");
+      p.x.push_back(x.get<std::string>());
+    }
+    s.answer.contact_points.push_back(p);
+  }
+  s.scene = text("scene");
+  s.file = text("file");
+  s.dim = int(number("dim", 2));
+  try {
+    s.arith = parse_arithmetic(text("arith", "exact"));
+    s.input = parse_input_mode(text("input", "prepared"));
+  } catch (const std::invalid_argument& e) {
+    fail("", e.what());
+  }
+  s.basis = text("basis");
+  s.method = text("method");
+  for (Variant v : {Variant::answer, Variant::collides, Variant::first_contact, Variant::all_contacts})
+    if (text("variant", "answer") == variant_name(v)) s.variant = v;
+  s.certified = j.value("certified", false);
+  s.sampled = j.value("sampled", false);
+  if (j.contains("status_at_0")) s.status_at_0 = status(j["status_at_0"], "/status_at_0");
+  s.projection = text("projection", "discriminant");
+  s.projection_degree = int(number("projection_degree", -1));
+  s.projection_identically_zero = j.value("projection_identically_zero", false);
+  const json crit = list("critical_instants");
+  for (std::size_t i = 0; i < crit.size(); ++i) {
+    const std::string place = "/critical_instants/" + std::to_string(i);
+    if (!crit[i].is_object() || !crit[i].contains("t")) fail(place, "expected {\"t\", \"status\", \"multiplicity\"}");
+    s.critical.push_back({instant_from_json(crit[i]["t"], label, place + "/t"), status(crit[i].value("status", json()), place + "/status"),
+                          crit[i].value("multiplicity", 0)});
+  }
+  const json cells = list("cells");
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::string place = "/cells/" + std::to_string(i);
+    if (!cells[i].is_object() || !cells[i].contains("sample")) fail(place, "expected {\"sample\", \"status\"}");
+    s.cells.push_back({instant_from_json(cells[i]["sample"], label, place + "/sample"), status(cells[i].value("status", json()), place + "/status")});
+  }
+  for (const auto& r : list("undecided_reasons")) {
+    if (!r.is_string()) fail("/undecided_reasons", "expected strings");
+    s.undecided_reasons.push_back(r.get<std::string>());
+  }
+  if (j.contains("work") && j["work"].is_object())
+    for (const auto& [k, v] : j["work"].items())
+      if (v.is_number_integer()) s.work.push_back({k, v.get<long>()});
+  s.time_ms = number("time_ms", 0);
+  s.setup_ms = number("setup_ms", 0);
+  s.decided_in = text("decided_in");
+  for (const auto& e : list("escalations"))
+    if (e.is_object()) s.escalations.push_back({e.value("rung", std::string()), e.value("reason", std::string())});
+  return s;
+}
+
 std::string summary_text(const Solution& s) {
   std::ostringstream o;
   auto inst = [](const Instant& i) {

@@ -19,6 +19,12 @@ nlohmann::json solution_to_json(const Solution& solution);
 nlohmann::ordered_json stored_answer_of(const Solution& solution);
 // The same out of a report written by solution_to_json.
 nlohmann::ordered_json stored_answer_of(const nlohmann::json& report);
+// The Solution back from that JSON (a report of `eccd solve --json`, or a run
+// sent between processes by the harness): what was run, the answer with its
+// contact points, contact intervals and undecided instants, the diagnostics,
+// the timings and the certified ladder's rungs. Throws SceneError naming
+// `label` and the JSON place for a report it cannot read.
+Solution solution_from_json(const nlohmann::json& report, const std::string& label);
 // A few human-readable lines (what `eccd solve` prints without --json).
 std::string summary_text(const Solution& solution);
 

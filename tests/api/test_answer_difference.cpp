@@ -1,6 +1,7 @@
 // The one answer comparison (api/answer_difference.hpp) on hand-made answers
 // whose differences are known, and on the exact pipeline's answers.
 #include "api/answer_difference.hpp"
+#include "number/rational_traits.hpp"
 
 #include <catch2/catch.hpp>
 

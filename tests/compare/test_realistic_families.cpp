@@ -27,11 +27,11 @@ using namespace eccd;
 
 namespace {
 
-nlohmann::json solve_exact(const Scene& s) {
+Solution solve_exact(const Scene& s) {
   SolveOptions o;
   o.arith = parse_arithmetic("exact");
   ScopedDeadline budget(600);
-  return solution_to_json(solve(s, o));
+  return solve(s, o);
 }
 
 std::uint64_t seed_from(const char* var, std::uint64_t fallback) {
@@ -83,15 +83,11 @@ std::vector<FloatPipe> every_floating_pipeline(int dim, bool baselines) {
 // An answer that claims its decision is safe: nothing undecided, and not a
 // sampled baseline (sampling:N and marching:N mark their answers "sampled":
 // they claim nothing about the gaps between their instants).
-bool confident(const nlohmann::json& got) {
-  return got.contains("collides") && (!got.contains("undecided") || got["undecided"].empty()) &&
-         !got.value("sampled", false);
-}
+bool confident(const std::optional<Solution>& got) { return got && got->answer.undecided.empty() && !got->sampled; }
 
-double longest_interval(const nlohmann::json& exact) {
+double longest_interval(const Solution& exact) {
   double best = 0;
-  for (const auto& iv : exact["intervals"])
-    best = std::max(best, std::stod(iv[1]["approx"].get<std::string>()) - std::stod(iv[0]["approx"].get<std::string>()));
+  for (const auto& [a, b] : exact.answer.intervals) best = std::max(best, b.value - a.value);
   return best;
 }
 
@@ -130,15 +126,17 @@ TEST_CASE("overlap and graze scenes have the answer their construction promises"
     CHECK(back->family == sp.family);
     CHECK(back->d_exponent == sp.d_exponent);
     REQUIRE(g.t0);
-    nlohmann::json r = solve_exact(s);
-    REQUIRE(r["collides"].get<bool>());
-    REQUIRE(r["intervals"].size() == 1);
-    const auto& iv = r["intervals"][0];
+    Solution r = solve_exact(s);
+    REQUIRE(r.answer.collides);
+    REQUIRE(r.answer.intervals.size() == 1);
+    const auto& iv = r.answer.intervals[0];
+    REQUIRE(iv.first.certified());
+    REQUIRE(iv.second.certified());
     if (sp.family == "graze") {  // exactly {t0}
-      CHECK(iv[0]["lo"] == g.t0->get_str());
-      CHECK(iv[1]["hi"] == g.t0->get_str());
+      CHECK(*iv.first.lo == *g.t0);
+      CHECK(*iv.second.hi == *g.t0);
     } else {  // an interval of positive length around t0, shorter for a smaller depth
-      Rational lo = parse_rational(iv[0]["lo"].get<std::string>()), hi = parse_rational(iv[1]["hi"].get<std::string>());
+      Rational lo = *iv.first.lo, hi = *iv.second.hi;
       CHECK(lo < *g.t0);
       CHECK(*g.t0 < hi);
       CHECK(longest_interval(r) > 0);
@@ -277,16 +275,16 @@ void check_overlap_family(bool baselines) {
   for (const auto& sp : plan_scenes(plan)) {
     GeneratedScene g = generate_scene(sp);
     Scene s = parse_scene(g.doc.dump(), g.name);
-    nlohmann::json ex = solve_exact(s);
+    Solution ex = solve_exact(s);
     if (!(longest_interval(ex) > 1e-6)) continue;
     ++scenes;
     for (const auto& p : every_floating_pipeline(sp.dim, baselines)) {
       if (baselines != (p.opt.method == Method::sampling || p.opt.method == Method::marching)) continue;
       BoundedRun r = run_bounded(s, p.opt, budget, true);
       ++runs;
-      if (!r.timed_out && r.error.empty() && confident(r.got) && !r.got["collides"].get<bool>()) {
+      if (!r.timed_out && r.error.empty() && confident(r.got) && !r.got->answer.collides) {
         ++missed[p.label];
-        log << "  " << p.label << " says collision-free on " << g.name << " (exact: " << ex["intervals"].size()
+        log << "  " << p.label << " says collision-free on " << g.name << " (exact: " << ex.answer.intervals.size()
             << " interval(s), longest " << longest_interval(ex) << ")\n";
       }
     }
@@ -347,7 +345,7 @@ void check_realistic(int dim, int count, bool heavy) {
   for (const auto& sp : realistic_plan(seed, dim, count, heavy)) {
     GeneratedScene g = generate_scene(sp);
     Scene s = parse_scene(g.doc.dump(), g.name);
-    nlohmann::json ex = solve_exact(s);
+    Solution ex = solve_exact(s);
     ++scenes;
     ++per_degree[sp.degree];
     // CI time: in 3D the prepared-input runs (the same pipelines from the exactly prepared start) on every
@@ -364,10 +362,10 @@ void check_realistic(int dim, int count, bool heavy) {
       if (r.killed) kind = "did not stop within 2 x budget + 1 s";
       else if (!r.error.empty()) kind = "error";
       else if (r.timed_out) ++undecided;
-      else if (confident(r.got) && r.got["collides"].get<bool>() != ex["collides"].get<bool>()) kind = "confidently wrong";
+      else if (confident(r.got) && r.got->answer.collides != ex.answer.collides) kind = "confidently wrong";
       else if (!confident(r.got)) {
         ++undecided;
-        if (r.got.value("sampled", false) && r.got["collides"].get<bool>() != ex["collides"].get<bool>())
+        if (r.got && r.got->sampled && r.got->answer.collides != ex.answer.collides)
           ++sampled_wrong[p.label];  // reported below, not a failure: the baseline claims nothing between samples
       }
       if (!kind.empty()) {
@@ -417,11 +415,11 @@ TEST_CASE("realistic-input scenes, long run", "[.realistic-long]") {
 TEST_CASE("the Bezier method finds the collision of issue 14's scene missed-0.021", "[families][overlap-family]") {
   const std::string text = R"({"format":"ellipse-ccd-scene/1","name":"missed-0.021","dim":3,"a":{"shape":{"semi_axes":["1845/1000","1156/1000","682/1000"]},"motion":{"type":"euler","e":["9","0","8","7"],"translation":[["847/1000","-1949/1000"],["361/1000","795/1000"],["-449/1000","427/1000"]],"translation_denominator":"1"}},"b":{"shape":{"semi_axes":["676/1000","1660/1000","1454/1000"]},"motion":{"type":"euler","e":["2","1","-3","0"],"translation":[["-634450599237978188179/1000000000000000000000","515222857830281712583/200000000000000000000"],["1540186683275002448023/2500000000000000000000","17306096437427776020047/10000000000000000000000"],["850681931231624518787/250000000000000000000","-2800476784914803542613/1000000000000000000000"]],"translation_denominator":"1"}}})";
   Scene s = parse_scene(text, "missed-0.021");
-  nlohmann::json ex = solve_exact(s);
-  REQUIRE(ex["collides"].get<bool>());
-  REQUIRE(ex["intervals"].size() == 1);
-  const double lo = std::stod(ex["intervals"][0][0]["approx"].get<std::string>());
-  const double hi = std::stod(ex["intervals"][0][1]["approx"].get<std::string>());
+  Solution ex = solve_exact(s);
+  REQUIRE(ex.answer.collides);
+  REQUIRE(ex.answer.intervals.size() == 1);
+  const double lo = ex.answer.intervals[0].first.value;
+  const double hi = ex.answer.intervals[0].second.value;
   CHECK(std::abs(lo - 0.504798) < 1e-6);
   CHECK(std::abs(hi - 0.525770) < 1e-6);
   for (const auto& p : every_floating_pipeline(3, false)) {
@@ -430,13 +428,10 @@ TEST_CASE("the Bezier method finds the collision of issue 14's scene missed-0.02
     BoundedRun r = run_bounded(s, p.opt, 5, true);
     REQUIRE(r.error.empty());
     REQUIRE_FALSE(r.timed_out);
+    REQUIRE(r.got);
     bool seen = false;
-    for (const auto& iv : r.got["intervals"])
-      seen = seen || (std::stod(iv[0]["approx"].get<std::string>()) <= hi && std::stod(iv[1]["approx"].get<std::string>()) >= lo);
-    for (const auto& u : r.got["undecided"]) {
-      double t = std::stod(u["approx"].get<std::string>());
-      seen = seen || (t >= lo - 1e-3 && t <= hi + 1e-3);
-    }
+    for (const auto& [a, b] : r.got->answer.intervals) seen = seen || (a.value <= hi && b.value >= lo);
+    for (const auto& u : r.got->answer.undecided) seen = seen || (u.value >= lo - 1e-3 && u.value <= hi + 1e-3);
     CHECK(seen);
   }
 }
