@@ -39,7 +39,7 @@
 namespace eccd {
 
 // The reasons a floating policy gave, once each, if anything is undecided.
-template <class T, class Policy>
+template <class T, PipelinePolicy<T> Policy>
 void collect_reasons(PipelineResult<T>& res, const Policy& pol) {
   if (res.answer.undecided.empty()) return;
   for (const auto& n : policy_hooks::notes(pol))
@@ -83,18 +83,18 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
 // the policy's hook (start_run) and ends by collecting the
 // policy's reasons and its time; a policy that already reported trouble
 // (floating: a non-finite value) leaves [0, 1] undecided.
-template <class T, class Policy>
+template <class T, PipelinePolicy<T> Policy>
 std::pair<T, T> start_run(PipelineResult<T>& res, const Policy& pol, const T& like) {  // g normalised (hook); {0, 1} in T
   policy_hooks::normalise_g(pol, res.g);
   return {scalar_traits<T>::from_rational(mpq_class(0), like), scalar_traits<T>::from_rational(mpq_class(1), like)};
 }
-template <class T, class Policy>
+template <class T, PipelinePolicy<T> Policy>
 PipelineResult<T> finish_run(PipelineResult<T>& res, const Policy& pol, std::chrono::steady_clock::time_point start) {
   collect_reasons(res, pol);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }
-template <class T, class Policy>
+template <class T, PipelinePolicy<T> Policy>
 bool undecided_on_trouble(PipelineResult<T>& res, Policy& pol, const T& zero, const T& one) {
   std::string why = policy_hooks::trouble(pol);
   if (why.empty()) return false;
