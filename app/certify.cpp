@@ -106,7 +106,7 @@ Command add_certify_command(CLI::App& app) {
       std::cerr << "eccd certify: " << args->scene << ": " << e.what() << "\n";
       return 4;
     } catch (const std::invalid_argument& e) {  // a scene the exact pipeline refuses (cycloidal motion)
-      std::cerr << "eccd certify: " << args->scene << ": " << e.what() << "\n";
+      std::cerr << "eccd certify: " << args->scene << ": " << cli_message(e) << "\n";
       return 3;
     }
     // The writer's output must pass the checker before anyone sees it.
@@ -184,7 +184,7 @@ Command add_check_certificate_command(CLI::App& app) {
     try {
       r = check_certificate_text(sb.scene, sb.doc, cert_text, args->cert);
     } catch (const std::invalid_argument& e) {  // a scene the exact algebra refuses (cycloidal motion)
-      throw std::invalid_argument(args->scene + ": " + e.what());
+      throw std::invalid_argument(args->scene + ": " + cli_message(e));
     }
     if (args->json) {
       nlohmann::json j = {{"valid", r.valid}, {"checked", r.checked}};

@@ -6,10 +6,13 @@
 // BudgetExhausted, std::bad_alloc -> exit 5; any other exception -> exit 1, an
 // internal error). `run` returns the exit status.
 #include "compare/scene_generator.hpp"
+#include "kernel/prepared_scene.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <exception>
 #include <functional>
+#include <string>
 
 namespace eccd {
 
@@ -32,6 +35,14 @@ inline RunBudget& run_budget() {
 void check_plan(const GeneratePlan& plan);
 // CLI11 check of a --seed text: "" if it is a decimal integer 0 .. 2^64-1.
 std::string check_seed_text(const std::string& text);
+
+// The message of an exception as the command line prints it: a scene the
+// exact pipeline refuses (kernel/prepared_scene.hpp, NotRationalMotion) gets
+// the command line's advice.
+inline std::string cli_message(const std::exception& e) {
+  if (dynamic_cast<const NotRationalMotion*>(&e)) return std::string(e.what()) + " (use --arith double or mpfr:BITS)";
+  return e.what();
+}
 
 struct Command {
   CLI::App* sub = nullptr;

@@ -271,7 +271,11 @@ int main(int argc, char** argv) {
       opt.variant = Variant(variant);
       std::tie(opt.method, opt.grid) = parse_method(method);
       opt.first_contact = first_contact || (variant == 2);
-      opt.input = parse_input_mode(input);
+      try {
+        opt.input = parse_input_mode(input);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--input ") + e.what());
+      }
       if (input_opt->count() && opt.arith.kind != Arithmetic::Double && opt.arith.kind != Arithmetic::Mpfr)
         std::cerr << "eccd solve: warning: --input applies to double and mpfr only; " << opt.arith.name()
                   << " starts from the exactly prepared scene\n";
@@ -283,7 +287,7 @@ int main(int argc, char** argv) {
         ScopedDeadline deadline(run_budget().time_limit_s);
         r = eccd::solve(s, opt);
       } catch (const std::invalid_argument& e) {
-        std::cerr << "eccd solve: " << scene_path << ": " << e.what() << "\n";
+        std::cerr << "eccd solve: " << scene_path << ": " << cli_message(e) << "\n";
         return 3;
       }
       { itimerval off{}; setitimer(ITIMER_REAL, &off, nullptr); }  // solved: the backstop is not needed for writing
@@ -308,7 +312,7 @@ int main(int argc, char** argv) {
           return c.run();
         } catch (const std::invalid_argument& e) {  // e.g. a cycloidal scene: name the file if the message does not
           const std::string scene = c.sub->get_option("SCENE")->as<std::string>();
-          std::string m = e.what();
+          std::string m = cli_message(e);
           if (m.find(scene) == std::string::npos) throw std::invalid_argument(scene + ": " + m);
           throw;
         }
@@ -320,7 +324,7 @@ int main(int argc, char** argv) {
     std::cerr << "eccd: " << cut_message(e.what()) << "\n";
     return 2;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "eccd: " << cut_message(e.what()) << "\n";
+    std::cerr << "eccd: " << cut_message(cli_message(e)) << "\n";
     return 2;
   } catch (const fs::filesystem_error& e) {  // a file or folder the user named: missing, unreadable, read-only
     std::string p = e.path1().string();

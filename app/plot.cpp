@@ -503,7 +503,7 @@ int run_plot(const PlotOptions& o) {
     rep = solution_to_json(solve(s, opt));
     if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
   } catch (const std::invalid_argument& e) {
-    std::cerr << "eccd plot: " << o.scene << ": " << e.what() << "\n";
+    std::cerr << "eccd plot: " << o.scene << ": " << cli_message(e) << "\n";
     return 3;
   }
 

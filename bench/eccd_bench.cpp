@@ -892,8 +892,8 @@ void add_phases_2d(const std::string& grp, Lazy<Scene2D>* sc, Variant var, std::
     In x{to_arithmetic<T, 3>(s.p, make_like()), {}, {}, {}, {}, {}};
     x.g = characteristic_coefficients<T, 3>(moving_quadric<T, 3>(x.m.qa, x.m.na), moving_quadric<T, 3>(x.m.qb, x.m.nb));
     x.delta = discriminant_of(x.g, pol);
-    x.P = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) { return double_root_numerator(g3, g2, g1, g0); });
-    x.D = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) { return double_root_denominator(g3, g2, g1); });
+    x.P = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) { return double_root_numerator(g3, g2, g1, g0); });
+    x.D = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) { return double_root_denominator(g3, g2, g1); });
     x.roots = pol.roots(x.delta, false);
     return x;
   });
@@ -928,8 +928,8 @@ void add_phases_2d(const std::string& grp, Lazy<Scene2D>* sc, Variant var, std::
     const In& x = in->get();
     Policy pol = make_pol();
     timed(st, grp + "/4 P, D build", [&] {
-      auto P = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) { return double_root_numerator(g3, g2, g1, g0); });
-      auto D = pol.build(x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) { return double_root_denominator(g3, g2, g1); });
+      auto P = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) { return double_root_numerator(g3, g2, g1, g0); });
+      auto D = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) { return double_root_denominator(g3, g2, g1); });
       return std::make_pair(std::move(P), std::move(D));
     }, none);
   });

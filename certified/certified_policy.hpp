@@ -30,7 +30,9 @@
 #include "number/interval.hpp"
 #include "number/mpfi_interval.hpp"
 #include "kernel/answer.hpp"
+#include "kernel/basis_build.hpp"
 #include "kernel/bernstein.hpp"
+#include "kernel/pipeline_policy.hpp"
 #include "kernel/polynomial.hpp"
 
 #include <optional>
@@ -67,18 +69,10 @@ struct CertifiedPolicy {
 
   T of(const Rational& q) const { return scalar_traits<T>::from_rational(q, like); }
 
-  template <class F>
-  Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
-    std::vector<Bern<T>> b(g.size());
-    for (std::size_t i = 0; i < g.size(); ++i) {
-      b[i] = to_bernstein(g[i], std::max(g[i].degree(), 0));
-      if (g[i].is_zero()) b[i].b.assign(1, T(0));
-    }
-    return formula(b);
-  }
+  // In the Bernstein basis (kernel/basis_build.hpp): its coefficients enclose the range, which sign_at uses.
   template <class F>
   Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
-    return build_n(g, [&](const auto& G) { return formula(G[3], G[2], G[1], G[0]); });
+    return build_in_basis(Basis::bernstein, g, formula, T(0));
   }
   bool identically_zero(const Bern<T>& q) const {
     bool all_zero = true;
@@ -139,26 +133,14 @@ struct CertifiedPolicy {
     Sign s = eccd::sign(x);
     return s == Sign::positive || s == Sign::negative;
   }
-  // Sign changes of the coefficients, or -1 if a coefficient's sign is uncertain.
-  static int variations(const Bern<T>& q) {
-    int v = 0;
-    Sign last = Sign::zero;
-    for (const auto& x : q.b) {
-      Sign s = eccd::sign(x);
-      if (s == Sign::uncertain) return -1;
-      if (s == Sign::zero) continue;
-      if (last != Sign::zero && s != last) ++v;
-      last = s;
-    }
-    return v;
-  }
   // q is the restriction to [a, b] (reparameterised to [0, 1]); its end
   // coefficients (the values at a and b) have certain non-zero signs.
   void isolate(const Bern<T>& q, const Rational& a, const Rational& b, int depth, std::vector<Root>& out) const {
     ++pieces;
-    int v = variations(q);
-    if (v == 0) return;
-    if (v == 1) {
+    // An uncertain count (a coefficient whose interval holds 0) proves nothing: split.
+    const SignVariations v = sign_variations(q.b);
+    if (v.is(0)) return;
+    if (v.is(1)) {
       refine(q, a, b, out);
       return;
     }
@@ -213,5 +195,8 @@ struct CertifiedPolicy {
   }
   mutable const Bern<T>* whole = nullptr;  // the polynomial being isolated (for refine)
 };
+
+static_assert(PipelinePolicy<CertifiedPolicy<Interval>, Interval>);
+static_assert(PipelinePolicy<CertifiedPolicy<MpfiInterval>, MpfiInterval>);
 
 }  // namespace eccd

@@ -14,6 +14,7 @@
 #include "exact/algebraic_roots.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
+#include "kernel/pipeline_policy.hpp"
 #include "number/simplest_rational.hpp"
 
 namespace eccd {
@@ -32,10 +33,10 @@ struct ExactPolicy {
   // builds the certificate from the very roots the answer was decided on).
   std::vector<Isolation>* record = nullptr;
 
+  // The formula in the power basis, kept in power form: nothing is rounded, so the basis does not matter
+  // (kernel/basis_build.hpp).
   template <class F>
-  Poly<Rational> build_n(const std::vector<Poly<Rational>>& g, F formula) const { return formula(g); }
-  template <class F>
-  Poly<Rational> build(const std::vector<Poly<Rational>>& g, F formula) const { return formula(g[3], g[2], g[1], g[0]); }
+  Poly<Rational> build(const std::vector<Poly<Rational>>& g, F formula) const { return formula(g); }
   bool identically_zero(const Poly<Rational>& q) const { return q.is_zero(); }
 
   std::vector<Root> roots(const Poly<Rational>& q, bool /*first_only: all roots are isolated anyway*/) const {
@@ -64,5 +65,7 @@ struct ExactPolicy {
   bool at_zero(const Root& r) const { return r.hi == 0; }
   bool at_one(const Root& r) const { return r.lo == 1; }
 };
+
+static_assert(PipelinePolicy<ExactPolicy, Rational>);
 
 }  // namespace eccd

@@ -74,12 +74,12 @@ inline CertificateAlgebra certificate_algebra(const Scene& s) {
   CertificateAlgebra a;
   a.dim = s.dim;
   if (s.dim == 2) {
-    a.g = characteristic_of(to_arithmetic<Rational, 3>(prepare_pair<3>(s), Rational(1)));
+    a.g = characteristic_of(to_arithmetic<Rational, H_2D>(prepare_pair<H_2D>(s), Rational(1)));
     a.projection = cubic_discriminant(a.g[3], a.g[2], a.g[1], a.g[0]);
     a.projection_name = "discriminant";
     return a;
   }
-  a.g = characteristic_of(to_arithmetic<Rational, 4>(prepare_pair<4>(s), Rational(1)));
+  a.g = characteristic_of(to_arithmetic<Rational, H_3D>(prepare_pair<H_3D>(s), Rational(1)));
   a.projection = quartic_discriminant(a.g[4], a.g[3], a.g[2], a.g[1], a.g[0]);
   a.projection_name = "discriminant";
   for (int k = 1; a.projection.is_zero() && k <= 3; ++k) {

@@ -18,6 +18,7 @@
 #include "exact/integer_polynomial.hpp"
 #include "number/rational_traits.hpp"
 #include "kernel/polynomial.hpp"
+#include "kernel/sign_variations.hpp"
 
 #include <stdexcept>
 #include <vector>
@@ -54,14 +55,7 @@ inline int descartes_variations(const Poly<Rational>& p, const Rational& a, cons
   std::vector<mpz_class> r(h.rbegin(), h.rend());
   for (int i = 0; i < n; ++i)
     for (int k = n - 1; k >= i; --k) r[k] += r[k + 1];
-  int v = 0, last = 0;
-  for (const auto& x : r) {
-    int s = sgn(x);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++v;
-    last = s;
-  }
-  return v;
+  return sign_variations_n(r.size(), [&](std::size_t k) { return sign_of_int(sgn(r[k])); }).count;
 }
 
 }  // namespace eccd

@@ -126,9 +126,9 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
       if (all_uncertain) { add({pc.a, pc.b, point_of(T(half * (pc.a + pc.b))), true}); continue; }
     }
     Sign sa = sign(pc.q.b.front()), sb = sign(pc.q.b.back());
-    bool all_sure = true;  // Descartes' rule needs every coefficient's sign (a running error bound may leave some uncertain)
-    for (const auto& x : pc.q.b) all_sure = all_sure && sign(x) != Sign::uncertain;
-    if (all_sure && pc.q.sign_variations() == 1 && sa != Sign::zero && sb != Sign::zero && sa != sb) {
+    // Descartes' rule needs every coefficient's sign: an uncertain one (a
+    // running error bound) leaves the count unknown, and the piece is split.
+    if (sign_variations(pc.q.b).is(1) && sa != Sign::zero && sb != Sign::zero && sa != sb) {
       // exactly one simple root: Illinois (modified regula falsi), which
       // converges superlinearly, down to the working precision
       T lo = zero, hi = one, flo = pc.q.b.front(), fhi = pc.q.b.back();

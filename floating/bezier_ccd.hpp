@@ -38,13 +38,8 @@
 // Arithmetics. double and MPFR run all of the above; nothing is certified,
 // and a gap that subdivision cannot close at the arithmetic's resolution
 // (2^-min(p/2, 30), where a double root's instant is only known to ~sqrt(eps)) is
-// reported as a touch if both sides are separate, or `uncertain`. With exact
-// rationals the same subdivision and sign tests are proofs, never guesses:
-// certify_cell() proves overlap on [a, b] by negative control points, and
-// separation by a rational u* (a rounded argmax: it need not be the exact
-// root of F_u) whose Bernstein coefficients of F(u*, .) on [a, b] are all
-// positive. Near a contact instant no such certificate exists; the exact
-// pipeline decides those instants by projection (kernel/ccd_projection.hpp).
+// reported as a touch if both sides are separate, or `uncertain`. The exact
+// 3D pipeline is the projection (kernel/ccd_projection.hpp), not this method.
 // Termination and honesty (issue 14): g is scaled by a power of two first
 // and a non-finite coefficient or control point makes [0, 1] undecided with
 // the reason; when the subdivision cap (max_subdivisions) or the run's
@@ -271,31 +266,6 @@ class BezierZeroSet {
         if (sign(row[j]) == Sign::positive && (&row == &f.b.front() || &row == &f.b.back())) return false;
     auto [lo, hi] = split_u(f, half_);
     return negative_in_u(lo, depth - 1) && negative_in_u(hi, depth - 1);
-  }
-
-  // Certificate of separation on [a, b]: F(u*, t) > 0 on [a, b] (all Bernstein coefficients positive).
-  bool separate_on(const T& ustar, const T& a, const T& b) const {
-    Bern<T> G = restrict_to(ellipsoid_function_along(F_, ustar), a, b, one_);
-    for (const auto& x : G.b)
-      if (sign(x) != Sign::positive) return false;
-    return true;
-  }
-
-  // Exact certificates for a cell [a, b] of known status, by subdivision to
-  // `depth` levels: returns the certified length; the pieces that no
-  // certificate covers are appended to `open` (they hold a contact instant
-  // or are too close to one).
-  T certify_cell(const T& a, const T& b, Status st, int depth, std::vector<std::pair<T, T>>& open) const {
-    bool ok = false;
-    if (st == Status::overlapping) ok = overlap_on(a, b);
-    if (st == Status::separate) {
-      T mid = half_ * (a + b);
-      ok = separate_on(peak(mid).u, a, b) || separate_on(peak(a).u, a, b) || separate_on(peak(b).u, a, b);
-    }
-    if (ok) return b - a;
-    if (depth == 0) { open.push_back({a, b}); return zero_; }
-    T m = half_ * (a + b);
-    return certify_cell(a, m, st, depth - 1, open) + certify_cell(m, b, st, depth - 1, open);
   }
 
   // Iterative Bézier shooting from the separate instant `from` towards `to` (either direction).

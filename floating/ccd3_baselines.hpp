@@ -191,20 +191,27 @@ inline void check_grid(int n) {
   if (n < 1) throw std::invalid_argument("baseline grid size N must be at least 1, got " + std::to_string(n));
 }
 
+// The start of both baselines: the grid checked, g scaled (prepare_g), the
+// result begun; false if nothing can be decided (res is then the answer).
+template <class T>
+bool begin_run(std::vector<Bern<T>>& g, const T& like, int N, bool first_contact_only, PipelineResult<T>& res) {
+  check_grid(N);
+  const std::string trouble = prepare_g(g);
+  res = result_from_bernstein(g, first_contact_only);
+  if (trouble.empty()) return true;
+  undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
+  return false;
+}
+
 }  // namespace baseline_detail
 
 template <class T>
 PipelineResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int N, bool first_contact_only) {
   using namespace baseline_detail;
-  check_grid(N);
   auto start = std::chrono::steady_clock::now();
   std::vector<Bern<T>> gs = g;
-  const std::string trouble = prepare_g(gs);
-  PipelineResult<T> res = result_from_bernstein(gs, first_contact_only);
-  if (!trouble.empty()) {
-    undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
-    return res;
-  }
+  PipelineResult<T> res;
+  if (!begin_run(gs, like, N, first_contact_only, res)) return res;
 
   std::vector<TimelineNode> seq;
   std::vector<Status> st;  // status of sample k (== seq[2k].status)
@@ -242,15 +249,10 @@ PipelineResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int
 template <class T>
 PipelineResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int N, bool first_contact_only) {
   using namespace baseline_detail;
-  check_grid(N);
   auto start = std::chrono::steady_clock::now();
   std::vector<Bern<T>> gs = g;
-  const std::string trouble = prepare_g(gs);
-  PipelineResult<T> res = result_from_bernstein(gs, first_contact_only);
-  if (!trouble.empty()) {
-    undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
-    return res;
-  }
+  PipelineResult<T> res;
+  if (!begin_run(gs, like, N, first_contact_only, res)) return res;
   const BiBern<T> F = ellipsoid_function(gs, like);
 
   std::vector<T> u;
@@ -352,12 +354,12 @@ PipelineResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int
 // The same from a moving pair, with f's coefficients built in power form
 // (the setup the tests use; `eccd solve --basis` chooses the setup).
 template <class T>
-PipelineResult<T> ccd_sampling(const MovingPair<T, 4>& pair, int N, bool first_contact_only) {
+PipelineResult<T> ccd_sampling(const MovingPair3<T>& pair, int N, bool first_contact_only) {
   const T& like = pair.qa[0][0];
   return ccd_sampling(to_bernstein_all(characteristic_of(pair), like), like, N, first_contact_only);
 }
 template <class T>
-PipelineResult<T> ccd_marching(const MovingPair<T, 4>& pair, int N, bool first_contact_only) {
+PipelineResult<T> ccd_marching(const MovingPair3<T>& pair, int N, bool first_contact_only) {
   const T& like = pair.qa[0][0];
   return ccd_marching(to_bernstein_all(characteristic_of(pair), like), like, N, first_contact_only);
 }

@@ -2,14 +2,9 @@
 // The floating CD-DISC pipelines (double and MPFR): the policy that
 // kernel/cd_disc.hpp needs in rounded arithmetic.
 //
-// Statement. 003 section VI-C: Δ(t) built in one of three ways, then its
-// roots in [0, 1] found by Bernstein subdivision (floating/bernstein_roots.hpp):
-//   power             g_i and Δ in the power basis, Δ converted to Bernstein
-//                     form for the subdivision (what 003 found unstable);
-//   bernstein         g_i converted to Bernstein form, Δ built there (003's
-//                     Variants 2 and 3);
-//   scaled_bernstein  g_i converted to scaled Bernstein form, Δ built there by
-//                     plain convolutions (003's Variant 1).
+// Statement. 003 section VI-C: Δ(t) built in one of three bases (power,
+// bernstein, scaled_bernstein: kernel/basis_build.hpp), then its roots in
+// [0, 1] found by Bernstein subdivision (floating/bernstein_roots.hpp).
 // Signs at a root are the signs of the computed values at the root's
 // approximation: nothing here is certified.
 // Scaling and termination (issue 14): g_0..g_N are scaled by a power of two
@@ -25,7 +20,9 @@
 #include "floating/bernstein_roots.hpp"
 #include "number/pow2_scaling.hpp"
 #include "kernel/answer.hpp"
+#include "kernel/basis_build.hpp"
 #include "kernel/cd_disc.hpp"
+#include "kernel/pipeline_policy.hpp"
 #include "kernel/scaled_bernstein.hpp"
 
 #include <algorithm>
@@ -34,22 +31,6 @@
 #include <string>
 
 namespace eccd {
-
-enum class Basis { power, bernstein, scaled_bernstein };
-
-inline const char* to_string(Basis b) {
-  switch (b) {
-    case Basis::power: return "power";
-    case Basis::bernstein: return "bernstein";
-    default: return "scaled-bernstein";
-  }
-}
-inline Basis parse_basis(const std::string& s) {
-  if (s == "power") return Basis::power;
-  if (s == "bernstein") return Basis::bernstein;
-  if (s == "scaled-bernstein" || s == "scaled") return Basis::scaled_bernstein;
-  throw std::invalid_argument("unknown basis '" + s + "' (power, bernstein, scaled-bernstein)");
-}
 
 template <class T>
 struct FloatingPolicy {
@@ -64,12 +45,13 @@ struct FloatingPolicy {
 
   FloatingPolicy(Basis b, int precision_bits, const T& like_value) : basis(b), bits(precision_bits), like(like_value) {}
 
-  // formula(G) with G = {g_0, ..., g_N} in the ring of the basis; the result in Bernstein form.
+  // formula(G) with G = {g_0, ..., g_N} in the ring of the basis; the result in Bernstein form
+  // (kernel/basis_build.hpp). Not rescaled: g is (normalise_g), so Δ and the
+  // others stay in range, and the harness measures these coefficients against
+  // exact ones unscaled.
   template <class F>
-  Bern<T> build_n(const std::vector<Poly<T>>& g, F formula) const {
-    // Not rescaled: g is (normalise_g), so Δ and the others stay in range, and
-    // the harness measures these coefficients against exact ones unscaled.
-    Bern<T> out = build_raw(g, formula);
+  Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
+    Bern<T> out = build_in_basis(basis, g, formula, T(T(0) * like));
     if (!all_finite(out.b) && trouble.empty())
       trouble = "overflow: a non-finite coefficient in a polynomial built from f (Δ, P, D or a subresultant)";
     return out;
@@ -79,28 +61,6 @@ struct FloatingPolicy {
     bool ok = normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.c) f(x); });
     if (!ok && trouble.empty()) trouble = "overflow: a non-finite coefficient of f (g_k)";
     return ok;
-  }
-  template <class F>
-  Bern<T> build_raw(const std::vector<Poly<T>>& g, F formula) const {
-    if (basis == Basis::power) {
-      Poly<T> r = formula(g);
-      Bern<T> out = to_bernstein(r, std::max(r.degree(), 0));
-      if (r.is_zero()) out.b.assign(1, T(0) * like);
-      return out;
-    }
-    std::vector<Bern<T>> b(g.size());
-    for (std::size_t i = 0; i < g.size(); ++i) {
-      b[i] = to_bernstein(g[i], std::max(g[i].degree(), 0));
-      if (g[i].is_zero()) b[i].b.assign(1, T(0) * like);
-    }
-    if (basis == Basis::bernstein) return formula(b);
-    std::vector<ScaledBern<T>> s(g.size());
-    for (std::size_t i = 0; i < g.size(); ++i) s[i] = to_scaled(b[i]);
-    return to_bernstein(formula(s));
-  }
-  template <class F>
-  Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
-    return build_n(g, [&](const auto& G) { return formula(G[3], G[2], G[1], G[0]); });
   }
   bool identically_zero(const Bern<T>& q) const {
     for (const auto& x : q.b) if (!is_zero(x)) return false;
@@ -146,5 +106,9 @@ struct FloatingPolicy {
     return !((unknown_inside(r) ? r.lo : r.hi) < scalar_traits<T>::from_rational(mpq_class(1), like));
   }
 };
+
+static_assert(PipelinePolicy<FloatingPolicy<double>, double>);
+static_assert(PipelinePolicy<FloatingPolicy<Mpfr>, Mpfr>);
+static_assert(PipelinePolicy<FloatingPolicy<Bounded<double>>, Bounded<double>>);
 
 }  // namespace eccd

@@ -33,6 +33,8 @@
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/ring_determinant.hpp"
 #include "kernel/scene.hpp"
 
 #include <cmath>
@@ -41,59 +43,23 @@
 
 namespace eccd {
 
-namespace rounded_detail {
-
-// det of a small matrix in T by Gaussian elimination with partial pivoting.
-template <class T, int N>
-T det_in(Matrix<T, N> m) {
-  T d = scalar_traits<T>::from_rational(mpq_class(1), m[0][0]);
-  for (int c = 0; c < N; ++c) {
-    int p = c;
-    for (int r = c + 1; r < N; ++r)
-      if (scalar_traits<T>::abs(m[r][c]) > scalar_traits<T>::abs(m[p][c])) p = r;
-    if (is_zero(m[p][c])) return m[p][c];
-    if (p != c) { std::swap(m[p], m[c]); d = -d; }
-    d = d * m[c][c];
-    for (int i = c + 1; i < N; ++i) {
-      T f = m[i][c] / m[c][c];
-      for (int j = c; j < N; ++j) m[i][j] = m[i][j] - f * m[c][j];
-    }
-  }
-  return d;
-}
-
-template <class T, int N>
-Matrix<T, N> quadric_value(const Matrix<T, N>& q, const PolyMatrix<T, N>& n, const T& t) {
-  Matrix<T, N> nt{}, r{};
-  for (int i = 0; i < N; ++i) for (int j = 0; j < N; ++j) nt[i][j] = n[i][j].is_zero() ? scalar_traits<T>::from_rational(mpq_class(0), t) : n[i][j](t);
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) {
-      T s = scalar_traits<T>::from_rational(mpq_class(0), t);
-      for (int k = 0; k < N; ++k)
-        for (int l = 0; l < N; ++l) s = s + nt[k][i] * q[k][l] * nt[l][j];
-      r[i][j] = s;
-    }
-  return r;
-}
-
-}  // namespace rounded_detail
 
 // The scene's pair rounded to T and prepared in T. trouble: "" or why a stage
 // is not finite.
-template <class T, int N>
-MovingPair<T, N> round_pair(const Scene& s, const T& like, std::string& trouble) {
-  if (s.dim + 1 != N) throw std::invalid_argument("scene dimension does not match the pipeline");
+template <class T, int H>
+MovingPair<T, H> round_pair(const Scene& s, const T& like, std::string& trouble) {
+  if (s.dim + 1 != H) throw std::invalid_argument("scene dimension does not match the pipeline");
   auto conv = [&](const Rational& q) { return scalar_traits<T>::from_rational(q, like); };
-  MovingPair<T, N> m;
+  MovingPair<T, H> m;
   trouble.clear();
-  auto shape = [&](const SceneObject& o, Matrix<T, N>& q, const char* name) {
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j) q[i][j] = conv(o.Q.at(i).at(j));
+  auto shape = [&](const SceneObject& o, Matrix<T, H>& q, const char* name) {
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) q[i][j] = conv(o.Q.at(i).at(j));
     if (!normalise_pow2<T>([&](auto f) { for (auto& row : q) for (auto& x : row) f(x); }) && trouble.empty())
       trouble = std::string("non-finite value in the shape matrix of object ") + name;
   };
-  auto motion = [&](const SceneObject& o, PolyMatrix<T, N>& n, const char* name) {
-    n = motion_inverse<T, N>(o.motion, conv);
+  auto motion = [&](const SceneObject& o, PolyMatrix<T, H>& n, const char* name) {
+    n = motion_inverse<T, H>(o.motion, conv);
     bool ok = normalise_pow2<T>([&](auto f) {
       for (auto& row : n) for (auto& e : row) for (auto& c : e.c) f(c);
     });
@@ -109,15 +75,15 @@ MovingPair<T, N> round_pair(const Scene& s, const T& like, std::string& trouble)
   int used = 0;
   for (const mpq_class& tq : {mpq_class(0), mpq_class(1, 2), mpq_class(1)}) {
     T t = conv(tq);
-    T da = rounded_detail::det_in<T, N>(rounded_detail::quadric_value<T, N>(m.qa, m.na, t));
-    T db = rounded_detail::det_in<T, N>(rounded_detail::quadric_value<T, N>(m.qb, m.nb, t));
+    T da = field_det<T, H>(quadric_at<T, H>(m.qa, m.na, t));
+    T db = field_det<T, H>(quadric_at<T, H>(m.qb, m.nb, t));
     long ea = binary_exponent(da), eb = binary_exponent(db);
     if (ea == LONG_MIN || eb == LONG_MIN) continue;
     sum += double(eb - ea);
     ++used;
   }
   if (used) {
-    long k = std::lround(sum / (used * N));
+    long k = std::lround(sum / (used * H));
     if (k != 0)
       for (auto& row : m.qb) for (auto& x : row) x = times_pow2(x, -k);
   }
@@ -125,27 +91,27 @@ MovingPair<T, N> round_pair(const Scene& s, const T& like, std::string& trouble)
 }
 
 // The same with N(t) in Bernstein form, converted in T.
-template <class T, int N>
-MovingPairBern<T, N> to_bernstein_pair(const MovingPair<T, N>& m) {
+template <class T, int H>
+MovingPairBern<T, H> to_bernstein_pair(const MovingPair<T, H>& m) {
   const T& like = m.qa[0][0];
   auto bern = [&](const Poly<T>& e) {
     if (e.is_zero()) { Bern<T> r; r.b.push_back(scalar_traits<T>::from_rational(mpq_class(0), like)); return r; }
     return to_bernstein(e, std::max(e.degree(), 0));
   };
-  MovingPairBern<T, N> out;
+  MovingPairBern<T, H> out;
   out.qa = m.qa;
   out.qb = m.qb;
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) { out.na[i][j] = bern(m.na[i][j]); out.nb[i][j] = bern(m.nb[i][j]); }
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) { out.na[i][j] = bern(m.na[i][j]); out.nb[i][j] = bern(m.nb[i][j]); }
   return out;
 }
 
 // g_0..g_N in Bernstein form from a pair already in T (the rounded start):
 // every product in Bernstein form, or in power form with each g_k converted
 // at the end (the same two set-ups as characteristic_bernstein).
-template <class T, int N>
-std::vector<Bern<T>> characteristic_bernstein_of(const MovingPair<T, N>& m, bool power_products) {
-  if (!power_products) return characteristic_of(to_bernstein_pair<T, N>(m));
+template <class T, int H>
+std::vector<Bern<T>> characteristic_bernstein_of(const MovingPair<T, H>& m, bool power_products) {
+  if (!power_products) return characteristic_of(to_bernstein_pair<T, H>(m));
   const T& like = m.qa[0][0];
   std::vector<Bern<T>> out;
   for (const auto& gi : characteristic_of(m)) {

@@ -3,6 +3,7 @@
 
 #include "kernel/bernstein.hpp"
 #include "kernel/quadric_classification.hpp"
+#include "kernel/ring_determinant.hpp"
 #include "exact/algebraic_roots.hpp"
 #include "kernel/budget.hpp"
 
@@ -608,26 +609,6 @@ std::vector<std::vector<Rational>> Reader::shape(const json& j, const std::strin
   return Q;
 }
 
-// Determinant of a small square matrix of polynomials (Laplace, n <= 3).
-RPoly poly_det(const std::vector<std::vector<RPoly>>& a) {
-  const std::size_t n = a.size();
-  if (n == 1) return a[0][0];
-  RPoly d;
-  for (std::size_t j = 0; j < n; ++j) {
-    if (a[0][j].is_zero()) continue;
-    std::vector<std::vector<RPoly>> sub;
-    for (std::size_t i = 1; i < n; ++i) {
-      std::vector<RPoly> row;
-      for (std::size_t k = 0; k < n; ++k)
-        if (k != j) row.push_back(a[i][k]);
-      sub.push_back(std::move(row));
-    }
-    RPoly term = a[0][j] * poly_det(sub);
-    if (j % 2) d -= term; else d += term;
-  }
-  return d;
-}
-
 Motion Reader::motion(const json& j, const std::string& ptr) const {
   require_object(j, ptr, "a motion");
   const std::vector<std::string> types = {"static", "matrix", "kinematic", "euler", "cycloidal"};
@@ -683,7 +664,7 @@ Motion Reader::motion(const json& j, const std::string& ptr) const {
                        " (the last row of M(t) is " + last_row + ", and w(t) must not vanish on [0, 1])");
     std::vector<std::vector<RPoly>> block(n - 1);
     for (std::size_t r = 0; r + 1 < n; ++r) block[r].assign(mm.m[r].begin(), mm.m[r].end() - 1);
-    RPoly d = poly_det(block);
+    RPoly d = ring_det(block, RPoly());  // kernel/ring_determinant.hpp
     const std::string bs = std::to_string(dim_) + "x" + std::to_string(dim_);
     if (d.is_zero())
       fail(mp, "singular affine block for every t: the upper-left " + bs + " block of M(t) has determinant 0");

@@ -11,7 +11,9 @@
 //
 // Operations: conversion to and from power form, sum and product carried out
 // in Bernstein form (degrees are elevated to match for a sum), degree
-// elevation, derivative, evaluation and subdivision by de Casteljau.
+// elevation, derivative, evaluation and subdivision by de Casteljau. The
+// sign variations of the coefficients (kernel/sign_variations.hpp:
+// sign_variations(q.b)) bound the roots in (0, 1), with the same parity.
 // Cost (the 3D Bézier pipeline calls these in its inner loops): binomial
 // rows come from a per-thread cache (kernel/binomial.hpp); evaluation,
 // subdivision and restriction work in place on any coefficient storage
@@ -25,6 +27,7 @@
 #include "kernel/budget.hpp"
 #include "kernel/binomial.hpp"
 #include "kernel/polynomial.hpp"
+#include "kernel/sign_variations.hpp"
 
 #include <algorithm>
 #include <span>
@@ -91,19 +94,6 @@ struct Bern {
 
   // p(t) at one value by de Casteljau (stable, no power form involved).
   T operator()(const T& t) const { return bernstein_value(std::span<const T>(b), t); }
-  // Number of sign changes of the coefficient sequence (zeros skipped): an
-  // upper bound on the number of roots in (0, 1), equal to it modulo 2.
-  int sign_variations() const {
-    int v = 0;
-    Sign last = Sign::zero;
-    for (const auto& x : b) {
-      Sign s = eccd::sign(x);
-      if (s == Sign::zero || s == Sign::uncertain) continue;
-      if (last != Sign::zero && s != last) ++v;
-      last = s;
-    }
-    return v;
-  }
 };
 
 template <class T>

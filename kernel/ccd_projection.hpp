@@ -24,7 +24,7 @@
 // cells (which then must agree). Signs at t* come from the Policy: exact signs
 // at an algebraic number for the exact pipeline (exact/cd_disc_exact.hpp),
 // signs of rounded values near t* for the floating ones.
-// Requirements on T: those of the Policy (see kernel/cd_disc.hpp).
+// Requirements on T: those of the Policy (kernel/pipeline_policy.hpp).
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/characteristic_polynomial.hpp"
@@ -43,19 +43,17 @@
 
 namespace eccd {
 
-template <class T, class Policy>
-PipelineResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool first_contact_only = false) {
+template <class T, PipelinePolicy<T> Policy>
+PipelineResult<T> ccd_projection(const MovingPair3<T>& pair, Policy& pol, bool first_contact_only = false) {
   auto start = std::chrono::steady_clock::now();
   using Rep = typename Policy::Rep;
   using Root = typename Policy::Root;
   PipelineResult<T> res;
   res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
   res.g = characteristic_of(pair);
-  policy_hooks::normalise_g(pol, res.g);  // floating: scaled by a power of two (kernel/cd_disc.hpp)
+  const std::pair<T, T> ends = start_run(res, pol, pair.qa[0][0]);  // floating: g scaled by a power of two
+  const T &zero = ends.first, &one = ends.second;
   const auto& g = res.g;
-  const T& like = pair.qa[0][0];
-  const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
-  const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
   auto finish = [&]() { return finish_run(res, pol, start); };
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
   auto status_at = [&](const T& t) { return quartic_status_at(g, t); };
@@ -67,10 +65,10 @@ PipelineResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool
     auto key = std::make_pair(j, i);
     auto it = sub.find(key);
     if (it == sub.end())
-      it = sub.emplace(key, pol.build_n(g, [j, i](const auto& G) { return subresultant_evidence(G, j, i); })).first;
+      it = sub.emplace(key, pol.build(g, [j, i](const auto& G) { return subresultant_evidence(G, j, i); })).first;
     return it->second;
   };
-  Rep proj = pol.build_n(g, [](const auto& G) { return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]); });
+  Rep proj = pol.build(g, [](const auto& G) { return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]); });
   int k = 0;
   while (pol.identically_zero(proj) && k < 3) { ++k; proj = s(k, k); }
   if (pol.identically_zero(proj)) throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
@@ -134,13 +132,13 @@ PipelineResult<T> ccd_projection(const MovingPair<T, 4>& pair, Policy& pol, bool
 
 namespace eccd {
 
-// The projection pipeline of a dimension: CD-DISC in 2D (N = 3; its projection
-// is Δ) and the projection CCD above in 3D (N = 4). Exact, interval and
+// The projection pipeline of a dimension: CD-DISC in 2D (H = dim + 1 = 3; its
+// projection is Δ) and the projection CCD above in 3D (H = 4). Exact, interval and
 // floating policies all enter here, so the dispatch is written once.
-template <class T, int N, class Policy>
-PipelineResult<T> projection_pipeline(const MovingPair<T, N>& pair, Policy& pol, Variant variant = Variant::answer,
+template <class T, int H, PipelinePolicy<T> Policy>
+PipelineResult<T> projection_pipeline(const MovingPair<T, H>& pair, Policy& pol, Variant variant = Variant::answer,
                                     bool first_contact_only = false) {
-  if constexpr (N == 3) return cd_disc(pair, pol, variant);
+  if constexpr (H == H_2D) return cd_disc(pair, pol, variant);
   else return ccd_projection(pair, pol, first_contact_only);
 }
 

@@ -17,25 +17,17 @@
 // Δ ≡ 0: f has a multiple root for every t, so the disks are never separate
 // (Corollary 7): the collision set is [0, 1]; they touch where P·D < 0.
 //
-// The Policy supplies what differs by arithmetic (design.md: "only the places
-// where the mathematics really differs branch"):
-//   Rep                  how Δ, P, D are held (Poly<T> exact, Bern<T> floating)
-//   Root                 a root of Δ in [0, 1]
-//   build(g, formula)    Δ, P or D from g (formula applied in the ring of Rep)
-//   identically_zero(r)
-//   roots(delta, first_only)          sorted roots of Δ in [0, 1]
-//   sign_at(q, root)                  sign of q at a root (exact: proved)
-//   sign_at_value(q, t)               sign of q at an instant t of type T
-//   multiplicity(root)                as a root of Δ (floating: 1 simple, 2 cluster)
-//   sample_between(root*, root*)      an instant strictly between (nullptr = 0 / 1)
-//   instant(root), instant_at(T)      Answer instants
-//   value(root)                       a T near the root (contact points, display)
-//   at_zero(root), at_one(root)
+// What differs by arithmetic comes from a policy (kernel/pipeline_policy.hpp:
+// the concept PipelinePolicy, and the optional hooks of rounded policies);
+// every run returns a PipelineResult (kernel/pipeline_result.hpp).
 // Requirements on T: scalar_traits<T>, ring operations.
 #include "kernel/answer.hpp"
+#include "kernel/basis_build.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/collision_timeline.hpp"
 #include "kernel/contact_status.hpp"
+#include "kernel/pipeline_policy.hpp"
+#include "kernel/pipeline_result.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
 
@@ -46,83 +38,14 @@
 
 namespace eccd {
 
-enum class Variant { answer = 0, collides = 1, first_contact = 2, all_contacts = 3 };
-
-template <class T>
-struct PipelineResult {
-  Answer answer;
-  Variant variant = Variant::answer;
-  std::vector<Poly<T>> g;           // g_0 .. g_N (g_3 in 2D, g_4 in 3D), power form
-  int projection_degree = -1;            // degree of Δ as built in this arithmetic and basis
-  bool projection_identically_zero = false;
-  int projection_index = 0;         // 3D: 0 = discriminant, k = psc_k (kernel/ccd_projection.hpp)
-  Status status_at_0 = Status::uncertain;
-  struct Critical { Instant t; Status status; int multiplicity = 0; };
-  std::vector<Critical> critical;   // roots of Δ in [0, 1] with their status
-  struct Cell { Instant sample; Status status; };
-  std::vector<Cell> cells;
-  std::vector<TimelineNode> timeline;  // instant, cell, ..., instant (kernel/collision_timeline.hpp)
-  std::vector<std::pair<std::string, long>> counters;  // work done (method-specific)
-  std::vector<std::string> undecided_reasons;  // floating: why the undecided instants are undecided
-  double seconds = 0;
-};
-
-// Hooks of floating policies (issue 14): scaling of g by a power of two,
-// non-finite values ("trouble": nothing can be decided) and notes on parts
-// left undecided (work bound, deadline). Exact and interval policies have
-// none of them, and these do nothing for them.
-namespace policy_hooks {
-template <class Policy, class G>
-void normalise_g(const Policy& pol, G& g) {
-  if constexpr (requires { pol.normalise_g(g); }) pol.normalise_g(g);
-}
-template <class Policy>
-std::string trouble(const Policy& pol) {
-  if constexpr (requires { pol.trouble; }) return pol.trouble;
-  else return {};
-}
-template <class Policy>
-std::vector<std::string> notes(const Policy& pol) {
-  if constexpr (requires { pol.notes; }) return pol.notes;
-  else return {};
-}
-template <class Root>
-bool unresolved(const Root& r) {
-  if constexpr (requires { r.unresolved; }) return r.unresolved;
-  else return false;
-}
-}  // namespace policy_hooks
-
-// Nothing can be decided (a non-finite value): the whole of [0, 1] is
-// undecided, with the reason; never a confident answer.
-template <class T>
-void undecided_everywhere(PipelineResult<T>& res, const Instant& i0, const Instant& i1, const std::string& reason) {
-  res.answer = Answer{};
-  res.answer.collides = false;
-  res.answer.undecided = {i0, i1};
-  res.status_at_0 = Status::uncertain;
-  res.timeline = {{i0, Status::uncertain, false}, {i0, Status::uncertain, true}, {i1, Status::uncertain, false}};
-  res.cells = {{i0, Status::uncertain}};
-  res.undecided_reasons.push_back(reason);
-}
-
 // The reasons a floating policy gave, once each, if anything is undecided.
-template <class T, class Policy>
+template <class T, PipelinePolicy<T> Policy>
 void collect_reasons(PipelineResult<T>& res, const Policy& pol) {
   if (res.answer.undecided.empty()) return;
   for (const auto& n : policy_hooks::notes(pol))
     if (std::find(res.undecided_reasons.begin(), res.undecided_reasons.end(), n) == res.undecided_reasons.end())
       res.undecided_reasons.push_back(n);
   if (res.undecided_reasons.empty()) res.undecided_reasons.push_back("a sign too close to zero to decide in this arithmetic");
-}
-
-// The start of a 3D result from g_0..g_4 in Bernstein form: variant, and g in power form for reporting.
-template <class T>
-PipelineResult<T> result_from_bernstein(const std::vector<Bern<T>>& g, bool first_contact_only) {
-  PipelineResult<T> res;
-  res.variant = first_contact_only ? Variant::first_contact : Variant::answer;
-  for (const auto& gi : g) res.g.push_back(to_power(gi));
-  return res;
 }
 
 // The contact point of Lemma 5: the null vector of λ0 A(t) - B(t), λ0 = P / (2D).
@@ -155,19 +78,23 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
   return cp;
 }
 
-// Δ(t) from g_0..g_3 in the Policy's representation: what cd_disc root-finds
-// (the harness in compare/ measures its coefficient error through this call).
 // The common frame of a pipeline run, shared by CD-DISC (2D, below) and the
-// projection (3D, kernel/ccd_projection.hpp): the run ends by collecting the
+// projection (3D, kernel/ccd_projection.hpp): the run starts from g scaled by
+// the policy's hook (start_run) and ends by collecting the
 // policy's reasons and its time; a policy that already reported trouble
 // (floating: a non-finite value) leaves [0, 1] undecided.
-template <class T, class Policy>
+template <class T, PipelinePolicy<T> Policy>
+std::pair<T, T> start_run(PipelineResult<T>& res, const Policy& pol, const T& like) {  // g normalised (hook); {0, 1} in T
+  policy_hooks::normalise_g(pol, res.g);
+  return {scalar_traits<T>::from_rational(mpq_class(0), like), scalar_traits<T>::from_rational(mpq_class(1), like)};
+}
+template <class T, PipelinePolicy<T> Policy>
 PipelineResult<T> finish_run(PipelineResult<T>& res, const Policy& pol, std::chrono::steady_clock::time_point start) {
   collect_reasons(res, pol);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }
-template <class T, class Policy>
+template <class T, PipelinePolicy<T> Policy>
 bool undecided_on_trouble(PipelineResult<T>& res, Policy& pol, const T& zero, const T& one) {
   std::string why = policy_hooks::trouble(pol);
   if (why.empty()) return false;
@@ -175,26 +102,26 @@ bool undecided_on_trouble(PipelineResult<T>& res, Policy& pol, const T& zero, co
   return true;
 }
 
-template <class T, class Policy>
+// Δ(t) from g_0..g_3 in the Policy's representation: what cd_disc root-finds
+// (the harness in compare/ measures its coefficient error through this call).
+template <class T, PipelinePolicy<T> Policy>
 auto discriminant_of(const std::vector<Poly<T>>& g, const Policy& pol) {
-  return pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+  return build_cubic(pol, g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
     return cubic_discriminant(g3, g2, g1, g0);
   });
 }
 
-template <class T, class Policy>
-PipelineResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant variant = Variant::answer) {
+template <class T, PipelinePolicy<T> Policy>
+PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant variant = Variant::answer) {
   auto start = std::chrono::steady_clock::now();
   PipelineResult<T> res;
   res.variant = variant;
-  const PolyMatrix<T, 3> A = moving_quadric<T, 3>(pair.qa, pair.na);
-  const PolyMatrix<T, 3> B = moving_quadric<T, 3>(pair.qb, pair.nb);
-  res.g = characteristic_coefficients<T, 3>(A, B);
-  policy_hooks::normalise_g(pol, res.g);
+  const PolyMatrix<T, 3> A = moving_quadric<T, H_2D>(pair.qa, pair.na);
+  const PolyMatrix<T, 3> B = moving_quadric<T, H_2D>(pair.qb, pair.nb);
+  res.g = characteristic_coefficients<T, H_2D>(A, B);
+  const std::pair<T, T> ends = start_run(res, pol, pair.qa[0][0]);
+  const T &zero = ends.first, &one = ends.second;
   const auto& g = res.g;
-  const T& like = pair.qa[0][0];
-  const T zero = scalar_traits<T>::from_rational(mpq_class(0), like);
-  const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
   auto finish = [&]() { return finish_run(res, pol, start); };
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
 
@@ -202,10 +129,10 @@ PipelineResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant var
   res.status_at_0 = status_at(zero);
 
   auto delta = discriminant_of(g, pol);
-  auto P = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+  auto P = build_cubic(pol, g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
     return double_root_numerator(g3, g2, g1, g0);
   });
-  auto D = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) {
+  auto D = build_cubic(pol, g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) {
     return double_root_denominator(g3, g2, g1);
   });
   res.projection_degree = delta.degree();
@@ -222,7 +149,7 @@ PipelineResult<T> cd_disc(const MovingPair<T, 3>& pair, Policy& pol, Variant var
     ans.intervals.push_back({i0, i1});
     ans.first_contact = i0;
     // Touching where the double root P/(2D) is negative: cells between roots of P·D.
-    auto PD = pol.build(g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+    auto PD = build_cubic(pol, g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
       return double_root_numerator(g3, g2, g1, g0) * double_root_denominator(g3, g2, g1);
     });
     if (!pol.identically_zero(PD)) {

@@ -24,40 +24,40 @@
 
 namespace eccd {
 
-// g_0 .. g_N with entries in any ring R (Poly<T> or Bern<T>).
-template <class R, int N>
-std::vector<R> characteristic_coefficients_in(const std::array<std::array<R, N>, N>& a,
-                                              const std::array<std::array<R, N>, N>& b, const R& zero) {
-  std::vector<R> g(N + 1, zero);
-  for (unsigned mask = 0; mask < (1u << N); ++mask) {
-    std::vector<std::vector<R>> c(N, std::vector<R>(N, zero));
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j) c[i][j] = (mask >> j & 1u) ? a[i][j] : b[i][j];
+// g_0 .. g_H (f's coefficients in λ, H = dim + 1) with entries in any ring R (Poly<T> or Bern<T>).
+template <class R, int H>
+std::vector<R> characteristic_coefficients_in(const std::array<std::array<R, H>, H>& a,
+                                              const std::array<std::array<R, H>, H>& b, const R& zero) {
+  std::vector<R> g(H + 1, zero);
+  for (unsigned mask = 0; mask < (1u << H); ++mask) {
+    std::vector<std::vector<R>> c(H, std::vector<R>(H, zero));
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) c[i][j] = (mask >> j & 1u) ? a[i][j] : b[i][j];
     int k = std::popcount(mask);
     R d = ring_det(c, zero);
-    if ((N - k) % 2) g[k] = g[k] - d; else g[k] = g[k] + d;
+    if ((H - k) % 2) g[k] = g[k] - d; else g[k] = g[k] + d;
   }
   return g;
 }
 
-template <class T, int N>
-std::vector<Poly<T>> characteristic_coefficients(const PolyMatrix<T, N>& a, const PolyMatrix<T, N>& b) {
-  return characteristic_coefficients_in<Poly<T>, N>(a, b, Poly<T>());
+template <class T, int H>
+std::vector<Poly<T>> characteristic_coefficients(const PolyMatrix<T, H>& a, const PolyMatrix<T, H>& b) {
+  return characteristic_coefficients_in<Poly<T>, H>(a, b, Poly<T>());
 }
 
 // f's coefficients for a moving pair: in power form from MovingPair, in
 // Bernstein form (every product carried out in Bernstein form) from MovingPairBern.
-template <class T, int N>
-std::vector<Poly<T>> characteristic_of(const MovingPair<T, N>& p) {
-  return characteristic_coefficients<T, N>(moving_quadric<T, N>(p.qa, p.na), moving_quadric<T, N>(p.qb, p.nb));
+template <class T, int H>
+std::vector<Poly<T>> characteristic_of(const MovingPair<T, H>& p) {
+  return characteristic_coefficients<T, H>(moving_quadric<T, H>(p.qa, p.na), moving_quadric<T, H>(p.qb, p.nb));
 }
-template <class T, int N>
-std::vector<Bern<T>> characteristic_of(const MovingPairBern<T, N>& p) {
+template <class T, int H>
+std::vector<Bern<T>> characteristic_of(const MovingPairBern<T, H>& p) {
   Bern<T> zero;
   zero.b.push_back(scalar_traits<T>::from_rational(mpq_class(0), p.qa[0][0]));  // an exact 0 (not x - x, which carries x's error bound)
-  auto a = moving_quadric_in<Bern<T>, T, N>(p.qa, p.na, zero);
-  auto b = moving_quadric_in<Bern<T>, T, N>(p.qb, p.nb, zero);
-  return characteristic_coefficients_in<Bern<T>, N>(a, b, zero);
+  auto a = moving_quadric_in<Bern<T>, T, H>(p.qa, p.na, zero);
+  auto b = moving_quadric_in<Bern<T>, T, H>(p.qb, p.nb, zero);
+  return characteristic_coefficients_in<Bern<T>, H>(a, b, zero);
 }
 
 // g_0 .. g_N in Bernstein form as a floating pipeline sets them up: every
@@ -65,11 +65,11 @@ std::vector<Bern<T>> characteristic_of(const MovingPairBern<T, N>& p) {
 // or every product in Bernstein form from N(t) in Bernstein form. The 3D
 // floating pipelines and the harness (compare/) both call this, so the
 // harness measures the coefficients the pipelines use.
-template <class T, int N>
-std::vector<Bern<T>> characteristic_bernstein(const PreparedPair<N>& p, bool power_products, const T& like) {
-  if (!power_products) return characteristic_of(to_arithmetic_bernstein<T, N>(p, like));
+template <class T, int H>
+std::vector<Bern<T>> characteristic_bernstein(const PreparedPair<H>& p, bool power_products, const T& like) {
+  if (!power_products) return characteristic_of(to_arithmetic_bernstein<T, H>(p, like));
   std::vector<Bern<T>> out;
-  for (const auto& gi : characteristic_of(to_arithmetic<T, N>(p, like))) {
+  for (const auto& gi : characteristic_of(to_arithmetic<T, H>(p, like))) {
     Bern<T> b = to_bernstein(gi, std::max(gi.degree(), 0));
     if (gi.is_zero()) b.b.assign(1, like - like);
     out.push_back(b);

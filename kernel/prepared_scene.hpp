@@ -1,7 +1,9 @@
 #pragma once
-// PreparedPair<N>: a scene's two objects as exact integer matrices Q and
-// polynomial inverse motions N(t), and MovingPair<T, N>: the same rounded to
-// the arithmetic T of one pipeline run.
+// PreparedPair<H>: a scene's two objects as exact integer matrices Q and
+// polynomial inverse motions N(t), and MovingPair<T, H>: the same rounded to
+// the arithmetic T of one pipeline run. H = dim + 1 is the size of the
+// homogeneous matrices: PreparedPair2 / MovingPair2<T> for two ellipses
+// (H = 3), PreparedPair3 / MovingPair3<T> for two ellipsoids (H = 4).
 //
 // Statement. The scene is exact (scene-format.md, "Numbers are exact"), so
 // the motion inverses N(t) (kernel/motion.hpp) are formed exactly, once, when
@@ -26,6 +28,8 @@
 // the error of rounding the input from the error of the computation.
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/ring_determinant.hpp"
 #include "kernel/scene.hpp"
 
 #include <cmath>
@@ -37,24 +41,31 @@ namespace eccd {
 // Where a floating pipeline starts (see the header prose). Exact arithmetic always starts prepared.
 enum class InputMode { rounded, prepared };
 inline const char* to_string(InputMode m) { return m == InputMode::rounded ? "rounded" : "prepared"; }
-// Throws std::invalid_argument unless s is "rounded" or "prepared".
+// Throws std::invalid_argument unless s is "rounded" or "prepared" (the
+// message names the value; the caller names where it came from).
 inline InputMode parse_input_mode(const std::string& s) {
   if (s == "rounded") return InputMode::rounded;
   if (s == "prepared") return InputMode::prepared;
-  throw std::invalid_argument("--input " + s + ": expected rounded or prepared");
+  throw std::invalid_argument(s + ": expected rounded or prepared");
 }
 
-template <int N>
+// H = dim + 1 (H_2D, H_3D: kernel/scene.hpp); the aliases below name the dimension.
+template <int H>
 struct PreparedPair {
-  Matrix<Rational, N> qa{}, qb{};
-  PolyMatrix<Rational, N> na{}, nb{};
+  Matrix<Rational, H> qa{}, qb{};
+  PolyMatrix<Rational, H> na{}, nb{};
 };
 
-template <class T, int N>
+template <class T, int H>
 struct MovingPair {
-  Matrix<T, N> qa{}, qb{};
-  PolyMatrix<T, N> na{}, nb{};
+  Matrix<T, H> qa{}, qb{};
+  PolyMatrix<T, H> na{}, nb{};
 };
+
+using PreparedPair2 = PreparedPair<H_2D>;  // two ellipses
+using PreparedPair3 = PreparedPair<H_3D>;  // two ellipsoids
+template <class T> using MovingPair2 = MovingPair<T, H_2D>;
+template <class T> using MovingPair3 = MovingPair<T, H_3D>;
 
 // Scales a list of rationals (in place, by one positive factor) to coprime integers.
 inline void make_primitive(std::vector<Rational*> xs) {
@@ -65,8 +76,8 @@ inline void make_primitive(std::vector<Rational*> xs) {
   for (auto* x : xs) { Rational y = *x * Rational(l) / Rational(g); *x = y; }
 }
 
-template <int N>
-void remove_polynomial_content(PolyMatrix<Rational, N>& n) {
+template <int H>
+void remove_polynomial_content(PolyMatrix<Rational, H>& n) {
   RPoly g;
   for (auto& row : n)
     for (auto& e : row)
@@ -79,12 +90,12 @@ void remove_polynomial_content(PolyMatrix<Rational, N>& n) {
   make_primitive(all);
 }
 
-template <int N>
-Matrix<Rational, N> shape_matrix(const SceneObject& o) {
-  Matrix<Rational, N> q{};
+template <int H>
+Matrix<Rational, H> shape_matrix(const SceneObject& o) {
+  Matrix<Rational, H> q{};
   std::vector<Rational*> all;
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) { q[i][j] = o.Q.at(i).at(j); }
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) { q[i][j] = o.Q.at(i).at(j); }
   for (auto& row : q) for (auto& x : row) all.push_back(&x);
   make_primitive(all);
   return q;
@@ -100,50 +111,22 @@ Matrix<Rational, N> shape_matrix(const SceneObject& o) {
 // product of the roots of f is near 1 in size. A positive factor on B scales
 // every root λ by the same positive factor: no status, no root of Δ and no
 // answer changes, and a power of two is exact in every arithmetic.
-template <int N>
-Rational matrix_det(Matrix<Rational, N> m) {  // Gaussian elimination over the rationals
-  Rational d = 1;
-  for (int c = 0; c < N; ++c) {
-    int r = c;
-    while (r < N && m[r][c] == 0) ++r;
-    if (r == N) return 0;
-    if (r != c) { std::swap(m[r], m[c]); d = -d; }
-    d *= m[c][c];
-    for (int i = c + 1; i < N; ++i) {
-      Rational f = m[i][c] / m[c][c];
-      for (int j = c; j < N; ++j) m[i][j] -= f * m[c][j];
-    }
-  }
-  return d;
-}
-template <int N>
-Matrix<Rational, N> quadric_at(const Matrix<Rational, N>& q, const PolyMatrix<Rational, N>& n, const Rational& t) {
-  Matrix<Rational, N> nt{}, r{};
-  for (int i = 0; i < N; ++i) for (int j = 0; j < N; ++j) nt[i][j] = n[i][j](t);
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) {
-      Rational s = 0;
-      for (int k = 0; k < N; ++k)
-        for (int l = 0; l < N; ++l) s += nt[k][i] * q[k][l] * nt[l][j];
-      r[i][j] = s;
-    }
-  return r;
-}
 inline long log2_size(const Rational& x) {  // floor-ish log2 |x|, within 1
   return long(mpz_sizeinbase(x.get_num_mpz_t(), 2)) - long(mpz_sizeinbase(x.get_den_mpz_t(), 2));
 }
-template <int N>
-void balance_pencil(PreparedPair<N>& p) {
+template <int H>
+void balance_pencil(PreparedPair<H>& p) {
   long sum = 0;
   int used = 0;
   for (const Rational& t : {Rational(0), Rational(1, 2), Rational(1)}) {
-    Rational da = matrix_det<N>(quadric_at<N>(p.qa, p.na, t)), db = matrix_det<N>(quadric_at<N>(p.qb, p.nb, t));
+    Rational da = field_det<Rational, H>(quadric_at<Rational, H>(p.qa, p.na, t));
+    Rational db = field_det<Rational, H>(quadric_at<Rational, H>(p.qb, p.nb, t));
     if (da == 0 || db == 0) continue;
     sum += log2_size(db) - log2_size(da);
     ++used;
   }
   if (!used) return;
-  long k = std::lround(double(sum) / (used * N));
+  long k = std::lround(double(sum) / (used * H));
   if (k == 0) return;
   mpz_class two = 1;
   two <<= std::abs(k);
@@ -151,34 +134,39 @@ void balance_pencil(PreparedPair<N>& p) {
   for (auto& row : p.qb) for (auto& x : row) x *= f;
 }
 
-// Throws std::invalid_argument for a motion that has no polynomial form (cycloidal).
-template <int N>
-PreparedPair<N> prepare_pair(const Scene& s) {
-  if (s.dim + 1 != N) throw std::invalid_argument("scene dimension does not match the pipeline");
+// A scene the exact preparation cannot represent: a motion with no polynomial
+// form (cycloidal). The message says what is wrong; what to do instead (which
+// arithmetic, which option) is the caller's to say (app/commands.hpp).
+struct NotRationalMotion : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// Throws NotRationalMotion for a motion that has no polynomial form (cycloidal).
+template <int H>
+PreparedPair<H> prepare_pair(const Scene& s) {
+  if (s.dim + 1 != H) throw std::invalid_argument("scene dimension does not match the pipeline");
   for (const SceneObject* o : {&s.a, &s.b})
     if (std::holds_alternative<CycloidalMotion>(o->motion))
-      throw std::invalid_argument(
-          std::string("object ") + (o == &s.a ? "a" : "b") +
-          " has a cycloidal motion, which is not rational: exact arithmetic cannot represent it "
-          "(use --arith double or mpfr:BITS)");
+      throw NotRationalMotion(std::string("object ") + (o == &s.a ? "a" : "b") +
+                              " has a cycloidal motion, which is not rational: exact arithmetic cannot represent it");
   auto id = [](const Rational& q) { return q; };
-  PreparedPair<N> p;
-  p.qa = shape_matrix<N>(s.a);
-  p.qb = shape_matrix<N>(s.b);
-  p.na = motion_inverse<Rational, N>(s.a.motion, id);
-  p.nb = motion_inverse<Rational, N>(s.b.motion, id);
-  remove_polynomial_content<N>(p.na);
-  remove_polynomial_content<N>(p.nb);
-  balance_pencil<N>(p);
+  PreparedPair<H> p;
+  p.qa = shape_matrix<H>(s.a);
+  p.qb = shape_matrix<H>(s.b);
+  p.na = motion_inverse<Rational, H>(s.a.motion, id);
+  p.nb = motion_inverse<Rational, H>(s.b.motion, id);
+  remove_polynomial_content<H>(p.na);
+  remove_polynomial_content<H>(p.nb);
+  balance_pencil<H>(p);
   return p;
 }
 
-template <class T, int N>
-MovingPair<T, N> to_arithmetic(const PreparedPair<N>& p, const T& like) {
+template <class T, int H>
+MovingPair<T, H> to_arithmetic(const PreparedPair<H>& p, const T& like) {
   auto conv = [&](const Rational& q) { return scalar_traits<T>::from_rational(q, like); };
-  MovingPair<T, N> m;
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) {
+  MovingPair<T, H> m;
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) {
       m.qa[i][j] = conv(p.qa[i][j]);
       m.qb[i][j] = conv(p.qb[i][j]);
       m.na[i][j] = map_coeffs<T>(p.na[i][j], conv);
@@ -190,14 +178,16 @@ MovingPair<T, N> to_arithmetic(const PreparedPair<N>& p, const T& like) {
 // The same pair with N(t) in Bernstein form on [0, 1]: converted exactly,
 // then rounded coefficient by coefficient (a floating pipeline that computes
 // A(t) and f in Bernstein form starts from here).
-template <class T, int N>
+template <class T, int H>
 struct MovingPairBern {
-  Matrix<T, N> qa{}, qb{};
-  std::array<std::array<Bern<T>, N>, N> na{}, nb{};
+  Matrix<T, H> qa{}, qb{};
+  std::array<std::array<Bern<T>, H>, H> na{}, nb{};
 };
+template <class T> using MovingPairBern2 = MovingPairBern<T, H_2D>;
+template <class T> using MovingPairBern3 = MovingPairBern<T, H_3D>;
 
-template <class T, int N>
-MovingPairBern<T, N> to_arithmetic_bernstein(const PreparedPair<N>& p, const T& like) {
+template <class T, int H>
+MovingPairBern<T, H> to_arithmetic_bernstein(const PreparedPair<H>& p, const T& like) {
   auto conv = [&](const Rational& q) { return scalar_traits<T>::from_rational(q, like); };
   auto bern = [&](const Poly<Rational>& e) {
     Bern<T> r;
@@ -205,9 +195,9 @@ MovingPairBern<T, N> to_arithmetic_bernstein(const PreparedPair<N>& p, const T& 
     for (const auto& c : to_bernstein(e).b) r.b.push_back(conv(c));
     return r;
   };
-  MovingPairBern<T, N> m;
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) {
+  MovingPairBern<T, H> m;
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) {
       m.qa[i][j] = conv(p.qa[i][j]);
       m.qb[i][j] = conv(p.qb[i][j]);
       m.na[i][j] = bern(p.na[i][j]);

@@ -33,6 +33,22 @@ std::array<std::array<R, N>, N> moving_quadric_in(const Matrix<S, N>& q, const s
   return a;
 }
 
+// A(t) at one instant t: N(t)^T Q N(t) evaluated (balancing a pencil,
+// kernel/prepared_scene.hpp and floating/rounded_input.hpp).
+template <class T, int H>
+Matrix<T, H> quadric_at(const Matrix<T, H>& q, const PolyMatrix<T, H>& n, const T& t) {
+  Matrix<T, H> nt{}, r{};
+  for (int i = 0; i < H; ++i) for (int j = 0; j < H; ++j) nt[i][j] = n[i][j].is_zero() ? scalar_traits<T>::from_rational(mpq_class(0), t) : n[i][j](t);
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) {
+      T s = scalar_traits<T>::from_rational(mpq_class(0), t);
+      for (int k = 0; k < H; ++k)
+        for (int l = 0; l < H; ++l) s = s + nt[k][i] * q[k][l] * nt[l][j];
+      r[i][j] = s;
+    }
+  return r;
+}
+
 template <class T, int N>
 PolyMatrix<T, N> moving_quadric(const Matrix<T, N>& q, const PolyMatrix<T, N>& n) {
   return moving_quadric_in<Poly<T>, T, N>(q, n, Poly<T>());

@@ -15,6 +15,8 @@
 // Known failure modes: none in exact arithmetic; the determinant is computed
 // by fraction-exact Gaussian elimination (n + 1 <= 4, no growth concern).
 #include "number/rational_traits.hpp"
+#include "kernel/ring_determinant.hpp"
+#include "kernel/sign_variations.hpp"
 
 #include <string>
 #include <utility>
@@ -22,25 +24,6 @@
 
 namespace eccd {
 namespace quadric_detail {
-
-// Determinant of a small square rational matrix (exact Gaussian elimination).
-inline mpq_class rational_det(std::vector<std::vector<mpq_class>> a) {
-  const int n = int(a.size());
-  mpq_class d = 1;
-  for (int k = 0; k < n; ++k) {
-    int p = k;
-    while (p < n && sgn(a[p][k]) == 0) ++p;
-    if (p == n) return mpq_class(0);
-    if (p != k) { std::swap(a[p], a[k]); d = -d; }
-    d *= a[k][k];
-    for (int i = k + 1; i < n; ++i) {
-      if (sgn(a[i][k]) == 0) continue;
-      mpq_class f = a[i][k] / a[k][k];
-      for (int j = k; j < n; ++j) { mpq_class t = f * a[k][j]; a[i][j] -= t; }
-    }
-  }
-  return d;
-}
 
 // Numbers of positive, negative and zero eigenvalues of a symmetric rational
 // matrix of size 1..3 (Descartes' rule on the real-rooted characteristic
@@ -58,23 +41,18 @@ inline Inertia symmetric_inertia(const std::vector<std::vector<mpq_class>>& a) {
     std::vector<std::vector<mpq_class>> sub(idx.size(), std::vector<mpq_class>(idx.size()));
     for (std::size_t i = 0; i < idx.size(); ++i)
       for (std::size_t j = 0; j < idx.size(); ++j) sub[i][j] = a[idx[i]][idx[j]];
-    mpq_class m = rational_det(sub);
+    mpq_class m = ring_det(sub, mpq_class(0));  // kernel/ring_determinant.hpp
     e[idx.size()] += m;
   }
   std::vector<mpq_class> c(n + 1);  // c[k]: coefficient of lambda^k
   for (int k = 0; k <= n; ++k) c[k] = ((n - k) % 2) ? mpq_class(-e[n - k]) : e[n - k];
   Inertia r;
   while (r.zero <= n && sgn(c[r.zero]) == 0) ++r.zero;
-  auto variations = [&](bool negate_odd) {
-    int v = 0, last = 0;
-    for (int k = r.zero; k <= n; ++k) {
-      int s = sgn(c[k]);
-      if (negate_odd && (k % 2)) s = -s;
-      if (s == 0) continue;
-      if (last != 0 && s != last) ++v;
-      last = s;
-    }
-    return v;
+  auto variations = [&](bool negate_odd) {  // of c[r.zero..n], with c[k] negated for odd k if asked
+    return sign_variations_n(std::size_t(n + 1 - r.zero), [&](std::size_t i) {
+             const int k = r.zero + int(i);
+             return sign_of_int((negate_odd && (k % 2)) ? -sgn(c[k]) : sgn(c[k]));
+           }).count;
   };
   r.pos = variations(false);
   r.neg = variations(true);
@@ -111,7 +89,7 @@ inline QuadricClass classify_quadric(const std::vector<std::vector<mpq_class>>& 
   for (int i = 0; i < dim; ++i)
     for (int j = 0; j < dim; ++j) A[i][j] = Q[i][j];
   const quadric_detail::Inertia in = quadric_detail::symmetric_inertia(A);
-  const int D = sgn(quadric_detail::rational_det(Q));
+  const int D = sgn(ring_det(Q, mpq_class(0)));
   using K = QuadricKind;
 
   if (in.pos == dim || in.neg == dim) {

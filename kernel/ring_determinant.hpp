@@ -9,10 +9,18 @@
 // subresultants (kernel/subresultants.hpp) in whichever basis a pipeline
 // computes in, so that the basis, not the formula, is what the harness varies.
 // Requirements on R: R + R, R - R, R * R, and a zero element passed in.
+// field_det: the same determinant of a scalar matrix over a field (exact
+// rationals or rounded T) by Gaussian elimination with partial pivoting by
+// magnitude, O(k^3): the size of det A(t) for balancing a pencil
+// (kernel/prepared_scene.hpp, floating/rounded_input.hpp). Requirements on T:
+// a field and scalar_traits<T> (abs, from_rational); exact T gives the exact
+// determinant whatever the pivots.
 #include "number/scalar_traits.hpp"
 
+#include <array>
 #include <bit>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace eccd {
@@ -62,6 +70,24 @@ R ring_det(const std::vector<std::vector<R>>& a, const R& zero) {
       }
     }
   return live.back() ? dp.back() : zero;
+}
+
+template <class T, int H>
+T field_det(std::array<std::array<T, H>, H> m) {
+  T d = scalar_traits<T>::from_rational(mpq_class(1), m[0][0]);
+  for (int c = 0; c < H; ++c) {
+    int p = c;
+    for (int r = c + 1; r < H; ++r)
+      if (scalar_traits<T>::abs(m[r][c]) > scalar_traits<T>::abs(m[p][c])) p = r;
+    if (is_zero(m[p][c])) return m[p][c];
+    if (p != c) { std::swap(m[p], m[c]); d = -d; }
+    d = d * m[c][c];
+    for (int i = c + 1; i < H; ++i) {
+      T f = m[i][c] / m[c][c];
+      for (int j = c; j < H; ++j) m[i][j] = m[i][j] - f * m[c][j];
+    }
+  }
+  return d;
 }
 
 }  // namespace eccd

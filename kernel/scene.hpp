@@ -19,6 +19,11 @@
 
 namespace eccd {
 
+// The size H = dim + 1 of a scene's homogeneous matrices (Q, M(t)): the
+// template parameter H of MovingPair, PreparedPair and the motion functions.
+inline constexpr int H_2D = 3;  // ellipses in the plane
+inline constexpr int H_3D = 4;  // ellipsoids in space
+
 using RPoly = Poly<Rational>;
 
 struct StaticMotion {};

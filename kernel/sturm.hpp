@@ -23,6 +23,7 @@
 // quartics in λ, motion denominators), and in rounded arithmetic remainders
 // whose leading coefficient should be 0 but is not.
 #include "kernel/polynomial.hpp"
+#include "kernel/sign_variations.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -226,22 +227,11 @@ Sign sign_at(const V& c, const std::optional<T>& x, int dir) {
   return sg;
 }
 
-// Sign changes of the sequence at x; -1 if a sign is uncertain.
+// Sign changes of the sequence at x; -1 if a sign is uncertain (kernel/sign_variations.hpp).
 template <class S, class T>
 int variations(const S& s, const std::optional<T>& x, int dir) {
-  int v = 0;
-  Sign last = Sign::zero;
-  constexpr int cap_s = bound<S>();
-#pragma GCC unroll 8
-  for (int k = 0; k < cap_s; ++k) {
-    if (k >= int(s.size())) break;
-    Sign sg = sign_at(s[k], x, dir);
-    if (sg == Sign::uncertain) return -1;
-    if (sg == Sign::zero) continue;
-    if (last != Sign::zero && sg != last) ++v;
-    last = sg;
-  }
-  return v;
+  SignVariations v = sign_variations_n<bound<S>()>(s.size(), [&](std::size_t k) { return sign_at(s[k], x, dir); });
+  return v.uncertain ? -1 : v.count;
 }
 
 // Distinct real roots in (a, b] of the polynomial s[0] (s = {p} on entry); see count_roots.

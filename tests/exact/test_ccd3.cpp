@@ -149,7 +149,7 @@ TEST_CASE("Random 3D scenes of motion degree 2 and 4: the exact answer agrees wi
   const std::uint64_t seed = seed_from_env(20261121);
   std::mt19937_64 rng(seed);
   WARN("random 3D scenes: seed " << seed << " (set ECCD_TEST_SEED to change it)");
-  int collided = 0, checked = 0, bezier_agree = 0, total = 0;
+  int collided = 0, checked = 0, bezier_checked = 0;
   for (int k : {1, 1, 1, 1, 1, 1, 2, 2, 2}) {
     Scene s = random_euler_scene(rng, k);
     auto r = solve_exact_3d(s);
@@ -165,39 +165,31 @@ TEST_CASE("Random 3D scenes of motion degree 2 and 4: the exact answer agrees wi
       CHECK(in == (negative_root_count_3d(s, t) < 2));
       ++checked;
     }
-    // The Bézier pipeline in double: agreement is measured (issue 4 reports rates), not asserted.
+    // The Bézier pipeline in double (001 section 4) may be inexact near an
+    // event (the report measures by how much); it must never contradict the
+    // exact answer where it claims one: at every instant it has decided (no
+    // undecided part) and that lies more than 1e-6 from every interval end of
+    // either answer, it says collision iff exact does.
     auto b = solve_bezier_3d<double>(s, 53, 1.0);
-    ++total;
-    bool same = b.answer.collides == r.answer.collides && b.answer.intervals.size() == r.answer.intervals.size();
-    for (std::size_t j = 0; same && j < b.answer.intervals.size(); ++j)
-      same = std::fabs(approx(b.answer.intervals[j].first) - approx(r.answer.intervals[j].first)) <= 1e-6 &&
-             std::fabs(approx(b.answer.intervals[j].second) - approx(r.answer.intervals[j].second)) <= 1e-6;
-    bezier_agree += same;
-  }
-  CHECK(checked > 400);
-  WARN("random 3D: " << collided << " of 9 collide; " << checked << " instants checked; double Bezier within 1e-6 of exact on "
-                     << bezier_agree << " of " << total);
-}
-
-TEST_CASE("Exact Bezier certificates cover each cell of the exact answer except next to its critical instants", "[ccd3][exact][bezier]") {
-  for (const char* f : {"spheres/spheres-crossing.json", "touch3d/touch-then-overlap.json"}) {
-    INFO(f);
-    Scene s = read_scene_file(case_path(f));
-    auto r = solve_exact_3d(s);
-    auto g = characteristic_of(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(s), Rational(1)));
-    BezierZeroSet<Rational> z(g, Rational(1), 0, BezierOptions{});
-    // The cells of the exact answer: between the brackets of consecutive critical instants.
-    std::vector<Rational> ends{Rational(0)};
-    for (const auto& c : r.critical) { ends.push_back(*c.t.lo); ends.push_back(*c.t.hi); }
-    ends.push_back(Rational(1));
-    for (std::size_t k = 0; k + 1 < ends.size(); k += 2) {
-      Rational a = ends[k], b = ends[k + 1];
-      Status st = r.cells.at(k / 2).status;
-      std::vector<std::pair<Rational, Rational>> open;
-      Rational covered = z.certify_cell(a, b, st, 8, open);
-      INFO("cell [" << a.get_d() << ", " << b.get_d() << "] " << to_string(st) << ": certified " << Rational(covered / (b - a)).get_d());
-      CHECK(covered >= Rational(9, 10) * (b - a));
-      for (const auto& [lo, hi] : open) CHECK((lo == a || hi == b));  // only the pieces at the cell's ends stay open
+    if (!b.answer.undecided.empty()) continue;
+    std::vector<double> ends;
+    for (const Answer* a : {&b.answer, &r.answer})
+      for (const auto& [x, y] : a->intervals) { ends.push_back(approx(x)); ends.push_back(approx(y)); }
+    for (int i = 0; i <= 60; ++i) {
+      const double t = i / 60.0;
+      bool near = false;
+      for (double e : ends) near = near || std::fabs(t - e) <= 1e-6;
+      if (near) continue;
+      bool in_exact = false, in_double = false;
+      for (const auto& [x, y] : r.answer.intervals) in_exact = in_exact || (approx(x) <= t && t <= approx(y));
+      for (const auto& [x, y] : b.answer.intervals) in_double = in_double || (approx(x) <= t && t <= approx(y));
+      INFO("double Bezier at t = " << t << " (motion degree " << 2 * k << ")");
+      CHECK(in_double == in_exact);
+      ++bezier_checked;
     }
   }
+  CHECK(checked > 400);
+  CHECK(bezier_checked > 0);
+  WARN("random 3D: " << collided << " of 9 collide; " << checked << " instants checked exactly, " << bezier_checked
+                     << " against double Bezier");
 }

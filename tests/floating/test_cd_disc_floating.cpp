@@ -1,14 +1,13 @@
 // The floating CD-DISC pipelines (double, MPFR) against the exact one.
-// What double says on the near-touching scenes is printed, not asserted: that
+// What double says on the near-touching scenes is not asserted: that
 // difference is what the workbench measures (003 saw collisions reported for
-// d < 1e-6). What is asserted: agreement on a well-conditioned scene, and at a
-// high MPFR precision.
+// d < 1e-6; the report shows it). What is asserted: agreement on a
+// well-conditioned scene, at MPFR precisions, and 003's claim that Δ's
+// coefficients are more accurate built in Bernstein form than in power form.
 #include "tests/support/scenes.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <cstdio>
-#include <iostream>
 
 using namespace eccd;
 using namespace eccd::test;
@@ -86,25 +85,64 @@ TEST_CASE("MPFR at 1024 bits agrees with exact on 003 Example 2 and all its shif
   }
 }
 
-TEST_CASE("what double and MPFR say on 003 Example 2 and its shifts (printed, not asserted)", "[floating][report][paper003]") {
+namespace {
+std::vector<std::string> example2_family() {
   std::vector<std::string> names{"example2"};
   for (const char* e : {"3", "6", "9", "12", "15"}) {
     names.push_back(std::string("example2-away-1e-") + e);
     names.push_back(std::string("example2-towards-1e-") + e);
   }
-  std::cout << "\n003 Example 2 family: exact vs floating (Δ of degree 96)\n";
-  std::printf("%-24s %-28s %-28s %-28s %-28s %-28s\n", "scene", "exact", "double/power", "double/bernstein", "mpfr:64", "mpfr:128");
-  int rows = 0;
-  for (const auto& n : names) {
+  return names;
+}
+// max_i |b_i - e_i| / max_i |e_i| over the Bernstein coefficients (the exact ones e).
+double relative_coefficient_error(const Bern<double>& b, const Bern<Q>& e) {
+  REQUIRE(b.b.size() == e.b.size());
+  Q scale = 0, worst = 0;
+  for (std::size_t i = 0; i < e.b.size(); ++i) {
+    Q d = abs(Q(Q(b.b[i]) - e.b[i]));  // the double converted exactly
+    if (d > worst) worst = d;
+    if (abs(e.b[i]) > scale) scale = abs(e.b[i]);
+  }
+  return Q(worst / scale).get_d();
+}
+}  // namespace
+
+// 003 section VI-C: Δ computed in the power basis is unstable in double, the
+// Bernstein form "numerically more stable" (and 002 IV). Measured here on the
+// coefficients root isolation works on: Δ built in double from the same g_k
+// (prepared input) in each basis, against the exact Δ in Bernstein form.
+TEST_CASE("003 Example 2 family: Δ built in double has a smaller coefficient error in Bernstein form than in power form",
+          "[floating][paper003][coefficient_error]") {
+  for (const auto& n : example2_family()) {
+    INFO(n);
+    Scene s = read_scene_file(case_path("paper003/" + n + ".json"));
+    const PreparedPair2 p = prepare_pair<H_2D>(s);
+    const auto gq = characteristic_of(to_arithmetic<Q, H_2D>(p, Q(1)));
+    const auto gd = characteristic_of(to_arithmetic<double, H_2D>(p, 1.0));
+    ExactPolicy ex;
+    const Poly<Q> dq = discriminant_of(gq, ex);
+    const Bern<Q> exact = to_bernstein(dq);
+    const double power = relative_coefficient_error(discriminant_of(gd, FloatingPolicy<double>(Basis::power, 53, 1.0)), exact);
+    const double bern = relative_coefficient_error(discriminant_of(gd, FloatingPolicy<double>(Basis::bernstein, 53, 1.0)), exact);
+    INFO("relative coefficient error of Δ: power " << power << ", bernstein " << bern);
+    CHECK(bern < power);
+    CHECK(bern < 1e-6);
+  }
+}
+
+// What double and MPFR say on the near-touch family may be wrong (that is what
+// the workbench measures: 003 saw collisions reported for d < 1e-6); what must
+// hold is that MPFR at 128 bits in Bernstein form, well above what these
+// shifts need, agrees with the exact answer wherever it claims one.
+TEST_CASE("003 Example 2 family: MPFR 128 (Bernstein) never contradicts the exact collides", "[floating][mpfr][paper003]") {
+  for (const auto& n : example2_family()) {
+    INFO(n);
     Scene s = read_scene_file(case_path("paper003/" + n + ".json"));
     auto ex = solve_exact(s);
-    auto dp = solve_floating<double>(s, Basis::power, 53, 1.0);
-    auto db = solve_floating<double>(s, Basis::bernstein, 53, 1.0);
-    auto m64 = solve_floating<Mpfr>(s, Basis::bernstein, 64, Mpfr(Q(1), 64));
     auto m128 = solve_floating<Mpfr>(s, Basis::bernstein, 128, Mpfr(Q(1), 128));
-    std::printf("%-24s %-28s %-28s %-28s %-28s %-28s\n", n.c_str(), brief(ex.answer).c_str(), brief(dp.answer).c_str(),
-                brief(db.answer).c_str(), brief(m64.answer).c_str(), brief(m128.answer).c_str());
-    ++rows;
+    INFO("exact " << brief(ex.answer) << "; mpfr:128 " << brief(m128.answer));
+    // a collision found is a claim; "free" is one only when nothing is left undecided
+    if (m128.answer.collides) CHECK(ex.answer.collides);
+    else if (m128.answer.undecided.empty()) CHECK_FALSE(ex.answer.collides);
   }
-  CHECK(rows == 11);
 }

@@ -60,7 +60,7 @@ TEST_CASE("4x4 characteristic polynomial: two spheres always have the double roo
   qb[3][3] = -4;
   PolyMatrix<Q, 4> na = identity_poly_matrix<Q, 4>(), nb = identity_poly_matrix<Q, 4>();
   nb[0][3] = Poly<Q>({Q(0), Q(-3)});
-  auto g = characteristic_coefficients<Q, 4>(moving_quadric<Q, 4>(qa, na), moving_quadric<Q, 4>(qb, nb));
+  auto g = characteristic_coefficients<Q, H_3D>(moving_quadric<Q, H_3D>(qa, na), moving_quadric<Q, H_3D>(qb, nb));
   REQUIRE(g.size() == 5);
   for (Q t : {Q(0), Q(1, 3), Q(1)}) {
     Q f1 = 0, df1 = 0;

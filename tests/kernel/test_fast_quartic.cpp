@@ -50,7 +50,7 @@ std::vector<T> generic_coefficients(const std::array<std::array<T, 4>, 4>& a, co
       pa[i][j] = Poly<T>::constant(a[i][j]);
       pb[i][j] = Poly<T>::constant(b[i][j]);
     }
-  std::vector<Poly<T>> g = characteristic_coefficients<T, 4>(pa, pb);
+  std::vector<Poly<T>> g = characteristic_coefficients<T, H_3D>(pa, pb);
   std::vector<T> out;
   for (const auto& gk : g) out.push_back(gk.is_zero() ? a[0][0] - a[0][0] : gk.c[0]);
   return out;

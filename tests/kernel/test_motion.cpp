@@ -35,18 +35,18 @@ TEST_CASE("motion inverses: M N = c(t) I for every rational form", "[kernel][mot
   for (int trial = 0; trial < 5; ++trial) {
     KinematicMotion k;
     for (auto& d : k.d) d = random_poly(rng, 2);
-    check_inverse<3>(Motion(k));
+    check_inverse<H_2D>(Motion(k));
     EulerMotion e;
     for (auto& x : e.e) x = random_poly(rng, 2);
     for (auto& x : e.v) x = random_poly(rng, 3);
     e.v3 = random_poly(rng, 1);
-    check_inverse<4>(Motion(e));
+    check_inverse<H_3D>(Motion(e));
     MatrixMotion mm;
     mm.m.assign(3, std::vector<RPoly>(3));
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 3; ++j) mm.m[i][j] = random_poly(rng, 2);
     mm.m[2][2] = random_poly(rng, 1);
-    check_inverse<3>(Motion(mm));
+    check_inverse<H_2D>(Motion(mm));
   }
-  check_inverse<3>(Motion(StaticMotion{}));
+  check_inverse<H_2D>(Motion(StaticMotion{}));
 }

@@ -16,14 +16,14 @@ inline std::string case_path(const std::string& rel) { return std::string(ECCD_S
 
 inline PipelineResult<Rational> solve_exact(const Scene& s, Variant v = Variant::answer) {
   ExactPolicy pol;
-  auto m = to_arithmetic<Rational, 3>(prepare_pair<3>(s), Rational(1));
+  auto m = to_arithmetic<Rational, H_2D>(prepare_pair<H_2D>(s), Rational(1));
   return cd_disc(m, pol, v);
 }
 
 template <class T>
 PipelineResult<T> solve_floating(const Scene& s, Basis basis, int bits, const T& like, Variant v = Variant::answer) {
   FloatingPolicy<T> pol(basis, bits, like);
-  auto m = to_arithmetic<T, 3>(prepare_pair<3>(s), like);
+  auto m = to_arithmetic<T, H_2D>(prepare_pair<H_2D>(s), like);
   return cd_disc(m, pol, v);
 }
 

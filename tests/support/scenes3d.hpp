@@ -18,14 +18,14 @@ namespace eccd::test {
 
 inline PipelineResult<Rational> solve_exact_3d(const Scene& s, bool first_contact = false) {
   ExactPolicy pol;
-  auto m = to_arithmetic<Rational, 4>(prepare_pair<4>(s), Rational(1));
+  auto m = to_arithmetic<Rational, H_3D>(prepare_pair<H_3D>(s), Rational(1));
   return ccd_projection(m, pol, first_contact);
 }
 
 // The Bézier pipeline with f built in Bernstein form (the `eccd solve` default).
 template <class T>
 PipelineResult<T> solve_bezier_3d(const Scene& s, int bits, const T& like, bool first_contact = false) {
-  auto g = characteristic_of(to_arithmetic_bernstein<T, 4>(prepare_pair<4>(s), like));
+  auto g = characteristic_of(to_arithmetic_bernstein<T, H_3D>(prepare_pair<H_3D>(s), like));
   BezierOptions o;
   o.first_contact_only = first_contact;
   return ccd_bezier(g, like, bits, o);
@@ -92,7 +92,7 @@ std::array<std::array<Rational, N>, N> inverse(std::array<std::array<Rational, N
 // Exact determinant (Gaussian elimination over the rationals): the kernel's,
 // which no pipeline decision uses (it only balances the pencil).
 template <int N>
-Rational det_rational(const std::array<std::array<Rational, N>, N>& m) { return matrix_det<N>(m); }
+Rational det_rational(const std::array<std::array<Rational, N>, N>& m) { return field_det<Rational, N>(m); }
 
 // Distinct negative roots of det(λA(t) - B(t)) with A(t) = M(t)^-T Q M(t)^-1
 // from the motion matrix itself, f interpolated at λ = 0..4, exact Sturm count.
