@@ -40,13 +40,13 @@ int motion_degree(const Motion& m) {
 
 // Exact reference coefficients of one scene.
 struct Reference2 {
-  PreparedPair<3> p;
+  PreparedPair2 p;
   std::vector<Poly<Rational>> g;        // power form
   std::vector<Bern<Rational>> g_bern;   // each g_k in Bernstein form of its degree
   Bern<Rational> delta_bern;            // Δ in Bernstein form of its degree
 };
 struct Reference3 {
-  PreparedPair<4> p;
+  PreparedPair3 p;
   std::vector<Poly<Rational>> g;        // power form (the projection pipeline's setup)
   std::vector<Bern<Rational>> g_bern;
   BiBern<Rational> F;
@@ -54,7 +54,7 @@ struct Reference3 {
 
 template <class T>
 void coefficients_2d(const Reference2& ref, Basis basis, int bits, const T& like, ResultRow& row) {
-  auto m = to_arithmetic<T, 3>(ref.p, like);
+  auto m = to_arithmetic<T, H_2D>(ref.p, like);
   std::vector<Poly<T>> g = characteristic_of(m);
   FloatingPolicy<T> pol(basis, bits, like);
   if (basis == Basis::power) row.coef_err = coefficient_error(g, ref.g);
@@ -65,11 +65,11 @@ void coefficients_2d(const Reference2& ref, Basis basis, int bits, const T& like
 template <class T>
 void coefficients_3d(const Reference3& ref, const PipelineSpec& ps, const T& like, ResultRow& row) {
   if (ps.method == "projection") {
-    row.coef_err = coefficient_error(characteristic_of(to_arithmetic<T, 4>(ref.p, like)), ref.g);
+    row.coef_err = coefficient_error(characteristic_of(to_arithmetic<T, H_3D>(ref.p, like)), ref.g);
     return;
   }
   bool power = ps.basis == "power";
-  std::vector<Bern<T>> g = characteristic_bernstein<T, 4>(ref.p, power, like);
+  std::vector<Bern<T>> g = characteristic_bernstein<T, H_3D>(ref.p, power, like);
   row.coef_err = coefficient_error(g, ref.g_bern);
   row.delta_err = coefficient_error(ellipsoid_function(g, like), ref.F);
 }
@@ -91,8 +91,8 @@ std::string fmt(double x, const char* f = "%.6g") {
 }  // namespace
 
 int scene_degree(const Scene& s) {
-  if (s.dim == 2) return std::max(motion_degree<3>(s.a.motion), motion_degree<3>(s.b.motion));
-  return std::max(motion_degree<4>(s.a.motion), motion_degree<4>(s.b.motion));
+  if (s.dim == 2) return std::max(motion_degree<H_2D>(s.a.motion), motion_degree<H_2D>(s.b.motion));
+  return std::max(motion_degree<H_3D>(s.a.motion), motion_degree<H_3D>(s.b.motion));
 }
 
 SceneInfo scene_info(const Scene& s, const std::string& source) {
@@ -295,13 +295,13 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
   Reference2 r2;
   Reference3 r3;
   if (s.dim == 2) {
-    r2.p = prepare_pair<3>(s);
-    r2.g = characteristic_of(to_arithmetic<Rational, 3>(r2.p, Rational(1)));
+    r2.p = prepare_pair<H_2D>(s);
+    r2.g = characteristic_of(to_arithmetic<Rational, H_2D>(r2.p, Rational(1)));
     r2.g_bern = to_bernstein_all(r2.g, Rational(1));
     r2.delta_bern = to_bernstein(cubic_discriminant(r2.g[3], r2.g[2], r2.g[1], r2.g[0]));
   } else {
-    r3.p = prepare_pair<4>(s);
-    r3.g = characteristic_of(to_arithmetic<Rational, 4>(r3.p, Rational(1)));
+    r3.p = prepare_pair<H_3D>(s);
+    r3.g = characteristic_of(to_arithmetic<Rational, H_3D>(r3.p, Rational(1)));
     r3.g_bern = to_bernstein_all(r3.g, Rational(1));
     r3.F = ellipsoid_function(r3.g_bern, Rational(1));
   }
