@@ -287,7 +287,10 @@ std::string poly_text(const RPoly& p) {
     mpq_class a = abs(c);
     std::string term;
     if (i == 0 || a != 1) term = a.get_str();
-    if (i > 0) term += (term.empty() ? "" : " ") + std::string("t") + (i > 1 ? "^" + std::to_string(i) : "");
+    if (i > 0) {  // appended piece by piece: GCC 12's -Wrestrict misfires on "^" + std::to_string(i) here
+      term += term.empty() ? "t" : " t";
+      if (i > 1) term += '^' + std::to_string(i);
+    }
     if (r.empty()) r = (sgn(c) < 0 ? "-" : "") + term;
     else r += (sgn(c) < 0 ? " - " : " + ") + term;
     if (r.size() > 200) return r + " ...";
@@ -926,7 +929,9 @@ Scene parse_scene(const std::string& json_text, const std::string& file_label) {
   parse_dom(json_text, file_label, b, nullptr);
   Reader r(file_label, &b.float_text);
   try {
-    return r.scene(b.root);
+    Scene s = r.scene(b.root);
+    s.source_text = json_text;  // certify needs the scene's own JSON (api/certify.hpp)
+    return s;
   } catch (const SceneError&) {
     throw;
   } catch (const std::exception& e) {  // safety net
