@@ -4,6 +4,7 @@
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "compare/harness.hpp"
 #include "compare/verdict.hpp"
 #include "io/certificate.hpp"
@@ -123,7 +124,7 @@ Command add_certify_command(CLI::App& app) {
         std::cerr << "certify: " << p.label << " ...\n";
         nlohmann::json got;
         try {
-          got = solve_scene(scene, p.opt);
+          got = solution_to_json(solve(scene, p.opt));
         } catch (const std::exception& e) {
           got = {{"error", e.what()}};
         }

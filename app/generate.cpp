@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "compare/scene_generator.hpp"
 #include "io/scene_reader.hpp"
 
@@ -131,7 +132,7 @@ Command add_generate_command(CLI::App& app) {
         std::fprintf(stderr, "[%zu/%zu] %s: ", i + 1, specs.size(), g.name.c_str());
         std::fflush(stderr);
         auto start = std::chrono::steady_clock::now();
-        nlohmann::json report = solve_scene(scene, exact);
+        nlohmann::json report = solution_to_json(solve(scene, exact));
         double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         total_s += sec;
         g.doc["answer"] = stored_answer_of(report);

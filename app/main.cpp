@@ -22,6 +22,7 @@
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "kernel/budget.hpp"
 #include "io/scene_reader.hpp"
 
@@ -39,6 +40,8 @@
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <optional>
+#include <tuple>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -88,7 +91,7 @@ std::string short_answer(const nlohmann::json& r) {
 
 // Stores the spec's answer (the four keys) into the scene file: written to a
 // temporary file first and renamed, so a failure leaves the file untouched.
-void write_answer(const std::string& path, const nlohmann::json& report) {
+void write_answer(const std::string& path, const Solution& report) {
   std::ifstream in(path, std::ios::binary);
   nlohmann::ordered_json doc;
   try {
@@ -108,11 +111,17 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
   std::sort(files.begin(), files.end());
   struct Col { std::string label; SolveOptions opt; };
   std::vector<Col> cols;
-  cols.push_back({"exact", {parse_arithmetic("exact"), "bernstein", 0}});
-  cols.push_back({"double/power", {parse_arithmetic("double"), "power", 0}});
-  cols.push_back({"double/bernstein", {parse_arithmetic("double"), "bernstein", 0}});
-  cols.push_back({"double/scaled", {parse_arithmetic("double"), "scaled-bernstein", 0}});
-  for (int b : mpfr_bits) cols.push_back({"mpfr:" + std::to_string(b), {parse_arithmetic("mpfr:" + std::to_string(b)), "bernstein", 0}});
+  auto col = [](const std::string& arith, Basis basis) {
+    SolveOptions o;
+    o.arith = parse_arithmetic(arith);
+    o.basis = basis;
+    return o;
+  };
+  cols.push_back({"exact", col("exact", Basis::bernstein)});
+  cols.push_back({"double/power", col("double", Basis::power)});
+  cols.push_back({"double/bernstein", col("double", Basis::bernstein)});
+  cols.push_back({"double/scaled", col("double", Basis::scaled_bernstein)});
+  for (int b : mpfr_bits) cols.push_back({"mpfr:" + std::to_string(b), col("mpfr:" + std::to_string(b), Basis::bernstein)});
   nlohmann::json all = nlohmann::json::array();
   std::vector<std::vector<std::string>> rows;
   std::size_t done = 0;
@@ -120,23 +129,25 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
     std::vector<std::string> row{f.filename().string()};
     nlohmann::json js;
     js["file"] = f.string();
+    std::optional<Solution> exact;
     try {
       Scene s = read_scene_file(f.string());
       for (const auto& c : cols) {
         try {
           ScopedDeadline deadline(run_budget().time_limit_s);
-          nlohmann::json r = solve_scene(s, c.opt);
+          Solution sol = solve(s, c.opt);
+          nlohmann::json r = solution_to_json(sol);
           js[c.label] = r;
           std::string cell = short_answer(r);
-          if (c.label != "exact" && js.contains("exact") && js["exact"].contains("collides")) {
-            const auto& ex = js["exact"];
-            bool same = r["collides"] == ex["collides"] && r["intervals"].size() == ex["intervals"].size();
-            auto near = [](const nlohmann::json& a, const nlohmann::json& b) {
-              return std::abs(std::stod(a["approx"].get<std::string>()) - std::stod(b["approx"].get<std::string>())) <= 1e-6;
-            };
-            if (same && !r["first_contact"].is_null() && !ex["first_contact"].is_null()) same = near(r["first_contact"], ex["first_contact"]);
-            for (std::size_t k = 0; same && k < r["intervals"].size(); ++k)
-              same = near(r["intervals"][k][0], ex["intervals"][k][0]) && near(r["intervals"][k][1], ex["intervals"][k][1]);
+          if (c.label == "exact") exact = sol;
+          // TODO(issue 16): eccd::answer_difference (api/answer_difference.hpp) once it lands.
+          if (c.label != "exact" && exact) {
+            const Answer &got = sol.answer, &ex = exact->answer;
+            bool same = got.collides == ex.collides && got.intervals.size() == ex.intervals.size();
+            auto near = [](const Instant& a, const Instant& b) { return std::abs(a.value - b.value) <= 1e-6; };
+            if (same && got.first_contact && ex.first_contact) same = near(*got.first_contact, *ex.first_contact);
+            for (std::size_t k = 0; same && k < got.intervals.size(); ++k)
+              same = near(got.intervals[k].first, ex.intervals[k].first) && near(got.intervals[k].second, ex.intervals[k].second);
             if (!same) cell = "!" + cell;
           }
           row.push_back(cell);
@@ -257,10 +268,8 @@ int main(int argc, char** argv) {
     if (*solve) {
       SolveOptions opt;
       opt.arith = parse_arithmetic(arith);
-      opt.basis = basis;
-      opt.variant = variant;
-      opt.method = method;
-      check_method(method);
+      opt.variant = Variant(variant);
+      std::tie(opt.method, opt.grid) = parse_method(method);
       opt.first_contact = first_contact || (variant == 2);
       opt.input = parse_input_mode(input);
       if (input_opt->count() && opt.arith.kind != Arithmetic::Double && opt.arith.kind != Arithmetic::Mpfr)
@@ -268,10 +277,11 @@ int main(int argc, char** argv) {
                   << " starts from the exactly prepared scene\n";
       arm_backstop(run_budget().time_limit_s);
       Scene s = read_scene_file(scene_path);
-      nlohmann::json r;
+      Solution r;
       try {
+        opt.basis = parse_basis(basis);
         ScopedDeadline deadline(run_budget().time_limit_s);
-        r = solve_scene(s, opt);
+        r = eccd::solve(s, opt);
       } catch (const std::invalid_argument& e) {
         std::cerr << "eccd solve: " << scene_path << ": " << e.what() << "\n";
         return 3;
@@ -281,7 +291,7 @@ int main(int argc, char** argv) {
         if (opt.arith.kind != Arithmetic::Exact) throw std::invalid_argument("--write-answer stores exact answers only: use --arith exact");
         write_answer(scene_path, r);
       }
-      if (json) std::cout << r.dump(2) << "\n";
+      if (json) std::cout << solution_to_json(r).dump(2) << "\n";
       else std::cout << summary_text(r);
       return 0;
     }

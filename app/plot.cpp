@@ -39,6 +39,7 @@
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "number/double_traits.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/budget.hpp"
@@ -499,7 +500,7 @@ int run_plot(const PlotOptions& o) {
   json rep;
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
-    rep = solve_scene(s, opt);
+    rep = solution_to_json(solve(s, opt));
     if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
   } catch (const std::invalid_argument& e) {
     std::cerr << "eccd plot: " << o.scene << ": " << e.what() << "\n";

@@ -4,6 +4,7 @@
 // answers (compare/verdict.hpp) and tabulated.
 #include "app/commands.hpp"
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "compare/harness.hpp"
 #include "compare/regress.hpp"
 #include "compare/verdict.hpp"
@@ -150,7 +151,7 @@ Command add_regress_command(CLI::App& app) {
         }
         SolveOptions opt;
         opt.arith = parse_arithmetic(args->arith);
-        nlohmann::json r = solve_scene(sc, opt);
+        nlohmann::json r = solution_to_json(solve(sc, opt));
         std::string how;
         if (r.contains("escalated")) {
           row["escalated"] = r["escalated"];
@@ -209,7 +210,7 @@ Command add_regress_command(CLI::App& app) {
             if (p.opt.arith.kind == Arithmetic::Exact) continue;
             nlohmann::json g;
             try {
-              g = solve_scene(sc, p.opt);
+              g = solution_to_json(solve(sc, p.opt));
             } catch (const std::exception& e) {
               g = {{"error", e.what()}};
             }

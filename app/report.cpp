@@ -138,14 +138,14 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
   std::string exact;
   {
     ScopedDeadline budget(a.harness.exact_budget_s);
-    exact = answer_kind(solve_scene(s, ex));
+    exact = answer_kind(solution_to_json(solve(s, ex)));
   }
   int h = map->n / 2;
   for (const auto& p : map->pipelines) {
     SolveOptions o;
     auto slash = p.find('/');
     o.arith = parse_arithmetic(p.substr(0, slash));
-    o.basis = p.substr(slash + 1);
+    o.basis = parse_basis(p.substr(slash + 1));
     BoundedRun br = run_bounded(s, o, a.harness.budget_s, a.harness.isolate);
     std::string kind = br.timed_out ? "undecided" : !br.error.empty() ? "error" : answer_kind(br.got);  // a time-out decides nothing
     out.push_back("M" + p + "," + std::to_string(t.ix) + "," + std::to_string(t.iy) + "," + std::to_string(t.ix - h) + "," +

@@ -123,11 +123,11 @@ struct CertifiedPolicy {
   Instant instant_at(const T& t) const {
     std::optional<Rational> q = exact_point(t);
     if (!q) throw std::logic_error("internal error: a certified instant that is not a point");
-    return Instant{decimal_string(*q), *q, *q};
+    return bracketed_instant(*q, *q, *q);
   }
   Instant instant(const Root& r) const {
     Rational mid = (r.lo + r.hi) / 2;
-    return Instant{decimal_string(mid), r.lo, r.hi};
+    return bracketed_instant(mid, r.lo, r.hi);
   }
   T value(const Root& r) const { return interval_hull(r.lo, r.hi, like); }
   int multiplicity(const Root&) const { return 1; }

@@ -13,6 +13,7 @@
 #include "kernel/budget.hpp"
 #include "kernel/prepared_scene.hpp"
 
+#include <tuple>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -152,8 +153,8 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
       if (arith == "exact" && mode != modes.front()) continue;
       PipelineSpec p;
       p.opt.arith = parse_arithmetic(arith);
-      p.opt.basis = basis;
-      p.opt.method = method;
+      p.opt.basis = parse_basis(basis);
+      if (method != "cd-disc") std::tie(p.opt.method, p.opt.grid) = parse_method(method);  // 2D: one method
       p.basis = arith == "exact" ? "exact" : basis;
       p.method = arith == "exact" ? (dim == 2 ? "cd-disc" : "projection") : method;
       p.label = arith == "exact" ? "exact" : arith + "/" + variant;
@@ -197,7 +198,7 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
   auto in_process = [&](BoundedRun& out) {
     try {
       ScopedDeadline budget(budget_s);
-      out.got = solve_scene(s, opt);
+      out.got = solution_to_json(solve(s, opt));
     } catch (const BudgetExhausted& e) {
       out.timed_out = true;
       out.reason = std::string("time budget: ") + e.what();
@@ -287,7 +288,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
   nlohmann::json exact;
   {
     ScopedDeadline budget(opt.exact_budget_s);  // BudgetExhausted: no ground truth, the scene fails
-    exact = solve_scene(s, pipes[0].opt);       // throws for a scene the exact pipeline refuses
+    exact = solution_to_json(solve(s, pipes[0].opt));       // throws for a scene the exact pipeline refuses
   }
   Reference2 r2;
   Reference3 r3;
@@ -307,7 +308,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     row.scene = info;
     row.pipeline = ps.label;
     row.arith = ps.opt.arith.kind == Arithmetic::Exact ? "exact" : ps.opt.arith.kind == Arithmetic::Mpfr ? "mpfr" : "double";
-    row.bits = ps.opt.arith.bits;
+    row.bits = ps.opt.arith.precision_bits();
     row.basis = ps.basis;
     row.method = ps.method;
     row.input = ps.input;
@@ -346,13 +347,13 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     // Coefficient errors are recomputed from the prepared scene, i.e. for the prepared input mode only (a rounded
     // row leaves them empty rather than show another mode's numbers).
     if (ps.label != "exact" && ps.input == "prepared") {
-      Basis basis = parse_basis(ps.opt.basis);
+      Basis basis = ps.opt.basis;
       if (ps.opt.arith.kind == Arithmetic::Double) {
         if (s.dim == 2) coefficients_2d<double>(r2, basis, 53, 1.0, row);
         else coefficients_3d<double>(r3, ps, 1.0, row);
       } else {
-        Mpfr like(mpq_class(1), ps.opt.arith.bits);
-        if (s.dim == 2) coefficients_2d<Mpfr>(r2, basis, ps.opt.arith.bits, like, row);
+        Mpfr like(mpq_class(1), ps.opt.arith.precision_bits());
+        if (s.dim == 2) coefficients_2d<Mpfr>(r2, basis, ps.opt.arith.precision_bits(), like, row);
         else coefficients_3d<Mpfr>(r3, ps, like, row);
       }
     }

@@ -37,6 +37,7 @@
 // Requirements: a scene with rational motions (the exact pipeline refuses
 // cycloidal motions, and so does the harness).
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "compare/metrics.hpp"
 #include "kernel/scene.hpp"
 

@@ -54,10 +54,10 @@ struct ExactPolicy {
   Rational sample_between(const Root* l, const Root* r) const {
     return simplest_dyadic_between(l ? l->hi : Rational(0), r ? r->lo : Rational(1));
   }
-  Instant instant_at(const Rational& t) const { return Instant{decimal_string(t), t, t}; }
+  Instant instant_at(const Rational& t) const { return bracketed_instant(t, t, t); }
   Instant instant(const Root& r) const {
     Rational mid = (r.lo + r.hi) / 2;
-    return Instant{decimal_string(mid), r.lo, r.hi};
+    return bracketed_instant(mid, r.lo, r.hi);
   }
   Rational value(const Root& r) const { Rational mid = (r.lo + r.hi) / 2; return mid; }
   int multiplicity(const Root& r) const { return r.multiplicity; }

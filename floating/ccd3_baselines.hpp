@@ -137,8 +137,8 @@ namespace baseline_detail {
 // Display of an instant: decimal for exact T, the arithmetic's own string otherwise.
 template <class T>
 Instant uncertified_instant(const T& t) {
-  if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), std::nullopt, std::nullopt};
-  else return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt};
+  if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), std::nullopt, std::nullopt, nearest_double(t)};
+  else return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt, scalar_traits<T>::to_double(t)};
 }
 
 // k / N in the run's arithmetic.

@@ -190,8 +190,8 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
   auto refined = [&](const Instant& i) -> Instant {
     if (!i.certified()) throw std::logic_error("internal error: an exact instant without a bracket");
     for (const auto& w : roots)
-      if (w.old_lo == *i.lo && w.old_hi == *i.hi) return Instant{approx_in_bracket(w.root.lo, w.root.hi), w.root.lo, w.root.hi};
-    return Instant{approx_in_bracket(*i.lo, *i.hi), *i.lo, *i.hi};
+      if (w.old_lo == *i.lo && w.old_hi == *i.hi) return Instant{approx_in_bracket(w.root.lo, w.root.hi), w.root.lo, w.root.hi, nearest_double((w.root.lo + w.root.hi) / 2)};
+    return Instant{approx_in_bracket(*i.lo, *i.hi), *i.lo, *i.hi, nearest_double((*i.lo + *i.hi) / 2)};
   };
 
   // Gaps between consecutive brackets (and 0, 1) hold no root.

@@ -515,7 +515,7 @@ struct Checker {
     std::vector<TimelineNode> seq;
     for (const auto& n : nodes) {
       Rational mid = (n.lo + n.hi) / 2;
-      seq.push_back({Instant{decimal_string(mid), n.lo, n.hi}, n.status, n.is_cell});
+      seq.push_back({bracketed_instant(mid, n.lo, n.hi), n.status, n.is_cell});
     }
     if (alg.dim == 2) {
       try {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -153,8 +154,6 @@ Rational parse_rational(const std::string& text) {
 // ---------------------------------------------------------------------------
 // Answers to JSON
 
-namespace {
-
 json instant_to_json(const Instant& in) {
   json o = json::object();
   o["approx"] = in.approx;
@@ -162,6 +161,8 @@ json instant_to_json(const Instant& in) {
   o["hi"] = in.hi ? json(in.hi->get_str()) : json(nullptr);
   return o;
 }
+
+namespace {
 
 json interval_list_to_json(const std::vector<std::pair<Instant, Instant>>& v) {
   json a = json::array();
@@ -754,6 +755,11 @@ Instant Reader::instant(const json& j, const std::string& ptr) const {
   if (!ap.is_string()) fail(child(ptr, "approx"), "approx must be a decimal string, got " + type_name(ap));
   Instant in;
   in.approx = ap.get<std::string>();
+  {  // Instant::value, for display and reports (never to decide): the approx text as a double, NaN if it is none
+    char* end = nullptr;
+    double v = std::strtod(in.approx.c_str(), &end);
+    if (end != in.approx.c_str() && *end == '\0') in.value = v;
+  }
   const json* lo = find(j, "lo");
   const json* hi = find(j, "hi");
   const bool has_lo = lo && !lo->is_null(), has_hi = hi && !hi->is_null();

@@ -112,6 +112,8 @@ Rational parse_rational(const std::string& text);
 // An answer in the spec's format; instants {"approx", "lo", "hi"} with lo/hi
 // "p/q" strings, or null when not certified (choice 12 for the extras).
 nlohmann::json answer_to_json(const Answer& answer);
+// One instant {"approx", "lo", "hi"} as answer_to_json writes it.
+nlohmann::json instant_to_json(const Instant& instant);
 // The stored "answer" of a scene at JSON pointer `place` of file `file_label`;
 // throws SceneError.
 Answer answer_from_json(const nlohmann::json& j, const std::string& file_label, const std::string& place);

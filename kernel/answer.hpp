@@ -21,6 +21,7 @@
 #include <gmpxx.h>
 #include <mpfr.h>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -31,6 +32,9 @@ namespace eccd {
 struct Instant {
   std::string approx;              // decimal, for people and plots
   std::optional<mpq_class> lo, hi;  // present iff certified
+  // The approximation as a double (for display and reports; never used to
+  // decide): filled wherever approx is, NaN where nothing filled it.
+  double value = std::numeric_limits<double>::quiet_NaN();
   bool certified() const { return lo.has_value() && hi.has_value(); }
 };
 
@@ -61,6 +65,22 @@ inline std::string decimal_string(const mpq_class& q, int digits = 20) {
   mpfr_free_str(s);
   mpfr_clear(r);
   return out;
+}
+
+// The double nearest to an exact rational (MPFR rounding to nearest), for
+// Instant::value: display and reports only, never a decision.
+inline double nearest_double(const mpq_class& q) {
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
+  double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+// An instant with an exact bracket [lo, hi]: approx and value from `mid`.
+inline Instant bracketed_instant(const mpq_class& mid, const mpq_class& lo, const mpq_class& hi) {
+  return Instant{decimal_string(mid), lo, hi, nearest_double(mid)};
 }
 
 }  // namespace eccd

@@ -2,3 +2,4 @@
 // eccd's one public header: `#include <eccd/eccd.hpp>`, link eccd::eccd.
 // Everything a program needs (namespace eccd) comes from the API layer, api/.
 #include "api/solve.hpp"
+#include "api/static_test.hpp"

@@ -2,6 +2,7 @@
 // the exact pipeline's answer (the spec's four keys), equal to a fresh exact
 // solve of the scene read back from the file; without --answer there is none.
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/cli.hpp"
 
@@ -45,7 +46,7 @@ void check_stored_answer(const std::string& file) {
   CHECK(s.note.find(" seed=") != std::string::npos);
   eccd::SolveOptions opt;
   opt.arith = eccd::parse_arithmetic("exact");
-  nlohmann::json report = eccd::solve_scene(s, opt);
+  nlohmann::json report = eccd::solution_to_json(eccd::solve(s, opt));
   nlohmann::json spec;
   for (const char* k : {"collides", "intervals", "first_contact", "contacts"}) spec[k] = report.at(k);
   eccd::Answer fresh = eccd::answer_from_json(spec, file, "/answer");

@@ -2,6 +2,7 @@
 // (number/interval.hpp), and the certified policy's answers, which must be
 // the exact pipeline's on the corpus, escalating where a sign is uncertain.
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "compare/regress.hpp"
 #include "compare/seeded_rng.hpp"
 #include "number/interval.hpp"
@@ -84,9 +85,9 @@ TEST_CASE("MPFI intervals enclose the exact rational results and carry their pre
 }
 
 TEST_CASE("certified arithmetic names its ladder of MPFI rungs", "[certified]") {
-  CHECK(parse_arithmetic("certified").rungs == std::vector<int>{256});
-  CHECK(parse_arithmetic("certified:none").rungs.empty());
-  CHECK(parse_arithmetic("certified:128,1024").rungs == std::vector<int>{128, 1024});
+  CHECK(parse_arithmetic("certified").mpfi_rungs == std::vector<int>{256});
+  CHECK(parse_arithmetic("certified:none").mpfi_rungs.empty());
+  CHECK(parse_arithmetic("certified:128,1024").mpfi_rungs == std::vector<int>{128, 1024});
   CHECK(parse_arithmetic("certified:128,1024").name() == "certified:128,1024");
   CHECK(parse_arithmetic("certified").name() == "certified");
   CHECK_THROWS_AS(parse_arithmetic("certified:512,256"), std::invalid_argument);
@@ -100,14 +101,14 @@ TEST_CASE("a scene that intervals of doubles cannot decide is decided by the MPF
   Scene s = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/generated/2d/2d-deg4-colliding-kinematic-572211152701880.json");
   SolveOptions opt;
   opt.arith = parse_arithmetic("certified");
-  nlohmann::json r = solve_scene(s, opt);
+  nlohmann::json r = solution_to_json(solve(s, opt));
   CHECK(r["decided_in"] == "mpfi:256");
   REQUIRE(r["escalations"].size() == 1);
   CHECK(r["escalations"][0]["rung"] == "interval");
   CHECK(answer_differences(*s.answer, answer_of(r)).empty());
   // Without the MPFI rung the same scene goes from doubles to exact.
   opt.arith = parse_arithmetic("certified:none");
-  nlohmann::json e = solve_scene(s, opt);
+  nlohmann::json e = solution_to_json(solve(s, opt));
   CHECK(e["decided_in"] == "exact");
   CHECK(answer_differences(*s.answer, answer_of(e)).empty());
 }
@@ -120,7 +121,7 @@ TEST_CASE("certified mode gives the stored exact answers on the 2D corpus and de
     Scene s = read_scene_file(e.path().string());
     REQUIRE(s.answer);
     INFO(e.path().string());
-    nlohmann::json r = solve_scene(s, opt);
+    nlohmann::json r = solution_to_json(solve(s, opt));
     CHECK(r["certified"] == true);
     CHECK(answer_differences(*s.answer, answer_of(r)).empty());
     bool is_touch = s.note.find("family=touch") != std::string::npos;
@@ -143,7 +144,7 @@ TEST_CASE("certified mode on paper 002's example escalates to exact and keeps bo
   SolveOptions opt;
   opt.arith = parse_arithmetic("certified");
   Scene s = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/paper002/example.json");
-  nlohmann::json r = solve_scene(s, opt);
+  nlohmann::json r = solution_to_json(solve(s, opt));
   CHECK(r["escalated"] == true);
   CHECK(r["escalation_reason"].get<std::string>().size() > 0);
   CHECK(answer_differences(*s.answer, answer_of(r)).empty());

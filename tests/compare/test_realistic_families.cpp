@@ -8,6 +8,7 @@
 // seed in use is printed. ECCD_REALISTIC_BUDGET: seconds per floating run
 // (default 0.5: CI time; a run is killed at 2 x budget + 1 s; the long run uses 2).
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "compare/harness.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/budget.hpp"
@@ -30,7 +31,7 @@ nlohmann::json solve_exact(const Scene& s) {
   SolveOptions o;
   o.arith = parse_arithmetic("exact");
   ScopedDeadline budget(600);
-  return solve_scene(s, o);
+  return solution_to_json(solve(s, o));
 }
 
 std::uint64_t seed_from(const char* var, std::uint64_t fallback) {
@@ -59,8 +60,8 @@ std::vector<FloatPipe> every_floating_pipeline(int dim, bool baselines) {
       auto add = [&](const std::string& basis, const std::string& method) {
         FloatPipe p;
         p.opt.arith = parse_arithmetic(arith);
-        p.opt.basis = basis;
-        p.opt.method = method;
+        p.opt.basis = parse_basis(basis);
+        if (method != "cd-disc") std::tie(p.opt.method, p.opt.grid) = parse_method(method);
         apply_input_mode(p.opt, mode);
         p.label = arith + "/" + method + "/" + basis + "@" + mode;
         v.push_back(p);
@@ -280,7 +281,7 @@ void check_overlap_family(bool baselines) {
     if (!(longest_interval(ex) > 1e-6)) continue;
     ++scenes;
     for (const auto& p : every_floating_pipeline(sp.dim, baselines)) {
-      if (baselines != (p.opt.method.rfind("sampling", 0) == 0 || p.opt.method.rfind("marching", 0) == 0)) continue;
+      if (baselines != (p.opt.method == Method::sampling || p.opt.method == Method::marching)) continue;
       BoundedRun r = run_bounded(s, p.opt, budget, true);
       ++runs;
       if (!r.timed_out && r.error.empty() && confident(r.got) && !r.got["collides"].get<bool>()) {
@@ -424,7 +425,7 @@ TEST_CASE("the Bezier method finds the collision of issue 14's scene missed-0.02
   CHECK(std::abs(lo - 0.504798) < 1e-6);
   CHECK(std::abs(hi - 0.525770) < 1e-6);
   for (const auto& p : every_floating_pipeline(3, false)) {
-    if (p.opt.method != "bezier") continue;
+    if (p.opt.method != Method::bezier) continue;
     INFO(p.label);
     BoundedRun r = run_bounded(s, p.opt, 5, true);
     REQUIRE(r.error.empty());

@@ -2,6 +2,7 @@
 // requested degree, accepted by the scene reader, and of the kind their
 // construction promises, checked against the exact pipeline.
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "compare/harness.hpp"
 #include "compare/scene_generator.hpp"
 #include "io/scene_reader.hpp"
@@ -14,7 +15,7 @@ namespace {
 nlohmann::json solve_exact(const Scene& s) {
   SolveOptions o;
   o.arith = parse_arithmetic("exact");
-  return solve_scene(s, o);
+  return solution_to_json(solve(s, o));
 }
 }  // namespace
 

@@ -64,7 +64,7 @@ struct Rng : SeededRng {
   }
 };
 
-Answer solve(const Scene& s) {
+Answer exact_answer(const Scene& s) {
   return s.dim == 2 ? solve_exact(s).answer : solve_exact_3d(s).answer;
 }
 
@@ -226,14 +226,14 @@ void run_case(SceneCase c, int index) {
     GeneratedScene g = generate_scene(sp);
     s = parse_scene(g.doc.dump(), g.name);
   }
-  Answer original = solve(s);
+  Answer original = exact_answer(s);
   INFO("original answer: " << answer_text(original));
   REQUIRE(original.undecided.empty());
   std::string failed, slowest;
   double slowest_sec = -1;
   for (const auto& t : transforms_of(s, c)) {
     auto t_start = std::chrono::steady_clock::now();
-    Answer got = solve(t.scene);
+    Answer got = exact_answer(t.scene);
     double t_sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
     if (t_sec > slowest_sec) { slowest_sec = t_sec; slowest = t.name; }
     std::string why = answer_mismatch(t.mirrored ? mirror_answer(original) : original, got);
@@ -325,7 +325,7 @@ TEST_CASE("metamorphic: the comparisons can fail", "[metamorphic][exact]") {
   }
   INFO("scene " << spec_text(sp) << " t0=" << g.t0->get_str());
   Scene s = parse_scene(g.doc.dump(), g.name);
-  Answer original = solve(s), reversed = solve(reversed_time(s));
+  Answer original = exact_answer(s), reversed = exact_answer(reversed_time(s));
   INFO("original " << answer_text(original) << "; reversed " << answer_text(reversed));
   REQUIRE(original.intervals.size() == 1);
   CHECK(answer_mismatch(mirror_answer(original), reversed) == "");
@@ -359,7 +359,7 @@ TEST_CASE("metamorphic: the comparisons can fail", "[metamorphic][exact]") {
   std::uint64_t mp_seed = scene_seed(base_seed(), sp, 2000);
   INFO("multi-pass scene seed " << mp_seed);
   Scene m = multi_pass_scene(2, mp_seed, 0);
-  Answer m_orig = solve(m), m_rev = solve(reversed_time(m));
+  Answer m_orig = exact_answer(m), m_rev = exact_answer(reversed_time(m));
   INFO("multi-pass original " << answer_text(m_orig) << "; reversed " << answer_text(m_rev));
   REQUIRE(m_orig.intervals.size() >= 2);
   CHECK(answer_mismatch(mirror_answer(m_orig), m_rev) == "");

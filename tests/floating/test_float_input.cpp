@@ -7,6 +7,7 @@
 // The scenes are in tests/data/float/ (made by tests/data/float/round_scene.py
 // and the text).
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "number/running_error.hpp"
 #include "kernel/budget.hpp"
 #include "io/scene_reader.hpp"
@@ -27,9 +28,9 @@ nlohmann::json solve_with(const Scene& s, const std::string& arith, const std::s
                           InputMode input = InputMode::rounded) {
   SolveOptions o;
   o.arith = parse_arithmetic(arith);
-  o.method = method;
+  std::tie(o.method, o.grid) = parse_method(method);
   o.input = input;
-  return solve_scene(s, o);
+  return solution_to_json(solve(s, o));
 }
 
 double approx(const nlohmann::json& i) { return std::stod(i["approx"].get<std::string>()); }

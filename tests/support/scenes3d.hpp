@@ -3,6 +3,7 @@
 // ellipsoid scenes under Euler-parameter motions, and an independent exact
 // oracle for the status at a rational instant.
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "exact/cd_disc_exact.hpp"
 #include "floating/cd_disc_floating.hpp"
 #include "floating/bezier_ccd.hpp"

@@ -1,0 +1,212 @@
+// Static tests from a scene at an instant or from two poses (api/static_test.hpp).
+#include "api/static_test.hpp"
+
+#include "floating/rounded_input.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/fast_quartic.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/quartic_status.hpp"
+#include "number/mpfr_real.hpp"
+#include "number/rational_traits.hpp"
+#include "number/running_error.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+namespace eccd {
+
+namespace {
+
+template <class T, int N>
+using Mat = std::array<std::array<T, N>, N>;
+
+// The status from f's coefficients g_0..g_{N-1} (increasing powers of λ).
+template <class T, std::size_t K>
+Status status_of(const std::array<T, K>& g) {
+  if constexpr (K == 4) return cubic_contact_status(g[3], g[2], g[1], g[0]);
+  else return quartic_contact_status(g);
+}
+
+// ---- the scene at an instant ------------------------------------------------
+
+template <class T, int N>
+Status scene_status(const MovingPair<T, N>& m, const T& t) {
+  std::vector<Poly<T>> g = characteristic_of(m);
+  std::array<T, N + 1> v;
+  for (int i = 0; i <= N; ++i) v[i] = g[i].is_zero() ? t - t : g[i](t);
+  return status_of(v);
+}
+
+template <int N>
+Status scene_status_in(const Scene& scene, const mpq_class& t, const Arithmetic& arith) {
+  if (arith.kind == Arithmetic::Exact || arith.kind == Arithmetic::Certified)
+    return scene_status<Rational, N>(to_arithmetic<Rational, N>(prepare_pair<N>(scene), Rational(1)), Rational(t));
+  auto rounded = [&](const auto& like) {
+    using T = std::decay_t<decltype(like)>;
+    std::string trouble;
+    MovingPair<T, N> m = round_pair<T, N>(scene, like, trouble);
+    if (!trouble.empty()) return Status::uncertain;  // a value that is not finite decides nothing
+    return scene_status<T, N>(m, scalar_traits<T>::from_rational(t, like));
+  };
+  if (arith.kind == Arithmetic::Double) return rounded(Bounded<double>(1.0, 0));
+  return rounded(Bounded<Mpfr>(Mpfr(mpq_class(1), arith.mpfr_bits), 0));
+}
+
+// ---- two shapes at two poses ------------------------------------------------
+
+template <int N>
+void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& pose, const char* which) {
+  const std::string obj = std::string("static test: object ") + which + ": ";
+  for (double a : axes)
+    if (!(a > 0) || !std::isfinite(a)) throw std::invalid_argument(obj + "semi-axis " + std::to_string(a) + " is not a positive finite number");
+  for (const auto& row : pose)
+    for (double x : row)
+      if (!std::isfinite(x)) throw std::invalid_argument(obj + "the pose has an entry that is not finite");
+  for (int j = 0; j < N; ++j)
+    if (pose[N - 1][j] != (j == N - 1 ? 1.0 : 0.0))
+      throw std::invalid_argument(obj + "the pose is not affine (its last row must be 0 ... 0 1)");
+  // Singular linear part: a cheap double determinant first, the exact one only when that is 0.
+  auto det = [](const auto& m) -> std::decay_t<decltype(m[0][0])> {
+    if constexpr (N == 3) return m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    else
+      return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
+  if (det(pose) == 0) {
+    Mat<Rational, N> q;
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) q[i][j] = Rational(pose[i][j]);
+    if (Rational(det(q)) == 0) throw std::invalid_argument(obj + "the pose is singular (its linear part has determinant 0)");
+  }
+}
+
+template <class T>
+T from_double(double x) {
+  if constexpr (std::is_same_v<T, Rational>) return Rational(x);
+  else return T(x, 0);  // Bounded<double>: the given double is exact
+}
+
+// adj of the affine pose M = [R t; 0 1] in block form: N = [adj(R), -adj(R) t; 0, det R],
+// so that N M = det(R) I (a positive multiple of M^-1 up to the sign of det R,
+// which the quadric Nᵀ Q N squares away). R is not singular (check_shape).
+template <class T, int N>
+Mat<T, N> affine_adjugate(const Mat<double, N>& pose) {
+  Mat<T, N> m;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) m[i][j] = from_double<T>(pose[i][j]);
+  Mat<T, N> n;
+  T det;
+  if constexpr (N == 3) {
+    n[0][0] = m[1][1]; n[0][1] = -m[0][1];
+    n[1][0] = -m[1][0]; n[1][1] = m[0][0];
+    det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+  } else {
+    auto c = [&](int r0, int r1, int c0, int c1) -> T { return m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]; };
+    n[0][0] = c(1, 2, 1, 2); n[0][1] = -c(0, 2, 1, 2); n[0][2] = c(0, 1, 1, 2);
+    n[1][0] = -c(1, 2, 0, 2); n[1][1] = c(0, 2, 0, 2); n[1][2] = -c(0, 1, 0, 2);
+    n[2][0] = c(1, 2, 0, 1); n[2][1] = -c(0, 2, 0, 1); n[2][2] = c(0, 1, 0, 1);
+    det = m[0][0] * n[0][0] + m[0][1] * n[1][0] + m[0][2] * n[2][0];
+  }
+  constexpr int d = N - 1;
+  for (int i = 0; i < d; ++i) {
+    T s = m[0][0] - m[0][0];
+    for (int k = 0; k < d; ++k) s = s - n[i][k] * m[k][d];
+    n[i][d] = s;
+    n[d][i] = m[0][0] - m[0][0];
+  }
+  n[d][d] = det;
+  return n;
+}
+
+template <class T, int N>
+Mat<T, N> shape_matrix(const std::array<double, N - 1>& axes) {
+  Mat<T, N> q;
+  const T zero = from_double<T>(0), one = from_double<T>(1);
+  for (auto& row : q) row.fill(zero);
+  for (int i = 0; i < N - 1; ++i) {
+    T a = from_double<T>(axes[i]);
+    q[i][i] = one / (a * a);
+  }
+  q[N - 1][N - 1] = zero - one;
+  return q;
+}
+
+// Exact: world quadrics and the generic expansion of det(λA - B).
+template <int N>
+Status exact_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                         const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  const Rational zero(0);
+  auto world = [&](const std::array<double, N - 1>& axes, const Mat<double, N>& pose) {
+    return moving_quadric_in<Rational, Rational, N>(shape_matrix<Rational, N>(axes), affine_adjugate<Rational, N>(pose), zero);
+  };
+  std::vector<Rational> g = characteristic_coefficients_in<Rational, N>(world(axes_a, pose_a), world(axes_b, pose_b), zero);
+  std::array<Rational, N + 1> v;
+  for (int i = 0; i <= N; ++i) v[i] = g[i];
+  return status_of(v);
+}
+
+// Double: a in standard position, b relative to it; 001 Appendix A in 3D.
+template <int N>
+Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                          const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  using T = Bounded<double>;
+  const T zero(0.0, 0);
+  Mat<T, N> nb = affine_adjugate<T, N>(pose_b);
+  Mat<T, N> r;  // adj(M_b) M_a: b's frame relative to a's
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      T s = zero;
+      for (int k = 0; k < N; ++k)
+        if (pose_a[k][j] != 0) s = s + nb[i][k] * from_double<T>(pose_a[k][j]);
+      r[i][j] = s;
+    }
+  Mat<T, N> b = moving_quadric_in<T, T, N>(shape_matrix<T, N>(axes_b), r, zero);
+  Mat<T, N> qa = shape_matrix<T, N>(axes_a);
+  if constexpr (N == 4) {
+    return status_of(appendix_a_coefficients(qa[0][0], qa[1][1], qa[2][2], b));
+  } else {
+    // det(λ diag(d1, d2, d3) - b), the 3x3 analogue of Appendix A.
+    const T &d1 = qa[0][0], &d2 = qa[1][1], &d3 = qa[2][2];
+    const T &b11 = b[0][0], &b12 = b[0][1], &b13 = b[0][2], &b22 = b[1][1], &b23 = b[1][2], &b33 = b[2][2];
+    T m1 = b22 * b33 - b23 * b23, m2 = b11 * b33 - b13 * b13, m3 = b11 * b22 - b12 * b12;
+    T det = b11 * m1 - b12 * (b12 * b33 - b13 * b23) + b13 * (b12 * b23 - b13 * b22);
+    std::array<T, 4> g{zero - det, d1 * m1 + d2 * m2 + d3 * m3, zero - (d1 * d2 * b33 + d1 * d3 * b22 + d2 * d3 * b11),
+                       d1 * d2 * d3};
+    return status_of(g);
+  }
+}
+
+template <int N>
+Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                   const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b, const Arithmetic& arith) {
+  check_shape<N>(axes_a, pose_a, "a");
+  check_shape<N>(axes_b, pose_b, "b");
+  switch (arith.kind) {
+    case Arithmetic::Double: return double_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    case Arithmetic::Exact: case Arithmetic::Certified: return exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    default: throw std::invalid_argument("static test from two poses: arithmetic " + arith.name() + " is not offered (double or exact)");
+  }
+}
+
+}  // namespace
+
+Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith) {
+  if (t < 0 || t > 1) throw std::invalid_argument("status_at: t = " + t.get_str() + " is outside [0, 1]");
+  bool cyclo = std::holds_alternative<CycloidalMotion>(scene.a.motion) || std::holds_alternative<CycloidalMotion>(scene.b.motion);
+  if (cyclo && arith.floating())
+    throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
+  return scene.dim == 3 ? scene_status_in<4>(scene, t, arith) : scene_status_in<3>(scene, t, arith);
+}
+
+Status static_status(const Ellipse& a, const Ellipse& b, const Arithmetic& arith) {
+  return pose_status<3>(a.semi_axes, a.pose, b.semi_axes, b.pose, arith);
+}
+
+Status static_status(const Ellipsoid& a, const Ellipsoid& b, const Arithmetic& arith) {
+  return pose_status<4>(a.semi_axes, a.pose, b.semi_axes, b.pose, arith);
+}
+
+}  // namespace eccd

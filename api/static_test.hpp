@@ -1,0 +1,55 @@
+#pragma once
+// Static tests: the contact status (separate, touching, overlapping:
+// kernel/contact_status.hpp Status) of two ellipses or ellipsoids at one
+// instant, from a scene at an instant t or from two shapes at two poses.
+//
+// Statement. 003 Theorem 6 (2D) and 002 Theorem 1 / 001 section 3 (3D): with
+// f(λ) = det(λA - B) the objects are separate iff f has two distinct negative
+// roots, touch externally iff a negative double root, overlap otherwise.
+// From two poses the objects are x^T diag(1/a², 1/b²[, 1/c²], -1) x <= 0 in
+// their own frames, moved by a homogeneous affine pose M (last row 0 ... 0 1,
+// det ≠ 0) that maps the object's frame to the world.
+//  - exact: the world matrices A = adj(M_a)^T Q_a adj(M_a), B likewise (a
+//    positive multiple of M^-T Q M^-1, design.md), f by the generic
+//    determinant expansion (kernel/characteristic_polynomial.hpp), then the
+//    exact static test (kernel/contact_status.hpp 2D, kernel/quartic_status.hpp
+//    3D): a proof about the doubles given.
+//  - double: a in standard position (001 section 3), b = Rᵀ Q_b R with R =
+//    adj(M_b) M_a; in 3D f by 001 Appendix A (kernel/fast_quartic.hpp), in 2D
+//    by the same closed form for a 3x3 diagonal A; then the same status rules
+//    in Bounded<double> (number/running_error.hpp): a status only where
+//    double's own error bound makes every sign it needs certain, uncertain
+//    otherwise. It allocates nothing.
+// Scene at t: the scene's motions at t (kernel/prepared_scene.hpp for exact;
+// the scene's numbers rounded for double and MPFR, as `eccd solve` does);
+// certified gives the exact status (one instant: no ladder to climb).
+// Errors: std::invalid_argument for a non-positive or non-finite semi-axis, a
+// pose that is not affine or is singular, an arithmetic a test has not (the
+// poses: double and exact), a cycloidal motion in exact arithmetic.
+#include "api/options.hpp"
+#include "kernel/contact_status.hpp"
+#include "kernel/scene.hpp"
+
+#include <gmpxx.h>
+
+#include <array>
+
+namespace eccd {
+
+struct Ellipse {
+  std::array<double, 2> semi_axes;           // a, b > 0 along the object's x and y
+  std::array<std::array<double, 3>, 3> pose;  // object frame -> world, homogeneous (last row 0 0 1)
+};
+struct Ellipsoid {
+  std::array<double, 3> semi_axes;           // a, b, c > 0
+  std::array<std::array<double, 4>, 4> pose;  // last row 0 0 0 1
+};
+
+// The status of the scene's two objects at instant t (0 <= t <= 1) in the arithmetic.
+Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith = Arithmetic::exact());
+
+// The status of two shapes at two poses: arith double (default) or exact.
+Status static_status(const Ellipse& a, const Ellipse& b, const Arithmetic& arith = Arithmetic::double_precision());
+Status static_status(const Ellipsoid& a, const Ellipsoid& b, const Arithmetic& arith = Arithmetic::double_precision());
+
+}  // namespace eccd

@@ -1,0 +1,138 @@
+// A Solution as JSON and as text (io/solution_json.hpp).
+#include "io/solution_json.hpp"
+
+#include "io/scene_reader.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace eccd {
+
+using nlohmann::json;
+
+namespace {
+json pair_list(const std::vector<std::pair<Instant, Instant>>& v) {
+  json a = json::array();
+  for (const auto& [s, e] : v) a.push_back({instant_to_json(s), instant_to_json(e)});
+  return a;
+}
+}  // namespace
+
+json solution_to_json(const Solution& s) {
+  json j = answer_to_json(s.answer);
+  j["scene"] = s.scene;
+  j["file"] = s.file;
+  j["dim"] = s.dim;
+  j["arith"] = s.arith.name();
+  j["precision_bits"] = s.arith.precision_bits();
+  j["input"] = to_string(s.input);
+  j["variant"] = variant_name(s.variant);
+  // 2D variants 1-3 (003 VI-C) do not compute what they do not report; 3D
+  // first-contact mode (001 section 4) still reports the first interval and
+  // the contacts up to its end.
+  if (s.dim == 2 && (s.variant == Variant::collides || s.variant == Variant::first_contact)) {
+    j["intervals"] = nullptr;
+    j["contacts"] = nullptr;
+  } else if (s.dim == 2 && s.variant == Variant::all_contacts) {
+    j["intervals"] = nullptr;
+  }
+  json pts = json::array();
+  for (const auto& p : s.answer.contact_points) pts.push_back(p.x);
+  j["contact_points"] = pts;
+  j["contact_intervals"] = pair_list(s.answer.contact_intervals);
+  json und = json::array();
+  for (const auto& u : s.answer.undecided) und.push_back(instant_to_json(u));
+  j["undecided"] = und;
+  j["projection_degree"] = s.projection_degree;
+  // The JSON keeps its values (issue 16): the Bézier method, which has no
+  // univariate projection, is written "discriminant" as before.
+  j["projection"] = s.projection == "bezier" ? std::string("discriminant") : s.projection;
+  j["projection_identically_zero"] = s.projection_identically_zero;
+  j["status_at_0"] = to_string(s.status_at_0);
+  json crit = json::array();
+  for (const auto& c : s.critical)
+    crit.push_back({{"t", instant_to_json(c.t)}, {"status", to_string(c.status)}, {"multiplicity", c.multiplicity}});
+  j["critical_instants"] = crit;
+  j["undecided_reasons"] = s.undecided_reasons;
+  json cells = json::array();
+  for (const auto& c : s.cells) cells.push_back({{"sample", instant_to_json(c.sample)}, {"status", to_string(c.status)}});
+  j["cells"] = cells;
+  json work = json::object();
+  for (const auto& [k, v] : s.work) work[k] = v;
+  j["work"] = work;
+  j["time_ms"] = s.time_ms;
+  j["basis"] = s.basis;
+  j["method"] = s.method;
+  j["certified"] = s.certified;
+  if (s.sampled) j["sampled"] = true;
+  if (s.dim == 3 && s.arith.floating()) j["setup_ms"] = s.setup_ms;
+  if (s.arith.kind == Arithmetic::Certified) {
+    j["escalated"] = !s.escalations.empty();
+    json esc = json::array();
+    for (const auto& e : s.escalations) {
+      esc.push_back({{"rung", e.rung}, {"reason", e.reason}});
+      // the last rung that was tried, and why it gave up
+      if (e.reason.rfind("skipped", 0) != 0) j["escalation_reason"] = e.rung + ": " + e.reason;
+    }
+    j["escalations"] = esc;
+    j["decided_in"] = s.decided_in;
+  }
+  return j;
+}
+
+nlohmann::ordered_json stored_answer_of(const json& report) {
+  nlohmann::ordered_json ans;
+  for (const char* k : {"collides", "intervals", "first_contact", "contacts"}) ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
+  // Continuous touching (docs/answer-format.md): stored only when there is some, so older answers keep their keys.
+  if (report.contains("contact_intervals") && report["contact_intervals"].is_array() && !report["contact_intervals"].empty())
+    ans["contact_intervals"] = nlohmann::ordered_json::parse(report["contact_intervals"].dump());
+  return ans;
+}
+
+nlohmann::ordered_json stored_answer_of(const Solution& s) { return stored_answer_of(solution_to_json(s)); }
+
+std::string summary_text(const Solution& s) {
+  std::ostringstream o;
+  auto inst = [](const Instant& i) {
+    std::string t = i.approx;
+    if (i.certified()) {
+      if (*i.lo == *i.hi) t += " (exactly " + i.lo->get_str() + ")";
+      else t += " in [" + i.lo->get_str() + ", " + i.hi->get_str() + "]";
+    }
+    return t;
+  };
+  const bool two_d_partial = s.dim == 2 && s.variant != Variant::answer;  // intervals not computed
+  o << "scene " << s.scene << " (" << s.dim << "D), arithmetic " << s.arith.name()
+    << (s.certified ? ", certified" : ", not certified") << (s.basis != "exact" ? ", basis " + s.basis : std::string())
+    << (s.input == InputMode::rounded ? ", input rounded" : "") << "\n";
+  // Say what the polynomial is: Δ, psc_k, or for the Bézier method F(u,t).
+  std::string poly = s.projection == "bezier" ? "F(u,t) of degree " + std::to_string(s.projection_degree) + " in t"
+                                              : s.projection + " degree " + std::to_string(s.projection_degree);
+  o << "  status at t = 0: " << to_string(s.status_at_0) << "; " << poly
+    << (s.projection_identically_zero ? " (identically zero)" : "") << ", " << s.critical.size() << " root(s) in [0, 1]\n";
+  o << "  collides: " << (s.answer.collides ? "yes" : "no") << "\n";
+  if (!two_d_partial)
+    for (const auto& [a, b] : s.answer.intervals) {
+      const bool touch = instant_to_json(a) == instant_to_json(b);
+      o << "  collision interval: [" << inst(a) << ", " << inst(b) << "]" << (touch ? "  (isolated touch)" : "") << "\n";
+    }
+  if (s.answer.first_contact) o << "  first contact: " << inst(*s.answer.first_contact) << "\n";
+  if (!(s.dim == 2 && (s.variant == Variant::collides || s.variant == Variant::first_contact)))
+    for (std::size_t i = 0; i < s.answer.contacts.size(); ++i) {
+      o << "  external contact: " << inst(s.answer.contacts[i]);
+      if (i < s.answer.contact_points.size() && s.answer.contact_points[i].x.size() == 2)
+        o << " at (" << s.answer.contact_points[i].x[0] << ", " << s.answer.contact_points[i].x[1] << ")";
+      o << "\n";
+    }
+  for (const auto& [a, b] : s.answer.contact_intervals)
+    o << "  continuous touching (contact interval): [" << inst(a) << ", " << inst(b) << "]\n";
+  for (const auto& u : s.answer.undecided) o << "  undecided near t = " << u.approx << "\n";
+  if (!s.answer.undecided.empty())
+    for (const auto& why : s.undecided_reasons) o << "  undecided because: " << why << "\n";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f", s.time_ms);
+  o << "  time: " << buf << " ms\n";
+  return o.str();
+}
+
+}  // namespace eccd

@@ -1,0 +1,25 @@
+#pragma once
+// A Solution (certified/solution.hpp, the API's api/solution.hpp) as JSON and
+// as text: exactly the object `eccd solve --json` prints (the scene format's
+// answer keys, docs/answer-format.md, plus the run's diagnostics), the spec's
+// stored answer out of it, and the few lines `eccd solve` prints.
+// Requirements: nlohmann json 3.11 (JSON stays in io/ and above).
+#include "certified/solution.hpp"
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace eccd {
+
+// The full JSON report of a solve (what `eccd solve --json` prints).
+nlohmann::json solution_to_json(const Solution& solution);
+// The spec's answer (collides, intervals, first_contact, contacts, in that
+// order; contact_intervals only when there is continuous touching): what a
+// scene file stores under "answer".
+nlohmann::ordered_json stored_answer_of(const Solution& solution);
+// The same out of a report written by solution_to_json.
+nlohmann::ordered_json stored_answer_of(const nlohmann::json& report);
+// A few human-readable lines (what `eccd solve` prints without --json).
+std::string summary_text(const Solution& solution);
+
+}  // namespace eccd
