@@ -138,3 +138,39 @@ def test_bad_options_raise_value_error():
         eccd.solve(s, arith="double", basis="chebyshev")
     with pytest.raises(ValueError):
         eccd.solve(s, variant=7)
+
+
+def shifted(x, dim=2):
+    """A homogeneous pose: the translation by x along the first axis."""
+    n = dim + 1
+    pose = [[1.0 if i == j else 0.0 for j in range(n)] for i in range(n)]
+    pose[0][n - 1] = x
+    return pose
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_static_status_double_agrees_with_exact_or_says_uncertain(dim):
+    # An ellipse (ellipsoid) with semi-axis 2 along x at the origin, a unit
+    # circle (sphere) at x: separate for x > 3, touching at x = 3, overlapping below.
+    make = eccd.Ellipse if dim == 2 else eccd.Ellipsoid
+    a = make([2.0, 1.0] if dim == 2 else [2.0, 1.0, 1.5])
+    expect = {4.0: "separate", 3.0: "touching", 2.0: "overlapping", 3.5: "separate", 0.5: "overlapping"}
+    for x, status in expect.items():
+        b = make([1.0] * dim, shifted(x, dim))
+        exact = eccd.static_status(a, b, arith="exact")
+        assert exact == status, (x, exact)
+        double = eccd.static_status(a, b)  # double is the default
+        assert double in (exact, "uncertain"), (x, double)
+        if status != "touching":  # far from a touch double's error bound decides
+            assert double == exact, (x, double)
+    with pytest.raises(ValueError):
+        eccd.static_status(a, make([1.0] * dim, [[0.0] * (dim + 1)] * (dim + 1)))  # a singular pose
+
+
+def test_status_at_follows_the_solution():
+    s = eccd.read_scene(case("paper003/example2.json"))
+    r = eccd.solve(s)
+    assert eccd.status_at(s, 0) == r.status_at_0 == "separate"
+    assert eccd.status_at(s, Fraction(1, 2)) == "touching"  # 003 Example 2 touches at t = 1/2
+    assert eccd.status_at(s, "1/2") == "touching"
+    assert eccd.status_at(s, Fraction(1, 2), arith="double") in ("touching", "uncertain")
