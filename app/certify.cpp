@@ -3,6 +3,7 @@
 // check-certificate` re-checks without the solver (io/certificate.hpp).
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "api/certify.hpp"
 #include "api/solve.hpp"
 #include "io/solution_json.hpp"
 #include "compare/harness.hpp"
@@ -101,7 +102,7 @@ Command add_certify_command(CLI::App& app) {
     std::cerr << "certify: exact pipeline and certificate ...\n";
     nlohmann::json cert;
     try {
-      cert = make_certificate(scene, doc);
+      cert = nlohmann::json::parse(certify(scene).text);
     } catch (const CertificationError& e) {
       std::cerr << "eccd certify: " << args->scene << ": " << e.what() << "\n";
       return 4;

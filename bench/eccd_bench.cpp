@@ -73,6 +73,7 @@
 //   --eccd_profile_seconds=S  one repetition of at least S seconds per row
 //                         (the report runs a missed target's row so under perf)
 #include "api/solve.hpp"
+#include "io/solution_json.hpp"
 #include "bench/isolation.hpp"
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -1145,7 +1146,7 @@ const SolveRow kSolveSceneRows[] = {
 
 void register_solve_scene() {
   group("solve_scene-2d-deg6", "eccd::solve_scene on the 2D degree-6 scene (JSON included)",
-        "What `eccd solve` computes, through solve_scene(scene, SolveOptions): the pipeline plus preparation of the "
+        "What `eccd solve` computes, through solve(scene, SolveOptions) then solution_to_json: the pipeline plus preparation of the "
         "scene (prepare_pair) and the JSON report; rows of the certified interval mode (`--arith certified`) included.",
         "the first row of the table (double)");
   group("solve_scene-paper002", "eccd::solve_scene on paper 002's example (JSON included)",
@@ -1161,7 +1162,7 @@ void register_solve_scene() {
         "solve_scene, arith " + o.arith.name() + (dim == 2 ? ", variant " + std::to_string(o.variant) : ", method " + o.method),
         [grp, label, o, dim](benchmark::State& st) {
           const Scene& sc = dim == 2 ? s2d_deg6.get().scene : s3d_paper002.get().scene;
-          timed(st, grp + "/" + label, [&] { return solve_scene(sc, o); }, [](const json& j) {
+          timed(st, grp + "/" + label, [&] { return solution_to_json(solve(sc, o)); }, [](const json& j) {
             json r{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]},
                    {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
                    {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
@@ -1217,7 +1218,7 @@ void register_certified_sets() {
         row(set.id, name + " " + arith, first && is_double, is_double ? Cost::slow : Cost::very_slow,
             std::string("solve_scene, arith ") + arith + ", " + rel,
             [key = std::string(set.id) + "/" + name + " " + arith, sc, o](benchmark::State& st) {
-              timed(st, key, [&] { return solve_scene(sc->get(), o); }, [](const json& j) {
+              timed(st, key, [&] { return solution_to_json(solve(sc->get(), o)); }, [](const json& j) {
                 json r{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]},
                        {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
                        {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};

@@ -79,7 +79,7 @@ PipelineResult<Rational> run_exact(const Scene& s, std::vector<Isolation>& recor
 
 }  // namespace
 
-nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc) {
+nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved) {
   auto start = std::chrono::steady_clock::now();
   std::vector<Isolation> record;
   PipelineResult<Rational> res = s.dim == 2 ? run_exact<3>(s, record) : run_exact<4>(s, record);
@@ -255,6 +255,11 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc)
   ans.contact_points.clear();
   c["answer"] = answer_to_json(ans);
   c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (solved) {
+    *solved = solution_of(res, s.dim);
+    ans.contact_points = res.answer.contact_points;
+    solved->answer = ans;
+  }
   return c;
 }
 

@@ -30,6 +30,8 @@
 // Brackets are refined (never moved) until all these claims hold, so the
 // certificate's brackets may be narrower than `eccd solve`'s.
 // Requirements: a scene with rational motions.
+#include "certified/solution.hpp"
+#include "io/certificate_result.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -62,16 +64,14 @@ inline std::size_t certificate_max_bits(std::size_t n, std::size_t tau) {
 }
 inline std::size_t certificate_max_gap_points(std::size_t n) { return 8 * n + 64; }
 
-// Thrown when a claim cannot be made provable (e.g. refinement limit reached).
-struct CertificationError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Runs the exact pipeline with the root isolation recorded and returns the
 // certificate (format "eccd-certificate/2": format 1 plus approx inside its
 // bracket, contact_intervals in the answer and the continuous_touching claim
 // of a 2D Δ ≡ 0; the checker refuses format 1). scene_doc is the scene file's
 // JSON (its dim, a and b are copied into the certificate).
-nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc);
+// If `solved` is given it receives the exact run's typed Solution (what was run
+// aside: api/certify.cpp), with the certificate's refined brackets as its answer.
+nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved = nullptr);
 
 }  // namespace eccd

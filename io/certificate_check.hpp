@@ -44,6 +44,7 @@
 // any arithmetic, so a forged certificate cannot make the checker slow.
 // The first claim that fails is reported by name with the reason and the JSON
 // place; a malformed part is REJECTED, never an internal error.
+#include "io/certificate_result.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -51,12 +52,6 @@
 #include <vector>
 
 namespace eccd {
-
-struct CertificateCheck {
-  bool valid = false;
-  std::vector<std::string> checked;  // one line per claim group that holds
-  std::string failed_claim, reason;  // the first claim that does not
-};
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
 // The same from the certificate's bytes (read once by the caller): a duplicate

@@ -940,7 +940,9 @@ Scene parse_scene(const std::string& json_text, const std::string& file_label) {
   parse_dom(json_text, file_label, b, nullptr);
   Reader r(file_label, &b.float_text);
   try {
-    return r.scene(b.root);
+    Scene s = r.scene(b.root);
+    s.source_text = json_text;  // certify needs the scene's own JSON (api/certify.hpp)
+    return s;
   } catch (const SceneError&) {
     throw;
   } catch (const std::exception& e) {  // safety net

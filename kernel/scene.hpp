@@ -56,6 +56,7 @@ struct Scene {
   int dim = 2;
   SceneObject a, b;
   std::optional<Answer> answer;  // stored answer, if the file has one
+  std::string source_text;       // the JSON text it was read from (io/scene_reader.hpp); "" if built in code
 };
 
 }  // namespace eccd

@@ -3,3 +3,4 @@
 // Everything a program needs (namespace eccd) comes from the API layer, api/.
 #include "api/solve.hpp"
 #include "api/static_test.hpp"
+#include "api/certify.hpp"
