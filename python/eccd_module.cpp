@@ -182,6 +182,27 @@ PYBIND11_MODULE(eccd, m) {
       }, py::arg("scene"), py::arg("t"), py::arg("arith") = "exact",
       "The status of the scene's objects at instant t (a Fraction, int, str like '1/3', or float), 0 <= t <= 1");
 
+  py::register_exception<eccd::CertificationError>(m, "CertificationError", PyExc_RuntimeError);
+  py::class_<eccd::Certificate>(m, "Certificate", "certify's result: the certificate (JSON text, eccd-certificate/2) and the Solution it proves")
+      .def_readonly("text", &eccd::Certificate::text)
+      .def_readonly("solution", &eccd::Certificate::solution)
+      .def("__repr__", [](const eccd::Certificate& c) {
+        return "Certificate(" + std::to_string(c.text.size()) + " characters, " + answer_repr("", c.solution.answer) + ")";
+      });
+  py::class_<eccd::CertificateCheck>(m, "CertificateCheck", "The checker's verdict: valid, the claims that hold, the first that does not")
+      .def_readonly("valid", &eccd::CertificateCheck::valid)
+      .def_readonly("checked", &eccd::CertificateCheck::checked)
+      .def_readonly("failed_claim", &eccd::CertificateCheck::failed_claim)
+      .def_readonly("reason", &eccd::CertificateCheck::reason)
+      .def("__bool__", [](const eccd::CertificateCheck& c) { return c.valid; })
+      .def("__repr__", [](const eccd::CertificateCheck& c) {
+        return c.valid ? std::string("CertificateCheck(VALID)") : "CertificateCheck(REJECTED: " + c.failed_claim + ": " + c.reason + ")";
+      });
+  m.def("certify", &eccd::certify, py::arg("scene"), py::call_guard<py::gil_scoped_release>(),
+        "Solves the scene exactly and writes a certificate of the answer (raises CertificationError if a claim cannot be made provable)");
+  m.def("check_certificate", &eccd::check_certificate, py::arg("scene"), py::arg("text"), py::call_guard<py::gil_scoped_release>(),
+        "Re-checks a certificate (JSON text) against its scene without the solver; text that is not JSON raises SceneError");
+
   m.def("solve", [](const eccd::Scene& scene, const std::string& arith, const std::string& basis, int variant,
                     const std::string& method, bool first_contact, const std::string& input, double time_limit) {
         const eccd::SolveOptions o = solve_options(arith, basis, variant, method, first_contact, input, time_limit);

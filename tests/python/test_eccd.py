@@ -174,3 +174,32 @@ def test_status_at_follows_the_solution():
     assert eccd.status_at(s, Fraction(1, 2)) == "touching"  # 003 Example 2 touches at t = 1/2
     assert eccd.status_at(s, "1/2") == "touching"
     assert eccd.status_at(s, Fraction(1, 2), arith="double") in ("touching", "uncertain")
+
+
+@pytest.mark.parametrize("name", ["paper003/example2.json", "paper002/example.json"])
+def test_certify_and_check_certificate_round_trip(name):
+    s = eccd.read_scene(case(name))
+    c = eccd.certify(s)
+    assert c.solution.certified
+    assert same_answer(c.solution, s.answer)
+    cert = json.loads(c.text)
+    assert cert["format"] == "eccd-certificate/2"
+    verdict = eccd.check_certificate(s, c.text)
+    assert verdict.valid and verdict
+    assert verdict.checked and verdict.failed_claim == ""
+    # A forged coefficient of f is rejected, naming the claim.
+    cert["f"]["g"][0][0] = str(int(cert["f"]["g"][0][0]) + 1)
+    forged = eccd.check_certificate(s, json.dumps(cert))
+    assert not forged.valid and not forged
+    assert forged.failed_claim and forged.reason
+    assert "REJECTED" in repr(forged)
+
+
+def test_a_certificate_checks_only_against_its_own_scene():
+    s = eccd.read_scene(case("paper003/example2.json"))
+    other = eccd.read_scene(case("paper003/example2-away-1e-3.json"))
+    text = eccd.certify(s).text
+    assert eccd.check_certificate(s, text).valid
+    assert not eccd.check_certificate(other, text).valid
+    with pytest.raises(eccd.SceneError, match="certificate"):
+        eccd.check_certificate(s, "{ not json")
