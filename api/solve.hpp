@@ -18,6 +18,7 @@
 // precision: what it cannot decide is in answer.undecided with the reasons.
 #include "api/options.hpp"
 #include "api/solution.hpp"
+#include "io/scene_error.hpp"  // SceneError
 #include "kernel/scene.hpp"
 
 #include <string>

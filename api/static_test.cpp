@@ -59,15 +59,16 @@ Status scene_status_in(const Scene& scene, const mpq_class& t, const Arithmetic&
 
 template <int N>
 void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& pose, const char* which) {
-  const std::string obj = std::string("static test: object ") + which + ": ";
+  auto fail = [&](const std::string& what) {  // the message is built only when it is needed
+    throw std::invalid_argument(std::string("static test: object ") + which + ": " + what);
+  };
   for (double a : axes)
-    if (!(a > 0) || !std::isfinite(a)) throw std::invalid_argument(obj + "semi-axis " + std::to_string(a) + " is not a positive finite number");
+    if (!(a > 0) || !std::isfinite(a)) fail("semi-axis " + std::to_string(a) + " is not a positive finite number");
   for (const auto& row : pose)
     for (double x : row)
-      if (!std::isfinite(x)) throw std::invalid_argument(obj + "the pose has an entry that is not finite");
+      if (!std::isfinite(x)) fail("the pose has an entry that is not finite");
   for (int j = 0; j < N; ++j)
-    if (pose[N - 1][j] != (j == N - 1 ? 1.0 : 0.0))
-      throw std::invalid_argument(obj + "the pose is not affine (its last row must be 0 ... 0 1)");
+    if (pose[N - 1][j] != (j == N - 1 ? 1.0 : 0.0)) fail("the pose is not affine (its last row must be 0 ... 0 1)");
   // Singular linear part: a cheap double determinant first, the exact one only when that is 0.
   auto det = [](const auto& m) -> std::decay_t<decltype(m[0][0])> {
     if constexpr (N == 3) return m[0][0] * m[1][1] - m[0][1] * m[1][0];
@@ -79,7 +80,7 @@ void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& po
     Mat<Rational, N> q;
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j) q[i][j] = Rational(pose[i][j]);
-    if (Rational(det(q)) == 0) throw std::invalid_argument(obj + "the pose is singular (its linear part has determinant 0)");
+    if (Rational(det(q)) == 0) fail("the pose is singular (its linear part has determinant 0)");
   }
 }
 
@@ -155,15 +156,25 @@ Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<dou
   using T = Bounded<double>;
   const T zero(0.0, 0);
   Mat<T, N> nb = affine_adjugate<T, N>(pose_b);
-  Mat<T, N> r;  // adj(M_b) M_a: b's frame relative to a's
-  for (int i = 0; i < N; ++i)
+  Mat<T, N> r;  // adj(M_b) M_a: b's frame relative to a's; affine, so its last row is (0 ... 0 det R_b)
+  for (int i = 0; i < N - 1; ++i)
     for (int j = 0; j < N; ++j) {
       T s = zero;
       for (int k = 0; k < N; ++k)
         if (pose_a[k][j] != 0) s = s + nb[i][k] * from_double<T>(pose_a[k][j]);
       r[i][j] = s;
     }
-  Mat<T, N> b = moving_quadric_in<T, T, N>(shape_matrix<T, N>(axes_b), r, zero);
+  for (int j = 0; j < N; ++j) r[N - 1][j] = j == N - 1 ? nb[N - 1][N - 1] : zero;
+  // b = Rᵀ Q_b R with Q_b diagonal: b_ij = sum_k q_k r_ki r_kj (40 products in 3D, not 128).
+  Mat<T, N> qb = shape_matrix<T, N>(axes_b), b;
+  for (int i = 0; i < N; ++i)
+    for (int j = i; j < N; ++j) {
+      T s = zero;
+      for (int k = 0; k < N - 1; ++k) s = s + qb[k][k] * r[k][i] * r[k][j];
+      if (i == N - 1 && j == N - 1) s = s + qb[N - 1][N - 1] * r[N - 1][N - 1] * r[N - 1][N - 1];  // the last row's one entry
+      b[i][j] = s;
+      b[j][i] = s;
+    }
   Mat<T, N> qa = shape_matrix<T, N>(axes_a);
   if constexpr (N == 4) {
     return status_of(appendix_a_coefficients(qa[0][0], qa[1][1], qa[2][2], b));

@@ -27,6 +27,11 @@ inline RunBudget& run_budget() {
   return b;
 }
 
+// The backstop of --time-limit for commands that are one pipeline run (solve,
+// certify, check-certificate): SIGALRM at 1.5 x the limit + 2 s ends the
+// process with exit 5; app/main.cpp.
+void arm_backstop(double seconds);
+
 // Validates the generator options (also for report) before any work: exit 2
 // for a combination that generates no scene; app/generate.cpp.
 void check_plan(const GeneratePlan& plan);
@@ -38,6 +43,8 @@ struct Command {
   std::function<int()> run;
 };
 
+Command add_solve_command(CLI::App& app);     // app/solve.cpp
+Command add_table_command(CLI::App& app);     // app/table.cpp
 Command add_generate_command(CLI::App& app);  // app/generate.cpp
 Command add_report_command(CLI::App& app);    // app/report.cpp
 Command add_plot_command(CLI::App& app);      // app/plot.cpp

@@ -132,14 +132,14 @@ Command add_generate_command(CLI::App& app) {
         std::fprintf(stderr, "[%zu/%zu] %s: ", i + 1, specs.size(), g.name.c_str());
         std::fflush(stderr);
         auto start = std::chrono::steady_clock::now();
-        nlohmann::json report = solution_to_json(solve(scene, exact));
+        Solution report = solve(scene, exact);
         double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         total_s += sec;
         g.doc["answer"] = stored_answer_of(report);
         text = compact_json(g.doc) + "\n";
         parse_scene(text, path.string());  // the reader checks the stored answer too
         std::fprintf(stderr, "exact %.3f s, %s, %zu interval(s)\n", sec,
-                     report["collides"].get<bool>() ? "collides" : "free", report["intervals"].size());
+                     report.answer.collides ? "collides" : "free", report.answer.intervals.size());
       }
       files.push_back({path, text});
     }

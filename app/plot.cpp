@@ -15,7 +15,7 @@
 //
 // What is computed how:
 //   - the answer (critical instants, intervals, contacts, 2D contact points):
-//     solve_scene (api/solve.hpp) in --arith;
+//     eccd::solve (api/solve.hpp) in --arith;
 //   - the curve: Δ (2D) or the Bernstein coefficients in u of F (3D) are built
 //     exactly from the prepared scene with the kernel templates
 //     (characteristic_coefficients, cubic_discriminant, ellipsoid_function) and
@@ -99,7 +99,6 @@ json rounded(const std::vector<double>& v) {
   return a;
 }
 
-double approx_of(const json& instant) { return std::stod(instant.at("approx").get<std::string>()); }
 
 // p at each rational t, exactly: integer Horner on L·p (L = lcm of the denominators).
 std::vector<Rational> exact_values(const Poly<Rational>& p, const std::vector<Rational>& ts) {
@@ -274,14 +273,13 @@ json outline_json(const std::vector<double>& c, const Mat<double>& s2) {
 
 // Snapshot instants: K evenly spaced, every contact, the first contact; the
 // flag marks the contact instants (drawn thick).
-std::vector<std::pair<double, bool>> snapshot_instants(int k, const json& rep) {
+std::vector<std::pair<double, bool>> snapshot_instants(int k, const Solution& rep) {
   std::vector<std::pair<double, bool>> ts;
   if (k == 1) ts.push_back({0.0, false});
   for (int i = 0; k > 1 && i < k; ++i) ts.push_back({double(i) / (k - 1), false});
   std::vector<std::pair<double, bool>> special;
-  if (rep["contacts"].is_array())
-    for (const auto& c : rep["contacts"]) special.push_back({approx_of(c), true});
-  if (!rep["first_contact"].is_null()) special.push_back({approx_of(rep["first_contact"]), false});
+  for (const auto& c : rep.answer.contacts) special.push_back({c.value, true});
+  if (rep.answer.first_contact) special.push_back({rep.answer.first_contact->value, false});
   for (auto [s, contact] : special) {
     bool merged = false;
     for (auto& [t, flag] : ts)
@@ -293,7 +291,7 @@ std::vector<std::pair<double, bool>> snapshot_instants(int k, const json& rep) {
 }
 
 template <int N>
-void add_objects(json& data, const Scene& s, const json& rep, int k) {
+void add_objects(json& data, const Scene& s, const Solution& rep, int k) {
   constexpr int d = N - 1;
   auto conv = [](const Rational& q) { return scalar_traits<double>::from_rational(q); };
   const Shape sa = object_shape(s.a, d), sb = object_shape(s.b, d);
@@ -316,14 +314,14 @@ void add_objects(json& data, const Scene& s, const json& rep, int k) {
   data["paths"] = {{"t", rounded(ts)}, {"a", {{"x", rounded(ax)}, {"y", rounded(ay)}}}, {"b", {{"x", rounded(bx)}, {"y", rounded(by)}}}};
 }
 
-std::vector<double> critical_approx(const json& rep) {
+std::vector<double> critical_approx(const Solution& rep) {
   std::vector<double> v;
-  for (const auto& c : rep["critical_instants"]) v.push_back(approx_of(c["t"]));
+  for (const auto& c : rep.critical) v.push_back(c.t.value);
   return v;
 }
 
 // 2D: Δ exactly, sampled exactly; contact points from the report (Lemma 5 of 003).
-void add_curve_2d(json& data, const Scene& s, const json& rep) {
+void add_curve_2d(json& data, const Scene& s, const Solution& rep) {
   PreparedPair<3> p = prepare_pair<3>(s);
   MovingPair<Rational, 3> m = to_arithmetic<Rational, 3>(p, Rational(1));
   std::vector<Poly<Rational>> g = characteristic_of(m);
@@ -341,27 +339,25 @@ void add_curve_2d(json& data, const Scene& s, const json& rep) {
                    {"t", rounded(td)},
                    {"value", val}};  // full double: near a root the small values matter on a log scale
   json contacts = json::array();
-  if (rep["contacts"].is_array())
-    for (std::size_t i = 0; i < rep["contacts"].size(); ++i) {
-      json c = {{"t", approx_of(rep["contacts"][i])}};
-      if (i < rep["contact_points"].size() && rep["contact_points"][i].size() == 2)
-        c["point"] = {std::stod(rep["contact_points"][i][0].get<std::string>()),
-                      std::stod(rep["contact_points"][i][1].get<std::string>())};
-      contacts.push_back(c);
-    }
+  const Answer& ans = rep.answer;
+  for (std::size_t i = 0; i < ans.contacts.size(); ++i) {
+    json c = {{"t", ans.contacts[i].value}};
+    if (i < ans.contact_points.size() && ans.contact_points[i].x.size() == 2)  // decimal text of Lemma 5's point, display only
+      c["point"] = {std::stod(ans.contact_points[i].x[0]), std::stod(ans.contact_points[i].x[1])};
+    contacts.push_back(c);
+  }
   data["contacts"] = contacts;
 }
 
 // 3D: F's u-Bernstein coefficients exactly, sampled exactly in t; F in u by de Casteljau.
-void add_curve_3d(json& data, const Scene& s, const json& rep) {
+void add_curve_3d(json& data, const Scene& s, const Solution& rep) {
   PreparedPair<4> p = prepare_pair<4>(s);
   MovingPair<Rational, 4> m = to_arithmetic<Rational, 4>(p, Rational(1));
   std::vector<Poly<Rational>> g = characteristic_of(m);
   BiBern<Rational> F = ellipsoid_function(g, Rational(1));
   std::vector<double> extra = critical_approx(rep);
   std::vector<double> contact_t;
-  if (rep["contacts"].is_array())
-    for (const auto& c : rep["contacts"]) contact_t.push_back(approx_of(c));
+  for (const auto& c : rep.answer.contacts) contact_t.push_back(c.value);
   extra.insert(extra.end(), contact_t.begin(), contact_t.end());
   std::vector<Rational> ts = grid_with(kGrid, extra);
   const int m_u = F.degree_u();
@@ -468,12 +464,12 @@ std::string find_python(std::string& tried) {
   return "";
 }
 
-std::string answer_words(const json& rep) {
+std::string answer_words(const Solution& rep) {
   std::ostringstream o;
-  if (!rep["collides"].get<bool>()) return "free";
+  if (!rep.answer.collides) return "free";
   o << "collides";
-  if (rep["intervals"].is_array()) o << ", " << rep["intervals"].size() << " interval(s)";
-  if (!rep["first_contact"].is_null()) o << ", first contact t = " << rep["first_contact"]["approx"].get<std::string>();
+  o << ", " << rep.answer.intervals.size() << " interval(s)";
+  if (rep.answer.first_contact) o << ", first contact t = " << rep.answer.first_contact->approx;
   return o.str();
 }
 
@@ -497,10 +493,10 @@ int run_plot(const PlotOptions& o) {
   }
   SolveOptions opt;
   opt.arith = parse_arithmetic(arith_text);  // std::invalid_argument -> exit 2
-  json rep;
+  Solution rep;
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
-    rep = solution_to_json(solve(s, opt));
+    rep = solve(s, opt);
     if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
   } catch (const std::invalid_argument& e) {
     std::cerr << "eccd plot: " << o.scene << ": " << e.what() << "\n";
@@ -528,7 +524,7 @@ int run_plot(const PlotOptions& o) {
   data["dim"] = s.dim;
   data["arith"] = opt.arith.name();
   data["arith_note"] = arith_note;
-  data["solve"] = rep;
+  data["solve"] = solution_to_json(rep);
   if (s.dim == 2) {
     add_objects<3>(data, s, rep, o.instants);
     add_curve_2d(data, s, rep);
@@ -579,7 +575,7 @@ int run_plot(const PlotOptions& o) {
   }
   else fs::remove(tmp_data, ec);
   std::cout << "wrote " << out.string() << ": scene " << s.name << " (" << s.dim << "D), " << answer_words(rep)
-            << " [" << opt.arith.name() << (rep["certified"].get<bool>() ? ", certified" : ", not certified") << "]";
+            << " [" << opt.arith.name() << (rep.certified ? ", certified" : ", not certified") << "]";
   if (!o.data.empty()) std::cout << "; data " << o.data;
   std::cout << "\n";
   return 0;

@@ -73,6 +73,7 @@
 //   --eccd_profile_seconds=S  one repetition of at least S seconds per row
 //                         (the report runs a missed target's row so under perf)
 #include "api/solve.hpp"
+#include "api/static_test.hpp"
 #include "io/solution_json.hpp"
 #include "bench/isolation.hpp"
 #include "exact/algebraic_roots.hpp"
@@ -403,10 +404,12 @@ struct Static3D {
   std::vector<std::array<double, 3>> e;  // ea, eb, ec of A
   std::vector<M4> a, b;                  // A = diag(ea, eb, ec, -1) and B in A's frame
   std::vector<std::vector<double>> coeffs;  // Appendix A coefficients (for the status-only row)
+  std::vector<Ellipsoid> pa, pb;            // the same pairs as a user gives them: semi-axes and poses (the API's input)
 };
 struct Static2D {
   std::vector<M3> a, b;
   std::vector<std::vector<double>> coeffs;
+  std::vector<Ellipse> pa, pb;
 };
 
 Static3D make_static3d() {
@@ -450,6 +453,16 @@ Static3D make_static3d() {
     s.e.push_back(ea);
     s.a.push_back(A);
     s.b.push_back(B);
+    // Poses: A at the origin, B's frame mapped to the world by X = R Y + c.
+    Ellipsoid pa{{a1, a2, a3}, {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}};
+    Ellipsoid pb{{b1, b2, b3}, {}};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) pb.pose[i][j] = R[i][j];
+      pb.pose[i][3] = c[i];
+    }
+    pb.pose[3] = {0, 0, 0, 1};
+    s.pa.push_back(pa);
+    s.pb.push_back(pb);
     { auto c = appendix_a_coefficients(ea[0], ea[1], ea[2], B); s.coeffs.emplace_back(c.begin(), c.end()); }
   }
   return s;
@@ -483,6 +496,8 @@ Static2D make_static2d() {
     s.a.push_back(A);
     s.b.push_back(B);
     s.coeffs.push_back(characteristic_coefficients_in<double, 3>(A, B, 0.0));
+    s.pa.push_back(Ellipse{{a1, a2}, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
+    s.pb.push_back(Ellipse{{b1, b2}, {{{R[0][0], R[0][1], c[0]}, {R[1][0], R[1][1], c[1]}, {0, 0, 1}}}});
   }
   return s;
 }
@@ -501,7 +516,10 @@ json status_counts(const std::vector<Status>& v) {
 void register_static() {
   group("static3d", "3D static separation test in double (per pair)",
         "A batch of 1024 random ellipsoid pairs, A in standard position (diag(1/a², 1/b², 1/c², -1)), B rotated and "
-        "translated into A's frame; one pair per iteration. Coefficients of f(λ) = det(λA - B) by the generic "
+        "translated into A's frame; one pair per iteration. The target row 'Appendix A + Sturm' times the API, "
+        "eccd::static_status from the two ellipsoids' semi-axes and poses (api/static_test.hpp: the relative pose, "
+        "Appendix A and the Sturm count in Bounded<double>, uncertain where double cannot decide). The other rows "
+        "split plain double on B given in A's frame: coefficients of f(λ) = det(λA - B) by the generic "
         "determinant expansion (2^4 column choices, kernel/characteristic_polynomial.hpp) or by 001 Appendix A "
         "(kernel/fast_quartic.hpp, 40 multiplications + det B by cofactors); status from the Sturm count of the "
         "negative roots (kernel/quartic_status.hpp). Rows 'coefficients only' and 'status only' split the time.",
@@ -525,7 +543,22 @@ void register_static() {
           return all3([&](int k) { return quartic_contact_status(characteristic_coefficients_in<double, 4>(s.a[k], s.b[k], 0.0)); });
         });
       });
-  row("static3d", "Appendix A + Sturm", false, Cost::fast, "appendix_a_coefficients + quartic_contact_status (the target row)",
+  // The target row: what a user's program runs, eccd::static_status (api/static_test.hpp) from the two
+  // ellipsoids' semi-axes and poses: B's pose relative to A's, 001 Appendix A and the Sturm count, in
+  // Bounded<double> (uncertain where double's error bound is not decisive).
+  row("static3d", "Appendix A + Sturm", false, Cost::fast,
+      "eccd::static_status(a, b) from two poses (the API: relative pose, Appendix A, Sturm, with error bound; the target row)",
+      [all3](benchmark::State& st) {
+        const Static3D& s = static3d.get();
+        int i = 0;
+        auto f = [&] {
+          i = (i + 1) & (kBatch - 1);
+          return static_status(s.pa[i], s.pb[i]);
+        };
+        timed(st, "static3d/Appendix A + Sturm", f, [&](Status) { return all3([&](int k) { return static_status(s.pa[k], s.pb[k]); }); });
+      });
+  row("static3d", "Appendix A + Sturm, plain double, B given in A's frame", false, Cost::fast,
+      "appendix_a_coefficients + quartic_contact_status in plain double on precomputed B (no pose, no error bound)",
       [all3](benchmark::State& st) {
         const Static3D& s = static3d.get();
         int i = 0;
@@ -533,7 +566,7 @@ void register_static() {
           i = (i + 1) & (kBatch - 1);
           return quartic_contact_status(appendix_a_coefficients(s.e[i][0], s.e[i][1], s.e[i][2], s.b[i]));
         };
-        timed(st, "static3d/Appendix A + Sturm", f, [&](Status) {
+        timed(st, "static3d/Appendix A + Sturm, plain double, B given in A's frame", f, [&](Status) {
           return all3([&](int k) { return quartic_contact_status(appendix_a_coefficients(s.e[k][0], s.e[k][1], s.e[k][2], s.b[k])); });
         });
       });
@@ -562,8 +595,10 @@ void register_static() {
   group("static2d", "2D static separation test in double (per pair)",
         "A batch of 1024 random pairs of ellipses, A axis-aligned at the origin, B rotated and translated; one pair per "
         "iteration. Coefficients g0..g3 of the cubic f(λ) = det(λA - B) by the generic determinant expansion "
-        "(2^3 column choices; 001 Appendix A is a 4x4 formula and has no 2D counterpart in the workbench), status by "
-        "003 Theorem 6 from signs only (discriminant, Descartes; kernel/contact_status.hpp).",
+        "(2^3 column choices), status by 003 Theorem 6 from signs only (discriminant, Descartes; "
+        "kernel/contact_status.hpp). Row 'static_status (API, two poses)' is what a user's program runs: "
+        "eccd::static_status from the semi-axes and poses (api/static_test.hpp: B relative to A, the 3x3 analogue "
+        "of 001 Appendix A, with double's error bound).",
         "003 gives no static timing; 000: about 8 µs per static 3D test with root solving (for scale)");
   auto all2 = [](auto status_of) {
     std::vector<Status> v;
@@ -580,6 +615,15 @@ void register_static() {
         };
         auto f = [&] { i = (i + 1) & (kBatch - 1); return st_of(i); };
         timed(st, "static2d/generic det + cubic rule", f, [&](Status) { return all2(st_of); });
+      });
+  row("static2d", "static_status (API, two poses)", false, Cost::fast,
+      "eccd::static_status(a, b) from two poses (the API: relative pose, closed-form cubic, 003 Theorem 6 rule, with error bound)",
+      [all2](benchmark::State& st) {
+        const Static2D& s = static2d.get();
+        int i = 0;
+        auto st_of = [&](int k) { return static_status(s.pa[k], s.pb[k]); };
+        auto f = [&] { i = (i + 1) & (kBatch - 1); return st_of(i); };
+        timed(st, "static2d/static_status (API, two poses)", f, [&](Status) { return all2(st_of); });
       });
   row("static2d", "generic det, coefficients only", false, Cost::fast, "characteristic_coefficients_in<double,3>",
       [](benchmark::State& st) {
@@ -1126,8 +1170,8 @@ struct SolveRow {
 SolveOptions opts(const char* arith, int variant, const char* method = "bezier") {
   SolveOptions o;
   o.arith = parse_arithmetic(arith);
-  o.variant = variant;
-  o.method = method;
+  o.variant = Variant(variant);
+  std::tie(o.method, o.grid) = parse_method(method);
   return o;
 }
 
@@ -1159,7 +1203,7 @@ void register_solve_scene() {
     SolveOptions o = r.options();
     int dim = r.dim;
     row(grp, label, baseline, label.find("exact") != std::string::npos && dim == 3 ? Cost::very_slow : Cost::slow,
-        "solve_scene, arith " + o.arith.name() + (dim == 2 ? ", variant " + std::to_string(o.variant) : ", method " + o.method),
+        "solve_scene, arith " + o.arith.name() + (dim == 2 ? ", variant " + std::to_string(int(o.variant)) : ", method " + o.method_name()),
         [grp, label, o, dim](benchmark::State& st) {
           const Scene& sc = dim == 2 ? s2d_deg6.get().scene : s3d_paper002.get().scene;
           timed(st, grp + "/" + label, [&] { return solution_to_json(solve(sc, o)); }, [](const json& j) {

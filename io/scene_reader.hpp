@@ -66,6 +66,7 @@
 //     characters and "...").
 #include "number/rational_traits.hpp"
 #include "kernel/answer.hpp"
+#include "io/scene_error.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -75,9 +76,6 @@
 
 namespace eccd {
 
-struct SceneError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Limits on what a scene may ask for (choice 14). Defaults: 8 MiB files,
 // 1000 digits per numerator / denominator, motion polynomials of degree 32.

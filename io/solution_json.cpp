@@ -109,7 +109,10 @@ std::string summary_text(const Solution& s) {
   std::string poly = s.projection == "bezier" ? "F(u,t) of degree " + std::to_string(s.projection_degree) + " in t"
                                               : s.projection + " degree " + std::to_string(s.projection_degree);
   o << "  status at t = 0: " << to_string(s.status_at_0) << "; " << poly
-    << (s.projection_identically_zero ? " (identically zero)" : "") << ", " << s.critical.size() << " root(s) in [0, 1]\n";
+    << (!s.projection_identically_zero ? ""
+        : s.projection.rfind("psc_", 0) == 0 ? " (the discriminant vanishes identically)"
+                                              : " (identically zero)")
+    << ", " << s.critical.size() << " root(s) in [0, 1]\n";
   o << "  collides: " << (s.answer.collides ? "yes" : "no") << "\n";
   if (!two_d_partial)
     for (const auto& [a, b] : s.answer.intervals) {

@@ -73,3 +73,17 @@ TEST_CASE("eccd solve on a 3D scene: every method prints one JSON object with it
   CHECK(out.empty());
   CHECK(run(std::string(ECCD_EXE) + " solve " + scene + " --arith double --method simplex", out) == 2);
 }
+
+TEST_CASE("eccd solve's summary names the polynomial: discriminant or psc_k, and F(u,t) for the Bezier method", "[app][cli]") {
+  const std::string scene = std::string(ECCD_SOURCE_DIR) + "/cases/paper002/example.json";
+  std::string out;
+  REQUIRE(run(std::string(ECCD_EXE) + " solve " + scene + " --arith double", out) == 0);
+  // The Bezier method has no univariate projection: its degree is F(u,t)'s in t (36 for 002's example), not a discriminant's.
+  CHECK(out.find("F(u,t) of degree 36 in t") != std::string::npos);
+  CHECK(out.find("discriminant degree") == std::string::npos);
+  REQUIRE(run(std::string(ECCD_EXE) + " solve " + scene + " --arith exact", out) == 0);
+  CHECK(out.find("discriminant degree 216") != std::string::npos);
+  const std::string spheres = std::string(ECCD_SOURCE_DIR) + "/cases/spheres/spheres-crossing.json";
+  REQUIRE(run(std::string(ECCD_EXE) + " solve " + spheres + " --arith exact", out) == 0);
+  CHECK(out.find("psc_") != std::string::npos);  // two spheres: Δ ≡ 0, the projection is a subresultant coefficient
+}
