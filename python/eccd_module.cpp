@@ -13,7 +13,6 @@
 // eccd.SceneError (a ValueError) whose message names the file, the place and
 // what is wrong; a request the pipelines refuse raises ValueError.
 #include "eccd/eccd.hpp"
-#include "io/scene_reader.hpp"  // SceneError
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
