@@ -286,7 +286,10 @@ std::string poly_text(const RPoly& p) {
     mpq_class a = abs(c);
     std::string term;
     if (i == 0 || a != 1) term = a.get_str();
-    if (i > 0) term.append(term.empty() ? "t" : " t").append(i > 1 ? std::string("^").append(std::to_string(i)) : std::string());  // no const char* + string: GCC 12's false -Wrestrict
+    if (i > 0) {  // appended piece by piece: GCC 12's -Wrestrict misfires on "^" + std::to_string(i) here
+      term += term.empty() ? "t" : " t";
+      if (i > 1) term += '^' + std::to_string(i);
+    }
     if (r.empty()) r = (sgn(c) < 0 ? "-" : "") + term;
     else r += (sgn(c) < 0 ? " - " : " + ") + term;
     if (r.size() > 200) return r + " ...";
