@@ -20,7 +20,7 @@ std::string Arithmetic::name() const {
     case Certified: {
       if (mpfi_rungs == std::vector<int>{256}) return "certified";
       std::string n = "certified:";
-      for (std::size_t i = 0; i < mpfi_rungs.size(); ++i) n += (i ? "," : "") + std::to_string(mpfi_rungs[i]);
+      for (std::size_t i = 0; i < mpfi_rungs.size(); ++i) n.append(i ? "," : "").append(std::to_string(mpfi_rungs[i]));  // no const char* + string: GCC 12's false -Wrestrict
       return mpfi_rungs.empty() ? n + "none" : n;
     }
     default: return "exact";
@@ -36,7 +36,7 @@ Arithmetic Arithmetic::double_precision() {
 Arithmetic Arithmetic::mpfr(int bits) { return parse_arithmetic("mpfr:" + std::to_string(bits)); }
 Arithmetic Arithmetic::certified(std::vector<int> rungs) {
   std::string n = "certified:";
-  for (std::size_t i = 0; i < rungs.size(); ++i) n += (i ? "," : "") + std::to_string(rungs[i]);
+  for (std::size_t i = 0; i < rungs.size(); ++i) n.append(i ? "," : "").append(std::to_string(rungs[i]));  // (as above)
   return parse_arithmetic(rungs.empty() ? n + "none" : n);
 }
 

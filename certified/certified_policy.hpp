@@ -1,7 +1,7 @@
 #pragma once
 // The certified policy: kernel/cd_disc.hpp (2D) and kernel/ccd_projection.hpp
 // (3D) in interval arithmetic (number/interval.hpp), where every decision is
-// proved or the scene escalates (`--arith certified`, api/solve.cpp).
+// proved or the scene escalates (`--arith certified`, certified/ladder.hpp).
 //
 // Statement. The projection polynomial (Δ in 2D, the discriminant or psc_k in
 // 3D) is built in Bernstein form over intervals that enclose the exact
@@ -19,7 +19,7 @@
 // scene), a possible root at a split point, a projection that may vanish
 // identically — throws Escalate, and the caller re-solves the scene in a
 // stronger arithmetic: the same policy over MPFI intervals of higher
-// precision, then exact rationals (the ladder is api/solve.cpp's
+// precision, then exact rationals (the ladder is certified/ladder.hpp's
 // run_certified). With no Escalate, the answer is certified: brackets are
 // dyadic rationals that provably hold one root each.
 // Requirements on T: Interval or MpfiInterval — scalar_traits<T> whose sign()

@@ -534,7 +534,7 @@ struct Checker {
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
   CertificateCheck out;
-  Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}};
+  Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
   try {
     c.run();
     out.valid = true;

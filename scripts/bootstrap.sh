@@ -3,7 +3,7 @@
 # and builds into ./build. Used by both README commands and by .ci/run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 python3-matplotlib"
+PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 python3-matplotlib python3-dev pybind11-dev python3-pybind11 python3-pytest ccache"
 missing=""
 for p in $PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -14,5 +14,10 @@ if [ -n "$missing" ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing >&2
 fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# ccache: the CTest test package_consumer builds eccd's libraries again as a
+# subproject of a consumer; with the same flags and absolute paths those
+# compilations are cache hits of this build.
+launcher=""
+command -v ccache >/dev/null && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release $launcher >/dev/null
 cmake --build build -j"$(nproc)" >&2

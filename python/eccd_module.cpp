@@ -1,0 +1,215 @@
+// The Python module eccd: the typed C++ API (include/eccd/eccd.hpp) for
+// Python, with pybind11. Nothing is computed here: every function calls the
+// API and converts its types.
+//
+//   import eccd
+//   s = eccd.read_scene("cases/paper003/example2.json")   # or eccd.scene_from_dict(d), eccd.scene_from_text(t)
+//   r = eccd.solve(s, arith="exact")                        # "double", "mpfr:128", "exact", "certified", ...
+//   r.collides, r.intervals, r.first_contact, r.contacts    # instants: .approx (float), .lo / .hi (Fraction or None)
+//
+// Types: an Instant's bracket [lo, hi] is exact (fractions.Fraction, made
+// from the rational's text, never through a float); .approx is the
+// approximation as a float, for display only. Errors: a bad scene raises
+// eccd.SceneError (a ValueError) whose message names the file, the place and
+// what is wrong; a request the pipelines refuse raises ValueError.
+#include "eccd/eccd.hpp"
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace {
+
+py::object fraction(const std::optional<mpq_class>& q) {
+  if (!q) return py::none();
+  static py::object Fraction = py::module_::import("fractions").attr("Fraction");
+  return Fraction(q->get_str());
+}
+
+std::string instant_repr(const eccd::Instant& i) {
+  std::string r = "Instant(" + i.approx;
+  if (i.certified()) r += ", [" + i.lo->get_str() + ", " + i.hi->get_str() + "]";
+  return r + ")";
+}
+
+py::list instant_pairs(const std::vector<std::pair<eccd::Instant, eccd::Instant>>& v) {
+  py::list out;
+  for (const auto& [a, b] : v) out.append(py::make_tuple(a, b));
+  return out;
+}
+
+// The answer's properties, shared by Answer (a scene's stored answer) and
+// Solution (what solve returns); Get maps the bound object to its Answer.
+std::string answer_repr(const std::string& head, const eccd::Answer& a) {
+  std::string r = head + "collides=" + (a.collides ? "True" : "False") + ", intervals=[";
+  for (std::size_t i = 0; i < a.intervals.size(); ++i)
+    r += (i ? ", (" : "(") + instant_repr(a.intervals[i].first) + ", " + instant_repr(a.intervals[i].second) + ")";
+  r += "]";
+  if (!a.contact_intervals.empty()) r += ", contact_intervals=" + std::to_string(a.contact_intervals.size());
+  if (!a.undecided.empty()) r += ", undecided=" + std::to_string(a.undecided.size());
+  return r + ")";
+}
+
+template <class C, class Get>
+void answer_properties(py::class_<C>& c, Get get) {
+  c.def_property_readonly("collides", [get](const C& x) { return get(x).collides; })
+      .def_property_readonly("intervals", [get](const C& x) { return instant_pairs(get(x).intervals); },
+                             "the maximal collision intervals: a list of (Instant, Instant)")
+      .def_property_readonly("first_contact", [get](const C& x) { return get(x).first_contact; }, "an Instant or None")
+      .def_property_readonly("contacts", [get](const C& x) { return get(x).contacts; }, "the instants of external tangency")
+      .def_property_readonly("contact_intervals", [get](const C& x) { return instant_pairs(get(x).contact_intervals); },
+                             "intervals of continuous touching (docs/answer-format.md)")
+      .def_property_readonly("undecided", [get](const C& x) { return get(x).undecided; },
+                             "floating runs: the instants they could not classify");
+}
+
+eccd::SolveOptions solve_options(const std::string& arith, const std::string& basis, int variant, const std::string& method,
+                                 bool first_contact, const std::string& input, double time_limit) {
+  eccd::SolveOptions o;
+  o.arith = eccd::parse_arithmetic(arith);
+  o.basis = eccd::parse_basis(basis);
+  if (variant < 0 || variant > 3) throw std::invalid_argument("variant must be 0 (answer), 1 (collides), 2 (first contact) or 3 (all contacts)");
+  o.variant = static_cast<eccd::Variant>(variant);
+  std::tie(o.method, o.grid) = eccd::parse_method(method);
+  o.first_contact = first_contact;
+  o.input = eccd::parse_input_mode(input);
+  if (time_limit < 0) throw std::invalid_argument("time_limit must be >= 0 seconds");
+  o.time_limit_s = time_limit;
+  return o;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(eccd, m) {
+  m.doc() = "eccd: exact continuous collision detection of moving ellipses and ellipsoids (double, MPFR, exact, certified)";
+  py::register_exception<eccd::SceneError>(m, "SceneError", PyExc_ValueError);
+
+  py::class_<eccd::Instant>(m, "Instant", "An instant of the answer: .approx (float), .lo / .hi (Fraction, where certified)")
+      .def_property_readonly("approx", [](const eccd::Instant& i) { return i.value; }, "the approximation as a float (display only)")
+      .def_property_readonly("approx_text", [](const eccd::Instant& i) { return i.approx; }, "the decimal approximation as text")
+      .def_property_readonly("lo", [](const eccd::Instant& i) { return fraction(i.lo); }, "fractions.Fraction, or None if not certified")
+      .def_property_readonly("hi", [](const eccd::Instant& i) { return fraction(i.hi); }, "fractions.Fraction, or None if not certified")
+      .def_property_readonly("certified", &eccd::Instant::certified)
+      .def("__float__", [](const eccd::Instant& i) { return i.value; })
+      .def("__repr__", &instant_repr);
+
+  py::class_<eccd::Answer> answer(m, "Answer", "A scene's stored answer");
+  answer_properties(answer, [](const eccd::Answer& a) -> const eccd::Answer& { return a; });
+  answer.def("__repr__", [](const eccd::Answer& a) { return answer_repr("Answer(", a); });
+
+  py::class_<eccd::Scene>(m, "Scene", "A scene: two objects and their motions on t in [0, 1]")
+      .def_readonly("name", &eccd::Scene::name)
+      .def_readonly("path", &eccd::Scene::path)
+      .def_readonly("note", &eccd::Scene::note)
+      .def_readonly("dim", &eccd::Scene::dim)
+      .def_readonly("answer", &eccd::Scene::answer, "the answer stored in the scene file, or None")
+      .def("__repr__", [](const eccd::Scene& s) { return "Scene('" + s.name + "', dim=" + std::to_string(s.dim) + ")"; });
+
+  py::class_<eccd::Solution> solution(m, "Solution", "What solve returns: the answer and the run's diagnostics");
+  answer_properties(solution, [](const eccd::Solution& s) -> const eccd::Answer& { return s.answer; });
+  solution.def_readonly("answer", &eccd::Solution::answer)
+      .def_readonly("certified", &eccd::Solution::certified, "every instant carries a proved rational bracket")
+      .def_property_readonly("decided", &eccd::Solution::decided, "nothing is undecided")
+      .def_property_readonly("arith", [](const eccd::Solution& s) { return s.arith.name(); })
+      .def_readonly("dim", &eccd::Solution::dim)
+      .def_readonly("basis", &eccd::Solution::basis)
+      .def_readonly("method", &eccd::Solution::method)
+      .def_property_readonly("status_at_0", [](const eccd::Solution& s) { return std::string(eccd::to_string(s.status_at_0)); })
+      .def_readonly("projection", &eccd::Solution::projection)
+      .def_readonly("projection_degree", &eccd::Solution::projection_degree)
+      .def_property_readonly("critical", [](const eccd::Solution& s) {
+            py::list out;
+            for (const auto& c : s.critical) out.append(py::make_tuple(c.t, std::string(eccd::to_string(c.status)), c.multiplicity));
+            return out;
+          }, "the critical instants: a list of (Instant, status, multiplicity)")
+      .def_readonly("undecided_reasons", &eccd::Solution::undecided_reasons)
+      .def_property_readonly("work", [](const eccd::Solution& s) {
+            py::dict d;
+            for (const auto& [k, v] : s.work) d[py::str(k)] = v;
+            return d;
+          })
+      .def_readonly("time_ms", &eccd::Solution::time_ms)
+      .def_readonly("setup_ms", &eccd::Solution::setup_ms)
+      .def_readonly("decided_in", &eccd::Solution::decided_in, "certified runs: the rung that decided")
+      .def_property_readonly("escalations", [](const eccd::Solution& s) {
+            py::list out;
+            for (const auto& e : s.escalations) out.append(py::make_tuple(e.rung, e.reason));
+            return out;
+          }, "certified runs: (rung, why it gave up) for each lower rung")
+      .def("__repr__", [](const eccd::Solution& s) { return answer_repr("Solution(arith=" + s.arith.name() + ", ", s.answer); });
+
+  m.def("read_scene", &eccd::read_scene, py::arg("path"), "Reads and validates a scene file (raises SceneError naming the file and the place)");
+  m.def("scene_from_text", &eccd::scene_from_text, py::arg("text"), py::arg("label") = "<string>",
+        "A scene from its JSON text (errors name the label)");
+  m.def("scene_from_dict", [](const py::dict& d, const std::string& label) {
+        const std::string text = py::module_::import("json").attr("dumps")(d).cast<std::string>();
+        return eccd::scene_from_text(text, label);
+      }, py::arg("scene"), py::arg("label") = "<dict>",
+      "A scene from a dict in the scene format (numbers as strings, as in the files)");
+  py::class_<eccd::Ellipse>(m, "Ellipse", "An ellipse: semi-axes (a, b) along its own x, y and a 3x3 homogeneous pose (its frame -> world)")
+      .def(py::init([](const std::array<double, 2>& semi_axes, const std::array<std::array<double, 3>, 3>& pose) {
+             return eccd::Ellipse{semi_axes, pose};
+           }), py::arg("semi_axes"), py::arg("pose") = std::array<std::array<double, 3>, 3>{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}})
+      .def_readwrite("semi_axes", &eccd::Ellipse::semi_axes)
+      .def_readwrite("pose", &eccd::Ellipse::pose);
+  py::class_<eccd::Ellipsoid>(m, "Ellipsoid", "An ellipsoid: semi-axes (a, b, c) and a 4x4 homogeneous pose (its frame -> world)")
+      .def(py::init([](const std::array<double, 3>& semi_axes, const std::array<std::array<double, 4>, 4>& pose) {
+             return eccd::Ellipsoid{semi_axes, pose};
+           }), py::arg("semi_axes"), py::arg("pose") = std::array<std::array<double, 4>, 4>{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}})
+      .def_readwrite("semi_axes", &eccd::Ellipsoid::semi_axes)
+      .def_readwrite("pose", &eccd::Ellipsoid::pose);
+
+  m.def("static_status", [](const eccd::Ellipse& a, const eccd::Ellipse& b, const std::string& arith) {
+        return std::string(eccd::to_string(eccd::static_status(a, b, eccd::parse_arithmetic(arith))));
+      }, py::arg("a"), py::arg("b"), py::arg("arith") = "double",
+      "The status of two ellipses at their poses: 'separate', 'touching', 'overlapping' or (double) 'uncertain'; arith 'double' or 'exact'");
+  m.def("static_status", [](const eccd::Ellipsoid& a, const eccd::Ellipsoid& b, const std::string& arith) {
+        return std::string(eccd::to_string(eccd::static_status(a, b, eccd::parse_arithmetic(arith))));
+      }, py::arg("a"), py::arg("b"), py::arg("arith") = "double",
+      "The status of two ellipsoids at their poses (double: 001 Appendix A with its error bound; exact: proved)");
+  m.def("status_at", [](const eccd::Scene& scene, const py::object& t, const std::string& arith) {
+        static py::object Fraction = py::module_::import("fractions").attr("Fraction");
+        const mpq_class q(py::str(Fraction(t)).cast<std::string>());  // exact: a float is taken at its exact binary value
+        return std::string(eccd::to_string(eccd::status_at(scene, q, eccd::parse_arithmetic(arith))));
+      }, py::arg("scene"), py::arg("t"), py::arg("arith") = "exact",
+      "The status of the scene's objects at instant t (a Fraction, int, str like '1/3', or float), 0 <= t <= 1");
+
+  py::register_exception<eccd::CertificationError>(m, "CertificationError", PyExc_RuntimeError);
+  py::class_<eccd::Certificate>(m, "Certificate", "certify's result: the certificate (JSON text, eccd-certificate/2) and the Solution it proves")
+      .def_readonly("text", &eccd::Certificate::text)
+      .def_readonly("solution", &eccd::Certificate::solution)
+      .def("__repr__", [](const eccd::Certificate& c) {
+        return "Certificate(" + std::to_string(c.text.size()) + " characters, " + answer_repr("", c.solution.answer) + ")";
+      });
+  py::class_<eccd::CertificateCheck>(m, "CertificateCheck", "The checker's verdict: valid, the claims that hold, the first that does not")
+      .def_readonly("valid", &eccd::CertificateCheck::valid)
+      .def_readonly("checked", &eccd::CertificateCheck::checked)
+      .def_readonly("failed_claim", &eccd::CertificateCheck::failed_claim)
+      .def_readonly("reason", &eccd::CertificateCheck::reason)
+      .def("__bool__", [](const eccd::CertificateCheck& c) { return c.valid; })
+      .def("__repr__", [](const eccd::CertificateCheck& c) {
+        return c.valid ? std::string("CertificateCheck(VALID)") : "CertificateCheck(REJECTED: " + c.failed_claim + ": " + c.reason + ")";
+      });
+  m.def("certify", &eccd::certify, py::arg("scene"), py::call_guard<py::gil_scoped_release>(),
+        "Solves the scene exactly and writes a certificate of the answer (raises CertificationError if a claim cannot be made provable)");
+  m.def("check_certificate", &eccd::check_certificate, py::arg("scene"), py::arg("text"), py::call_guard<py::gil_scoped_release>(),
+        "Re-checks a certificate (JSON text) against its scene without the solver; text that is not JSON raises SceneError");
+
+  m.def("solve", [](const eccd::Scene& scene, const std::string& arith, const std::string& basis, int variant,
+                    const std::string& method, bool first_contact, const std::string& input, double time_limit) {
+        const eccd::SolveOptions o = solve_options(arith, basis, variant, method, first_contact, input, time_limit);
+        py::gil_scoped_release unlocked;
+        return eccd::solve(scene, o);
+      }, py::arg("scene"), py::arg("arith") = "exact", py::arg("basis") = "bernstein", py::arg("variant") = 0,
+      py::arg("method") = "bezier", py::arg("first_contact") = false, py::arg("input") = "rounded", py::arg("time_limit") = 0.0,
+      "Solves a scene. arith: 'double', 'mpfr:BITS', 'exact', 'certified[:B1,B2,...|:none]'; the other options as on the command line "
+      "(basis: power|bernstein|scaled-bernstein; variant 0-3 (2D); method: bezier|projection|sampling:N|marching:N (3D floating); "
+      "input: rounded|prepared (floating); time_limit in seconds, 0 = default)");
+}

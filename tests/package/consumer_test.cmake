@@ -1,0 +1,84 @@
+# The CTest test package_consumer (cmake -P): eccd used as a consumer uses it.
+#  1. cmake --install the build tree into WORK_DIR/prefix; check the headers
+#     (include/eccd/eccd.hpp), the program, the package files are there and
+#     that CGAL's definitions did not leak into the exported targets;
+#  2. configure, build and run tests/package/consumer/ with find_package(eccd);
+#  3. the same with add_subdirectory(eccd source tree), BUILD_TESTING off.
+# The consumer solves cases/paper002/example.json exactly and exits 0 only if
+# its answer agrees with the stored one. Arguments (-D): ECCD_SOURCE_DIR,
+# ECCD_BINARY_DIR, WORK_DIR, CXX_COMPILER, CXX_LAUNCHER (may be empty), BUILD_TYPE.
+cmake_minimum_required(VERSION 3.18)
+foreach(v ECCD_SOURCE_DIR ECCD_BINARY_DIR WORK_DIR CXX_COMPILER)
+  if(NOT ${v})
+    message(FATAL_ERROR "consumer_test.cmake: -D${v}=... is required")
+  endif()
+endforeach()
+if(NOT BUILD_TYPE)
+  set(BUILD_TYPE Release)
+endif()
+set(prefix ${WORK_DIR}/prefix)
+set(scene ${ECCD_SOURCE_DIR}/cases/paper002/example.json)
+set(common -DCMAKE_BUILD_TYPE=${BUILD_TYPE} -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+if(CXX_LAUNCHER)
+  list(APPEND common -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_LAUNCHER})
+endif()
+
+function(step what)
+  string(TIMESTAMP t0 "%s")
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(TIMESTAMP t1 "%s")
+  math(EXPR dt "${t1} - ${t0}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what}: failed (${rc})\n${out}\n${err}")
+  endif()
+  message(STATUS "${what}: ok (${dt} s)")
+  set(step_output "${out}" PARENT_SCOPE)
+endfunction()
+
+function(run_consumer how build_dir)
+  step("${how}: run the consumer on cases/paper002/example.json" ${build_dir}/app ${scene})
+  string(STRIP "${step_output}" lines)
+  string(REPLACE "\n" ";" lines "${lines}")
+  foreach(line IN LISTS lines)
+    message(STATUS "  ${line}")
+  endforeach()
+  if(NOT step_output MATCHES "agrees with the stored answer")
+    message(FATAL_ERROR "${how}: the consumer did not report agreement:\n${step_output}")
+  endif()
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+
+# 1. Install.
+step("install into ${prefix}" ${CMAKE_COMMAND} --install ${ECCD_BINARY_DIR} --prefix ${prefix})
+foreach(f include/eccd/eccd.hpp include/eccd/api/solve.hpp include/eccd/kernel/answer.hpp bin/eccd
+          lib/cmake/eccd/eccdConfig.cmake lib/cmake/eccd/eccdConfigVersion.cmake lib/cmake/eccd/eccdTargets.cmake)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "install: ${prefix}/${f} is missing")
+  endif()
+endforeach()
+file(GLOB targets_files ${prefix}/lib/cmake/eccd/eccdTargets*.cmake)
+foreach(f ${targets_files})
+  file(READ ${f} text)
+  if(text MATCHES "CGAL")
+    message(FATAL_ERROR "install: ${f} mentions CGAL: its definitions must stay private to eccd_exact")
+  endif()
+endforeach()
+
+# 2. find_package(eccd).
+set(b ${WORK_DIR}/find)
+step("find_package: configure" ${CMAKE_COMMAND} -S ${ECCD_SOURCE_DIR}/tests/package/consumer -B ${b} ${common} -DCMAKE_PREFIX_PATH=${prefix})
+step("find_package: build" ${CMAKE_COMMAND} --build ${b} -j2)
+run_consumer("find_package" ${b})
+
+# 3. add_subdirectory(eccd): only the libraries app links are built.
+set(b ${WORK_DIR}/subdir)
+step("add_subdirectory: configure" ${CMAKE_COMMAND} -S ${ECCD_SOURCE_DIR}/tests/package/consumer -B ${b} ${common}
+     -DECCD_SOURCE=${ECCD_SOURCE_DIR} -DBUILD_TESTING=OFF)
+step("add_subdirectory: build" ${CMAKE_COMMAND} --build ${b} -j2 --target app)
+run_consumer("add_subdirectory" ${b})
+foreach(f eccd/eccd eccd/eccd_tests eccd/python)
+  if(EXISTS ${b}/${f})
+    message(FATAL_ERROR "add_subdirectory: ${b}/${f} was built: a subproject builds only the libraries app needs")
+  endif()
+endforeach()
