@@ -4,7 +4,7 @@
 // Statement. Every pipeline run terminates (issues 14 and 15): each method has
 // its own work bounds (subdivision depth, shots, pieces), and on top of them
 // each run has a wall-clock deadline. The deadline is set once, by whoever
-// starts the run (solve_scene, the harness, certify, regress, report), with a
+// starts the run (eccd::solve, the harness, certify, regress, report), with a
 // `ScopedDeadline` on the running thread; the loops of the pipelines ask
 // `deadline_passed()` (one steady-clock read, tens of nanoseconds: an
 // iteration of an MPFR loop can take milliseconds, so no call is skipped) and

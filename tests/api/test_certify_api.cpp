@@ -12,7 +12,7 @@ const std::string kCases = std::string(ECCD_SOURCE_DIR) + "/cases/";
 bool overlaps(const eccd::Instant& a, const eccd::Instant& b) { return *a.lo <= *b.hi && *b.lo <= *a.hi; }
 }  // namespace
 
-TEST_CASE("certify returns the certificate and the certified Solution; check_certificate accepts it and rejects a forgery",
+TEST_CASE("certify returns the certificate and the certified Solution, and check_certificate accepts it and rejects a forgery",
           "[api][certify]") {
   for (const char* file : {"paper003/example2.json", "spheres/spheres-touch.json"}) {
     INFO(file);
