@@ -15,7 +15,9 @@
 // reported root may be spurious and a double root may be missed; that is what
 // the harness measures against the exact pipeline.
 // Work bound (issue 14): at most `max_pieces` pieces are examined, and the
-// run's deadline (kernel/budget.hpp) is asked once per piece. When either is
+// run's deadline (kernel/budget.hpp) is asked once per piece and once per
+// refinement step of a simple root (a root whose refinement it stops is
+// reported unresolved, with its piece). When either is
 // hit, every piece not yet examined (in order, leftmost first) is reported as
 // an `unresolved` root cluster covering it, and `stopped` says why: the
 // caller turns those into undecided instants, never into an answer. A
@@ -133,7 +135,11 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
       // converges superlinearly, down to the working precision
       T lo = zero, hi = one, flo = pc.q.b.front(), fhi = pc.q.b.back();
       int side = 0;
+      bool out_of_time = false;
       for (int it = 0; it < 4 * opt.precision_bits && hi - lo > simple_width; ++it) {
+        // Each step evaluates the piece (O(n^2)); at degree ~100 in MPFR the
+        // up to 4p steps took seconds past the deadline: ask it every step.
+        if (deadline_passed()) { out_of_time = true; break; }
         T den = fhi - flo;
         T x = point_of(T((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
         if (!(x > lo && x < hi)) x = point_of(T(half * (lo + hi)));
@@ -154,7 +160,12 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
         }
       }
       T rlo = point_of(T(pc.a + w * lo)), rhi = point_of(T(pc.a + w * hi));
-      add({rlo, rhi, point_of(T(half * (rlo + rhi))), false});
+      if (out_of_time) {  // a root is in [rlo, rhi], but not located to the working precision: unresolved
+        opt.stopped = deadline_reason();
+        add({rlo, rhi, point_of(T(half * (rlo + rhi))), true, true});
+      } else {
+        add({rlo, rhi, point_of(T(half * (rlo + rhi))), false});
+      }
     } else if (!(w > cluster_width)) {
       add({pc.a, pc.b, half * (pc.a + pc.b), true});
     } else {
