@@ -41,8 +41,8 @@ std::string answer_text(const Answer& a) {
   return o.str();
 }
 
-nlohmann::json counts_json(const AnswerDifference& d) {
-  nlohmann::json c = {{"collides_differs", d.collides_differs},
+nlohmann::ordered_json counts_json(const AnswerDifference& d) {
+  nlohmann::ordered_json c = {{"collides_differs", d.collides_differs},
                       {"missed", d.missed},
                       {"false", d.spurious},
                       {"split", d.split},
@@ -54,8 +54,8 @@ nlohmann::json counts_json(const AnswerDifference& d) {
                       {"false_contacts", d.false_contacts},
                       {"intervals", d.intervals},
                       {"certified_intervals", d.reference_intervals}};
-  c["first_contact_error"] = d.first_contact_error ? nlohmann::json(*d.first_contact_error) : nlohmann::json(nullptr);
-  c["max_endpoint_error"] = d.max_endpoint_error ? nlohmann::json(*d.max_endpoint_error) : nlohmann::json(nullptr);
+  c["first_contact_error"] = d.first_contact_error ? nlohmann::ordered_json(*d.first_contact_error) : nlohmann::ordered_json(nullptr);
+  c["max_endpoint_error"] = d.max_endpoint_error ? nlohmann::ordered_json(*d.max_endpoint_error) : nlohmann::ordered_json(nullptr);
   return c;
 }
 
@@ -98,13 +98,13 @@ Command add_judge_command(CLI::App& app) {
       ScopedDeadline deadline(run_budget().time_limit_s);
       j = judge(scene, in.answer, o);
     } catch (const std::invalid_argument& e) {
-      std::cerr << "eccd judge: " << args->scene << ": " << cli_message(e) << "\n";
+      std::cerr << "eccd judge: " << args->scene << ": " << e.what() << " (judge compares with the exact answer, so it refuses this scene)\n";
       return 3;
     }
     { itimerval off{}; setitimer(ITIMER_REAL, &off, nullptr); }
     const AnswerDifference& d = j.difference;
     if (args->json) {
-      nlohmann::json out = {{"format", "eccd-judgement/1"},
+      nlohmann::ordered_json out = {{"format", "eccd-judgement/1"},
                             {"scene", scene.name},
                             {"scene_file", args->scene},
                             {"answer_file", label},
@@ -115,7 +115,7 @@ Command add_judge_command(CLI::App& app) {
                             {"differences", d.differences},
                             {"counts", counts_json(d)},
                             {"certified_from", j.certified_from},
-                            {"certified_answer", answer_to_json(j.certified.answer)},
+                            {"certified_answer", nlohmann::ordered_json::parse(answer_to_json(j.certified.answer).dump())},
                             {"tolerance", args->tol}};
       std::cout << out.dump(2) << "\n";
     } else {
