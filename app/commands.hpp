@@ -62,6 +62,7 @@ Command add_plot_command(CLI::App& app);      // app/plot.cpp
 Command add_certify_command(CLI::App& app);            // app/certify.cpp
 Command add_check_certificate_command(CLI::App& app);  // app/certify.cpp
 Command add_regress_command(CLI::App& app);            // app/regress.cpp
+Command add_judge_command(CLI::App& app);              // app/judge.cpp
 
 // The generator options shared by `generate` and `report` (--dims, --degrees,
 // --families, --motions, --separations); app/generate.cpp.

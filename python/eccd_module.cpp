@@ -202,6 +202,57 @@ PYBIND11_MODULE(eccd, m) {
   m.def("check_certificate", &eccd::check_certificate, py::arg("scene"), py::arg("text"), py::call_guard<py::gil_scoped_release>(),
         "Re-checks a certificate (JSON text) against its scene without the solver; text that is not JSON raises SceneError");
 
+  // Judge any engine's answer against the certified one (api/judge.hpp).
+  py::class_<eccd::Judgement>(m, "Judgement", "judge's result: .agrees, .verdict, .differences (in words), .counts, .certified (the Solution)")
+      .def_readonly("agrees", &eccd::Judgement::agrees)
+      .def_readonly("verdict", &eccd::Judgement::verdict)
+      .def_property_readonly("differences", [](const eccd::Judgement& j) { return j.difference.differences; })
+      .def_property_readonly("counts", [](const eccd::Judgement& j) {
+            const eccd::AnswerDifference& d = j.difference;
+            py::dict c;
+            c["collides_differs"] = d.collides_differs;
+            c["missed"] = d.missed;
+            c["false"] = d.spurious;
+            c["split"] = d.split;
+            c["merged"] = d.merged;
+            c["endpoints_off"] = d.endpoints_off;
+            c["undecided"] = d.undecided;
+            c["contact_intervals_differ"] = d.contact_intervals_differ;
+            c["missed_contacts"] = d.missed_contacts;
+            c["false_contacts"] = d.false_contacts;
+            c["intervals"] = d.intervals;
+            c["certified_intervals"] = d.reference_intervals;
+            c["first_contact_error"] = d.first_contact_error ? py::object(py::float_(*d.first_contact_error)) : py::object(py::none());
+            c["max_endpoint_error"] = d.max_endpoint_error ? py::object(py::float_(*d.max_endpoint_error)) : py::object(py::none());
+            return c;
+          }, "the counts of api/answer_difference.hpp (missed, false, endpoints_off, ...) as a dict")
+      .def_readonly("certified", &eccd::Judgement::certified, "the certified Solution it was compared with")
+      .def_readonly("certified_from", &eccd::Judgement::certified_from, "'exact pipeline' or 'stored answer'")
+      .def("__bool__", [](const eccd::Judgement& j) { return j.agrees; })
+      .def("__repr__", [](const eccd::Judgement& j) { return "Judgement(" + j.verdict + ")"; });
+  m.def("answer_from_dict", [](const py::dict& d, const std::string& label) {
+        const std::string text = py::module_::import("json").attr("dumps")(d).cast<std::string>();
+        return eccd::answer_from_text(text, label).answer;
+      }, py::arg("answer"), py::arg("label") = "<dict>",
+      "An Answer from a dict in the scene format (a bare answer, or a scene dict with an 'answer'); errors name the label and the place");
+  m.def("judge", [](const eccd::Scene& scene, const py::object& answer, double tol, const std::string& name, bool use_stored) {
+        eccd::Answer theirs;
+        if (py::isinstance<eccd::Solution>(answer)) theirs = answer.cast<const eccd::Solution&>().answer;
+        else if (py::isinstance<eccd::Answer>(answer)) theirs = answer.cast<eccd::Answer>();
+        else if (py::isinstance<py::dict>(answer))
+          theirs = eccd::answer_from_text(py::module_::import("json").attr("dumps")(answer).cast<std::string>(), "<dict>").answer;
+        else if (py::isinstance<py::str>(answer)) theirs = eccd::answer_from_text(answer.cast<std::string>(), "<string>").answer;
+        else throw py::type_error("judge: answer must be an eccd Answer or Solution, a dict in the scene format, or JSON text");
+        eccd::JudgeOptions o;
+        o.tol = tol;
+        o.name = name;
+        o.use_stored = use_stored;
+        py::gil_scoped_release unlocked;
+        return eccd::judge(scene, theirs, o);
+      }, py::arg("scene"), py::arg("answer"), py::arg("tol") = 1e-6, py::arg("name") = "yours", py::arg("use_stored") = false,
+      "Compares an answer (Answer, Solution, dict in the scene format or JSON text) with the scene's certified answer; "
+      "returns a Judgement (.agrees, .verdict, .differences, .counts)");
+
   m.def("solve", [](const eccd::Scene& scene, const std::string& arith, const std::string& basis, int variant,
                     const std::string& method, bool first_contact, const std::string& input, double time_limit) {
         const eccd::SolveOptions o = solve_options(arith, basis, variant, method, first_contact, input, time_limit);

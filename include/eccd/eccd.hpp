@@ -4,3 +4,4 @@
 #include "api/solve.hpp"
 #include "api/static_test.hpp"
 #include "api/certify.hpp"
+#include "api/judge.hpp"

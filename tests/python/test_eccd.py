@@ -203,3 +203,61 @@ def test_a_certificate_checks_only_against_its_own_scene():
     assert not eccd.check_certificate(other, text).valid
     with pytest.raises(eccd.SceneError, match="certificate"):
         eccd.check_certificate(s, "{ not json")
+
+
+# --- judge (api/judge.hpp): any engine's answer against the certified one
+
+
+def judge_data(name):
+    return os.path.join(SOURCE, "tests", "data", "judge", name)
+
+
+def test_judge_the_exact_answer_agrees_and_a_double_failure_differs():
+    s = eccd.read_scene(case("paper003/example2-towards-1e-9.json"))
+    exact = eccd.solve(s, arith="exact")
+    j = eccd.judge(s, exact)
+    assert j.agrees and bool(j) and j.verdict == "agrees" and j.differences == []
+    assert j.certified_from == "exact pipeline"
+    assert same_answer(j.certified, exact)
+    double = eccd.solve(s, arith="double", basis="power")
+    assert not double.collides  # the known failure: double misses this near touch
+    k = eccd.judge(s, double, name="double/power")
+    assert not k.agrees
+    assert k.verdict == "wrong collides"
+    assert k.counts["collides_differs"] is True
+    assert "collides: certified true, double/power false" in k.differences
+
+
+def test_judge_takes_a_dict_json_text_and_an_answer_object():
+    s = eccd.read_scene(case("spheres/spheres-crossing.json"))
+    with open(judge_data("correct.json")) as f:
+        text = f.read()
+    d = json.loads(text)
+    for answer in (d, text, eccd.answer_from_dict(d), s.answer):
+        assert eccd.judge(s, answer).agrees
+    d["intervals"][0][1]["approx"] = "0.869432066329737374"  # the end moved by 1e-3
+    j = eccd.judge(s, d, name="mine")
+    assert not j.agrees
+    assert j.verdict == "differs: 1 difference(s)"
+    assert j.counts["endpoints_off"] == 1
+    assert math.isclose(j.counts["max_endpoint_error"], 1e-3, rel_tol=1e-6)
+    assert any("end off by 0.001" in x and "mine 0.8694320663" in x for x in j.differences)
+    assert eccd.judge(s, d, tol=2e-3).agrees
+
+
+def test_judge_a_sampled_answer_and_the_stored_reference():
+    s = eccd.read_scene(case("spheres/spheres-crossing.json"))
+    with open(judge_data("fcl-sampled-spheres-crossing-10.json")) as f:
+        j = eccd.judge(s, f.read(), name="fcl", use_stored=True)
+    assert j.certified_from == "stored answer"
+    assert not j.agrees and j.counts["endpoints_off"] == 2 and j.counts["missed_contacts"] == 2
+
+
+def test_judge_bad_answer_raises_with_the_place():
+    s = eccd.read_scene(case("spheres/spheres-crossing.json"))
+    with open(judge_data("malformed.json")) as f:
+        text = f.read()
+    with pytest.raises(eccd.SceneError, match=r"<string>: /intervals/0/1"):
+        eccd.judge(s, text)
+    with pytest.raises(TypeError):
+        eccd.judge(s, 42)
