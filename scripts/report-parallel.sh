@@ -34,9 +34,10 @@ merge_opts=()
 for o in "$@"; do [ "$o" = --no-figures ] && merge_opts+=(--no-figures); done
 parts="$out.parts"
 mkdir -p "$parts"
-# --halt now,fail=1: the first failing shard stops the others; its exit status is ours.
+# --quote: the arguments reach eccd as given (an empty one, spaces); --halt now,fail=1: the first
+# failing shard stops the others, and its exit status is ours.
 # shellcheck disable=SC2086  # PARALLEL_OPTS is a list of options
-seq 0 $((n - 1)) | parallel --will-cite --halt now,fail=1 -j "${JOBS:-$n}" ${PARALLEL_OPTS:-} \
+seq 0 $((n - 1)) | parallel --will-cite --quote --halt now,fail=1 -j "${JOBS:-$n}" ${PARALLEL_OPTS:-} \
   "$eccd" report --shard "{}/$n" --jobs 1 --out "$parts/shard-{}" "$@"
 shards=()
 for ((i = 0; i < n; ++i)); do shards+=("$parts/shard-$i"); done

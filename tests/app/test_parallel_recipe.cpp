@@ -82,8 +82,8 @@ TEST_CASE("the GNU parallel recipe (2 shards, then --merge) gives the rows of on
     FAIL("GNU parallel is not installed: the recipe scripts/report-parallel.sh needs it (Debian: apt-get install parallel; "
          "scripts/bootstrap.sh installs it)");
   TempDir t;
-  write_cases(t.path / "cases");
-  const std::string plan = tiny_plan(t.path / "cases");
+  write_cases(t.path / "my cases");  // a space: the arguments must reach eccd as given
+  const std::string plan = tiny_plan(t.path / "my cases");
   Run whole = run_eccd("report --jobs 2 --out " + q((t.path / "whole").string()) + " " + plan, 600);
   INFO(whole.err);
   REQUIRE(whole.code == 0);
@@ -111,8 +111,8 @@ TEST_CASE("the Slurm job-array script parses, and its task and merge modes run a
   const std::string script = q(src("scripts/report-slurm.sh"));
   REQUIRE(shell("bash -n " + script, out) == 0);
   TempDir t;
-  write_cases(t.path / "cases");
-  const std::string plan = tiny_plan(t.path / "cases");
+  write_cases(t.path / "my cases");  // a space: the arguments must reach eccd as given
+  const std::string plan = tiny_plan(t.path / "my cases");
   const std::string env = "ECCD=" + q(ECCD_EXE) + " ";
   const std::string dest = q((t.path / "slurm").string());
   for (int i : {0, 1}) {
