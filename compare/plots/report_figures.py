@@ -169,14 +169,19 @@ def read_csv(path, columns, optional=()):
     name = os.path.basename(path)
     if not os.path.isfile(path):
         raise InputError(f"{path}: not found")
+    records = []  # (line the record starts on, fields)
+    start = 1
     try:
         with open(path, encoding="utf-8", newline="") as fh:
             reader = csv.reader(fh, strict=True)
-            records = [(reader.line_num, rec) for rec in reader]  # line_num: the line the record ends on
+            for rec in reader:
+                records.append((start, rec))
+                start = reader.line_num + 1
     except (OSError, UnicodeDecodeError) as e:
         raise InputError(f"{path}: cannot be read ({e})") from None
     except csv.Error as e:
-        raise InputError(f"{name} line {reader.line_num}: malformed CSV ({e})") from None
+        raise InputError(f"{name} line {start}: malformed CSV, a quoted field that is not closed or a stray quote "
+                         f"({e})") from None
     if not records or not "".join(records[0][1]).strip():
         raise InputError(f"{name} line 1: empty, expected the header row")
     header = [h.strip() for h in records[0][1]]

@@ -144,3 +144,51 @@ TEST_CASE("the report step's failure says what failed, matplotlib only when its 
     CHECK(r.err.find("ModuleNotFoundError: No module named 'matplotlib'") != std::string::npos);
   }
 }
+
+namespace {
+// tests/data/report (the hand-computed fixture of report_figures.py) copied to a temp folder.
+int run_report_figures(const fs::path& dir, std::string& log) {
+  const std::string cmd = "python3 " + q(src("compare/plots/report_figures.py")) + " " + q(dir.string()) + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p != nullptr);
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) log.append(buf, n);
+  int st = pclose(p);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+}  // namespace
+
+TEST_CASE("report_figures.py reads quoted fields with the csv module and names the line of a broken quote", "[csv][report-figures]") {
+  TempDir t;
+  for (const char* f : {"results.csv", "meta.json", "failure_map.csv"}) fs::copy_file(src("tests/data/report/") + f, t.path / f);
+  const std::string text = slurp(t.path / "results.csv");
+  auto recs = eccd::csv_records(text, "results.csv");
+  REQUIRE(recs.size() > 3);
+  REQUIRE(recs[1].fields[0] == "s2-col");
+  std::string renamed;
+  for (auto& r : recs) {
+    if (r.fields[0] == "s2-col") r.fields[0] = "s2,\"col\"";
+    renamed += eccd::csv_line(r.fields) + "\n";
+  }
+  REQUIRE(renamed.find("\"s2,\"\"col\"\"\",") != std::string::npos);
+  SECTION("a name with commas and quotes: the same report as with the plain name") {
+    std::string log;
+    REQUIRE(run_report_figures(t.path, log) == 0);  // the fixture as it is
+    const std::string plain = slurp(t.path / "report.md");
+    spit(t.path / "results.csv", renamed);
+    REQUIRE(run_report_figures(t.path, log) == 0);
+    INFO(log);
+    CHECK(slurp(t.path / "report.md") == plain);  // report.md names no scene: every count and table is unchanged
+  }
+  SECTION("an unclosed quote: exit 2, the line where the record starts") {
+    // line 3 starts a quoted field that never closes
+    std::string broken = text;
+    std::size_t line3 = broken.find('\n', broken.find('\n') + 1) + 1;
+    broken.insert(line3, "\"");
+    spit(t.path / "results.csv", broken);
+    std::string log;
+    CHECK(run_report_figures(t.path, log) == 2);
+    CHECK(log.find("results.csv line 3: malformed CSV") != std::string::npos);
+    CHECK_FALSE(fs::exists(t.path / "report.md"));
+  }
+}
