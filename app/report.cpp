@@ -12,8 +12,8 @@
 // Output goes to OUT.partial and replaces OUT only when everything succeeded.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "compare/csv.hpp"
 #include "compare/harness.hpp"
-#include "kernel/budget.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/budget.hpp"
 #include "io/scene_reader.hpp"
@@ -150,8 +150,8 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
     o.basis = parse_basis(p.substr(slash + 1));
     BoundedRun br = run_bounded(s, o, a.harness.budget_s, a.harness.isolate);
     std::string kind = br.timed_out ? "undecided" : !br.error.empty() ? "error" : answer_kind(br.got);  // a time-out decides nothing
-    out.push_back("M" + p + "," + std::to_string(t.ix) + "," + std::to_string(t.iy) + "," + std::to_string(t.ix - h) + "," +
-                  std::to_string(t.iy - h) + "," + kind + "," + exact);
+    out.push_back("M" + csv_line({p, std::to_string(t.ix), std::to_string(t.iy), std::to_string(t.ix - h), std::to_string(t.iy - h),
+                                  kind, exact}));
   }
   return out;
 }
@@ -238,7 +238,7 @@ std::string fmt_duration(double s) {
 // Sort key of a results.csv line: the scene's place in the plan (rows of one
 // scene keep their pipeline order under a stable sort).
 std::vector<std::string> scene_key(const std::string& line) {
-  auto f = split(line, ',');
+  auto f = csv_split(line, "results.csv row");
   static const std::map<std::string, std::string> fam{{"colliding", "0"}, {"free", "1"}, {"touch", "2"}, {"near-miss", "3"},
                                                        {"overlap", "4"}, {"graze", "5"}, {"decimal", "6"}, {"keyframe", "7"},
                                                        {"case", "8"}};
@@ -252,11 +252,28 @@ void sort_results(std::vector<std::string>& lines) {
 }
 void sort_map(std::vector<std::string>& lines, const std::vector<std::string>& order) {
   auto key = [&](const std::string& l) {
-    auto f = split(l, ',');
+    auto f = csv_split(l, "failure_map.csv row");
     long p = std::find(order.begin(), order.end(), f[0]) - order.begin();
     return std::make_tuple(p, std::stoi(f[1]), std::stoi(f[2]));
   };
   std::stable_sort(lines.begin(), lines.end(), [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
+}
+
+// A worker's file holds one task output per line: "TASK<tab>TEXT", TEXT with
+// its backslashes and line breaks escaped (a quoted CSV field may hold a line break).
+std::string escape_line(const std::string& s) {
+  std::string o;
+  for (char c : s) o += c == '\\' ? std::string("\\\\") : c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
+  return o;
+}
+std::string unescape_line(const std::string& s) {
+  std::string o;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    if (s[k] != '\\' || k + 1 == s.size()) { o += s[k]; continue; }
+    char c = s[++k];
+    o += c == 'n' ? '\n' : c == 'r' ? '\r' : c;
+  }
+  return o;
 }
 
 // The workers. Returns the output lines ("R..." rows, "M..." map cells) in task order.
@@ -293,7 +310,7 @@ std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportA
       for (long k; (k = sh->next.fetch_add(1)) < long(tasks.size());) {
         try {
           ScopedDeadline deadline(run_budget().time_limit_s);
-          for (const auto& l : run_task(tasks[k], a, map)) o << k << "\t" << l << "\n";
+          for (const auto& l : run_task(tasks[k], a, map)) o << k << "\t" << escape_line(l) << "\n";
         } catch (const std::exception& e) {
           std::string msg = e.what();
           std::replace(msg.begin(), msg.end(), '\n', ' ');
@@ -352,7 +369,7 @@ std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportA
     long order = 0;
     while (std::getline(in, line)) {
       auto tab = line.find('\t');
-      all.push_back({std::stol(line.substr(0, tab)) * 100000 + order++, line.substr(tab + 1)});
+      all.push_back({std::stol(line.substr(0, tab)) * 100000 + order++, unescape_line(line.substr(tab + 1))});
     }
     fs::remove(work / ("worker-" + std::to_string(w) + ".txt"));
   }
@@ -365,14 +382,39 @@ std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportA
   return lines;
 }
 
+// Runs report_figures.py on DIR. Its stderr is passed on and kept: on failure
+// the error says the script failed, with the tail of its stderr, and says that
+// matplotlib (or numpy) is missing only when that import is what failed.
 void run_figures(const fs::path& dir) {
   fs::path script = fs::path(plots_dir()) / "report_figures.py";
   if (!fs::exists(script)) throw std::runtime_error(script.string() + ": the report script is missing (set ECCD_PLOTS_DIR?)");
   std::string cmd = "python3 " + shell_quote(script.string()) + " " + shell_quote(dir.string());
-  int rc = std::system(cmd.c_str());
-  if (rc != 0)
-    throw std::runtime_error("the report step failed (" + cmd + "); results.csv is in " + dir.string() +
-                             ". It needs python3 with matplotlib: apt-get install python3-matplotlib");
+  std::fflush(nullptr);
+  std::string err;
+  int rc = -1;
+  if (FILE* p = popen((cmd + " 3>&1 1>&2 2>&3").c_str(), "r")) {  // the script's stderr into the pipe, its stdout to ours
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) {
+      std::fwrite(buf, 1, n, stderr);
+      err.append(buf, n);
+    }
+    rc = pclose(p);
+  }
+  if (rc == 0) return;
+  std::string why = "the report step failed (" + cmd + (rc == -1 ? ": could not be started" : WIFEXITED(rc) ? ": exit status " + std::to_string(WEXITSTATUS(rc)) : ": killed by a signal") + "); results.csv is in " + dir.string();
+  if (err.find("No module named 'matplotlib") != std::string::npos)
+    why += ". matplotlib is missing: apt-get install python3-matplotlib";
+  else if (err.find("No module named 'numpy") != std::string::npos)
+    why += ". numpy is missing: apt-get install python3-numpy";
+  while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
+  if (!err.empty()) {  // the last lines of the script's stderr
+    std::size_t pos = err.size();
+    for (int lines = 0; lines < 8 && pos != std::string::npos && pos > 0; ++lines) pos = err.rfind('\n', pos - 1);
+    why += ". The script's stderr ends with:\n" + (pos == std::string::npos ? err : err.substr(pos + 1));
+  } else {
+    why += " (the script wrote nothing to stderr)";
+  }
+  throw std::runtime_error(why);
 }
 
 // Output folders: every folder `report` writes carries this marker, and only
@@ -606,20 +648,23 @@ std::pair<int, int> parse_shard_text(const std::string& t, const std::string& wh
   return {i, n};
 }
 
-// The complete lines of a CSV part after its header; a truncated last line or a
-// row with the wrong number of fields is an error naming the file and the line.
+// The records of a CSV part after its header (compare/csv.hpp reads them, quoting
+// and all), each written back as csv_line writes it; a truncated last line, bad
+// quoting or a row with the wrong number of fields is an error naming the file
+// and the line.
 std::vector<std::string> csv_rows(const std::string& text, const std::string& header, const fs::path& file) {
-  auto fields = [](const std::string& l) { return std::count(l.begin(), l.end(), ',') + 1; };
   if (!text.empty() && text.back() != '\n')
     throw std::invalid_argument(file.string() + ": truncated (the last line is incomplete)");
-  std::vector<std::string> lines = split(text, '\n');
-  if (!lines.empty() && lines.back().empty()) lines.pop_back();
-  if (lines.empty() || lines[0] != header) throw std::invalid_argument(file.string() + ": line 1: not the expected header");
-  std::vector<std::string> rows(lines.begin() + 1, lines.end());
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    if (fields(rows[k]) != fields(header))
-      throw std::invalid_argument(file.string() + ": line " + std::to_string(k + 2) + ": " + std::to_string(fields(rows[k])) +
-                                  " fields, expected " + std::to_string(fields(header)) + " (truncated or edited?)");
+  std::vector<CsvRecord> recs = csv_records(text, file.string());
+  std::vector<std::string> head = csv_split(header);
+  if (recs.empty() || recs[0].fields != head) throw std::invalid_argument(file.string() + ": line 1: not the expected header");
+  std::vector<std::string> rows;
+  for (std::size_t k = 1; k < recs.size(); ++k) {
+    if (recs[k].fields.size() != head.size())
+      throw std::invalid_argument(file.string() + ": line " + std::to_string(recs[k].line) + ": " + std::to_string(recs[k].fields.size()) +
+                                  " fields, expected " + std::to_string(head.size()) + " (truncated or edited?)");
+    rows.push_back(csv_line(recs[k].fields));
+  }
   return rows;
 }
 
@@ -696,7 +741,7 @@ int run_merge(const ReportArgs& a) {
        !std::all_of(meta["failure_map"]["pipelines"].begin(), meta["failure_map"]["pipelines"].end(), [](const nlohmann::json& x) { return x.is_string(); })))
     throw std::invalid_argument((fs::path(a.merge[0]) / "meta.json").string() + ": /failure_map/pipelines: expected an array of strings");
   for (const auto& c : cells) {  // sort_map reads ix and iy as integers
-    auto f = split(c, ',');
+    auto f = csv_split(c, "failure_map.csv row");
     for (int k : {1, 2})
       if (f[std::size_t(k)].empty() || f[std::size_t(k)].size() > 6 || f[std::size_t(k)].find_first_not_of("0123456789") != std::string::npos)
         throw std::invalid_argument("--merge: failure_map.csv row \"" + c.substr(0, 80) + "\": ix and iy must be small non-negative integers");

@@ -1,6 +1,7 @@
 // The comparison harness (see compare/harness.hpp).
 #include "compare/harness.hpp"
 
+#include "compare/csv.hpp"
 #include "compare/scene_generator.hpp"
 #include "io/solution_json.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -74,10 +75,11 @@ void coefficients_3d(const Reference3& ref, const PipelineSpec& ps, const T& lik
   row.delta_err = coefficient_error(ellipsoid_function(g, like), ref.F);
 }
 
-// Free text in one CSV field (the CSV has no quoting): no commas, no line breaks, at most 200 characters.
+// Free text in one CSV field (quoted by csv_line as needed): line breaks become spaces, so that a
+// reason stays on one line; at most 200 characters.
 std::string csv_text(std::string t) {
   for (char& c : t)
-    if (c == ',' || c == '\n' || c == '\r') c = c == ',' ? ';' : ' ';
+    if (c == '\n' || c == '\r') c = ' ';
   if (t.size() > 200) t = t.substr(0, 197) + "...";
   return t;
 }
@@ -372,18 +374,17 @@ std::string results_csv_header() {
 }
 
 std::string results_csv_line(const ResultRow& r) {
-  std::ostringstream o;
   const SceneInfo& s = r.scene;
   auto opt = [](const std::optional<double>& x) { return x ? fmt(*x) : std::string(); };
-  o << s.name << "," << s.source << "," << s.dim << "," << s.degree << "," << s.family << "," << s.motion << ","
-    << (s.family == "near-miss" || s.family == "overlap" ? separation_label(s.d_exponent) : "") << "," << (s.seed ? std::to_string(*s.seed) : "")
-    << "," << r.pipeline << "," << r.arith << "," << r.bits << "," << r.basis << "," << r.method << "," << opt(r.coef_err)
-    << "," << opt(r.delta_err) << "," << r.m.outcome << "," << (r.m.collides ? (*r.m.collides ? "1" : "0") : "") << ","
-    << (r.m.exact_collides ? 1 : 0) << "," << r.m.intervals << "," << r.m.exact_intervals << "," << r.m.missed_contacts
-    << "," << r.m.false_contacts << "," << opt(r.m.first_contact_err) << "," << opt(r.m.endpoint_err) << ","
-    << fmt(r.time_us, "%.1f") << "," << (r.m.structure_ok ? 1 : 0) << "," << r.input << ","
-    << (s.digits ? std::to_string(s.digits) : "") << "," << csv_text(r.reason);
-  return o.str();
+  // In the order of results_csv_header(); csv_line quotes a field with a comma, quote or line break (RFC 4180).
+  return csv_line({s.name, s.source, std::to_string(s.dim), std::to_string(s.degree), s.family, s.motion,
+                   s.family == "near-miss" || s.family == "overlap" ? separation_label(s.d_exponent) : "",
+                   s.seed ? std::to_string(*s.seed) : "", r.pipeline, r.arith, std::to_string(r.bits), r.basis, r.method,
+                   opt(r.coef_err), opt(r.delta_err), r.m.outcome, r.m.collides ? (*r.m.collides ? "1" : "0") : "",
+                   r.m.exact_collides ? "1" : "0", std::to_string(r.m.intervals), std::to_string(r.m.exact_intervals),
+                   std::to_string(r.m.missed_contacts), std::to_string(r.m.false_contacts), opt(r.m.first_contact_err),
+                   opt(r.m.endpoint_err), fmt(r.time_us, "%.1f"), r.m.structure_ok ? "1" : "0", r.input,
+                   s.digits ? std::to_string(s.digits) : "", csv_text(r.reason)});
 }
 
 }  // namespace eccd

@@ -42,6 +42,7 @@ Everything is written to a temporary folder inside DIR and moved into place at t
 1 anything else. Needs Python 3, numpy and matplotlib (Debian: python3-matplotlib).
 """
 
+import csv
 import json
 import math
 import os
@@ -160,21 +161,30 @@ def _convert(text, kind, where):
 
 
 def read_csv(path, columns, optional=()):
-    """Rows of a comma-separated file without quoting, converted per `columns`.
+    """Rows of a CSV file (RFC 4180 quoting, as compare/csv.hpp writes it; read with the `csv` module), converted
+    per `columns`.
 
     `optional`: (column, kind, empty allowed, choices, default) of columns that may be absent from the header (every
     row then gets the default). Each row is a dict (plus '_line', its line number in the file)."""
     name = os.path.basename(path)
     if not os.path.isfile(path):
         raise InputError(f"{path}: not found")
+    records = []  # (line the record starts on, fields)
+    start = 1
     try:
-        with open(path, encoding="utf-8") as fh:
-            lines = fh.read().splitlines()
+        with open(path, encoding="utf-8", newline="") as fh:
+            reader = csv.reader(fh, strict=True)
+            for rec in reader:
+                records.append((start, rec))
+                start = reader.line_num + 1
     except (OSError, UnicodeDecodeError) as e:
         raise InputError(f"{path}: cannot be read ({e})") from None
-    if not lines or not lines[0].strip():
+    except csv.Error as e:
+        raise InputError(f"{name} line {start}: malformed CSV, a quoted field that is not closed or a stray quote "
+                         f"({e})") from None
+    if not records or not "".join(records[0][1]).strip():
         raise InputError(f"{name} line 1: empty, expected the header row")
-    header = [h.strip() for h in lines[0].split(",")]
+    header = [h.strip() for h in records[0][1]]
     index = {}
     for i, h in enumerate(header):
         if h in index:
@@ -187,10 +197,9 @@ def read_csv(path, columns, optional=()):
     absent_optional = [(o[0], o[4]) for o in optional if o[0] not in index]
     columns = list(columns) + present_optional
     rows = []
-    for ln, line in enumerate(lines[1:], start=2):
-        if not line.strip():
+    for ln, fields in records[1:]:
+        if not "".join(fields).strip():
             continue
-        fields = line.split(",")
         if len(fields) != len(header):
             raise InputError(f"{name} line {ln}: {len(fields)} fields, the header has {len(header)}")
         raw = {h: fields[i].strip() for h, i in index.items()}

@@ -1,5 +1,6 @@
 // `eccd generate` and `eccd report` from the command line: seeded output,
 // shards that join into the same table as one run, and clear refusals.
+#include "compare/csv.hpp"
 #include "tests/support/cli.hpp"
 
 #include <algorithm>
@@ -28,24 +29,16 @@ std::string slurp(const fs::path& p) {
 // results.csv without the time column (timings differ between runs); the
 // column is found by its name in the header.
 std::string without_time(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string line, out;
-  std::size_t columns = 0, time_col = 0;
-  while (std::getline(in, line)) {
-    std::vector<std::string> f;
-    std::string cell;
-    std::istringstream ls(line);
-    while (std::getline(ls, cell, ',')) f.push_back(cell);
-    if (line.back() == ',') f.push_back("");
-    if (columns == 0) {
-      columns = f.size();
-      time_col = std::size_t(std::find(f.begin(), f.end(), "time_us") - f.begin());
-      REQUIRE(time_col < columns);
-    }
-    REQUIRE(f.size() == columns);
-    f.erase(f.begin() + long(time_col));
-    for (auto& x : f) out += x + ",";
-    out += "\n";
+  auto recs = eccd::csv_records(csv, "results.csv");  // RFC 4180 quoting (compare/csv.hpp)
+  REQUIRE(!recs.empty());
+  const auto& head = recs[0].fields;
+  const std::size_t time_col = std::size_t(std::find(head.begin(), head.end(), "time_us") - head.begin());
+  REQUIRE(time_col < head.size());
+  std::string out;
+  for (auto r : recs) {
+    REQUIRE(r.fields.size() == head.size());
+    r.fields.erase(r.fields.begin() + long(time_col));
+    out += eccd::csv_line(r.fields) + "\n";
   }
   return out;
 }
