@@ -161,7 +161,7 @@ TEST_CASE("judge: a double answer on a case where double fails differs", "[judge
   CHECK(has(j.difference.differences, "collides: certified true, double/power false"));
 }
 
-TEST_CASE("judge: reading the answer: bare object, scene file, solve report; errors name the place", "[judge]") {
+TEST_CASE("judge: reading the answer: bare object, scene file, solve report, and errors name the place", "[judge]") {
   AnswerInput bare = answer_from_text(R"({"collides": true, "intervals": [[{"approx": "0.5"}, {"approx": "0.5"}]],
                                           "first_contact": {"approx": "0.5"}, "contacts": [{"approx": "0.5"}]})",
                                       "mine.json");
