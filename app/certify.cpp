@@ -38,9 +38,10 @@ struct SceneBytes {
   Scene scene;
   nlohmann::json doc;
 };
+// SCENE "-" reads standard input (labelled "<stdin>"), once like a file.
 SceneBytes read_scene_once(const std::string& path) {
-  const std::string text = read_file_bytes(path);
-  SceneBytes r{parse_scene(text, path), parse_json_document(text, path)};
+  const SceneSource src = read_scene_source(path);
+  SceneBytes r{parse_scene(src.text, src.label), parse_json_document(src.text, src.label)};
   return r;
 }
 
@@ -88,7 +89,7 @@ Command add_certify_command(CLI::App& app) {
                              "instant a proved rational bracket), a verdict for each double and MPFR pipeline against it, and a "
                              "certificate that `eccd check-certificate` re-checks without the solver.");
   auto* s = c.sub;
-  s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1)")->required();
+  s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
   s->add_option("--out", args->out, "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder)");
   s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions of the floating pipelines judged")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--tol", args->tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")->capture_default_str()->check(CLI::PositiveNumber);
@@ -98,20 +99,20 @@ Command add_certify_command(CLI::App& app) {
     SceneBytes sb = read_scene_once(args->scene);
     const Scene& scene = sb.scene;
     const nlohmann::json& doc = sb.doc;
+    if (args->out.empty() && args->scene == "-") throw std::invalid_argument("certify -: name the certificate file with --out (the scene comes from standard input)");
     fs::path out = args->out.empty() ? fs::path(fs::path(args->scene).stem().string() + ".cert.json") : fs::path(args->out);
-    std::cerr << "certify: exact pipeline and certificate ...\n";
+    const std::string label = scene.path;
+    if (!quiet()) std::cerr << "certify: exact pipeline and certificate ...\n";
     nlohmann::json cert;
     try {
       cert = nlohmann::json::parse(certify(scene).text);
     } catch (const CertificationError& e) {
-      std::cerr << "eccd certify: " << args->scene << ": " << e.what() << "\n";
-      return 4;
+      throw ExitError(4, "certify: " + label + ": " + e.what());
     } catch (const std::invalid_argument& e) {  // a scene the exact pipeline refuses (cycloidal motion)
-      std::cerr << "eccd certify: " << args->scene << ": " << cli_message(e) << "\n";
-      return 3;
+      throw ExitError(3, "certify: " + label + ": " + cli_message(e));
     }
     // The writer's output must pass the checker before anyone sees it.
-    std::cerr << "certify: re-checking the certificate with the checker ...\n";
+    if (!quiet()) std::cerr << "certify: re-checking the certificate with the checker ...\n";
     CertificateCheck chk = check_certificate(scene, doc, cert);
     if (!chk.valid)
       throw std::logic_error("the certificate fails its own check (" + chk.failed_claim + ": " + chk.reason + ")");
@@ -123,7 +124,7 @@ Command add_certify_command(CLI::App& app) {
       ho.mpfr_bits = args->mpfr_bits;
       for (const auto& p : harness_pipelines(scene.dim, ho)) {
         if (p.opt.arith.kind == Arithmetic::Exact) continue;
-        std::cerr << "certify: " << p.label << " ...\n";
+        if (!quiet()) std::cerr << "certify: " << p.label << " ...\n";
         try {
           const Solution got = solve(scene, p.opt);
           verdicts.push_back(judge(p.label, got.answer, certified, args->tol, got.time_ms));
@@ -140,6 +141,7 @@ Command add_certify_command(CLI::App& app) {
     if (args->json) {
       nlohmann::json j = {{"scene", scene.path}, {"certificate", out.string()}, {"answer", cert["answer"]}, {"verdicts", vj},
                           {"projection", cert["projection"]["name"]}, {"certify_seconds", cert["seconds"]}};
+      stamp_format(j, "eccd-certify/1");
       std::cout << j.dump(2) << "\n";
       return 0;
     }
@@ -174,7 +176,7 @@ Command add_check_certificate_command(CLI::App& app) {
                              "projection recomputed exactly, one root per bracket and none elsewhere (Descartes' rule), each "
                              "cell's status by the exact static test, each instant's evidence, and the answer. Exit 0 if every "
                              "claim holds, 1 naming the first claim that fails, 2 for an unreadable file.");
-  c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about")->required();
+  c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about; - reads standard input")->required();
   c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/2)")->required();
   c.sub->add_flag("--json", args->json, "Print one JSON object {valid, checked, failed_claim, reason}");
   c.run = [args]() {
@@ -191,6 +193,7 @@ Command add_check_certificate_command(CLI::App& app) {
       nlohmann::json j = {{"valid", r.valid}, {"checked", r.checked}};
       j["failed_claim"] = r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.failed_claim);
       j["reason"] = r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.reason);
+      stamp_format(j, "eccd-certificate-check/1");
       std::cout << j.dump(2) << "\n";
     } else {
       for (const auto& line : r.checked) std::cout << "  ok  " << line << "\n";

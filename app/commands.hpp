@@ -12,6 +12,7 @@
 
 #include <exception>
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 namespace eccd {
@@ -48,6 +49,45 @@ inline std::string cli_message(const std::exception& e) {
   if (dynamic_cast<const NotRationalMotion*>(&e)) return std::string(e.what()) + " (use --arith double or mpfr:BITS)";
   return e.what();
 }
+
+// The program's version (CMake project version) and the source tree's git
+// revision at configure time ("unknown" without git); app/main.cpp.
+const char* program_version();
+const char* program_revision();
+
+// Every JSON object the command line prints carries "format" (what it is, with
+// the format's own version: "eccd-solution/1") and "version" (the program's);
+// keys are added, none removed (docs/answer-format.md).
+template <class Json>
+void stamp_format(Json& j, const char* format) {
+  j["format"] = format;
+  j["version"] = program_version();
+}
+
+// --quiet (an option of eccd and of every sub-command): no progress and no
+// warnings on stderr, only errors. warn() prints "eccd CMD: warning: TEXT"
+// unless quiet.
+inline bool& quiet() {
+  static bool q = false;
+  return q;
+}
+void warn(const std::string& command, const std::string& text);
+
+// A failure with its exit status (README "Exit codes"): 3 a request the
+// pipeline refuses on a valid scene, 4 a scene that cannot be certified.
+// app/main.cpp prints it like every error (stderr; and a JSON object on
+// stdout under --json) and exits with `code`.
+struct ExitError : std::runtime_error {
+  int code;
+  ExitError(int c, const std::string& m) : std::runtime_error(m), code(c) {}
+};
+
+// A scene file's bytes, read once; SCENE "-" reads standard input, and the
+// scene's label (in messages and in the answer's "file") is then "<stdin>".
+struct SceneSource {
+  std::string label, text;
+};
+SceneSource read_scene_source(const std::string& path);  // app/main.cpp
 
 struct Command {
   CLI::App* sub = nullptr;

@@ -129,8 +129,10 @@ Command add_generate_command(CLI::App& app) {
         throw std::invalid_argument(path.string() + ": exists (use --force to overwrite)");
       Scene scene = parse_scene(text, path.string());  // the reader must accept what we write
       if (args->answer) {
-        std::fprintf(stderr, "[%zu/%zu] %s: ", i + 1, specs.size(), g.name.c_str());
-        std::fflush(stderr);
+        if (!quiet()) {
+          std::fprintf(stderr, "[%zu/%zu] %s: ", i + 1, specs.size(), g.name.c_str());
+          std::fflush(stderr);
+        }
         auto start = std::chrono::steady_clock::now();
         Solution report = solve(scene, exact);
         double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -138,12 +140,12 @@ Command add_generate_command(CLI::App& app) {
         g.doc["answer"] = stored_answer_of(report);
         text = compact_json(g.doc) + "\n";
         parse_scene(text, path.string());  // the reader checks the stored answer too
-        std::fprintf(stderr, "exact %.3f s, %s, %zu interval(s)\n", sec,
+        if (!quiet()) std::fprintf(stderr, "exact %.3f s, %s, %zu interval(s)\n", sec,
                      report.answer.collides ? "collides" : "free", report.answer.intervals.size());
       }
       files.push_back({path, text});
     }
-    if (args->answer) std::fprintf(stderr, "exact answers: %zu scene(s) in %.3f s\n", specs.size(), total_s);
+    if (args->answer && !quiet()) std::fprintf(stderr, "exact answers: %zu scene(s) in %.3f s\n", specs.size(), total_s);
     {
       std::error_code ec;
       fs::create_directories(args->out, ec);

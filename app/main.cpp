@@ -12,7 +12,13 @@
 // cycloidal motion in exact arithmetic, also by certify); 4 a scene the
 // certifier cannot certify; 5 a resource budget (time, memory) exhausted while
 // solving; 130 report interrupted (SIGINT/SIGTERM). Nothing is written to
-// stdout unless the command succeeds.
+// stdout unless the command succeeds, except under --json: a failing command
+// then prints one object {"format": "eccd-error/1", "error", "exit_code"} on
+// stdout (the message is on stderr too).
+//
+// eccd --version prints the version and the git revision of the source tree
+// at configure time; --quiet (of eccd and every sub-command) keeps progress
+// and warnings off stderr (errors are still printed).
 //
 // Resource budget (issue 15): --time-limit SECONDS per pipeline run (default
 // 300), --memory-limit MIB for the process (setrlimit RLIMIT_AS, default 4096),
@@ -30,6 +36,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
@@ -68,6 +75,36 @@ void eccd::arm_backstop(double seconds) {
   setitimer(ITIMER_REAL, &t, nullptr);
 }
 
+const char* eccd::program_version() {
+#ifdef ECCD_VERSION
+  return ECCD_VERSION;
+#else
+  return "unknown";
+#endif
+}
+const char* eccd::program_revision() {
+#ifdef ECCD_GIT_REVISION
+  return ECCD_GIT_REVISION;
+#else
+  return "unknown";
+#endif
+}
+void eccd::warn(const std::string& command, const std::string& text) {
+  if (!quiet()) std::cerr << "eccd " << command << ": warning: " << text << "\n";
+}
+
+SceneSource eccd::read_scene_source(const std::string& path) {
+  if (path != "-") return {path, read_file_bytes(path)};
+  try {
+    return {"<stdin>", read_file_bytes("/dev/stdin")};
+  } catch (const SceneError& e) {
+    std::string m = e.what();
+    const std::string dev = "/dev/stdin";
+    if (m.rfind(dev, 0) == 0) m = "<stdin>" + m.substr(dev.size());
+    throw SceneError(m);
+  }
+}
+
 namespace {
 
 // A message for stderr: at most 2000 characters (a user's 10 MB key is not echoed whole).
@@ -79,6 +116,9 @@ int main(int argc, char** argv) {
   CLI::App app{"eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and ellipsoids"};
   app.require_subcommand(1);
   app.fallthrough();  // before the sub-commands are added: they inherit it (the budget options below work after them too)
+  app.set_version_flag("--version", std::string("eccd ") + program_version() + " (git " + program_revision() + ")",
+                       "Print the program's version and the git revision it was built from, and exit");
+  app.add_flag("-q,--quiet", quiet(), "No progress and no warnings on stderr, only errors");
 
   // The budget: options of eccd and (through fallthrough) of every sub-command.
   InputLimits& lim = input_limits();
@@ -101,11 +141,28 @@ int main(int argc, char** argv) {
                                 add_report_command(app),   add_plot_command(app),              add_certify_command(app),
                                 add_check_certificate_command(app), add_regress_command(app), add_judge_command(app)};
 
+  // Under --json a failure is also one JSON object on stdout (README "Exit codes").
+  bool json_mode = false;
+  for (int i = 1; i < argc; ++i) json_mode = json_mode || std::string(argv[i]) == "--json";
+  auto fail = [&json_mode](int code, const std::string& message) {
+    std::cerr << "eccd: " << message << "\n";
+    if (json_mode) {
+      nlohmann::json j = {{"format", "eccd-error/1"}, {"version", program_version()}, {"error", message}, {"exit_code", code}};
+      std::cout << j.dump(2) << "\n";
+    }
+    return code;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    if (!json_mode) return app.exit(e) == 0 ? 0 : 2;
+    return fail(2, e.what());
   }
+  json_mode = false;  // from here: --json of the command that runs (not a file or value named "--json")
+  for (auto& c : commands)
+    if (*c.sub)
+      if (const CLI::Option* o = c.sub->get_option_no_throw("--json")) json_mode = o->count() > 0;
   if (run_budget().memory_limit_mb > 0) {
     rlimit rl{};
     rl.rlim_cur = rl.rlim_max = rlim_t(run_budget().memory_limit_mb) << 20;
@@ -135,32 +192,26 @@ int main(int argc, char** argv) {
           throw;
         }
       }
+  } catch (const ExitError& e) {  // 3 refused, 4 cannot certify (the message names the scene)
+    return fail(e.code, cut_message(e.what()));
   } catch (const SceneError& e) {
-    std::cerr << "eccd: " << cut_message(e.what()) << "\n";
-    return 2;
+    return fail(2, cut_message(e.what()));
   } catch (const OutputError& e) {
-    std::cerr << "eccd: " << cut_message(e.what()) << "\n";
-    return 2;
+    return fail(2, cut_message(e.what()));
   } catch (const std::invalid_argument& e) {
-    std::cerr << "eccd: " << cut_message(cli_message(e)) << "\n";
-    return 2;
+    return fail(2, cut_message(cli_message(e)));
   } catch (const fs::filesystem_error& e) {  // a file or folder the user named: missing, unreadable, read-only
     std::string p = e.path1().string();
     if (!e.path2().empty()) p += " -> " + e.path2().string();
-    std::cerr << "eccd: " << cut_message(p) << ": " << e.code().message() << "\n";
-    return 2;
+    return fail(2, cut_message(p) + ": " + e.code().message());
   } catch (const nlohmann::json::parse_error& e) {
-    std::cerr << "eccd: malformed JSON: " << cut_message(e.what()) << "\n";
-    return 2;
+    return fail(2, "malformed JSON: " + cut_message(e.what()));
   } catch (const BudgetExhausted& e) {
-    std::cerr << "eccd: resource budget exhausted: " << cut_message(e.what()) << budget_hint << "\n";
-    return 5;
+    return fail(5, "resource budget exhausted: " + cut_message(e.what()) + budget_hint);
   } catch (const std::bad_alloc&) {
-    std::cerr << "eccd: resource budget exhausted: out of memory" << budget_hint << "\n";
-    return 5;
+    return fail(5, "resource budget exhausted: out of memory" + budget_hint);
   } catch (const std::exception& e) {
-    std::cerr << "eccd: internal error: " << cut_message(e.what()) << "\n";
-    return 1;
+    return fail(1, "internal error: " + cut_message(e.what()));
   }
   return 0;
 }

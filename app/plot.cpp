@@ -489,7 +489,7 @@ int run_plot(const PlotOptions& o) {
   if (cyclo && o.arith_opt->count() == 0) {
     arith_text = "double";
     arith_note = "cycloidal motion: not rational, so double arithmetic (exact cannot represent it)";
-    std::cerr << "eccd plot: " << o.scene << ": " << arith_note << "\n";
+    warn("plot", o.scene + ": " + arith_note);
   }
   SolveOptions opt;
   opt.arith = parse_arithmetic(arith_text);  // std::invalid_argument -> exit 2

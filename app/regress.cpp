@@ -236,9 +236,9 @@ Command add_regress_command(CLI::App& app) {
       }
       rows.push_back(row);
       if (!args->json) std::cout << line << "\n" << std::flush;
-      else std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), name.c_str());
+      else if (!quiet()) std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), name.c_str());
     }
-    if (args->json) std::fprintf(stderr, "\n");
+    if (args->json && !quiet()) std::fprintf(stderr, "\n");
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     nlohmann::json table = nlohmann::json::array();
     for (const auto& label : pipeline_order) {
@@ -258,6 +258,7 @@ Command add_regress_command(CLI::App& app) {
         j["decided_in"] = decided_in;
       }
       if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
+      stamp_format(j, "eccd-regress/1");
       std::cout << j.dump(2) << "\n";
       return bad ? 1 : 0;
     }

@@ -71,6 +71,7 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
           ScopedDeadline deadline(run_budget().time_limit_s);
           Solution sol = solve(s, c.opt);
           js[c.label] = solution_to_json(sol);
+          stamp_format(js[c.label], kSolutionFormat);
           std::string cell = short_answer(sol);
           if (c.label == "exact") exact = sol;
           // '!': the one answer comparison (api/answer_difference.hpp) finds a difference other
@@ -92,10 +93,12 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
     all.push_back(js);
     rows.push_back(row);
     ++done;
-    std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), f.filename().string().c_str());
-    std::fflush(stderr);
+    if (!quiet()) {
+      std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), f.filename().string().c_str());
+      std::fflush(stderr);
+    }
   }
-  std::fprintf(stderr, "\n");
+  if (!quiet()) std::fprintf(stderr, "\n");
   if (json) { std::cout << all.dump(2) << "\n"; return 0; }
   std::vector<std::string> head{"scene"};
   for (auto& c : cols) head.push_back(c.label);
@@ -131,7 +134,7 @@ Command add_table_command(CLI::App& app) {
   Command c;
   c.sub = app.add_subcommand("table", "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR arithmetic and print a side-by-side table.");
   c.sub->add_option("DIR", args->dir, "Folder of scene files")->capture_default_str();
-  c.sub->add_option("--mpfr", args->mpfr_bits, "MPFR precisions in bits (repeatable)")->capture_default_str();
+  c.sub->add_option("--mpfr", args->mpfr_bits, "MPFR precisions in bits (repeatable, or a comma list: 64,128)")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   c.sub->add_flag("--json", args->json, "Print all results as one JSON array instead of the table");
   c.run = [args]() { return run_table(args->dir, args->mpfr_bits, args->json); };
   return c;

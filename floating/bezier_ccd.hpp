@@ -417,7 +417,7 @@ class BezierZeroSet {
   void push_cell(const T& a, const T& b, Status s) { seq_.push_back({instant(half_ * (a + b)), s, true}); }
   Instant instant(const T& t) const {
     if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), t, t, nearest_double(t)};
-    else return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt, scalar_traits<T>::to_double(t)};
+    else return rounded_instant(t);
   }
   bool first_run_closed() const {
     bool seen = false;

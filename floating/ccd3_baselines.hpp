@@ -138,7 +138,7 @@ namespace baseline_detail {
 template <class T>
 Instant uncertified_instant(const T& t) {
   if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), std::nullopt, std::nullopt, nearest_double(t)};
-  else return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt, scalar_traits<T>::to_double(t)};
+  else return rounded_instant(t);
 }
 
 // k / N in the run's arithmetic.

@@ -92,7 +92,7 @@ struct FloatingPolicy {
     T s = a + b;
     return point_of(T(scalar_traits<T>::from_rational(mpq_class(1, 2), like) * s));
   }
-  Instant instant_at(const T& t) const { return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt, scalar_traits<T>::to_double(t)}; }
+  Instant instant_at(const T& t) const { return rounded_instant(t); }
   Instant instant(const Root& r) const { return instant_at(r.value); }
   T value(const Root& r) const { return r.value; }
   int multiplicity(const Root& r) const { return r.cluster ? 2 : 1; }

@@ -169,6 +169,18 @@ Solution solution_from_json(const json& j, const std::string& label) {
     if (!cells[i].is_object() || !cells[i].contains("sample")) fail(place, "expected {\"sample\", \"status\"}");
     s.cells.push_back({instant_from_json(cells[i]["sample"], label, place + "/sample"), status(cells[i].value("status", json()), place + "/status")});
   }
+  // A bracketed instant's value is the double nearest its bracket's mid-point
+  // (kernel/answer.hpp bracketed_instant), not its approx, which carries only
+  // the digits the bracket supports: a Solution read back equals the one written.
+  auto from_bracket = [](Instant& i) {
+    if (i.certified()) i.value = nearest_double(mpq_class((*i.lo + *i.hi) / 2));
+  };
+  for (auto& [a, b] : s.answer.intervals) from_bracket(a), from_bracket(b);
+  for (auto& [a, b] : s.answer.contact_intervals) from_bracket(a), from_bracket(b);
+  if (s.answer.first_contact) from_bracket(*s.answer.first_contact);
+  for (auto& c : s.answer.contacts) from_bracket(c);
+  for (auto& c : s.critical) from_bracket(c.t);
+  for (auto& c : s.cells) from_bracket(c.sample);
   for (const auto& r : list("undecided_reasons")) {
     if (!r.is_string()) fail("/undecided_reasons", "expected strings");
     s.undecided_reasons.push_back(r.get<std::string>());

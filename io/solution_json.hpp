@@ -11,6 +11,9 @@
 
 namespace eccd {
 
+// The format name of that report: the command line adds "format" (this) and
+// "version" (the program's) to every solution object it prints.
+inline constexpr const char* kSolutionFormat = "eccd-solution/1";
 // The full JSON report of a solve (what `eccd solve --json` prints).
 nlohmann::json solution_to_json(const Solution& solution);
 // The spec's answer (collides, intervals, first_contact, contacts, in that

@@ -18,9 +18,12 @@
 // true (the spec: touching counts as collision); its instants are not listed
 // in `contacts`, which keeps the isolated instants of external tangency.
 // Without contact_intervals a continuous touch would read as an overlap.
+#include "number/scalar_traits.hpp"
+
 #include <gmpxx.h>
 #include <mpfr.h>
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -78,9 +81,64 @@ inline double nearest_double(const mpq_class& q) {
   return d;
 }
 
-// An instant with an exact bracket [lo, hi]: approx and value from `mid`.
+// How many significant digits an instant's approx carries (issue 19): what
+// the instant supports, no more. This is the one rule; every pipeline makes
+// its instants through bracketed_instant or rounded_instant below.
+//  - An instant with a bracket [lo, hi] (exact, certified): the digits the
+//    bracket's width w supports, floor(-log10 w) + 1, at least 3 and at most 20
+//    (a point bracket, an exact rational: 20, as decimal_string always gave).
+//    For t in [0, 1) the rounding error of the mid-point is then below
+//    10^-floor(-log10 w) / 20 < w / 2, so the approx stays inside its bracket.
+//  - A floating instant of precision B bits: ceil(B log10 2) + 1 (53 bits: 17,
+//    the digits that round-trip a double), at most 40. Why 40 (133 bits): the
+//    precision bounds only the last rounding, not the run's error, which the
+//    root's conditioning sets; every consumer reads an instant as a double
+//    (Instant::value) and the harness's tolerances are >= 1e-16, so digits past
+//    40 only print noise (mpfr:4096 printed 1 234 of them).
+inline int bracket_digits(const mpq_class& lo, const mpq_class& hi) {
+  const mpq_class w = hi - lo;
+  if (sgn(w) <= 0) return 20;
+  mpfr_t r;
+  mpfr_init2(r, 64);
+  mpfr_set_q(r, w.get_mpq_t(), MPFR_RNDN);
+  mpfr_log10(r, r, MPFR_RNDN);
+  const double l = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  const double d = std::floor(-l) + 1;
+  return d < 3 ? 3 : d > 20 ? 20 : int(d);
+}
+inline int precision_digits(int bits) {
+  if (bits <= 53) return 17;
+  const int d = int(std::ceil(bits * 0.30102999566398120)) + 1;  // log10(2)
+  return d > 40 ? 40 : d;
+}
+// A decimal text (as a scalar type prints it, e.g. "1.25e-05", "inf") rounded
+// to `digits` significant digits (MPFR, nearest); text MPFR cannot read is kept.
+inline std::string round_decimal(const std::string& text, int digits) {
+  mpfr_t r;
+  mpfr_init2(r, mpfr_prec_t(64 + 4 * text.size()));
+  std::string out = text;
+  if (mpfr_set_str(r, text.c_str(), 10, MPFR_RNDN) == 0 && mpfr_number_p(r)) {
+    char* s = nullptr;
+    mpfr_asprintf(&s, "%.*Rg", digits, r);
+    out = s;
+    mpfr_free_str(s);
+  }
+  mpfr_clear(r);
+  return out;
+}
+
+// An instant with an exact bracket [lo, hi]: approx (bracket_digits) and value from `mid`.
 inline Instant bracketed_instant(const mpq_class& mid, const mpq_class& lo, const mpq_class& hi) {
-  return Instant{decimal_string(mid), lo, hi, nearest_double(mid)};
+  return Instant{decimal_string(mid, bracket_digits(lo, hi)), lo, hi, nearest_double(mid)};
+}
+
+// A floating instant (no bracket) at t computed in T: approx to
+// precision_digits of T's precision, value the double nearest t.
+template <class T>
+Instant rounded_instant(const T& t) {
+  return Instant{round_decimal(scalar_traits<T>::to_string(t), precision_digits(scalar_traits<T>::precision(t))), std::nullopt,
+                 std::nullopt, scalar_traits<T>::to_double(t)};
 }
 
 }  // namespace eccd

@@ -8,6 +8,7 @@
 #include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <cstdlib>
@@ -114,7 +115,11 @@ TEST_CASE("eccd solve rejects bad scene files cleanly", "[cli]") {
       CHECK(r.err.find(path) != std::string::npos);
       CHECK(r.err.find(c.place) != std::string::npos);
       CHECK(r.err.find(c.phrase) != std::string::npos);
-      CHECK(r.out.empty());
+      // Under --json the error is also one JSON object on stdout (issue 19: README "Exit codes"), nothing else.
+      const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+      CHECK(j.is_object());
+      CHECK(j.value("format", "") == "eccd-error/1");
+      CHECK(j.value("exit_code", -1) == r.code);
     }
   }
 }
