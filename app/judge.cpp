@@ -105,6 +105,7 @@ Command add_judge_command(CLI::App& app) {
     const AnswerDifference& d = j.difference;
     if (args->json) {
       nlohmann::ordered_json out = {{"format", "eccd-judgement/1"},
+                            {"version", program_version()},
                             {"scene", scene.name},
                             {"scene_file", args->scene},
                             {"answer_file", label},
