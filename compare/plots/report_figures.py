@@ -84,8 +84,8 @@ class InputError(Exception):
 # --------------------------------------------------------------------------- input
 
 OUTCOMES = ("correct", "false_positive", "false_negative", "undecided", "error")
-ARITHS = ("double", "mpfr", "exact")
-BASES = ("power", "bernstein", "scaled-bernstein", "exact")
+ARITHS = ("double", "mpfr", "exact", "certified", "fcl", "external")  # fcl: FCL as a peer; external: report --external
+BASES = ("power", "bernstein", "scaled-bernstein", "exact", "none")  # none: certified, fcl and external rows
 FAMILIES = ("colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe", "case")
 SOURCES = ("generated", "cases")
 MOTIONS = ("kinematic", "euler", "affine", "translation", "case")
@@ -129,6 +129,7 @@ OPTIONAL_RESULT_COLUMNS = [
     ("input", "str", False, INPUTS, "prepared"),
     ("digits", "int", True, None, None),
     ("reason", "str", True, None, None),
+    ("coef_err_common", "float", True, None, None),
 ]
 
 FAILURE_COLUMNS = [
