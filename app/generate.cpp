@@ -94,7 +94,7 @@ Command add_generate_command(CLI::App& app) {
   s->add_option("--seed", args->plan.seed, "Run seed (each scene's seed derives from it and the combination)")
       ->capture_default_str()->check(check_seed_text);
   s->add_flag("--force", args->force, "Overwrite existing scene files");
-  s->add_flag("--json", args->json, "Print the list of written files as JSON");
+  s->add_flag("--json", args->json, "Print the written files as JSON (format eccd-generate/1: seed, folder, files)");
   s->add_flag("--answer", args->answer,
               "Solve each scene with the exact pipeline and store its answer (collides, intervals, first_contact, "
               "contacts) in the file under \"answer\"; progress (scene and exact time) goes to stderr. Exact solving "
@@ -156,7 +156,14 @@ Command add_generate_command(CLI::App& app) {
       write_text_atomically(path, text);
       list.push_back(path.string());
     }
-    if (args->json) std::cout << list.dump(2) << "\n";
+    if (args->json) {
+      nlohmann::ordered_json j;
+      stamp_format(j, "eccd-generate/1");
+      j["seed"] = args->plan.seed;
+      j["folder"] = args->out;
+      j["files"] = list;
+      std::cout << j.dump(2) << "\n";
+    }
     else std::cout << "wrote " << files.size() << " scene(s) to " << args->out << " (seed " << args->plan.seed << ")\n";
     return 0;
   };

@@ -474,7 +474,8 @@ std::string answer_words(const Solution& rep) {
 }
 
 int run_plot(const PlotOptions& o) {
-  Scene s = read_scene_file(o.scene);  // SceneError -> exit 2
+  const SceneSource src = read_scene_source(o.scene);  // "-": standard input
+  Scene s = parse_scene(src.text, src.label);            // SceneError -> exit 2
   for (const auto& [opt_name, f] : {std::pair<std::string, std::string>{"--output", o.out}, {"--data", o.data}}) {
     if (f.empty()) continue;
     check_output_path(opt_name, f);
@@ -489,7 +490,7 @@ int run_plot(const PlotOptions& o) {
   if (cyclo && o.arith_opt->count() == 0) {
     arith_text = "double";
     arith_note = "cycloidal motion: not rational, so double arithmetic (exact cannot represent it)";
-    warn("plot", o.scene + ": " + arith_note);
+    warn("plot", src.label + ": " + arith_note);
   }
   SolveOptions opt;
   opt.arith = parse_arithmetic(arith_text);  // std::invalid_argument -> exit 2
@@ -499,7 +500,7 @@ int run_plot(const PlotOptions& o) {
     rep = solve(s, opt);
     if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
   } catch (const std::invalid_argument& e) {
-    std::cerr << "eccd plot: " << o.scene << ": " << cli_message(e) << "\n";
+    std::cerr << "eccd plot: " << src.label << ": " << cli_message(e) << "\n";
     return 3;
   }
 
@@ -533,7 +534,9 @@ int run_plot(const PlotOptions& o) {
     add_curve_3d(data, s, rep);
   }
 
-  const fs::path out = o.out.empty() ? fs::path(fs::path(o.scene).stem().string() + ".png") : fs::path(o.out);
+  // Default PNG: the scene file's name; for a scene read from standard input, the scene's "name" (or "scene").
+  const std::string stem = o.scene != "-" ? fs::path(o.scene).stem().string() : !s.name.empty() && s.name.find('/') == std::string::npos ? s.name : "scene";
+  const fs::path out = o.out.empty() ? fs::path(stem + ".png") : fs::path(o.out);
   const std::string tag = "." + std::to_string(::getpid()) + ".tmp";
   const fs::path tmp_png = fs::path(out.string() + tag + ".png");
   fs::path tmp_data;
@@ -598,9 +601,10 @@ Command add_plot_command(CLI::App& app) {
       "(apt-get install python3-matplotlib; ECCD_PYTHON picks the interpreter, ECCD_PLOTS_DIR the script folder). "
       "Exit status: 0 written; 1 python/matplotlib missing or drawing failed (nothing written); 2 bad scene or "
       "option; 3 a request the pipeline refuses.");
-  c.sub->add_option("SCENE", o->scene, "Scene file (format ellipse-ccd-scene/1)")->required();
+  c.sub->add_option("SCENE", o->scene, "Scene file (format ellipse-ccd-scene/1); - reads it from standard input")->required();
   c.sub->add_option("-o,--output", o->out,
-                    "PNG to write (default: the scene file's name with .png, in the current directory); "
+                    "PNG to write (default: the scene file's name with .png, in the current directory; for -, the "
+                    "scene's name); "
                     "replaced only when drawing succeeded");
   c.sub->add_option("--instants", o->instants,
                     "Number of evenly spaced instants drawn on the left, 0 to 50 (1 = t = 0 only); every contact "

@@ -99,7 +99,14 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
     }
   }
   if (!quiet()) std::fprintf(stderr, "\n");
-  if (json) { std::cout << all.dump(2) << "\n"; return 0; }
+  if (json) {
+    nlohmann::json j;
+    stamp_format(j, "eccd-table/1");
+    j["folder"] = dir;
+    j["scenes"] = all;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
   std::vector<std::string> head{"scene"};
   for (auto& c : cols) head.push_back(c.label);
   std::vector<std::size_t> w(head.size(), 0);
@@ -135,7 +142,7 @@ Command add_table_command(CLI::App& app) {
   c.sub = app.add_subcommand("table", "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR arithmetic and print a side-by-side table.");
   c.sub->add_option("DIR", args->dir, "Folder of scene files")->capture_default_str();
   c.sub->add_option("--mpfr", args->mpfr_bits, "MPFR precisions in bits (repeatable, or a comma list: 64,128)")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
-  c.sub->add_flag("--json", args->json, "Print all results as one JSON array instead of the table");
+  c.sub->add_flag("--json", args->json, "Print all results as one JSON object instead of the table (format eccd-table/1; \"scenes\": one object per scene file with a solution per column)");
   c.run = [args]() { return run_table(args->dir, args->mpfr_bits, args->json); };
   return c;
 }

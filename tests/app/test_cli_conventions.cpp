@@ -99,7 +99,10 @@ TEST_CASE("eccd table --mpfr takes a comma list", "[cli][conventions]") {
   fs::copy_file(kScene2d, t.path / "example2.json");
   Run r = run_eccd("table " + q(t.str()) + " --mpfr 64,128 --json", 120);
   REQUIRE(r.code == 0);
-  auto j = nlohmann::json::parse(r.out);
+  auto top = nlohmann::json::parse(r.out);
+  CHECK(top["format"] == "eccd-table/1");
+  CHECK(top.contains("version"));
+  auto j = top["scenes"];
   REQUIRE(j.size() == 1);
   CHECK(j[0].contains("mpfr:64"));
   CHECK(j[0].contains("mpfr:128"));

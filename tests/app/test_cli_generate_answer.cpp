@@ -77,9 +77,11 @@ TEST_CASE("eccd generate --answer stores the exact answer, and without it there 
   for (const auto& plan : plans) {
     INFO(plan);
     REQUIRE(run(exe + " generate --out " + (t.path / "with").string() + plan + " --answer --json", out) == 0);
-    auto with_files = nlohmann::json::parse(out);
+    auto with_doc = nlohmann::json::parse(out);
+    CHECK(with_doc["format"] == "eccd-generate/1");
+    auto with_files = with_doc["files"];
     REQUIRE(run(exe + " generate --out " + (t.path / "without").string() + plan + " --json", out) == 0);
-    auto without_files = nlohmann::json::parse(out);
+    auto without_files = nlohmann::json::parse(out)["files"];
     REQUIRE(with_files.size() == without_files.size());
     REQUIRE(!with_files.empty());
     for (std::size_t i = 0; i < with_files.size(); ++i) {
@@ -101,5 +103,6 @@ TEST_CASE("eccd generate --answer stores the exact answer, and without it there 
   for (const auto& e : fs::directory_iterator(t.path / "without")) CHECK(!eccd::read_scene_file(e.path().string()).answer);
   // With --force the answer is added in place.
   REQUIRE(run(exe + " generate --out " + (t.path / "without").string() + plans[1] + " --answer --force --json", out) == 0);
-  for (const auto& f : nlohmann::json::parse(out)) check_stored_answer(f.get<std::string>());
+  const nlohmann::json forced = nlohmann::json::parse(out);
+  for (const auto& f : forced["files"]) check_stored_answer(f.get<std::string>());
 }

@@ -99,6 +99,25 @@ TEST_CASE("eccd plot draws a 2D scene: default output name, PNG, data with solve
   CHECK(data["contacts"][0]["point"][1].get<double>() == Approx(0).margin(1e-9));
 }
 
+TEST_CASE("eccd plot - reads the scene from standard input and names the PNG after the scene", "[plot][app][cli][conventions]") {
+  TempDir dir;
+  const std::string scene = source("cases/paper003/example2.json");
+  const std::string name = read_json(scene)["name"].get<std::string>();
+  std::string out;
+  REQUIRE(run("cd " + quote(dir.path.string()) + " && " + exe() + " plot - --data data.json < " + quote(scene), out) == 0);
+  CHECK(out.find("wrote " + name + ".png") != std::string::npos);
+  CHECK(dir.files() == std::vector<std::string>{"data.json", name + ".png"});
+  CHECK(is_png(dir.path / (name + ".png")));
+  nlohmann::json data = read_json(dir.path / "data.json");
+  CHECK(data["file"] == "<stdin>");
+  CHECK(data["solve"]["critical_instants"] == solve_json(scene)["critical_instants"]);
+  // A bad scene on stdin is named "<stdin>", exit 2, nothing written.
+  TempDir bad;
+  CHECK(run("cd " + quote(bad.path.string()) + " && (echo '{' | " + exe() + " plot - 2>&1)", out) == 2);
+  CHECK(out.find("<stdin>") != std::string::npos);
+  CHECK(bad.files().empty());
+}
+
 TEST_CASE("eccd plot draws a 3D scene: the zero set of F(u,t), with solve's critical instants", "[plot][app][cli][ccd3]") {
   TempDir dir;
   const std::string scene = source("cases/paper002/example.json");

@@ -59,7 +59,7 @@ TEST_CASE("eccd generate writes the same scenes for the same seed and refuses to
   std::string out;
   const std::string args = " --dims 2 --degrees 3 --families touch,near-miss --separations 6 --seed 5 --json";
   REQUIRE(run(exe + " generate --out " + (t.path / "a").string() + args, out) == 0);
-  auto files = nlohmann::json::parse(out);
+  auto files = nlohmann::json::parse(out)["files"];  // eccd-generate/1
   REQUIRE(files.size() == 2);
   REQUIRE(run(exe + " generate --out " + (t.path / "b").string() + args, out) == 0);
   for (const auto& f : files) {
