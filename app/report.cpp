@@ -35,6 +35,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -57,6 +58,7 @@ struct ReportArgs {
   std::vector<std::string> merge;
   int map_size = 32;
   bool no_map = false, no_figures = false;
+  std::vector<std::string> externals;  // --external NAME=DIR, parsed into harness.externals before any work
 };
 
 // ---- tasks -------------------------------------------------------------------
@@ -460,6 +462,26 @@ void finish_output(const fs::path& partial, const fs::path& out) { replace_outpu
 
 // ---- the two modes -----------------------------------------------------------
 
+// meta.json's "externals" (report --external): per engine its name, its folder, how many scenes it answered
+// (rows "ext:NAME") and how many scenes of the report it did not (no answer file). `engines` holds name and dir.
+nlohmann::json externals_meta(const nlohmann::json& engines, const std::vector<std::string>& rows) {
+  std::map<std::string, std::size_t> answered;
+  std::set<std::string> scenes;
+  for (const auto& r : rows) {
+    auto f = csv_split(r, "results.csv row");
+    scenes.insert(f[0]);
+    if (f[8].rfind("ext:", 0) == 0) ++answered[f[8].substr(4)];
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& e : engines) {
+    if (!e.is_object() || !e.contains("name") || !e["name"].is_string()) continue;
+    const std::string name = e["name"].get<std::string>();
+    const std::size_t n = answered.count(name) ? answered[name] : 0;
+    out.push_back({{"name", name}, {"dir", e.value("dir", "")}, {"answers", n}, {"missing", scenes.size() - n}});
+  }
+  return out;
+}
+
 int run_report(const ReportArgs& a) {
   auto t_start = std::chrono::steady_clock::now();
   std::string started = now_iso();
@@ -597,6 +619,11 @@ int run_report(const ReportArgs& a) {
   meta["failed"] = failures;
   meta["result_rows"] = rows.size();  // --merge checks a part's row counts against these
   meta["map_rows"] = cells.size();
+  {
+    nlohmann::json ext = nlohmann::json::array();
+    for (const auto& e : a.harness.externals) ext.push_back({{"name", e.name}, {"dir", e.dir}});
+    meta["externals"] = externals_meta(ext, rows);
+  }
   if (map) {
     meta["failure_map"] = {{"scene", map->scene},
                            {"x_input", "constant coefficient of B's x-translation entry m[0][2] (nearest double " + std::to_string(map->x0) + ")"},
@@ -763,6 +790,7 @@ int run_merge(const ReportArgs& a) {
   meta["shard"] = nullptr;
   meta["result_rows"] = rows.size();
   meta["map_rows"] = cells.size();
+  if (meta.contains("externals") && meta["externals"].is_array()) meta["externals"] = externals_meta(meta["externals"], rows);
   write_file(partial / "meta.json", meta.dump(2) + "\n");
   if (!a.no_figures) run_figures(partial);
   finish_output(partial, out);
@@ -825,8 +853,21 @@ Command add_report_command(CLI::App& app) {
       ->capture_default_str()->check(CLI::Range(2, 1024));
   s->add_flag("--no-map", a->no_map, "Skip the failure map");
   s->add_flag("--no-figures", a->no_figures, "Write the CSV and meta.json only (no report.md, no PNG)");
+  s->add_option("--external", a->externals,
+                "NAME=DIR: your engine's answers as rows ext:NAME in every table and plot, judged against the exact answer "
+                "like eccd's pipelines; DIR holds one answer file per scene, DIR/<scene name>.json, in any form `eccd judge` "
+                "reads (docs/answer-format.md), optionally with \"time_us\"; scenes without a file get no row "
+                "(meta.json counts them). Repeat for several engines. `eccd generate --out DIR` writes the generated "
+                "scenes for your engine to answer.")
+      ->expected(1, -1);
   c.run = [a, out_opt]() {
     a->out_given = out_opt->count() > 0;
+    for (const auto& spec : a->externals) {  // checked before any work: a bad spec is exit 2
+      ExternalEngine e = parse_external(spec);
+      for (const auto& other : a->harness.externals)
+        if (other.name == e.name) throw std::invalid_argument("--external " + spec + ": the name " + e.name + " is given twice");
+      a->harness.externals.push_back(e);
+    }
     try {
       return a->merge.empty() ? run_report(*a) : run_merge(*a);
     } catch (const Interrupted& e) {

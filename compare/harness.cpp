@@ -286,6 +286,32 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
   return r;
 }
 
+namespace {
+
+// The row of an external engine on one scene (compare/external_answers.hpp), if it answered the scene: its
+// answer against the exact one by the same metrics as every pipeline; an unreadable file is an error row.
+void rows_from_external(const ExternalEngine& e, const SceneInfo& info, const Answer& exact, std::vector<ResultRow>& rows) {
+  std::optional<ExternalAnswer> ext = read_external_answer(e, info.name);
+  if (!ext) return;  // no answer file for this scene: no row (meta.json counts the missing ones)
+  ResultRow row;
+  row.scene = info;
+  row.pipeline = "ext:" + e.name;
+  row.arith = "external";
+  row.basis = "none";
+  row.method = "external";
+  row.input = "rounded";  // the engine's own input: whatever it made of the scene's numbers
+  row.m = answer_metrics(ext->answer ? &*ext->answer : nullptr, exact);
+  row.time_us = ext->time_us >= 0 ? ext->time_us : std::numeric_limits<double>::quiet_NaN();  // NaN: not measured
+  if (!ext->answer) {
+    row.error = row.reason = ext->error;
+  } else if (row.m.outcome == "undecided") {
+    for (const auto& u : ext->answer->undecided) row.reason += (row.reason.empty() ? "" : "; ") + ("undecided near t = " + u.approx);
+  }
+  rows.push_back(row);
+}
+
+}  // namespace
+
 std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const HarnessOptions& opt) {
   std::vector<ResultRow> rows;
   auto pipes = harness_pipelines(s.dim, opt);
@@ -364,6 +390,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     }
     rows.push_back(row);
   }
+  for (const auto& e : opt.externals) rows_from_external(e, info, exact.answer, rows);
   return rows;
 }
 

@@ -37,6 +37,7 @@
 // Requirements: a scene with rational motions (the exact pipeline refuses
 // cycloidal motions, and so does the harness).
 #include "api/solve.hpp"
+#include "compare/external_answers.hpp"
 #include "compare/metrics.hpp"
 #include "kernel/scene.hpp"
 
@@ -104,6 +105,7 @@ struct HarnessOptions {
   double budget_s = 10;         // time budget of one floating run (seconds; <= 0: none)
   double exact_budget_s = 600;  // time budget of the exact run (ground truth)
   bool isolate = true;          // each floating run in a child process killed at 2 x budget + 1 s (run_bounded)
+  std::vector<ExternalEngine> externals;  // report --external: a row "ext:NAME" per scene with an answer file
 };
 
 std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& opt);
@@ -120,7 +122,8 @@ struct ResultRow {
   std::string reason;  // undecided rows: why (time budget, the pipeline's undecided instants); error rows: the message
 };
 
-// Every pipeline on one scene; the exact row first.
+// Every pipeline on one scene; the exact row first, the external engines' rows
+// (compare/external_answers.hpp; arith "external", basis "none") last.
 std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const HarnessOptions& opt);
 
 // results.csv (the contract with compare/plots/report_figures.py).
