@@ -113,6 +113,7 @@ struct ResultRow {
   std::string pipeline, arith, basis, method;
   int bits = 0;
   std::optional<double> coef_err, delta_err;
+  std::optional<double> coef_err_common;  // coef_err in the common basis (Bernstein on [0, 1]; compare/metrics.hpp)
   AnswerMetrics m;
   double time_us = 0;
   std::string error;   // the pipeline's exception message, if any
