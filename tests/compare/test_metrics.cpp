@@ -92,8 +92,11 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
     REQUIRE(r.coef_err_common);
     if (r.basis != "power") CHECK(*r.coef_err_common == *r.coef_err);
   }
-  CHECK(*by["mpfr:256/power"]->coef_err_common < *by["mpfr:64/power"]->coef_err_common);
-  CHECK(*by["mpfr:64/power"]->coef_err_common < *by["double/power"]->coef_err_common);
+  CHECK(*by["mpfr:256/power"]->coef_err_common <= *by["mpfr:64/power"]->coef_err_common);
+  CHECK(*by["mpfr:64/power"]->coef_err_common <= *by["double/power"]->coef_err_common);
+  // The change of basis is exact and one to one: exact power coefficients iff exact Bernstein coefficients.
+  for (const char* p : {"double/power", "mpfr:64/power", "mpfr:256/power"})
+    CHECK((*by[p]->coef_err == 0) == (*by[p]->coef_err_common == 0));
   // One CSV line per row, 30 fields each (coef_err_common last, issue 19).
   for (const auto& r : rows) {
     const std::string line = results_csv_line(r);
