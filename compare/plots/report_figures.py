@@ -634,6 +634,7 @@ def plot_series(ax, fig_name, panel_title, data, series, linestyle="-", band=Fal
         off = (k - (n - 1) / 2) * xoffset
         xs = [x + off for x in s["xs"]]
         ax.plot(xs, s["ys"], linestyle=linestyle, marker=marker, color=colour, markersize=6,
+                markevery=s.get("markevery"),
                 label=textwrap.fill(s["label"], 44, subsequent_indent="  "))
         if band and s.get("lo") is not None:
             ax.fill_between(xs, s["lo"], s["hi"], color=colour, alpha=0.12, linewidth=0)
@@ -775,7 +776,8 @@ def fig_coef_hist(data, path):
             vals = [r[col] for r in coef_rows(data, dim, p) if r.get(col) is not None and math.isfinite(r[col])]
             counts, _ = np.histogram(np.log10(np.maximum(np.array(vals), floor)), bins=edges)
             series.append({"label": f"{base_label(p)} ({len(vals)} scenes)", "pipeline": p, "xs": centres,
-                           "ys": [int(c) for c in counts]})
+                           "ys": [int(c) for c in counts],
+                           "markevery": [i for i, c in enumerate(counts) if c > 0]})  # markers on counts > 0
         what = "common basis" if col == "coef_err_common" else "own basis"
         title = f"{dim}D: coefficient error of g, double, {what}"
         plot_series(ax, name, title, data, series)
@@ -841,6 +843,7 @@ def fig_min_bits(data, path, minbits):
     if not dims:
         return None
     fig, axes = _grid(1, len(dims), width=6.0, height=4.4)
+    hollow_seen = False
     for ax, dim in zip(axes[0], dims):
         table = minbits[dim]  # (basis, method) -> degree -> bits | "none of the tested"
         levels = sorted({b for grp in data.mpfr_groups(dim).values() for b in grp})
@@ -853,7 +856,24 @@ def fig_min_bits(data, path, minbits):
             series.append({"label": group_name(*grp), "pipeline": p, "xs": degs,
                            "ys": [ypos[by_deg[g]] if isinstance(by_deg[g], int) else none_y for g in degs]})
         title = f"{dim}D: smallest clean MPFR precision (touch, graze apart)"
-        plot_series(ax, name, title, data, series, xoffset=0.08)
+        rec = plot_series(ax, name, title, data, series, xoffset=0.08)
+        # hollow: every run that keeps the precision up is a time-out (the time budget, not the precision)
+        nser = len(rec)
+        for k, (s_, st) in enumerate(zip(merge_identical([x for x in series if x["xs"]]), rec)):
+            grp = next(g for g in table if group_name(*g) == s_["labels"][0])
+            hx, hy = [], []
+            for x, y in zip(s_["xs"], s_["ys"]):
+                causes = minbits_causes(data, dim, grp, x, table[grp][x])
+                if causes and set(causes) == {"time-out"}:
+                    hx.append(x + (k - (nser - 1) / 2) * 0.08)
+                    hy.append(y)
+            if hx:
+                ax.plot(hx, hy, linestyle="none", marker=st["marker"], markersize=9, markerfacecolor="white",
+                        markeredgecolor=st["color"], markeredgewidth=1.8)
+                hollow_seen = True
+                if not any(line.get_label().startswith("hollow") for line in ax.lines):
+                    ax.plot([], [], linestyle="none", marker="o", markerfacecolor="white", markeredgecolor="0.3",
+                            label="hollow: only time-outs keep it up (budget, not precision)")
         ax.axhline(none_y - 0.5, color="0.5", linewidth=0.8, linestyle=":")
         ax.set_yticks(list(range(len(levels) + 1)))
         ax.set_yticklabels([str(b) for b in levels] + ["none of\nthe tested"])
@@ -863,11 +883,26 @@ def fig_min_bits(data, path, minbits):
         ax.set_ylabel("MPFR precision (bits)")
         ax.set_title(title, fontsize="medium")
         ax.grid(True, alpha=0.3)
-        _legend(ax)
+        _legend(ax, outside="below")
     _save(fig, path)
     return ("Smallest tested MPFR precision at which this and every larger tested precision has no false positive, "
             "false negative, undecided or error on the scenes of that dimension and degree, touch and graze scenes "
-            "counted apart (table *MPFR bits per family*); above the dotted line: none of the tested precisions.")
+            "counted apart (table *MPFR bits per family*); above the dotted line: none of the tested precisions."
+            + (" Hollow marker: every run that keeps the precision up there is a time-out (the time budget, not the "
+               "precision)." if hollow_seen else ""))
+
+
+def minbits_causes(data, dim, grp, deg, bits):
+    """Reason classes of the runs (touch and graze apart) that are not clean at the largest tested precision that
+    is not clean, for one dim x degree x (basis, method): what keeps the smallest clean precision at `bits`."""
+    by_bits = data.mpfr_groups(dim).get(grp, {})
+    rb = {b: [r for r in data.sel(dim=dim, degree=deg, pipeline=p) if r["family"] not in ISOLATED_CONTACT]
+          for b, p in by_bits.items()}
+    rb = {b: x for b, x in rb.items() if x}
+    fl = failing_level(bits, rb) if rb else None
+    if fl is None:
+        return []
+    return [reason_class(r) for r in rb[fl] if not is_clean(r)]
 
 
 def fig_time(data, path):
