@@ -716,8 +716,17 @@ def fig_coef_vs_degree(data, path):
     floor = _floor_for(allvals)
     fig, axes = _grid(len(dims), len(cols), width=6.2, height=4.4)
     for i, dim in enumerate(dims):
+        one_basis = len({held_basis(data.all_pinfo[p]) for p in coef_pipelines(data, dim)}) == 1
         for j, (col, what) in enumerate(cols):
             ax = axes[i][j]
+            if one_basis and len(cols) > 1 and col == "coef_err":
+                ax.axis("off")  # every pipeline holds Bernstein coefficients: the own basis is the common one
+                ax.text(0.5, 0.5, textwrap.fill(f"{dim}D: every pipeline holds its coefficients in Bernstein form, "
+                                                f"so its own basis is the common basis (right).", 40),
+                        ha="center", va="center", transform=ax.transAxes, fontsize="medium", color="0.3")
+                continue
+            if one_basis and col == "coef_err_common":
+                what += ": every pipeline's own basis here"
             series = []
             for p in coef_pipelines(data, dim):
                 pts = {}
@@ -742,6 +751,12 @@ def fig_coef_vs_degree(data, path):
             ax.set_title(textwrap.fill(title, 48), fontsize="medium")
             ax.grid(True, which="major", alpha=0.3)
             _legend(ax)
+        used = [ax for ax in axes[i] if ax.axison]
+        if not used:
+            continue
+        lo, hi = min(ax.get_ylim()[0] for ax in used), max(ax.get_ylim()[1] for ax in used)
+        for ax in used:
+            ax.set_ylim(lo, hi)  # one scale per dimension: own and common basis compare by eye
     _save(fig, path)
     common = ("; right: the same coefficients converted exactly to the Bernstein basis, the only column that "
               "compares pipelines" if len(cols) > 1 else "; results.csv has no coef_err_common column (an older "
@@ -1733,10 +1748,10 @@ def coef_explanation(data):
                     else f": {fmt_ratio(1 / d_ratio)}× smaller for power form." if d_ratio else ".")
         if g_ratio is not None and d_ratio is not None and d_ratio >= 10:
             if g_ratio < 10:
-                txt += (f" So g itself is about as accurate in either basis (common-basis ratio "
+                txt += (f" So g itself is about as accurate in either basis (common-basis ratio power / Bernstein "
                         f"{fmt_ratio(g_ratio)}); Bernstein form gains where {dname} is built from g.")
             elif d_ratio < 10 * g_ratio:
-                txt += (f" The gain is already in g (common-basis ratio {fmt_ratio(g_ratio)}) and carries over to "
+                txt += (f" The gain is already in g (common-basis ratio power / Bernstein {fmt_ratio(g_ratio)}) and carries over to "
                         f"{dname}.")
             else:
                 txt += (f" g is {fmt_ratio(g_ratio)}× less accurate in power form already, and building {dname} "
