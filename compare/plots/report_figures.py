@@ -1004,7 +1004,18 @@ def fig_failure_map(data, path):
     for (ix, iy), a in exact_at.items():
         g[iy, ix] = FM_ORDER.index(a)
     grids["exact"] = g
-    names = panels + ["exact"]
+    # pipelines with identical answers on every cell share one panel, titled with all their names
+    merged = []
+    for p in panels:
+        for m in merged:
+            if np.array_equal(grids[m[0]], grids[p]):
+                m.append(p)
+                break
+        else:
+            merged.append([p])
+    titles = {m[0]: (m[0] if len(m) == 1 else textwrap.fill(" = ".join(m) + " (identical)", 34)) for m in merged}
+    titles["exact"] = "exact"
+    names = [m[0] for m in merged] + ["exact"]
     ncol = min(4, len(names))
     nrow = math.ceil(len(names) / ncol)
     fig, axes = plt.subplots(nrow, ncol, figsize=(3.6 * ncol, 3.6 * nrow + 0.6), squeeze=False)
@@ -1028,7 +1039,7 @@ def fig_failure_map(data, path):
         ax.set_xlabel(xlab, fontsize="small")
         if k % ncol == 0:
             ax.set_ylabel(ylab, fontsize="small")
-        ax.set_title(p)
+        ax.set_title(titles[p], fontsize="medium")
     present = {FM_ORDER[v] for gr in grids.values() for v in np.unique(gr)}
     handles = [Patch(facecolor=FM_COLORS[a], edgecolor="0.3", label=a) for a in FM_ORDER if a in present]
     FIGURE_MANIFEST.setdefault(os.path.basename(path), []).append(
