@@ -1832,7 +1832,6 @@ def section_mpfr_family(data):
                     cell += f" ({fl}: {fmt_causes(by_bits[fl])})"
                 cells.append(cell)
             body.append([f"{dim}D", g, scenes_of(gr)] + cells)
-    degs = sorted({d for dim in data.dims for d in data.degrees[dim]})
     # one table per dimension (degrees differ between dimensions)
     for dim in data.dims:
         dbody = [b for b in body if b[0] == f"{dim}D"]
@@ -1842,7 +1841,6 @@ def section_mpfr_family(data):
         out += [f"{dim}D (cells: bits; none: none of the tested):", "",
                 md_table(["dim", "family", "scenes"] + [f"degree {d}" for d in dd] + ["all degrees"], dbody,
                          ["---", "---", "---:"] + ["---:"] * (len(dd) + 1)), ""]
-    del degs
     out += ["Touch (and graze) rows: a finite precision cannot split a double root, so no precision is expected to "
             "decide them unless a method accepts a tolerance; the right answer there is *collision* (touching "
             "counts). Their undecided answers are honest, not wrong.", ""]
