@@ -879,7 +879,7 @@ def fig_min_bits(data, path, minbits):
             hx, hy = [], []
             for x, y in zip(s_["xs"], s_["ys"]):
                 causes = minbits_causes(data, dim, grp, x, table[grp][x])
-                if causes and set(causes) == {"time-out"}:
+                if causes and set(causes) <= set(NOT_PRECISION):
                     hx.append(x + (k - (nser - 1) / 2) * 0.08)
                     hy.append(y)
             if hx:
@@ -888,7 +888,7 @@ def fig_min_bits(data, path, minbits):
                 hollow_seen = True
                 if not any(line.get_label().startswith("hollow") for line in ax.lines):
                     ax.plot([], [], linestyle="none", marker="o", markerfacecolor="white", markeredgecolor="0.3",
-                            label="hollow: only time-outs keep it up (budget, not precision)")
+                            label="hollow: only time-outs or work bounds keep it up (not precision)")
         ax.axhline(none_y - 0.5, color="0.5", linewidth=0.8, linestyle=":")
         ax.set_yticks(list(range(len(levels) + 1)))
         ax.set_yticklabels([str(b) for b in levels] + ["none of\nthe tested"])
@@ -903,8 +903,8 @@ def fig_min_bits(data, path, minbits):
     return ("Smallest tested MPFR precision at which this and every larger tested precision has no false positive, "
             "false negative, undecided or error on the scenes of that dimension and degree, touch and graze scenes "
             "counted apart (table *MPFR bits per family*); above the dotted line: none of the tested precisions."
-            + (" Hollow marker: every run that keeps the precision up there is a time-out (the time budget, not the "
-               "precision)." if hollow_seen else ""))
+            + (" Hollow marker: every run that keeps the precision up there hit the time budget or a work bound, "
+               "not a precision limit." if hollow_seen else ""))
 
 
 def minbits_causes(data, dim, grp, deg, bits):
@@ -1267,15 +1267,48 @@ def d_span(rows):
     return f"d = {ds[0][1]}" if len(ds) == 1 else f"d {ds[0][1]}…{ds[-1][1]}"
 
 
+# Why a run is not clean, from its outcome and the words of its `reason` (compare/harness.cpp: the time budget, or the
+# pipeline's own reasons: kernel/cd_disc.hpp, floating/bezier_ccd.hpp). The classes that more precision does not cure
+# are NOT_PRECISION.
+REASON_CLASSES = (
+    ("wrong", "a false positive or negative: the precision was too low and the pipeline did not notice"),
+    ("error bound", "a sign too close to zero to decide in this arithmetic (CD-DISC's error bound): more bits help"),
+    ("Bézier unresolved", "a status or contact the Bézier method could not resolve in this arithmetic: its error "
+                          "bound, or two shots meeting within its touch tolerance 2^-(bits/2) at a tangency, which "
+                          "more bits do not split"),
+    ("work bound", "root isolation stopped at its work bound (pieces), not a precision limit"),
+    ("overflow", "a non-finite coefficient: the exponent range of double, not its precision"),
+    ("time-out", "the time budget, not the precision"),
+    ("undecided", "undecided with a reason none of the above (older runs name only the instants)"),
+    ("error", "the pipeline threw"),
+)
+NOT_PRECISION = ("work bound", "time-out")
+
+
 def reason_class(r):
-    """Why a row is not clean: wrong, error, time budget, or the method's own undecided answer."""
+    """Why a row is not clean: one of REASON_CLASSES (or 'clean')."""
     if r["outcome"] in WRONG:
         return "wrong"
     if r["outcome"] == "error":
         return "error"
-    if r["outcome"] == "undecided":
-        return "time-out" if (r.get("reason") or "").startswith("time budget") else "own undecided"
-    return "clean"
+    if r["outcome"] != "undecided":
+        return "clean"
+    why = r.get("reason") or ""
+    if why.startswith("time budget"):
+        return "time-out"
+    if "work bound" in why:
+        return "work bound"
+    if why.startswith("overflow"):
+        return "overflow"
+    if "Bezier method could not resolve" in why or "Bézier method could not resolve" in why:
+        return "Bézier unresolved"
+    if "too close to zero" in why:
+        return "error bound"
+    return "undecided"
+
+
+def reason_legend():
+    return "; ".join(f"*{k}*: {v}" for k, v in REASON_CLASSES)
 
 
 def fmt_causes(rows):
@@ -1810,9 +1843,9 @@ def section_mpfr_family(data):
             f"input mode *{data.primary_input}*) at which this and every larger tested precision gives no wrong, "
             "undecided or error answer on the family's scenes of that degree — every family, touch included. When "
             "it is not the lowest tested precision, the parenthesis says what failed at the largest precision that "
-            "is not clean: *wrong* (a lack of precision), *own undecided* (the method's error bound or, in 3D, its "
-            "touch tolerance: the reason column records both as 'undecided near t = …' and does not tell them apart), "
-            "*time-out* (the time budget, not precision), *error*.", ""]
+            "is not clean, classified by the `reason` column: " + reason_legend() + ". The reason column does not "
+            "say which of the Bézier method's unresolved instants are tangencies within its touch tolerance; in touch "
+            "and graze scenes they are.", ""]
     body = []
     for dim in data.dims:
         for g, fams in MPFR_FAMILY_GROUPS:
@@ -2102,18 +2135,18 @@ def section_mpfr(data, minbits, figs):
                     for r in bad:
                         fams[r["family"]] = fams.get(r["family"], 0) + 1
                     causes = fmt_causes(bad)
-                    only_not_precision = all(reason_class(r) in ("time-out",) for r in bad)
+                    only_not_precision = all(reason_class(r) in NOT_PRECISION for r in bad)
                     why.append(f"- {dim}D degree {deg}, {group_name(*g)}: {fmt_bits(b)} because at {fl} bits "
                                f"{len(bad)} run{'s' if len(bad) != 1 else ''} {'are' if len(bad) != 1 else 'is'} not "
                                f"clean: {causes} (families: " + ", ".join(f"{f} {k}" for f, k in fams.items()) + ")"
-                               + ("; all of them time-outs: the time budget, not the precision" if only_not_precision
+                               + ("; none of them is a precision limit (time budget or work bound)" if only_not_precision
                                   else "") + ".")
             body.append(row)
     out += [md_table(["dim", "degree", "scenes", "counted", "touch + graze (apart)"] + [group_name(*g) for g in cols],
                      body, ["---", "---:", "---:", "---:", "---:"] + ["---:"] * len(cols)), ""]
     if why:
-        out += ["Why a cell is above the lowest tested precision (*wrong*: a lack of precision; *own undecided*: "
-                "the method's error bound or, in 3D, its touch tolerance; *time-out*: the time budget):", ""] + why + [""]
+        out += ["Why a cell is above the lowest tested precision, by the `reason` column (" + reason_legend() + "):",
+                ""] + why + [""]
     out += figure_block(figs, "min_mpfr_bits_vs_degree.png")
     return out
 
