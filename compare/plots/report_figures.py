@@ -1519,7 +1519,14 @@ def section_verdict(data, minbits):
             if len(vals) == 1:
                 txt = f"{fmt_bits(next(iter(per_deg.values())))}" + (" at every degree" if len(per_deg) > 1 else "")
             else:
-                txt = ", ".join(f"deg {d}: {b if isinstance(b, int) else 'none'}" for d, b in per_deg.items())
+                runs = []  # consecutive degrees with the same answer: "deg 2–3: 128"
+                for d, b in per_deg.items():
+                    if runs and runs[-1][2] == b and runs[-1][1] == d - 1:
+                        runs[-1][1] = d
+                    else:
+                        runs.append([d, d, b])
+                txt = ", ".join(f"deg {a}{'' if a == z else f'–{z}'}: {b if isinstance(b, int) else 'none'}"
+                                for a, z, b in runs)
             if not isinstance(res, int):
                 txt += f" (what fails at {max(by_bits)} bits: {fmt_causes(by_bits[max(by_bits)])})"
             items.append(f"{g} {txt}")
