@@ -28,19 +28,31 @@ Definitions used throughout (they are repeated in report.md):
   smallest clean precision for dim x degree x (basis, method), the smallest MPFR precision p
                            in the data such that for p and every larger tested precision no
                            scene of that dim x degree is a false positive, false negative,
-                           undecided or error; "none of the tested" otherwise.
+                           undecided or error; "none of the tested" otherwise. Touch and graze scenes
+                           (an isolated contact: a double root no finite precision splits) are not
+                           counted there but shown in rows of their own (MPFR bits per family, all
+                           bases pooled); what keeps a precision up is classified by `reason`
+                           (REASON_CLASSES: wrong, error bound, Bézier unresolved, work bound,
+                           overflow, time-out).
   time                     medians of time_us over rows whose outcome is not `error` (an error row
                            has no measured time; the harness writes 0 there).
-  trustworthy              per family group and input mode, an arithmetic (double, mpfr:B; all its
-                           pipelines pooled) with no false positive, false negative or error; undecided
+  trustworthy              per dimension, family group and input mode, an arithmetic (double: the
+                           error-bounded double pipelines pooled; mpfr:B) or another engine (certified,
+                           each grid baseline, each FCL pipeline, each ext:NAME: a column of its own)
+                           with no false positive, false negative or error; undecided
                            answers (the pipelines' own, from an error bound or a time budget) are
                            honest and counted apart. "Trustworthy from mpfr:B on": B and every larger
                            tested precision are.
   input modes              results.csv's `input` column: `rounded` (the scene's numbers rounded to the
                            arithmetic) or `prepared` (coefficients prepared exactly, then rounded). The
                            main sections read the rounded rows where there are any; the section on
-                           input modes reads both. Columns `input`, `digits` and `reason` may be absent
-                           (older files: input `prepared`).
+                           input modes reads both (certified, FCL and external rows, one mode each, are
+                           in every section). Columns `input`, `digits`, `reason` and `coef_err_common`
+                           may be absent (older files: input `prepared`).
+  coefficient error        `coef_err` in each pipeline's own basis (power form for power, Bernstein
+                           otherwise: not comparable across bases); `coef_err_common` the same
+                           coefficients changed exactly to the Bernstein basis (comparable). Both exist
+                           for the prepared input mode only.
 
 Everything is written to a temporary folder inside DIR and moved into place at the end
 (figures first, report.md last), so a failure leaves no half-written report. Exit status:
