@@ -58,20 +58,28 @@ void coefficients_2d(const Reference2& ref, Basis basis, int bits, const T& like
   auto m = to_arithmetic<T, H_2D>(ref.p, like);
   std::vector<Poly<T>> g = characteristic_of(m);
   FloatingPolicy<T> pol(basis, bits, like);
-  if (basis == Basis::power) row.coef_err = coefficient_error(g, ref.g);
-  else row.coef_err = coefficient_error(to_bernstein_all(g, like), ref.g_bern);
+  if (basis == Basis::power) {
+    row.coef_err = coefficient_error(g, ref.g);
+    row.coef_err_common = coefficient_error_common(g, ref.g_bern);
+  } else {
+    row.coef_err = coefficient_error(to_bernstein_all(g, like), ref.g_bern);
+    row.coef_err_common = row.coef_err;  // already held in the common basis
+  }
   row.delta_err = coefficient_error(discriminant_of(g, pol), ref.delta_bern);
 }
 
 template <class T>
 void coefficients_3d(const Reference3& ref, const PipelineSpec& ps, const T& like, ResultRow& row) {
   if (ps.method == "projection") {
-    row.coef_err = coefficient_error(characteristic_of(to_arithmetic<T, H_3D>(ref.p, like)), ref.g);
+    auto g = characteristic_of(to_arithmetic<T, H_3D>(ref.p, like));
+    row.coef_err = coefficient_error(g, ref.g);
+    row.coef_err_common = coefficient_error_common(g, ref.g_bern);
     return;
   }
   bool power = ps.basis == "power";
   std::vector<Bern<T>> g = characteristic_bernstein<T, H_3D>(ref.p, power, like);
   row.coef_err = coefficient_error(g, ref.g_bern);
+  row.coef_err_common = row.coef_err;  // Bernstein coefficients (also for bezier-power: f set up in power form, held in Bernstein form)
   row.delta_err = coefficient_error(ellipsoid_function(g, like), ref.F);
 }
 
@@ -397,7 +405,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
 std::string results_csv_header() {
   return "scene,source,dim,degree,family,motion,d,seed,pipeline,arith,bits,basis,method,coef_err,delta_err,outcome,"
          "collides,exact_collides,intervals,exact_intervals,missed_contacts,false_contacts,first_contact_err,"
-         "endpoint_err,time_us,structure_ok,input,digits,reason";
+         "endpoint_err,time_us,structure_ok,input,digits,reason,coef_err_common";
 }
 
 std::string results_csv_line(const ResultRow& r) {
@@ -411,7 +419,7 @@ std::string results_csv_line(const ResultRow& r) {
                    r.m.exact_collides ? "1" : "0", std::to_string(r.m.intervals), std::to_string(r.m.exact_intervals),
                    std::to_string(r.m.missed_contacts), std::to_string(r.m.false_contacts), opt(r.m.first_contact_err),
                    opt(r.m.endpoint_err), fmt(r.time_us, "%.1f"), r.m.structure_ok ? "1" : "0", r.input,
-                   s.digits ? std::to_string(s.digits) : "", csv_text(r.reason)});
+                   s.digits ? std::to_string(s.digits) : "", csv_text(r.reason), opt(r.coef_err_common)});
 }
 
 }  // namespace eccd

@@ -16,6 +16,10 @@
 // `power`, Bernstein form otherwise), of Δ as handed to the root finder (2D,
 // Bernstein coefficients) or of the control points of F(u, t) (3D), the
 // answer comparison, and the time of the query as `eccd solve` reports it.
+// Because those coefficient errors are measured in different bases, each row
+// also carries coef_err_common: the pipeline's g_0..g_n changed exactly to the
+// Bernstein basis on [0, 1] and compared there (compare/metrics.hpp), the one
+// column that compares power-form and Bernstein-form pipelines.
 // The coefficients are recomputed by the very functions the pipelines call
 // (characteristic_of, characteristic_bernstein, discriminant_of,
 // ellipsoid_function), in the pipeline's arithmetic.
@@ -115,6 +119,7 @@ struct ResultRow {
   std::string pipeline, arith, basis, method;
   int bits = 0;
   std::optional<double> coef_err, delta_err;
+  std::optional<double> coef_err_common;  // coef_err in the common basis (Bernstein on [0, 1]; compare/metrics.hpp)
   AnswerMetrics m;
   double time_us = 0;
   std::string error;   // the pipeline's exception message, if any

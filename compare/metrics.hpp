@@ -12,6 +12,17 @@
 //    different degrees are compared after exact degree elevation of the lower
 //    one (elevation does not change the polynomial). If the exact list is
 //    all zero the error is the absolute max |ã_i|.
+//  * Coefficient error in a common basis (issue 19, `coef_err_common`): the
+//    error above depends on the basis it is measured in, so the errors of a
+//    power-form and a Bernstein-form pipeline are not comparable (a power
+//    coefficient a_i and a Bernstein coefficient b_k are different numbers,
+//    with different magnitudes). The common measure takes the pipeline's
+//    floating coefficients as they are, converts them exactly to rationals,
+//    changes basis exactly to the Bernstein basis on [0, 1] (kernel/bernstein.hpp,
+//    to_bernstein: the one basis conversion) and compares with the exact
+//    Bernstein coefficients by the same normwise relative error. For a
+//    pipeline that holds Bernstein coefficients it equals the coefficient
+//    error itself.
 //  * Answer comparison against the exact answer (typed answers; the counts
 //    come from api/answer_difference.hpp, the one comparison of answers):
 //    the outcome of `collides` (correct, false_positive = reports a collision
@@ -120,6 +131,20 @@ double coefficient_error(const std::vector<Bern<T>>& approx, const std::vector<B
 template <class T>
 double coefficient_error(const Bern<T>& approx, const Bern<mpq_class>& exact) {
   return coefficient_error(std::vector<Bern<T>>{approx}, std::vector<Bern<mpq_class>>{exact});
+}
+
+// Power form measured in the common (Bernstein on [0, 1]) basis: each approximate
+// polynomial converted exactly to rationals, then exactly to Bernstein form of its
+// degree, against the exact Bernstein coefficients (see the prose at the top).
+template <class T>
+double coefficient_error_common(const std::vector<Poly<T>>& approx, const std::vector<Bern<mpq_class>>& exact) {
+  std::vector<Bern<mpq_class>> a;
+  for (const auto& p : approx) {
+    std::vector<mpq_class> c;
+    for (const auto& x : p.c) c.push_back(exact_value(x));
+    a.push_back(to_bernstein(Poly<mpq_class>(std::move(c))));
+  }
+  return coefficient_error(a, exact);
 }
 
 // Tensor Bernstein F(u, t): the u-rows as Bernstein polynomials in t.

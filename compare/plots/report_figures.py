@@ -2,6 +2,7 @@
 """Turn the raw output of `eccd report` into the human robustness report.
 
 Usage:  python3 compare/plots/report_figures.py DIR
+        python3 compare/plots/report_figures.py --check-figures DIR   (checks DIR/figures.json: exit 0 ok, 1 not)
 
 Reads   DIR/results.csv     one row per (scene, pipeline), the harness's contract
         DIR/meta.json       what was run, where, when
@@ -10,6 +11,11 @@ Writes  DIR/report.md       tables and a plain-language summary, every number fr
         DIR/*.png           coef_error_vs_degree, coef_error_hist, misclassification_vs_d,
                             min_mpfr_bits_vs_degree, time_vs_degree, failure_map
                             (a figure whose data are absent is skipped, and report.md says so)
+        DIR/figures.json    per figure and panel the series drawn (label, colour, marker): at most 8 per
+                            panel, no two with the same colour and marker (--check-figures checks it)
+
+report.md opens with the verdict: per aspect (families, separations, degrees, input modes, Bernstein
+vs power, coefficient error, MPFR bits, other engines) one computed sentence that names its table.
 
 Definitions used throughout (they are repeated in report.md):
   misclassification rate   (false positives + false negatives) / scenes; undecided and
@@ -22,19 +28,31 @@ Definitions used throughout (they are repeated in report.md):
   smallest clean precision for dim x degree x (basis, method), the smallest MPFR precision p
                            in the data such that for p and every larger tested precision no
                            scene of that dim x degree is a false positive, false negative,
-                           undecided or error; "none of the tested" otherwise.
+                           undecided or error; "none of the tested" otherwise. Touch and graze scenes
+                           (an isolated contact: a double root no finite precision splits) are not
+                           counted there but shown in rows of their own (MPFR bits per family, all
+                           bases pooled); what keeps a precision up is classified by `reason`
+                           (REASON_CLASSES: wrong, error bound, Bézier unresolved, work bound,
+                           overflow, time-out).
   time                     medians of time_us over rows whose outcome is not `error` (an error row
                            has no measured time; the harness writes 0 there).
-  trustworthy              per family group and input mode, an arithmetic (double, mpfr:B; all its
-                           pipelines pooled) with no false positive, false negative or error; undecided
+  trustworthy              per dimension, family group and input mode, an arithmetic (double: the
+                           error-bounded double pipelines pooled; mpfr:B) or another engine (certified,
+                           each grid baseline, each FCL pipeline, each ext:NAME: a column of its own)
+                           with no false positive, false negative or error; undecided
                            answers (the pipelines' own, from an error bound or a time budget) are
                            honest and counted apart. "Trustworthy from mpfr:B on": B and every larger
                            tested precision are.
   input modes              results.csv's `input` column: `rounded` (the scene's numbers rounded to the
                            arithmetic) or `prepared` (coefficients prepared exactly, then rounded). The
                            main sections read the rounded rows where there are any; the section on
-                           input modes reads both. Columns `input`, `digits` and `reason` may be absent
-                           (older files: input `prepared`).
+                           input modes reads both (certified, FCL and external rows, one mode each, are
+                           in every section). Columns `input`, `digits`, `reason` and `coef_err_common`
+                           may be absent (older files: input `prepared`).
+  coefficient error        `coef_err` in each pipeline's own basis (power form for power, Bernstein
+                           otherwise: not comparable across bases); `coef_err_common` the same
+                           coefficients changed exactly to the Bernstein basis (comparable). Both exist
+                           for the prepared input mode only.
 
 Everything is written to a temporary folder inside DIR and moved into place at the end
 (figures first, report.md last), so a failure leaves no half-written report. Exit status:
@@ -497,8 +515,9 @@ class Data:
         have = {r["pipeline"] for r in nm}
         cols = [p for p in self.pipelines(dim, "double") if p in have]
         mp = [p for p in self.pipelines(dim, "mpfr") if p in have]
+        others = [p for p in self.order if p in have and self.pinfo[p][0] in ("certified", "fcl", "external")]
         if len(mp) <= 4:
-            return cols + mp
+            return cols + mp + others
         chosen = set()
         for (_basis, _method), by_bits in self.mpfr_groups(dim).items():
             bits = sorted(b for b in by_bits if by_bits[b] in have)
@@ -509,7 +528,7 @@ class Data:
                 if all(is_clean(r) for r in nm if r["pipeline"] == by_bits[b]):
                     chosen.add(by_bits[b])
                     break
-        return cols + [p for p in mp if p in chosen]
+        return cols + [p for p in mp if p in chosen] + others
 
 
 def group_name(basis, method):
@@ -517,32 +536,156 @@ def group_name(basis, method):
 
 
 # --------------------------------------------------------------------------- figures
+#
+# Every figure draws its series through plot_series(), which (1) merges series whose points are identical into one
+# legend entry "A = B (identical)", (2) gives each series of a panel a colour AND a marker no other series of that
+# panel has (a pipeline keeps its preferred style across panels where it can: colour by variant, marker by
+# precision), and (3) records every panel in FIGURE_MANIFEST, written as figures.json next to the figures, so that a
+# test can check the rules: at most MAX_SERIES series per panel, no two series sharing colour and marker.
 
 DPI = 120
+MAX_SERIES = 8
+PALETTE = ("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#7f7f7f",
+           "#bcbd22", "#000000", "#6b8e23")
+MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*", "<", ">", "h", "p")
+VARIANT_COLOUR = {"power": 0, "bezier-power": 0, "bernstein": 1, "bezier": 1, "scaled-bernstein": 2, "fcl/sample": 3,
+                  "certified": 4, "sampling": 5, "fcl/ccd": 6, "ext": 7, "marching": 8, "exact": 10}
+FIGURE_MANIFEST = {}
 
 
-def _floor_for(values):
+def base_label(p):
+    """A pipeline's label without the input-mode suffix (@prepared)."""
+    return p.split("@")[0]
+
+
+def pipeline_variant(data, p):
+    PI = getattr(data, "all_pinfo", data.pinfo)
+    arith = PI[p][0]
+    b = base_label(p)
+    if arith == "exact":
+        return "exact"
+    if arith == "certified":
+        return "certified"
+    if arith == "fcl":
+        return b.split(":")[0]
+    if arith == "external":
+        return "ext"
+    v = b.split("/", 1)[1] if "/" in b else b
+    return v.split(":")[0]
+
+
+def preferred_style(data, p):
+    """(colour index, marker index) a pipeline asks for: colour by variant (basis or method), marker by precision."""
+    PI = getattr(data, "all_pinfo", data.pinfo)
+    arith, bits = PI[p][0], PI[p][1]
+    colour = VARIANT_COLOUR.get(pipeline_variant(data, p), 9)
+    if arith == "double":
+        marker = 0
+    elif arith == "mpfr":
+        levels = sorted({PI[q][1] for q in PI if PI[q][0] == "mpfr"})
+        marker = 1 + levels.index(bits) % (len(MARKERS) - 1)
+    elif arith == "fcl":
+        ns = sorted({PI[q][3] for q in PI if PI[q][0] == "fcl"})
+        marker = (5 + ns.index(PI[p][3])) % len(MARKERS)
+    elif arith == "external":
+        exts = sorted({base_label(q) for q in PI if PI[q][0] == "external"})
+        colour = (7 + exts.index(base_label(p))) % len(PALETTE)
+        marker = 4
+    elif arith == "certified":
+        marker = 5
+    else:
+        marker = 7
+    return colour, marker
+
+
+def panel_styles(prefs):
+    """prefs: list of (colour index, marker index). Returns one (colour, marker) per entry such that no two entries of
+    the panel share a colour nor a marker (while there are enough of both): the preferred colour and marker where
+    still free, else the first free one."""
+    used_c, used_m, out = set(), set(), []
+    for c, m in prefs:
+        if c in used_c:
+            c = next((k for k in range(len(PALETTE)) if k not in used_c), c)
+        if m in used_m:
+            m = next((k for k in range(len(MARKERS)) if k not in used_m), m)
+        used_c.add(c)
+        used_m.add(m)
+        out.append((c, m))
+    return out
+
+
+def merge_identical(series):
+    """series: list of dicts with label, xs, ys, pipelines. Series with the same points become one entry whose
+    label names all of them and says they are identical."""
+    merged = []
+    for s in series:
+        key = (tuple(s["xs"]), tuple(s["ys"]), tuple(s.get("lo") or ()), tuple(s.get("hi") or ()))
+        for m in merged:
+            if m["_key"] == key:
+                m["labels"].append(s["label"])
+                break
+        else:
+            merged.append(dict(s, labels=[s["label"]], _key=key))
+    for m in merged:
+        ls = m["labels"]
+        m["label"] = (ls[0] if len(ls) == 1 else " = ".join(ls) + " (identical)" if len(ls) <= 3
+                      else f"{len(ls)} identical: " + ", ".join(ls))
+    return merged
+
+
+def plot_series(ax, fig_name, panel_title, data, series, linestyle="-", band=False, xoffset=0.0):
+    """Draws series (label, pipeline, xs, ys[, lo, hi]) on ax with panel-unique colour+marker; records the panel."""
+    series = merge_identical([s for s in series if s["xs"]])
+    if len(series) > MAX_SERIES:
+        raise ValueError(f"{fig_name}: {len(series)} series in one panel (at most {MAX_SERIES})")
+    styles = panel_styles([preferred_style(data, s["pipeline"]) for s in series])
+    rec = []
+    n = len(series)
+    for k, (s, (ci, mi)) in enumerate(zip(series, styles)):
+        colour, marker = PALETTE[ci], MARKERS[mi]
+        off = (k - (n - 1) / 2) * xoffset
+        xs = [x + off for x in s["xs"]]
+        ax.plot(xs, s["ys"], linestyle=linestyle, marker=marker, color=colour, markersize=6,
+                markevery=s.get("markevery"),
+                label=textwrap.fill(s["label"], 44, subsequent_indent="  "))
+        if band and s.get("lo") is not None:
+            ax.fill_between(xs, s["lo"], s["hi"], color=colour, alpha=0.12, linewidth=0)
+        rec.append({"label": s["label"], "color": colour, "marker": marker, "linestyle": linestyle,
+                    "merged": len(s["labels"])})
+    FIGURE_MANIFEST.setdefault(fig_name, []).append({"panel": panel_title, "series": rec})
+    return rec
+
+
+def chunks(items, size=MAX_SERIES):
+    return [items[i:i + size] for i in range(0, len(items), size)] or [[]]
+
+
+def _floor_for(values, lowest=1e-20):
+    """Where zeros (and errors below `lowest`) are drawn on a log axis."""
     pos = [v for v in values if v is not None and v > 0 and math.isfinite(v)]
-    return 10.0 ** (math.floor(math.log10(min(pos))) - 1) if pos else 1e-17
+    return max(10.0 ** (math.floor(math.log10(min(pos))) - 1), lowest) if pos else 1e-17
 
 
-def _series_style(data, p):
-    arith = data.pinfo[p][0]
-    return {"double": "-", "mpfr": "--", "exact": ":"}[arith]
+def held_basis(info):
+    """The basis a pipeline's coef_err is measured in (compare/harness.hpp): power form for 2D power and the 3D
+    projection, Bernstein form otherwise (the 3D bezier-power setup holds f in Bernstein form too)."""
+    return "power form" if info[2] == "power" and info[3] in ("cd-disc", "projection") else "Bernstein form"
 
 
-def _colors(n):
-    cmap = plt.get_cmap("tab10" if n <= 10 else "tab20")
-    return [cmap(i % cmap.N) for i in range(n)]
+def _grid(nrow, ncol, width=6.0, height=4.2):
+    fig, axes = plt.subplots(nrow, ncol, figsize=(width * ncol, height * nrow), squeeze=False)
+    return fig, axes
 
 
-def _subplots(ndims, width=6.0, height=4.4, stacked=False):
-    """One panel per dimension, side by side (or one above the other when legends sit to the right)."""
-    if stacked:
-        fig, axes = plt.subplots(ndims, 1, figsize=(width, height * ndims), squeeze=False)
-        return fig, list(axes[:, 0])
-    fig, axes = plt.subplots(1, ndims, figsize=(width * ndims, height), squeeze=False)
-    return fig, list(axes[0])
+def _legend(ax, outside=False):
+    if not ax.get_legend_handles_labels()[0]:
+        return
+    if outside == "below":
+        ax.legend(fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.24))
+    elif outside:
+        ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    else:
+        ax.legend(fontsize="small", loc="best")
 
 
 def _save(fig, path):
@@ -551,149 +694,213 @@ def _save(fig, path):
     plt.close(fig)
 
 
+def coef_rows(data, dim, pipeline=None):
+    """Rows that carry coefficient errors: the prepared input mode (rounded rows have none)."""
+    return [r for r in data.all_rows if r["dim"] == dim and r["coef_err"] is not None
+            and (pipeline is None or r["pipeline"] == pipeline)]
+
+
+def coef_pipelines(data, dim):
+    """The double form pipelines' labels in the prepared mode (those with coefficient errors)."""
+    out = []
+    for p in data.all_order:
+        info = data.all_pinfo[p]
+        if info[0] == "double" and info[3] in ("cd-disc", "bezier") and coef_rows(data, dim, p):
+            out.append(p)
+    return out
+
+
+def has_common(data):
+    return any(r.get("coef_err_common") is not None for r in data.all_rows)
+
+
 def fig_coef_vs_degree(data, path):
-    """Per dim: median coefficient error of the double form pipelines vs degree with a 10-90% band."""
-    per_dim = {}
-    allvals = []
-    for dim in data.dims:
-        pl = data.form_pipelines(dim) or data.pipelines(dim, "double")
-        series = {}
-        for p in pl:
-            pts = {}
-            for r in data.sel(dim=dim, pipeline=p):
-                if r["coef_err"] is not None and math.isfinite(r["coef_err"]):
-                    pts.setdefault(r["degree"], []).append(r["coef_err"])
-            if pts:
-                series[p] = pts
-                allvals += [v for vs in pts.values() for v in vs]
-        if series:
-            per_dim[dim] = series
-    if not per_dim:
+    """Per dim: median coefficient error of the double form pipelines vs degree (prepared input), in the basis
+    each pipeline holds its coefficients (left) and in the common Bernstein basis (right, when measured)."""
+    name = os.path.basename(path)
+    dims = [dim for dim in data.dims if coef_pipelines(data, dim)]
+    if not dims:
         return None
+    cols = [("coef_err", "own basis")]
+    if has_common(data):
+        cols.append(("coef_err_common", "common basis (Bernstein on [0, 1])"))
+    allvals = [r[c] for dim in dims for r in coef_rows(data, dim) for c, _ in cols if r.get(c) is not None]
     floor = _floor_for(allvals)
-    nzero = sum(1 for v in allvals if v == 0)
-    fig, axes = _subplots(len(per_dim))
-    for ax, (dim, series) in zip(axes, per_dim.items()):
-        colors = _colors(len(series))
-        for k, (p, pts) in enumerate(series.items()):
-            degs = sorted(pts)
-            xs = [g + (k - (len(series) - 1) / 2) * 0.05 for g in degs]  # offset: equal series stay visible
-            arr = [np.maximum(np.array(pts[g]), floor) for g in degs]
-            med = [float(np.median(a)) for a in arr]
-            lo = [float(np.percentile(a, 10)) for a in arr]
-            hi = [float(np.percentile(a, 90)) for a in arr]
-            ax.plot(xs, med, "o-", color=colors[k], label=f"{p} (median)")
-            ax.fill_between(xs, lo, hi, color=colors[k], alpha=0.15, linewidth=0)
-        ax.axhline(floor, color="0.5", linewidth=0.8, linestyle=":")
-        ax.set_yscale("log")
-        ax.set_xticks(data.degrees[dim])
-        ax.set_xlabel("motion degree")
-        ax.set_ylabel("coefficient error of f (normwise relative)")
-        ax.set_title(f"{dim}D: double coefficient error vs degree\n(band: 10–90%; zero drawn at {fmt_err(floor)})")
-        ax.grid(True, which="major", alpha=0.3)
-        ax.legend(fontsize="small")
+    fig, axes = _grid(len(dims), len(cols), width=6.2, height=4.4)
+    for i, dim in enumerate(dims):
+        one_basis = len({held_basis(data.all_pinfo[p]) for p in coef_pipelines(data, dim)}) == 1
+        for j, (col, what) in enumerate(cols):
+            ax = axes[i][j]
+            if one_basis and len(cols) > 1 and col == "coef_err":
+                ax.axis("off")  # every pipeline holds Bernstein coefficients: the own basis is the common one
+                ax.text(0.5, 0.5, textwrap.fill(f"{dim}D: every pipeline holds its coefficients in Bernstein form, "
+                                                f"so its own basis is the common basis (right).", 40),
+                        ha="center", va="center", transform=ax.transAxes, fontsize="medium", color="0.3")
+                continue
+            if one_basis and col == "coef_err_common":
+                what += ": every pipeline's own basis here"
+            series = []
+            for p in coef_pipelines(data, dim):
+                pts = {}
+                for r in coef_rows(data, dim, p):
+                    if r.get(col) is not None and math.isfinite(r[col]):
+                        pts.setdefault(r["degree"], []).append(max(r[col], floor))
+                degs = sorted(pts)
+                series.append({"label": base_label(p), "pipeline": p, "xs": degs,
+                               "ys": [float(np.median(pts[g])) for g in degs],
+                               "lo": [float(np.percentile(pts[g], 10)) for g in degs],
+                               "hi": [float(np.percentile(pts[g], 90)) for g in degs]})
+            title = f"{dim}D, {what}"
+            if col == "coef_err":
+                title += " (" + ", ".join(f"{base_label(p)}: {held_basis(data.all_pinfo[p])}"
+                                          for p in coef_pipelines(data, dim)) + ")"
+            plot_series(ax, name, title, data, series, band=True, xoffset=0.05)
+            ax.axhline(floor, color="0.5", linewidth=0.8, linestyle=":")
+            ax.set_yscale("log")
+            ax.set_xticks(data.degrees[dim])
+            ax.set_xlabel("motion degree")
+            ax.set_ylabel("coefficient error of g (median; band 10–90%)")
+            ax.set_title(textwrap.fill(title, 48), fontsize="medium")
+            ax.grid(True, which="major", alpha=0.3)
+            _legend(ax)
+        used = [ax for ax in axes[i] if ax.axison]
+        if not used:
+            continue
+        lo, hi = min(ax.get_ylim()[0] for ax in used), max(ax.get_ylim()[1] for ax in used)
+        for ax in used:
+            ax.set_ylim(lo, hi)  # one scale per dimension: own and common basis compare by eye
     _save(fig, path)
-    return (f"Median coefficient error of f(λ;t) in double precision per motion degree, one line per basis; "
-            f"the band spans the 10th to 90th percentile. Zero errors ({nzero} of {len(allvals)}) are drawn "
-            f"at the floor {fmt_err(floor)} (dotted line).")
+    common = ("; right: the same coefficients converted exactly to the Bernstein basis, the only column that "
+              "compares pipelines" if len(cols) > 1 else "; results.csv has no coef_err_common column (an older "
+              "run), so only the own-basis error is drawn and the pipelines cannot be compared")
+    return (f"Median coefficient error of g_0..g_n in double precision per motion degree, prepared input mode only "
+            f"(rounded rows carry no coefficient error); band: 10th to 90th percentile. Left: in the basis each "
+            f"pipeline holds them{common}. Errors below {fmt_err(floor)} (zeros included) are drawn at it (dotted); "
+            f"identical series are one legend entry.")
 
 
 def fig_coef_hist(data, path):
-    per_dim = {}
-    allvals = []
-    for dim in data.dims:
-        series = {}
-        for p in data.pipelines(dim, "double"):
-            vals = [r["coef_err"] for r in data.sel(dim=dim, pipeline=p)
-                    if r["coef_err"] is not None and math.isfinite(r["coef_err"])]
-            if vals:
-                series[p] = vals
-                allvals += vals
-        if series:
-            per_dim[dim] = series
-    if not per_dim:
+    name = os.path.basename(path)
+    col = "coef_err_common" if has_common(data) else "coef_err"
+    dims = [dim for dim in data.dims if coef_pipelines(data, dim)]
+    if not dims:
+        return None
+    allvals = [r[col] for dim in dims for r in coef_rows(data, dim) if r.get(col) is not None
+               and math.isfinite(r[col])]
+    if not allvals:
         return None
     floor = _floor_for(allvals)
     logs = [math.log10(max(v, floor)) for v in allvals]
     lo, hi = math.floor(min(logs)), math.ceil(max(logs))
     if hi <= lo:
         hi = lo + 1
-    bins = np.arange(lo - 0.25, hi + 0.5, 0.5)
-    fig, axes = _subplots(len(per_dim))
-    for ax, (dim, series) in zip(axes, per_dim.items()):
-        colors = _colors(len(series))
-        for k, (p, vals) in enumerate(series.items()):
-            x = np.log10(np.maximum(np.array(vals), floor))
-            ax.hist(x, bins=bins, histtype="step", linewidth=1.8, color=colors[k], label=f"{p} ({len(vals)})")
-        ax.set_xlabel(f"log10 coefficient error (zero drawn at {math.log10(floor):.0f})")
-        ax.set_ylabel("scenes")
-        ax.set_title(f"{dim}D: coefficient error of f, double pipelines")
+    edges = np.arange(lo - 0.25, hi + 0.5, 0.5)
+    centres = [float(c) for c in (edges[:-1] + edges[1:]) / 2]
+    fig, axes = _grid(1, len(dims), width=6.2, height=4.4)
+    for ax, dim in zip(axes[0], dims):
+        series = []
+        for p in coef_pipelines(data, dim):
+            vals = [r[col] for r in coef_rows(data, dim, p) if r.get(col) is not None and math.isfinite(r[col])]
+            counts, _ = np.histogram(np.log10(np.maximum(np.array(vals), floor)), bins=edges)
+            series.append({"label": f"{base_label(p)} ({len(vals)} scenes)", "pipeline": p, "xs": centres,
+                           "ys": [int(c) for c in counts],
+                           "markevery": [i for i, c in enumerate(counts) if c > 0]})  # markers on counts > 0
+        what = "common basis" if col == "coef_err_common" else "own basis"
+        title = f"{dim}D: coefficient error of g, double, {what}"
+        plot_series(ax, name, title, data, series)
+        ax.set_xlabel(f"log10 coefficient error (below {math.log10(floor):.0f}, zero too: at {math.log10(floor):.0f})")
+        ax.set_ylabel("scenes per half decade")
+        ax.set_title(title, fontsize="medium")
         ax.yaxis.get_major_locator().set_params(integer=True)
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="small", loc="best")
+        _legend(ax)
     _save(fig, path)
-    return (f"Histogram of log10 of the coefficient error per double pipeline (bins of half a decade). "
-            f"Zero errors are counted at log10 = {math.log10(floor):.0f}.")
+    basis = ("in the common (Bernstein) basis" if col == "coef_err_common" else
+             "in each pipeline's own basis (no coef_err_common in results.csv)")
+    return (f"Distribution of log10 of the coefficient error {basis}, per double pipeline, prepared input mode only; "
+            f"points are the counts per half decade. Errors below 1e{math.log10(floor):.0f} (zeros included) are "
+            f"counted at log10 = {math.log10(floor):.0f}.")
 
 
 def fig_misclass_vs_d(data, path):
+    name = os.path.basename(path)
     dims = [dim for dim in data.dims if data.nearmiss_pipelines(dim)]
     if not dims:
         return None
-    fig, axes = _subplots(len(dims), stacked=True)
-    for ax, dim in zip(axes, dims):
+    rows_spec = []  # (dim, pipelines of this row of panels)
+    for dim in dims:
+        for part in chunks(data.nearmiss_pipelines(dim)):
+            rows_spec.append((dim, part))
+    fig, axes = _grid(len(rows_spec), 2, width=6.0, height=5.6)
+    for i, (dim, pl) in enumerate(rows_spec):
         nm = data.nearmiss_rows(dim)
-        pl = data.nearmiss_pipelines(dim)
-        colors = _colors(len(pl))
         ds = sorted({r["d"] for r in nm}, reverse=True)
-        for k, p in enumerate(pl):
-            xs, mis, und = [], [], []
-            for d in ds:
-                rs = [r for r in nm if r["pipeline"] == p and r["d"] == d]
-                if not rs:
-                    continue
-                s = summarize(rs)
-                xs.append(d)
-                mis.append(100.0 * s["mis"] / s["n"])
-                und.append(100.0 * s["und"] / s["n"])
-            ax.plot(xs, mis, "o-", color=colors[k], label=f"{p} misclassified")
-            if any(u > 0 for u in und):
-                ax.plot(xs, und, "s--", color=colors[k], alpha=0.7, markersize=4, label=f"{p} undecided")
-        ax.set_xscale("log")
-        if len(ds) > 1:
-            ax.set_xlim(max(ds) * 3, min(ds) / 3)  # decreasing separation to the right
-        ax.set_ylim(-5, 105)
-        ax.set_xlabel("near-miss separation d (decreasing →)")
-        ax.set_ylabel("scenes (%)")
-        ax.set_title(f"{dim}D near-miss scenes: misclassified (solid), undecided (dashed)")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
+        for j, (what, key) in enumerate((("misclassified", "mis"), ("undecided", "und"))):
+            ax = axes[i][j]
+            series = []
+            for p in pl:
+                xs, ys = [], []
+                for d in ds:
+                    rs = [r for r in nm if r["pipeline"] == p and r["d"] == d]
+                    if rs:
+                        s = summarize(rs)
+                        xs.append(d)
+                        ys.append(100.0 * s[key] / s["n"])
+                series.append({"label": p, "pipeline": p, "xs": xs, "ys": ys})
+            title = f"{dim}D near-miss: {what} (%)"
+            plot_series(ax, name, title, data, series)
+            ax.set_xscale("log")
+            if len(ds) > 1:
+                ax.set_xlim(max(ds) * 3, min(ds) / 3)  # decreasing separation to the right
+            ax.set_ylim(-5, 105)
+            ax.set_xlabel("separation d (decreasing →)")
+            ax.set_ylabel(f"scenes {what} (%)")
+            ax.set_title(title, fontsize="medium")
+            ax.grid(True, alpha=0.3)
+            _legend(ax, outside="below")
     _save(fig, path)
-    return ("Near-miss family: share of scenes misclassified (false positive or false negative, solid) and "
-            "undecided (dashed, drawn only where non-zero) against the separation d, all degrees pooled.")
+    return ("Near-miss family, all degrees pooled: share of scenes misclassified (false positive or false negative, "
+            "left) and undecided (right) against the separation d; one row of panels per dimension (more rows when "
+            "a dimension has more than 8 pipelines); identical series are one legend entry.")
 
 
 def fig_min_bits(data, path, minbits):
+    name = os.path.basename(path)
     dims = [dim for dim in data.dims if minbits.get(dim)]
     if not dims:
         return None
-    fig, axes = _subplots(len(dims))
-    for ax, dim in zip(axes, dims):
+    fig, axes = _grid(1, len(dims), width=6.0, height=4.4)
+    hollow_seen = False
+    for ax, dim in zip(axes[0], dims):
         table = minbits[dim]  # (basis, method) -> degree -> bits | "none of the tested"
         levels = sorted({b for grp in data.mpfr_groups(dim).values() for b in grp})
         ypos = {b: i for i, b in enumerate(levels)}
         none_y = len(levels)
-        colors = _colors(len(table))
-        n = len(table)
-        for k, (grp, by_deg) in enumerate(table.items()):
+        series = []
+        for grp, by_deg in table.items():
             degs = sorted(by_deg)
-            off = (k - (n - 1) / 2) * 0.08
-            xs = [g + off for g in degs]
-            ys = [ypos[by_deg[g]] if isinstance(by_deg[g], int) else none_y for g in degs]
-            ax.plot(xs, ys, "-", color=colors[k], alpha=0.6)
-            for x, y in zip(xs, ys):
-                ax.plot([x], [y], "x" if y == none_y else "o", color=colors[k], markersize=8 if y == none_y else 6)
-            ax.plot([], [], "o-", color=colors[k], label=group_name(*grp))
+            p = next(iter(data.mpfr_groups(dim)[grp].values()))
+            series.append({"label": group_name(*grp), "pipeline": p, "xs": degs,
+                           "ys": [ypos[by_deg[g]] if isinstance(by_deg[g], int) else none_y for g in degs]})
+        title = f"{dim}D: smallest clean MPFR precision (touch, graze apart)"
+        rec = plot_series(ax, name, title, data, series, xoffset=0.08)
+        # hollow: every run that keeps the precision up is a time-out (the time budget, not the precision)
+        nser = len(rec)
+        for k, (s_, st) in enumerate(zip(merge_identical([x for x in series if x["xs"]]), rec)):
+            grp = next(g for g in table if group_name(*g) == s_["labels"][0])
+            hx, hy = [], []
+            for x, y in zip(s_["xs"], s_["ys"]):
+                causes = minbits_causes(data, dim, grp, x, table[grp][x])
+                if causes and set(causes) <= set(NOT_PRECISION):
+                    hx.append(x + (k - (nser - 1) / 2) * 0.08)
+                    hy.append(y)
+            if hx:
+                ax.plot(hx, hy, linestyle="none", marker=st["marker"], markersize=9, markerfacecolor="white",
+                        markeredgecolor=st["color"], markeredgewidth=1.8)
+                hollow_seen = True
+                if not any(line.get_label().startswith("hollow") for line in ax.lines):
+                    ax.plot([], [], linestyle="none", marker="o", markerfacecolor="white", markeredgecolor="0.3",
+                            label="hollow: only time-outs or work bounds keep it up (not precision)")
         ax.axhline(none_y - 0.5, color="0.5", linewidth=0.8, linestyle=":")
         ax.set_yticks(list(range(len(levels) + 1)))
         ax.set_yticklabels([str(b) for b in levels] + ["none of\nthe tested"])
@@ -701,44 +908,91 @@ def fig_min_bits(data, path, minbits):
         ax.set_xticks(data.degrees[dim])
         ax.set_xlabel("motion degree")
         ax.set_ylabel("MPFR precision (bits)")
-        ax.set_title(f"{dim}D: smallest MPFR precision with no misclassification")
+        ax.set_title(title, fontsize="medium")
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="small", title="basis")
+        _legend(ax, outside="below")
     _save(fig, path)
     return ("Smallest tested MPFR precision at which this and every larger tested precision has no false positive, "
-            "false negative, undecided or error on any scene of that dimension and degree; × above the dotted line: "
-            "none of the tested precisions.")
+            "false negative, undecided or error on the scenes of that dimension and degree, touch and graze scenes "
+            "counted apart (table *MPFR bits per family*); above the dotted line: none of the tested precisions."
+            + (" Hollow marker: every run that keeps the precision up there hit the time budget or a work bound, "
+               "not a precision limit." if hollow_seen else ""))
+
+
+def minbits_causes(data, dim, grp, deg, bits):
+    """Reason classes of the runs (touch and graze apart) that are not clean at the largest tested precision that
+    is not clean, for one dim x degree x (basis, method): what keeps the smallest clean precision at `bits`."""
+    by_bits = data.mpfr_groups(dim).get(grp, {})
+    rb = {b: [r for r in data.sel(dim=dim, degree=deg, pipeline=p) if r["family"] not in ISOLATED_CONTACT]
+          for b, p in by_bits.items()}
+    rb = {b: x for b, x in rb.items() if x}
+    fl = failing_level(bits, rb) if rb else None
+    if fl is None:
+        return []
+    return [reason_class(r) for r in rb[fl] if not is_clean(r)]
 
 
 def fig_time(data, path):
+    name = os.path.basename(path)
     dims = [dim for dim in data.dims if any(r["time_us"] is not None for r in data.sel(dim=dim))]
     if not dims:
         return None
-    fig, axes = _subplots(len(dims), width=7.0, stacked=True)
-    for ax, dim in zip(axes, dims):
+    layout = []  # per dim: list of (title, pipelines)
+    for dim in dims:
         pl = data.pipelines(dim)
-        colors = _colors(len(pl))
-        for k, p in enumerate(pl):
-            pts = {}
-            for r in data.sel(dim=dim, pipeline=p):
-                if r["outcome"] != "error" and r["time_us"] is not None and r["time_us"] > 0:
-                    pts.setdefault(r["degree"], []).append(r["time_us"])
-            if not pts:
+        panels = []
+        first = [p for p in pl if data.pinfo[p][0] in ("double", "exact")]
+        others = [p for p in pl if data.pinfo[p][0] in ("certified", "fcl", "external")]
+        for k, part in enumerate(chunks(first)):
+            panels.append((f"{dim}D: double and exact" + (f" ({k + 1})" if len(first) > MAX_SERIES else ""), part))
+        for (basis, method), by_bits in data.mpfr_groups(dim).items():
+            ps = [by_bits[b] for b in sorted(by_bits)]
+            for k, part in enumerate(chunks(ps)):
+                panels.append((f"{dim}D: MPFR, {group_name(basis, method)}"
+                               + (f" ({k + 1})" if len(ps) > MAX_SERIES else ""), part))
+        if others:
+            ref = [p for p in first if data.pinfo[p][0] == "exact"]
+            for k, part in enumerate(chunks(others, MAX_SERIES - len(ref))):
+                panels.append((f"{dim}D: other engines (exact for reference)", ref + part))
+        layout.append((dim, [pn for pn in panels if pn[1]]))
+    ncol = max(len(p) for _, p in layout)
+    fig, axes = _grid(len(layout), ncol, width=5.4, height=4.0)
+    for i, (dim, panels) in enumerate(layout):
+        for j in range(ncol):
+            ax = axes[i][j]
+            if j >= len(panels):
+                ax.axis("off")
                 continue
-            degs = sorted(pts)
-            style = _series_style(data, p)
-            color = "black" if data.pinfo[p][0] == "exact" else colors[k]
-            ax.plot(degs, [statistics.median(pts[g]) for g in degs], "o" + style, color=color, label=p)
-        ax.set_yscale("log")
-        ax.set_xticks(data.degrees[dim])
-        ax.set_xlabel("motion degree")
-        ax.set_ylabel("median time per query (µs)")
-        ax.set_title(f"{dim}D: median time per query")
-        ax.grid(True, which="major", alpha=0.3)
-        ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
+            title, pl = panels[j]
+            series = []
+            for p in pl:
+                pts = {}
+                for r in data.sel(dim=dim, pipeline=p):
+                    if r["outcome"] != "error" and r["time_us"] is not None and r["time_us"] > 0:
+                        pts.setdefault(r["degree"], []).append(r["time_us"])
+                degs = sorted(pts)
+                series.append({"label": p, "pipeline": p, "xs": degs,
+                               "ys": [float(statistics.median(pts[g])) for g in degs]})
+            plot_series(ax, name, title, data, series)
+            ax.set_yscale("log")
+            ax.set_xticks(data.degrees[dim])
+            ax.set_xlabel("motion degree")
+            ax.set_ylabel("median time per query (µs)")
+            ax.set_title(title, fontsize="medium")
+            ax.grid(True, which="major", alpha=0.3)
+            _legend(ax)
+    # one y range per row, so that the panels of a dimension compare by eye
+    for i in range(len(layout)):
+        used = [ax for ax in axes[i] if ax.get_visible() and ax.lines]
+        if used:
+            lo = min(ax.get_ylim()[0] for ax in used)
+            hi = max(ax.get_ylim()[1] for ax in used)
+            for ax in used:
+                ax.set_ylim(lo, hi)
     _save(fig, path)
-    return ("Median wall time of one query per motion degree (log scale), rows that ended in an error left out; "
-            "solid: double, dashed: MPFR, dotted: exact.")
+    return ("Median wall time of one query per motion degree (log scale, one y range per dimension), rows that ended "
+            "in an error left out; panels: double and exact, then MPFR per basis, then other engines (certified, "
+            "FCL, external) next to exact.")
 
 
 FM_COLORS = {"separate": "#9ecae1", "touching": "#fdd835", "colliding": "#e53935", "undecided": "#9e9e9e",
@@ -762,7 +1016,18 @@ def fig_failure_map(data, path):
     for (ix, iy), a in exact_at.items():
         g[iy, ix] = FM_ORDER.index(a)
     grids["exact"] = g
-    names = panels + ["exact"]
+    # pipelines with identical answers on every cell share one panel, titled with all their names
+    merged = []
+    for p in panels:
+        for m in merged:
+            if np.array_equal(grids[m[0]], grids[p]):
+                m.append(p)
+                break
+        else:
+            merged.append([p])
+    titles = {m[0]: (m[0] if len(m) == 1 else textwrap.fill(" = ".join(m) + " (identical)", 34)) for m in merged}
+    titles["exact"] = "exact"
+    names = [m[0] for m in merged] + ["exact"]
     ncol = min(4, len(names))
     nrow = math.ceil(len(names) / ncol)
     fig, axes = plt.subplots(nrow, ncol, figsize=(3.6 * ncol, 3.6 * nrow + 0.6), squeeze=False)
@@ -786,9 +1051,13 @@ def fig_failure_map(data, path):
         ax.set_xlabel(xlab, fontsize="small")
         if k % ncol == 0:
             ax.set_ylabel(ylab, fontsize="small")
-        ax.set_title(p)
+        ax.set_title(titles[p], fontsize="medium")
     present = {FM_ORDER[v] for gr in grids.values() for v in np.unique(gr)}
     handles = [Patch(facecolor=FM_COLORS[a], edgecolor="0.3", label=a) for a in FM_ORDER if a in present]
+    FIGURE_MANIFEST.setdefault(os.path.basename(path), []).append(
+        {"panel": "legend (every panel)", "series": [{"label": a, "color": FM_COLORS[a], "marker": "square",
+                                                      "linestyle": "none", "merged": 1}
+                                                     for a in FM_ORDER if a in present]})
     title = f"Failure map around {fm_meta['scene']}" if fm_meta.get("scene") else "Failure map"
     fig.suptitle(title + " (× = answer differs from exact)")
     fig.tight_layout()
@@ -806,10 +1075,11 @@ def fig_failure_map(data, path):
 # --------------------------------------------------------------------------- report
 
 
-MINBITS_NOTE = ("Touch scenes (an isolated tangency at one instant) are left out of this count and their detection "
-                "rate is reported on its own: a tangency is a double root, which rounding splits into a short overlap "
-                "or removes at any finite precision, unless the method accepts a tolerance (the 3D Bézier method calls "
-                "a peak of F within its touch tolerance a touch).")
+MINBITS_NOTE = ("Touch and graze scenes (an isolated contact at one instant) are not counted in this table's minimum; "
+                "they have their own rows in *MPFR bits per family*: a tangency is a double root, which rounding "
+                "splits into a short overlap or removes at any finite precision, unless the method accepts a tolerance "
+                "(the 3D Bézier method reports an instant where its two shots meet within its touch tolerance "
+                "2^-(bits/2) as uncertain, floating/bezier_ccd.hpp). For them the right answer is *collision*.")
 
 
 def touch_detection(data, dim):
@@ -833,8 +1103,8 @@ def compute_minbits(data):
         for grp, by_bits in groups.items():
             out[dim][grp] = {}
             for deg in data.degrees[dim]:
-                # touch scenes are left out: see MINBITS_NOTE
-                rb = {b: [r for r in data.sel(dim=dim, degree=deg, pipeline=p) if r["family"] not in ("touch", "graze")]
+                # touch and graze scenes are counted apart (MPFR bits per family): see MINBITS_NOTE
+                rb = {b: [r for r in data.sel(dim=dim, degree=deg, pipeline=p) if r["family"] not in ISOLATED_CONTACT]
                       for b, p in by_bits.items()}
                 rb = {b: rs for b, rs in rb.items() if rs}
                 if rb:
@@ -906,94 +1176,540 @@ FAMILY_GROUPS = (
     ("generic colliding", ("colliding",)),
     ("generic free", ("free",)),
     ("near-miss", ("near-miss",)),
-    ("touch (isolated contact)", ("touch", "graze")),
-    ("just overlapping (linear)", ("overlap",)),
+    ("touch", ("touch",)),
+    ("just overlapping and graze", ("overlap", "graze")),
     ("realistic decimals", ("decimal", "keyframe")),
-    ("shipped cases", ("case",)),
+    ("paper cases", ("case",)),
 )
+# The MPFR tables put the two isolated-contact families on rows of their own (a double root: see MINBITS_NOTE).
+MPFR_FAMILY_GROUPS = tuple(g for g in FAMILY_GROUPS if g[0] != "just overlapping and graze")[:4] + (
+    ("just overlapping", ("overlap",)), ("graze (isolated contact)", ("graze",))) + \
+    tuple(g for g in FAMILY_GROUPS if g[0] != "just overlapping and graze")[4:]
+WRONG = ("false_positive", "false_negative")
+ISOLATED_CONTACT = ("touch", "graze")  # the exact collision set is one instant: a double root of the contact function
+OTHER_ENGINES = ("certified", "fcl", "external")
+
+# Titles of the tables the verdict points to (each is a heading below; test_report_figures.cpp checks both ends).
+T_TRUST = "Where each arithmetic stays trustworthy, per family and input mode"
+T_NEARMISS = "Near-miss scenes"
+T_DEGREE = "Results per dimension and degree"
+T_BERN = "Bernstein versus power"
+T_COEF = "Coefficient error"
+T_MPFR_FAM = "MPFR bits per family"
+T_MPFR = "Smallest MPFR precision with no misclassification"
+T_ENGINES = "Other engines: certified, FCL, external"
+
+
+def slug(title):
+    """GitHub's anchor of a heading."""
+    keep = "".join(c for c in title.lower() if c.isalnum() or c in " -_")
+    return keep.replace(" ", "-")
+
+
+def see(title):
+    return f"→ [{title}](#{slug(title)})"
+
+
+def is_baseline(r):
+    return r["arith"] == "double" and r["method"].startswith(("sampling", "marching"))
+
+
+def is_decision(r):
+    """A double pipeline with an error-bounded decision: 2D cd-disc (any basis), 3D Bézier (either setup)."""
+    return r["arith"] == "double" and r["method"] in ("cd-disc", "bezier")
 
 
 def arith_level(r):
-    return "double" if r["arith"] == "double" else f"mpfr:{r['bits']}"
+    """Column of the trust table: double (the error-bounded pipelines pooled), mpfr:B, certified, each grid baseline,
+    each FCL pipeline and each external engine on its own."""
+    a = r["arith"]
+    if a == "double":
+        return base_label(r["pipeline"]) if is_baseline(r) else "double"
+    if a == "mpfr":
+        return f"mpfr:{r['bits']}"
+    if a == "certified":
+        return "certified"
+    return base_label(r["pipeline"])
 
 
 def level_key(level):
-    return (0, 0) if level == "double" else (1, int(level.split(":")[1]))
+    if level == "double":
+        return (0, 0, "")
+    if level.startswith("mpfr:"):
+        return (1, int(level.split(":")[1]), "")
+    if level == "certified":
+        return (2, 0, "")
+    if level.startswith("double/"):
+        return (3, 0, level)
+    if level.startswith("fcl/"):
+        kind, _, n = level[4:].partition(":")
+        return (4, int(n) if n.isdigit() else 0, kind)
+    return (5, 0, level)
+
+
+def level_kind(level):
+    if level.startswith("double/"):
+        return "grid baseline"
+    if level.startswith("fcl/"):
+        return "FCL"
+    if level.startswith("ext:"):
+        return "external engine"
+    return None
+
+
+def count(rows, *outcomes):
+    return sum(1 for r in rows if r["outcome"] in outcomes)
+
+
+def share(k, n):
+    return f"{k}/{n} ({100.0 * k / n:.0f}%)" if n else "—"
+
+
+def group_of(family):
+    for g, fams in FAMILY_GROUPS:
+        if family in fams:
+            return g
+    return family
+
+
+def d_span(rows):
+    ds = sorted({(r["d"], r["d_text"]) for r in rows if r.get("d") is not None}, reverse=True)
+    if not ds:
+        return ""
+    return f"d = {ds[0][1]}" if len(ds) == 1 else f"d {ds[0][1]}…{ds[-1][1]}"
+
+
+# Why a run is not clean, from its outcome and the words of its `reason` (compare/harness.cpp: the time budget, or the
+# pipeline's own reasons: kernel/cd_disc.hpp, floating/bezier_ccd.hpp). The classes that more precision does not cure
+# are NOT_PRECISION.
+REASON_CLASSES = (
+    ("wrong", "a false positive or negative: the precision was too low and the pipeline did not notice"),
+    ("error bound", "a sign too close to zero to decide in this arithmetic (CD-DISC's error bound): more bits help"),
+    ("Bézier unresolved", "a status or contact the Bézier method could not resolve in this arithmetic: its error "
+                          "bound, or two shots meeting within its touch tolerance 2^-(bits/2) at a tangency, which "
+                          "more bits do not split"),
+    ("work bound", "root isolation stopped at its work bound (pieces), not a precision limit"),
+    ("overflow", "a non-finite coefficient: the exponent range of double, not its precision"),
+    ("time-out", "the time budget, not the precision"),
+    ("undecided", "undecided with a reason none of the above (older runs name only the instants)"),
+    ("error", "the pipeline threw"),
+)
+NOT_PRECISION = ("work bound", "time-out")
+
+
+def reason_class(r):
+    """Why a row is not clean: one of REASON_CLASSES (or 'clean')."""
+    if r["outcome"] in WRONG:
+        return "wrong"
+    if r["outcome"] == "error":
+        return "error"
+    if r["outcome"] != "undecided":
+        return "clean"
+    why = r.get("reason") or ""
+    if why.startswith("time budget"):
+        return "time-out"
+    if "work bound" in why:
+        return "work bound"
+    if why.startswith("overflow"):
+        return "overflow"
+    if "Bezier method could not resolve" in why or "Bézier method could not resolve" in why:
+        return "Bézier unresolved"
+    if "too close to zero" in why:
+        return "error bound"
+    return "undecided"
+
+
+def reason_legend():
+    return "; ".join(f"*{k}*: {v}" for k, v in REASON_CLASSES)
+
+
+def fmt_causes(rows):
+    bad = [r for r in rows if r["outcome"] != "correct"]
+    cnt = {}
+    for r in bad:
+        c = reason_class(r)
+        cnt[c] = cnt.get(c, 0) + 1
+    return ", ".join(f"{v} {k}" for k, v in sorted(cnt.items(), key=lambda kv: -kv[1]))
+
+
+def engine_rows(data):
+    return [r for r in data.all_rows if r["arith"] in OTHER_ENGINES]
+
+
+def fcl_status(data):
+    """(available, sentence) from meta.json's "fcl" key and the rows."""
+    fcl = data.meta.get("fcl")
+    rows = [r for r in data.all_rows if r["arith"] == "fcl"]
+    how = ("install Debian's libfcl-dev (apt-get install libfcl-dev), rebuild (CMake finds it) and rerun "
+           "`eccd report`")
+    if rows:
+        return True, None
+    if isinstance(fcl, dict) and fcl.get("available") is False:
+        return False, f"FCL was not available in this run (meta.json: \"fcl\": available false): {how}."
+    if isinstance(fcl, dict) and fcl.get("available"):
+        return False, (f"FCL {fcl.get('version', '')} was available but results.csv has no FCL rows "
+                       f"(every scene skipped?).")
+    return False, f"FCL was not available in this run (no FCL rows in results.csv, no \"fcl\" key in meta.json): {how}."
+
+
+def minbits_of(rows):
+    """Smallest clean MPFR precision over `rows` (MPFR rows, bases pooled): bits | 'none of the tested' | None."""
+    by_bits = {}
+    for r in rows:
+        if r["arith"] == "mpfr":
+            by_bits.setdefault(r["bits"], []).append(r)
+    if not by_bits:
+        return None, {}
+    return smallest_clean_bits(by_bits), by_bits
+
+
+def failing_level(res, by_bits):
+    """The precision whose failures decide `res`: the largest tested precision that is not clean."""
+    bad = [b for b in by_bits if not all(is_clean(r) for r in by_bits[b])]
+    return max(bad) if bad else None
+
+
+def section_verdict(data, minbits):
+    rows = data.rows  # primary input mode (+ exact and the single-mode engines)
+    allr = [r for r in data.all_rows if r["arith"] != "exact"]
+    nscenes = scenes_of(data.all_rows)
+    mode = data.primary_input
+    out = ["## Verdict", "",
+           f"Computed from results.csv ({nscenes} scenes, {len(data.all_rows)} rows). A pipeline is *trusted* where "
+           f"it is never confidently wrong (no false positive or false negative against the exact answer); an "
+           f"*undecided* answer is honest and counted as the share it does not decide. *Double* means the "
+           f"error-bounded double pipelines: 2D power / Bernstein / scaled-Bernstein (CD-DISC), 3D Bézier (both "
+           f"setups); input mode *{mode}* unless said. Each point names the table below that backs it.", ""]
+    # 1. where some pipeline is confidently wrong
+    wrong = [r for r in allr if r["outcome"] in WRONG]
+    if wrong:
+        per = {}
+        for r in wrong:
+            per.setdefault(base_label(r["pipeline"]), []).append(r)
+        parts = []
+        for p, rs in sorted(per.items(), key=lambda kv: -len(kv[1])):
+            kind = level_kind(arith_level(rs[0])) or rs[0]["arith"]
+            fams = {}
+            for r in rs:
+                fams.setdefault(group_of(r["family"]), []).append(r)
+            where = ", ".join(f"{g} {len(x)}" + (f" ({d_span(x)})" if g == "near-miss" else "")
+                              for g, x in sorted(fams.items(), key=lambda kv: -len(kv[1])))
+            fp, fn = count(rs, "false_positive"), count(rs, "false_negative")
+            dims = "/".join(f"{d}D" for d in sorted({r["dim"] for r in rs}))
+            parts.append(f"{p} ({dims}, {kind}): {fp} false positive{'s' if fp != 1 else ''}, {fn} false "
+                         f"negative{'s' if fn != 1 else ''} — {where}")
+        clean_ps = sorted({base_label(r["pipeline"]) for r in allr} - set(per))
+        out.append(f"- **Confidently wrong** ({'both input modes, ' if len(data.input_modes) > 1 else ''}"
+                   f"{len(allr)} runs): " + "; ".join(parts)
+                   + f". Never confidently wrong: {len(clean_ps)} other pipeline{'s' if len(clean_ps) != 1 else ''}. "
+                   + see(T_TRUST))
+    else:
+        out.append(f"- **Confidently wrong**: no pipeline, anywhere in the data ({len(allr)} runs"
+                   f"{', both input modes' if len(data.input_modes) > 1 else ''}). " + see(T_TRUST))
+    # 2. families
+    parts = []
+    for dim in data.dims:
+        dr = [r for r in rows if r["dim"] == dim and is_decision(r)]
+        if not dr:
+            continue
+        w = [r for r in dr if r["outcome"] in WRONG]
+        fam_parts = []
+        for g, fams in FAMILY_GROUPS:
+            gr = [r for r in dr if r["family"] in fams]
+            if gr:
+                fam_parts.append(f"{g} {share(count(gr, 'undecided', 'error'), len(gr))}")
+        if w:
+            wg = {}
+            for r in w:
+                wg[group_of(r["family"])] = wg.get(group_of(r["family"]), 0) + 1
+            trust = ("NOT trusted in " + ", ".join(f"{g} ({k} wrong)" for g, k in wg.items())
+                     + "; trusted in the other families")
+        else:
+            trust = f"trusted in every family ({len(dr)} runs, 0 wrong)"
+        parts.append(f"{dim}D {trust}; undecided: " + ", ".join(fam_parts))
+    if parts:
+        out.append("- **Families** (double): " + ". ".join(parts) + ". " + see(T_TRUST))
+    # 3. touch
+    tparts = []
+    for dim in data.dims:
+        for label, pred in (("double", is_decision), ("MPFR", lambda r: r["arith"] == "mpfr")):
+            tr = [r for r in rows if r["dim"] == dim and r["family"] in ISOLATED_CONTACT and pred(r)]
+            if tr:
+                tparts.append(f"{dim}D {label} says collision on {count(tr, 'correct')}, is undecided on "
+                              f"{count(tr, 'undecided', 'error')} and wrong on {count(tr, *WRONG)} of {len(tr)} runs")
+    out.append("- **Touch** (and graze): for a touch scene *collision* is the right answer — touching counts as a "
+               "collision, the collision set is closed. A tangency is a double root: rounding splits it into a short "
+               "overlap or removes it, so a floating pipeline decides it only by luck or a tolerance, and an honest one "
+               "is often undecided there"
+               + (": " + "; ".join(tparts) if tparts else "") + ". " + see(T_MPFR_FAM))
+    # 4. separations
+    parts = []
+    for dim in data.dims:
+        nm = [r for r in rows if r["dim"] == dim and r["family"] == "near-miss" and is_decision(r)]
+        if not nm:
+            continue
+        ds = sorted({r["d"] for r in nm}, reverse=True)
+        cells = []
+        for d in ds:
+            rd = [r for r in nm if r["d"] == d]
+            cells.append(f"{rd[0]['d_text']} {100.0 * count(rd, 'undecided', 'error') / len(rd):.0f}%")
+        w = [r for r in nm if r["outcome"] in WRONG]
+        wtxt = f"wrong from {d_span(w)} ({len(w)} runs)" if w else "wrong at no d"
+        parts.append(f"{dim}D double {wtxt}; undecided by d: " + ", ".join(cells))
+    if parts:
+        out.append("- **Separations** (near-miss, all degrees): " + ". ".join(parts) + ". " + see(T_NEARMISS))
+    # 5. degrees
+    parts = []
+    for dim in data.dims:
+        dr = [r for r in rows if r["dim"] == dim and is_decision(r)]
+        if not dr:
+            continue
+        cells = []
+        for deg in data.degrees[dim]:
+            rd = [r for r in dr if r["degree"] == deg]
+            if rd:
+                cells.append(f"{deg}: {100.0 * count(rd, 'undecided', 'error') / len(rd):.0f}%"
+                             + (f" ({count(rd, *WRONG)} wrong)" if count(rd, *WRONG) else ""))
+        w = count(dr, *WRONG)
+        parts.append(f"{dim}D double {'wrong at no degree' if not w else f'{w} wrong'}; undecided by degree "
+                     + ", ".join(cells))
+    if parts:
+        out.append("- **Degrees**: " + ". ".join(parts) + ". " + see(T_DEGREE))
+    # 6. input modes
+    if len(data.input_modes) > 1:
+        parts = []
+        for dim in data.dims:
+            cells = []
+            for m in data.input_modes:
+                mr = [r for r in data.all_rows if r["dim"] == dim and is_decision(r) and r["input"] == m]
+                if mr:
+                    cells.append(f"{m} {share(count(mr, 'undecided', 'error'), len(mr))} undecided, "
+                                 f"{count(mr, *WRONG)} wrong")
+            if cells:
+                parts.append(f"{dim}D double " + " vs ".join(cells))
+        out.append("- **Input modes** (rounded: the scene's numbers rounded, as a user's program holds them; "
+                   "prepared: coefficients prepared exactly, then rounded): " + ". ".join(parts) + ". " + see(T_TRUST))
+    else:
+        out.append(f"- **Input modes**: only *{data.primary_input}* in results.csv. " + see(T_TRUST))
+    # 7. Bernstein vs power
+    parts = []
+    for dim in data.dims:
+        cmp = bernstein_comparison(data, dim)
+        if not cmp:
+            continue
+        ref = cmp["ref"]
+        items = []
+        for p, st in cmp["pipes"].items():
+            if p == ref:
+                continue
+            t = f", time ×{fmt_ratio(st['ratio'])}" if st["ratio"] is not None else ""
+            items.append(f"{p} undecided {share(st['und'], st['n'])}, wrong {st['wrong']}{t}")
+        rs = cmp["pipes"][ref]
+        parts.append(f"{dim}D against {ref} (undecided {share(rs['und'], rs['n'])}, wrong {rs['wrong']}): "
+                     + "; ".join(items))
+    if parts:
+        out.append("- **Bernstein vs power** (double; time: median of the per-scene ratios to power form): "
+                   + ". ".join(parts) + ". " + see(T_BERN))
+    # 8. coefficient error
+    ce = coef_summary(data)
+    if ce:
+        out.append("- **Coefficient error** (prepared input only): " + ce + " " + see(T_COEF))
+    # 9. MPFR bits
+    parts = []
+    for dim in data.dims:
+        items = []
+        for g, fams in MPFR_FAMILY_GROUPS:
+            res, by_bits = minbits_of([r for r in rows if r["dim"] == dim and r["family"] in fams])
+            if res is None:
+                continue
+            per_deg = {}
+            for deg in data.degrees[dim]:
+                rd, _ = minbits_of([r for r in rows if r["dim"] == dim and r["family"] in fams and r["degree"] == deg])
+                if rd is not None:
+                    per_deg[deg] = rd
+            vals = set(map(str, per_deg.values()))
+            if len(vals) == 1:
+                txt = f"{fmt_bits(next(iter(per_deg.values())))}" + (" at every degree" if len(per_deg) > 1 else "")
+            else:
+                runs = []  # consecutive degrees with the same answer: "deg 2–3: 128"
+                for d, b in per_deg.items():
+                    if runs and runs[-1][2] == b and runs[-1][1] == d - 1:
+                        runs[-1][1] = d
+                    else:
+                        runs.append([d, d, b])
+                txt = ", ".join(f"deg {a}{'' if a == z else f'–{z}'}: {b if isinstance(b, int) else 'none'}"
+                                for a, z, b in runs)
+            if not isinstance(res, int):
+                txt += f" (what fails at {max(by_bits)} bits: {fmt_causes(by_bits[max(by_bits)])})"
+            items.append(f"{g} {txt}")
+        if items:
+            parts.append(f"{dim}D: " + "; ".join(items))
+    if parts:
+        out.append("- **MPFR bits** needed to decide every scene (no wrong, undecided or error at that and every "
+                   "larger tested precision; bases pooled; 'none' = none of the tested): " + ". ".join(parts) + ". "
+                   + see(T_MPFR_FAM))
+    # 10. other engines
+    out.append("- **Other engines**: " + engines_summary(data) + " " + see(T_ENGINES))
+    out.append("")
+    return out
+
+
+def bernstein_comparison(data, dim):
+    """Double form pipelines of `dim` against the power-form one (primary input mode): per pipeline runs, wrong,
+    undecided and the median of per-scene time ratios to power form."""
+    forms = [p for p in data.form_pipelines(dim)]
+    ref = next((p for p in forms if data.pinfo[p][2] == "power"), None)
+    if ref is None or len(forms) < 2:
+        return None
+    t_ref = {r["scene"]: r["time_us"] for r in data.sel(dim=dim, pipeline=ref)
+             if r["outcome"] != "error" and r["time_us"]}
+    pipes = {}
+    for p in forms:
+        rs = data.sel(dim=dim, pipeline=p)
+        ratios = [r["time_us"] / t_ref[r["scene"]] for r in rs
+                  if r["outcome"] != "error" and r["time_us"] and r["scene"] in t_ref]
+        pipes[p] = {"n": len(rs), "wrong": count(rs, *WRONG), "und": count(rs, "undecided", "error"),
+                    "ratio": median(ratios) if p != ref else 1.0}
+    return {"ref": ref, "pipes": pipes}
+
+
+def prepared_rows(data, dim, p):
+    """The prepared-mode rows of the pipeline whose label (without suffix) is base_label(p)."""
+    b = base_label(p)
+    return [r for r in data.all_rows if r["dim"] == dim and base_label(r["pipeline"]) == b and r["input"] == "prepared"]
+
+
+def coef_medians(data, dim, p, deg=None):
+    rs = [r for r in prepared_rows(data, dim, p) if deg is None or r["degree"] == deg]
+    return (median(r["coef_err"] for r in rs), median(r.get("coef_err_common") for r in rs),
+            median(r["delta_err"] for r in rs))
+
+
+def coef_summary(data):
+    """One computed paragraph: own-basis vs common-basis medians of the power and Bernstein double pipelines."""
+    parts = []
+    for dim in data.dims:
+        cmp = bernstein_comparison(data, dim)
+        if not cmp:
+            continue
+        ref = cmp["ref"]
+        bern = next((p for p in cmp["pipes"] if p != ref and data.pinfo[p][2] == "bernstein"), None)
+        if bern is None:
+            continue
+        po, pc, pd = coef_medians(data, dim, ref)
+        bo, bc, bd = coef_medians(data, dim, bern)
+        if po is None or bo is None:
+            continue
+        dname = "Δ" if dim == 2 else "F(u,t)"
+        same = held_basis(data.pinfo[ref]) == held_basis(data.pinfo[bern])
+        txt = (f"{dim}D median in each pipeline's own basis {fmt_err(po)} ({ref}, {held_basis(data.pinfo[ref])}) vs "
+               f"{fmt_err(bo)} ({bern}, {held_basis(data.pinfo[bern])}"
+               + ("; one basis, so these compare)" if same else "; two bases, so these do not compare)"))
+        if pc is not None and bc is not None:
+            txt += f", in the common Bernstein basis {fmt_err(pc)} vs {fmt_err(bc)}"
+        else:
+            txt += ", common basis not measured (no coef_err_common in results.csv: an older run)"
+        if pd is not None and bd is not None:
+            txt += f"; {dname} error {fmt_err(pd)} vs {fmt_err(bd)}"
+        parts.append(txt)
+    if not parts:
+        return None
+    return ". ".join(parts) + "."
+
+
+def engines_summary(data):
+    er = engine_rows(data)
+    parts = []
+    for lv in sorted({arith_level(r) for r in er}, key=level_key):
+        rs = [r for r in er if arith_level(r) == lv]
+        w = count(rs, *WRONG)
+        parts.append(f"{lv} {'never' if not w else f'{w} times'} confidently wrong in {len(rs)} runs, undecided "
+                     f"{share(count(rs, 'undecided', 'error'), len(rs))}")
+    avail, sentence = fcl_status(data)
+    if sentence:
+        parts.append(sentence.rstrip("."))
+    if not any(r["arith"] == "certified" for r in er):
+        parts.append("no certified rows")
+    if not any(r["arith"] == "external" for r in er) and not data.meta.get("externals"):
+        parts.append("no external engine (`eccd report --external NAME=DIR`)")
+    return "; ".join(parts) + "."
 
 
 def section_trust(data):
-    """Per family group and input mode: where double and each MPFR precision stay trustworthy."""
-    # The 3D sampling and marching baselines look at a grid of instants and claim nothing between them (their
-    # answers say "sampled"): they are no error-bounded decision, so they are left out of the pooled verdict here.
-    rows = [r for r in data.all_rows if r["arith"] != "exact"
-            and not r.get("method", "").startswith(("sampling", "marching"))]
-    out = ["## Where each arithmetic stays trustworthy, per family and input mode", ""]
+    """Per dimension, family group and input mode: where each arithmetic and each other engine stays trustworthy."""
+    rows = [r for r in data.all_rows if r["arith"] != "exact"]
+    out = [f"## {T_TRUST}", ""]
     if not rows:
         return out + ["No floating pipeline in results.csv.", ""]
     modes = data.input_modes or [data.primary_input]
     out += ["A floating answer is *trustworthy* here when it is never confidently wrong: no false positive or false "
             "negative against the exact answer (an *undecided* answer, which the pipeline gives itself from its error "
             "bound or its time budget, is honest and not wrong). Each cell: confidently wrong / runs, then undecided "
-            "runs; all pipelines (bases, methods) of that arithmetic pooled. Input *rounded*: the scene's numbers "
-            "rounded to the arithmetic, as a user's program holds them; *prepared*: the coefficients prepared exactly, "
-            "then rounded. The difference between the two rows of a family is the error of rounding the input. "
-            "The 3D sampling:N and marching:N baselines are left out of this table: they look at a grid of instants "
-            "and claim nothing between them (their misses are in the tables further down).", ""]
+            "runs. *double*: the error-bounded double pipelines pooled (2D power, Bernstein, scaled-Bernstein; 3D "
+            "Bézier, both setups); *mpfr:B*: every MPFR pipeline of B bits; *certified*, each grid baseline "
+            "(3D sampling:N, marching:N: they look at a grid of instants and claim nothing between them), each FCL "
+            "pipeline and each external engine: a column of its own. Input *rounded*: the scene's numbers rounded to "
+            "the arithmetic, as a user's program holds them; *prepared*: the coefficients prepared exactly, then "
+            "rounded. For touch and graze scenes the right answer is *collision* (touching counts).", ""]
     if len(modes) == 1:
         out += [f"Only the input mode *{modes[0]}* is in results.csv"
                 + (" (this solver has no rounded input mode; every floating run started from the prepared scene)."
                    if modes[0] == "prepared" else "."), ""]
+    avail, sentence = fcl_status(data)
+    if sentence:
+        out += [sentence, ""]
     levels = sorted({arith_level(r) for r in rows}, key=level_key)
     body, notes = [], []
-    for gname, fams in FAMILY_GROUPS:
-        grows = [r for r in rows if r["family"] in fams]
-        if not grows:
-            continue
-        for mode in modes:
-            mrows = [r for r in grows if r["input"] == mode]
-            if not mrows:
-                continue
-            cells, clean, undec = [], {}, {}
-            for lv in levels:
-                lr = [r for r in mrows if arith_level(r) == lv]
-                if not lr:
-                    cells.append("—")
+    for dim in data.dims:
+        for gname, fams in FAMILY_GROUPS:
+            grows = [r for r in rows if r["family"] in fams and r["dim"] == dim]
+            for mode in modes:
+                mrows = [r for r in grows if r["input"] == mode]
+                if not mrows:
                     continue
-                wrong = sum(1 for r in lr if r["outcome"] in ("false_positive", "false_negative"))
-                und = sum(1 for r in lr if r["outcome"] == "undecided")
-                err = sum(1 for r in lr if r["outcome"] == "error")
-                clean[lv] = wrong == 0 and err == 0
-                undec[lv] = (und, len(lr))
-                cell = f"{wrong}/{len(lr)}"
-                if und:
-                    cell += f", {und} und."
-                if err:
-                    cell += f", {err} err."
-                cells.append(cell)
-            body.append([gname, mode, scenes_of(mrows)] + cells)
-            tested = [lv for lv in levels if lv in clean]
-            ok_from = None
-            for lv in reversed(tested):
-                if clean[lv]:
-                    ok_from = lv
+                cells, clean, undec = [], {}, {}
+                for lv in levels:
+                    lr = [r for r in mrows if arith_level(r) == lv]
+                    if not lr:
+                        cells.append("—")
+                        continue
+                    wrong, und, err = count(lr, *WRONG), count(lr, "undecided"), count(lr, "error")
+                    clean[lv] = wrong == 0 and err == 0
+                    undec[lv] = (und, len(lr))
+                    cell = f"{wrong}/{len(lr)}"
+                    if und:
+                        cell += f", {und} und."
+                    if err:
+                        cell += f", {err} err."
+                    cells.append(cell)
+                body.append([f"{dim}D", gname, mode, scenes_of(mrows)] + cells)
+                ladder = [lv for lv in levels if lv in clean and (lv == "double" or lv.startswith("mpfr:"))]
+                ok_from = None
+                for lv in reversed(ladder):
+                    if clean[lv]:
+                        ok_from = lv
+                    else:
+                        break
+                dbl = clean.get("double")
+                if not ladder:
+                    verdict = "no double or MPFR runs"
+                elif ok_from is None:
+                    verdict = "neither double nor any tested MPFR precision is free of confident errors"
+                elif ok_from == ladder[0] and ok_from == "double":
+                    verdict = "double and every tested MPFR precision trustworthy"
                 else:
-                    break
-            dbl = clean.get("double")
-            mp = [lv for lv in tested if lv != "double"]
-            if ok_from is None:
-                verdict = "no tested arithmetic is free of confident errors"
-            elif ok_from == "double":
-                verdict = "trustworthy from double on (every tested arithmetic)"
-            else:
-                verdict = (f"double {'trustworthy' if dbl else 'not trustworthy' if dbl is not None else 'not run'}; "
-                           f"MPFR trustworthy from {ok_from} on")
-                if mp and ok_from == mp[0]:
-                    verdict += " (the lowest tested precision)"
-            und_levels = [f"{lv} {u} of {n}" for lv, (u, n) in undec.items() if u]
-            if und_levels:
-                verdict += "; undecided (honest, but no answer): " + ", ".join(und_levels)
-            notes.append(f"- {gname}, input {mode} ({scenes_of(mrows)} scenes{few(scenes_of(mrows))}): {verdict}.")
-    out.append(md_table(["family", "input", "scenes"] + levels, body, ["---", "---", "---:"] + ["---:"] * len(levels)))
+                    verdict = (f"double {'trustworthy' if dbl else 'not trustworthy' if dbl is not None else 'not run'}; "
+                               f"MPFR trustworthy from {ok_from} on")
+                bad_others = [lv for lv in clean if lv not in ladder and not clean[lv]]
+                if bad_others:
+                    verdict += "; confidently wrong: " + ", ".join(bad_others)
+                und_levels = [f"{lv} {u} of {n}" for lv, (u, n) in undec.items() if u]
+                if und_levels:
+                    verdict += "; undecided: " + ", ".join(und_levels)
+                notes.append(f"- {dim}D {gname}, input {mode} ({scenes_of(mrows)} scenes{few(scenes_of(mrows))}): "
+                             f"{verdict}.")
+    out.append(md_table(["dim", "family", "input", "scenes"] + levels, body,
+                        ["---", "---", "---", "---:"] + ["---:"] * len(levels)))
     out += [""] + notes + [""]
     reasons = {}
     for r in rows:
@@ -1006,6 +1722,234 @@ def section_trust(data):
                 + "; ".join(f"{k}: {v}" for k, v in top) + ".", ""]
     return out
 
+
+def section_bernstein(data):
+    out = [f"## {T_BERN}", ""]
+    dims = [dim for dim in data.dims if bernstein_comparison(data, dim)]
+    if not dims:
+        return out + ["No power-form and Bernstein-form double pipelines side by side in results.csv.", ""]
+    common = has_common(data)
+    out += [f"The double pipelines that differ only by the basis f(λ; t) is set up in: 2D power, Bernstein and scaled "
+            f"Bernstein form (003 VI-C); 3D the Bézier method with f set up in Bernstein form (double/bezier) or in "
+            f"power form (double/bezier-power). Runs, wrong, undecided and time: input mode *{data.primary_input}*; "
+            f"time ratio: median over scenes of this pipeline's time / the power-form pipeline's time. Coefficient "
+            f"columns: **prepared input mode only** (the only mode in which the harness measures them). *coef err "
+            f"own*: the normwise relative error of g_0..g_n in the basis the pipeline holds them (power form for "
+            f"power, Bernstein form otherwise: compare/metrics.hpp); *coef err common*: the same floating "
+            f"coefficients converted exactly to the Bernstein basis on [0, 1] and compared with the exact Bernstein "
+            f"coefficients"
+            + ("" if common else " (not in this results.csv: an older run; rerun `eccd report`)")
+            + "; *Δ / F err*: the error of what is handed to the root finder (2D Δ in Bernstein form; 3D the "
+            "control points of F(u, t)), already one basis for all.", ""]
+    body = []
+    for dim in dims:
+        cmp = bernstein_comparison(data, dim)
+        for deg in data.degrees[dim] + ["all"]:
+            for p in cmp["pipes"]:
+                rs = data.sel(dim=dim, pipeline=p) if deg == "all" else data.sel(dim=dim, degree=deg, pipeline=p)
+                if not rs:
+                    continue
+                ref_t = {r["scene"]: r["time_us"] for r in data.sel(dim=dim, pipeline=cmp["ref"])
+                         if r["outcome"] != "error" and r["time_us"]}
+                ratios = [r["time_us"] / ref_t[r["scene"]] for r in rs
+                          if r["outcome"] != "error" and r["time_us"] and r["scene"] in ref_t]
+                co, cc, cd = coef_medians(data, dim, p, None if deg == "all" else deg)
+                body.append([f"{dim}D", deg, p, len(rs), count(rs, *WRONG), count(rs, "undecided", "error"),
+                             fmt_sig(median(r["time_us"] for r in rs if r["outcome"] != "error")),
+                             fmt_ratio(median(ratios)) if ratios else "—", fmt_err(co), fmt_err(cc), fmt_err(cd)])
+    out += [md_table(["dim", "degree", "pipeline", "runs", "wrong", "undecided", "time µs med", "time vs power",
+                      "coef err own med", "coef err common med", "Δ / F err med"], body,
+                     ["---", "---:", "---"] + ["---:"] * 8), ""]
+    out += coef_explanation(data)
+    return out
+
+
+def coef_explanation(data):
+    """Computed sentences on the apparent contradiction between coefficient and Δ errors (power vs Bernstein)."""
+    out = []
+    for dim in data.dims:
+        cmp = bernstein_comparison(data, dim)
+        if not cmp:
+            continue
+        ref = cmp["ref"]
+        bern = next((p for p in cmp["pipes"] if p != ref and data.pinfo[p][2] == "bernstein"), None)
+        if bern is None:
+            continue
+        po, pc, pd = coef_medians(data, dim, ref)
+        bo, bc, bd = coef_medians(data, dim, bern)
+        if None in (po, bo):
+            continue
+        same = held_basis(data.pinfo[ref]) == held_basis(data.pinfo[bern])
+        if same and (pc is None or bc is None):
+            pc, bc = po, bo  # one basis already: the own-basis error is the common-basis error
+        dname = "Δ" if dim == 2 else "F(u, t)"
+        txt = (f"{dim}D, all degrees (prepared input): the median coefficient error is {fmt_err(po)} for {ref} and "
+               f"{fmt_err(bo)} for {bern}")
+        if po > 0 and bo > po:
+            txt += f" ({fmt_ratio(bo / po)}× larger for Bernstein)"
+        elif bo > 0 and po > bo:
+            txt += f" ({fmt_ratio(po / bo)}× larger for power)"
+        if not same:
+            txt += (", but these are errors of different numbers: power-form coefficients relative to the largest "
+                    "power coefficient, Bernstein coefficients relative to the largest Bernstein coefficient.")
+        else:
+            txt += (f", both measured on Bernstein coefficients ({ref} sets f up in power form and converts it in "
+                    f"floating point), so they compare as they stand.")
+        g_ratio = None
+        if pc is not None and bc is not None:
+            if not same:
+                txt += (f" Measured on the same numbers — each pipeline's floating coefficients changed exactly to "
+                        f"the Bernstein basis — the medians are {fmt_err(pc)} ({ref}) and {fmt_err(bc)} ({bern}).")
+            g_ratio = pc / bc if bc > 0 else (1.0 if pc == 0 else math.inf)
+        else:
+            txt += " The common-basis error is not in this results.csv (an older run: rerun `eccd report`)."
+        d_ratio = pd / bd if (pd is not None and bd) else None
+        if pd is not None and bd is not None:
+            txt += (f" The {dname} error, measured on Bernstein coefficients for both, is {fmt_err(pd)} ({ref}) vs "
+                    f"{fmt_err(bd)} ({bern})")
+            txt += (f": {fmt_ratio(d_ratio)}× smaller for Bernstein." if d_ratio and d_ratio >= 1
+                    else f": {fmt_ratio(1 / d_ratio)}× smaller for power form." if d_ratio else ".")
+        if g_ratio is not None and d_ratio is not None and d_ratio >= 10:
+            if g_ratio < 10:
+                txt += (f" So g itself is about as accurate in either basis (common-basis ratio power / Bernstein "
+                        f"{fmt_ratio(g_ratio)}); Bernstein form gains where {dname} is built from g.")
+            elif d_ratio < 10 * g_ratio:
+                txt += (f" The gain is already in g (common-basis ratio power / Bernstein {fmt_ratio(g_ratio)}) and carries over to "
+                        f"{dname}.")
+            else:
+                txt += (f" g is {fmt_ratio(g_ratio)}× less accurate in power form already, and building {dname} "
+                        f"from it loses more.")
+        elif g_ratio is None and d_ratio is not None and d_ratio >= 10:
+            txt += (f" Without the common-basis column this report cannot say whether the gain is in g or in building "
+                    f"{dname}.")
+        out += [txt, ""]
+    return out
+
+
+def section_coef(data, figs):
+    out = [f"## {T_COEF}", "",
+           "Coefficient errors exist only for the **prepared** input mode: the harness recomputes the coefficients "
+           "from the exactly prepared scene, so rounded rows leave them empty. `coef_err` is measured in the basis "
+           "each pipeline holds its coefficients — power form for `power` (and the 3D projection), Bernstein form "
+           "otherwise (3D bezier-power included: its f is set up in power form but held in Bernstein form) — so the "
+           "raw column of a power pipeline and of a Bernstein pipeline measure different numbers and do not compare. "
+           "`coef_err_common` converts every pipeline's floating coefficients exactly to the Bernstein basis on "
+           "[0, 1] and compares them with the exact Bernstein coefficients; for a Bernstein pipeline it equals "
+           f"`coef_err`. The numbers per degree are in *{T_BERN}* above.", ""]
+    body = []
+    for dim in data.dims:
+        for p in coef_pipelines(data, dim) + [q for q in data.all_order if data.all_pinfo[q][0] == "mpfr"
+                                              and coef_rows(data, dim, q)]:
+            rs = coef_rows(data, dim, p)
+            body.append([f"{dim}D", base_label(p), held_basis(data.all_pinfo[p]), len(rs),
+                         fmt_err(median(r["coef_err"] for r in rs)), fmt_err(median(r.get("coef_err_common") for r in rs)),
+                         fmt_err(vmax(r.get("coef_err_common") for r in rs)), fmt_err(median(r["delta_err"] for r in rs))])
+    if body:
+        out += [md_table(["dim", "pipeline (prepared)", "basis held", "rows", "coef err own med", "coef err common med",
+                          "coef err common max", "Δ / F err med"], body, ["---", "---", "---"] + ["---:"] * 5), ""]
+    out += figure_block(figs, "coef_error_vs_degree.png")
+    out += figure_block(figs, "coef_error_hist.png")
+    return out
+
+
+def section_mpfr_family(data):
+    out = [f"## {T_MPFR_FAM}", ""]
+    rows = [r for r in data.rows if r["arith"] == "mpfr"]
+    if not rows:
+        return out + ["No MPFR pipelines in results.csv.", ""]
+    tested = sorted({r["bits"] for r in rows})
+    out += [f"Smallest tested MPFR precision (tested {', '.join(map(str, tested))} bits; all bases and methods pooled; "
+            f"input mode *{data.primary_input}*) at which this and every larger tested precision gives no wrong, "
+            "undecided or error answer on the family's scenes of that degree — every family, touch included. When "
+            "it is not the lowest tested precision, the parenthesis says what failed at the largest precision that "
+            "is not clean, classified by the `reason` column: " + reason_legend() + ". The reason column does not "
+            "say which of the Bézier method's unresolved instants are tangencies within its touch tolerance; in touch "
+            "and graze scenes they are.", ""]
+    body = []
+    for dim in data.dims:
+        for g, fams in MPFR_FAMILY_GROUPS:
+            gr = [r for r in rows if r["dim"] == dim and r["family"] in fams]
+            if not gr:
+                continue
+            cells = []
+            for deg in data.degrees[dim] + ["all"]:
+                dr = gr if deg == "all" else [r for r in gr if r["degree"] == deg]
+                res, by_bits = minbits_of(dr)
+                if res is None:
+                    cells.append("—")
+                    continue
+                fl = failing_level(res, by_bits)
+                cell = str(res) if isinstance(res, int) else "none"
+                if fl is not None:
+                    cell += f" ({fl}: {fmt_causes(by_bits[fl])})"
+                cells.append(cell)
+            body.append([f"{dim}D", g, scenes_of(gr)] + cells)
+    # one table per dimension (degrees differ between dimensions)
+    for dim in data.dims:
+        dbody = [b for b in body if b[0] == f"{dim}D"]
+        if not dbody:
+            continue
+        dd = data.degrees[dim]
+        out += [f"{dim}D (cells: bits; none: none of the tested):", "",
+                md_table(["dim", "family", "scenes"] + [f"degree {d}" for d in dd] + ["all degrees"], dbody,
+                         ["---", "---", "---:"] + ["---:"] * (len(dd) + 1)), ""]
+    out += ["Touch (and graze) rows: a finite precision cannot split a double root, so no precision is expected to "
+            "decide them unless a method accepts a tolerance; the right answer there is *collision* (touching "
+            "counts). Their undecided answers are honest, not wrong.", ""]
+    return out
+
+
+def section_engines(data):
+    out = [f"## {T_ENGINES}", ""]
+    er = engine_rows(data)
+    out += ["Engines judged against the exact answer next to double and MPFR: `certified` (the certified ladder), "
+            "FCL (`fcl/sample:N`: fcl::collide at t = k/N; `fcl/ccd:N`: fcl::continuousCollide, naive, N "
+            "iterations) and external engines (`ext:NAME`, `eccd report --external NAME=DIR`). Their rows are also "
+            f"columns of *{T_TRUST}* and of the near-miss tables.", ""]
+    avail, sentence = fcl_status(data)
+    if sentence:
+        out += [sentence, ""]
+    fcl = data.meta.get("fcl")
+    if isinstance(fcl, dict) and fcl.get("available"):
+        if fcl.get("version"):
+            out.append(f"- FCL version: {fcl['version']}")
+        if fcl.get("tolerances"):
+            out.append(f"- FCL tolerances: {fcl['tolerances']}")
+        sk = fcl.get("skipped")
+        if isinstance(sk, dict) and sk:
+            out.append("- Scenes FCL cannot express (no row for that pipeline): "
+                       + ", ".join(f"{k} {v}" for k, v in sk.items()))
+        out.append("")
+    ext = data.meta.get("externals")
+    if isinstance(ext, list) and ext:
+        for e in ext:
+            if isinstance(e, dict):
+                out.append(f"- External engine {e.get('name')}: answers from {e.get('dir')}, {e.get('answers')} "
+                           f"answers, {e.get('missing')} scenes without an answer")
+        out.append("")
+    if not er:
+        return out + ["No certified, FCL or external rows in results.csv.", ""]
+    levels = sorted({arith_level(r) for r in er}, key=level_key)
+    body = []
+    for lv in levels:
+        for dim in data.dims:
+            rs = [r for r in er if arith_level(r) == lv and r["dim"] == dim]
+            if not rs:
+                continue
+            fams = {}
+            for r in rs:
+                if r["outcome"] in WRONG:
+                    g = group_of(r["family"])
+                    fams[g] = fams.get(g, 0) + 1
+            body.append([lv, f"{dim}D", rs[0]["input"], len(rs), count(rs, "false_positive"),
+                         count(rs, "false_negative"), count(rs, "undecided"), count(rs, "error"),
+                         fmt_pct(count(rs, *WRONG), len(rs)),
+                         ", ".join(f"{g} {k}" for g, k in fams.items()) or "none",
+                         fmt_sig(median(r["time_us"] for r in rs if r["outcome"] != "error"))])
+    out += [md_table(["engine", "dim", "input", "runs", "FP", "FN", "undecided", "errors", "misclass.",
+                      "wrong by family", "time µs med"], body, ["---", "---", "---"] + ["---:"] * 5 + ["---", "---:"]),
+            ""]
+    return out
 
 
 def section_findings(data, minbits):
@@ -1070,7 +2014,8 @@ def section_findings(data, minbits):
                     notes = [f"{n} scenes, too few"] if n < 5 else []
                     if not isinstance(b, int):  # say which scenes still fail at the top precision
                         top = max(bb for bb in by_bits if data.sel(dim=dim, degree=deg, pipeline=by_bits[bb]))
-                        bad = [r for r in data.sel(dim=dim, degree=deg, pipeline=by_bits[top]) if not is_clean(r)]
+                        bad = [r for r in data.sel(dim=dim, degree=deg, pipeline=by_bits[top])
+                               if not is_clean(r) and r["family"] not in ISOLATED_CONTACT]
                         fams = {}
                         for r in bad:
                             fams[r["family"]] = fams.get(r["family"], 0) + 1
@@ -1080,7 +2025,7 @@ def section_findings(data, minbits):
                 parts.append(f"{group_name(*grp)} — " + ", ".join(items))
             tested = sorted({b for g in data.mpfr_groups(dim).values() for b in g})
             out.append(f"- {dim}D smallest MPFR precision with no misclassification, undecided or error (tested "
-                       f"{', '.join(map(str, tested))} bits; touch scenes left out, see below): " + "; ".join(parts) + ".")
+                       f"{', '.join(map(str, tested))} bits; touch and graze scenes counted apart, see {T_MPFR_FAM}): " + "; ".join(parts) + ".")
         td = touch_detection(data, dim)
         if td:
             items = [f"{p} {d}/{n}" for p, (d, n) in td.items()]
@@ -1128,7 +2073,9 @@ def section_tables(data):
             n = scenes_of(data.sel(dim=dim, degree=deg))
             out += [f"### {dim}D, degree {deg} ({n} scenes)", "", md_table(header, body), ""]
     out += ["FP: false positives, FN: false negatives; errors are relative (coefficients, normwise) or absolute "
-            "(instants in t ∈ [0, 1]); time: median over rows without error; — : not applicable or no data.", ""]
+            "(instants in t ∈ [0, 1]); time: median over rows without error; — : not applicable or no data. The coefficient "
+            "columns exist for the prepared input mode only (the rows of the other mode show —); coef err is in each "
+            f"pipeline's own basis: see *{T_BERN}* and *{T_COEF}* for the common basis.", ""]
     return out
 
 
@@ -1180,23 +2127,45 @@ def section_nearmiss(data, figs):
 
 
 def section_mpfr(data, minbits, figs):
-    out = ["## Smallest MPFR precision with no misclassification", ""]
+    out = [f"## {T_MPFR}", ""]
     if not minbits:
         out += ["No MPFR pipelines in results.csv: table and min_mpfr_bits_vs_degree.png skipped.", ""]
         return out
     out += ["Per dimension, degree and basis: the smallest tested precision p such that at p and every larger "
             "tested precision no scene is a false positive, false negative, undecided or error. " + MINBITS_NOTE, ""]
     cols = list(dict.fromkeys(g for dim in minbits for g in minbits[dim]))
-    body = []
+    body, why = [], []
     for dim in data.dims:
         for deg in data.degrees[dim]:
-            row = [f"{dim}D", deg, scenes_of(data.sel(dim=dim, degree=deg))]
+            rs = data.sel(dim=dim, degree=deg)
+            counted = [r for r in rs if r["family"] not in ISOLATED_CONTACT]
+            row = [f"{dim}D", deg, scenes_of(rs), scenes_of(counted), scenes_of(rs) - scenes_of(counted)]
             for g in cols:
                 b = minbits.get(dim, {}).get(g, {}).get(deg)
                 row.append("—" if b is None else fmt_bits(b))
+                by_bits = data.mpfr_groups(dim).get(g, {})
+                rb = {bb: [r for r in data.sel(dim=dim, degree=deg, pipeline=p) if r["family"] not in ISOLATED_CONTACT]
+                      for bb, p in by_bits.items()}
+                rb = {bb: x for bb, x in rb.items() if x}
+                fl = failing_level(b, rb) if b is not None and rb else None
+                if fl is not None:
+                    bad = [r for r in rb[fl] if not is_clean(r)]
+                    fams = {}
+                    for r in bad:
+                        fams[r["family"]] = fams.get(r["family"], 0) + 1
+                    causes = fmt_causes(bad)
+                    only_not_precision = all(reason_class(r) in NOT_PRECISION for r in bad)
+                    why.append(f"- {dim}D degree {deg}, {group_name(*g)}: {fmt_bits(b)} because at {fl} bits "
+                               f"{len(bad)} run{'s' if len(bad) != 1 else ''} {'are' if len(bad) != 1 else 'is'} not "
+                               f"clean: {causes} (families: " + ", ".join(f"{f} {k}" for f, k in fams.items()) + ")"
+                               + ("; none of them is a precision limit (time budget or work bound)" if only_not_precision
+                                  else "") + ".")
             body.append(row)
-    out += [md_table(["dim", "degree", "scenes"] + [group_name(*g) for g in cols], body,
-                     ["---", "---:", "---:"] + ["---:"] * len(cols)), ""]
+    out += [md_table(["dim", "degree", "scenes", "counted", "touch + graze (apart)"] + [group_name(*g) for g in cols],
+                     body, ["---", "---:", "---:", "---:", "---:"] + ["---:"] * len(cols)), ""]
+    if why:
+        out += ["Why a cell is above the lowest tested precision, by the `reason` column (" + reason_legend() + "):",
+                ""] + why + [""]
     out += figure_block(figs, "min_mpfr_bits_vs_degree.png")
     return out
 
@@ -1244,15 +2213,17 @@ def figure_block(figs, name):
 
 def build_report(data, figs, minbits):
     out = [f"# Robustness report: {data.meta['name']}", ""]
+    out += section_verdict(data, minbits)
     out += section_what_was_run(data)
     out += section_trust(data)
     out += section_findings(data, minbits)
     out += section_tables(data)
-    out += ["## Coefficient error", ""]
-    out += figure_block(figs, "coef_error_vs_degree.png")
-    out += figure_block(figs, "coef_error_hist.png")
+    out += section_bernstein(data)
+    out += section_coef(data, figs)
     out += section_nearmiss(data, figs)
     out += section_mpfr(data, minbits, figs)
+    out += section_mpfr_family(data)
+    out += section_engines(data)
     out += ["## Time", ""]
     out += figure_block(figs, "time_vs_degree.png")
     out += section_failure_map(data, figs)
@@ -1263,28 +2234,78 @@ def build_report(data, figs, minbits):
     for name in FIGURES:
         if figs.get(name) is not None:
             out.append(f"- [{name}]({name})")
+    out.append(f"- [{MANIFEST}]({MANIFEST}): the series of every figure panel (label, colour, marker)")
     out += ["", f"Written by compare/plots/{PROG} from the files above.", ""]
     return "\n".join(out)
 
 
 FIGURES = ("coef_error_vs_degree.png", "coef_error_hist.png", "misclassification_vs_d.png",
            "min_mpfr_bits_vs_degree.png", "time_vs_degree.png", "failure_map.png")
+MANIFEST = "figures.json"
+
+
+def manifest_json():
+    """figures.json: per figure, its panels and their series (label, colour, marker, line style, merged count)."""
+    return json.dumps({"format": "eccd-report-figures/1", "version": 1, "max_series_per_panel": MAX_SERIES,
+                       "figures": FIGURE_MANIFEST}, indent=2, ensure_ascii=False) + "\n"
+
+
+def check_figures_main(out_dir):
+    """--check-figures DIR: checks DIR/figures.json against the plot rules; prints each problem; 0 if none, 1 else."""
+    path = os.path.join(out_dir, MANIFEST)
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: not found")
+    try:
+        with open(path, encoding="utf-8") as fh:
+            manifest = json.load(fh)
+    except json.JSONDecodeError as e:
+        raise InputError(f"{MANIFEST} line {e.lineno}, column {e.colno}: {e.msg}") from None
+    problems = check_manifest(manifest)
+    for p in problems:
+        print(p)
+    panels = sum(len(v) for v in manifest["figures"].values())
+    print(f"{PROG}: {len(manifest['figures'])} figures, {panels} panels, {len(problems)} problems")
+    return 1 if problems else 0
+
+
+def check_manifest(manifest):
+    """The plot rules on a figures.json object: a list of problems (empty: all kept). Used by the tests."""
+    problems = []
+    for fig, panels in manifest["figures"].items():
+        for pn in panels:
+            ser = pn["series"]
+            if len(ser) > manifest.get("max_series_per_panel", MAX_SERIES):
+                problems.append(f"{fig} / {pn['panel']}: {len(ser)} series")
+            seen = {}
+            for s in ser:
+                key = (s["color"], s["marker"])
+                if key in seen:
+                    problems.append(f"{fig} / {pn['panel']}: '{s['label']}' and '{seen[key]}' share colour and marker")
+                seen[key] = s["label"]
+            labels = [s["label"] for s in ser]
+            if len(set(labels)) != len(labels):
+                problems.append(f"{fig} / {pn['panel']}: a label twice")
+    return problems
 
 
 def main(argv):
+    if len(argv) == 3 and argv[1] == "--check-figures":
+        return check_figures_main(argv[2])
     if len(argv) != 2 or argv[1] in ("-h", "--help"):
-        print(__doc__.strip().splitlines()[2], file=sys.stderr)
+        print("\n".join(__doc__.strip().splitlines()[2:4]), file=sys.stderr)
         return 2 if len(argv) != 2 else 0
     out_dir = argv[1]
     if not os.path.isdir(out_dir):
         raise InputError(f"{out_dir}: not a directory")
     all_rows = read_csv(os.path.join(out_dir, "results.csv"), RESULT_COLUMNS, OPTIONAL_RESULT_COLUMNS)
-    check_results(all_rows)
+    all_pinfo = check_results(all_rows)
     # The main sections read one input mode (rounded where present: what users run); the section on input modes
     # and families reads every row.
-    modes = [m for m in INPUTS if any(r["input"] == m and r["arith"] != "exact" for r in all_rows)]
+    # input modes of the double and MPFR pipelines (certified, FCL and external run in one mode each)
+    modes = [m for m in INPUTS if any(r["input"] == m and r["arith"] in ("double", "mpfr") for r in all_rows)]
     primary = modes[0] if modes else "prepared"
-    rows = [r for r in all_rows if r["arith"] == "exact" or r["input"] == primary]
+    # exact and the engines that run in one input mode only (certified, FCL, external) are in every section
+    rows = [r for r in all_rows if r["arith"] in ("exact",) + OTHER_ENGINES or r["input"] == primary]
     pinfo = check_results(rows)
     meta = read_meta(os.path.join(out_dir, "meta.json"))
     fmap = None
@@ -1295,6 +2316,10 @@ def main(argv):
         fmap = {"rows": fm_rows, "exact": exact_at, "ux": ux, "uy": uy}
     data = Data(rows, pinfo, meta, fmap)
     data.all_rows, data.primary_input, data.input_modes = all_rows, primary, modes
+    data.all_pinfo = all_pinfo
+    data.all_order = [p for p in data.order if p in all_pinfo] + [p for p in dict.fromkeys(r["pipeline"] for r in all_rows)
+                                                                  if p not in data.order]
+    FIGURE_MANIFEST.clear()
     minbits = compute_minbits(data)
 
     tmp = tempfile.mkdtemp(prefix=".report_figures-", dir=out_dir)
@@ -1312,16 +2337,19 @@ def main(argv):
             figs[name] = makers[name](os.path.join(tmp, name))
         with open(os.path.join(tmp, "report.md"), "w", encoding="utf-8") as fh:
             fh.write(build_report(data, figs, minbits))
+        with open(os.path.join(tmp, MANIFEST), "w", encoding="utf-8") as fh:
+            fh.write(manifest_json())
         for name in FIGURES:  # figures first, report.md last
             dst = os.path.join(out_dir, name)
             if figs[name] is not None:
                 os.replace(os.path.join(tmp, name), dst)
             elif os.path.exists(dst):
                 os.remove(dst)  # a stale figure from an earlier run that this report does not show
+        os.replace(os.path.join(tmp, MANIFEST), os.path.join(out_dir, MANIFEST))
         os.replace(os.path.join(tmp, "report.md"), os.path.join(out_dir, "report.md"))
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
-    written = ["report.md"] + [n for n in FIGURES if figs[n] is not None]
+    written = ["report.md", MANIFEST] + [n for n in FIGURES if figs[n] is not None]
     print(f"{PROG}: wrote {', '.join(written)} in {out_dir}")
     return 0
 

@@ -11,7 +11,8 @@ script only draws.
 Left panel: the objects at the drawn instants (3D: outlines of their
 projections onto the xy-plane), A in blues and B in oranges, darker = later;
 labels in red are instants inside a collision interval; crosses are contact
-points. Right panel, 2D (paper 003): Δ(t) on a symmetric log scale; 3D (papers
+points. A label that would overlap another (or the legend) is moved next to
+its object, with a thin leader line. Right panel, 2D (paper 003): Δ(t) on a symmetric log scale; 3D (papers
 001/002): the zero set of F(u, t) = det((u-1)A(t) - uB(t)) with F > 0 filled.
 Both show the critical instants (dashed, coloured by status), the collision
 intervals (shaded) and the contacts (circles) of the report.
@@ -111,8 +112,8 @@ def draw_objects(ax, data):
             ts = cl["ts"]
             hits = [in_collision(t, rep) for t in ts]
             label = ", ".join(f"{t:.3g}" for t in ts) if len(ts) <= 2 else f"{ts[0]:.3g}…{ts[-1]:.3g} ({len(ts)} instants)"
-            ax.annotate(f"{name} {label}", cl["centre"], fontsize=8, ha="center", va="center",
-                        color=COLLISION if all(hits) else "black")
+            data.setdefault("_labels", []).append((f"{name} {label}", cl["centre"],
+                                                   COLLISION if all(hits) else "black"))
     for c in data.get("contacts") or []:
         if "point" in c:
             ax.plot(c["point"][0], c["point"][1], "x", color=COLLISION, ms=10, mew=2.5)
@@ -135,6 +136,44 @@ def draw_objects(ax, data):
     if data["dim"] == 3:
         handles.append(Patch(color="none", label="projections may overlap while apart"))
     ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85)
+
+
+# Offsets (points) tried in turn for a snapshot label that would overlap one already placed: first on the centre,
+# then around it at growing distance; a moved label gets a thin leader line to its centre.
+LABEL_OFFSETS = [(0, 0)] + [(round(r * math.cos(a)), round(r * math.sin(a)))
+                            for r in (13, 24, 36, 50) for a in [k * math.pi / 4 for k in (2, 6, 0, 4, 1, 3, 5, 7)]]
+
+
+def place_labels(fig, ax, labels):
+    """Draws the snapshot labels so that no two overlap (nor the legend), after the layout is final."""
+    fig.canvas.draw()  # runs the constrained layout: data-to-pixel positions are final from here
+    renderer = fig.canvas.get_renderer()
+    taken = []
+    leg = ax.get_legend()
+    if leg is not None:
+        taken.append(leg.get_window_extent(renderer))
+    for text, centre, colour in labels:
+        placed = None
+        for dx, dy in LABEL_OFFSETS:
+            ann = ax.annotate(text, centre, xytext=(dx, dy), textcoords="offset points", fontsize=8, ha="center",
+                              va="center", color=colour,
+                              bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.7})
+            box = ann.get_window_extent(renderer).expanded(1.05, 1.1)
+            if not any(box.overlaps(b) for b in taken):
+                placed = (ann, box, (dx, dy))
+                break
+            ann.remove()
+        if placed is None:  # crowded everywhere: on the centre, as before
+            ann = ax.annotate(text, centre, fontsize=8, ha="center", va="center", color=colour)
+            placed = (ann, ann.get_window_extent(renderer), (0, 0))
+        ann, box, off = placed
+        if off != (0, 0):
+            ann.remove()
+            ann = ax.annotate(text, centre, xytext=off, textcoords="offset points", fontsize=8, ha="center",
+                              va="center", color=colour,
+                              bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.7},
+                              arrowprops={"arrowstyle": "-", "color": colour, "lw": 0.6, "shrinkA": 0, "shrinkB": 0})
+        taken.append(box)
 
 
 def marks_title(rep):
@@ -251,6 +290,7 @@ def main(argv):
     else:
         draw_zero_set(right, data)
     fig.suptitle(f"{data['scene']} ({data['dim']}D): {answer_text(rep)}\n{arith_text(data)}", fontsize=12)
+    place_labels(fig, left, data.get("_labels", []))
     fig.savefig(argv[2], format="png")
     return 0
 

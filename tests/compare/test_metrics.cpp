@@ -84,13 +84,46 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
   CHECK(*by["mpfr:256/power"]->delta_err < *by["mpfr:64/power"]->delta_err);
   CHECK(*by["mpfr:64/power"]->delta_err < *by["double/power"]->delta_err);
   for (const auto& r : rows) CHECK(r.input == "prepared");
-  // One CSV line per row, 29 fields each.
+  // The common-basis error: a Bernstein pipeline's is its coef_err; a power pipeline's is measured on the same
+  // Bernstein coefficients as the Bernstein pipelines' (and shrinks with the precision like them).
+  for (const auto& r : rows) {
+    if (r.pipeline == "exact") continue;
+    INFO(r.pipeline);
+    REQUIRE(r.coef_err_common);
+    if (r.basis != "power") CHECK(*r.coef_err_common == *r.coef_err);
+  }
+  CHECK(*by["mpfr:256/power"]->coef_err_common <= *by["mpfr:64/power"]->coef_err_common);
+  CHECK(*by["mpfr:64/power"]->coef_err_common <= *by["double/power"]->coef_err_common);
+  // The change of basis is exact and one to one: exact power coefficients iff exact Bernstein coefficients.
+  for (const char* p : {"double/power", "mpfr:64/power", "mpfr:256/power"})
+    CHECK((*by[p]->coef_err == 0) == (*by[p]->coef_err_common == 0));
+  // One CSV line per row, 30 fields each (coef_err_common last, issue 19).
   for (const auto& r : rows) {
     const std::string line = results_csv_line(r);
-    CHECK(std::count(line.begin(), line.end(), ',') == 28);
+    CHECK(std::count(line.begin(), line.end(), ',') == 29);
   }
   const std::string head = results_csv_header();
-  CHECK(std::count(head.begin(), head.end(), ',') == 28);
+  CHECK(std::count(head.begin(), head.end(), ',') == 29);
+  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common").size()) == ",reason,coef_err_common");
+}
+
+TEST_CASE("coefficient error in the common basis: power coefficients changed exactly to Bernstein form", "[metrics]") {
+  // p(t) = 1 + t: power [1, 1], Bernstein [1, 2]. The approximation 1 + (1 + 2^-52) t is [1, 2 + 2^-52] in
+  // Bernstein form: normwise relative error 2^-52 / 2 = 2^-53 in the common basis, 2^-52 / 1 in power form.
+  const double u = std::ldexp(1.0, -52);
+  std::vector<Poly<double>> approx{Poly<double>(std::vector<double>{1.0, 1.0 + u})};
+  std::vector<Poly<mpq_class>> exact{Poly<mpq_class>(std::vector<mpq_class>{1, 1})};
+  std::vector<Bern<mpq_class>> exact_bern{to_bernstein(exact[0])};
+  CHECK(coefficient_error(approx, exact) == u);
+  CHECK(coefficient_error_common(approx, exact_bern) == std::ldexp(1.0, -53));
+  // Exact input: no error in either basis; a degree that differs is elevated exactly (p = 1 against [1, 1]).
+  std::vector<Poly<double>> one{Poly<double>(std::vector<double>{1.0})};
+  Bern<mpq_class> flat;
+  flat.b = {1, 1};
+  CHECK(coefficient_error_common(one, {flat}) == 0.0);
+  // A non-finite coefficient has no exact value: the error is +inf.
+  std::vector<Poly<double>> bad{Poly<double>(std::vector<double>{1.0, std::numeric_limits<double>::infinity()})};
+  CHECK(std::isinf(coefficient_error_common(bad, exact_bern)));
 }
 
 TEST_CASE("harness: both input modes are rows of their own where the solver has them", "[metrics][harness]") {
