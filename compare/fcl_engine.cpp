@@ -71,10 +71,15 @@ FclPose pose_of(const Matrix<double, H>& q, const PolyMatrix<double, H>& n, doub
 }
 
 template <int H>
-FclScenePose scene_pose(const Scene& s, double t) {
+MovingPair<double, H> rounded_scene(const Scene& s) {
   std::string trouble;
   MovingPair<double, H> m = round_pair<double, H>(s, 1.0, trouble);
   if (!trouble.empty()) throw std::invalid_argument("FCL pose: " + trouble);
+  return m;
+}
+
+template <int H>
+FclScenePose scene_pose(const MovingPair<double, H>& m, double t) {
   FclScenePose p;
   p.a = pose_of<H>(m.qa, m.na, t, "a", p.qa);
   p.b = pose_of<H>(m.qb, m.nb, t, "b", p.qb);
@@ -127,6 +132,19 @@ Instant double_instant(double t) {
   return i;
 }
 
+// The scene rounded once (the user's program holds its numbers and N(t)), posed at each instant.
+struct Poser {
+  int dim;
+  MovingPair<double, H_2D> m2;
+  MovingPair<double, H_3D> m3;
+  explicit Poser(const Scene& s) : dim(s.dim) {
+    if (cycloidal(s)) throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
+    if (dim == 3) m3 = rounded_scene<H_3D>(s);
+    else m2 = rounded_scene<H_2D>(s);
+  }
+  FclScenePose at(double t) const { return dim == 3 ? scene_pose<H_3D>(m3, t) : scene_pose<H_2D>(m2, t); }
+};
+
 #ifdef ECCD_HAVE_FCL
 fcl::Transform3d transform_of(const FclPose& p) {
   fcl::Transform3d tf = fcl::Transform3d::Identity();
@@ -138,8 +156,8 @@ fcl::Transform3d transform_of(const FclPose& p) {
   return tf;
 }
 
-bool fcl_collide_posed(const Scene& s, double t) {
-  FclScenePose p = fcl_pose_at(s, t);
+bool fcl_collide_posed(const Poser& poser, double t) {
+  FclScenePose p = poser.at(t);
   fcl::Ellipsoidd ea(p.a.radii[0], p.a.radii[1], p.a.radii[2]), eb(p.b.radii[0], p.b.radii[1], p.b.radii[2]);
   fcl::CollisionRequestd request;  // FCL's defaults, as a user calls it
   fcl::CollisionResultd result;
@@ -183,10 +201,7 @@ std::string fcl_tolerances() {
 #endif
 }
 
-FclScenePose fcl_pose_at(const Scene& s, double t) {
-  if (cycloidal(s)) throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
-  return s.dim == 3 ? scene_pose<H_3D>(s, t) : scene_pose<H_2D>(s, t);
-}
+FclScenePose fcl_pose_at(const Scene& s, double t) { return Poser(s).at(t); }
 
 std::string fcl_ccd_inexpressible(const Scene& s) {
   if (cycloidal(s)) return "a cycloidal motion rotates: FCL's translation motion cannot express it";
@@ -200,7 +215,7 @@ std::string fcl_ccd_inexpressible(const Scene& s) {
 bool fcl_collides_at(const Scene& s, double t) {
   need_fcl();
 #ifdef ECCD_HAVE_FCL
-  return fcl_collide_posed(s, t);
+  return fcl_collide_posed(Poser(s), t);
 #else
   (void)s, (void)t;
   return false;
@@ -212,9 +227,10 @@ Answer fcl_sample(const Scene& s, int n) {
   if (n < 1) throw std::invalid_argument("fcl/sample:N needs N >= 1");
   Answer a;
 #ifdef ECCD_HAVE_FCL
+  const Poser poser(s);
   long start = -1;
   for (long k = 0; k <= n; ++k) {
-    const bool hit = fcl_collide_posed(s, double(k) / double(n));
+    const bool hit = fcl_collide_posed(poser, double(k) / double(n));
     if (hit && start < 0) start = k;
     if (start >= 0 && (!hit || k == n)) {
       const long end = hit ? k : k - 1;
@@ -224,6 +240,8 @@ Answer fcl_sample(const Scene& s, int n) {
   }
   a.collides = !a.intervals.empty();
   if (a.collides) a.first_contact = a.intervals.front().first;
+#else
+  (void)s;
 #endif
   return a;
 }
@@ -235,7 +253,8 @@ Answer fcl_ccd(const Scene& s, int n) {
   if (std::string why = fcl_ccd_inexpressible(s); !why.empty()) throw std::invalid_argument(why);
   Answer a;
 #ifdef ECCD_HAVE_FCL
-  FclScenePose p0 = fcl_pose_at(s, 0), p1 = fcl_pose_at(s, 1);
+  const Poser poser(s);
+  FclScenePose p0 = poser.at(0), p1 = poser.at(1);
   // The shape and orientation are constant: the start's; only the centre moves (CCDM_TRANS).
   FclPose a1 = p0.a, b1 = p0.b;
   a1.centre = p1.a.centre;
