@@ -846,11 +846,15 @@ Command add_report_command(CLI::App& app) {
   s->add_flag("--no-map", a->no_map, "Skip the failure map");
   s->add_flag("--no-figures", a->no_figures, "Write the CSV and meta.json only (no report.md, no PNG)");
   // Peer pipelines (compare/harness.hpp): certified, and FCL when it is built in.
-  s->add_option("--fcl-samples", a->harness.fcl_samples,
+  auto* fcl_opt = s->add_option("--fcl-samples", a->harness.fcl_samples,
                 "N of the FCL pipelines fcl/sample:N and fcl/ccd:N, a comma list (when FCL is built in; docs/fcl.md)")
       ->delimiter(',')->capture_default_str()->check(CLI::Range(2, 1000000));
   s->add_flag_callback("--no-fcl", [a] { a->harness.fcl = false; }, "Skip the FCL pipelines (meta.json still says whether FCL is built in)");
   s->add_flag_callback("--no-certified", [a] { a->harness.certified = false; }, "Skip the certified pipeline (arith certified)");
+  s->parse_complete_callback([a, fcl_opt] {  // a warning for an option that changes nothing
+    if (fcl_opt->count() && !a->harness.fcl) warn("report", "--fcl-samples is ignored: --no-fcl");
+    else if (fcl_opt->count() && !fcl_availability().available) warn("report", "--fcl-samples is ignored: " + fcl_availability().reason);
+  });
   c.run = [a, out_opt]() {
     a->out_given = out_opt->count() > 0;
     try {
