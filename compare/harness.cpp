@@ -379,7 +379,10 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
       row.time_us = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e6;
       const Answer reference = ccd ? first_contact_view(exact.answer) : exact.answer;
       row.m = answer_metrics(got ? &*got : nullptr, reference);
-      if (ccd && got) row.m.structure_ok = row.m.outcome == "correct" && answer_difference(*got, reference).agrees;
+      if (ccd) {  // no intervals claimed: no end error; structure = collides and the first contact agree
+        row.m.endpoint_err.reset();
+        if (got) row.m.structure_ok = row.m.outcome == "correct" && answer_difference(*got, reference).agrees;
+      }
       rows.push_back(row);
       continue;
     }

@@ -136,6 +136,19 @@ TEST_CASE("fcl/ccd expresses constant shapes translating linearly, nothing else"
   CHECK(v.first_contact.has_value() == ex.first_contact.has_value());
 }
 
+TEST_CASE("eccd fcl: a bad option or scene is exit 2, with or without FCL", "[fcl][cli-fcl]") {
+  const std::string crossing = q(src("cases/spheres/spheres-crossing.json"));
+  for (const std::string args : {"fcl " + crossing + " --samples 0", "fcl " + crossing + " --ccd 1",
+                                 "fcl " + crossing + " --samples 5 --ccd 5", "fcl " + crossing + " --bogus",
+                                 "fcl " + q(src("tests/data/judge/malformed.json")), std::string("fcl /nonexistent/scene.json")}) {
+    INFO(args);
+    Run r = run_eccd(args);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_FALSE(r.err.empty());
+  }
+}
+
 #ifdef ECCD_HAVE_FCL
 
 TEST_CASE("fcl/sample agrees with the exact static test at its samples on clear cases", "[fcl]") {
@@ -222,6 +235,8 @@ TEST_CASE("harness: certified and fcl rows, fcl/ccd only where expressible", "[f
     if (r.pipeline.rfind("fcl/ccd", 0) == 0) {
       ++ccd_rows;
       CHECK(r.m.exact_intervals == 0);  // compared with the first-contact view: no intervals charged
+      CHECK_FALSE(r.m.endpoint_err.has_value());
+      CHECK(r.m.first_contact_err.has_value());
       CHECK(r.m.outcome == "correct");
     }
   }
