@@ -852,8 +852,8 @@ Command add_report_command(CLI::App& app) {
   s->add_flag_callback("--no-fcl", [a] { a->harness.fcl = false; }, "Skip the FCL pipelines (meta.json still says whether FCL is built in)");
   s->add_flag_callback("--no-certified", [a] { a->harness.certified = false; }, "Skip the certified pipeline (arith certified)");
   s->parse_complete_callback([a, fcl_opt] {  // a warning for an option that changes nothing
-    if (fcl_opt->count() && !a->harness.fcl) warn("report", "--fcl-samples is ignored: --no-fcl");
-    else if (fcl_opt->count() && !fcl_availability().available) warn("report", "--fcl-samples is ignored: " + fcl_availability().reason);
+    if (fcl_opt->count() && !fcl_availability().available) warn("report", "--fcl-samples is ignored: " + fcl_availability().reason);
+    else if (fcl_opt->count() && !a->harness.fcl) warn("report", "--fcl-samples is ignored: --no-fcl");
   });
   c.run = [a, out_opt]() {
     a->out_given = out_opt->count() > 0;

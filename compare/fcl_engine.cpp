@@ -114,6 +114,20 @@ std::string inexpressible_motion(const Motion& motion, const char* which) {
   return "";
 }
 
+// The scene rounded once (the user's program holds its numbers and N(t)), posed at each instant.
+struct Poser {
+  int dim;
+  MovingPair<double, H_2D> m2;
+  MovingPair<double, H_3D> m3;
+  explicit Poser(const Scene& s) : dim(s.dim) {
+    if (cycloidal(s)) throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
+    if (dim == 3) m3 = rounded_scene<H_3D>(s);
+    else m2 = rounded_scene<H_2D>(s);
+  }
+  FclScenePose at(double t) const { return dim == 3 ? scene_pose<H_3D>(m3, t) : scene_pose<H_2D>(m2, t); }
+};
+
+#ifdef ECCD_HAVE_FCL
 Instant decimal_instant(long k, long n) {
   Instant i;
   mpq_class q(k, n);
@@ -132,20 +146,6 @@ Instant double_instant(double t) {
   return i;
 }
 
-// The scene rounded once (the user's program holds its numbers and N(t)), posed at each instant.
-struct Poser {
-  int dim;
-  MovingPair<double, H_2D> m2;
-  MovingPair<double, H_3D> m3;
-  explicit Poser(const Scene& s) : dim(s.dim) {
-    if (cycloidal(s)) throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
-    if (dim == 3) m3 = rounded_scene<H_3D>(s);
-    else m2 = rounded_scene<H_2D>(s);
-  }
-  FclScenePose at(double t) const { return dim == 3 ? scene_pose<H_3D>(m3, t) : scene_pose<H_2D>(m2, t); }
-};
-
-#ifdef ECCD_HAVE_FCL
 fcl::Transform3d transform_of(const FclPose& p) {
   fcl::Transform3d tf = fcl::Transform3d::Identity();
   fcl::Matrix3d r;
@@ -179,7 +179,7 @@ FclAvailability fcl_availability() {
   a.available = true;
   a.version = FCL_VERSION;
 #else
-  a.reason = std::string(ECCD_FCL_STATUS) + "; install Debian libfcl-dev and configure again";
+  a.reason = ECCD_FCL_STATUS;
 #endif
   return a;
 }
