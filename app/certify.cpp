@@ -123,7 +123,7 @@ Command add_certify_command(CLI::App& app) {
       HarnessOptions ho;
       ho.mpfr_bits = args->mpfr_bits;
       for (const auto& p : harness_pipelines(scene.dim, ho)) {
-        if (p.opt.arith.kind == Arithmetic::Exact) continue;
+        if (!p.opt.arith.floating()) continue;  // double and MPFR only: not exact, nor the peers certified and fcl/
         if (!quiet()) std::cerr << "certify: " << p.label << " ...\n";
         try {
           const Solution got = solve(scene, p.opt);

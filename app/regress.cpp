@@ -204,7 +204,7 @@ Command add_regress_command(CLI::App& app) {
           HarnessOptions ho;
           ho.mpfr_bits = args->mpfr_bits;
           for (const auto& p : harness_pipelines(sc.dim, ho)) {
-            if (p.opt.arith.kind == Arithmetic::Exact) continue;
+            if (!p.opt.arith.floating()) continue;  // double and MPFR only: not exact, nor the peers certified and fcl/
             Verdict v;
             try {
               const Solution g = solve(sc, p.opt);

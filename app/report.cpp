@@ -460,6 +460,21 @@ void start_partial(const fs::path& partial, const fs::path& out) {
 
 void finish_output(const fs::path& partial, const fs::path& out) { replace_output_folder(partial, out, kMarker, looks_like_old_report); }
 
+// ---- FCL in meta.json (branch fcl; contract-19: "fcl" key) ------------------
+// {"available", "version", "tolerances", "skipped": {"fcl/ccd:N": scenes without a row}}; the reason when absent.
+nlohmann::json fcl_meta(const HarnessOptions& h, const std::vector<std::string>& labels, const std::vector<std::string>& rows) {
+  const FclAvailability fa = fcl_availability();
+  nlohmann::json j = {{"available", fa.available}, {"version", fa.available ? nlohmann::json(fa.version) : nlohmann::json(nullptr)}};
+  if (!fa.available) j["reason"] = fa.reason;
+  else if (!h.fcl) j["reason"] = "FCL is built in but was not run (--no-fcl)";
+  j["tolerances"] = fcl_tolerances();
+  j["samples"] = h.fcl && fa.available ? h.fcl_samples : std::vector<int>{};
+  j["skipped"] = nlohmann::json::object();
+  for (const auto& [label, n] : fcl_skipped(labels, rows)) j["skipped"][label] = n;
+  j["skipped_note"] = "scenes whose motions FCL's translation motion (CCDM_TRANS) cannot express: no fcl/ccd row";
+  return j;
+}
+
 // ---- the two modes -----------------------------------------------------------
 
 // meta.json's "externals" (report --external): per engine its name, its folder, how many scenes it answered
@@ -607,6 +622,7 @@ int run_report(const ReportArgs& a) {
     for (const auto& p : harness_pipelines(dim, a.harness))
       if (std::find(labels.begin(), labels.end(), p.label) == labels.end()) labels.push_back(p.label);
   meta["pipelines"] = labels;
+  meta["fcl"] = fcl_meta(a.harness, labels, rows);
   meta["machine"] = machine_info();
   std::string ver = read_command_output("git -C " + shell_quote(fs::path(plots_dir()).parent_path().parent_path().string()) +
                                         " describe --always --dirty 2>/dev/null");
@@ -791,6 +807,10 @@ int run_merge(const ReportArgs& a) {
   meta["result_rows"] = rows.size();
   meta["map_rows"] = cells.size();
   if (meta.contains("externals") && meta["externals"].is_array()) meta["externals"] = externals_meta(meta["externals"], rows);
+  if (meta.contains("fcl") && meta["fcl"].is_object() && meta["pipelines"].is_array()) {  // the parts' counts, recounted over all rows
+    meta["fcl"]["skipped"] = nlohmann::json::object();
+    for (const auto& [label, n] : fcl_skipped(meta["pipelines"].get<std::vector<std::string>>(), rows)) meta["fcl"]["skipped"][label] = n;
+  }
   write_file(partial / "meta.json", meta.dump(2) + "\n");
   if (!a.no_figures) run_figures(partial);
   finish_output(partial, out);
@@ -860,6 +880,16 @@ Command add_report_command(CLI::App& app) {
                 "(meta.json counts them). Repeat for several engines. `eccd generate --out DIR` writes the generated "
                 "scenes for your engine to answer.")
       ->expected(1, -1);
+  // Peer pipelines (compare/harness.hpp): certified, and FCL when it is built in.
+  auto* fcl_opt = s->add_option("--fcl-samples", a->harness.fcl_samples,
+                "N of the FCL pipelines fcl/sample:N and fcl/ccd:N, a comma list (when FCL is built in; docs/fcl.md)")
+      ->delimiter(',')->capture_default_str()->check(CLI::Range(2, 1000000));
+  s->add_flag_callback("--no-fcl", [a] { a->harness.fcl = false; }, "Skip the FCL pipelines (meta.json still says whether FCL is built in)");
+  s->add_flag_callback("--no-certified", [a] { a->harness.certified = false; }, "Skip the certified pipeline (arith certified)");
+  s->parse_complete_callback([a, fcl_opt] {  // a warning for an option that changes nothing
+    if (fcl_opt->count() && !fcl_availability().available) warn("report", "--fcl-samples is ignored: " + fcl_availability().reason);
+    else if (fcl_opt->count() && !a->harness.fcl) warn("report", "--fcl-samples is ignored: --no-fcl");
+  });
   c.run = [a, out_opt]() {
     a->out_given = out_opt->count() > 0;
     for (const auto& spec : a->externals) {  // checked before any work: a bad spec is exit 2

@@ -170,6 +170,8 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
       p.method = arith == "exact" ? (dim == 2 ? "cd-disc" : "projection") : method;
       p.label = arith == "exact" ? "exact" : arith + "/" + variant;
       p.input = arith == "exact" ? "prepared" : mode;
+      p.arith = p.opt.arith.kind == Arithmetic::Exact ? "exact" : p.opt.arith.kind == Arithmetic::Mpfr ? "mpfr" : "double";
+      p.bits = p.opt.arith.precision_bits();
       if (arith != "exact") {
         apply_input_mode(p.opt, mode);
         if (both && mode == "prepared") p.label += "@prepared";
@@ -199,7 +201,55 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
       if (o.mpfr_power_3d) add(a, "power", "bezier", "bezier-power");
     }
   }
+  if (o.certified) {
+    PipelineSpec p;
+    p.opt.arith = Arithmetic::certified();
+    p.label = p.arith = "certified";
+    p.basis = "none";
+    p.method = "ladder";
+    p.input = "prepared";
+    v.push_back(p);
+  }
+  if (o.fcl && fcl_availability().available) {
+    for (int n : o.fcl_samples)
+      if (n < 2) throw std::invalid_argument("FCL sample count " + std::to_string(n) + ": expected N >= 2");
+    for (auto engine : {PipelineSpec::Engine::fcl_sample, PipelineSpec::Engine::fcl_ccd})
+      for (int n : o.fcl_samples) {
+        PipelineSpec p;
+        p.engine = engine;
+        p.fcl_n = n;
+        p.method = (engine == PipelineSpec::Engine::fcl_sample ? "sample:" : "ccd:") + std::to_string(n);
+        p.label = "fcl/" + p.method;
+        p.arith = "fcl";
+        p.bits = 53;
+        p.basis = "none";
+        p.input = "rounded";
+        v.push_back(p);
+      }
+  }
   return v;
+}
+
+std::vector<std::pair<std::string, int>> fcl_skipped(const std::vector<std::string>& labels,
+                                                     const std::vector<std::string>& csv_rows) {
+  // the fields scene (0) and pipeline (8) of results_csv_header()
+  std::vector<std::string> scenes;
+  std::vector<std::pair<std::string, std::string>> have;  // (pipeline, scene)
+  for (const auto& line : csv_rows) {
+    std::vector<std::string> f = csv_split(line, "results.csv row");
+    if (f.size() < 9) continue;
+    if (f[8] == "exact") scenes.push_back(f[0]);
+    else if (f[8].rfind("fcl/ccd:", 0) == 0) have.emplace_back(f[8], f[0]);
+  }
+  std::sort(have.begin(), have.end());
+  std::vector<std::pair<std::string, int>> out;
+  for (const auto& l : labels) {
+    if (l.rfind("fcl/ccd:", 0) != 0) continue;
+    int n = 0;
+    for (const auto& sc : scenes) n += !std::binary_search(have.begin(), have.end(), std::make_pair(l, sc));
+    out.emplace_back(l, n);
+  }
+  return out;
 }
 
 BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s, bool isolate) {
@@ -345,11 +395,31 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     ResultRow row;
     row.scene = info;
     row.pipeline = ps.label;
-    row.arith = ps.opt.arith.kind == Arithmetic::Exact ? "exact" : ps.opt.arith.kind == Arithmetic::Mpfr ? "mpfr" : "double";
-    row.bits = ps.opt.arith.precision_bits();
+    row.arith = ps.arith;
+    row.bits = ps.bits;
     row.basis = ps.basis;
     row.method = ps.method;
     row.input = ps.input;
+    if (ps.engine != PipelineSpec::Engine::solve) {  // FCL, in this process (see the header)
+      const bool ccd = ps.engine == PipelineSpec::Engine::fcl_ccd;
+      if (ccd && !fcl_ccd_inexpressible(s).empty()) continue;  // no row: counted by fcl_skipped
+      std::optional<Answer> got;
+      auto start = std::chrono::steady_clock::now();
+      try {
+        got = ccd ? fcl_ccd(s, ps.fcl_n) : fcl_sample(s, ps.fcl_n);
+      } catch (const std::exception& e) {
+        row.error = row.reason = e.what();
+      }
+      row.time_us = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e6;
+      const Answer reference = ccd ? first_contact_view(exact.answer) : exact.answer;
+      row.m = answer_metrics(got ? &*got : nullptr, reference);
+      if (ccd) {  // no intervals claimed: no end error; structure = collides and the first contact agree
+        row.m.endpoint_err.reset();
+        if (got) row.m.structure_ok = row.m.outcome == "correct" && answer_difference(*got, reference).agrees;
+      }
+      rows.push_back(row);
+      continue;
+    }
     std::optional<Solution> got;
     bool timed_out = false;
     double wall = 0;
@@ -385,7 +455,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     }
     // Coefficient errors are recomputed from the prepared scene, i.e. for the prepared input mode only (a rounded
     // row leaves them empty rather than show another mode's numbers).
-    if (ps.label != "exact" && ps.input == "prepared") {
+    if ((ps.arith == "double" || ps.arith == "mpfr") && ps.input == "prepared") {
       Basis basis = ps.opt.basis;
       if (ps.opt.arith.kind == Arithmetic::Double) {
         if (s.dim == 2) coefficients_2d<double>(r2, basis, 53, 1.0, row);

@@ -38,10 +38,26 @@
 // then only "prepared" rows are written. Rows of the mode "prepared" carry the
 // label suffix "@prepared" when both modes are run, so that the report can put
 // the error of rounding the input apart from the error of the computation.
+// Peer pipelines (issue 19, point 3): `certified` (api/solve.hpp with
+// Arithmetic::certified(): interval arithmetic climbing to exact,
+// certified/ladder.hpp) runs like a floating run, bounded by the same
+// budget_s (a time-out is undecided, not a failure of the scene); bits 0,
+// basis none, method ladder, input prepared. When FCL is built in
+// (compare/fcl_engine.hpp) `fcl/sample:N` (method sample:N) and `fcl/ccd:N`
+// (method ccd:N) for each N of fcl_samples: bits 53, basis none, input
+// rounded, run in the harness's process (FCL's calls do not ask a deadline;
+// each is bounded by N + 1 GJK queries). fcl/ccd:N answers collides and
+// first_contact only, so its row is compared with the exact answer's
+// first-contact view (fcl_engine.hpp first_contact_view: collides and first
+// contact; intervals and contacts are not claimed, so they are not charged),
+// and its structure_ok means collides and the first contact agree. A scene
+// whose motions FCL's translation motion cannot express gets no fcl/ccd row
+// (fcl_skipped counts them from the rows).
 // Requirements: a scene with rational motions (the exact pipeline refuses
 // cycloidal motions, and so does the harness).
 #include "api/solve.hpp"
 #include "compare/external_answers.hpp"
+#include "compare/fcl_engine.hpp"
 #include "compare/metrics.hpp"
 #include "kernel/scene.hpp"
 
@@ -68,10 +84,14 @@ SceneInfo scene_info(const Scene& s, const std::string& source);
 int scene_degree(const Scene& s);
 
 struct PipelineSpec {
-  std::string label;  // "double/power", "mpfr:128/bezier", "exact", "double/power@prepared", ...
-  SolveOptions opt;
+  std::string label;  // "double/power", "mpfr:128/bezier", "exact", "double/power@prepared", "certified", "fcl/sample:100", ...
+  SolveOptions opt;   // eccd's pipelines (engine solve)
   std::string basis, method;
   std::string input = "prepared";  // rounded | prepared (exact: prepared)
+  std::string arith;  // the CSV's arith: exact | double | mpfr | certified | fcl
+  int bits = 0;       // the CSV's bits
+  enum class Engine { solve, fcl_sample, fcl_ccd } engine = Engine::solve;
+  int fcl_n = 0;      // N of fcl/sample:N and fcl/ccd:N
 };
 
 // Whether api/solve.hpp's SolveOptions has an input mode (`input`, an enum
@@ -110,6 +130,9 @@ struct HarnessOptions {
   double exact_budget_s = 600;  // time budget of the exact run (ground truth)
   bool isolate = true;          // each floating run in a child process killed at 2 x budget + 1 s (run_bounded)
   std::vector<ExternalEngine> externals;  // report --external: a row "ext:NAME" per scene with an answer file
+  bool certified = true;        // the certified pipeline (under budget_s like a floating run)
+  bool fcl = fcl_availability().available;  // the fcl/ pipelines (ignored when FCL is not built in)
+  std::vector<int> fcl_samples{10, 100, 1000};  // N of fcl/sample:N and fcl/ccd:N (each >= 2)
 };
 
 std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& opt);
@@ -130,6 +153,12 @@ struct ResultRow {
 // Every pipeline on one scene; the exact row first, the external engines' rows
 // (compare/external_answers.hpp; arith "external", basis "none") last.
 std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const HarnessOptions& opt);
+
+// Per fcl/ccd pipeline label of `labels`, the number of scenes of `csv_rows`
+// (results_csv_line records; a scene counts when it has an exact row) that
+// have no row of that pipeline: the scenes FCL's motion could not express.
+std::vector<std::pair<std::string, int>> fcl_skipped(const std::vector<std::string>& labels,
+                                                     const std::vector<std::string>& csv_rows);
 
 // results.csv (the contract with compare/plots/report_figures.py).
 std::string results_csv_header();
