@@ -43,18 +43,26 @@ std::optional<ExternalAnswer> read_external_answer(const ExternalEngine& engine,
     out.error = out.path + ": cannot be read";
     return out;
   }
+  // The engine's own time, when the file gives one: taken out before the answer is read (the answer reader
+  // knows only the answer's keys). Malformed JSON goes to the reader as it is, for its message.
+  std::string answer_text = text.str();
+  auto j = nlohmann::json::parse(answer_text, nullptr, false);
+  if (j.is_object() && (j.contains("time_us") || j.contains("time_ms"))) {  // else the text goes as it is (duplicate keys and all)
+    for (const char* key : {"time_us", "time_ms"}) {
+      if (!j.contains(key)) continue;
+      if (!j[key].is_number() || j[key].get<double>() < 0) {
+        out.error = out.path + ": /" + key + ": expected a non-negative number (the engine's time for the query)";
+        return out;
+      }
+      if (out.time_us < 0) out.time_us = j[key].get<double>() * (std::string(key) == "time_ms" ? 1e3 : 1.0);
+      j.erase(key);
+    }
+    answer_text = j.dump();
+  }
   try {
-    out.answer = answer_from_text(text.str(), out.path).answer;
+    out.answer = answer_from_text(answer_text, out.path).answer;
   } catch (const SceneError& e) {
     out.error = e.what();
-    return out;
-  }
-  // The engine's own time, when the file gives one (answer_from_text accepted the JSON already).
-  const auto j = nlohmann::json::parse(text.str(), nullptr, false);
-  if (j.is_object()) {
-    if (j.contains("time_us") && j["time_us"].is_number()) out.time_us = j["time_us"].get<double>();
-    else if (j.contains("time_ms") && j["time_ms"].is_number()) out.time_us = 1e3 * j["time_ms"].get<double>();
-    if (out.time_us < 0) out.time_us = -1;
   }
   return out;
 }
