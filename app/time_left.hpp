@@ -13,7 +13,10 @@
 // prior (a rough relative cost, any unit) scaled by the ratio measured / prior
 // over all finished tasks, so one measured kind calibrates the others.
 // A running task counts with its expected cost minus the time it has run
-// (not below zero). The wall time left is the work left divided by the
+// (not below zero), and it bounds its kind's cost from below while that kind
+// has no finished task (a task that has run 5 s costs at least 5 s; early in
+// a run, when one cheap kind calibrates the priors, this keeps the estimate of
+// the expensive kinds from collapsing). The wall time left is the work left divided by the
 // workers that still have something to do, and never less than the longest
 // running task's expected rest.
 //
@@ -54,14 +57,18 @@ class TimeLeft {
   std::optional<double> wall(const std::vector<long>& queued, const std::vector<std::pair<std::size_t, double>>& running,
                              int workers) const {
     if (!measured()) return std::nullopt;
+    std::vector<double> c(prior_.size());
+    for (std::size_t k = 0; k < c.size(); ++k) c[k] = cost(k);
+    for (const auto& [kind, ran] : running)
+      if (n_[kind] == 0) c[kind] = std::max(c[kind], ran);
     double work = 0, longest = 0;
     long tasks = long(running.size());
     for (std::size_t k = 0; k < queued.size(); ++k) {
-      work += double(queued[k]) * cost(k);
+      work += double(queued[k]) * c[k];
       tasks += queued[k];
     }
     for (const auto& [kind, ran] : running) {
-      double rest = std::max(0.0, cost(kind) - ran);
+      double rest = std::max(0.0, c[kind] - ran);
       work += rest;
       longest = std::max(longest, rest);
     }
