@@ -1011,9 +1011,10 @@ int run_report(const ReportArgs& a) {
   if (shard_n == 1 && !a.no_figures) {
     try {
       run_figures(partial);
-    } catch (const std::exception&) {
+    } catch (const std::exception& e) {
       if (g_interrupted) interrupted();  // Ctrl-C reaches the script too
-      throw;
+      throw std::runtime_error(std::string(e.what()) + "\nThe finished tasks are kept; once fixed, this redoes only the report step:\n  " +
+                               resume_command(a, name));
     }
   }
   if (g_interrupted) interrupted();
