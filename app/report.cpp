@@ -9,16 +9,24 @@
 // rows to its own file and the parent sorts them into a fixed order, so the
 // output does not depend on the schedule. `--shard i/n` runs every n-th task
 // (for several machines) and writes only the raw part; `--merge` joins parts.
-// Output goes to OUT.partial and replaces OUT only when everything succeeded.
+// The most expensive kinds of task run first (a shorter tail); the time left
+// is estimated per kind of task (app/time_left.hpp).
+// Output: a new reports/run-YYYYMMDD-HHMMSS unless --name or --out says
+// otherwise. It goes to OUT.partial and replaces OUT only when everything
+// succeeded. OUT.partial holds a plan file and the workers' files, so that an
+// interrupted run (Ctrl-C, SIGTERM, kill -9) continues with `--resume`.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "app/time_left.hpp"
 #include "compare/csv.hpp"
 #include "compare/harness.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/budget.hpp"
 #include "io/scene_reader.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -37,6 +45,7 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <regex>
 #include <thread>
 
 namespace fs = std::filesystem;
@@ -46,9 +55,11 @@ namespace eccd {
 namespace {
 
 struct ReportArgs {
-  std::string name = "default";
+  std::string name;        // --name; without --name and --out: a new reports/run-YYYYMMDD-HHMMSS
   std::string out;
   bool out_given = false;  // --out given (even as '')
+  bool name_given = false;
+  bool resume = false;     // --resume
   GeneratePlan plan;
   HarnessOptions harness;
   std::string cases = "cases";
@@ -68,6 +79,7 @@ struct Task {
   std::string text, label;  // scene JSON and its file label
   std::string source;       // generated | cases
   int ix = 0, iy = 0;       // map cell
+  int dim = 2, degree = 2;  // the scene's (task_kind)
 };
 
 // The failure map (Kettner et al. 2004): a 2D scene that touches at one
@@ -160,10 +172,12 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
 
 // ---- helpers -----------------------------------------------------------------
 
-// SIGINT / SIGTERM while the workers run: the parent forwards the signal to its
-// workers, waits for them, removes NAME.partial and exits 130 (128 + SIGINT).
+// SIGINT / SIGTERM (InterruptGuard below): the parent stops its workers, keeps
+// NAME.partial if it can be resumed (a plan file and finished tasks; it prints
+// the command that resumes) or removes it, and exits 130.
 volatile sig_atomic_t g_interrupted = 0;
 void on_interrupt(int sig) { g_interrupted = sig; }
+int g_lock_fd = -1;  // PartialLock's descriptor: closed in the workers, so their own children (run_bounded) never hold it
 
 struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -261,8 +275,13 @@ void sort_map(std::vector<std::string>& lines, const std::vector<std::string>& o
   std::stable_sort(lines.begin(), lines.end(), [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
 }
 
-// A worker's file holds one task output per line: "TASK<tab>TEXT", TEXT with
-// its backslashes and line breaks escaped (a quoted CSV field may hold a line break).
+// A worker's file (NAME.partial/worker-SESSION-W.txt) holds the output of the
+// tasks it ran, one line per row: "TASK<tab>TEXT", TEXT with its backslashes
+// and line breaks escaped (a quoted CSV field may hold a line break), and after
+// the last row of a task "TASK<tab>#done<tab>MICROSECONDS". A task counts as
+// finished only with its #done line, complete with its line break: a worker
+// killed mid-write (Ctrl-C, kill -9) leaves at most an unfinished task, which
+// --resume runs again. Rows start with R, M or E, so "#done" is unambiguous.
 std::string escape_line(const std::string& s) {
   std::string o;
   for (char c : s) o += c == '\\' ? std::string("\\\\") : c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
@@ -278,67 +297,204 @@ std::string unescape_line(const std::string& s) {
   return o;
 }
 
-// The workers. Returns the output lines ("R..." rows, "M..." map cells) in task order.
-std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportArgs& a, const FailureMap* map,
-                                   const fs::path& work, std::vector<std::string>& failures) {
+struct TaskOutput {
+  std::vector<std::string> lines;  // "R..." rows, "M..." map cells, "E..." a failure
+  double seconds = 0;              // the task's wall time in its worker
+};
+struct WorkerFiles {
+  std::map<long, TaskOutput> done;  // by task number (the place in the plan)
+  int sessions = 0;                 // highest SESSION among the files
+};
+
+// Parses a worker file name "worker-SESSION-W.txt"; -1 if it is not one.
+int worker_file_session(const std::string& n) {
+  if (n.rfind("worker-", 0) != 0 || n.size() < 12 || n.substr(n.size() - 4) != ".txt") return -1;
+  std::string mid = n.substr(7, n.size() - 11);
+  auto dash = mid.find('-');
+  if (dash == std::string::npos || dash == 0 || dash + 1 == mid.size() ||
+      mid.find_first_not_of("0123456789-") != std::string::npos || mid.find('-', dash + 1) != std::string::npos || dash > 6)
+    return -1;
+  return std::stoi(mid.substr(0, dash));
+}
+
+// The finished tasks in the worker files of `work` (task numbers below `tasks`).
+WorkerFiles read_worker_files(const fs::path& work, long tasks) {
+  WorkerFiles r;
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(work, ec)) {
+    int s = worker_file_session(e.path().filename().string());
+    if (s < 0) continue;
+    r.sessions = std::max(r.sessions, s);
+    files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    long cur = -1;
+    TaskOutput pending;
+    std::size_t start = 0;
+    for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {  // a last line without '\n' is dropped
+      std::string line = text.substr(start, end - start);
+      auto tab = line.find('\t');
+      long k = -1;
+      if (tab != std::string::npos && tab > 0 && tab <= 9 && line.find_first_not_of("0123456789") == tab) k = std::stol(line.substr(0, tab));
+      if (k < 0 || k >= tasks) {  // not a line of ours: drop the task it interrupts
+        cur = -1;
+        continue;
+      }
+      std::string body = line.substr(tab + 1);
+      if (k != cur) {
+        cur = k;
+        pending = {};
+      }
+      if (body.rfind("#done\t", 0) == 0) {
+        try {
+          pending.seconds = double(std::stoll(body.substr(6))) * 1e-6;
+        } catch (const std::exception&) {
+          cur = -1;
+          continue;
+        }
+        r.done.emplace(k, std::move(pending));  // the first finished copy wins
+        pending = {};
+        cur = -1;
+      } else {
+        pending.lines.push_back(unescape_line(body));
+      }
+    }
+  }
+  return r;
+}
+
+// The kind of a task, for the time-left estimate and the schedule, and its
+// prior cost: seconds per task on 2 cores at the main job's options
+// (reports/default of 2026-11; time_us summed per scene). Only the ratios
+// matter: the estimate scales them by what it measures (app/time_left.hpp).
+std::pair<std::string, double> task_kind(const Task& t, int dim, int degree) {
+  if (t.kind == Task::MapCell) return {"map cell", 0.4};
+  if (t.source == "cases") return {"case " + std::to_string(dim) + "D", dim == 2 ? 6.0 : 0.8};
+  static const double d2[] = {0.03, 0.03, 0.14, 1.1, 3.9, 7.4, 4.7}, d3[] = {0.44, 0.44, 0.57, 0.97, 3.6, 4.3, 23.5};
+  const double* tab = dim == 2 ? d2 : d3;
+  double prior = degree <= 6 ? tab[std::max(0, degree)] : tab[6] * std::pow(2.0, degree - 6);
+  return {std::to_string(dim) + "D deg " + std::to_string(degree), prior};
+}
+
+// SIGINT / SIGTERM from the moment the output folder exists: the handler only
+// notes the signal; the parent stops its workers (run_tasks), then keeps or
+// removes NAME.partial (run_report) and exits 130.
+struct InterruptGuard {
+  struct sigaction old_int {}, old_term {};
+  InterruptGuard() {
+    g_interrupted = 0;
+    struct sigaction sa {};
+    sa.sa_handler = on_interrupt;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+  }
+  ~InterruptGuard() {
+    sigaction(SIGINT, &old_int, nullptr);
+    sigaction(SIGTERM, &old_term, nullptr);
+  }
+};
+std::string signal_name() { return g_interrupted == SIGINT ? "SIGINT" : "SIGTERM"; }
+
+std::int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Runs the tasks `todo` (numbers into `tasks`, most expensive kind first) in
+// worker processes that write session `session`'s files into `work`; `reused`
+// tasks were finished by an earlier session. Prints the progress line unless
+// --quiet. Throws Interrupted on SIGINT / SIGTERM (workers stopped) and
+// runtime_error if a worker failed.
+void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, const std::vector<std::size_t>& kind_of,
+               const std::vector<std::string>& kind_names, const std::vector<double>& prior, const WorkerFiles& reused,
+               const ReportArgs& a, const FailureMap* map, const fs::path& work, int session) {
+  TimeLeft est(prior);
+  for (const auto& [k, t] : reused.done) est.add(kind_of[std::size_t(k)], t.seconds);
+  const long n = long(todo.size()), total = long(tasks.size()), before = long(reused.done.size());
   int jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
-  jobs = std::max(1, std::min<int>(jobs, int(tasks.size())));
+  jobs = std::max(1, std::min<int>(jobs, int(std::max(n, 1L))));
+  const bool show = !quiet(), tty = isatty(2);
+  auto start = std::chrono::steady_clock::now();
+  if (n == 0) {
+    if (show) std::fprintf(stderr, "[%ld/%ld] every task was finished by the earlier run\n", before, total);
+    return;
+  }
+  // Shared memory: the counters, per worker the task it runs and since when,
+  // per scheduled task its cost (-1 until finished).
   struct Shared { std::atomic<long> next, done; };
-  void* mem = mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  struct Slot { std::atomic<long> task; std::atomic<std::int64_t> since; };
+  const std::size_t bytes = sizeof(Shared) + sizeof(Slot) * std::size_t(jobs) + sizeof(std::atomic<std::int64_t>) * std::size_t(n);
+  void* mem = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (mem == MAP_FAILED) throw std::runtime_error("mmap failed");
+  struct Unmap { void* m; std::size_t b; ~Unmap() { munmap(m, b); } } unmap{mem, bytes};
   auto* sh = new (mem) Shared{{0}, {0}};
+  auto* slots = reinterpret_cast<Slot*>(static_cast<char*>(mem) + sizeof(Shared));
+  auto* cost_ns = reinterpret_cast<std::atomic<std::int64_t>*>(reinterpret_cast<char*>(slots) + sizeof(Slot) * std::size_t(jobs));
+  for (int w = 0; w < jobs; ++w) new (&slots[w]) Slot{{-1}, {0}};
+  for (long j = 0; j < n; ++j) new (&cost_ns[j]) std::atomic<std::int64_t>(-1);
   std::fflush(nullptr);
   std::vector<pid_t> kids;
-  g_interrupted = 0;
-  struct sigaction sa {}, old_int{}, old_term{};
-  sa.sa_handler = on_interrupt;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &old_int);
-  sigaction(SIGTERM, &sa, &old_term);
-  struct Restore {
-    struct sigaction i, t;
-    ~Restore() { sigaction(SIGINT, &i, nullptr); sigaction(SIGTERM, &t, nullptr); }
-  } restore{old_int, old_term};
+  auto stop_all = [&] {
+    for (pid_t k : kids) kill(k, SIGKILL);
+    for (pid_t k : kids) waitpid(k, nullptr, 0);
+  };
   for (int w = 0; w < jobs; ++w) {
     pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid < 0) {
+      stop_all();
+      throw std::runtime_error("fork failed");
+    }
     if (pid == 0) {
       signal(SIGINT, SIG_DFL);
       signal(SIGTERM, SIG_DFL);
       prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the parent
       if (getppid() == 1) _exit(1);
+      if (g_lock_fd >= 0) ::close(g_lock_fd);
       try {
-      std::ofstream o(work / ("worker-" + std::to_string(w) + ".txt"));
-      for (long k; (k = sh->next.fetch_add(1)) < long(tasks.size());) {
-        try {
-          ScopedDeadline deadline(run_budget().time_limit_s);
-          for (const auto& l : run_task(tasks[k], a, map)) o << k << "\t" << escape_line(l) << "\n";
-        } catch (const std::exception& e) {
-          std::string msg = e.what();
-          std::replace(msg.begin(), msg.end(), '\n', ' ');
-          o << k << "\tE" << tasks[k].label << ": " << msg << "\n";
+        std::ofstream o(work / ("worker-" + std::to_string(session) + "-" + std::to_string(w) + ".txt"), std::ios::binary);
+        for (long j; (j = sh->next.fetch_add(1)) < n;) {
+          const long k = todo[std::size_t(j)];
+          const std::int64_t t0 = now_ns();
+          slots[w].since = t0;
+          slots[w].task = j;
+          std::string text;
+          try {
+            ScopedDeadline deadline(run_budget().time_limit_s);
+            for (const auto& l : run_task(tasks[std::size_t(k)], a, map)) text += std::to_string(k) + "\t" + escape_line(l) + "\n";
+          } catch (const std::exception& e) {
+            std::string msg = e.what();
+            std::replace(msg.begin(), msg.end(), '\n', ' ');
+            text = std::to_string(k) + "\tE" + escape_line(tasks[std::size_t(k)].label + ": " + msg) + "\n";
+          }
+          const std::int64_t took = now_ns() - t0;
+          text += std::to_string(k) + "\t#done\t" + std::to_string(took / 1000) + "\n";
+          o << text;
+          o.flush();
+          if (!o) _exit(1);
+          cost_ns[j] = took;
+          slots[w].task = -1;
+          sh->done.fetch_add(1);
         }
-        o.flush();
-        sh->done.fetch_add(1);
-      }
-      o.close();
-      _exit(o ? 0 : 1);
+        o.close();
+        _exit(o ? 0 : 1);
       } catch (...) {
         _exit(1);
       }
     }
     kids.push_back(pid);
   }
-  auto start = std::chrono::steady_clock::now();
-  bool tty = isatty(2);
+  std::vector<char> seen(std::size_t(n), 0);
+  std::vector<long> queued(kind_names.size(), 0);
   double last_print = -1e9;
   int running = jobs, bad = 0;
   while (running > 0) {
-    if (g_interrupted) {  // stop the workers now, then report the interruption
-      for (pid_t k : kids) kill(k, SIGKILL);
-      for (pid_t k : kids) waitpid(k, nullptr, 0);
-      munmap(mem, sizeof(Shared));
-      throw Interrupted(std::string("interrupted by ") + (g_interrupted == SIGINT ? "SIGINT" : "SIGTERM"));
+    if (g_interrupted) {  // stop the workers now; run_report keeps or removes the output
+      stop_all();
+      throw Interrupted(signal_name());
     }
     int status = 0;
     pid_t r = waitpid(-1, &status, WNOHANG);
@@ -347,41 +503,37 @@ std::vector<std::string> run_tasks(const std::vector<Task>& tasks, const ReportA
       if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) ++bad;
       continue;
     }
-    if (!g_interrupted) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
     double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    long done = sh->done.load();
-    if (el - last_print >= (tty ? 0.5 : 10.0)) {
-      last_print = el;
-      double rate = done / std::max(el, 1e-9);
-      std::string eta = done > 0 ? fmt_duration((tasks.size() - done) / rate) : "?";
-      std::fprintf(stderr, "%s[%ld/%zu] %.2f tasks/s, %s elapsed, about %s left (%d workers)%s", tty ? "\r" : "", done,
-                   tasks.size(), rate, fmt_duration(el).c_str(), eta.c_str(), jobs, tty ? "   " : "\n");
-      std::fflush(stderr);
+    if (!show || el - last_print < (tty ? 0.5 : 10.0)) continue;
+    last_print = el;
+    // Measured costs so far, the tasks not started and the running ones.
+    const long next = std::min(sh->next.load(), n);
+    for (long j = 0; j < next; ++j)
+      if (!seen[std::size_t(j)] && cost_ns[j].load() >= 0) {
+        seen[std::size_t(j)] = 1;
+        est.add(kind_of[std::size_t(todo[std::size_t(j)])], double(cost_ns[j].load()) * 1e-9);
+      }
+    std::fill(queued.begin(), queued.end(), 0);
+    for (long j = next; j < n; ++j) ++queued[kind_of[std::size_t(todo[std::size_t(j)])]];
+    std::vector<std::pair<std::size_t, double>> busy;
+    const std::int64_t now = now_ns();
+    for (int w = 0; w < jobs; ++w) {
+      long j = slots[w].task.load();
+      if (j >= 0 && j < n) busy.push_back({kind_of[std::size_t(todo[std::size_t(j)])], double(now - slots[w].since.load()) * 1e-9});
     }
+    std::optional<double> left = est.wall(queued, busy, jobs);
+    std::fprintf(stderr, "%s[%ld/%ld] %s elapsed, %s (%d worker%s)%s", tty ? "\r" : "", before + sh->done.load(), total,
+                 fmt_duration(el).c_str(), left ? ("about " + fmt_duration(*left) + " left").c_str() : "time left not known yet",
+                 jobs, jobs == 1 ? "" : "s", tty ? "   " : "\n");
+    std::fflush(stderr);
   }
-  double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::fprintf(stderr, "%s[%ld/%zu] done in %s\n", tty ? "\r" : "", sh->done.load(), tasks.size(), fmt_duration(el).c_str());
-  long finished = sh->done.load();
-  munmap(mem, sizeof(Shared));
-  if (bad || finished != long(tasks.size())) throw std::runtime_error("a worker process failed (" + std::to_string(bad) + " of " + std::to_string(jobs) + ")");
-  std::vector<std::pair<long, std::string>> all;
-  for (int w = 0; w < jobs; ++w) {
-    std::ifstream in(work / ("worker-" + std::to_string(w) + ".txt"));
-    std::string line;
-    long order = 0;
-    while (std::getline(in, line)) {
-      auto tab = line.find('\t');
-      all.push_back({std::stol(line.substr(0, tab)) * 100000 + order++, unescape_line(line.substr(tab + 1))});
-    }
-    fs::remove(work / ("worker-" + std::to_string(w) + ".txt"));
-  }
-  std::stable_sort(all.begin(), all.end(), [](auto& x, auto& y) { return x.first / 100000 < y.first / 100000; });
-  std::vector<std::string> lines;
-  for (auto& [k, l] : all) {
-    if (l[0] == 'E') failures.push_back(l.substr(1));
-    else lines.push_back(l);
-  }
-  return lines;
+  const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const long finished = sh->done.load();
+  if (show) std::fprintf(stderr, "%s[%ld/%ld] done in %s\n", tty ? "\r" : "", before + finished, total, fmt_duration(el).c_str());
+  if (bad || finished != n)
+    throw std::runtime_error("a worker process failed (" + std::to_string(bad) + " of " + std::to_string(jobs) + "); the finished tasks are kept in " +
+                             work.string() + " for --resume");
 }
 
 // Runs report_figures.py on DIR. Its stderr is passed on and kept: on failure
@@ -397,7 +549,7 @@ void run_figures(const fs::path& dir) {
   if (FILE* p = popen((cmd + " 3>&1 1>&2 2>&3").c_str(), "r")) {  // the script's stderr into the pipe, its stdout to ours
     char buf[4096];
     while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) {
-      std::fwrite(buf, 1, n, stderr);
+      if (!quiet()) std::fwrite(buf, 1, n, stderr);
       err.append(buf, n);
     }
     rc = pclose(p);
@@ -436,14 +588,44 @@ bool looks_like_old_report(const fs::path& dir) {
   return !ec;
 }
 
-// Where the output goes, validated before anything is touched.
-fs::path output_folder(const ReportArgs& a, const std::string& name) {
+// Where the output goes, validated before anything is touched: --out PATH;
+// reports/NAME with --name (SUFFIX appended: a shard's part); without either a
+// new folder reports/run-YYYYMMDD-HHMMSS (UTC, "-2", "-3" ... if taken), so a
+// run never replaces an earlier one, and only an explicit --name default
+// refreshes the checked-in example; under --resume without either, the newest
+// reports/run-*SUFFIX.partial. `name` is set to the report's name.
+fs::path output_folder(const ReportArgs& a, const std::string& suffix, std::string& name) {
   if (a.out_given) {
     check_output_path("--out", a.out);
+    name = a.name_given ? a.name : fs::path(a.out).lexically_normal().filename().string();
     return fs::path(a.out);
   }
-  check_output_name("--name", a.name);
-  return fs::path("reports") / name;
+  if (a.name_given) {
+    check_output_name("--name", a.name);
+    name = a.name;
+    return fs::path("reports") / (a.name + suffix);
+  }
+  std::error_code ec;
+  if (a.resume) {
+    const std::regex run("run-[0-9]{8}-[0-9]{6}(-[0-9]+)?" + suffix + "\\.partial");
+    std::string newest;
+    for (const auto& e : fs::directory_iterator("reports", ec)) {
+      std::string n = e.path().filename().string();
+      if (std::regex_match(n, run) && e.is_directory() && n > newest) newest = n;
+    }
+    if (newest.empty())
+      throw std::invalid_argument("--resume: nothing to resume: no reports/run-*" + suffix +
+                                  ".partial folder (an interrupted run keeps one; give --name or --out to resume another)");
+    name = newest.substr(0, newest.size() - suffix.size() - 8);
+    return fs::path("reports") / (name + suffix);
+  }
+  std::time_t t = std::time(nullptr);
+  char b[32];
+  std::strftime(b, sizeof b, "run-%Y%m%d-%H%M%S", std::gmtime(&t));
+  name = b;
+  for (int k = 2; fs::exists(fs::path("reports") / (name + suffix), ec) || fs::exists(fs::path("reports") / (name + suffix + ".partial"), ec); ++k)
+    name = std::string(b) + "-" + std::to_string(k);
+  return fs::path("reports") / (name + suffix);
 }
 
 // Makes a fresh NAME.partial (a leftover one of ours is removed), marked as ours.
@@ -473,6 +655,165 @@ nlohmann::json fcl_meta(const HarnessOptions& h, const std::vector<std::string>&
   for (const auto& [label, n] : fcl_skipped(labels, rows)) j["skipped"][label] = n;
   j["skipped_note"] = "scenes whose motions FCL's translation motion (CCDM_TRANS) cannot express: no fcl/ccd row";
   return j;
+}
+
+// ---- resuming ----------------------------------------------------------------
+
+// NAME.partial/plan.json: what decides a run's results, written before the
+// first task runs, so that --resume can tell whether the finished tasks in the
+// worker files belong to the run it is asked for. "options" are compared key
+// by key (the first difference is named); "tasks_digest" (FNV-1a over every
+// task's kind, label, source and scene text) catches a changed --cases or
+// --scenes folder. Options that do not change a result (--jobs, --name, --out,
+// --no-figures, --quiet) are not in it.
+const char* const kPlanFile = "plan.json";
+
+nlohmann::ordered_json report_plan(const ReportArgs& a, const std::vector<Task>& mine, const std::string& shard, const std::string& started) {
+  nlohmann::ordered_json o;
+  o["seed"] = a.plan.seed;
+  o["dims"] = a.plan.dims;
+  o["degrees"] = a.plan.degrees;
+  o["families"] = a.plan.families;
+  o["motions"] = a.plan.motions;
+  o["separations"] = a.plan.d_exponents;
+  o["overlap_depths"] = a.plan.depth_exponents;
+  o["digits"] = a.plan.digits;
+  o["count_per_combination"] = a.plan.count;
+  o["mpfr_bits"] = a.harness.mpfr_bits;
+  o["inputs"] = a.harness.inputs;
+  o["budget_seconds"] = a.harness.budget_s;
+  o["exact_budget_seconds"] = a.harness.exact_budget_s;
+  o["time_limit_seconds"] = run_budget().time_limit_s;
+  o["grid"] = a.harness.grid;
+  o["map_size"] = a.no_map ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.map_size);
+  o["cases"] = a.cases;
+  o["scenes"] = a.scenes;
+  o["shard"] = shard;
+  std::vector<std::string> labels;
+  for (int dim : {2, 3})
+    for (const auto& p : harness_pipelines(dim, a.harness)) labels.push_back(std::to_string(dim) + "D " + p.label);
+  o["pipelines"] = labels;
+  nlohmann::ordered_json ext = nlohmann::ordered_json::array();
+  for (const auto& e : a.harness.externals) ext.push_back(e.name + "=" + e.dir);
+  o["externals"] = ext;
+  std::uint64_t h = 14695981039346656037ull;
+  auto mix = [&h](const std::string& s) {
+    for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xffu) * 1099511628211ull;  // a separator no text byte sequence can fake across fields
+  };
+  for (const auto& t : mine) {
+    mix(t.kind == Task::MapCell ? "map" : "scene");
+    mix(t.label);
+    mix(t.source);
+    mix(t.text);
+  }
+  for (const auto& e : a.harness.externals) {  // --external: the answer files are part of what the rows say
+    std::vector<fs::path> files;
+    std::error_code ec;
+    for (const auto& f : fs::directory_iterator(e.dir, ec))
+      if (f.path().extension() == ".json") files.push_back(f.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+      mix(f.filename().string());
+      std::ifstream in(f, std::ios::binary);
+      std::stringstream bytes;
+      bytes << in.rdbuf();
+      mix(bytes.str());
+    }
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  nlohmann::ordered_json p;
+  stamp_format(p, "eccd-report-plan/1");
+  p["revision"] = program_revision();
+  p["command"] = command_line();
+  p["started"] = started;
+  p["options"] = o;
+  p["tasks"] = mine.size();
+  p["tasks_digest"] = hex;
+  return p;
+}
+
+// --resume: PARTIAL must be ours, hold a plan file equal to `plan` (the one
+// this run would write), and is then reused; throws std::invalid_argument
+// (exit 2) with the reason otherwise. Returns the finished tasks.
+WorkerFiles check_resume(const fs::path& partial, const nlohmann::ordered_json& plan) {
+  const std::string p = partial.string();
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(partial, ec)))
+    throw std::invalid_argument("--resume: nothing to resume: " + p + " does not exist (an interrupted eccd report keeps it; "
+                                "a finished or never started one has none)");
+  if (fs::is_symlink(partial, ec) || !fs::is_directory(partial, ec) || !has_marker(partial, kMarker))
+    throw std::invalid_argument("--resume: " + p + " was not written by eccd report (no " + kMarker + " marker): refusing to use it");
+  if (!fs::is_regular_file(partial / kPlanFile, ec))
+    throw std::invalid_argument("--resume: " + p + " cannot be resumed: it has no " + kPlanFile +
+                                " (written by --merge or by an eccd without --resume); run without --resume to start afresh");
+  nlohmann::ordered_json old;
+  try {
+    old = nlohmann::ordered_json::parse(read_file_bytes((partial / kPlanFile).string()));
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("--resume: " + (partial / kPlanFile).string() + ": unreadable (" + e.what() + "); run without --resume to start afresh");
+  }
+  const std::string again = "; resuming would mix two different runs: give the same options, or run without --resume to start afresh";
+  if (!old.is_object() || old.value("format", "") != plan["format"])
+    throw std::invalid_argument("--resume: " + (partial / kPlanFile).string() + ": not a plan of this eccd (format " +
+                                (old.is_object() && old.contains("format") ? old["format"].dump() : std::string("missing")) + ")" + again);
+  auto shown = [](const nlohmann::ordered_json& j) {
+    std::string s = j.dump();
+    return s.size() > 120 ? s.substr(0, 120) + "..." : s;
+  };
+  const auto& oo = old["options"];
+  for (const auto& [k, v] : plan["options"].items())
+    if (!oo.is_object() || !oo.contains(k) || oo[k] != v)
+      throw std::invalid_argument("--resume: " + p + " was started with a different " + k + " (" +
+                                  (oo.is_object() && oo.contains(k) ? shown(oo[k]) : std::string("not recorded")) + "; this run: " + shown(v) + ")" + again);
+  if (old["revision"] != plan["revision"])
+    throw std::invalid_argument("--resume: " + p + " was started by another build of eccd (git " + shown(old["revision"]) + "; this one: " +
+                                shown(plan["revision"]) + ")" + again);
+  if (old["tasks"] != plan["tasks"] || old["tasks_digest"] != plan["tasks_digest"])
+    throw std::invalid_argument("--resume: " + p + " was started on other scenes (" + shown(old["tasks"]) + " task(s), digest " +
+                                shown(old["tasks_digest"]) + "; this run: " + shown(plan["tasks"]) + ", " + shown(plan["tasks_digest"]) +
+                                "; did the files under --cases or --scenes change?)" + again);
+  return read_worker_files(partial, plan["tasks"].get<long>());
+}
+
+// A running report holds an exclusive flock on its NAME.partial/plan.json
+// (released by the kernel however the process ends, kill -9 included), so
+// that neither --resume nor a fresh run of the same name touches the folder
+// of a run still in progress.
+struct PartialLock {
+  int fd = -1;
+  PartialLock() = default;
+  PartialLock(const PartialLock&) = delete;
+  PartialLock& operator=(const PartialLock&) = delete;
+  ~PartialLock() {
+    if (fd >= 0) ::close(fd);
+    g_lock_fd = -1;
+  }
+  // Takes the lock on `partial`'s plan file; false if another process holds it
+  // (a missing file is not locked: true).
+  bool take(const fs::path& partial) {
+    if (fd >= 0) ::close(fd);
+    g_lock_fd = fd = ::open((partial / kPlanFile).c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return true;
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0) return true;
+    ::close(fd);
+    g_lock_fd = fd = -1;
+    return false;
+  }
+};
+void refuse_busy(const fs::path& partial) {
+  throw std::invalid_argument(partial.string() + ": in use by an eccd report still running (it holds " + kPlanFile +
+                              "); wait for it or stop it first");
+}
+
+// The command that resumes this run: the command line, with --name NAME when
+// the name was chosen by the run, and --resume.
+std::string resume_command(const ReportArgs& a, const std::string& name) {
+  std::string c = command_line();
+  if (!a.out_given && !a.name_given) c += " --name " + name;
+  if (!a.resume) c += " --resume";
+  return c;
 }
 
 // ---- the two modes -----------------------------------------------------------
@@ -513,7 +854,8 @@ int run_report(const ReportArgs& a) {
     if (shard_n < 1 || shard_i < 0 || shard_i >= shard_n) throw std::invalid_argument("--shard " + a.shard + ": expected i/n with 0 <= i < n");
   }
   if (a.scenes.empty()) check_plan(a.plan);
-  fs::path out = output_folder(a, shard_n > 1 ? a.name + "-shard-" + std::to_string(shard_i) + "-of-" + std::to_string(shard_n) : a.name);
+  std::string name;
+  fs::path out = output_folder(a, shard_n > 1 ? "-shard-" + std::to_string(shard_i) + "-of-" + std::to_string(shard_n) : "", name);
   fs::path partial = out;
   partial += ".partial";
   check_replaceable(out, kMarker, looks_like_old_report);  // before any work: never replace what is not ours
@@ -526,6 +868,8 @@ int run_report(const ReportArgs& a) {
     for (const auto& sp : plan_scenes(a.plan)) {
       GeneratedScene g = generate_scene(sp);
       tasks.push_back({Task::SceneTask, g.doc.dump(), g.name, "generated"});
+      tasks.back().dim = sp.dim;
+      tasks.back().degree = sp.degree;
       ++generated;
     }
   }
@@ -544,13 +888,15 @@ int run_report(const ReportArgs& a) {
         continue;
       }
       if (scene_degree(s) < 0) {
-        std::fprintf(stderr, "eccd report: %s: skipped (cycloidal motion: no exact ground truth)\n", f.string().c_str());
+        if (!quiet()) std::fprintf(stderr, "eccd report: %s: skipped (cycloidal motion: no exact ground truth)\n", f.string().c_str());
         continue;
       }
       tasks.push_back({Task::SceneTask, text, f.string(), source});
+      tasks.back().dim = s.dim;
+      tasks.back().degree = scene_degree(s);
       source == "cases" ? ++from_cases : ++generated;
     }
-    if (corpus)
+    if (corpus && !quiet())
       std::fprintf(stderr, "eccd report: %s: %zu generated corpus scene(s) left out (the report generates its own; "
                            "--scenes %s/generated includes them)\n", dir.c_str(), corpus, dir.c_str());
   };
@@ -570,20 +916,86 @@ int run_report(const ReportArgs& a) {
   std::vector<Task> mine;
   for (std::size_t k = 0; k < tasks.size(); ++k)
     if (int(k % shard_n) == shard_i) mine.push_back(tasks[k]);
-  std::fprintf(stderr, "eccd report: %zu generated scene(s), %zu case(s), %d failure-map cell(s)%s -> %s\n", generated, from_cases,
-               map ? a.map_size * a.map_size : 0,
-               shard_n > 1 ? (", shard " + a.shard + ": " + std::to_string(mine.size()) + " task(s)").c_str() : "",
-               out.string().c_str());
+  if (!quiet())
+    std::fprintf(stderr, "eccd report: %zu generated scene(s), %zu case(s), %d failure-map cell(s)%s -> %s\n", generated, from_cases,
+                 map ? a.map_size * a.map_size : 0,
+                 shard_n > 1 ? (", shard " + a.shard + ": " + std::to_string(mine.size()) + " task(s)").c_str() : "",
+                 out.string().c_str());
 
-  start_partial(partial, out);
-  std::vector<std::string> failures;
-  std::vector<std::string> lines;
-  try {
-    lines = run_tasks(mine, a, map ? &*map : nullptr, partial, failures);
-  } catch (const Interrupted&) {
+  // The output folder: fresh with its plan file, or (--resume) the one an
+  // interrupted run left, with the tasks it finished.
+  const nlohmann::ordered_json plan = report_plan(a, mine, shard_n > 1 ? a.shard : "", started);
+  InterruptGuard guard;
+  WorkerFiles reused;
+  PartialLock lock;
+  if (a.resume) {
+    if (!lock.take(partial)) refuse_busy(partial);
+    reused = check_resume(partial, plan);
+    if (!quiet())
+      std::fprintf(stderr, "eccd report: resuming %s: %zu of %zu task(s) finished earlier, %zu to run\n", partial.string().c_str(),
+                   reused.done.size(), mine.size(), mine.size() - reused.done.size());
+  } else {
+    std::error_code ec;
+    if (!lock.take(partial)) refuse_busy(partial);
+    if (!quiet() && fs::is_regular_file(partial / kPlanFile, ec) && has_marker(partial, kMarker))
+      if (std::size_t left = read_worker_files(partial, long(mine.size())).done.size())
+        std::fprintf(stderr, "eccd report: removing the interrupted %s (%zu task(s) finished; --resume would have reused them)\n",
+                     partial.string().c_str(), left);
+    start_partial(partial, out);
+    write_text_atomically(partial / kPlanFile, plan.dump(2) + "\n");
+    if (!lock.take(partial)) refuse_busy(partial);
+  }
+  // Interrupted: keep the folder if a later --resume can use it, else remove it.
+  auto interrupted = [&]() {
+    std::size_t finished = read_worker_files(partial, long(mine.size())).done.size();
+    std::string why = "interrupted by " + signal_name() + ": ";
+    if (finished > 0) {
+      throw Interrupted(why + std::to_string(finished) + " of " + std::to_string(mine.size()) + " task(s) finished are kept in " +
+                        partial.string() + "; resume with:\n  " + resume_command(a, name));
+    }
     std::error_code ec;
     fs::remove_all(partial, ec);
-    throw;
+    throw Interrupted(why + "workers stopped before any task finished; " + partial.string() + " removed");
+  };
+
+  // Kinds (the estimate and the schedule): the expensive kinds first, which
+  // shortens the run's tail and lets the estimate measure them early; the
+  // output order does not depend on it (rows are sorted below).
+  std::vector<std::string> kind_names;
+  std::vector<double> prior;
+  std::vector<std::size_t> kind_of;
+  for (const auto& t : mine) {
+    auto [kn, pr] = task_kind(t, t.dim, t.degree);
+    auto it = std::find(kind_names.begin(), kind_names.end(), kn);
+    if (it == kind_names.end()) {
+      kind_names.push_back(kn);
+      prior.push_back(pr);
+      it = kind_names.end() - 1;
+    }
+    kind_of.push_back(std::size_t(it - kind_names.begin()));
+  }
+  std::vector<long> todo;
+  for (long k = 0; k < long(mine.size()); ++k)
+    if (!reused.done.count(k)) todo.push_back(k);
+  std::stable_sort(todo.begin(), todo.end(), [&](long x, long y) { return prior[kind_of[std::size_t(x)]] > prior[kind_of[std::size_t(y)]]; });
+  try {
+    run_tasks(mine, todo, kind_of, kind_names, prior, reused, a, map ? &*map : nullptr, partial, reused.sessions + 1);
+  } catch (const Interrupted&) {
+    interrupted();
+  }
+  // Every task's output, in the plan's order.
+  WorkerFiles all = read_worker_files(partial, long(mine.size()));
+  std::vector<std::string> failures, lines;
+  for (long k = 0; k < long(mine.size()); ++k) {
+    auto it = all.done.find(k);
+    if (it == all.done.end())
+      throw std::runtime_error("task " + std::to_string(k) + " (" + mine[std::size_t(k)].label + ") has no output in " + partial.string() +
+                               " (a worker file was changed?); run with --resume to run it again");
+    for (auto& l : it->second.lines) {
+      if (l.empty()) continue;
+      if (l[0] == 'E') failures.push_back(l.substr(1));
+      else lines.push_back(l);
+    }
   }
   for (const auto& f : failures) std::fprintf(stderr, "eccd report: failed: %s\n", f.c_str());
 
@@ -601,7 +1013,8 @@ int run_report(const ReportArgs& a) {
   }
 
   nlohmann::json meta;
-  meta["name"] = a.name;
+  stamp_format(meta, "eccd-report-meta/1");  // "format" and "version" (the program's)
+  meta["name"] = name;
   meta["command"] = command_line();
   meta["seed"] = a.plan.seed;
   meta["mpfr_bits"] = a.harness.mpfr_bits;
@@ -626,7 +1039,7 @@ int run_report(const ReportArgs& a) {
   meta["machine"] = machine_info();
   std::string ver = read_command_output("git -C " + shell_quote(fs::path(plots_dir()).parent_path().parent_path().string()) +
                                         " describe --always --dirty 2>/dev/null");
-  meta["version"] = ver.empty() ? "unknown" : ver;
+  meta["revision"] = ver.empty() ? program_revision() : ver;  // git describe of the source tree
   meta["started"] = started;
   meta["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   meta["shards"] = shard_n;
@@ -640,6 +1053,7 @@ int run_report(const ReportArgs& a) {
     for (const auto& e : a.harness.externals) ext.push_back({{"name", e.name}, {"dir", e.dir}});
     meta["externals"] = externals_meta(ext, rows);
   }
+  meta["resumed_tasks"] = reused.done.size();  // finished by an interrupted run and reused (--resume)
   if (map) {
     meta["failure_map"] = {{"scene", map->scene},
                            {"x_input", "constant coefficient of B's x-translation entry m[0][2] (nearest double " + std::to_string(map->x0) + ")"},
@@ -653,10 +1067,25 @@ int run_report(const ReportArgs& a) {
     meta["failure_map"] = nullptr;
   }
   write_file(partial / "meta.json", meta.dump(2) + "\n");
-  if (shard_n == 1 && !a.no_figures) run_figures(partial);
+  if (g_interrupted) interrupted();
+  if (shard_n == 1 && !a.no_figures) {
+    try {
+      run_figures(partial);
+    } catch (const std::exception& e) {
+      if (g_interrupted) interrupted();  // Ctrl-C reaches the script too
+      throw std::runtime_error(std::string(e.what()) + "\nThe finished tasks are kept; once fixed, this redoes only the report step:\n  " +
+                               resume_command(a, name));
+    }
+  }
+  if (g_interrupted) interrupted();
+  // The worker files and the plan are the resumable state, not part of the report.
+  for (const auto& e : fs::directory_iterator(partial))
+    if (worker_file_session(e.path().filename().string()) >= 0) fs::remove(e.path());
+  fs::remove(partial / kPlanFile);
   finish_output(partial, out);
-  std::fprintf(stderr, "eccd report: wrote %s%s\n", out.string().c_str(),
-               shard_n > 1 ? " (a shard: join the parts with eccd report --merge)" : "");
+  if (!quiet())
+    std::fprintf(stderr, "eccd report: wrote %s%s\n", out.string().c_str(),
+                 shard_n > 1 ? " (a shard: join the parts with eccd report --merge)" : "");
   std::cout << (out / (shard_n == 1 && !a.no_figures ? "report.md" : "results.csv")).string() << "\n";
   return failures.empty() ? 0 : 1;
 }
@@ -713,7 +1142,9 @@ std::vector<std::string> csv_rows(const std::string& text, const std::string& he
 
 int run_merge(const ReportArgs& a) {
   if (a.merge.size() < 1) throw std::invalid_argument("--merge needs the part folders");
-  fs::path out = output_folder(a, a.name);
+  if (a.resume) throw std::invalid_argument("--resume: not with --merge (a merge only joins finished parts: run it again)");
+  std::string name;
+  fs::path out = output_folder(a, "", name);
   fs::path partial = out;
   partial += ".partial";
   check_replaceable(out, kMarker, looks_like_old_report);
@@ -790,6 +1221,12 @@ int run_merge(const ReportArgs& a) {
         throw std::invalid_argument("--merge: failure_map.csv row \"" + c.substr(0, 80) + "\": ix and iy must be small non-negative integers");
   }
   sort_results(rows);
+  InterruptGuard guard;  // a merge is quick and not resumable: interrupted, its partial output is removed
+  auto interrupted = [&]() {
+    std::error_code ec;
+    fs::remove_all(partial, ec);
+    throw Interrupted("interrupted by " + signal_name() + ": " + partial.string() + " removed (run the merge again)");
+  };
   start_partial(partial, out);
   std::string csv = header + "\n";
   for (auto& r : rows) csv += r + "\n";
@@ -800,7 +1237,8 @@ int run_merge(const ReportArgs& a) {
     for (auto& c : cells) m += c + "\n";
     write_file(partial / "failure_map.csv", m);
   }
-  meta["name"] = a.name;
+  stamp_format(meta, "eccd-report-meta/1");
+  meta["name"] = name;
   meta["command"] = meta["command"].get<std::string>() + "  (parts joined by: " + command_line() + ")";
   meta["wall_seconds"] = wall;
   meta["shard"] = nullptr;
@@ -812,9 +1250,17 @@ int run_merge(const ReportArgs& a) {
     for (const auto& [label, n] : fcl_skipped(meta["pipelines"].get<std::vector<std::string>>(), rows)) meta["fcl"]["skipped"][label] = n;
   }
   write_file(partial / "meta.json", meta.dump(2) + "\n");
-  if (!a.no_figures) run_figures(partial);
+  if (!a.no_figures) {
+    try {
+      run_figures(partial);
+    } catch (const std::exception&) {
+      if (g_interrupted) interrupted();
+      throw;
+    }
+  }
+  if (g_interrupted) interrupted();
   finish_output(partial, out);
-  std::fprintf(stderr, "eccd report: joined %zu part(s) into %s\n", a.merge.size(), out.string().c_str());
+  if (!quiet()) std::fprintf(stderr, "eccd report: joined %zu part(s) into %s\n", a.merge.size(), out.string().c_str());
   std::cout << (out / (a.no_figures ? "results.csv" : "report.md")).string() << "\n";
   return 0;
 }
@@ -839,11 +1285,14 @@ Command add_report_command(CLI::App& app) {
       "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and in "
       "power form (double), the sampling and marching baselines), each floating one per input mode (--input) and under a "
       "time budget (--budget), against the exact pipeline, and write "
-      "reports/NAME/: report.md, results.csv, failure_map.csv, meta.json and PNG figures.");
+      "a new folder reports/run-YYYYMMDD-HHMMSS/ (or reports/NAME/ with --name, --out PATH): report.md, results.csv, "
+      "failure_map.csv, meta.json and PNG figures. Progress and time left go to stderr (--quiet: none); Ctrl-C keeps "
+      "the finished tasks for --resume.");
   auto* s = c.sub;
-  s->add_option("--name", a->name,
+  auto* name_opt = s->add_option("--name", a->name,
                 "Report name: the output goes to reports/NAME (a plain name: no '/', no '..'; an existing reports/NAME is "
-                "replaced only if an earlier eccd report wrote it)")->capture_default_str();
+                "replaced only if an earlier eccd report wrote it). Without --name and --out every run writes a new folder "
+                "reports/run-YYYYMMDD-HHMMSS (UTC start time); --name default refreshes the checked-in example reports/default");
   auto* out_opt = s->add_option("--out", a->out,
                                 "Output folder instead of reports/NAME (replaced only when the run succeeds, and only if an "
                                 "earlier eccd report wrote it); no '..'");
@@ -890,8 +1339,13 @@ Command add_report_command(CLI::App& app) {
     if (fcl_opt->count() && !fcl_availability().available) warn("report", "--fcl-samples is ignored: " + fcl_availability().reason);
     else if (fcl_opt->count() && !a->harness.fcl) warn("report", "--fcl-samples is ignored: --no-fcl");
   });
-  c.run = [a, out_opt]() {
+  s->add_flag("--resume", a->resume,
+              "Continue an interrupted run (Ctrl-C, SIGTERM, a crash): reuse the tasks it finished in its NAME.partial folder "
+              "and run the rest. Give the same options (and --name/--out; without them the newest reports/run-*.partial); "
+              "a folder of another plan (seed, options, scenes, build) is refused with exit 2");
+  c.run = [a, out_opt, name_opt]() {
     a->out_given = out_opt->count() > 0;
+    a->name_given = name_opt->count() > 0;
     for (const auto& spec : a->externals) {  // checked before any work: a bad spec is exit 2
       ExternalEngine e = parse_external(spec);
       for (const auto& other : a->harness.externals)
@@ -901,7 +1355,7 @@ Command add_report_command(CLI::App& app) {
     try {
       return a->merge.empty() ? run_report(*a) : run_merge(*a);
     } catch (const Interrupted& e) {
-      std::fprintf(stderr, "eccd report: %s: workers stopped, the unfinished output removed\n", e.what());
+      std::fprintf(stderr, "\neccd report: %s\n", e.what());
       return 130;
     }
   };
