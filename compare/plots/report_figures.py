@@ -1137,7 +1137,8 @@ def section_what_was_run(data):
                  f"under {fmt_seconds(m.get('exact_budget_seconds', 0))} (kernel/budget.hpp; a time-out is undecided)")
     out.append(line)
     out.append(f"- Machine: {machine or 'not recorded'}")
-    out.append(f"- Version: {m['version']}")
+    rev = m.get("revision")
+    out.append(f"- Version: {m['version']}" + (f" (git {rev})" if rev and rev != m["version"] else ""))
     out.append(f"- Started: {m['started']}")
     out.append(f"- Wall time: {fmt_seconds(m['wall_seconds'])} in {m['shards']} shard{'s' if m['shards'] != 1 else ''}")
     sc = f"- Scenes: {nscenes} in results.csv, {len(data.rows)} rows"
