@@ -1586,17 +1586,24 @@ def coef_medians(data, dim, p, deg=None):
             median(r["delta_err"] for r in rs))
 
 
+def power_bernstein_pair(data, dim):
+    """(the power-form double pipeline, its Bernstein-form counterpart) of a dimension, or None."""
+    cmp = bernstein_comparison(data, dim)
+    if not cmp:
+        return None
+    ref = cmp["ref"]
+    bern = next((p for p in cmp["pipes"] if p != ref and data.pinfo[p][2] == "bernstein"), None)
+    return None if bern is None else (ref, bern)
+
+
 def coef_summary(data):
     """One computed paragraph: own-basis vs common-basis medians of the power and Bernstein double pipelines."""
     parts = []
     for dim in data.dims:
-        cmp = bernstein_comparison(data, dim)
-        if not cmp:
+        pair = power_bernstein_pair(data, dim)
+        if pair is None:
             continue
-        ref = cmp["ref"]
-        bern = next((p for p in cmp["pipes"] if p != ref and data.pinfo[p][2] == "bernstein"), None)
-        if bern is None:
-            continue
+        ref, bern = pair
         po, pc, pd = coef_medians(data, dim, ref)
         bo, bc, bd = coef_medians(data, dim, bern)
         if po is None or bo is None:
@@ -1769,13 +1776,10 @@ def coef_explanation(data):
     """Computed sentences on the apparent contradiction between coefficient and Δ errors (power vs Bernstein)."""
     out = []
     for dim in data.dims:
-        cmp = bernstein_comparison(data, dim)
-        if not cmp:
+        pair = power_bernstein_pair(data, dim)
+        if pair is None:
             continue
-        ref = cmp["ref"]
-        bern = next((p for p in cmp["pipes"] if p != ref and data.pinfo[p][2] == "bernstein"), None)
-        if bern is None:
-            continue
+        ref, bern = pair
         po, pc, pd = coef_medians(data, dim, ref)
         bo, bc, bd = coef_medians(data, dim, bern)
         if None in (po, bo):
