@@ -349,7 +349,7 @@ TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes on
   }
 }
 
-TEST_CASE("eccd report without --name writes a new folder and leaves reports/default alone; --quiet prints no progress",
+TEST_CASE("eccd report without --name writes a new folder and leaves reports/default alone, and --quiet prints no progress",
           "[cli][report][folders]") {
   eccd::clitest::TempDir t;
   fs::create_directories(t.path / "reports" / "default");
