@@ -1381,6 +1381,7 @@ def section_verdict(data, minbits):
            f"*undecided* answer is honest and counted as the share it does not decide. *Double* means the "
            f"error-bounded double pipelines: 2D power / Bernstein / scaled-Bernstein (CD-DISC), 3D Bézier (both "
            f"setups); input mode *{mode}* unless said. Each point names the table below that backs it.", ""]
+    out += headline(data) + [""]
     # 1. where some pipeline is confidently wrong
     wrong = [r for r in allr if r["outcome"] in WRONG]
     if wrong:
@@ -1553,6 +1554,36 @@ def section_verdict(data, minbits):
     out.append("- **Other engines**: " + engines_summary(data) + " " + see(T_ENGINES))
     out.append("")
     return out
+
+
+def headline(data):
+    """The verdict in one line per dimension (computed; the bullets below give the detail): is double ever confidently
+    wrong, how much it leaves undecided, the best double form against power form, and which engines were wrong."""
+    out = []
+    for dim in data.dims:
+        dr = [r for r in data.rows if r["dim"] == dim and is_decision(r)]
+        if not dr:
+            continue
+        w = count(dr, *WRONG)
+        tr = [r for r in dr if r["family"] in ISOLATED_CONTACT]
+        touch = f"; {count(tr, 'undecided', 'error')} of them on the {len(tr)} touch and graze runs" if tr else ""
+        text = (f"**{dim}D:** double {'was never confidently wrong' if not w else f'was confidently wrong {w} times'} "
+                f"({len(dr)} runs, input *{data.primary_input}*) and left {share(count(dr, 'undecided', 'error'), len(dr))} "
+                f"undecided, which it says itself{touch}")
+        cmp = bernstein_comparison(data, dim)
+        if cmp:
+            best = min((p for p in cmp["pipes"] if p != cmp["ref"]), key=lambda p: cmp["pipes"][p]["und"], default=None)
+            if best is not None:
+                b, r0 = cmp["pipes"][best], cmp["pipes"][cmp["ref"]]
+                t = f" at ×{fmt_ratio(b['ratio'])} its time" if b["ratio"] is not None else ""
+                text += (f"; {best} leaves {share(b['und'], b['n'])} undecided against {share(r0['und'], r0['n'])} "
+                         f"for {cmp['ref']}{t}")
+        bad = sorted({base_label(r["pipeline"]) for r in data.all_rows
+                      if r["dim"] == dim and r["outcome"] in WRONG and not is_decision(r) and r["arith"] != "exact"})
+        if bad:
+            text += f"; confidently wrong here: {', '.join(bad)}"
+        out.append(f"- {text}. " + see(T_TRUST))
+    return (["**In short.**", ""] + out) if out else []
 
 
 def bernstein_comparison(data, dim):
