@@ -30,7 +30,7 @@ mpq_class decimal(std::string x) {
   std::size_t dot = x.find('.');
   std::string digits = dot == std::string::npos ? x : x.substr(0, dot) + x.substr(dot + 1);
   std::size_t scale = dot == std::string::npos ? 0 : x.size() - dot - 1;
-  mpq_class q(mpz_class(digits), mpz_class(1) << 0);
+  mpq_class q{mpz_class(digits, 10)};
   mpz_class ten;
   mpz_ui_pow_ui(ten.get_mpz_t(), 10, scale);
   q /= ten;
