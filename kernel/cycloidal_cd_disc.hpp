@@ -227,12 +227,11 @@ PipelineResult<T> cycloidal_cd_disc(const CycloidalPair<T>& pair, const T& like,
   });
   for (auto& c : crit) {
     if (c.simple) continue;
-    char buf[320];
-    std::snprintf(buf, sizeof buf,
-                  "Δ has no proved sign on [%.17g, %.17g] (|Δ| <= %.3g there): a touch or near miss within that bound, "
-                  "or close roots; nothing is claimed there",
-                  mpq_class(c.lo).get_d(), mpq_class(c.hi).get_d(), c.eps);
-    res.undecided_reasons.push_back(buf);
+    char eps[32];
+    std::snprintf(eps, sizeof eps, "%.3g", c.eps);
+    res.undecided_reasons.push_back("Δ has no proved sign on [" + decimal_string(c.lo, 25) + ", " + decimal_string(c.hi, 25) +
+                                    "] (|Δ| <= " + eps + " there): a touch or near miss within that bound, or close roots; "
+                                    "nothing is claimed there");
   }
   if (iso.work_bound_hit()) res.undecided_reasons.push_back("cycloidal root isolation: work bound reached (cells)");
   if (!ans.undecided.empty() && res.undecided_reasons.empty())
