@@ -170,7 +170,7 @@ Command add_regress_command(CLI::App& app) {
             row["escalation_reason"] = r["escalation_reason"];
             how = "  (decided in " + sol.decided_in + "; escalated: " + r["escalation_reason"].get<std::string>() + ")";
           } else {
-            how = "  (decided in interval arithmetic)";
+            how = sol.decided_in == "interval" ? "  (decided in interval arithmetic)" : "  (decided in " + sol.decided_in + ")";
           }
         }
         const Answer& got = sol.answer;

@@ -3,6 +3,7 @@
 // brackets are proved and contain the paper's values as printed, and a true
 // double root (a touch) is never claimed: it is undecided with its bound.
 #include "api/solve.hpp"
+#include "api/static_test.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/cycloidal_motion.hpp"
 
@@ -139,5 +140,16 @@ TEST_CASE("cycloidal: exact arithmetic refuses, pointing to what solves it", "[c
     FAIL("exact arithmetic solved a cycloidal scene");
   } catch (const std::invalid_argument& e) {
     CHECK(std::string(e.what()).find("double, mpfr:BITS or certified") != std::string::npos);
+  }
+}
+
+TEST_CASE("cycloidal: status_at agrees with the cells of 003 Example 1 in double, mpfr:128 and certified", "[cycloidal][api]") {
+  const Scene s = read_scene(kExample1);
+  for (Arithmetic a : {Arithmetic::double_precision(), Arithmetic::mpfr(128), Arithmetic::certified()}) {
+    INFO(a.name());
+    CHECK(status_at(s, mpq_class(1, 10), a) == Status::separate);
+    CHECK(status_at(s, mpq_class(3, 10), a) == Status::overlapping);
+    CHECK(status_at(s, mpq_class(1, 2), a) == Status::overlapping);
+    CHECK(status_at(s, mpq_class(9, 10), a) == Status::separate);
   }
 }
