@@ -82,7 +82,12 @@ class CycloidalIsolator {
   std::vector<CycloidalCritical> run() {
     std::vector<CycloidalCritical> out;
     const int grid = 64;
-    for (int k = 0; k < grid; ++k) visit(mpq_class(k, grid), mpq_class(k + 1, grid), 6, out);
+    for (int k = 0; k < grid; ++k) {
+      mpq_class a(k, grid), b(k + 1, grid);
+      a.canonicalize();  // (gmpxx does not: 0/64 would not compare equal to 0)
+      b.canonicalize();
+      visit(a, b, 6, out);
+    }
     // merge touching undecided stretches; try to prove a simple root on the merged stretch
     std::vector<CycloidalCritical> merged;
     for (auto& c : out) {
@@ -187,20 +192,23 @@ PipelineResult<T> cycloidal_cd_disc(const CycloidalPair<T>& pair, const T& like,
   std::vector<TimelineNode> seq;
   std::vector<const CycloidalCritical*> node_crit;
   auto push = [&](TimelineNode n, const CycloidalCritical* c) { seq.push_back(n); node_crit.push_back(c); };
-  // An undecided stretch that reaches 0 or 1 makes that end undecided.
-  const CycloidalCritical* c0 = (!crit.empty() && crit.front().lo == zero) ? &crit.front() : nullptr;
-  const CycloidalCritical* c1 = (!crit.empty() && crit.back().hi == one) ? &crit.back() : nullptr;
+  // An undecided stretch that reaches 0 or 1 makes that end undecided. (A
+  // simple root's bracket may start at 0 or end at 1, but Δ's sign there is
+  // proved non-zero, so the root is interior.)
+  const CycloidalCritical* c0 = (!crit.empty() && !crit.front().simple && crit.front().lo == zero) ? &crit.front() : nullptr;
+  const CycloidalCritical* c1 = (!crit.empty() && !crit.back().simple && crit.back().hi == one) ? &crit.back() : nullptr;
   auto end_status = [&](const mpq_class& t, const CycloidalCritical* c) {
-    return c ? (c->simple ? root_status(*c) : Status::uncertain) : status_at(point(t));
+    return c ? Status::uncertain : status_at(point(t));
   };
   push({instant_of(zero, zero), end_status(zero, c0), false}, c0);
   std::vector<const CycloidalCritical*> interior;
-  for (auto& c : crit) if (&c != c0 && &c != c1) interior.push_back(&c);
+  for (auto& c : crit) if (&c != c0 && &c != c1) interior.push_back(&c);  // c0 == c1 is possible (all of [0, 1])
   for (std::size_t i = 0; i <= interior.size(); ++i) {
     mpq_class a = i ? interior[i - 1]->hi : (c0 ? c0->hi : zero);
     mpq_class b = i < interior.size() ? interior[i]->lo : (c1 ? c1->lo : one);
     mpq_class s = (a + b) / 2;
-    Status cs = status_at(point(s));
+    // (a >= b only when one undecided stretch covers [0, 1]: nothing is known in between)
+    Status cs = a < b ? status_at(point(s)) : Status::uncertain;
     push({instant_of(s, s), cs, true}, nullptr);
     res.cells.push_back({instant_of(s, s), cs});
     if (i < interior.size()) push({instant_of(interior[i]->lo, interior[i]->hi), root_status(*interior[i]), false}, interior[i]);

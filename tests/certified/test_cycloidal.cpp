@@ -133,6 +133,25 @@ TEST_CASE("cycloidal: a true touch (a double root of Δ) is never claimed; it is
   }
 }
 
+TEST_CASE("cycloidal: a touch at t = 0 leaves t = 0 undecided, and the rest of [0, 1] is decided", "[cycloidal][certified]") {
+  // As above with A at (2t, 3): touching at t = 0, separate after.
+  const std::string text = R"({"format": "ellipse-ccd-scene/1", "name": "touch0", "dim": 2,
+    "a": {"shape": {"semi_axes": ["2", "1"]},
+          "motion": {"type": "cycloidal", "angle_over_pi": ["0", "0"], "translation": [["0", "2"], ["3", "0"]]}},
+    "b": {"shape": {"semi_axes": ["1", "2"]}, "motion": {"type": "static"}}})";
+  const Scene s = scene_from_text(text, "touch0");
+  for (Arithmetic a : {Arithmetic::double_precision(), Arithmetic::certified()}) {
+    INFO(a.name());
+    Solution r = solve_in(s, a);
+    CHECK(r.answer.contacts.empty());
+    CHECK(!r.answer.collides);
+    REQUIRE(r.answer.undecided.size() == 1);
+    CHECK(r.answer.undecided[0].value == 0.0);
+    REQUIRE(!r.cells.empty());
+    CHECK(r.cells.back().status == Status::separate);
+  }
+}
+
 TEST_CASE("cycloidal: exact arithmetic refuses, pointing to what solves it", "[cycloidal]") {
   const Scene s = read_scene(kExample1);
   try {
