@@ -172,3 +172,20 @@ TEST_CASE("cycloidal: status_at agrees with the cells of 003 Example 1 in double
     CHECK(status_at(s, mpq_class(9, 10), a) == Status::separate);
   }
 }
+
+TEST_CASE("cycloidal beside a rational motion: refused with a message that says what is supported", "[cycloidal]") {
+  const std::string text = R"({"format": "ellipse-ccd-scene/1", "name": "mixed", "dim": 2,
+    "a": {"shape": {"semi_axes": ["2", "1"]},
+          "motion": {"type": "cycloidal", "angle_over_pi": ["0", "1"], "translation": [["0", "2"], ["3", "0"]]}},
+    "b": {"shape": {"semi_axes": ["1", "2"]}, "motion": {"type": "kinematic", "d": [["0"], ["0"], ["1"], ["0", "1"]]}}})";
+  const Scene s = scene_from_text(text, "mixed");
+  for (Arithmetic a : {Arithmetic::double_precision(), Arithmetic::certified()}) {
+    INFO(a.name());
+    try {
+      solve_in(s, a);
+      FAIL("a cycloidal motion beside a kinematic one was solved");
+    } catch (const std::invalid_argument& e) {
+      CHECK(std::string(e.what()).find("only static and cycloidal motions can be combined") != std::string::npos);
+    }
+  }
+}
