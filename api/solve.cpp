@@ -11,6 +11,7 @@
 #include "io/scene_reader.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/ccd_projection.hpp"
+#include "kernel/cycloidal_cd_disc.hpp"
 #include "number/double_traits.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/running_error.hpp"
@@ -156,11 +157,32 @@ Solution run_floating_3d(const Scene& scene, const SolveOptions& opt, const T& l
   return s;
 }
 
+// A cycloidal scene (003 section V): Δ(t) is not a polynomial, so no basis
+// applies; its roots are isolated by validated subdivision in T read as an
+// enclosure (kernel/cycloidal_cd_disc.hpp).
+template <class T>
+Solution run_floating_cycloidal(const Scene& scene, const SolveOptions& opt, const T& like) {
+  if (opt.input == InputMode::prepared)
+    throw std::invalid_argument("--input prepared needs rational motions: a cycloidal scene is read with --input rounded");
+  Solution s;
+  try {
+    CycloidalOptions co;
+    const int bits = opt.arith.precision_bits();
+    co.max_depth = std::clamp(bits / 2, 20, 200);
+    co.refine_bits = std::clamp(bits + 8, 60, 4000);
+    s = solution_of(cycloidal_cd_disc(cycloidal_pair<T>(scene, like), like, co, opt.variant), 2);
+  } catch (const BudgetExhausted& e) {
+    s = undecided_run<T>(e.what(), 2, opt.variant);
+  }
+  s.basis = "pointwise";
+  s.method = "cd-disc-cycloidal";
+  return s;
+}
+
 template <class T>
 Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
   if (scene.dim == 3) return run_floating_3d(scene, opt, like);
-  bool cyclo = std::holds_alternative<CycloidalMotion>(scene.a.motion) || std::holds_alternative<CycloidalMotion>(scene.b.motion);
-  if (cyclo) throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
+  if (has_cycloidal_motion(scene)) return run_floating_cycloidal(scene, opt, like);
   Solution s = run_floating_2d(scene, opt, like);
   s.method = "cd-disc";
   return s;
@@ -186,6 +208,7 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
                          : run_exact<3>(prepare_pair<3>(scene), opt.variant, opt.first_contact);
       break;
     case Arithmetic::Certified:
+      if (scene.dim == 2 && has_cycloidal_motion(scene)) { s = run_certified_cycloidal(scene, opt.arith.mpfi_rungs, opt.variant); break; }
       s = scene.dim == 3 ? run_certified<4>(prepare_pair<4>(scene), opt.arith.mpfi_rungs, opt.variant, opt.first_contact)
                          : run_certified<3>(prepare_pair<3>(scene), opt.arith.mpfi_rungs, opt.variant, opt.first_contact);
       break;

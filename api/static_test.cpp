@@ -3,10 +3,13 @@
 
 #include "floating/rounded_input.hpp"
 #include "kernel/characteristic_polynomial.hpp"
+#include "kernel/contact_status.hpp"
+#include "kernel/cycloidal_motion.hpp"
 #include "kernel/fast_quartic.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
 #include "kernel/quartic_status.hpp"
+#include "number/mpfi_interval.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/rational_traits.hpp"
 #include "number/running_error.hpp"
@@ -206,9 +209,18 @@ Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>
 
 Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith) {
   if (t < 0 || t > 1) throw std::invalid_argument("status_at: t = " + t.get_str() + " is outside [0, 1]");
-  bool cyclo = std::holds_alternative<CycloidalMotion>(scene.a.motion) || std::holds_alternative<CycloidalMotion>(scene.b.motion);
-  if (cyclo && arith.floating())
-    throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
+  // A cycloidal scene (2D): the static test of f(λ;t) at t, with g_i(t) enclosed (kernel/cycloidal_motion.hpp):
+  // Bounded double / MPFR (uncertain where the error bound covers a sign), or MPFI for certified. Exact refuses.
+  if (scene.dim == 2 && has_cycloidal_motion(scene) && arith.kind != Arithmetic::Exact) {
+    auto in = [&](const auto& like) {
+      using T = std::decay_t<decltype(like)>;
+      auto g = cycloidal_g<T>(cycloidal_pair<T>(scene, like), scalar_traits<T>::from_rational(t, like));
+      return cubic_contact_status(g[3], g[2], g[1], g[0]);
+    };
+    if (arith.kind == Arithmetic::Double) return in(Bounded<double>(1.0, 0));
+    if (arith.kind == Arithmetic::Mpfr) return in(Bounded<Mpfr>(Mpfr(mpq_class(1), arith.mpfr_bits), 0));
+    return in(MpfiInterval(mpq_class(0), arith.mpfi_rungs.empty() ? 128 : arith.mpfi_rungs.back()));
+  }
   return scene.dim == 3 ? scene_status_in<4>(scene, t, arith) : scene_status_in<3>(scene, t, arith);
 }
 

@@ -43,10 +43,9 @@ void check_plan(const GeneratePlan& plan);
 std::string check_seed_text(const std::string& text);
 
 // The message of an exception as the command line prints it: a scene the
-// exact pipeline refuses (kernel/prepared_scene.hpp, NotRationalMotion) gets
-// the command line's advice.
+// exact pipeline refuses (kernel/prepared_scene.hpp, NotRationalMotion)
+// already carries the advice (--arith double, mpfr:BITS or certified).
 inline std::string cli_message(const std::exception& e) {
-  if (dynamic_cast<const NotRationalMotion*>(&e)) return std::string(e.what()) + " (use --arith double or mpfr:BITS)";
   return e.what();
 }
 

@@ -42,6 +42,7 @@
 #include "io/solution_json.hpp"
 #include "number/double_traits.hpp"
 #include "kernel/characteristic_polynomial.hpp"
+#include "kernel/cycloidal_motion.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/discriminant.hpp"
 #include "kernel/ellipsoid_function.hpp"
@@ -58,6 +59,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <numbers>
@@ -290,17 +292,43 @@ std::vector<std::pair<double, bool>> snapshot_instants(int k, const Solution& re
   return ts;
 }
 
+// A cycloidal motion (scene-format.md) at t as a constant matrix M(t): the
+// rotation by π(θ0 + θ1 t) about the centre x0, then the translation (display only).
+PolyMatrix<double, 3> cycloidal_matrix_at(const CycloidalMotion& m, const std::vector<double>& x0, double t) {
+  auto d = [](const Rational& q) { return q.get_d(); };
+  const double a = std::numbers::pi * (d(m.theta0) + d(m.theta1) * t), c = std::cos(a), sn = std::sin(a);
+  const double vx = d(m.x[0]) + d(m.x[1]) * t, vy = d(m.y[0]) + d(m.y[1]) * t;
+  const double rows[3][3] = {{c, -sn, x0[0] - (c * x0[0] - sn * x0[1]) + vx}, {sn, c, x0[1] - (sn * x0[0] + c * x0[1]) + vy}, {0, 0, 1}};
+  PolyMatrix<double, 3> r;
+  for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) r[i][j] = Poly<double>(std::vector<double>{rows[i][j]});
+  return r;
+}
+
 template <int N>
 void add_objects(json& data, const Scene& s, const Solution& rep, int k) {
   constexpr int d = N - 1;
   auto conv = [](const Rational& q) { return scalar_traits<double>::from_rational(q); };
   const Shape sa = object_shape(s.a, d), sb = object_shape(s.b, d);
-  const PolyMatrix<double, N> ma = motion_matrix<double, N>(s.a.motion, conv);
-  const PolyMatrix<double, N> mb = motion_matrix<double, N>(s.b.motion, conv);
+  // M(t) of an object: its polynomial matrix, or for a cycloidal motion the matrix at t.
+  auto matrix_of = [&](const SceneObject& o, const Shape& sh) {
+    std::function<PolyMatrix<double, N>(double)> f;
+    if constexpr (N == 3) {
+      if (auto* cm = std::get_if<CycloidalMotion>(&o.motion)) {
+        CycloidalMotion m = *cm;
+        std::vector<double> x0 = sh.x0;
+        f = [m, x0](double t) { return cycloidal_matrix_at(m, x0, t); };
+        return f;
+      }
+    }
+    PolyMatrix<double, N> pm = motion_matrix<double, N>(o.motion, conv);
+    f = [pm](double) { return pm; };
+    return f;
+  };
+  const auto ma = matrix_of(s.a, sa), mb = matrix_of(s.b, sb);
   json snaps = json::array();
   for (auto [t, special] : snapshot_instants(k, rep)) {
-    auto [ca, pa] = moved<N>(sa, ma, t);
-    auto [cb, pb] = moved<N>(sb, mb, t);
+    auto [ca, pa] = moved<N>(sa, ma(t), t);
+    auto [cb, pb] = moved<N>(sb, mb(t), t);
     snaps.push_back({{"t", t}, {"contact", special}, {"a", outline_json(ca, pa)}, {"b", outline_json(cb, pb)}});
   }
   data["snapshots"] = snaps;
@@ -308,7 +336,7 @@ void add_objects(json& data, const Scene& s, const Solution& rep, int k) {
   for (int i = 0; i < kPath; ++i) {
     double t = double(i) / (kPath - 1);
     ts.push_back(t);
-    auto ca = moved<N>(sa, ma, t).first, cb = moved<N>(sb, mb, t).first;
+    auto ca = moved<N>(sa, ma(t), t).first, cb = moved<N>(sb, mb(t), t).first;
     ax.push_back(ca[0]); ay.push_back(ca[1]); bx.push_back(cb[0]); by.push_back(cb[1]);
   }
   data["paths"] = {{"t", rounded(ts)}, {"a", {{"x", rounded(ax)}, {"y", rounded(ay)}}}, {"b", {{"x", rounded(bx)}, {"y", rounded(by)}}}};
@@ -320,30 +348,59 @@ std::vector<double> critical_approx(const Solution& rep) {
   return v;
 }
 
-// 2D: Δ exactly, sampled exactly; contact points from the report (Lemma 5 of 003).
+// 2D: Δ exactly, sampled exactly (a cycloidal Δ, transcendental: enclosed in
+// MPFI at 128 bits and drawn at the enclosures' mid-points); contact points
+// from the report (Lemma 5 of 003).
 void add_curve_2d(json& data, const Scene& s, const Solution& rep) {
-  PreparedPair<3> p = prepare_pair<3>(s);
-  MovingPair<Rational, 3> m = to_arithmetic<Rational, 3>(p, Rational(1));
-  std::vector<Poly<Rational>> g = characteristic_of(m);
-  Poly<Rational> delta = cubic_discriminant(g[3], g[2], g[1], g[0]);
   std::vector<Rational> ts = grid_with(kDeltaSamples, critical_approx(rep));
   Rational max_abs;
-  std::vector<double> val = normalised(exact_values(delta, ts), max_abs);
   std::vector<double> td;
   for (const auto& t : ts) td.push_back(t.get_d());
-  data["curve"] = {{"kind", "discriminant"},
-                   {"degree", delta.degree()},
-                   {"identically_zero", delta.is_zero()},
-                   {"max_abs", decimal_string(max_abs, 6)},
-                   {"how", "built and evaluated exactly, then divided by its largest sampled |value|"},
-                   {"t", rounded(td)},
-                   {"value", val}};  // full double: near a root the small values matter on a log scale
+  if (has_cycloidal_motion(s)) {
+    const MpfiInterval like(Rational(0), 128);
+    const CycloidalPair<MpfiInterval> cp = cycloidal_pair<MpfiInterval>(s, like);
+    std::vector<Rational> vals;
+    for (const auto& t : ts) {
+      MpfiInterval v = cycloidal_delta<MpfiInterval>(cp, MpfiInterval(t, 128));
+      mpfr_t mid;
+      mpfr_init2(mid, 128);
+      mpfi_mid(mid, v.get());
+      Rational q;
+      mpfr_get_q(q.get_mpq_t(), mid);
+      mpfr_clear(mid);
+      vals.push_back(q);
+    }
+    std::vector<double> val = normalised(vals, max_abs);
+    data["curve"] = {{"kind", "discriminant"},
+                     {"degree", -1},
+                     {"identically_zero", false},
+                     {"max_abs", decimal_string(max_abs, 6)},
+                     {"how", "cycloidal motion: Δ(t) is not a polynomial; enclosed in MPFI at 128 bits at each instant "
+                             "and drawn at the mid-points, divided by its largest sampled |value|"},
+                     {"t", rounded(td)},
+                     {"value", val}};
+  } else {
+    PreparedPair<3> p = prepare_pair<3>(s);
+    MovingPair<Rational, 3> m = to_arithmetic<Rational, 3>(p, Rational(1));
+    std::vector<Poly<Rational>> g = characteristic_of(m);
+    Poly<Rational> delta = cubic_discriminant(g[3], g[2], g[1], g[0]);
+    std::vector<double> val = normalised(exact_values(delta, ts), max_abs);
+    data["curve"] = {{"kind", "discriminant"},
+                     {"degree", delta.degree()},
+                     {"identically_zero", delta.is_zero()},
+                     {"max_abs", decimal_string(max_abs, 6)},
+                     {"how", "built and evaluated exactly, then divided by its largest sampled |value|"},
+                     {"t", rounded(td)},
+                     {"value", val}};  // full double: near a root the small values matter on a log scale
+  }
   json contacts = json::array();
   const Answer& ans = rep.answer;
   for (std::size_t i = 0; i < ans.contacts.size(); ++i) {
     json c = {{"t", ans.contacts[i].value}};
     if (i < ans.contact_points.size() && ans.contact_points[i].x.size() == 2)  // decimal text of Lemma 5's point, display only
-      c["point"] = {std::stod(ans.contact_points[i].x[0]), std::stod(ans.contact_points[i].x[1])};
+      // (an interval "[lo, hi]" from a certified run: its lower end, for display)
+      c["point"] = {std::stod(ans.contact_points[i].x[0].substr(ans.contact_points[i].x[0].rfind('[') + 1)),
+                    std::stod(ans.contact_points[i].x[1].substr(ans.contact_points[i].x[1].rfind('[') + 1))};
     contacts.push_back(c);
   }
   data["contacts"] = contacts;
@@ -489,7 +546,7 @@ int run_plot(const PlotOptions& o) {
   std::string arith_text = o.arith, arith_note;
   if (cyclo && o.arith_opt->count() == 0) {
     arith_text = "double";
-    arith_note = "cycloidal motion: not rational, so double arithmetic (exact cannot represent it)";
+    arith_note = "cycloidal motion: not rational, so double arithmetic (exact cannot represent it; certified also solves it)";
     warn("plot", src.label + ": " + arith_note);
   }
   SolveOptions opt;
@@ -498,7 +555,6 @@ int run_plot(const PlotOptions& o) {
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
     rep = solve(s, opt);
-    if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
   } catch (const std::invalid_argument& e) {
     std::cerr << "eccd plot: " << src.label << ": " << cli_message(e) << "\n";
     return 3;
@@ -614,7 +670,7 @@ Command add_plot_command(CLI::App& app) {
   o->arith_opt = c.sub->add_option("--arith", o->arith,
                                    "Arithmetic of the critical instants, collision intervals and contacts: exact "
                                    "(certified), double or mpfr:BITS. A scene with a cycloidal motion defaults to "
-                                   "double, but no pipeline solves cycloidal motions yet, so it exits with status 3")
+                                   "double (Delta(t) drawn from MPFI enclosures; --arith certified or mpfr:BITS also solve it)")
                      ->capture_default_str();
   c.sub->add_option("--data", o->data, "Also write the data the drawing script read (JSON, eccd-plot-data/1: the solve report, samples, outlines) to this file");
   c.run = [o] { return run_plot(*o); };

@@ -12,6 +12,7 @@
 #include "io/scene_reader.hpp"
 #include "io/solution_json.hpp"
 #include "kernel/budget.hpp"
+#include "kernel/cycloidal_motion.hpp"
 
 #include <sys/time.h>
 
@@ -105,11 +106,15 @@ Command add_solve_command(CLI::App& app) {
       const std::string m = e.what();
       throw std::invalid_argument("--basis " + args->basis + ": " + m);
     }
-    if (args->store && opt.arith.kind != Arithmetic::Exact) throw std::invalid_argument("--write-answer stores exact answers only: use --arith exact");
+    if (args->store && opt.arith.kind != Arithmetic::Exact && opt.arith.kind != Arithmetic::Certified)
+      throw std::invalid_argument("--write-answer stores exact answers only: use --arith exact (certified for a cycloidal scene)");
     if (args->store && args->scene_path == "-") throw std::invalid_argument("--write-answer needs a scene file, not - (standard input)");
     arm_backstop(run_budget().time_limit_s);
     const SceneSource src = read_scene_source(args->scene_path);
     Scene s = parse_scene(src.text, src.label);
+    // The stored answer is the exact one; a cycloidal scene has none, so its certified answer is stored instead.
+    if (args->store && opt.arith.kind == Arithmetic::Certified && !(s.dim == 2 && has_cycloidal_motion(s)))
+      throw std::invalid_argument("--write-answer stores exact answers only: use --arith exact (certified only for a cycloidal scene)");
     if (s.dim == 3 && opt.arith.floating() && opt.basis == Basis::scaled_bernstein && opt.method != Method::projection)
       throw std::invalid_argument("--basis scaled-bernstein: in 3D it applies to --method projection only");
     for (const auto& w : ignored_options(*args, opt, s.dim)) warn("solve", w);

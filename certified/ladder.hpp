@@ -11,6 +11,7 @@
 // Requirements: a prepared pair (kernel/prepared_scene.hpp), N = 3 (2D) or 4 (3D).
 #include "certified/solution.hpp"
 #include "kernel/prepared_scene.hpp"
+#include "kernel/scene.hpp"
 
 #include <optional>
 #include <string>
@@ -21,6 +22,14 @@ namespace eccd {
 template <int N>
 Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_rungs, Variant variant,
                        bool first_contact);
+
+// A cycloidal scene (2D, not rational: kernel/cycloidal_cd_disc.hpp) in MPFI
+// interval arithmetic at each precision of mpfi_rungs (128 if none) until
+// nothing is undecided: every simple root of Δ enclosed in a proved bracket,
+// every cell proved; what stays undecided (a possible double root: a touch or
+// a near miss) is reported with the proved bound on |Δ| there, never as a
+// touch. There is no exact rung (exact arithmetic cannot represent it).
+Solution run_certified_cycloidal(const Scene& scene, const std::vector<int>& mpfi_rungs, Variant variant);
 
 // The exact pipeline on a prepared pair: a certified Solution (basis "exact").
 template <int N>

@@ -120,7 +120,7 @@ struct Poser {
   MovingPair<double, H_2D> m2;
   MovingPair<double, H_3D> m3;
   explicit Poser(const Scene& s) : dim(s.dim) {
-    if (cycloidal(s)) throw std::invalid_argument("cycloidal motions are not solved yet by the floating pipelines (they are not rational)");
+    if (cycloidal(s)) throw std::invalid_argument("the FCL peer does not take cycloidal motions (eccd solves them in double, mpfr:BITS and certified)");
     if (dim == 3) m3 = rounded_scene<H_3D>(s);
     else m2 = rounded_scene<H_2D>(s);
   }

@@ -212,6 +212,7 @@ std::string summary_text(const Solution& s) {
     << (s.input == InputMode::rounded ? ", input rounded" : "") << "\n";
   // Say what the polynomial is: Δ, psc_k, or for the Bézier method F(u,t).
   std::string poly = s.projection == "bezier" ? "F(u,t) of degree " + std::to_string(s.projection_degree) + " in t"
+                     : s.method == "cd-disc-cycloidal" ? s.projection + " (cycloidal: not a polynomial)"
                                               : s.projection + " degree " + std::to_string(s.projection_degree);
   o << "  status at t = 0: " << to_string(s.status_at_0) << "; " << poly
     << (!s.projection_identically_zero ? ""

@@ -148,7 +148,8 @@ PreparedPair<H> prepare_pair(const Scene& s) {
   for (const SceneObject* o : {&s.a, &s.b})
     if (std::holds_alternative<CycloidalMotion>(o->motion))
       throw NotRationalMotion(std::string("object ") + (o == &s.a ? "a" : "b") +
-                              " has a cycloidal motion, which is not rational: exact arithmetic cannot represent it");
+                              " has a cycloidal motion, which is not rational: exact arithmetic cannot represent it "
+                              "(use --arith double, mpfr:BITS or certified, which solve it)");
   auto id = [](const Rational& q) { return q; };
   PreparedPair<H> p;
   p.qa = shape_matrix<H>(s.a);

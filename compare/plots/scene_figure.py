@@ -230,11 +230,13 @@ def draw_discriminant(ax, data):
     if contacts:
         ax.plot([c["t"] for c in contacts], [0] * len(contacts), "o", mfc="none", mec=COLLISION, mew=2, ms=9)
         handles.append(Line2D([], [], color=COLLISION, marker="o", mfc="none", ls="", mew=2, label="external contact"))
-    handles.insert(0, Line2D([], [], color="black", lw=1.4, label="Δ(t), exact (sampled exactly)"))
+    cyclo = cur["degree"] == -1 and not cur["identically_zero"]  # a cycloidal Δ: not a polynomial, enclosed in MPFI
+    handles.insert(0, Line2D([], [], color="black", lw=1.4,
+                             label="Δ(t), MPFI enclosures (mid-points)" if cyclo else "Δ(t), exact (sampled exactly)"))
     ax.set_xlim(0, 1)
     ax.set_xlabel("t")
     ax.grid(alpha=0.25)
-    degree = "Δ ≡ 0" if cur["identically_zero"] else f"degree {cur['degree']}"
+    degree = "Δ ≡ 0" if cur["identically_zero"] else ("cycloidal: not a polynomial" if cyclo else f"degree {cur['degree']}")
     ax.set_title(f"Δ(t): discriminant in λ of f(λ;t) = det(λA − B), {degree}\n"
                  "(Δ > 0: three real roots in λ, Δ < 0: one; Δ = 0: a multiple root)", fontsize=10)
     ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85, title=marks_title(rep), title_fontsize=8)

@@ -71,6 +71,8 @@ TEST_CASE("every command exits 2 for a bad option or a bad option value", "[cli]
   Run refused = run_eccd("solve " + q(bad("cycloidal_exact.json")) + " --arith exact");
   CHECK(refused.code == 3);
   CHECK(refused.err.find("cycloidal_exact.json") != std::string::npos);
+  // ... and points to what does solve it (issue 20).
+  CHECK(refused.err.find("double, mpfr:BITS or certified") != std::string::npos);
 }
 
 TEST_CASE("eccd solve warns about options the combination ignores", "[cli][conventions]") {

@@ -159,8 +159,30 @@ TEST_CASE("eccd plot fails cleanly and writes nothing", "[plot][app][cli]") {
   // A bad option: exit 2.
   CHECK(run(exe() + " plot " + quote(source("cases/paper003/example2.json")) + " -o " + quote(png.string()) + " --instants 99", out) == 2);
   CHECK(run(exe() + " plot " + quote(source("cases/paper003/example2.json")) + " -o " + quote(png.string()) + " --arith quad", out) == 2);
-  // A cycloidal motion: no pipeline solves it yet, a refusal (exit 3).
-  CHECK(run(exe() + " plot " + quote(source("tests/data/bad/cycloidal_exact.json")) + " -o " + quote(png.string()), out) == 3);
+  // A cycloidal motion in exact arithmetic: a refusal (exit 3).
+  CHECK(run(exe() + " plot " + quote(source("tests/data/bad/cycloidal_exact.json")) + " -o " + quote(png.string()) + " --arith exact", out) == 3);
   CHECK(out.empty());
   CHECK(dir.files().empty());
+}
+
+TEST_CASE("eccd plot draws a cycloidal scene (003 Example 1): Δ(t) from enclosures, solve's critical instants",
+          "[plot][app][cli][cycloidal]") {
+  TempDir dir;
+  const std::string scene = source("cases/paper003/example1.json");
+  std::string out;
+  REQUIRE(run(exe() + " plot " + quote(scene) + " -o " + quote((dir.path / "e1.png").string()) + " --data " +
+                  quote((dir.path / "d.json").string()) + " --arith certified",
+              out) == 0);
+  CHECK(is_png(dir.path / "e1.png"));
+  nlohmann::json data = read_json(dir.path / "d.json");
+  CHECK(data["solve"]["critical_instants"].size() == 4);
+  CHECK(data["curve"]["kind"] == "discriminant");
+  CHECK(data["curve"]["t"].size() == data["curve"]["value"].size());
+  // Δ changes sign across each of the paper's roots 0.226, 0.393, 0.600, 0.731 (and nowhere else on the grid).
+  int changes = 0;
+  const auto& v = data["curve"]["value"];
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if ((v[i - 1].get<double>() < 0) != (v[i].get<double>() < 0) && v[i].get<double>() != 0) ++changes;
+  CHECK(changes == 4);
+  CHECK(data["contacts"].size() == 2);
 }
