@@ -7,10 +7,12 @@
 #include "floating/bezier_ccd.hpp"
 #include "floating/ccd3_baselines.hpp"
 #include "floating/cd_disc_floating.hpp"
+#include "floating/independent_ccd.hpp"
 #include "floating/rounded_input.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/ccd_projection.hpp"
+#include "kernel/trivariate_bernstein.hpp"
 #include "number/double_traits.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/running_error.hpp"
@@ -166,6 +168,54 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
   return s;
 }
 
+// Independent motions ("parameters": "independent", scene-format.md; 001
+// section 4): F(u, s, t) from the exactly prepared pair rounded to T (the
+// input mode is always `prepared` here), then floating/independent_ccd.hpp.
+template <class T>
+Solution run_independent_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
+  Scene shared = scene;
+  shared.independent = false;  // prepare_pair refuses independent scenes for the shared-parameter pipelines
+  const PreparedPair<4> p = prepare_pair<4>(shared);
+  IndependentOptions io;
+  if (opt.arith.kind == Arithmetic::Mpfr) io.max_tests = 2000000;  // MPFR steps cost 10-100x double's
+  const auto start = std::chrono::steady_clock::now();
+  IndependentResult r;
+  try {
+    const TriBern<T> F = independent_ellipsoid_function<T, 4>(to_arithmetic_bernstein<T, 4>(p, like));
+    r = ccd_independent(F, like, io);
+  } catch (const BudgetExhausted& e) {
+    r = IndependentResult{};
+    r.answer.independent = true;
+    r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
+    r.undecided_reasons.push_back(std::string("s and t in [0, 1]: ") + e.what());
+  }
+  Solution s;
+  s.dim = 3;
+  s.answer = r.answer;
+  s.undecided_reasons = r.undecided_reasons;
+  s.work = r.counters;
+  s.projection = "bezier";
+  s.projection_degree = r.degree_s;
+  s.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+  s.basis = "bernstein";
+  s.method = "bezier-independent";
+  s.input = InputMode::prepared;
+  return s;
+}
+
+Solution solve_independent(const Scene& scene, const SolveOptions& opt) {
+  if (scene.dim != 3)
+    throw IndependentMotionsRefused("independent motions are solved in 3D only (paper 001, section 4); this scene is 2D");
+  switch (opt.arith.kind) {
+    case Arithmetic::Double: return run_independent_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0));
+    case Arithmetic::Mpfr:
+      return run_independent_floating<Bounded<Mpfr>>(scene, opt, Bounded<Mpfr>(Mpfr(mpq_class(1), opt.arith.mpfr_bits), 0));
+    default:
+      throw IndependentMotionsRefused("independent motions (\"parameters\": \"independent\") are not solved in " + opt.arith.name() +
+                                      " arithmetic yet; use --arith double or mpfr:BITS");
+  }
+}
+
 }  // namespace
 
 Solution solve(const Scene& scene, const SolveOptions& opt) {
@@ -176,6 +226,13 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
   const bool floating = opt.arith.floating();
   ScopedDeadline budget(opt.time_limit_s > 0 ? opt.time_limit_s : floating ? kDefaultFloatingSeconds : 0);
   Solution s;
+  if (scene.independent) {
+    s = solve_independent(scene, opt);
+    s.scene = scene.name;
+    s.file = scene.path;
+    s.arith = opt.arith;
+    return s;
+  }
   switch (opt.arith.kind) {  // prepare_pair refuses cycloidal motions for exact arithmetic
     case Arithmetic::Double: s = run_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0)); break;
     case Arithmetic::Mpfr:
