@@ -497,6 +497,7 @@ int run_plot(const PlotOptions& o) {
   Solution rep;
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
+    refuse_independent(s, "eccd plot (it draws the shared-parameter answer)");
     rep = solve(s, opt);
     if (cyclo) throw std::invalid_argument("eccd plot draws rational motions only (a cycloidal motion has no polynomial matrix)");
   } catch (const std::invalid_argument& e) {

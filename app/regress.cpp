@@ -67,6 +67,8 @@ FileKind classify_file(const fs::path& p, std::string& text, std::string& why) {
 
 std::string answer_summary(const Answer& a) {
   std::string s = a.collides ? "collides" : "free";
+  if (a.independent)  // independent motions (issue 20): s- and t-intervals
+    return s + ", " + std::to_string(a.s_intervals.size()) + " s-interval(s), " + std::to_string(a.t_intervals.size()) + " t-interval(s)";
   if (a.collides) s += ", " + std::to_string(a.intervals.size()) + " interval(s)";
   s += ", " + std::to_string(a.contacts.size()) + " contact(s)";
   return s;

@@ -168,7 +168,9 @@ TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p) {
     for (int p = 0; p <= ds; ++p)
       for (int q = 0; q <= dt; ++q) {
         const T v = x.b[p] * y.b[q];
-        gk[std::size_t(p) * (dt + 1) + q] = tm.negative ? gk[std::size_t(p) * (dt + 1) + q] - v : gk[std::size_t(p) * (dt + 1) + q] + v;
+        T& cell = gk[std::size_t(p) * (dt + 1) + q];
+        if (tm.negative) cell = cell - v;
+        else cell = cell + v;
       }
   }
   TriBern<T> F;

@@ -26,7 +26,12 @@ fractions before writing.
                   point of A's path is (-1/2, 0, 1): (4t + 1/2)^2 + 1 <= 9/4 iff
                   t in [0, (sqrt(5) - 1)/8] (16 t^2 + 4 t - 1 = 0).
 
-Ellipsoid cases (no closed form; the answers are the pipelines'):
+The sphere cases' answers are stored by `eccd solve FILE --arith exact
+--write-answer` (exact/independent_balls.hpp), so `eccd regress` checks them;
+running this script again drops them (store them again).
+
+Ellipsoid cases (no closed form and no stored answer: the exact pipeline
+refuses them, double and mpfr:BITS answer them):
   ellipsoids-cross     semi-axes (2, 1, 1/2) and (1, 1, 3/2); A translates
                        along y (from -4 to 5) through B's path, B translates along x and
                        rotates (a rational motion: the rotation by the
@@ -113,7 +118,8 @@ write("ellipsoids-cross",
       "Independent motions of two ellipsoids (cases/independent/make_independent.py): A (semi-axes 2, 1, 1/2) "
       "translates from (1, -4, 0) to (1, 5, 0); B (semi-axes 1, 1, 3/2) translates from (-3, 0, 0) to (3, 0, 0) "
       "while turning about z by the rational rotation (1 - t^2, 2t)/(1 + t^2). The paths cross: both projections "
-      "are non-empty. No closed form; see the stored answer's origin in cases/independent/README.md.")
+      "are non-empty. No closed form and no stored answer: the exact pipeline answers two balls only so far "
+      "(exact/independent_balls.hpp); double and mpfr:BITS answer it.")
 write("ellipsoids-apart",
       {"shape": {"semi_axes": ["2", "1", "1/2"]}, "motion": translation((-3, 4, 0), (6, 0, 0))},
       {"shape": {"semi_axes": ["1", "1", "3/2"]}, "motion": rotating((-3, -1, 0), (6, 0, 0))},
