@@ -153,6 +153,8 @@ Command add_regress_command(CLI::App& app) {
         }
         SolveOptions opt;
         opt.arith = parse_arithmetic(args->arith);
+        // independent motions (issue 20): exact is their only certified pipeline, and they have no certificate format yet
+        if (sc.independent) opt.arith = Arithmetic::exact();
         const Solution sol = solve(sc, opt);
         std::string how;
         if (sol.arith.kind == Arithmetic::Certified) {
@@ -183,7 +185,10 @@ Command add_regress_command(CLI::App& app) {
           line = "FAIL  " + name + ": the stored answer differs from the recomputed " + args->arith + " one:";
           for (const auto& d : diff) line += "\n        " + d;
         }
-        if (args->certify) {
+        if (args->certify && sc.independent) {
+          row["certificate"] = {{"valid", nullptr}, {"reason", "no certificate format for independent motions yet"}};
+          line += ", no certificate (independent motions)";
+        } else if (args->certify) {
           nlohmann::json doc = nlohmann::json::parse(texts[f]);
           auto c0 = std::chrono::steady_clock::now();
           nlohmann::json cert = make_certificate(sc, doc);
