@@ -262,6 +262,13 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
     const mpq_class mid = (p.lo + p.hi) / 2, w = p.hi - p.lo;
     if (before == after) {  // in-unknown-in or out-unknown-out (the ends of [0, 1] count as out)
       undecided.push_back(located(mid, w / 2));
+      if (!stop_reason.empty() && before == Strip::out && i == 0 && i + 1 == pieces.size()) {
+        reasons.push_back(range(p) + ": left undecided" + why);  // the run stopped before deciding anything here
+        p.status = before;
+        resolved.push_back(p);
+        end_width.push_back(0);
+        continue;
+      }
       reasons.push_back(range(p) + ": " +
                         (before == Strip::in ? "inside the meeting set on both sides: a touching gap or none"
                                              : "separate on both sides: a touch, a near miss or a collision narrower than the strips") +
@@ -305,9 +312,12 @@ IndependentResult ccd_independent(const TriBern<T>& F, const T& like, const Inde
   r.answer.independent = true;
   r.degree_s = F.n[1];
   r.degree_t = F.n[2];
-  Projector<T> ps(opt, like);
+  IndependentOptions half = opt;  // the work bound: half for each projection, and what s leaves to t
+  half.max_tests = opt.max_tests / 2;
+  Projector<T> ps(half, like);
   auto s_pieces = ps.project(F);
-  Projector<T> pt(opt, like);
+  half.max_tests = opt.max_tests - std::min(ps.tests, opt.max_tests / 2);
+  Projector<T> pt(half, like);
   auto t_pieces = pt.project(F.swap_st());
   r.answer.s_intervals = intervals_of(s_pieces, "s", opt.s_depth, ps.stop_reason, r.answer.undecided, r.undecided_reasons);
   r.answer.t_intervals = intervals_of(t_pieces, "t", opt.s_depth, pt.stop_reason, r.answer.undecided, r.undecided_reasons);
