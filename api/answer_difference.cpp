@@ -50,9 +50,9 @@ struct Span {
   bool point() const { return a->approx == b->approx && a->lo == b->lo && a->hi == b->hi; }
 };
 
-std::string span_text(const Span& s) {
-  if (s.point()) return "contact near " + where(*s.a);
-  return "collision interval [" + num(s.a->value) + ", " + num(s.b->value) + "]";
+std::string span_text(const Span& s, const std::string& noun = "collision interval") {
+  if (s.point()) return (noun == "collision interval" ? "contact near " : noun + " (a point) near ") + where(*s.a);
+  return noun + " [" + num(s.a->value) + ", " + num(s.b->value) + "]";
 }
 
 std::vector<Span> spans(const std::vector<std::pair<Instant, Instant>>& list) {
@@ -89,11 +89,21 @@ AnswerDifference answer_difference(const Answer& got, const Answer& ref, const D
     d.collides_differs = true;
     d.differences.push_back("collides: " + R + " " + yes(ref.collides) + ", " + A + " " + yes(got.collides));
   }
+  if (got.independent != ref.independent) {
+    d.differences.push_back(std::string("kind: ") + R + " is an answer of " + (ref.independent ? "independent" : "shared-parameter") +
+                            " motions, " + A + " of " + (got.independent ? "independent" : "shared-parameter") + " motions");
+    d.agrees = false;
+    return d;
+  }
 
+  // The matching of interval lists (collision intervals; for independent
+  // motions the s- and t-intervals, each matched the same way). noun names them.
+  auto match_intervals = [&](const std::vector<std::pair<Instant, Instant>>& got_list,
+                             const std::vector<std::pair<Instant, Instant>>& ref_list, const std::string& noun,
+                             std::vector<const Instant*>& flagged_ref, std::vector<const Instant*>& flagged_got) {
   // Intervals: correspondence by overlap, then the ends of one-to-one pairs.
-  auto G = spans(got.intervals), E = spans(ref.intervals);
+  auto G = spans(got_list), E = spans(ref_list);
   auto overlap = [tol](const Span& x, const Span& y) { return x.lo() <= y.hi() + tol && y.lo() <= x.hi() + tol; };
-  std::vector<const Instant*> flagged_ref, flagged_got;  // instants reported through an interval already
   double worst = 0;
   bool one_to_one = true;
   for (std::size_t k = 0; k < E.size(); ++k) {
@@ -103,19 +113,19 @@ AnswerDifference answer_difference(const Answer& got, const Answer& ref, const D
     if (m.empty()) {
       one_to_one = false;
       ++d.missed;
-      d.differences.push_back("missed " + span_text(E[k]));
+      d.differences.push_back("missed " + span_text(E[k], noun));
       flagged_ref.insert(flagged_ref.end(), {E[k].a, E[k].b});
       continue;
     }
     if (m.size() > 1) {
       one_to_one = false;
       ++d.split;
-      d.differences.push_back("splits " + span_text(E[k]) + " into " + std::to_string(m.size()) + " intervals");
+d.differences.push_back("splits " + span_text(E[k], noun) + " into " + std::to_string(m.size()) + " intervals");
       flagged_ref.insert(flagged_ref.end(), {E[k].a, E[k].b});
       continue;
     }
     const Span& g = G[m[0]];
-    const std::string which = "collision interval " + std::to_string(k + 1);
+    const std::string which = noun + " " + std::to_string(k + 1);
     for (int end = 0; end < 2; ++end) {
       const Instant& x = end ? *g.b : *g.a;
       const Instant& y = end ? *E[k].b : *E[k].a;
@@ -136,17 +146,32 @@ AnswerDifference answer_difference(const Answer& got, const Answer& ref, const D
     if (n == 0) {
       one_to_one = false;
       ++d.spurious;
-      d.differences.push_back("false " + span_text(G[i]));
+      d.differences.push_back("false " + span_text(G[i], noun));
       flagged_got.insert(flagged_got.end(), {G[i].a, G[i].b});
     } else if (n > 1) {
       one_to_one = false;
       ++d.merged;
-      d.differences.push_back("merges " + std::to_string(n) + " collision intervals into [" + num(G[i].a->value) + ", " +
+      d.differences.push_back("merges " + std::to_string(n) + " " + noun + "s into [" + num(G[i].a->value) + ", " +
                               num(G[i].b->value) + "]");
       flagged_got.insert(flagged_got.end(), {G[i].a, G[i].b});
     }
   }
-  if (one_to_one && !E.empty()) d.max_endpoint_error = worst;
+  if (one_to_one && !E.empty()) d.max_endpoint_error = std::max(d.max_endpoint_error.value_or(0.0), worst);
+  };
+  std::vector<const Instant*> flagged_ref, flagged_got;  // instants reported through an interval already
+  if (got.independent) {
+    d.intervals = int(got.s_intervals.size() + got.t_intervals.size());
+    d.reference_intervals = int(ref.s_intervals.size() + ref.t_intervals.size());
+    match_intervals(got.s_intervals, ref.s_intervals, "s-interval", flagged_ref, flagged_got);
+    match_intervals(got.t_intervals, ref.t_intervals, "t-interval", flagged_ref, flagged_got);
+    for (const auto& u : got.undecided) {
+      ++d.undecided;
+      d.differences.push_back("undecided near " + num(u.value));
+    }
+    d.agrees = d.differences.empty();
+    return d;
+  }
+  match_intervals(got.intervals, ref.intervals, "collision interval", flagged_ref, flagged_got);
   auto reported = [tol](const std::vector<const Instant*>& list, const Instant& x) {
     return std::any_of(list.begin(), list.end(), [&](const Instant* f) { return instants_match(*f, x, tol); });
   };

@@ -26,6 +26,10 @@
 // touching (contact_intervals, docs/answer-format.md): the counts must agree
 // and then their ends match. Every undecided instant of the answer is a
 // difference. The answers agree iff there is no difference.
+// Independent motions (Answer::independent, issue 20): answers of different
+// kinds never agree; the s_intervals and then the t_intervals are matched
+// exactly as collision intervals are ("s-interval 1 end off by ..."), and
+// `intervals` / `reference_intervals` count both lists.
 // Decisions between certified instants are exact (rationals); decimals are
 // compared as doubles (reporting: the answer being judged is a floating one,
 // or a stored decimal, which is no proof either way).

@@ -4,14 +4,17 @@
 
 #include "certified/ladder.hpp"
 #include "exact/cd_disc_exact.hpp"
+#include "exact/independent_balls.hpp"
 #include "floating/bezier_ccd.hpp"
 #include "floating/ccd3_baselines.hpp"
 #include "floating/cd_disc_floating.hpp"
+#include "floating/independent_ccd.hpp"
 #include "floating/rounded_input.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/ccd_projection.hpp"
 #include "kernel/cycloidal_cd_disc.hpp"
+#include "kernel/trivariate_bernstein.hpp"
 #include "number/double_traits.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/running_error.hpp"
@@ -188,6 +191,99 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
   return s;
 }
 
+// Independent motions ("parameters": "independent", scene-format.md; 001
+// section 4): F(u, s, t) from the exactly prepared pair rounded to T (the
+// input mode is always `prepared` here), then floating/independent_ccd.hpp.
+template <class T>
+Solution run_independent_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
+  Scene shared = scene;
+  shared.independent = false;  // prepare_pair refuses independent scenes for the shared-parameter pipelines
+  const PreparedPair<4> p = prepare_pair<4>(shared);
+  IndependentOptions io;
+  if (opt.arith.kind == Arithmetic::Mpfr) io.max_tests = 2000000;  // MPFR steps cost 10-100x double's
+  const auto start = std::chrono::steady_clock::now();
+  IndependentResult r;
+  try {
+    const TriBern<T> F = independent_ellipsoid_function<T, 4>(to_arithmetic_bernstein<T, 4>(p, like));
+    r = ccd_independent(F, like, io);
+  } catch (const BudgetExhausted& e) {
+    r = IndependentResult{};
+    r.answer.independent = true;
+    r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
+    r.undecided_reasons.push_back(std::string("s and t in [0, 1]: ") + e.what());
+  }
+  Solution s;
+  s.dim = 3;
+  s.answer = r.answer;
+  s.undecided_reasons = r.undecided_reasons;
+  s.work = r.counters;
+  s.projection = "bezier";
+  s.projection_degree = r.degree_s;
+  s.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+  s.basis = "bernstein";
+  s.method = "bezier-independent";
+  s.input = InputMode::prepared;
+  return s;
+}
+
+// Exact: two balls on straight paths (exact/independent_balls.hpp), each cell
+// decided by the exact shared-parameter pipeline on the scene with one object
+// fixed at the cell's rational sample; anything else is refused.
+Solution run_independent_exact(const Scene& scene) {
+  const auto a = ball_path(scene.a), b = ball_path(scene.b);
+  if (!a || !b)
+    throw IndependentMotionsRefused(
+        "exact arithmetic answers independent motions only for two balls (rational radii) moving on straight lines "
+        "(static or matrix motions with a translation of degree <= 1) so far; the general projection of F = F_u = F_t = 0 "
+        "is not implemented: use --arith double or mpfr:BITS");
+  const auto start = std::chrono::steady_clock::now();
+  auto fixed = [](const SceneObject& o, const Rational& x) {
+    SceneObject f = o;
+    if (auto* m = std::get_if<MatrixMotion>(&f.motion))
+      for (auto& row : m->m)
+        for (auto& e : row) e = RPoly::constant(e(x));
+    return f;
+  };
+  long runs = 0;
+  auto meets = [&](bool fix_a, const Rational& x) {
+    Scene sh = scene;
+    sh.independent = false;
+    sh.answer.reset();
+    (fix_a ? sh.a : sh.b) = fixed(fix_a ? scene.a : scene.b, x);
+    ++runs;
+    return run_exact<4>(prepare_pair<4>(sh), Variant::answer, false).answer.collides;
+  };
+  Solution s;
+  s.dim = 3;
+  s.answer.independent = true;
+  s.answer.s_intervals = ball_projection(*a, *b, [&](const Rational& x) { return meets(true, x); });
+  s.answer.t_intervals = ball_projection(*b, *a, [&](const Rational& x) { return meets(false, x); });
+  s.answer.collides = !s.answer.s_intervals.empty();
+  if (s.answer.s_intervals.empty() != s.answer.t_intervals.empty())
+    throw std::logic_error("independent balls: one projection is empty and the other is not");
+  s.certified = true;
+  s.basis = "exact";
+  s.method = "balls-exact";
+  s.projection = "explicit";
+  s.work = {{"shared_exact_runs", runs}};
+  s.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+  return s;
+}
+
+Solution solve_independent(const Scene& scene, const SolveOptions& opt) {
+  if (scene.dim != 3)
+    throw IndependentMotionsRefused("independent motions are solved in 3D only (paper 001, section 4); this scene is 2D");
+  switch (opt.arith.kind) {
+    case Arithmetic::Double: return run_independent_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0));
+    case Arithmetic::Mpfr:
+      return run_independent_floating<Bounded<Mpfr>>(scene, opt, Bounded<Mpfr>(Mpfr(mpq_class(1), opt.arith.mpfr_bits), 0));
+    case Arithmetic::Exact: return run_independent_exact(scene);
+    default:
+      throw IndependentMotionsRefused("independent motions (\"parameters\": \"independent\") are not solved in " + opt.arith.name() +
+                                      " arithmetic yet; use --arith double or mpfr:BITS");
+  }
+}
+
 }  // namespace
 
 Solution solve(const Scene& scene, const SolveOptions& opt) {
@@ -198,6 +294,13 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
   const bool floating = opt.arith.floating();
   ScopedDeadline budget(opt.time_limit_s > 0 ? opt.time_limit_s : floating ? kDefaultFloatingSeconds : 0);
   Solution s;
+  if (scene.independent) {
+    s = solve_independent(scene, opt);
+    s.scene = scene.name;
+    s.file = scene.path;
+    s.arith = opt.arith;
+    return s;
+  }
   switch (opt.arith.kind) {  // prepare_pair refuses cycloidal motions for exact arithmetic
     case Arithmetic::Double: s = run_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0)); break;
     case Arithmetic::Mpfr:

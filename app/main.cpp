@@ -186,6 +186,8 @@ int main(int argc, char** argv) {
         if (c.sub->get_name() != "check-certificate") return c.run();
         try {
           return c.run();
+        } catch (const IndependentMotionsRefused& e) {  // a valid scene the certificate algebra refuses: exit 3
+          throw ExitError(3, c.sub->get_option("SCENE")->as<std::string>() + ": " + e.what());
         } catch (const std::invalid_argument& e) {  // e.g. a cycloidal scene: name the file if the message does not
           const std::string scene = c.sub->get_option("SCENE")->as<std::string>();
           std::string m = cli_message(e);

@@ -554,6 +554,7 @@ int run_plot(const PlotOptions& o) {
   Solution rep;
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
+    refuse_independent(s, "eccd plot (it draws the shared-parameter answer)");
     rep = solve(s, opt);
   } catch (const std::invalid_argument& e) {
     std::cerr << "eccd plot: " << src.label << ": " << cli_message(e) << "\n";

@@ -887,6 +887,10 @@ int run_report(const ReportArgs& a) {
         ++corpus;
         continue;
       }
+      if (s.independent) {  // issue 20: the report's answers are shared-parameter ones
+        if (!quiet()) std::fprintf(stderr, "eccd report: %s: skipped (independent motions: not part of the report yet)\n", f.string().c_str());
+        continue;
+      }
       if (scene_degree(s) < 0) {
         if (!quiet()) std::fprintf(stderr, "eccd report: %s: skipped (cycloidal motion: no exact ground truth)\n", f.string().c_str());
         continue;

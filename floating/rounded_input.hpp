@@ -49,6 +49,7 @@ namespace eccd {
 template <class T, int H>
 MovingPair<T, H> round_pair(const Scene& s, const T& like, std::string& trouble) {
   if (s.dim + 1 != H) throw std::invalid_argument("scene dimension does not match the pipeline");
+  refuse_independent(s);  // kernel/prepared_scene.hpp
   auto conv = [&](const Rational& q) { return scalar_traits<T>::from_rational(q, like); };
   MovingPair<T, H> m;
   trouble.clear();

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -176,6 +177,16 @@ json interval_list_to_json(const std::vector<std::pair<Instant, Instant>>& v) {
 json answer_to_json(const Answer& answer) {
   json o = json::object();
   o["collides"] = answer.collides;
+  if (answer.independent) {  // scene-format.md, "Independent motions": no intervals / first_contact / contacts
+    o["s_intervals"] = interval_list_to_json(answer.s_intervals);
+    o["t_intervals"] = interval_list_to_json(answer.t_intervals);
+    if (!answer.undecided.empty()) {
+      json u = json::array();
+      for (const auto& c : answer.undecided) u.push_back(instant_to_json(c));
+      o["undecided"] = u;
+    }
+    return o;
+  }
   o["intervals"] = interval_list_to_json(answer.intervals);
   o["first_contact"] = answer.first_contact ? instant_to_json(*answer.first_contact) : json(nullptr);
   json contacts = json::array();
@@ -420,7 +431,10 @@ class Reader {
   }
 
   Scene scene(const json& root);
-  Answer answer(const json& j, const std::string& ptr);
+  // independent: the scene's "parameters" (nullopt: from the keys, for an answer file).
+  Answer answer(const json& j, const std::string& ptr, std::optional<bool> independent = std::nullopt);
+  Answer independent_answer(const json& j, const std::string& ptr);
+  std::vector<std::pair<Instant, Instant>> interval_list(const json& j, const std::string& ptr, const std::string& name) const;
   Instant instant(const json& j, const std::string& ptr) const;
 
  private:
@@ -757,9 +771,58 @@ Instant Reader::instant(const json& j, const std::string& ptr) const {
   return in;
 }
 
-Answer Reader::answer(const json& j, const std::string& ptr) {
+std::vector<std::pair<Instant, Instant>> Reader::interval_list(const json& j, const std::string& ptr,
+                                                                const std::string& name) const {
+  if (!j.is_array()) fail(ptr, name + " must be an array of [start, end] pairs of instants, got " + type_name(j));
+  std::vector<std::pair<Instant, Instant>> out;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string p = child(ptr, i);
+    const json& pair = j[i];
+    if (!pair.is_array() || pair.size() != 2)
+      fail(p, "an interval of " + name + " must be [start, end], an array of 2 instants, got " +
+                  (pair.is_array() ? std::to_string(pair.size()) + " entries" : type_name(pair)));
+    out.emplace_back(instant(pair[0], child(p, 0)), instant(pair[1], child(p, 1)));
+  }
+  return out;
+}
+
+// The answer of a scene with "parameters": "independent" (scene-format.md,
+// "Independent motions"): collides, s_intervals, t_intervals (each [] when
+// missing); collides = false requires both empty, collides = true with an
+// explicitly empty list is an error (as for intervals).
+Answer Reader::independent_answer(const json& j, const std::string& ptr) {
+  const std::string what = "an answer of independent motions";
+  for (const char* k : {"intervals", "first_contact", "contacts", "contact_intervals"})
+    if (find(j, k))
+      fail(child(ptr, k), std::string("\"") + k +
+                              "\" does not apply to independent motions (\"parameters\": \"independent\"): their answer is "
+                              "collides, s_intervals and t_intervals");
+  check_keys(j, ptr, {"collides", "s_intervals", "t_intervals"}, what);
+  const json& c = member(j, ptr, "collides", what);
+  if (!c.is_boolean()) fail(child(ptr, "collides"), "collides must be true or false, got " + type_name(c));
+  Answer a;
+  a.independent = true;
+  a.collides = c.get<bool>();
+  for (const char* k : {"s_intervals", "t_intervals"}) {
+    const json* v = find(j, k);
+    if (!v) continue;
+    auto list = interval_list(*v, child(ptr, k), k);
+    if (!a.collides && !list.empty()) fail(child(ptr, k), std::string("collides is false but ") + k + " is not empty");
+    if (a.collides && list.empty()) fail(child(ptr, k), std::string("collides is true but ") + k + " is empty");
+    (std::string(k) == "s_intervals" ? a.s_intervals : a.t_intervals) = std::move(list);
+  }
+  return a;
+}
+
+Answer Reader::answer(const json& j, const std::string& ptr, std::optional<bool> independent) {
   const std::string what = "an answer";
   require_object(j, ptr, what);
+  if (!independent) independent = find(j, "s_intervals") || find(j, "t_intervals");
+  if (*independent) return independent_answer(j, ptr);
+  for (const char* k : {"s_intervals", "t_intervals"})
+    if (find(j, k))
+      fail(child(ptr, k), std::string("\"") + k +
+                              "\" applies to independent motions only; this scene's \"parameters\" is \"shared\" (the default)");
   check_keys(j, ptr, {"collides", "intervals", "first_contact", "contacts", "contact_intervals"}, what);
   const json& c = member(j, ptr, "collides", what);
   if (!c.is_boolean()) fail(child(ptr, "collides"), "collides must be true or false, got " + type_name(c));
@@ -818,7 +881,7 @@ Scene Reader::scene(const json& root) {
     fail("/format", "unsupported format " + (f->is_string() ? quote(f->get<std::string>()) : type_name(*f)) +
                         "; this program reads \"" + fmt + "\"");
   const std::string what = "a scene";
-  check_keys(root, "", {"format", "name", "dim", "a", "b", "note", "answer"}, what);
+  check_keys(root, "", {"format", "name", "dim", "a", "b", "note", "parameters", "answer"}, what);
   const json& name = member(root, "", "name", what);
   const json& dim = member(root, "", "dim", what);
   const json& a = member(root, "", "a", what);
@@ -837,9 +900,15 @@ Scene Reader::scene(const json& root) {
     if (!note->is_string()) fail("/note", "note must be a string, got " + type_name(*note));
     s.note = note->get<std::string>();
   }
+  if (const json* par = find(root, "parameters")) {  // scene-format.md, "Independent motions"
+    if (!par->is_string() || (par->get_ref<const std::string&>() != "shared" && par->get_ref<const std::string&>() != "independent"))
+      fail("/parameters", "parameters must be \"shared\" (one t for both objects, the default) or \"independent\" "
+                          "(A(s) and B(t)), got " + (par->is_string() ? quote(par->get<std::string>()) : type_name(*par)));
+    s.independent = par->get_ref<const std::string&>() == "independent";
+  }
   s.a = object(a, "/a");
   s.b = object(b, "/b");
-  if (const json* ans = find(root, "answer"); ans && !ans->is_null()) s.answer = answer(*ans, "/answer");
+  if (const json* ans = find(root, "answer"); ans && !ans->is_null()) s.answer = answer(*ans, "/answer", s.independent);
   return s;
 }
 

@@ -64,6 +64,16 @@
 //     option. A NUL byte in the file is reported as such (a binary file), an
 //     empty file as empty. Long keys and values are cut in messages (80
 //     characters and "...").
+// 15. "parameters" (scene-format.md, "Independent motions", issue 20): the
+//     string "shared" (the default) or "independent", nothing else (Scene::
+//     independent). The answer of an independent scene has exactly the keys
+//     collides, s_intervals, t_intervals (each list [] when missing; collides
+//     = false requires both empty, collides = true with an explicitly empty
+//     list is an error, as for intervals); intervals, first_contact,
+//     contacts, contact_intervals there are errors naming the key, and so
+//     are s_intervals / t_intervals in a shared scene's answer.
+//     answer_from_json (an answer file, no scene) takes an answer with
+//     s_intervals or t_intervals as an independent one.
 #include "number/rational_traits.hpp"
 #include "kernel/answer.hpp"
 #include "io/scene_error.hpp"

@@ -36,10 +36,14 @@ json solution_to_json(const Solution& s) {
   } else if (s.dim == 2 && s.variant == Variant::all_contacts) {
     j["intervals"] = nullptr;
   }
-  json pts = json::array();
-  for (const auto& p : s.answer.contact_points) pts.push_back(p.x);
-  j["contact_points"] = pts;
-  j["contact_intervals"] = pair_list(s.answer.contact_intervals);
+  if (s.answer.independent) {
+    j["parameters"] = "independent";  // the answer keys are collides, s_intervals, t_intervals
+  } else {
+    json pts = json::array();
+    for (const auto& p : s.answer.contact_points) pts.push_back(p.x);
+    j["contact_points"] = pts;
+    j["contact_intervals"] = pair_list(s.answer.contact_intervals);
+  }
   json und = json::array();
   for (const auto& u : s.answer.undecided) und.push_back(instant_to_json(u));
   j["undecided"] = und;
@@ -82,6 +86,10 @@ json solution_to_json(const Solution& s) {
 
 nlohmann::ordered_json stored_answer_of(const json& report) {
   nlohmann::ordered_json ans;
+  if (report.contains("s_intervals")) {  // independent motions (scene-format.md, "Independent motions")
+    for (const char* k : {"collides", "s_intervals", "t_intervals"}) ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
+    return ans;
+  }
   for (const char* k : {"collides", "intervals", "first_contact", "contacts"}) ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
   // Continuous touching (docs/answer-format.md): stored only when there is some, so older answers keep their keys.
   if (report.contains("contact_intervals") && report["contact_intervals"].is_array() && !report["contact_intervals"].empty())
@@ -122,8 +130,12 @@ Solution solution_from_json(const json& j, const std::string& label) {
   // The answer: the spec's keys (null lists of the 2D variants read as empty), then the extras.
   json ans = json::object();
   ans["collides"] = j.contains("collides") ? j["collides"] : json(nullptr);
-  for (const char* k : {"intervals", "contacts", "contact_intervals"}) ans[k] = list(k);
-  ans["first_contact"] = j.contains("first_contact") ? j["first_contact"] : json(nullptr);
+  if (j.contains("s_intervals")) {  // independent motions
+    for (const char* k : {"s_intervals", "t_intervals"}) ans[k] = list(k);
+  } else {
+    for (const char* k : {"intervals", "contacts", "contact_intervals"}) ans[k] = list(k);
+    ans["first_contact"] = j.contains("first_contact") ? j["first_contact"] : json(nullptr);
+  }
   s.answer = answer_from_json(ans, label, "");
   const json und = list("undecided");
   for (std::size_t i = 0; i < und.size(); ++i) s.answer.undecided.push_back(instant_from_json(und[i], label, "/undecided/" + std::to_string(i)));
@@ -177,6 +189,8 @@ Solution solution_from_json(const json& j, const std::string& label) {
   };
   for (auto& [a, b] : s.answer.intervals) from_bracket(a), from_bracket(b);
   for (auto& [a, b] : s.answer.contact_intervals) from_bracket(a), from_bracket(b);
+  for (auto& [a, b] : s.answer.s_intervals) from_bracket(a), from_bracket(b);
+  for (auto& [a, b] : s.answer.t_intervals) from_bracket(a), from_bracket(b);
   if (s.answer.first_contact) from_bracket(*s.answer.first_contact);
   for (auto& c : s.answer.contacts) from_bracket(c);
   for (auto& c : s.critical) from_bracket(c.t);
@@ -206,6 +220,20 @@ std::string summary_text(const Solution& s) {
     }
     return t;
   };
+  if (s.answer.independent) {  // independent motions: A(s), B(t) (scene-format.md, "Independent motions")
+    o << "scene " << s.scene << " (" << s.dim << "D, independent motions A(s), B(t)), arithmetic " << s.arith.name()
+      << (s.certified ? ", certified" : ", not certified") << ", method " << s.method << "\n";
+    o << "  collides: " << (s.answer.collides ? "yes" : "no") << "\n";
+    for (const auto& [a, b] : s.answer.s_intervals) o << "  s-interval (A's path inside B's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
+    for (const auto& [a, b] : s.answer.t_intervals) o << "  t-interval (B's path inside A's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
+    for (const auto& u : s.answer.undecided) o << "  undecided near " << u.approx << "\n";
+    if (!s.answer.undecided.empty())
+      for (const auto& why : s.undecided_reasons) o << "  undecided because: " << why << "\n";
+    char tb[64];
+    std::snprintf(tb, sizeof tb, "%.3f", s.time_ms);
+    o << "  time: " << tb << " ms\n";
+    return o.str();
+  }
   const bool two_d_partial = s.dim == 2 && s.variant != Variant::answer;  // intervals not computed
   o << "scene " << s.scene << " (" << s.dim << "D), arithmetic " << s.arith.name()
     << (s.certified ? ", certified" : ", not certified") << (s.basis != "exact" ? ", basis " + s.basis : std::string())

@@ -54,6 +54,14 @@ struct Answer {
   // Extras: not part of the stored answer, reported by `eccd solve --json`.
   std::vector<ContactPoint> contact_points;      // one per contact
   std::vector<Instant> undecided;                 // floating: instants it could not classify
+  // Independent motions (scene-format.md, "Independent motions"; a scene with
+  // "parameters": "independent"): the answer is `collides`, `s_intervals`
+  // (the maximal closed intervals of { s : A(s) meets B(t) for some t }) and
+  // `t_intervals` (likewise for t); intervals, first_contact, contacts and
+  // contact_intervals stay empty. `undecided` then holds values of s or t
+  // (the reasons say which).
+  bool independent = false;
+  std::vector<std::pair<Instant, Instant>> s_intervals, t_intervals;
 };
 
 // A decimal approximation of an exact rational with `digits` significant

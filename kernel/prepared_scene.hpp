@@ -141,10 +141,26 @@ struct NotRationalMotion : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-// Throws NotRationalMotion for a motion that has no polynomial form (cycloidal).
+// A scene with independent motions ("parameters": "independent", A(s) and
+// B(t)) given to a pipeline that treats A(t) and B(t) at one shared t: every
+// such pipeline refuses it (exit 3 on the command line), with this message.
+struct IndependentMotionsRefused : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+inline void refuse_independent(const Scene& s, const std::string& who = "this pipeline") {
+  if (s.independent)
+    throw IndependentMotionsRefused(
+        "the scene has independent motions (\"parameters\": \"independent\": A(s), B(t)); " + who +
+        " treats one shared t; independent scenes are answered by `eccd solve --arith double|mpfr:BITS|exact` only");
+}
+
+// Throws NotRationalMotion for a motion that has no polynomial form (cycloidal),
+// IndependentMotionsRefused for a scene with independent motions (the
+// independent pipeline prepares a copy marked shared: api/solve.cpp).
 template <int H>
 PreparedPair<H> prepare_pair(const Scene& s) {
   if (s.dim + 1 != H) throw std::invalid_argument("scene dimension does not match the pipeline");
+  refuse_independent(s);
   for (const SceneObject* o : {&s.a, &s.b})
     if (std::holds_alternative<CycloidalMotion>(o->motion))
       throw NotRationalMotion(std::string("object ") + (o == &s.a ? "a" : "b") +

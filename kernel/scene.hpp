@@ -60,6 +60,10 @@ struct Scene {
   std::string note;
   int dim = 2;
   SceneObject a, b;
+  // "parameters" (scene-format.md, "Independent motions"): false = "shared"
+  // (A(t) and B(t) at one t, the default); true = "independent" (A(s), B(t),
+  // s and t unrelated; its answer has s_intervals and t_intervals).
+  bool independent = false;
   std::optional<Answer> answer;  // stored answer, if the file has one
   std::string source_text;       // the JSON text it was read from (io/scene_reader.hpp); "" if built in code
 };

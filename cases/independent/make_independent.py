@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""Writes scenes of independent motions ("parameters": "independent",
+scene-format.md, last section; paper 001 section 4): A moves as A(s), B as
+B(t), s and t unrelated, and the question is which part of each path enters
+the other's swept volume.
+
+Sphere cases (analytic answers). Two balls of radii r_A, r_B with centres on
+segments c_A(s) = p + s d, c_B(t) = q + t e meet iff |c_A(s) - c_B(t)| <=
+R = r_A + r_B. So the s-intervals are { s : dist(c_A(s), B's segment) <= R }
+and the t-intervals { t : dist(c_B(t), A's segment) <= R }. The data below
+make the nearest point an interior point or an end of the other segment, so
+each end solves a quadratic; the script checks every claim with exact
+fractions before writing.
+
+  spheres-cross   r_A = 1, r_B = 1/2 (R = 3/2); c_A(s) = (2, -3 + 6s, 1),
+                  c_B(t) = (4t, 0, 0). Nearest points interior:
+                  dist^2(c_A(s), B's path) = (6s - 3)^2 + 1, so
+                  s in [1/2 - sqrt(5)/12, 1/2 + sqrt(5)/12]
+                  (roots of 144 s^2 - 144 s + 31); dist^2(c_B(t), A's path) =
+                  (4t - 2)^2 + 1, t in [1/2 - sqrt(5)/8, 1/2 + sqrt(5)/8]
+                  (roots of 64 t^2 - 64 t + 11).
+  spheres-end     r_A = 1, r_B = 1/2; c_A(s) = (-1/2, -3 + 6s, 1), c_B(t) =
+                  (4t, 0, 0). For A's centre the nearest point of B's path is
+                  its end (0, 0, 0): dist^2 = 1/4 + (6s - 3)^2 + 1 <= 9/4 iff
+                  s in [1/3, 2/3] (rational ends); for B's centre the nearest
+                  point of A's path is (-1/2, 0, 1): (4t + 1/2)^2 + 1 <= 9/4 iff
+                  t in [0, (sqrt(5) - 1)/8] (16 t^2 + 4 t - 1 = 0).
+
+The sphere cases' answers are stored by `eccd solve FILE --arith exact
+--write-answer` (exact/independent_balls.hpp), so `eccd regress` checks them;
+running this script again drops them (store them again).
+
+Ellipsoid cases (no closed form and no stored answer: the exact pipeline
+refuses them, double and mpfr:BITS answer them):
+  ellipsoids-cross     semi-axes (2, 1, 1/2) and (1, 1, 3/2); A translates
+                       along y (from -4 to 5) through B's path, B translates along x and
+                       rotates (a rational motion: the rotation by the
+                       Cayley-like matrix of (1 - t^2, 2t)/(1 + t^2) about z).
+  ellipsoids-apart     the same shapes on parallel paths 4 apart: never meet.
+"""
+import json
+import os
+from fractions import Fraction as Fr
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def s(x):
+    x = Fr(x)
+    return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
+
+
+def translation(c0, c1):
+    """matrix motion M(t) = [[I, c0 + t c1], [0, 1]]"""
+    m = [[s(1 if i == j else 0) for j in range(3)] for i in range(3)]
+    for i in range(3):
+        m[i].append([s(c0[i]), s(c1[i])] if c1[i] != 0 else s(c0[i]))
+    m.append(["0", "0", "0", "1"])
+    return {"type": "matrix", "m": m}
+
+
+def write(name, a, b, note):
+    doc = {"format": "ellipse-ccd-scene/1", "name": name, "dim": 3, "parameters": "independent",
+           "a": a, "b": b, "note": note}
+    with open(os.path.join(HERE, name + ".json"), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+
+
+def ball(r, c0, c1):
+    return {"shape": {"semi_axes": [s(r)] * 3}, "motion": translation(c0, c1)}
+
+
+# --- checks of the analytic claims (exact)
+R2 = Fr(9, 4)
+# spheres-cross: (6s-3)^2 + 1 - 9/4 = 36 s^2 - 36 s + 31/4 = (144 s^2 - 144 s + 31)/4
+for x in [Fr(k, 100) for k in range(101)]:
+    assert ((6 * x - 3) ** 2 + 1 - R2) * 4 == 144 * x * x - 144 * x + 31
+    assert ((4 * x - 2) ** 2 + 1 - R2) * 4 == 64 * x * x - 64 * x + 11
+    assert ((4 * x + Fr(1, 2)) ** 2 + 1 - R2) * 4 == 4 * (16 * x * x + 4 * x - 1)
+    assert Fr(1, 4) + (6 * x - 3) ** 2 + 1 - R2 == 36 * x * x - 36 * x + 8  # roots 1/3, 2/3
+assert 36 * Fr(1, 3) ** 2 - 36 * Fr(1, 3) + 8 == 0 and 36 * Fr(2, 3) ** 2 - 36 * Fr(2, 3) + 8 == 0
+
+write("spheres-cross", ball(1, (2, -3, 1), (0, 6, 0)), ball(Fr(1, 2), (0, 0, 0), (4, 0, 0)),
+      "Independent motions, two balls on segments (cases/independent/make_independent.py). r_A = 1, r_B = 1/2; "
+      "c_A(s) = (2, -3 + 6s, 1), c_B(t) = (4t, 0, 0). s-intervals: [1/2 - sqrt(5)/12, 1/2 + sqrt(5)/12] = "
+      "[0.31366100187501755, 0.68633899812498245] (roots of 144 s^2 - 144 s + 31); t-intervals: "
+      "[1/2 - sqrt(5)/8, 1/2 + sqrt(5)/8] = [0.22048849718747371, 0.77951150281252629] (roots of 64 t^2 - 64 t + 11).")
+write("spheres-end", ball(1, (Fr(-1, 2), -3, 1), (0, 6, 0)), ball(Fr(1, 2), (0, 0, 0), (4, 0, 0)),
+      "Independent motions, two balls on segments (cases/independent/make_independent.py). r_A = 1, r_B = 1/2; "
+      "c_A(s) = (-1/2, -3 + 6s, 1), c_B(t) = (4t, 0, 0). The nearest point of B's path to A's centre is its end "
+      "(0, 0, 0): s-intervals [1/3, 2/3]; t-intervals [0, (sqrt(5) - 1)/8] = [0, 0.15450849718747371] "
+      "(16 t^2 + 4 t - 1 = 0).")
+
+
+def rotating(c0, c1):
+    """B: translation c0 + t c1 and the rational rotation about z by
+    [[1 - t^2, -2t], [2t, 1 - t^2]] / (1 + t^2), written homogeneously
+    (w = 1 + t^2)."""
+    w = ["1", "0", "1"]
+    m = [[["1", "0", "-1"], ["0", "-2"], "0"], [["0", "2"], ["1", "0", "-1"], "0"], ["0", "0", w]]
+    for i in range(3):
+        # (c0 + t c1) w
+        p = [Fr(0)] * 4
+        for k, wk in enumerate([1, 0, 1]):
+            p[k] += Fr(c0[i]) * wk
+            p[k + 1] += Fr(c1[i]) * wk
+        while len(p) > 1 and p[-1] == 0:
+            p.pop()
+        m[i].append([s(x) for x in p])
+    m.append(["0", "0", "0", w])
+    return {"type": "matrix", "m": m}
+
+
+write("ellipsoids-cross",
+      {"shape": {"semi_axes": ["2", "1", "1/2"]}, "motion": translation((1, -4, 0), (0, 9, 0))},
+      {"shape": {"semi_axes": ["1", "1", "3/2"]}, "motion": rotating((-3, 0, 0), (6, 0, 0))},
+      "Independent motions of two ellipsoids (cases/independent/make_independent.py): A (semi-axes 2, 1, 1/2) "
+      "translates from (1, -4, 0) to (1, 5, 0); B (semi-axes 1, 1, 3/2) translates from (-3, 0, 0) to (3, 0, 0) "
+      "while turning about z by the rational rotation (1 - t^2, 2t)/(1 + t^2). The paths cross: both projections "
+      "are non-empty. No closed form and no stored answer: the exact pipeline answers two balls only so far "
+      "(exact/independent_balls.hpp); double and mpfr:BITS answer it.")
+write("ellipsoids-apart",
+      {"shape": {"semi_axes": ["2", "1", "1/2"]}, "motion": translation((-3, 4, 0), (6, 0, 0))},
+      {"shape": {"semi_axes": ["1", "1", "3/2"]}, "motion": rotating((-3, -1, 0), (6, 0, 0))},
+      "Independent motions of two ellipsoids (cases/independent/make_independent.py) on parallel paths: A's centre "
+      "stays at y = 4, B's at y = -1; A reaches at most y = 4 - 1 = 3 and B at most y = -1 + 1 = 0 (B's z-rotation "
+      "keeps its x-y section a unit disc): they never meet, collides = false.")

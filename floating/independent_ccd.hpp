@@ -1,0 +1,334 @@
+#pragma once
+// Independent motions by subdivision of F(u, s, t): which parts of A's path
+// (s) enter B's swept volume and which parts of B's path (t) enter A's,
+// written once for double and MPFR.
+//
+// Statement. Paper 001, section 4, "CCD for independent motions": A(s) and
+// B(t) meet iff F(u, s, t) = det((u - 1)A(s) - uB(t)) <= 0 for every u in
+// (0, 1) (kernel/trivariate_bernstein.hpp). The answer (scene-format.md,
+// "Independent motions") is the projection on s of the meeting set
+//   P_s = { s : some t in [0, 1] with A(s), B(t) meeting },
+// as maximal closed intervals, and likewise P_t. Sign tests of the Bézier
+// method (001 section 4) on boxes of F's tensor Bernstein net:
+//  - a box U x S x T whose control points are all > 0 proves F > 0 on it: every
+//    (s, t) of S x T is separate (a witness u in U);
+//  - boxes U_1 .. U_m covering [0, 1] in u, each with all control points < 0,
+//    prove F < 0 for all u: every (s, t) of S x T meets (overlap).
+// classify_u splits u adaptively (halves) to find one or the other. A strip
+// S x [0, 1] is "in" P_s as soon as one sub-box S x T is proved to overlap
+// (then every s of S has a t), "out" when sub-boxes S x T_i covering [0, 1]
+// in t are all proved separate, and otherwise split in s at 1/2. The u- and
+// t-splits of a strip of width 2^-d go at most d/2 + extra_depth deep: near
+// an end s* of P_s the margin of F on a strip at distance ~w from s* is ~w,
+// while the hull's error over a t- or u-piece of width τ around the extreme
+// point is ~τ² (F is quadratic there), so pieces of width ~sqrt(w) suffice.
+// Strips stop at width 2^-strip_depth (2^-18): an end of P_s lies in a run of
+// unresolved strips between one proved in and one proved out. Inside that run
+// the end is then located by bisection on single values s = x (F restricted
+// to s = x, TriBern::at_s; the same tests with zero width in s, with finer t-
+// and u-pieces until the value is decided), down to 2^-s_depth (2^-34 =
+// 5.8e-11); a value that stays unknown (e.g. exactly at the end) is replaced
+// by the two quarter points. The reported end is the mid-point of the final
+// bracket. What this does not prove: that P_s crosses only once inside the
+// run (a gap or a second interval narrower than the run, < 2^-18, would be
+// missed there); the strip proofs cover everything outside the runs. A run
+// that the bisection could not shrink below 4 x 2^-s_depth is reported in
+// `undecided` with its range. P_t: the same on F with s and t exchanged.
+// Honesty and termination: every sign is taken by scalar_traits<T>::sign,
+// which for T = Bounded<U> (number/running_error.hpp) is "uncertain" inside
+// the running error bound, so a proof in rounded arithmetic is a proof of the
+// exact F's sign. Work is bounded (max_tests u-box tests, and the run's
+// deadline, kernel/budget.hpp); strips left open then, runs of unresolved
+// strips between two proved-out strips (a touch, a near miss or a collision
+// narrower than a strip) or between two proved-in strips (a touching gap) are
+// reported in `undecided` (values of s or of t) with where and why; nothing
+// there is guessed.
+// Requirements on T: scalar_traits<T> (from_rational, sign); intended for
+// Bounded<double> and Bounded<Mpfr>.
+#include "kernel/answer.hpp"
+#include "kernel/budget.hpp"
+#include "kernel/trivariate_bernstein.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace eccd {
+
+struct IndependentOptions {
+  int strip_depth = 18;      // strips (proofs for whole ranges of s) of width down to 2^-strip_depth
+  int s_depth = 34;          // an end inside such a strip: bisection by point tests down to 2^-s_depth (the ends' tolerance)
+  int min_limit = 8;         // ... and at least this deep
+  int extra_depth = 2;       // t- and u-pieces of a strip at depth d: at most d/2 + extra_depth deep
+  long max_tests = 40000000;  // u-box sign tests for the whole run (both projections; ~3e6 per second in double)
+};
+
+struct IndependentResult {
+  Answer answer;  // independent = true
+  std::vector<std::string> undecided_reasons;
+  std::vector<std::pair<std::string, long>> counters;
+  int degree_s = 0, degree_t = 0;
+  double seconds = 0;
+};
+
+namespace independent_detail {
+
+enum class Strip { in, out, unknown };
+
+struct Piece {
+  mpq_class lo, hi;
+  Strip status;
+};
+
+template <class T>
+class Projector {
+ public:
+  Projector(const IndependentOptions& o, const T& like)
+      : opt_(o), half_(scalar_traits<T>::from_rational(mpq_class(1, 2), like)) {}
+
+  long tests = 0, strips = 0, points = 0;
+  std::string stop_reason;
+
+  // The pieces of [0, 1] along axis 1 of F (s), in order.
+  std::vector<Piece> project(const TriBern<T>& F) {
+    std::vector<Piece> out;
+    walk(F, mpq_class(0), mpq_class(1), 0, out);
+    // a run of unresolved strips between a proved-in and a proved-out one holds an end: bisect it by point tests
+    std::vector<Piece> runs;
+    for (auto& p : out)
+      if (!runs.empty() && runs.back().status == Strip::unknown && p.status == Strip::unknown) runs.back().hi = p.hi;
+      else runs.push_back(p);
+    std::vector<Piece> refined;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const Strip before = i > 0 ? runs[i - 1].status : Strip::out, after = i + 1 < runs.size() ? runs[i + 1].status : Strip::out;
+      if (runs[i].status != Strip::unknown || before == after) {
+        refined.push_back(runs[i]);
+        continue;
+      }
+      mpq_class lo = runs[i].lo, hi = runs[i].hi;
+      const mpq_class tol = mpq_class(1) / mpq_class(mpz_class(1) << opt_.s_depth);
+      for (int depth = opt_.strip_depth; hi - lo > tol && !stopped(); ++depth) {
+        // the mid-point; if it stays unknown (e.g. exactly at the end), the quarter points
+        const mpq_class mid = (lo + hi) / 2;
+        const Strip r = point(F, mid, depth);
+        if (r != Strip::unknown) {
+          (r == before ? lo : hi) = mid;
+          continue;
+        }
+        const mpq_class q1 = (lo + mid) / 2, q3 = (mid + hi) / 2;
+        const bool moved_lo = point(F, q1, depth + 1) == before, moved_hi = point(F, q3, depth + 1) == after;
+        if (moved_lo) lo = q1;
+        if (moved_hi) hi = q3;
+        if (!moved_lo && !moved_hi) break;
+      }
+      if (lo != runs[i].lo) refined.push_back({runs[i].lo, lo, before});
+      refined.push_back({lo, hi, Strip::unknown});
+      if (hi != runs[i].hi) refined.push_back({hi, runs[i].hi, after});
+    }
+    return refined;
+  }
+
+ private:
+  IndependentOptions opt_;
+  T half_;
+
+  // The status of the single value s = x (F restricted to it): finer t- and u-pieces until decided
+  // (a value at distance d from an end needs pieces of ~sqrt(d), or ~d where the extreme is on t = 0 or 1).
+  Strip point(const TriBern<T>& F, const mpq_class& x, int depth) {
+    const TriBern<T> at = F.at_s(scalar_traits<T>::from_rational(x, half_));
+    Strip r = Strip::unknown;
+    for (int lim = std::max(opt_.min_limit, depth / 2 + opt_.extra_depth); r == Strip::unknown && lim <= std::min(depth + 4, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth) + 8) && !stopped(); lim += 2) {
+      r = classify_strip(at, lim);
+      ++points;
+    }
+    return r;
+  }
+
+  bool stopped() {
+    if (!stop_reason.empty()) return true;
+    if (tests > opt_.max_tests) stop_reason = "work bound reached (" + std::to_string(opt_.max_tests) + " box tests)";
+    else if (deadline_passed()) stop_reason = deadline_reason();
+    return !stop_reason.empty();
+  }
+
+  // +1: a u-piece with F > 0 on the whole box (separate); -1: F < 0 on it for all u (overlap); 0: neither proved.
+  // Pruning: the control points f(i, j, k), i = 0..n_u, with (j, k) a corner
+  // of the (s, t) box are the Bernstein coefficients in u of F(u, s_c, t_c)
+  // on the u-piece, for that corner (s_c, t_c). All of them > 0 for one corner
+  // means F > 0 somewhere in the box: no overlap proof for the box. All < 0
+  // for one corner means F < 0 on the piece at that corner: no separation
+  // proof from this piece or its sub-pieces. A piece that can help neither
+  // proof is dropped (it needs a finer s or t, which the caller provides).
+  int classify_u(const TriBern<T>& box, int u_limit) {
+    std::vector<std::pair<TriBern<T>, int>> stack;
+    stack.emplace_back(box, 0);
+    bool unknown = false, can_overlap = true;
+    while (!stack.empty()) {
+      auto [f, d] = std::move(stack.back());
+      stack.pop_back();
+      ++tests;
+      const int sg = f.strict_sign();
+      if (sg == 1) return 1;
+      if (sg == -1) continue;
+      bool pos = false, neg = false;  // some corner's edge all positive / all negative
+      for (int j : {0, f.n[1]})
+        for (int k : {0, f.n[2]}) {
+          bool all_pos = true, all_neg = true;
+          for (int i = 0; i <= f.n[0]; ++i) {
+            const Sign c = sign(f.at(i, j, k));
+            all_pos = all_pos && c == Sign::positive;
+            all_neg = all_neg && c == Sign::negative;
+          }
+          pos = pos || all_pos;
+          neg = neg || all_neg;
+        }
+      if (pos) can_overlap = false;
+      if ((neg && !can_overlap) || d >= u_limit) {  // helps neither proof, or as deep as allowed
+        unknown = true;
+        continue;
+      }
+      auto halves = f.split_half(0, half_);
+      stack.emplace_back(std::move(halves.second), d + 1);
+      stack.emplace_back(std::move(halves.first), d + 1);
+    }
+    return unknown ? 0 : -1;
+  }
+
+  Strip classify_strip(const TriBern<T>& strip, int limit) {
+    std::vector<std::pair<TriBern<T>, int>> stack;
+    stack.emplace_back(strip, 0);
+    bool unknown = false;
+    while (!stack.empty()) {
+      if (stopped()) return Strip::unknown;
+      auto [f, d] = std::move(stack.back());
+      stack.pop_back();
+      const int r = classify_u(f, limit);
+      if (r == -1) return Strip::in;
+      if (r == 1) continue;
+      if (d >= limit) { unknown = true; continue; }
+      auto halves = f.split_half(2, half_);
+      stack.emplace_back(std::move(halves.second), d + 1);
+      stack.emplace_back(std::move(halves.first), d + 1);
+    }
+    return unknown ? Strip::unknown : Strip::out;
+  }
+
+  void walk(const TriBern<T>& strip, const mpq_class& lo, const mpq_class& hi, int depth, std::vector<Piece>& out) {
+    ++strips;
+    const Strip r = stopped() ? Strip::unknown : classify_strip(strip, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth));
+    if (r != Strip::unknown || depth >= opt_.strip_depth || !stop_reason.empty()) {
+      out.push_back({lo, hi, r});
+      return;
+    }
+    auto halves = strip.split_half(1, half_);
+    const mpq_class mid = (lo + hi) / 2;
+    walk(halves.first, lo, mid, depth + 1, out);
+    walk(halves.second, mid, hi, depth + 1, out);
+  }
+};
+
+// An end or a point known to within w (not certified: no bracket).
+inline Instant located(const mpq_class& x, const mpq_class& w) {
+  if (sgn(w) == 0) return Instant{decimal_string(x, 20), std::nullopt, std::nullopt, nearest_double(x)};
+  return Instant{decimal_string(x, bracket_digits(x - w, x + w)), std::nullopt, std::nullopt, nearest_double(x)};
+}
+
+// Pieces -> maximal intervals of the "in" set, plus undecided values and reasons (`var` is "s" or "t").
+inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> pieces, const char* var, int s_depth,
+                                                             const std::string& stop_reason, std::vector<Instant>& undecided,
+                                                             std::vector<std::string>& reasons) {
+  auto merge = [](std::vector<Piece>& v) {
+    std::vector<Piece> m;
+    for (auto& p : v)
+      if (!m.empty() && m.back().status == p.status) m.back().hi = p.hi;
+      else m.push_back(p);
+    v = std::move(m);
+  };
+  merge(pieces);
+  mpq_class strip(1);
+  strip /= mpq_class(mpz_class(1) << s_depth);
+  const std::string v = var;
+  auto range = [&](const Piece& p) { return v + " in [" + decimal_string(p.lo, 12) + ", " + decimal_string(p.hi, 12) + "]"; };
+  const std::string why = stop_reason.empty() ? "" : " (" + stop_reason + ")";
+  std::vector<Piece> resolved;
+  std::vector<mpq_class> end_width;  // per resolved piece: the uncertainty of its hi end (0 = exact)
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    Piece p = pieces[i];
+    if (p.status != Strip::unknown) { resolved.push_back(p); end_width.push_back(0); continue; }
+    const Strip before = i > 0 ? pieces[i - 1].status : Strip::out;
+    const Strip after = i + 1 < pieces.size() ? pieces[i + 1].status : Strip::out;
+    const mpq_class mid = (p.lo + p.hi) / 2, w = p.hi - p.lo;
+    if (before == after) {  // in-unknown-in or out-unknown-out (the ends of [0, 1] count as out)
+      undecided.push_back(located(mid, w / 2));
+      if (!stop_reason.empty() && before == Strip::out && i == 0 && i + 1 == pieces.size()) {
+        reasons.push_back(range(p) + ": left undecided" + why);  // the run stopped before deciding anything here
+        p.status = before;
+        resolved.push_back(p);
+        end_width.push_back(0);
+        continue;
+      }
+      reasons.push_back(range(p) + ": " +
+                        (before == Strip::in ? "inside the meeting set on both sides: a touching gap or none"
+                                             : "separate on both sides: a touch, a near miss or a collision narrower than the strips") +
+                        " could not be told apart" + why);
+      p.status = before;
+      resolved.push_back(p);
+      end_width.push_back(0);
+      continue;
+    }
+    if (w > 4 * strip) {
+      undecided.push_back(located(mid, w / 2));
+      reasons.push_back(range(p) + ": an end of the " + v + "-intervals is only located in this range" + why);
+    }
+    resolved.push_back({p.lo, mid, before});
+    end_width.push_back(w / 2);
+    resolved.push_back({mid, p.hi, after});
+    end_width.push_back(0);
+  }
+  // merge again, keeping the end uncertainty of the last piece of each run
+  std::vector<std::pair<Instant, Instant>> out;
+  mpq_class start_w = 0;
+  for (std::size_t i = 0; i < resolved.size(); ++i) {
+    if (resolved[i].status != Strip::in) { start_w = end_width[i]; continue; }
+    std::size_t j = i;
+    while (j + 1 < resolved.size() && resolved[j + 1].status == Strip::in) ++j;
+    out.emplace_back(located(resolved[i].lo, start_w), located(resolved[j].hi, end_width[j]));
+    start_w = end_width[j];
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace independent_detail
+
+// The answer of an independent scene from F(u, s, t) (kernel/trivariate_bernstein.hpp).
+template <class T>
+IndependentResult ccd_independent(const TriBern<T>& F, const T& like, const IndependentOptions& opt = {}) {
+  using namespace independent_detail;
+  const auto start = std::chrono::steady_clock::now();
+  IndependentResult r;
+  r.answer.independent = true;
+  r.degree_s = F.n[1];
+  r.degree_t = F.n[2];
+  IndependentOptions half = opt;  // the work bound: half for each projection, and what s leaves to t
+  half.max_tests = opt.max_tests / 2;
+  Projector<T> ps(half, like);
+  auto s_pieces = ps.project(F);
+  half.max_tests = opt.max_tests - std::min(ps.tests, opt.max_tests / 2);
+  Projector<T> pt(half, like);
+  auto t_pieces = pt.project(F.swap_st());
+  r.answer.s_intervals = intervals_of(s_pieces, "s", opt.s_depth, ps.stop_reason, r.answer.undecided, r.undecided_reasons);
+  r.answer.t_intervals = intervals_of(t_pieces, "t", opt.s_depth, pt.stop_reason, r.answer.undecided, r.undecided_reasons);
+  r.answer.collides = !r.answer.s_intervals.empty() || !r.answer.t_intervals.empty();
+  if (r.answer.s_intervals.empty() != r.answer.t_intervals.empty()) {
+    r.undecided_reasons.push_back("one projection found a meeting and the other none (a meeting set thinner than the strips)");
+    r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
+  }
+  r.counters = {{"box_tests", ps.tests + pt.tests}, {"strips", ps.strips + pt.strips}, {"point_tests", ps.points + pt.points}};
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace eccd

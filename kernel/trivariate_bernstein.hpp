@@ -1,0 +1,188 @@
+#pragma once
+// TriBern<T>: the ellipsoid function of independent motions,
+//   F(u, s, t) = det((u - 1) A(s) - u B(t)),
+// as a tensor-product polynomial in Bernstein form over [0, 1]^3, and the
+// subdivision it needs.
+//
+// Statement. Paper 001, section 4, "CCD for independent motions": A moves as
+// A(s), B as B(t) with s and t unrelated; A(s) and B(t) are separate iff
+// F(u, s, t) > 0 for some u in (0, 1) (for fixed s and t this is the static
+// test of kernel/ellipsoid_function.hpp, H = 4). F is built the way the
+// shared-parameter F(u, t) is (kernel/ellipsoid_function.hpp): with
+// f(λ; s, t) = det(λA(s) - B(t)) = sum_k g_k(s, t) λ^k, F = sum_k g_k (u - 1)^k u^(H-k)
+// and (u - 1)^k u^(H-k) = (-1)^k B^H_{H-k}(u) / C(H, k), so F's Bernstein
+// coefficient of B^H_j(u) is (-1)^(H-j) g_{H-j} / C(H, j).
+// g_k: det is multilinear in the columns (kernel/characteristic_polynomial.hpp),
+// g_k = (-1)^(H-k) sum_{|S| = k} det(C_S), C_S with the columns S from A(s) and
+// the others from B(t); by the Laplace expansion along the columns S,
+//   det(C_S) = sum_{|R| = k} (-1)^(ΣR + ΣS) det A(s)[R, S] det B(t)[R', S'],
+// a sum of products of a polynomial in s and one in t: in Bernstein form the
+// tensor (outer) product of the two coefficient vectors, each raised to the
+// largest degree that occurs. The minors are ring_det of the univariate
+// Bernstein entries of A(s) = N_A(s)^T Q_A N_A(s) (kernel/quadric.hpp,
+// moving_quadric_in), so nothing of the shared-parameter set-up is copied.
+// Sub-boxes: split_half(axis) halves the box along u (0), s (1) or t (2) by
+// de Casteljau at 1/2 (kernel/bernstein.hpp); the control points of a box
+// bound F on it (convex hull), so "every control point > 0" proves F > 0 on
+// the box and "every control point < 0" proves F < 0 on it.
+// Requirements on T: the ring operations and scalar_traits<T> (from_rational,
+// sign); with T = Rational everything is exact (the tests compare F(u, s, s)
+// with the shared F(u, t) at s = t exactly).
+#include "kernel/bernstein.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/quadric.hpp"
+#include "kernel/ring_determinant.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <utility>
+#include <vector>
+
+namespace eccd {
+
+template <class T>
+struct TriBern {
+  std::array<int, 3> n{};  // degrees in u, s, t
+  std::vector<T> c;        // c[(i (n[1]+1) + j) (n[2]+1) + k]
+  std::size_t index(int i, int j, int k) const { return (std::size_t(i) * (n[1] + 1) + j) * (n[2] + 1) + k; }
+  const T& at(int i, int j, int k) const { return c[index(i, j, k)]; }
+  T& at(int i, int j, int k) { return c[index(i, j, k)]; }
+  std::size_t stride(int axis) const { return axis == 2 ? 1 : axis == 1 ? std::size_t(n[2] + 1) : std::size_t(n[1] + 1) * (n[2] + 1); }
+
+  // Every control point strictly positive (+1), strictly negative (-1), or neither (0, also when a sign is uncertain).
+  int strict_sign() const {
+    const Sign s0 = sign(c[0]);
+    if (s0 != Sign::positive && s0 != Sign::negative) return 0;
+    for (const auto& x : c)
+      if (sign(x) != s0) return 0;
+    return s0 == Sign::positive ? 1 : -1;
+  }
+
+  // The two halves along `axis` (0 = u, 1 = s, 2 = t), by de Casteljau at 1/2.
+  std::pair<TriBern, TriBern> split_half(int axis, const T& half) const {
+    TriBern lo = *this, hi = *this;
+    const std::size_t st = stride(axis), len = std::size_t(n[axis]) + 1;
+    std::vector<T> line(len);
+    for (std::size_t base = 0; base < c.size(); ++base) {
+      // base is the first point of a line along axis iff its coordinate on the axis is 0
+      if ((base / st) % len != 0) continue;
+      for (std::size_t m = 0; m < len; ++m) line[m] = c[base + m * st];
+      std::vector<T> l = line;
+      keep_left(std::span<T>(l), half);
+      keep_right(std::span<T>(line), half);
+      for (std::size_t m = 0; m < len; ++m) {
+        lo.c[base + m * st] = l[m];
+        hi.c[base + m * st] = line[m];
+      }
+    }
+    return {std::move(lo), std::move(hi)};
+  }
+
+  // F with s fixed at x (degree 0 in s): a box of zero width in s.
+  TriBern at_s(const T& x) const {
+    TriBern r;
+    r.n = {n[0], 0, n[2]};
+    r.c.reserve(std::size_t(n[0] + 1) * (n[2] + 1));
+    std::vector<T> line(std::size_t(n[1]) + 1);
+    for (int i = 0; i <= n[0]; ++i)
+      for (int k = 0; k <= n[2]; ++k) {
+        for (int j = 0; j <= n[1]; ++j) line[j] = at(i, j, k);
+        r.c.push_back(bernstein_value(std::span<const T>(line), x));
+      }
+    return r;
+  }
+
+  // s and t exchanged: the same function with the roles of A and B's parameters swapped.
+  TriBern swap_st() const {
+    TriBern r;
+    r.n = {n[0], n[2], n[1]};
+    r.c.resize(c.size());
+    for (int i = 0; i <= n[0]; ++i)
+      for (int j = 0; j <= n[1]; ++j)
+        for (int k = 0; k <= n[2]; ++k) r.at(i, k, j) = at(i, j, k);
+    return r;
+  }
+
+  // F at one point (u, s, t): de Casteljau along t, then s, then u.
+  T operator()(const T& u, const T& s, const T& t) const {
+    Bern<T> cu;
+    for (int i = 0; i <= n[0]; ++i) {
+      Bern<T> cs;
+      for (int j = 0; j <= n[1]; ++j) {
+        std::vector<T> row(c.begin() + index(i, j, 0), c.begin() + index(i, j, 0) + n[2] + 1);
+        cs.b.push_back(bernstein_value(std::span<const T>(row), t));
+      }
+      cu.b.push_back(cs(s));
+    }
+    return cu(u);
+  }
+};
+
+// F(u, s, t) of a pair whose N_A, N_B are in Bernstein form (the first factor's
+// parameter is s, the second's t); H = 4 (ellipsoids, paper 001).
+template <class T, int H>
+TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p) {
+  const T zero_s = scalar_traits<T>::from_rational(mpq_class(0), p.qa[0][0]);
+  const T one_s = scalar_traits<T>::from_rational(mpq_class(1), p.qa[0][0]);
+  Bern<T> zero;
+  zero.b.push_back(zero_s);
+  Bern<T> one;
+  one.b.push_back(one_s);
+  const auto a = moving_quadric_in<Bern<T>, T, H>(p.qa, p.na, zero);
+  const auto b = moving_quadric_in<Bern<T>, T, H>(p.qb, p.nb, zero);
+  // minor of m on rows R, columns S (bit masks); the empty minor is 1
+  auto minor = [&](const std::array<std::array<Bern<T>, H>, H>& m, unsigned rows, unsigned cols) {
+    if (rows == 0) return one;
+    std::vector<std::vector<Bern<T>>> sub;
+    for (int i = 0; i < H; ++i) {
+      if (!(rows >> i & 1u)) continue;
+      sub.emplace_back();
+      for (int j = 0; j < H; ++j)
+        if (cols >> j & 1u) sub.back().push_back(m[i][j]);
+    }
+    return ring_det(sub, zero);
+  };
+  struct Term { int k; bool negative; Bern<T> in_s, in_t; };
+  std::vector<Term> terms;
+  int ds = 0, dt = 0;
+  const unsigned all = (1u << H) - 1;
+  for (unsigned S = 0; S <= all; ++S) {
+    const int k = std::popcount(S);
+    for (unsigned R = 0; R <= all; ++R) {
+      if (std::popcount(R) != k) continue;
+      int parity = (H - k);
+      for (int i = 0; i < H; ++i) parity += (R >> i & 1u ? i : 0) + (S >> i & 1u ? i : 0);
+      Term tm{k, parity % 2 != 0, minor(a, R, S), minor(b, all & ~R, all & ~S)};
+      ds = std::max(ds, tm.in_s.degree());
+      dt = std::max(dt, tm.in_t.degree());
+      terms.push_back(std::move(tm));
+    }
+  }
+  // g_k(s, t) as bivariate Bernstein nets (index [p][q]: s, t)
+  std::vector<std::vector<T>> g(H + 1, std::vector<T>(std::size_t(ds + 1) * (dt + 1), zero_s));
+  for (const auto& tm : terms) {
+    const Bern<T> x = elevate(tm.in_s, ds - tm.in_s.degree());
+    const Bern<T> y = elevate(tm.in_t, dt - tm.in_t.degree());
+    auto& gk = g[tm.k];
+    for (int p = 0; p <= ds; ++p)
+      for (int q = 0; q <= dt; ++q) {
+        const T v = x.b[p] * y.b[q];
+        T& cell = gk[std::size_t(p) * (dt + 1) + q];
+        if (tm.negative) cell = cell - v;
+        else cell = cell + v;
+      }
+  }
+  TriBern<T> F;
+  F.n = {H, ds, dt};
+  F.c.assign(std::size_t(H + 1) * (ds + 1) * (dt + 1), zero_s);
+  auto choose = [](int n, int r) { long v = 1; for (int i = 1; i <= r; ++i) v = v * (n - r + i) / i; return v; };
+  for (int j = 0; j <= H; ++j) {
+    const T w = scalar_traits<T>::from_rational(mpq_class((H - j) % 2 ? -1 : 1, choose(H, j)), zero_s);
+    for (int p = 0; p <= ds; ++p)
+      for (int q = 0; q <= dt; ++q) F.at(j, p, q) = w * g[H - j][std::size_t(p) * (dt + 1) + q];
+  }
+  return F;
+}
+
+}  // namespace eccd

@@ -1,0 +1,210 @@
+// Independent motions (issue 20 point 3; scene-format.md "Independent
+// motions"; paper 001 section 4): the reader's "parameters" key and the
+// answer of such scenes, F(u, s, t) checked exactly against the shared F(u, t)
+// on the diagonal s = t, the double pipeline against the analytic answers of
+// the sphere cases (cases/independent/make_independent.py), and the refusals
+// of every pipeline that treats one shared t.
+#include "api/answer_difference.hpp"
+#include "api/solve.hpp"
+#include "io/scene_reader.hpp"
+#include "io/solution_json.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/ellipsoid_function.hpp"
+#include "kernel/trivariate_bernstein.hpp"
+#include "tests/app/cli_run.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace eccd;
+
+namespace {
+std::string indep(const std::string& name) { return std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json"; }
+
+std::string scene_text(const std::string& parameters, const std::string& answer = "") {
+  std::string t = R"({"format": "ellipse-ccd-scene/1", "name": "x", "dim": 3,)";
+  if (!parameters.empty()) t += R"( "parameters": )" + parameters + ",";
+  t += R"( "a": {"shape": {"semi_axes": ["1", "1", "1"]}, "motion": {"type": "static"}},
+           "b": {"shape": {"semi_axes": ["1", "1", "1"]}, "motion": {"type": "static"}})";
+  if (!answer.empty()) t += R"(, "answer": )" + answer;
+  return t + "}";
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_scene(text, "f.json");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+double end(const std::pair<Instant, Instant>& iv, int k) { return k ? iv.second.value : iv.first.value; }
+}  // namespace
+
+TEST_CASE("the reader takes \"parameters\": \"shared\" (default) or \"independent\" and nothing else", "[independent]") {
+  CHECK_FALSE(parse_scene(scene_text(""), "f.json").independent);
+  CHECK_FALSE(parse_scene(scene_text(R"("shared")"), "f.json").independent);
+  CHECK(parse_scene(scene_text(R"("independent")"), "f.json").independent);
+  for (const char* bad : {R"("Independent")", R"("both")", "1", "true", "null"}) {
+    const std::string e = error_of(scene_text(bad));
+    CHECK(e.find("f.json: /parameters: parameters must be \"shared\"") == 0);
+  }
+}
+
+TEST_CASE("an independent scene's answer is collides, s_intervals, t_intervals", "[independent]") {
+  const std::string iv = R"([[{"approx": "0.25", "lo": null, "hi": null}, {"approx": "0.5", "lo": "1/2", "hi": "1/2"}]])";
+  Scene s = parse_scene(scene_text(R"("independent")", R"({"collides": true, "s_intervals": )" + iv + R"(, "t_intervals": )" + iv + "}"), "f.json");
+  REQUIRE(s.answer);
+  CHECK(s.answer->independent);
+  REQUIRE(s.answer->s_intervals.size() == 1);
+  CHECK(s.answer->t_intervals[0].second.certified());
+  // written and read back the same
+  const Answer back = answer_from_json(answer_to_json(*s.answer), "g.json", "");
+  CHECK(back.independent);
+  CHECK(answer_difference(back, *s.answer).agrees);
+  // keys of the other kind, and inconsistent lists, are errors at their place
+  CHECK(error_of(scene_text(R"("independent")", R"({"collides": true, "intervals": []})")).find("/answer/intervals: \"intervals\" does not apply to independent motions") !=
+        std::string::npos);
+  CHECK(error_of(scene_text("", R"({"collides": true, "s_intervals": )" + iv + "}")).find("/answer/s_intervals: \"s_intervals\" applies to independent motions only") !=
+        std::string::npos);
+  CHECK(error_of(scene_text(R"("independent")", R"({"collides": false, "t_intervals": )" + iv + "}")).find("collides is false but t_intervals is not empty") !=
+        std::string::npos);
+  CHECK(error_of(scene_text(R"("independent")", R"({"collides": true, "s_intervals": []})")).find("collides is true but s_intervals is empty") !=
+        std::string::npos);
+}
+
+TEST_CASE("answer_difference matches s- and t-intervals like intervals", "[independent]") {
+  Answer a;
+  a.independent = true;
+  a.collides = true;
+  a.s_intervals = {{rounded_instant(0.25), rounded_instant(0.5)}};
+  a.t_intervals = {{rounded_instant(0.1), rounded_instant(0.2)}};
+  Answer b = a;
+  CHECK(answer_difference(a, b).agrees);
+  b.t_intervals[0].second = rounded_instant(0.3);
+  const AnswerDifference d = answer_difference(a, b);
+  CHECK_FALSE(d.agrees);
+  CHECK(d.endpoints_off == 1);
+  REQUIRE(d.differences.size() == 1);
+  CHECK(d.differences[0].find("t-interval 1 end off by") == 0);
+  Answer shared;
+  shared.collides = true;
+  CHECK_FALSE(answer_difference(a, shared).agrees);  // different kinds never agree
+}
+
+TEST_CASE("F(u, s, t) on the diagonal s = t is the shared F(u, t), exactly", "[independent]") {
+  for (const char* name : {"spheres-cross", "ellipsoids-cross"}) {
+    Scene sc = read_scene(indep(name));
+    sc.independent = false;
+    const PreparedPair<4> p = prepare_pair<4>(sc);
+    const Rational one(1);
+    const TriBern<Rational> F = independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(p, one));
+    const BiBern<Rational> G = ellipsoid_function(characteristic_bernstein<Rational, 4>(p, false, one), one);
+    for (const Rational u : {Rational(1, 7), Rational(1, 2), Rational(5, 6)})
+      for (const Rational t : {Rational(0), Rational(1, 3), Rational(3, 4), Rational(1)}) CHECK(F(u, t, t) == G(u, t));
+    // and off the diagonal it is not symmetric in general: F depends on s and t separately
+    CHECK(F.n[1] > 0);
+    CHECK(F.n[2] > 0);
+  }
+}
+
+TEST_CASE("double: the sphere cases' s- and t-intervals within 1e-9 of the analytic ends", "[independent]") {
+  SolveOptions o;
+  o.arith = parse_arithmetic("double");
+  const double r5 = std::sqrt(5.0);
+  struct Case { const char* name; double s0, s1, t0, t1; };
+  for (const Case& c : {Case{"spheres-cross", 0.5 - r5 / 12, 0.5 + r5 / 12, 0.5 - r5 / 8, 0.5 + r5 / 8},
+                        Case{"spheres-end", 1.0 / 3, 2.0 / 3, 0.0, (r5 - 1) / 8}}) {
+    INFO(c.name);
+    const Solution s = solve(read_scene(indep(c.name)), o);
+    CHECK(s.answer.independent);
+    CHECK(s.answer.collides);
+    CHECK(s.answer.undecided.empty());
+    REQUIRE(s.answer.s_intervals.size() == 1);
+    REQUIRE(s.answer.t_intervals.size() == 1);
+    CHECK(std::abs(end(s.answer.s_intervals[0], 0) - c.s0) <= 1e-9);
+    CHECK(std::abs(end(s.answer.s_intervals[0], 1) - c.s1) <= 1e-9);
+    CHECK(std::abs(end(s.answer.t_intervals[0], 0) - c.t0) <= 1e-9);
+    CHECK(std::abs(end(s.answer.t_intervals[0], 1) - c.t1) <= 1e-9);
+    CHECK_FALSE(s.answer.s_intervals[0].first.certified());  // floating: no bracket is claimed
+  }
+}
+
+namespace {
+// [lo, hi] holds a root of p (a sign change or a zero at an end), and only roots in [a, b]
+void check_bracket(const Instant& i, const RPoly& p, const Rational& a, const Rational& b) {
+  REQUIRE(i.certified());
+  CHECK(*i.lo >= a);
+  CHECK(*i.hi <= b);
+  CHECK(sgn(p(*i.lo)) * sgn(p(*i.hi)) <= 0);
+  CHECK(*i.hi - *i.lo <= Rational(1, 1000000000));
+}
+void check_exact(const Instant& i, const Rational& x) {
+  REQUIRE(i.certified());
+  CHECK(*i.lo <= x);
+  CHECK(x <= *i.hi);
+}
+}  // namespace
+
+TEST_CASE("exact: the sphere cases' brackets contain the analytic ends", "[independent]") {
+  SolveOptions o;  // exact
+  {
+    const Solution s = solve(read_scene(indep("spheres-cross")), o);
+    CHECK(s.certified);
+    REQUIRE(s.answer.s_intervals.size() == 1);
+    REQUIRE(s.answer.t_intervals.size() == 1);
+    const RPoly ps(std::vector<Rational>{31, -144, 144}), pt(std::vector<Rational>{11, -64, 64});
+    check_bracket(s.answer.s_intervals[0].first, ps, Rational(0), Rational(1, 2));  // 1/2 - sqrt(5)/12
+    check_bracket(s.answer.s_intervals[0].second, ps, Rational(1, 2), Rational(1));
+    check_bracket(s.answer.t_intervals[0].first, pt, Rational(0), Rational(1, 2));  // 1/2 - sqrt(5)/8
+    check_bracket(s.answer.t_intervals[0].second, pt, Rational(1, 2), Rational(1));
+  }
+  {
+    const Solution s = solve(read_scene(indep("spheres-end")), o);
+    REQUIRE(s.answer.s_intervals.size() == 1);
+    REQUIRE(s.answer.t_intervals.size() == 1);
+    check_exact(s.answer.s_intervals[0].first, Rational(1, 3));
+    check_exact(s.answer.s_intervals[0].second, Rational(2, 3));
+    check_exact(s.answer.t_intervals[0].first, Rational(0));
+    check_bracket(s.answer.t_intervals[0].second, RPoly(std::vector<Rational>{-1, 4, 16}), Rational(0), Rational(1, 2));  // (sqrt(5) - 1)/8
+  }
+}
+
+TEST_CASE("double and MPFR: ellipsoids on parallel paths never meet", "[independent]") {
+  for (const char* arith : {"double", "mpfr:128"}) {
+    SolveOptions o;
+    o.arith = parse_arithmetic(arith);
+    const Solution s = solve(read_scene(indep("ellipsoids-apart")), o);
+    CHECK_FALSE(s.answer.collides);
+    CHECK(s.answer.undecided.empty());
+    CHECK(s.answer.s_intervals.empty());
+  }
+}
+
+TEST_CASE("independent scenes: the shared-parameter commands refuse them with exit 3", "[independent][cli]") {
+  using namespace eccd::clitest;
+  const std::string f = q(indep("spheres-end"));
+  Run exact = run_eccd("solve " + q(indep("ellipsoids-cross")) + " --arith exact");  // not two balls
+  CHECK(exact.code == 3);
+  CHECK(exact.err.find("exact arithmetic answers independent motions only for two balls") != std::string::npos);
+  Run certified = run_eccd("solve " + f + " --arith certified");
+  CHECK(certified.code == 3);
+  CHECK(certified.err.find("use --arith double or mpfr:BITS") != std::string::npos);
+  Run cert = run_eccd("certify " + f + " --out /dev/null");
+  CHECK(cert.code == 3);
+  CHECK(cert.err.find("independent motions") != std::string::npos);
+  Run plot = run_eccd("plot " + f + " --arith double");
+  CHECK(plot.code == 3);
+  CHECK(plot.err.find("independent motions") != std::string::npos);
+  // the JSON of a double solve carries the independent answer's keys and no shared ones
+  Run ok = run_eccd("solve " + q(indep("ellipsoids-apart")) + " --arith double --json");
+  REQUIRE(ok.code == 0);
+  const auto j = nlohmann::json::parse(ok.out);
+  CHECK(j["parameters"] == "independent");
+  CHECK(j["s_intervals"].is_array());
+  CHECK_FALSE(j.contains("intervals"));
+  CHECK_FALSE(j.contains("first_contact"));
+}
