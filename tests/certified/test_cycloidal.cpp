@@ -109,7 +109,7 @@ TEST_CASE("003 Example 1, certified: proved brackets, containing the paper's pri
   CHECK(*s.answer->contacts[1].hi == *c.answer.contacts[1].hi);
 }
 
-TEST_CASE("cycloidal: a true touch (a double root of Δ) is never claimed; it is undecided with its proved bound",
+TEST_CASE("cycloidal: a true touch (a double root of Δ) is never claimed, it is undecided with its proved bound",
           "[cycloidal][certified]") {
   // A: x²/4 + y² <= 1 translated to (-1 + 2t, 3), not turning; B: x² + y²/4 <= 1 fixed. At t = 1/2 A's lowest point
   // (0, 2) is B's highest: they touch externally there and are separate before and after (Δ has a double root).

@@ -260,7 +260,7 @@ TEST_CASE("missing required keys are named", "[scene_reader]") {
 TEST_CASE("unknown keys are named, with the allowed ones", "[scene_reader]") {
   json j = base2d();
   j["colour"] = "red";
-  expect_error(j, "/colour", "unknown key \"colour\" in a scene; allowed keys: format, name, dim, a, b, note, answer");
+  expect_error(j, "/colour", "unknown key \"colour\" in a scene; allowed keys: format, name, dim, a, b, note, parameters, answer");  // parameters: issue 20 (scene-format.md, independent motions)
   j = base2d();
   j["a"]["velocity"] = "1";
   expect_error(j, "/a/velocity", "unknown key \"velocity\" in object a; allowed keys: shape, motion");
