@@ -1627,18 +1627,24 @@ def power_bernstein_pair(data, dim):
     return None if bern is None else (ref, bern)
 
 
-def coef_summary(data):
-    """One computed paragraph: own-basis vs common-basis medians of the power and Bernstein double pipelines."""
-    parts = []
+def coef_pairs(data):
+    """Per dimension with a power/Bernstein double pair and measured coefficient errors: (dim, ref, bern,
+    (own, common, Δ/F medians of ref), (the same of bern)); the common loop of coef_summary and coef_explanation."""
     for dim in data.dims:
         pair = power_bernstein_pair(data, dim)
         if pair is None:
             continue
         ref, bern = pair
-        po, pc, pd = coef_medians(data, dim, ref)
-        bo, bc, bd = coef_medians(data, dim, bern)
-        if po is None or bo is None:
+        pm, bm = coef_medians(data, dim, ref), coef_medians(data, dim, bern)
+        if pm[0] is None or bm[0] is None:
             continue
+        yield dim, ref, bern, pm, bm
+
+
+def coef_summary(data):
+    """One computed paragraph: own-basis vs common-basis medians of the power and Bernstein double pipelines."""
+    parts = []
+    for dim, ref, bern, (po, pc, pd), (bo, bc, bd) in coef_pairs(data):
         dname = "Δ" if dim == 2 else "F(u,t)"
         same = held_basis(data.pinfo[ref]) == held_basis(data.pinfo[bern])
         txt = (f"{dim}D median in each pipeline's own basis {fmt_err(po)} ({ref}, {held_basis(data.pinfo[ref])}) vs "
@@ -1806,15 +1812,7 @@ def section_bernstein(data):
 def coef_explanation(data):
     """Computed sentences on the apparent contradiction between coefficient and Δ errors (power vs Bernstein)."""
     out = []
-    for dim in data.dims:
-        pair = power_bernstein_pair(data, dim)
-        if pair is None:
-            continue
-        ref, bern = pair
-        po, pc, pd = coef_medians(data, dim, ref)
-        bo, bc, bd = coef_medians(data, dim, bern)
-        if None in (po, bo):
-            continue
+    for dim, ref, bern, (po, pc, pd), (bo, bc, bd) in coef_pairs(data):
         same = held_basis(data.pinfo[ref]) == held_basis(data.pinfo[bern])
         if same and (pc is None or bc is None):
             pc, bc = po, bo  # one basis already: the own-basis error is the common-basis error
