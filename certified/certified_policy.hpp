@@ -21,7 +21,9 @@
 // stronger arithmetic: the same policy over MPFI intervals of higher
 // precision, then exact rationals (the ladder is certified/ladder.hpp's
 // run_certified). With no Escalate, the answer is certified: brackets are
-// dyadic rationals that provably hold one root each.
+// dyadic rationals that provably hold one root each. Isolation and refinement
+// ask the running thread's deadline at every piece and every bisection step
+// (check_deadline, kernel/budget.hpp): the ladder gives each rung a budget.
 // Requirements on T: Interval or MpfiInterval — scalar_traits<T> whose sign()
 // is certain-or-uncertain and whose operations enclose exact results, plus
 // interval_hull(lo, hi, like) and exact_point(x) (number/interval.hpp,
@@ -32,6 +34,7 @@
 #include "kernel/answer.hpp"
 #include "kernel/basis_build.hpp"
 #include "kernel/bernstein.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/pipeline_policy.hpp"
 #include "kernel/polynomial.hpp"
 
@@ -110,8 +113,16 @@ struct CertifiedPolicy {
     return s;
   }
   Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
+  // Two brackets from neighbouring pieces of the subdivision may share their
+  // end point m (each root lies in the OPEN bracket, and the split point m had
+  // a certain non-zero value, isolate): m itself is then strictly between the
+  // two roots, and the only dyadic there (simplest_dyadic_between needs a < b).
   T sample_between(const Root* l, const Root* r) const {
-    return of(simplest_dyadic_between(l ? l->hi : Rational(0), r ? r->lo : Rational(1)));
+    const Rational a = l ? l->hi : Rational(0), b = r ? r->lo : Rational(1);
+    if (a < b) return of(simplest_dyadic_between(a, b));
+    T m = of(a);
+    if (!exact_point(m)) throw Escalate("a sample point between two adjacent root brackets is not representable");
+    return m;
   }
   // Point intervals only (0, 1 and dyadic samples): their exact value.
   Instant instant_at(const T& t) const {
@@ -137,6 +148,7 @@ struct CertifiedPolicy {
   // coefficients (the values at a and b) have certain non-zero signs.
   void isolate(const Bern<T>& q, const Rational& a, const Rational& b, int depth, std::vector<Root>& out) const {
     ++pieces;
+    check_deadline("certified root isolation");  // the rung's budget (certified/ladder.hpp)
     // An uncertain count (a coefficient whose interval holds 0) proves nothing: split.
     const SignVariations v = sign_variations(q.b);
     if (v.is(0)) return;
@@ -172,6 +184,7 @@ struct CertifiedPolicy {
     const Sign sa = eccd::sign(q.b.front());
     Rational limit(mpz_class(1), mpz_class(1) << refine_bits);
     while (b - a > limit) {
+      check_deadline("certified root refinement");
       Rational m = (a + b) / 2;
       Sign sm = eccd::sign(bernstein_at(*whole, m));
       if (sm != Sign::positive && sm != Sign::negative) break;  // keep the bracket we have

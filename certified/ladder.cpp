@@ -3,6 +3,7 @@
 
 #include "certified/certified_policy.hpp"
 #include "exact/cd_disc_exact.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/ccd_projection.hpp"
 #include "kernel/cycloidal_cd_disc.hpp"
 #include "number/interval.hpp"
@@ -26,12 +27,18 @@ Solution& named(Solution& s, const char* basis, bool certified) {
 }
 
 // One rung: the pipeline in interval type T (Interval or MpfiInterval) with
-// subdivision down to 2^-max_depth. A Solution if it decided everything;
-// otherwise nothing, with `reason` set and `multiple_root` if it met one.
+// subdivision down to 2^-max_depth, within `budget_s` seconds (a deadline
+// nested in the caller's: kernel/budget.hpp). A Solution if it decided
+// everything; otherwise nothing, with `reason` set, `multiple_root` if it met
+// one and `out_of_budget` if its deadline passed. The caller's own deadline
+// passing is not this rung's business: BudgetExhausted goes on up.
 template <class T, int N>
 std::optional<Solution> try_certified_rung(const PreparedPair<N>& p, Variant variant, bool first_contact, const T& like,
-                                           int max_depth, std::string& reason, bool& multiple_root) {
+                                           int max_depth, double budget_s, std::string& reason, bool& multiple_root,
+                                           bool& out_of_budget) {
   try {
+    ScopedDeadline rung_deadline(budget_s);
+    if (deadline_passed()) throw BudgetExhausted("certified rung: " + deadline_reason());  // a budget already spent
     CertifiedPolicy<T> pol(like);
     pol.max_depth = max_depth;
     PipelineResult<T> r = projection_pipeline(to_arithmetic<T, N>(p, like), pol, variant, first_contact);
@@ -44,9 +51,15 @@ std::optional<Solution> try_certified_rung(const PreparedPair<N>& p, Variant var
   } catch (const Escalate& e) {
     reason = e.what();
     multiple_root = e.kind == Escalate::multiple_root;
+  } catch (const BudgetExhausted& e) {
+    if (deadline_passed()) throw;  // the caller's deadline (the rung's scope has ended): the whole run is over
+    reason = std::string("rung budget exhausted (") + e.what() + ")";
+    out_of_budget = true;
   }
   return std::nullopt;
 }
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 }  // namespace
 
@@ -58,36 +71,65 @@ Solution run_exact(const PreparedPair<N>& p, Variant variant, bool first_contact
 }
 
 template <int N>
-Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_rungs, Variant variant, bool first_contact) {
-  auto start = std::chrono::steady_clock::now();
+Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_rungs, Variant variant, bool first_contact,
+                       const LadderBudget& budget) {
+  const auto start = Clock::now();
   std::vector<Escalation> escalations;
   auto finish = [&](Solution s, const std::string& rung) {
     s.escalations = escalations;
     s.decided_in = rung;
     s.certified = true;
-    s.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+    s.time_ms = seconds_since(start) * 1e3;
     return s;
   };
   std::string reason;
-  bool multiple_root = false;
-  if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, reason, multiple_root))
+  bool multiple_root = false, out_of_budget = false, not_converging = false;
+  // Rung 1: intervals of doubles, within the fixed budget B_I.
+  auto t = Clock::now();
+  if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, budget.interval_s, reason,
+                                               multiple_root, out_of_budget))
     return finish(*s, "interval");
-  escalations.push_back({"interval", reason});
+  const double interval_s = seconds_since(t);
+  escalations.push_back({"interval", reason, interval_s * 1e3, budget.interval_s * 1e3});
+  // The MPFI rungs share one budget: mpfi_factor x the interval rung's time
+  // (what was spent before them), so that all of them together cost at most
+  // that much; each rung gets what is left.
+  const double mpfi_total_s = budget.mpfi_factor * interval_s;
+  double mpfi_spent_s = 0;
+  std::string previous_reason = reason;
   for (int bits : mpfi_rungs) {
-    if (multiple_root) {  // no precision separates a multiple root: straight to exact
-      escalations.push_back({"mpfi:" + std::to_string(bits), "skipped: the rung below met a multiple root"});
-      break;
+    std::string rung = "mpfi:" + std::to_string(bits);
+    const double left_s = mpfi_total_s - mpfi_spent_s;
+    // Not converging: straight to exact.
+    std::string skip;
+    if (multiple_root) skip = "skipped: the rung below met a multiple root (no precision separates it)";
+    else if (not_converging) skip = "skipped: the rung below was not converging";
+    else if (out_of_budget) skip = "skipped: the rung below ran out of its budget";
+    else if (left_s <= 0) skip = "skipped: the MPFI budget (" + std::to_string(budget.mpfi_factor).substr(0, 4) +
+                                 " x the interval rung's time) is spent";
+    if (!skip.empty()) {
+      escalations.push_back({rung, skip, 0, 0});
+      continue;
     }
     // Deeper subdivision at higher precision (roots closer than 2^-48 can be
     // told apart when the coefficients are known to `bits` bits), but not so
     // deep that a true multiple root (every touch scene) costs much before
     // the exact rung: 2^-64 at the default 256 bits.
     int depth = std::clamp(bits / 4, 48, 256);
-    std::string rung = "mpfi:" + std::to_string(bits);
+    t = Clock::now();
     if (auto s = try_certified_rung<MpfiInterval, N>(p, variant, first_contact, MpfiInterval(Rational(0), bits), depth,
-                                                     reason, multiple_root))
+                                                     left_s, reason, multiple_root, out_of_budget))
       return finish(*s, rung);
-    escalations.push_back({rung, reason});
+    const double rung_s = seconds_since(t);
+    mpfi_spent_s += rung_s;
+    // The same sign uncertain at the same place after a precision raise: more
+    // bits will not decide it either.
+    if (reason == previous_reason && !out_of_budget) {
+      reason += " (the same as the rung below: not converging)";
+      not_converging = true;
+    }
+    escalations.push_back({rung, reason, rung_s * 1e3, left_s * 1e3});
+    previous_reason = reason;
   }
   return finish(run_exact<N>(p, variant, first_contact), "exact");
 }
@@ -123,7 +165,7 @@ Solution run_certified_cycloidal(const Scene& scene, const std::vector<int>& mpf
 
 template Solution run_exact<3>(const PreparedPair<3>&, Variant, bool);
 template Solution run_exact<4>(const PreparedPair<4>&, Variant, bool);
-template Solution run_certified<3>(const PreparedPair<3>&, const std::vector<int>&, Variant, bool);
-template Solution run_certified<4>(const PreparedPair<4>&, const std::vector<int>&, Variant, bool);
+template Solution run_certified<3>(const PreparedPair<3>&, const std::vector<int>&, Variant, bool, const LadderBudget&);
+template Solution run_certified<4>(const PreparedPair<4>&, const std::vector<int>&, Variant, bool, const LadderBudget&);
 
 }  // namespace eccd

@@ -4,10 +4,30 @@
 // arithmetic, up a ladder of rungs — intervals of doubles, then MPFI
 // intervals at each precision of `mpfi_rungs` (increasing) — and, where every
 // rung leaves a sign uncertain (Escalate, certified/certified_policy.hpp, or
-// an undecided instant), the exact pipeline (exact/cd_disc_exact.hpp). A
-// multiple root (every touch scene) skips the remaining MPFI rungs: no
-// precision separates it. The Solution is certified whichever rung decided;
-// decided_in names that rung, escalations why each lower rung gave up.
+// an undecided instant), the exact pipeline (exact/cd_disc_exact.hpp). The
+// Solution is certified whichever rung decided; decided_in names that rung,
+// escalations why each lower rung gave up, its time and its budget.
+//
+// Cost guarantee (issue 18). Let I be the time the interval rung took, X the
+// time of the exact pipeline on the same prepared pair (run_exact below: what
+// `--arith exact` runs after preparing the scene), and δ the longest stretch
+// of one rung between two looks at its deadline (one polynomial product or
+// one isolation piece in that rung's arithmetic; kernel/budget.hpp). By
+// construction (each rung runs under a ScopedDeadline nested in the caller's):
+//   - the interval rung has the fixed budget B_I (LadderBudget::interval_s), so
+//     I <= B_I + δ;
+//   - all MPFI rungs together have the budget f·I (LadderBudget::mpfi_factor,
+//     f = 1: at most what was spent before them), each rung what is left; a
+//     rung that meets a multiple root, runs out of budget, or gives up with the
+//     same reason as the rung below (the same sign still uncertain after the
+//     precision raise: not converging) sends the ladder straight to exact;
+//   - the exact rung is run_exact itself, once.
+// Hence, whichever rung decides,
+//     time(certified) <= X + (1 + f)·I + c  <=  X + 2·min(I, B_I + δ) + c  (f = 1),
+// with c the ladder's own overhead plus δ per MPFI rung tried. In words: at
+// most exact plus twice the interval rung, which is itself capped. A rung that
+// decides is never cut short by the guarantee (its answer is certified), and
+// the caller's deadline still ends the whole run (BudgetExhausted).
 // Requirements: a prepared pair (kernel/prepared_scene.hpp), N = 3 (2D) or 4 (3D).
 #include "certified/solution.hpp"
 #include "kernel/prepared_scene.hpp"
@@ -19,9 +39,15 @@
 
 namespace eccd {
 
+// The budgets of the rungs (see "Cost guarantee" above).
+struct LadderBudget {
+  double interval_s = 1.0;   // B_I: the interval rung's budget (seconds; <= 0: none)
+  double mpfi_factor = 1.0;  // f: all MPFI rungs together at most f x the interval rung's time
+};
+
 template <int N>
 Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_rungs, Variant variant,
-                       bool first_contact);
+                       bool first_contact, const LadderBudget& budget = {});
 
 // A cycloidal scene (2D, not rational: kernel/cycloidal_cd_disc.hpp) in MPFI
 // interval arithmetic at each precision of mpfi_rungs (128 if none) until

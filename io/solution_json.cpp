@@ -74,7 +74,7 @@ json solution_to_json(const Solution& s) {
     j["escalated"] = !s.escalations.empty();
     json esc = json::array();
     for (const auto& e : s.escalations) {
-      esc.push_back({{"rung", e.rung}, {"reason", e.reason}});
+      esc.push_back({{"rung", e.rung}, {"reason", e.reason}, {"spent_ms", e.spent_ms}, {"budget_ms", e.budget_ms}});
       // the last rung that was tried, and why it gave up
       if (e.reason.rfind("skipped", 0) != 0) j["escalation_reason"] = e.rung + ": " + e.reason;
     }
@@ -206,7 +206,9 @@ Solution solution_from_json(const json& j, const std::string& label) {
   s.setup_ms = number("setup_ms", 0);
   s.decided_in = text("decided_in");
   for (const auto& e : list("escalations"))
-    if (e.is_object()) s.escalations.push_back({e.value("rung", std::string()), e.value("reason", std::string())});
+    if (e.is_object())
+      s.escalations.push_back({e.value("rung", std::string()), e.value("reason", std::string()), e.value("spent_ms", 0.0),
+                               e.value("budget_ms", 0.0)});
   return s;
 }
 
