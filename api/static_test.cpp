@@ -9,6 +9,7 @@
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
 #include "kernel/quartic_status.hpp"
+#include "number/interval.hpp"
 #include "number/mpfi_interval.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/rational_traits.hpp"
@@ -45,8 +46,14 @@ Status scene_status(const MovingPair<T, N>& m, const T& t) {
 
 template <int N>
 Status scene_status_in(const Scene& scene, const mpq_class& t, const Arithmetic& arith) {
-  if (arith.kind == Arithmetic::Exact || arith.kind == Arithmetic::Certified)
-    return scene_status<Rational, N>(to_arithmetic<Rational, N>(prepare_pair<N>(scene), Rational(1)), Rational(t));
+  if (arith.kind == Arithmetic::Exact || arith.kind == Arithmetic::Certified) {
+    PreparedPair<N> p = prepare_pair<N>(scene);
+    if (arith.kind == Arithmetic::Certified) {  // intervals of doubles enclosing the exact motions first
+      Status s = scene_status<Interval, N>(to_arithmetic<Interval, N>(p, Interval(0)), interval_of(Rational(t)));
+      if (s != Status::uncertain) return s;
+    }
+    return scene_status<Rational, N>(to_arithmetic<Rational, N>(p, Rational(1)), Rational(t));
+  }
   auto rounded = [&](const auto& like) {
     using T = std::decay_t<decltype(like)>;
     std::string trouble;
@@ -200,7 +207,11 @@ Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>
   check_shape<N>(axes_b, pose_b, "b");
   switch (arith.kind) {
     case Arithmetic::Double: return double_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
-    case Arithmetic::Exact: case Arithmetic::Certified: return exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    case Arithmetic::Exact: return exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    case Arithmetic::Certified: {  // the filtered predicate: double with its error bound, exact only when it cannot decide
+      Status s = double_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+      return s != Status::uncertain ? s : exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    }
     default: throw std::invalid_argument("static test from two poses: arithmetic " + arith.name() + " is not offered (double or exact)");
   }
 }

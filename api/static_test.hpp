@@ -22,10 +22,16 @@
 //    otherwise. It allocates nothing.
 // Scene at t: the scene's motions at t (kernel/prepared_scene.hpp for exact;
 // the scene's numbers rounded for double and MPFR, as `eccd solve` does);
-// certified gives the exact status (one instant: no ladder to climb).
+// Certified (issue 18 point 5) is a filtered predicate that gives the exact
+// status: first the double test — from two poses the Bounded<double> test
+// above (its running error bound makes a status a proof about the doubles
+// given), at a scene's instant the same rules in intervals of doubles that
+// enclose the exact motions (number/interval.hpp, to_arithmetic) — and the
+// exact test only where that is uncertain (every touching pair, pairs within
+// the error bound of touching). One instant: no ladder to climb.
 // Errors: std::invalid_argument for a non-positive or non-finite semi-axis, a
 // pose that is not affine or is singular, an arithmetic a test has not (the
-// poses: double and exact), a cycloidal motion in exact arithmetic.
+// poses: double, exact and certified), a cycloidal motion in exact arithmetic.
 #include "api/options.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/scene.hpp"
@@ -48,7 +54,7 @@ struct Ellipsoid {
 // The status of the scene's two objects at instant t (0 <= t <= 1) in the arithmetic.
 Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith = Arithmetic::exact());
 
-// The status of two shapes at two poses: arith double (default) or exact.
+// The status of two shapes at two poses: arith double (default), exact or certified (double filter, then exact).
 Status static_status(const Ellipse& a, const Ellipse& b, const Arithmetic& arith = Arithmetic::double_precision());
 Status static_status(const Ellipsoid& a, const Ellipsoid& b, const Arithmetic& arith = Arithmetic::double_precision());
 
