@@ -87,7 +87,62 @@ SET_TARGETS = [
     dict(name="Certified mode, degree-4 3D generated set: median cost against double",
          group="certified-set-3d-deg4", limit_ratio=3.0,
          anchor="issue 6: a certified mode that costs at most 3x the double pipeline (the approach of CGAL's filtered predicates)"),
+    # Issue 18: the ladder's cost guarantee, certified / exact (base "exact"); the table adds certified / (exact +
+    # 2 x the interval rung), the bound of certified/ladder.hpp ("Cost guarantee"), at most 1 up to a constant.
+    dict(name="Certified ladder against exact on short overlaps, near misses and grazes: median cost",
+         group="certified-cost", limit_ratio=2.0, base="exact",
+         anchor="issue 18: the certified ladder never costs much more than exact (guarantee: exact + 2 x the interval rung + c)"),
 ]
+
+
+# Targets on the ratio of one row to another of the same group (medians, same process).
+RATIO_TARGETS = [
+    dict(name="Certified static test from two poses, 2D, against the double one",
+         key="static-certified-2d/certified static_status (API, two poses)",
+         base="static-certified-2d/double static_status (API, two poses)", limit_ratio=1.5,
+         anchor="issue 18: the certified static test costs at most 1.5x the double static test on random pairs"),
+    dict(name="Certified static test from two poses, 3D, against the double one",
+         key="static-certified-3d/certified static_status (API, two poses)",
+         base="static-certified-3d/double static_status (API, two poses)", limit_ratio=1.5,
+         anchor="issue 18: the certified static test costs at most 1.5x the double static test on random pairs"),
+]
+
+
+def ratio_verdicts(summ):
+    rows = {r["key"]: r for g in summ["groups"] for r in g["rows"] if "median_cpu_ns" in r}
+    out = []
+    for t in RATIO_TARGETS:
+        v = dict(t)
+        r, b = rows.get(t["key"]), rows.get(t["base"])
+        if not r or not b:
+            v["status"] = "not measured"
+        else:
+            v["ns"], v["base_ns"] = r["median_cpu_ns"], b["median_cpu_ns"]
+            v["ratio"] = v["ns"] / v["base_ns"]
+            v["status"] = "met" if v["ratio"] <= t["limit_ratio"] else "missed"
+            v["result"] = r.get("result")
+        out.append(v)
+    return out
+
+
+def write_ratio_targets(w, ratios):
+    w("## Ratio targets")
+    w("")
+    w("One row against another of the same group, medians (CPU) in the same process.")
+    w("")
+    w("| target | row | base row | row median | base median | ratio | limit | verdict |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for v in ratios:
+        if v["status"] == "not measured":
+            w(f"| {v['name']} | `{v['key']}` | `{v['base']}` | | | | ×{v['limit_ratio']} | not measured |")
+            continue
+        w(f"| {v['name']} | `{v['key']}` | `{v['base']}` | {fmt_time(v['ns'])} | {fmt_time(v['base_ns'])} | "
+          f"×{v['ratio']:.2f} | ×{v['limit_ratio']} | **{v['status']}** |")
+    w("")
+    for v in ratios:
+        if isinstance(v.get("result"), dict):
+            w(f"- `{v['key']}`: " + ", ".join(f"{k} {n}" for k, n in v["result"].items()) + ".")
+    w("")
 
 
 def set_verdicts(summ):
@@ -107,13 +162,16 @@ def set_verdicts(summ):
             name, _, arith = r["label"].rpartition(" ")
             by.setdefault(name, {})[arith] = r
         for name in sorted(by):
-            d, c = by[name].get("double"), by[name].get("certified")
+            d, c = by[name].get(t.get("base", "double")), by[name].get("certified")
             if not d or not c:
                 continue
             res = c.get("result") if isinstance(c.get("result"), dict) else {}
-            v["scenes"].append(dict(name=name, double_ns=d["median_cpu_ns"], certified_ns=c["median_cpu_ns"],
-                                    ratio=c["median_cpu_ns"] / d["median_cpu_ns"], decided_in=res.get("decided_in", "?"),
-                                    reason=res.get("escalation_reason", "")))
+            x = dict(name=name, double_ns=d["median_cpu_ns"], certified_ns=c["median_cpu_ns"],
+                     ratio=c["median_cpu_ns"] / d["median_cpu_ns"], decided_in=res.get("decided_in", "?"),
+                     reason=res.get("escalation_reason", ""))
+            if "interval_ms" in res:  # the guarantee's bound: base + 2 x the interval rung
+                x["bound_ratio"] = c["median_cpu_ns"] / (d["median_cpu_ns"] + 2e6 * res["interval_ms"])
+            v["scenes"].append(x)
         if not v["scenes"]:
             v["status"] = "not measured"
         else:
@@ -129,10 +187,10 @@ def set_verdicts(summ):
 
 
 def write_set_targets(w, sets):
-    w("## The certified mode against double (set targets)")
+    w("## The certified mode against double and exact (set targets)")
     w("")
-    w("Per scene of the set: `eccd::solve_scene` with `--arith double` and with `--arith certified`, each the median "
-      "over its repetitions; the ratio is certified / double. *Decided in*: `interval` (intervals of doubles), "
+    w("Per scene of the set: `eccd::solve_scene` with `--arith double` (or `exact`, where the set says so) and with "
+      "`--arith certified`, each the median over its repetitions; the ratio is certified / double (or exact). *Decided in*: `interval` (intervals of doubles), "
       "`mpfi:256` (the MPFI rung) or `exact` (the last rung).")
     w("")
     for v in sets:
@@ -148,10 +206,17 @@ def write_set_targets(w, sets):
                    f"**missed** by ×{v['median_ratio'] / v['limit_ratio']:.1f} (median ×{v['median_ratio']:.1f})")
         w(f"Verdict: {verdict}.")
         w("")
-        w("| scene | double | certified | ratio | decided in | why it escalated |")
-        w("| --- | --- | --- | --- | --- | --- |")
+        base = v.get("base", "double")
+        bound = any("bound_ratio" in x for x in v["scenes"])
+        if bound:
+            w(f"Column *bound*: certified / ({base} + 2 × the interval rung's time), the cost guarantee's bound "
+              "(certified/ladder.hpp); at most 1 up to the constant c.")
+            w("")
+        w(f"| scene | {base} | certified | ratio |" + (" bound |" if bound else "") + " decided in | why it escalated |")
+        w("| --- | --- | --- | --- |" + (" --- |" if bound else "") + " --- | --- |")
         for x in v["scenes"]:
-            w(f"| {x['name']} | {fmt_time(x['double_ns'])} | {fmt_time(x['certified_ns'])} | ×{x['ratio']:.1f} | "
+            b = (f" ×{x['bound_ratio']:.2f} |" if "bound_ratio" in x else " - |") if bound else ""
+            w(f"| {x['name']} | {fmt_time(x['double_ns'])} | {fmt_time(x['certified_ns'])} | ×{x['ratio']:.2f} |{b} "
               f"{x['decided_in']} | {md_escape(x['reason'][:140])} |")
         w("")
         counts = {}
@@ -451,6 +516,7 @@ def main():
         else:
             v["perf_error"] = why_not
     info["set_targets"] = sets
+    info["ratio_targets"] = ratio_verdicts(summ)
 
     total_seconds = time.time() - started
     write_report(args.out, summ, info, verdicts, rows, bench_seconds, total_seconds, args)
@@ -548,6 +614,7 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
     w("")
 
     write_set_targets(w, info.get("set_targets", []))
+    write_ratio_targets(w, info.get("ratio_targets", []))
 
     # What dominates.
     missed = [v for v in verdicts if v["status"] == "missed" or v.get("borderline")]
