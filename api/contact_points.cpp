@@ -19,6 +19,7 @@ template <class T>
 std::vector<std::string> shown(const EVector<T, 3>& v) {
   std::vector<std::string> out;
   for (int i = 0; i < 3; ++i) {
+    if (sign(v(i)) == Sign::zero) { out.push_back("0"); continue; }  // not "-0"
     if constexpr (std::is_same_v<T, double>) out.push_back(scalar_traits<double>::to_string(v(i)));
     else out.push_back(round_decimal(scalar_traits<Mpfr>::to_string(v(i)), 20));
   }
