@@ -1,6 +1,7 @@
 // The API's entry points (api/solve.hpp): dispatch to the one templated
 // pipeline in the chosen arithmetic and return its typed Solution.
 #include "api/solve.hpp"
+#include "api/contact_points.hpp"
 
 #include "certified/ladder.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -321,6 +322,7 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
   s.dim = scene.dim;
   s.arith = opt.arith;
   s.input = floating ? opt.input : InputMode::prepared;
+  add_contact_points_3d(scene, s);  // issue 17 point 4: 3D contact points and normals (api/contact_points.hpp)
   return s;
 }
 

@@ -42,6 +42,11 @@ json solution_to_json(const Solution& s) {
     json pts = json::array();
     for (const auto& p : s.answer.contact_points) pts.push_back(p.x);
     j["contact_points"] = pts;
+    // The common normal at each contact point (ContactPoint::normal), same order; only when some point has one.
+    json normals = json::array();
+    bool any_normal = false;
+    for (const auto& p : s.answer.contact_points) { normals.push_back(p.normal); any_normal = any_normal || !p.normal.empty(); }
+    if (any_normal) j["contact_normals"] = normals;
     j["contact_intervals"] = pair_list(s.answer.contact_intervals);
   }
   json und = json::array();
@@ -148,6 +153,14 @@ Solution solution_from_json(const json& j, const std::string& label) {
       p.x.push_back(x.get<std::string>());
     }
     s.answer.contact_points.push_back(p);
+  }
+  const json nrm = list("contact_normals");
+  for (std::size_t i = 0; i < nrm.size() && i < s.answer.contact_points.size(); ++i) {
+    if (!nrm[i].is_array()) fail("/contact_normals/" + std::to_string(i), "expected an array of decimal strings");
+    for (const auto& x : nrm[i]) {
+      if (!x.is_string()) fail("/contact_normals/" + std::to_string(i), "expected an array of decimal strings");
+      s.answer.contact_points[i].normal.push_back(x.get<std::string>());
+    }
   }
   s.scene = text("scene");
   s.file = text("file");
@@ -259,8 +272,15 @@ std::string summary_text(const Solution& s) {
   if (!(s.dim == 2 && (s.variant == Variant::collides || s.variant == Variant::first_contact)))
     for (std::size_t i = 0; i < s.answer.contacts.size(); ++i) {
       o << "  external contact: " << inst(s.answer.contacts[i]);
-      if (i < s.answer.contact_points.size() && s.answer.contact_points[i].x.size() == 2)
-        o << " at (" << s.answer.contact_points[i].x[0] << ", " << s.answer.contact_points[i].x[1] << ")";
+      auto tuple = [](const std::vector<std::string>& v) {
+        std::string r = "(";
+        for (std::size_t k = 0; k < v.size(); ++k) r += (k ? ", " : "") + v[k];
+        return r + ")";
+      };
+      if (i < s.answer.contact_points.size() && !s.answer.contact_points[i].x.empty()) {
+        o << " at " << tuple(s.answer.contact_points[i].x);
+        if (!s.answer.contact_points[i].normal.empty()) o << ", normal " << tuple(s.answer.contact_points[i].normal);
+      }
       o << "\n";
     }
   for (const auto& [a, b] : s.answer.contact_intervals)

@@ -43,6 +43,9 @@ struct Instant {
 
 struct ContactPoint {  // Lemma 5 of 003: the touching point (display only)
   std::vector<std::string> x;
+  // The common normal there: A's unit outward normal (pointing from a to b;
+  // b's is its negative), decimals, display only (kernel/contact_geometry.hpp).
+  std::vector<std::string> normal;
 };
 
 struct Answer {

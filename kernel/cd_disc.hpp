@@ -32,6 +32,7 @@
 #include "kernel/quadric.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -75,6 +76,11 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
     if constexpr (scalar_traits<T>::is_exact) return decimal_string(v); else return scalar_traits<T>::to_string(v);
   };
   cp.x = {show(x), show(y)};
+  // The common normal: the gradient (A X) of a at X = (x, y, 1), as a unit vector in double (display only).
+  double n[2];
+  for (int i = 0; i < 2; ++i) n[i] = to_double(T(a[i][0](t) * x + a[i][1](t) * y + a[i][2](t)));
+  const double len = std::hypot(n[0], n[1]);
+  if (len > 0 && std::isfinite(len)) cp.normal = {decimal_string(mpq_class(n[0] / len), 17), decimal_string(mpq_class(n[1] / len), 17)};
   return cp;
 }
 

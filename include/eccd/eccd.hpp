@@ -5,3 +5,4 @@
 #include "api/static_test.hpp"
 #include "api/certify.hpp"
 #include "api/judge.hpp"
+#include "api/separate.hpp"

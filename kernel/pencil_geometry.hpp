@@ -1,0 +1,111 @@
+#pragma once
+// The small linear algebra of a pencil λA - B at one instant: the real roots
+// of f(λ) = det(λA - B) and the null vector of λA - B at a root. Shared by
+// the separating plane (kernel/separating_plane.hpp, 000 section 3) and the
+// contact points (kernel/contact_geometry.hpp, 003 Lemma 5 in 2D and its 3D
+// analogue).
+//
+// Statement.
+//  - small_real_roots(p): the distinct real roots of a polynomial of degree
+//    <= 4 (f has degree dim + 1), by the classical recursion: the real roots
+//    of p' split the real line into intervals on which p is monotone; inside
+//    the Cauchy bound |z| < 1 + max |c_i / c_n| each interval with a sign
+//    change of p holds exactly one root, found by bisection down to the
+//    precision of T (until the midpoint equals an end). A root where p has no
+//    sign change (an even multiplicity) is found only when p is exactly 0 at
+//    a critical point; the callers do not rely on those (the contact point
+//    takes the critical point itself).
+//  - null_vector(M): for M of rank H - 1, adj(M) = v wᵀ, so every non-zero
+//    row of the cofactor matrix is a null vector; the one of largest size is
+//    taken (near a rank drop in rounded arithmetic it is the best-conditioned
+//    choice). Cofactors are Eigen's closed-form determinants of the minors.
+// Nothing here decides anything: the callers check what they build (the
+// plane by exact or error-bounded inequalities, api/separate.cpp; contact
+// points are for display).
+// Requirements on T: double or Mpfr (kernel/eigen_scalar.hpp), a field with
+// comparisons and scalar_traits<T>.
+#include "kernel/eigen_scalar.hpp"
+#include "kernel/poly_matrix.hpp"
+#include "kernel/polynomial.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace eccd {
+
+template <class T>
+std::vector<T> small_real_roots(const Poly<T>& p) {
+  const int n = p.degree();
+  if (n <= 0) return {};
+  if (n == 1) return {-p.c[0] / p.c[1]};
+  std::vector<T> crit = small_real_roots(derivative(p));
+  T bound = abs_of(p.c[0] / p.c[n]);
+  for (int i = 1; i < n; ++i) bound = std::max(bound, abs_of(p.c[i] / p.c[n]));
+  bound = bound + T(1);
+  std::vector<T> pts{-bound};
+  for (const T& c : crit)
+    if (-bound < c && c < bound) pts.push_back(c);
+  pts.push_back(bound);
+  std::vector<T> roots;
+  auto add = [&](const T& r) { if (roots.empty() || roots.back() < r) roots.push_back(r); };
+  for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+    T l = pts[k], r = pts[k + 1];
+    Sign sl = sign(p(l)), sr = sign(p(r));
+    if (sl == Sign::zero) { add(l); continue; }
+    if (sr == Sign::zero || sl == sr) continue;
+    for (int it = 0; it < 100000; ++it) {
+      T m = (l + r) / T(2);
+      if (!(l < m && m < r)) break;
+      Sign sm = sign(p(m));
+      if (sm == Sign::zero) { l = m; r = m; break; }
+      (sm == sl ? l : r) = m;
+    }
+    add((l + r) / T(2));
+  }
+  if (!pts.empty() && sign(p(pts.back())) == Sign::zero) add(pts.back());
+  return roots;
+}
+
+template <class T, int H>
+EMatrix<T, H> to_eigen(const Matrix<T, H>& m) {
+  EMatrix<T, H> e;
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) e(i, j) = m[i][j];
+  return e;
+}
+template <class T, int H>
+Matrix<T, H> from_eigen(const EMatrix<T, H>& e) {
+  Matrix<T, H> m;
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) m[i][j] = e(i, j);
+  return m;
+}
+
+// The row of the cofactor matrix of M with the largest sum of squares: a null
+// vector when M has rank H - 1 (zero vector when M has rank < H - 1).
+template <class T, int H>
+EVector<T, H> null_vector(const EMatrix<T, H>& m) {
+  EVector<T, H> best = EVector<T, H>::Zero();
+  T best_size = T(0) * m(0, 0);
+  for (int i = 0; i < H; ++i) {
+    EVector<T, H> row;
+    for (int j = 0; j < H; ++j) {
+      EMatrix<T, H - 1> minor;
+      for (int r = 0, rr = 0; r < H; ++r) {
+        if (r == i) continue;
+        for (int c = 0, cc = 0; c < H; ++c) {
+          if (c == j) continue;
+          minor(rr, cc++) = m(r, c);
+        }
+        ++rr;
+      }
+      T d = minor.determinant();
+      row(j) = ((i + j) % 2) ? T(-d) : d;
+    }
+    T size = row.squaredNorm();
+    if (i == 0 || size > best_size) { best = row; best_size = size; }
+  }
+  return best;
+}
+
+}  // namespace eccd
