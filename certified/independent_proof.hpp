@@ -28,9 +28,10 @@
 //  2. Localisation: the subdivision of floating/independent_ccd.hpp (the same
 //     template, T = Interval): a strip of s proved "out" (every (s, t)
 //     separate, a witness u) or "in" (some t with F < 0 for every u) is a
-//     theorem about the exact F; so is the status of a single rational s.
-//     What remains are runs [lo, hi] of s between a proved-out and a
-//     proved-in value.
+//     theorem about the exact F. The floating pipeline's bisection by point
+//     tests is switched off (s_depth = 0): it proves single values of s,
+//     not the ranges between them. What remains are runs [lo, hi] of
+//     unresolved strips (width 2^-16 each) between proved strips.
 //  3. An end in [lo, hi]. Lemma: if s* in (0, 1) is an end of P_s, there are
 //     t* in [0, 1], u* in (0, 1) with F = F_u = 0 at (u*, s*, t*) and
 //     (t* = 0 or t* = 1 or F_t = 0 or F_uu = 0) there. (Proof: A(s*), B(t*)
@@ -100,13 +101,13 @@ struct IndependentProofOptions {
   int bits = 160;                // MPFI precision of the enclosed net
   IndependentOptions localise = [] {
     IndependentOptions o;
-    o.strip_depth = 14;          // strips down to 2^-14, then point tests down to 2^-s_depth
-    o.s_depth = 20;              // Krawczyk gives the fine bracket; the strip only has to isolate one end
+    o.strip_depth = 16;          // strips down to 2^-16; Krawczyk gives the fine bracket
+    o.s_depth = 0;               // no bisection by point tests: it proves single values, not the ranges between them
     o.max_tests = 3000000;
     return o;
   }();
   bool localise_in_mpfi = false;  // localisation in intervals of doubles (number/interval.hpp: also enclosures) or in MPFI
-  long max_boxes = 400000;       // exclusion boxes per end and candidate point
+  long max_boxes = 20000;        // exclusion boxes per end and box X (a proved end needed 100 to 300 in the cases)
   int max_box_depth = 36;
 };
 
@@ -390,7 +391,10 @@ class EndProver {
     const std::string other = var == "s" ? "t" : "s";
     r.why = "Krawczyk's test failed around the extreme point near " + var + " = " + decimal_string(s0, 12) + " (" +
             (sys.kind == "fold" ? "a fold, " + other + " = " + decimal_string(t0, 8) : "on " + sys.kind) + ")";
-    for (const mpq_class& rho : {mpq_class(w * 64), mpq_class(w * 8), mpq_class(w), mpq_class(w / 8)}) {
+    // the (u, t) half-width of X: the fold's branch of F = F_u = 0 spreads ~sqrt(w) in t across the strip, and
+    // Krawczyk's test needs X small: a ladder from wide to narrow
+    for (const int f : {1024, 256, 64, 16, 4, 1}) {
+      const mpq_class rho = w * f;
       if (rho > mpq_class(1, 16)) continue;
       // X: u0 ± rho, s-range covering [lo, hi] and s0 ± rho, t0 ± rho (fold) or fixed t
       Box X;
