@@ -107,7 +107,7 @@ struct IndependentProofOptions {
     return o;
   }();
   bool localise_in_mpfi = false;  // localisation in intervals of doubles (number/interval.hpp: also enclosures) or in MPFI
-  long max_boxes = 20000;        // exclusion boxes per end and box X (a proved end needed 100 to 300 in the cases)
+  long max_boxes = 20000;        // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
   int max_box_depth = 36;
 };
 
@@ -357,6 +357,7 @@ class EndProver {
       else if (g < best_g) { best_g = g; best_x = {ua, sm, t}; }
     }
     seeds.push_back({best_g, best_x});
+    const long start_boxes = boxes;
     std::sort(seeds.begin(), seeds.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [g, x0] : seeds) {
       (void)g;
@@ -366,11 +367,16 @@ class EndProver {
       sys.vars = {0, 1};
       if (edge) { sys.fixed_t = mpq_class(x0[2] == 0.0 ? 0 : 1); sys.kind = var == "s" ? "t" : "s"; sys.kind += std::string(" = ") + (x0[2] == 0.0 ? "0" : "1"); }
       else { sys.eqs.push_back({0, 0, 1}); sys.vars.push_back(2); sys.kind = "fold"; }
+      if (boxes - start_boxes > 3 * opt_.max_boxes) {
+        best.why += "; stopped after " + std::to_string(boxes - start_boxes) + " exclusion boxes for this end";
+        break;
+      }
       auto x = newton(nets_, sys, x0);
       if (!x) continue;
       if (!edge && ((*x)[2] <= 0 || (*x)[2] >= 1)) continue;
       const mpq_class xs = exact_of((*x)[1]);
       if (xs < lo - (hi - lo) || xs > hi + (hi - lo)) continue;  // Newton went to another extreme point
+      budget_end_ = start_boxes + 3 * opt_.max_boxes;
       EndProof p = prove_at(sys, *x, lo, hi, var);
       if (p.proved) return p;
       best.why = p.why;
@@ -395,6 +401,7 @@ class EndProver {
     // Krawczyk's test needs X small: a ladder from wide to narrow
     for (const int f : {1024, 256, 64, 16, 4, 1}) {
       const mpq_class rho = w * f;
+      if (boxes > budget_end_) break;
       if (rho > mpq_class(1, 16)) continue;
       // X: u0 ± rho, s-range covering [lo, hi] and s0 ± rho, t0 ± rho (fold) or fixed t
       Box X;
@@ -458,6 +465,7 @@ class EndProver {
   }
 
   long last_boxes_ = 0;
+  long budget_end_ = 0;  // exclusion boxes allowed up to here for the current end
 
   static bool one_sign(const I& x) {
     const Sign s = sign(x);
