@@ -38,6 +38,10 @@ sphere cases', and running this script drops them too):
                        rotates (a rational motion: the rotation by the
                        Cayley-like matrix of (1 - t^2, 2t)/(1 + t^2) about z).
   ellipsoids-apart     the same shapes on parallel paths 4 apart: never meet.
+  ellipsoids-turning   as ellipsoids-cross with A's path at z = 1/3 and B's
+                       semi-axes (3/2, 7/10, 1): B's turning now matters and
+                       the ends are irrational (no closed form; the proved
+                       answer agrees with double's ends to 3e-11).
 """
 import json
 import os
@@ -130,3 +134,11 @@ write("ellipsoids-apart",
       "Independent motions of two ellipsoids (cases/independent/make_independent.py) on parallel paths: A's centre "
       "stays at y = 4, B's at y = -1; A reaches at most y = 4 - 1 = 3 and B at most y = -1 + 1 = 0 (B's z-rotation "
       "keeps its x-y section a unit disc): they never meet, collides = false.")
+write("ellipsoids-turning",
+      {"shape": {"semi_axes": ["2", "1", "1/2"]}, "motion": translation((1, -4, Fr(1, 3)), (0, 9, 0))},
+      {"shape": {"semi_axes": ["3/2", "7/10", "1"]}, "motion": rotating((-3, 0, 0), (6, 0, 0))},
+      "Independent motions of two ellipsoids (cases/independent/make_independent.py): A (semi-axes 2, 1, 1/2) "
+      "translates from (1, -4, 1/3) to (1, 5, 1/3); B (semi-axes 3/2, 7/10, 1) translates from (-3, 0, 0) to "
+      "(3, 0, 0) while turning about z by the rational rotation (1 - t^2, 2t)/(1 + t^2), which now changes it. "
+      "No closed form: the stored answer is the proved one (eccd solve --arith exact --write-answer, "
+      "certified/independent_proof.hpp); double's ends (floating/independent_ccd.hpp) lie within 3e-11 of its brackets.")
