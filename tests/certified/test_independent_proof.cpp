@@ -4,9 +4,10 @@
 // route (--arith certified; --arith exact answers two balls by
 // exact/independent_balls.hpp) must bracket the analytic ends and agree with
 // the stored exact answers; a scene that is not two balls is proved by
-// --arith exact; a touch is never claimed. Costs (Release, 2 cores):
-// spheres-cross 1.5 s, spheres-end 0.8 s, ellipsoids-apart 0.03 s, the touch
-// 0.2 s; ellipsoids-cross (6.6 s) is checked by `eccd regress cases/` only.
+// --arith exact; a touch is never claimed. Costs (Release, one core): the
+// two sphere cases 1.4 s together, ellipsoids-apart 0.02 s, the touch 2.7 s
+// (it runs to the localisation's work bound); ellipsoids-cross and
+// ellipsoids-turning (6-7 s each) are recomputed by `eccd regress cases/`.
 #include "compare/regress.hpp"
 #include "api/solve.hpp"
 #include "io/scene_reader.hpp"
