@@ -65,6 +65,8 @@ struct Solution {
   // Certified runs.
   std::string decided_in;  // "interval", "mpfi:256", "exact"
   std::vector<Escalation> escalations;
+  // Proved independent-motion answers (certified/independent_proof.hpp): how each end was proved.
+  std::vector<std::string> proofs;
 
   bool decided() const { return answer.undecided.empty(); }
 };

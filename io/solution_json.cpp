@@ -73,6 +73,7 @@ json solution_to_json(const Solution& s) {
   j["basis"] = s.basis;
   j["method"] = s.method;
   j["certified"] = s.certified;
+  if (!s.proofs.empty()) j["proofs"] = s.proofs;  // independent motions: how each end was proved
   if (s.sampled) j["sampled"] = true;
   if (s.dim == 3 && s.arith.floating()) j["setup_ms"] = s.setup_ms;
   if (s.arith.kind == Arithmetic::Certified) {

@@ -30,13 +30,18 @@ The sphere cases' answers are stored by `eccd solve FILE --arith exact
 --write-answer` (exact/independent_balls.hpp), so `eccd regress` checks them;
 running this script again drops them (store them again).
 
-Ellipsoid cases (no closed form and no stored answer: the exact pipeline
-refuses them, double and mpfr:BITS answer them):
+Ellipsoid cases (answered by the proved route of the exact pipeline,
+certified/independent_proof.hpp; their answers are stored the same way as the
+sphere cases', and running this script drops them too):
   ellipsoids-cross     semi-axes (2, 1, 1/2) and (1, 1, 3/2); A translates
                        along y (from -4 to 5) through B's path, B translates along x and
                        rotates (a rational motion: the rotation by the
                        Cayley-like matrix of (1 - t^2, 2t)/(1 + t^2) about z).
   ellipsoids-apart     the same shapes on parallel paths 4 apart: never meet.
+  ellipsoids-turning   as ellipsoids-cross with A's path at z = 1/3 and B's
+                       semi-axes (3/2, 7/10, 1): B's turning now matters and
+                       the ends are irrational (no closed form; the proved
+                       answer agrees with double's ends to 3e-11).
 """
 import json
 import os
@@ -118,11 +123,22 @@ write("ellipsoids-cross",
       "Independent motions of two ellipsoids (cases/independent/make_independent.py): A (semi-axes 2, 1, 1/2) "
       "translates from (1, -4, 0) to (1, 5, 0); B (semi-axes 1, 1, 3/2) translates from (-3, 0, 0) to (3, 0, 0) "
       "while turning about z by the rational rotation (1 - t^2, 2t)/(1 + t^2). The paths cross: both projections "
-      "are non-empty. No closed form and no stored answer: the exact pipeline answers two balls only so far "
-      "(exact/independent_balls.hpp); double and mpfr:BITS answer it.")
+      "are non-empty. B's semi-axes in x and y are equal (1, 1), so its turning about z leaves it unchanged: A(s) "
+      "(y-extent 1 about y = -4 + 9s) meets B(t) (y-extent 1 about y = 0) iff |-4 + 9s| <= 2 at the best t (B centred "
+      "at x = 1, t = 2/3): s in [2/9, 2/3]; B(t) (x in [-4 + 6t, -2 + 6t]) meets A's swept volume (x in [-1, 3] at y = 0) "
+      "iff -2 + 6t >= -1: t in [1/6, 1]. The stored answer is the proved one (eccd solve --arith exact --write-answer, "
+      "certified/independent_proof.hpp); its brackets hold 2/9, 2/3 and 1/6.")
 write("ellipsoids-apart",
       {"shape": {"semi_axes": ["2", "1", "1/2"]}, "motion": translation((-3, 4, 0), (6, 0, 0))},
       {"shape": {"semi_axes": ["1", "1", "3/2"]}, "motion": rotating((-3, -1, 0), (6, 0, 0))},
       "Independent motions of two ellipsoids (cases/independent/make_independent.py) on parallel paths: A's centre "
       "stays at y = 4, B's at y = -1; A reaches at most y = 4 - 1 = 3 and B at most y = -1 + 1 = 0 (B's z-rotation "
       "keeps its x-y section a unit disc): they never meet, collides = false.")
+write("ellipsoids-turning",
+      {"shape": {"semi_axes": ["2", "1", "1/2"]}, "motion": translation((1, -4, Fr(1, 3)), (0, 9, 0))},
+      {"shape": {"semi_axes": ["3/2", "7/10", "1"]}, "motion": rotating((-3, 0, 0), (6, 0, 0))},
+      "Independent motions of two ellipsoids (cases/independent/make_independent.py): A (semi-axes 2, 1, 1/2) "
+      "translates from (1, -4, 1/3) to (1, 5, 1/3); B (semi-axes 3/2, 7/10, 1) translates from (-3, 0, 0) to "
+      "(3, 0, 0) while turning about z by the rational rotation (1 - t^2, 2t)/(1 + t^2), which now changes it. "
+      "No closed form: the stored answer is the proved one (eccd solve --arith exact --write-answer, "
+      "certified/independent_proof.hpp); double's ends (floating/independent_ccd.hpp) lie within 3e-11 of its brackets.")

@@ -187,12 +187,7 @@ TEST_CASE("double and MPFR: ellipsoids on parallel paths never meet", "[independ
 TEST_CASE("independent scenes: the shared-parameter commands refuse them with exit 3", "[independent][cli]") {
   using namespace eccd::clitest;
   const std::string f = q(indep("spheres-end"));
-  Run exact = run_eccd("solve " + q(indep("ellipsoids-cross")) + " --arith exact");  // not two balls
-  CHECK(exact.code == 3);
-  CHECK(exact.err.find("exact arithmetic answers independent motions only for two balls") != std::string::npos);
-  Run certified = run_eccd("solve " + f + " --arith certified");
-  CHECK(certified.code == 3);
-  CHECK(certified.err.find("use --arith double or mpfr:BITS") != std::string::npos);
+  // (exact and certified solve them: tests/certified/test_independent_proof.cpp)
   Run cert = run_eccd("certify " + f + " --out /dev/null");
   CHECK(cert.code == 3);
   CHECK(cert.err.find("independent motions") != std::string::npos);

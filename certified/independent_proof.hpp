@@ -1,0 +1,652 @@
+#pragma once
+// Proved answers of independent motions for general rational motions of two
+// ellipsoids (issue 20 point 3, exact part): every cell of s (and of t) is
+// decided by a proof about the exact F, and every end of an s- or t-interval
+// is a rational bracket that provably holds exactly one end.
+//
+// Statement. Paper 001, section 4, "CCD for independent motions": with
+// F(u, s, t) = det((u - 1)A(s) - uB(t)) (kernel/trivariate_bernstein.hpp),
+// A(s) and B(t) meet iff F(., s, t) <= 0 on (0, 1); the answer is the
+// projection P_s = { s : A(s) meets B(t) for some t in [0, 1] } as maximal
+// closed intervals, and P_t likewise. The paper projects the extreme points
+// F = F_u = F_t = 0 (ends of P_s) and F = F_u = F_s = 0 (ends of P_t) by
+// resultants; their degrees in 3D run into the thousands, so the ends are
+// proved instead by the method below, which needs only F's tensor Bernstein
+// net (degree 4 in u, a few in s and t).
+//  1. F's net is built EXACTLY from the exact scene (rationals, once) and
+//     enclosed coefficient by coefficient in intervals: of doubles for the
+//     localisation (number/interval.hpp, each operation widened outwards) and
+//     MPFI for the ends (number/mpfi_interval.hpp, outward rounding, `bits`
+//     bits; also for the localisation with localise_in_mpfi). Every sign taken
+//     from an interval that does not contain 0 is the sign of the exact
+//     number it encloses; de Casteljau in interval arithmetic (also at an
+//     interval parameter) encloses the exact sub-net, so the convex hull
+//     property turns "every interval > 0" into a proof that F > 0 on the box.
+//     The net's faces u = 0 and u = 1 are checked once to be < 0 (F(0, s, t) =
+//     det A(s), F(1, s, t) = det B(t)), so a maximum of F(., s, t) equal to 0
+//     lies inside (0, 1).
+//  2. Localisation: the subdivision of floating/independent_ccd.hpp (the same
+//     template, T = Interval): a strip of s proved "out" (every (s, t)
+//     separate, a witness u) or "in" (some t with F < 0 for every u) is a
+//     theorem about the exact F. The floating pipeline's bisection by point
+//     tests is switched off (s_depth = 0): it proves single values of s,
+//     not the ranges between them. What remains are runs [lo, hi] of
+//     unresolved strips (width 2^-16 each) between proved strips.
+//  3. An end in [lo, hi]. Lemma: if s* in (0, 1) is an end of P_s, there are
+//     t* in [0, 1], u* in (0, 1) with F = F_u = 0 at (u*, s*, t*) and
+//     (t* = 0 or t* = 1 or F_t = 0 or F_uu = 0) there. (Proof: A(s*), B(t*)
+//     meet for some t*, and not with interior overlap, else nearby s would
+//     too; so max_u F(., s*, t*) = 0, at u* in (0, 1) with F_u = 0. F has at
+//     most two roots in (0, 1) counted with multiplicity (they are the
+//     negative roots of the quartic f, which has two positive ones: 001
+//     section 2), so u* is the only maximiser; if F_uu(u*) < 0, t* in (0, 1)
+//     and F_t != 0, the implicit function theorem makes G(s, t) = max_u F
+//     smooth near (s*, t*) with G_t = F_t != 0, so every s near s* has a t
+//     with G(s, t) < 0 and s* is no end.) Call that set C. Proof that [lo, hi]
+//     holds exactly one end:
+//     a. a point (u~, s~, t~) from Newton's method in double on the square
+//        system (F, F_u, F_t) in (u, s, t) (a fold), or on (F, F_u) in (u, s)
+//        at t = 0 or t = 1 (an end where the path of B stops); double only
+//        proposes, nothing is decided by it;
+//     b. Krawczyk's test (Krawczyk 1969; Moore, Kearfott, Cloud, "Introduction
+//        to Interval Analysis", 2009, section 8.2) on a box X around it whose
+//        s-range covers [lo, hi]: K(X) = x~ - Y f(x~) + (I - Y J(X))(X - x~)
+//        inside the interior of X proves that X holds exactly one zero of the
+//        system (Y: any matrix, here the inverse of J's mid-point in double);
+//        for a fold, F_uu < 0 on X and X's t-range inside (0, 1) (so C meets X
+//        in that zero only); at t = t_b, F_t and F_uu of one sign on X's (u, t)
+//        box times [lo, hi] (so C meets it on t = t_b only, in that zero);
+//     c. exclusion of C from the rest of the strip: the nets of F, F_u, F_t,
+//        F_uu restricted to s in [lo, hi] are cut in (u, t) into boxes until
+//        each lies in X's (u, t) range or has F of one sign, or F_u of one
+//        sign, or (t-range inside (0, 1) and F_t and F_uu of one sign);
+//     then C meets the strip in one point, of s-coordinate s_p; by the lemma
+//     every end of P_s in (lo, hi) is s_p, and since lo is proved out and hi
+//     in (or the reverse) P_s ∩ [lo, hi] is [s_p, hi] (or [lo, s_p]): exactly
+//     one end. Its bracket is K's s-range (Krawczyk iterated on X ∩ K(X),
+//     which keeps the zero) intersected with [lo, hi], rational end points.
+//  4. P_t: the same on F with s and t exchanged (TriBern::swap_st).
+// What is not claimed: a run between two proved-out values (a touch, a near
+// miss or a meeting narrower than the strips) or two proved-in values (a
+// touching gap), and any end whose Krawczyk test or exclusion fails (a
+// degenerate end: a touch, a cusp, two ends closer than the strips); those
+// ranges go to `undecided` with where and why. The ends of [0, 1] are exact.
+// Work is bounded (box tests of the localisation, exclusion boxes per end).
+// Ellipsoids only (H = 4): 2D independent scenes are refused by the caller
+// (api/solve.cpp), the sign conventions of F differ for ellipses.
+// Cost (Release, one core): spheres-cross 0.9 s, spheres-end 0.6 s,
+// ellipsoids-apart 0.01 s, ellipsoids-cross 6-8 s, almost all of it the
+// localisation in intervals of doubles (the double pipeline, which also
+// bisects by point tests to 2^-34, takes 4-21 s on the same cases).
+// Requirements: the exact net TriBern<Rational>; intervals Interval and
+// MpfiInterval; double only for the Newton points and Y (any value is sound
+// there).
+#include "floating/independent_ccd.hpp"
+#include "kernel/answer.hpp"
+#include "kernel/trivariate_bernstein.hpp"
+#include "number/interval.hpp"
+#include "number/mpfi_interval.hpp"
+#include "number/rational_traits.hpp"
+
+#include <gmpxx.h>
+#include <mpfi.h>
+#include <mpfr.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace eccd {
+
+struct IndependentProofOptions {
+  int bits = 160;                // MPFI precision of the enclosed net
+  IndependentOptions localise = [] {
+    IndependentOptions o;
+    o.strip_depth = 16;          // strips down to 2^-16; Krawczyk gives the fine bracket
+    o.s_depth = 0;               // no bisection by point tests: it proves single values, not the ranges between them
+    o.max_tests = 3000000;
+    return o;
+  }();
+  bool localise_in_mpfi = false;  // localisation in intervals of doubles (number/interval.hpp: also enclosures) or in MPFI
+  long max_boxes = 20000;        // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
+  int max_box_depth = 36;
+};
+
+struct IndependentProofResult {
+  Answer answer;  // independent = true; instants with proved brackets
+  std::vector<std::string> undecided_reasons;
+  std::vector<std::string> proofs;  // one line per end: how it was proved
+  std::vector<std::pair<std::string, long>> counters;
+  int degree_s = 0, degree_t = 0;
+  double seconds = 0;
+};
+
+namespace independent_proof_detail {
+
+using I = MpfiInterval;
+using independent_detail::Piece;
+using independent_detail::Strip;
+
+inline mpq_class lower(const I& x) {
+  mpq_class q;
+  mpfr_get_q(q.get_mpq_t(), &x.get()->left);
+  return q;
+}
+inline mpq_class upper(const I& x) {
+  mpq_class q;
+  mpfr_get_q(q.get_mpq_t(), &x.get()->right);
+  return q;
+}
+inline bool finite(const I& x) { return !mpfi_nan_p(x.get()) && mpfr_number_p(&x.get()->left) && mpfr_number_p(&x.get()->right); }
+inline mpq_class exact_of(double d) { return mpq_class(d); }  // a double is an exact rational
+
+// The derivative of a tensor Bernstein net along `axis` (degree one lower there; a constant gives 0).
+template <class T>
+TriBern<T> derivative(const TriBern<T>& f, int axis, const T& zero) {
+  TriBern<T> r;
+  r.n = f.n;
+  const int n = f.n[axis];
+  r.n[axis] = std::max(n - 1, 0);
+  r.c.assign(std::size_t(r.n[0] + 1) * (r.n[1] + 1) * (r.n[2] + 1), zero);
+  if (n == 0) return r;
+  for (int i = 0; i <= r.n[0]; ++i)
+    for (int j = 0; j <= r.n[1]; ++j)
+      for (int k = 0; k <= r.n[2]; ++k) {
+        std::array<int, 3> a{i, j, k}, b{i, j, k};
+        ++b[axis];
+        T d = f.at(b[0], b[1], b[2]) - f.at(a[0], a[1], a[2]);
+        r.at(i, j, k) = T(n) * d;
+      }
+  return r;
+}
+
+// The net restricted to [a, b] along `axis` (rationals, 0 <= a < b <= 1), reparameterised to [0, 1]:
+// de Casteljau at a (keep the right part), then at (b - a)/(1 - a) (keep the left part), in intervals.
+inline TriBern<I> restrict_axis(const TriBern<I>& f, int axis, const mpq_class& a, const mpq_class& b, int bits) {
+  TriBern<I> r = f;
+  const std::size_t st = f.stride(axis), len = std::size_t(f.n[axis]) + 1;
+  std::vector<I> line(len);
+  const I ta(a, bits);
+  const bool cut_right = b < 1;
+  const I tb(cut_right ? mpq_class((b - a) / (1 - a)) : mpq_class(1), bits);
+  for (std::size_t base = 0; base < f.c.size(); ++base) {
+    if ((base / st) % len != 0) continue;
+    for (std::size_t m = 0; m < len; ++m) line[m] = f.c[base + m * st];
+    if (sgn(a) != 0) keep_right(std::span<I>(line), ta);
+    if (cut_right) keep_left(std::span<I>(line), tb);
+    for (std::size_t m = 0; m < len; ++m) r.c[base + m * st] = line[m];
+  }
+  return r;
+}
+
+// The nets of F and its partial derivatives (orders (a, b, c) in u, s, t), in intervals and (mid-points) in double.
+class Nets {
+ public:
+  Nets(const TriBern<I>& F, int bits) : bits_(bits), zero_(mpq_class(0), bits) { nets_[{0, 0, 0}] = F; }
+  const TriBern<I>& get(std::array<int, 3> o) {
+    auto it = nets_.find(o);
+    if (it != nets_.end()) return it->second;
+    for (int ax = 0; ax < 3; ++ax)
+      if (o[ax] > 0) {
+        std::array<int, 3> p = o;
+        --p[ax];
+        TriBern<I> d = derivative(get(p), ax, zero_);
+        return nets_.emplace(o, std::move(d)).first->second;
+      }
+    return nets_.at({0, 0, 0});
+  }
+  const TriBern<double>& mid(std::array<int, 3> o) {
+    auto it = mids_.find(o);
+    if (it != mids_.end()) return it->second;
+    const TriBern<I>& f = get(o);
+    TriBern<double> d;
+    d.n = f.n;
+    for (const auto& x : f.c) d.c.push_back(x.mid());
+    return mids_.emplace(o, std::move(d)).first->second;
+  }
+  I eval(std::array<int, 3> o, const std::array<I, 3>& x) { return get(o)(x[0], x[1], x[2]); }
+  double eval_mid(std::array<int, 3> o, const std::array<double, 3>& x) { return mid(o)(x[0], x[1], x[2]); }
+  int bits() const { return bits_; }
+
+ private:
+  int bits_;
+  I zero_;
+  std::map<std::array<int, 3>, TriBern<I>> nets_;
+  std::map<std::array<int, 3>, TriBern<double>> mids_;
+};
+
+// A square system: equations are partial derivatives of F (orders), unknowns a subset of (u, s, t);
+// the other coordinate (t for an end on t = t_b) is fixed.
+struct System {
+  std::vector<std::array<int, 3>> eqs;
+  std::vector<int> vars;
+  std::optional<mpq_class> fixed_t;
+  std::string kind;
+};
+
+inline std::array<int, 3> plus(std::array<int, 3> o, int ax) { ++o[ax]; return o; }
+
+// Solve the m x m system a x = b in double by Gaussian elimination with partial pivoting; false if singular.
+inline bool solve_small(std::vector<std::vector<double>> a, std::vector<double>& b) {
+  const std::size_t m = b.size();
+  for (std::size_t c = 0; c < m; ++c) {
+    std::size_t p = c;
+    for (std::size_t r = c + 1; r < m; ++r)
+      if (std::fabs(a[r][c]) > std::fabs(a[p][c])) p = r;
+    if (!(std::fabs(a[p][c]) > 0) || !std::isfinite(a[p][c])) return false;
+    std::swap(a[p], a[c]);
+    std::swap(b[p], b[c]);
+    for (std::size_t r = 0; r < m; ++r) {
+      if (r == c) continue;
+      const double f = a[r][c] / a[c][c];
+      for (std::size_t k = c; k < m; ++k) a[r][k] -= f * a[c][k];
+      b[r] -= f * b[c];
+    }
+  }
+  for (std::size_t c = 0; c < m; ++c) b[c] /= a[c][c];
+  return true;
+}
+
+// Newton's method in double (only proposes a point).
+inline std::optional<std::array<double, 3>> newton(Nets& nets, const System& sys, std::array<double, 3> x) {
+  const std::size_t m = sys.vars.size();
+  for (int it = 0; it < 60; ++it) {
+    std::vector<double> g(m);
+    std::vector<std::vector<double>> J(m, std::vector<double>(m));
+    for (std::size_t e = 0; e < m; ++e) {
+      g[e] = -nets.eval_mid(sys.eqs[e], x);
+      for (std::size_t v = 0; v < m; ++v) J[e][v] = nets.eval_mid(plus(sys.eqs[e], sys.vars[v]), x);
+    }
+    if (!solve_small(J, g)) return std::nullopt;
+    double step = 0;
+    for (std::size_t v = 0; v < m; ++v) {
+      x[sys.vars[v]] += g[v];
+      step = std::max(step, std::fabs(g[v]));
+    }
+    for (double c : x)
+      if (!std::isfinite(c) || std::fabs(c) > 4) return std::nullopt;
+    if (step < 1e-15) return x;
+  }
+  return std::nullopt;
+}
+
+struct Box {
+  std::vector<mpq_class> lo, hi;  // per unknown
+};
+
+// One Krawczyk step on box X: K(X) in K; true if K lies in the interior of X.
+inline bool krawczyk(Nets& nets, const System& sys, const Box& X, Box& K) {
+  const int bits = nets.bits();
+  const std::size_t m = sys.vars.size();
+  std::array<I, 3> centre, box;
+  std::vector<mpq_class> mid(m);
+  for (int ax = 0; ax < 3; ++ax) centre[ax] = box[ax] = I(mpq_class(sys.fixed_t.value_or(0)), bits);
+  for (std::size_t v = 0; v < m; ++v) {
+    mid[v] = (X.lo[v] + X.hi[v]) / 2;
+    // a short rational near the mid-point (any point of X is a valid centre)
+    centre[sys.vars[v]] = I(mid[v], bits);
+    box[sys.vars[v]] = I(X.lo[v], X.hi[v], bits);
+  }
+  std::vector<I> fx;
+  std::vector<std::vector<I>> J(m);
+  std::vector<std::vector<double>> Jm(m, std::vector<double>(m));
+  for (std::size_t e = 0; e < m; ++e) {
+    fx.push_back(nets.eval(sys.eqs[e], centre));
+    for (std::size_t v = 0; v < m; ++v) {
+      J[e].push_back(nets.eval(plus(sys.eqs[e], sys.vars[v]), box));
+      if (!finite(J[e][v])) return false;
+      Jm[e][v] = J[e][v].mid();
+    }
+  }
+  // Y = inverse of mid J, column by column, in double (any Y is sound)
+  std::vector<std::vector<I>> Y(m, std::vector<I>(m));
+  for (std::size_t c = 0; c < m; ++c) {
+    std::vector<double> col(m, 0.0);
+    col[c] = 1;
+    if (!solve_small(Jm, col)) return false;
+    for (std::size_t r = 0; r < m; ++r) Y[r][c] = I(exact_of(col[r]), bits);
+  }
+  K = Box{std::vector<mpq_class>(m), std::vector<mpq_class>(m)};
+  bool inside = true;
+  for (std::size_t i = 0; i < m; ++i) {
+    I k = centre[sys.vars[i]];
+    for (std::size_t j = 0; j < m; ++j) k = k - Y[i][j] * fx[j];
+    for (std::size_t j = 0; j < m; ++j) {
+      I a(i == j ? 1 : 0);
+      for (std::size_t l = 0; l < m; ++l) a = a - Y[i][l] * J[l][j];
+      k = k + a * (box[sys.vars[j]] - centre[sys.vars[j]]);
+    }
+    if (!finite(k)) return false;
+    K.lo[i] = lower(k);
+    K.hi[i] = upper(k);
+    inside = inside && K.lo[i] > X.lo[i] && K.hi[i] < X.hi[i];
+  }
+  return inside;
+}
+
+struct EndProof {
+  bool proved = false;
+  mpq_class lo, hi;  // the bracket of the end
+  std::string how, why;
+  long boxes = 0;
+};
+
+class EndProver {
+ public:
+  EndProver(Nets& nets, const IndependentProofOptions& o) : nets_(nets), opt_(o) {}
+  long boxes = 0, krawczyk_tests = 0;
+
+  // [lo, hi]: a run of s between proved values of opposite status; var: "s" or "t" for the texts.
+  EndProof prove(const mpq_class& lo, const mpq_class& hi, const std::string& var) {
+    EndProof best;
+    best.why = "no candidate extreme point (F = F_u = F_" + std::string(var == "s" ? "t" : "s") +
+               " = 0, or F = F_u = 0 on an end of the other path) was proved unique there";
+    const double sm = nearest_double((lo + hi) / 2);
+    // seeds: the other parameter where max_u F is smallest, interior and on the two ends
+    const int NT = 64, NU = 64;
+    std::vector<std::pair<double, std::array<double, 3>>> seeds;
+    double best_g = 1e300;
+    std::array<double, 3> best_x{};
+    for (int k = 0; k <= NT; ++k) {
+      const double t = double(k) / NT;
+      double g = -1e300, ua = 0.5;
+      for (int j = 1; j < NU; ++j) {
+        const double u = double(j) / NU, v = nets_.eval_mid({0, 0, 0}, {u, sm, t});
+        if (v > g) { g = v; ua = u; }
+      }
+      if (k == 0 || k == NT) seeds.push_back({g, {ua, sm, t}});
+      else if (g < best_g) { best_g = g; best_x = {ua, sm, t}; }
+    }
+    seeds.push_back({best_g, best_x});
+    const long start_boxes = boxes;
+    std::sort(seeds.begin(), seeds.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [g, x0] : seeds) {
+      (void)g;
+      const bool edge = x0[2] == 0.0 || x0[2] == 1.0;
+      System sys;
+      sys.eqs = {{0, 0, 0}, {1, 0, 0}};
+      sys.vars = {0, 1};
+      if (edge) { sys.fixed_t = mpq_class(x0[2] == 0.0 ? 0 : 1); sys.kind = var == "s" ? "t" : "s"; sys.kind += std::string(" = ") + (x0[2] == 0.0 ? "0" : "1"); }
+      else { sys.eqs.push_back({0, 0, 1}); sys.vars.push_back(2); sys.kind = "fold"; }
+      if (boxes - start_boxes > 3 * opt_.max_boxes) {
+        best.why += "; stopped after " + std::to_string(boxes - start_boxes) + " exclusion boxes for this end";
+        break;
+      }
+      auto x = newton(nets_, sys, x0);
+      if (!x) continue;
+      if (!edge && ((*x)[2] <= 0 || (*x)[2] >= 1)) continue;
+      const mpq_class xs = exact_of((*x)[1]);
+      if (xs < lo - (hi - lo) || xs > hi + (hi - lo)) continue;  // Newton went to another extreme point
+      budget_end_ = start_boxes + 3 * opt_.max_boxes;
+      EndProof p = prove_at(sys, *x, lo, hi, var);
+      if (p.proved) return p;
+      best.why = p.why;
+    }
+    return best;
+  }
+
+ private:
+  Nets& nets_;
+  const IndependentProofOptions& opt_;
+
+  EndProof prove_at(const System& sys, const std::array<double, 3>& x, const mpq_class& lo, const mpq_class& hi,
+                    const std::string& var) {
+    EndProof r;
+    const int bits = nets_.bits();
+    const mpq_class w = hi - lo;
+    const mpq_class s0 = exact_of(x[1]), u0 = exact_of(x[0]), t0 = exact_of(x[2]);
+    const std::string other = var == "s" ? "t" : "s";
+    r.why = "Krawczyk's test failed around the extreme point near " + var + " = " + decimal_string(s0, 12) + " (" +
+            (sys.kind == "fold" ? "a fold, " + other + " = " + decimal_string(t0, 8) : "on " + sys.kind) + ")";
+    // the (u, t) half-width of X: the fold's branch of F = F_u = 0 spreads ~sqrt(w) in t across the strip, and
+    // Krawczyk's test needs X small: a ladder from wide to narrow
+    for (const int f : {1024, 256, 64, 16, 4, 1}) {
+      const mpq_class rho = w * f;
+      if (boxes > budget_end_) break;
+      if (rho > mpq_class(1, 16)) continue;
+      // X: u0 ± rho, s-range covering [lo, hi] and s0 ± rho, t0 ± rho (fold) or fixed t
+      Box X;
+      X.lo = {u0 - rho, std::min(lo, mpq_class(s0 - rho))};
+      X.hi = {u0 + rho, std::max(hi, mpq_class(s0 + rho))};
+      if (!sys.fixed_t) { X.lo.push_back(t0 - rho); X.hi.push_back(t0 + rho); }
+      Box K;
+      ++krawczyk_tests;
+      if (!krawczyk(nets_, sys, X, K)) continue;
+      // the (u, t) box that the exclusion leaves to X, and the conditions that make C meet it in the zero only
+      mpq_class xu0 = X.lo[0], xu1 = X.hi[0], xt0, xt1;
+      std::array<I, 3> region{I(X.lo[0], X.hi[0], bits), I(lo, hi, bits), I(mpq_class(0), bits)};
+      if (sys.fixed_t) {
+        const bool at0 = sgn(*sys.fixed_t) == 0;
+        xt0 = at0 ? mpq_class(0) : mpq_class(1 - rho);
+        xt1 = at0 ? rho : mpq_class(1);
+        region[1] = I(std::min(lo, X.lo[1]), std::max(hi, X.hi[1]), bits);
+        region[2] = I(xt0, xt1, bits);
+        if (!one_sign(nets_.eval({0, 0, 1}, region)) || !one_sign(nets_.eval({2, 0, 0}, region))) {
+          r.why += ": F_" + other + " or F_uu changes sign near that end of the path";
+          continue;
+        }
+      } else {
+        xt0 = X.lo[2];
+        xt1 = X.hi[2];
+        region[1] = I(X.lo[1], X.hi[1], bits);
+        region[2] = I(xt0, xt1, bits);
+        if (sgn(xt0) <= 0 || xt1 >= 1 || sign(nets_.eval({2, 0, 0}, region)) != Sign::negative) {
+          r.why += ": F_uu is not proved < 0 there (a degenerate touch?)";
+          continue;
+        }
+      }
+      std::string ex = exclude(lo, hi, xu0, xu1, xt0, xt1);
+      if (!ex.empty()) { r.why += ": " + ex; continue; }
+      // tighten: X <- K(X) ∩ X keeps the unique zero
+      Box Y = X;
+      for (int it = 0; it < 12; ++it) {
+        Box K2;
+        krawczyk(nets_, sys, Y, K2);
+        if (K2.lo.size() != Y.lo.size()) break;  // not computable (an infinite end): keep Y
+        bool ok = true;
+        for (std::size_t v = 0; v < Y.lo.size(); ++v) {
+          if (K2.lo[v] > Y.lo[v]) Y.lo[v] = K2.lo[v];
+          if (K2.hi[v] < Y.hi[v]) Y.hi[v] = K2.hi[v];
+          ok = ok && Y.lo[v] <= Y.hi[v];
+        }
+        if (!ok) return r;  // cannot happen for a proved zero: then nothing is claimed
+        if (Y.hi[1] - Y.lo[1] < mpq_class(1, mpz_class(1) << 100)) break;
+      }
+      r.lo = std::max(lo, Y.lo[1]);
+      r.hi = std::min(hi, Y.hi[1]);
+      if (r.lo > r.hi) { r.why = "the proved extreme point lies outside the run (internal inconsistency)"; return r; }
+      r.proved = true;
+      r.how = var + " in [" + decimal_string(lo, 12) + ", " + decimal_string(hi, 12) + "]: one end, " +
+              (sys.kind == "fold" ? "a fold F = F_u = F_" + other + " = 0 (Krawczyk, F_uu < 0)"
+                                  : "F = F_u = 0 on " + sys.kind + " (Krawczyk, F_" + other + " and F_uu of one sign)") +
+              ", the rest of the strip excluded in " + std::to_string(last_boxes_) + " boxes";
+      return r;
+    }
+    return r;
+  }
+
+  long last_boxes_ = 0;
+  long budget_end_ = 0;  // exclusion boxes allowed up to here for the current end
+
+  static bool one_sign(const I& x) {
+    const Sign s = sign(x);
+    return s == Sign::positive || s == Sign::negative;
+  }
+
+  // Exclude C from s in [lo, hi] outside the (u, t) box [xu0, xu1] x [xt0, xt1]; "" on success, else why not.
+  std::string exclude(const mpq_class& lo, const mpq_class& hi, const mpq_class& xu0, const mpq_class& xu1,
+                      const mpq_class& xt0, const mpq_class& xt1) {
+    const int bits = nets_.bits();
+    const I half(mpq_class(1, 2), bits);
+    struct Ex {
+      std::array<TriBern<I>, 4> f;  // F, F_u, F_t, F_uu
+      mpq_class u0, u1, t0, t1;
+      int depth;
+    };
+    std::vector<Ex> stack;
+    {
+      Ex root;
+      const std::array<std::array<int, 3>, 4> ords{{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {2, 0, 0}}};
+      for (int i = 0; i < 4; ++i) root.f[i] = restrict_axis(nets_.get(ords[i]), 1, lo, hi, bits);
+      root.u0 = 0; root.u1 = 1; root.t0 = 0; root.t1 = 1; root.depth = 0;
+      stack.push_back(std::move(root));
+    }
+    last_boxes_ = 0;
+    while (!stack.empty()) {
+      Ex b = std::move(stack.back());
+      stack.pop_back();
+      ++boxes;
+      if (++last_boxes_ > opt_.max_boxes) return "the exclusion of other extreme points needed more than " + std::to_string(opt_.max_boxes) + " boxes";
+      if (deadline_passed()) return deadline_reason();
+      if (b.u0 >= xu0 && b.u1 <= xu1 && b.t0 >= xt0 && b.t1 <= xt1) continue;
+      if (b.f[0].strict_sign() != 0 || b.f[1].strict_sign() != 0) continue;
+      if (sgn(b.t0) > 0 && b.t1 < 1 && b.f[2].strict_sign() != 0 && b.f[3].strict_sign() != 0) continue;
+      if (b.depth >= opt_.max_box_depth)
+        return "another possible extreme point near u = " + decimal_string(b.u0, 8) + ", " + std::string("other parameter = ") +
+               decimal_string(b.t0, 8) + " could not be excluded";
+      const mpq_class um = (b.u0 + b.u1) / 2, tm = (b.t0 + b.t1) / 2;
+      std::array<TriBern<I>, 4> lu, hu;
+      for (int i = 0; i < 4; ++i) std::tie(lu[i], hu[i]) = b.f[i].split_half(0, half);
+      for (int side = 0; side < 2; ++side) {
+        auto& g = side ? hu : lu;
+        std::array<TriBern<I>, 4> lt, ht;
+        for (int i = 0; i < 4; ++i) std::tie(lt[i], ht[i]) = g[i].split_half(2, half);
+        const mpq_class a0 = side ? um : b.u0, a1 = side ? b.u1 : um;
+        stack.push_back(Ex{std::move(ht), a0, a1, tm, b.t1, b.depth + 1});
+        stack.push_back(Ex{std::move(lt), a0, a1, b.t0, tm, b.depth + 1});
+      }
+    }
+    return "";
+  }
+};
+
+// One projection (axis 1 of F) with proved ends; `var` is "s" or "t". The
+// localisation runs on FL (the same exact net enclosed in L: Interval or MpfiInterval).
+template <class L>
+std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<I>& F, const TriBern<L>& FL, const IndependentProofOptions& opt,
+                                                           const char* var, IndependentProofResult& res, long& tests, long& boxes,
+                                                           long& kz) {
+  using independent_detail::Projector;
+  Projector<L> proj(opt.localise, FL.c[0]);
+  std::vector<Piece> pieces = proj.project(FL);
+  tests += proj.tests;
+  // merge equal neighbours
+  std::vector<Piece> m;
+  for (auto& p : pieces)
+    if (!m.empty() && m.back().status == p.status) m.back().hi = p.hi;
+    else m.push_back(p);
+  Nets nets(F, opt.bits);
+  EndProver prover(nets, opt);
+  const std::string v = var;
+  const std::string why_stop = proj.stop_reason.empty() ? "" : " (" + proj.stop_reason + ")";
+  auto range = [&](const mpq_class& a, const mpq_class& b) { return v + " in [" + decimal_string(a, 12) + ", " + decimal_string(b, 12) + "]"; };
+  auto undecided = [&](const mpq_class& a, const mpq_class& b, const std::string& why) {
+    res.answer.undecided.push_back(independent_detail::located((a + b) / 2, (b - a) / 2));
+    res.undecided_reasons.push_back(range(a, b) + ": " + why);
+  };
+  // resolved pieces with the instants of their ends
+  struct R { Strip status; Instant lo, hi; };
+  std::vector<R> out;
+  auto exact_instant = [](const mpq_class& x) { return bracketed_instant(x, x, x); };
+  Instant pending = exact_instant(mpq_class(0));
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Piece& p = m[i];
+    if (p.status != Strip::unknown) {
+      const Instant hi_end = exact_instant(p.hi);
+      out.push_back({p.status, pending, hi_end});
+      pending = hi_end;
+      continue;
+    }
+    const bool has_before = i > 0, has_after = i + 1 < m.size();
+    const Strip before = has_before ? m[i - 1].status : Strip::out, after = has_after ? m[i + 1].status : Strip::out;
+    if (!has_before && !has_after) {
+      undecided(p.lo, p.hi, "nothing proved" + why_stop);
+      out.push_back({Strip::out, pending, exact_instant(p.hi)});
+      continue;
+    }
+    if (before == after || !has_before || !has_after) {
+      undecided(p.lo, p.hi, std::string(before == Strip::in ? "inside the meeting set on both sides: a touching gap or none"
+                                                              : "separate on both sides: a touch, a near miss or a meeting narrower than the strips") +
+                                " could not be told apart (a touch cannot be proved by enclosure)" + why_stop);
+      const Instant hi_end = exact_instant(p.hi);
+      if (!out.empty() && out.back().status == before) out.back().hi = hi_end;
+      else out.push_back({before, pending, hi_end});
+      pending = hi_end;
+      continue;
+    }
+    EndProof e = prover.prove(p.lo, p.hi, v);
+    Instant end;
+    if (e.proved) {
+      end = bracketed_instant((e.lo + e.hi) / 2, e.lo, e.hi);
+      res.proofs.push_back(e.how);
+    } else {
+      undecided(p.lo, p.hi, "an end of the " + v + "-intervals lies here (" + v + " = " + decimal_string(p.lo, 12) + " proved " +
+                                (before == Strip::in ? "in" : "out") + ", " + decimal_string(p.hi, 12) + " proved " +
+                                (after == Strip::in ? "in" : "out") + ") but it is not proved to be one: " + e.why);
+      end = independent_detail::located((p.lo + p.hi) / 2, (p.hi - p.lo) / 2);
+    }
+    out.back().hi = end;
+    pending = end;
+  }
+  boxes += prover.boxes;
+  kz += prover.krawczyk_tests;
+  std::vector<std::pair<Instant, Instant>> iv;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (out[i].status != Strip::in) continue;
+    std::size_t j = i;
+    while (j + 1 < out.size() && out[j + 1].status == Strip::in) ++j;
+    iv.emplace_back(out[i].lo, out[j].hi);
+    i = j;
+  }
+  return iv;
+}
+
+}  // namespace independent_proof_detail
+
+// The proved answer of an independent scene from F's exact net (kernel/trivariate_bernstein.hpp, T = Rational).
+inline IndependentProofResult prove_independent(const TriBern<Rational>& exact, const IndependentProofOptions& opt = {}) {
+  using namespace independent_proof_detail;
+  const auto start = std::chrono::steady_clock::now();
+  IndependentProofResult r;
+  r.answer.independent = true;
+  r.degree_s = exact.n[1];
+  r.degree_t = exact.n[2];
+  TriBern<I> F;
+  F.n = exact.n;
+  F.c.reserve(exact.c.size());
+  for (const auto& q : exact.c) F.c.emplace_back(q, opt.bits);
+  // F < 0 on the faces u = 0 and u = 1 (exact signs of the net's faces: the hull there)
+  for (int j = 0; j <= exact.n[1]; ++j)
+    for (int k = 0; k <= exact.n[2]; ++k)
+      if (sgn(exact.at(0, j, k)) >= 0 || sgn(exact.at(exact.n[0], j, k)) >= 0)
+        throw std::invalid_argument(
+            "independent motions: F(0, s, t) = det A(s) or F(1, s, t) = det B(t) is not proved < 0 on [0, 1]^2 (a degenerate "
+            "motion matrix?): the proof of the interval ends needs it");
+  long tests = 0, boxes = 0, kz = 0;
+  if (opt.localise_in_mpfi) {
+    r.answer.s_intervals = proved_projection(F, F, opt, "s", r, tests, boxes, kz);
+    r.answer.t_intervals = proved_projection(F.swap_st(), F.swap_st(), opt, "t", r, tests, boxes, kz);
+  } else {
+    TriBern<Interval> FL;
+    FL.n = exact.n;
+    for (const auto& q : exact.c) FL.c.push_back(scalar_traits<Interval>::from_rational(q));
+    r.answer.s_intervals = proved_projection(F, FL, opt, "s", r, tests, boxes, kz);
+    r.answer.t_intervals = proved_projection(F.swap_st(), FL.swap_st(), opt, "t", r, tests, boxes, kz);
+  }
+  r.answer.collides = !r.answer.s_intervals.empty() || !r.answer.t_intervals.empty();
+  if (r.answer.s_intervals.empty() != r.answer.t_intervals.empty()) {
+    r.undecided_reasons.push_back("one projection found a meeting and the other none (a meeting set thinner than the strips)");
+    r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
+  }
+  r.counters = {{"box_tests", tests}, {"exclusion_boxes", boxes}, {"krawczyk_tests", kz}, {"proved_ends", long(r.proofs.size())}};
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace eccd
