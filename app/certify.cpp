@@ -7,6 +7,8 @@
 #include "api/solve.hpp"
 #include "io/solution_json.hpp"
 #include "compare/harness.hpp"
+#include "compare/harness_families.hpp"
+#include "io/cycloidal_certificate.hpp"
 #include "compare/verdict.hpp"
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
@@ -51,7 +53,34 @@ std::string instant_text(const nlohmann::json& i) {
   return i["approx"].get<std::string>() + " in [" + lo + ", " + hi + "]";
 }
 
+// A cycloidal scene's certificate (io/cycloidal_certificate.hpp): MPFI-proved brackets, stretches left undecided.
+std::string cycloidal_text(const nlohmann::json& cert) {
+  std::ostringstream o;
+  const auto& a = cert["answer"];
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f s", cert["seconds"].get<double>());
+  o << "scene " << cert["scene"]["name"].get<std::string>() << " (2D, cycloidal): certified in MPFI at "
+    << cert["delta"]["precision_bits"].get<int>() << " bits in " << buf << "\n";
+  int roots = 0;
+  for (const auto& n : cert["timeline"]) {
+    if (!n.contains("kind")) continue;
+    if (n["kind"] == "simple_root") ++roots;
+    if (n["kind"] == "undecided")
+      o << "  NOT PROVED: touch or near miss within epsilon = " << n["epsilon"].get<std::string>() << " (|Delta| <= epsilon proved) on ["
+        << n["instant"]["lo"].get<std::string>() << ", " << n["instant"]["hi"].get<std::string>() << "] (~" << n["instant"]["approx"].get<std::string>()
+        << "); nothing is claimed there\n";
+  }
+  o << "  Delta: " << roots << " simple root(s) in [0, 1], each in a bracket proved by opposite signs of Delta at its ends and Delta' != 0 on it\n";
+  o << "  collides: " << (a["collides"].get<bool>() ? "yes" : "no") << (cert["complete"].get<bool>() ? "" : " (outside the undecided stretches)") << "\n";
+  for (const auto& iv : a["intervals"]) o << "  collision interval: [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]\n";
+  if (!a["first_contact"].is_null()) o << "  first contact: " << instant_text(a["first_contact"]) << "\n";
+  for (const auto& c : a["contacts"]) o << "  external contact: " << instant_text(c) << "\n";
+  if (!cert["complete"].get<bool>()) o << "  the answer is NOT complete: " << a["undecided"].size() << " stretch(es) undecided\n";
+  return o.str();
+}
+
 std::string certified_text(const nlohmann::json& cert) {
+  if (cert["format"] == kCycloidalCertificateFormat) return cycloidal_text(cert);
   std::ostringstream o;
   const auto& s = cert["scene"];
   const auto& p = cert["projection"];
@@ -119,10 +148,14 @@ Command add_certify_command(CLI::App& app) {
 
     std::vector<Verdict> verdicts;
     if (!args->no_floating) {
-      const Answer certified = answer_from_json(cert["answer"], "the certificate", "/answer");
+      nlohmann::json plain = cert["answer"];
+      plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches (io/cycloidal_certificate.hpp)
+      Answer certified = answer_from_json(plain, "the certificate", "/answer");
+      if (cert["answer"].contains("undecided"))
+        for (const auto& u : cert["answer"]["undecided"]) certified.undecided.push_back(instant_from_json(u, "the certificate", "/answer/undecided"));
       HarnessOptions ho;
       ho.mpfr_bits = args->mpfr_bits;
-      for (const auto& p : harness_pipelines(scene.dim, ho)) {
+      for (const auto& p : motion_family_scene(scene) ? motion_family_pipelines(scene, ho) : harness_pipelines(scene.dim, ho)) {
         if (!p.opt.arith.floating()) continue;  // double and MPFR only: not exact, nor the peers certified and fcl/
         if (!quiet()) std::cerr << "certify: " << p.label << " ...\n";
         try {
@@ -140,7 +173,8 @@ Command add_certify_command(CLI::App& app) {
 
     if (args->json) {
       nlohmann::json j = {{"scene", scene.path}, {"certificate", out.string()}, {"answer", cert["answer"]}, {"verdicts", vj},
-                          {"projection", cert["projection"]["name"]}, {"certify_seconds", cert["seconds"]}};
+                          {"projection", cert.contains("projection") ? cert["projection"]["name"] : nlohmann::json("cycloidal-delta")},
+                          {"certify_seconds", cert["seconds"]}};
       stamp_format(j, "eccd-certify/1");
       std::cout << j.dump(2) << "\n";
       return 0;
