@@ -116,7 +116,9 @@ Command add_certify_command(CLI::App& app) {
   c.sub = app.add_subcommand("certify",
                              "Certify one scene: the exact answer (collision intervals, first contact, external contacts, each "
                              "instant a proved rational bracket), a verdict for each double and MPFR pipeline against it, and a "
-                             "certificate that `eccd check-certificate` re-checks without the solver.");
+                             "certificate that `eccd check-certificate` re-checks without the solver. A cycloidal scene (not "
+                             "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/1): proved root brackets "
+                             "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon.");
   auto* s = c.sub;
   s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
   s->add_option("--out", args->out, "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder)");

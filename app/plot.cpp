@@ -6,7 +6,12 @@
 // discriminant Δ(t) of f(λ;t) = det(λA(t) - B(t)) (003 eq. (2)); 3D, the zero
 // set of F(u,t) = det((u-1)A(t) - uB(t)) in the (u,t) square (001 section 4,
 // 002 section III), with the critical instants, collision intervals and
-// contacts that `eccd solve` reports in the chosen arithmetic.
+// contacts that `eccd solve` reports in the chosen arithmetic. Independent
+// motions ("parameters": "independent", 001 section 4; issue 20): one panel,
+// where A(s) meets B(t) on a grid of the (s, t) square (add_st_grid below),
+// whose boundary is the zero set of F(u, s, t) projected on (s, t), with the
+// answer's s- and t-intervals drawn along the axes (exact by default, double
+// where exact refuses the pair).
 //
 // This file computes the data; compare/plots/scene_figure.py draws it. The
 // data goes through a temporary JSON file ("eccd-plot-data/1", the --data
@@ -524,8 +529,8 @@ std::string find_python(std::string& tried) {
 
 // Independent motions (001 section 4; issue 20 point 5): where A(s) and B(t) meet, on an n x n grid of the
 // (s, t) square, by the double static test (api/static_test.hpp, status_at: 001 Appendix A with its error
-// bound) on the shared-parameter scene with A fixed at A(s): 1 meets (touching or overlapping), 0 separate,
-// -1 uncertain (the test's error bound cannot decide). The zero set of F(u, s, t) = det((u-1)A(s) - uB(t))
+// bound) on the shared-parameter scene with A fixed at A(s), and the exact static test where double's error
+// bound cannot decide (two balls: f always has a double root): 1 meets (touching or overlapping), 0 separate. The zero set of F(u, s, t) = det((u-1)A(s) - uB(t))
 // projected on (s, t) is the boundary of that region (F > 0 for some u iff separate).
 constexpr int kStGrid = 64;
 void add_st_grid(json& data, const Scene& s) {
@@ -552,16 +557,19 @@ void add_st_grid(json& data, const Scene& s) {
     json row = json::array();
     for (const auto& tv : g) {
       Status st = status_at(sh, tv, Arithmetic::double_precision());
+      if (st == Status::uncertain) {  // e.g. two balls: f always has a double root, which double cannot tell apart
+        ++unsure;
+        st = status_at(sh, tv, Arithmetic::exact());
+      }
       row.push_back(st == Status::uncertain ? -1 : in_collision(st) ? 1 : 0);
-      unsure += st == Status::uncertain;
     }
     meets.push_back(row);
   }
   std::vector<double> axis;
   for (const auto& x : g) axis.push_back(x.get_d());
   data["st_grid"] = {{"n", kStGrid}, {"s", axis}, {"t", axis}, {"meets", meets}, {"uncertain", unsure},
-                     {"how", "double static test (001 Appendix A, with its error bound) at the centre of each grid cell, "
-                             "on the scene with A fixed at A(s) and B at B(t)"}};
+                     {"how", "static test at each cell's centre: double (001 App. A, error-bounded), exact where double "
+                             "cannot decide (" + std::to_string(unsure) + " cells)"}};
 }
 
 std::string answer_words(const Solution& rep) {
@@ -606,8 +614,8 @@ int run_plot(const PlotOptions& o) {
         rep = solve(s, opt);
       } catch (const std::invalid_argument& e) {
         opt.arith = Arithmetic::double_precision();
-        arith_note = "independent motions: exact arithmetic refuses this pair (" + std::string(e.what()).substr(0, 80) + "...), so double";
-        warn("plot", src.label + ": " + arith_note);
+        arith_note = "exact arithmetic refuses this pair, so double";
+        warn("plot", src.label + ": independent motions: " + e.what() + "; drawing the double answer");
         rep = solve(s, opt);
       }
     } else {

@@ -1279,7 +1279,8 @@ Command add_report_command(CLI::App& app) {
   c.sub = app.add_subcommand(
       "report",
       "Robustness report: generate seeded scenes (2D and 3D, motion degrees 2-6, families colliding / free / touch / "
-      "near-miss, overlap / graze (linear translations, degree 1), and the realistic-input families decimal / keyframe), "
+      "near-miss, overlap / graze (linear translations, degree 1), and the realistic-input families decimal / keyframe; "
+      "--families cycloidal,independent adds issue 20's motions, against the certified resp. exact answer), "
       "add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
       "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and in "
       "power form (double), the sampling and marching baselines), each floating one per input mode (--input) and under a "

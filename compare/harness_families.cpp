@@ -91,7 +91,10 @@ std::vector<ResultRow> run_motion_family_scene(const Scene& s, const SceneInfo& 
       if (truth) br.got = *truth;
       else br.error = no_truth.substr(std::string(kNoGroundTruthReason).size());
     } else {
-      br = run_bounded(s, ps.opt, opt.budget_s, opt.isolate);
+      // Independent runs stay in this process: their pipeline asks the deadline, and an undecided floating answer
+      // (s-intervals found, t-intervals not yet) does not survive the child's JSON round trip (the answer reader
+      // refuses collides without t-intervals), which would turn an undecided row into an error.
+      br = run_bounded(s, ps.opt, opt.budget_s, opt.isolate && !s.independent);
     }
     if (!no_truth.empty()) {
       // What the pipeline said, with nothing to compare it with: never counted right or wrong.

@@ -24,7 +24,10 @@
 //                exactly prepared pair). Answers are compared by
 //                api/answer_difference.hpp, which matches s_intervals and
 //                t_intervals like collision intervals; the CSV's `intervals`
-//                counts both lists.
+//                counts both lists. These runs are bounded by the deadline
+//                alone (not isolated in a child process: the pipeline asks
+//                the deadline, and its undecided answers do not survive the
+//                child's JSON round trip).
 // A scene whose ground truth cannot be had — the exact pipeline throws
 // std::invalid_argument (independent ellipsoids before exact answers them),
 // or the certified answer leaves a stretch undecided (a cycloidal touch or

@@ -304,11 +304,9 @@ def draw_st(ax, data):
     ax.set_ylim(0, 1)
     ax.set_xlabel("s (A's path parameter)", labelpad=28)
     ax.set_ylabel("t (B's path parameter)", labelpad=28)
-    ax.set_title(f"where A(s) meets B(t): {g['n']}×{g['n']} grid, {g['how']}\n"
-                 f"the boundary is the zero set of F(u, s, t) = det((u−1)A(s) − uB(t)) projected on (s, t); "
-                 f"{g['uncertain']} cell(s) uncertain", fontsize=9)
+    ax.set_title(f"where A(s) meets B(t), {g['n']}×{g['n']} grid: its boundary is the zero set of\n"
+                 f"F(u, s, t) = det((u−1)A(s) − uB(t)) projected on (s, t)\n{g['how']}", fontsize=9)
     handles = [Patch(color="#f4a6a6", label="A(s) and B(t) meet"), Patch(color="#b8e3b0", label="separate"),
-               Patch(color="#bbbbbb", label="uncertain (double's error bound)"),
                Line2D([], [], color="#c0392b", lw=6, label="s_intervals of the answer"),
                Line2D([], [], color="#1f4e9c", lw=6, label="t_intervals of the answer")]
     ax.legend(handles=handles, fontsize=8, loc="upper right", framealpha=0.85)
