@@ -210,7 +210,8 @@ Command add_check_certificate_command(CLI::App& app) {
   c.sub = app.add_subcommand("check-certificate",
                              "Re-check a certificate written by `eccd certify` against its scene, without the solver: f and the "
                              "projection recomputed exactly, one root per bracket and none elsewhere (Descartes' rule), each "
-                             "cell's status by the exact static test, each instant's evidence, and the answer. Exit 0 if every "
+                             "cell's status by the exact static test, each instant's evidence, and the answer (a cycloidal scene: "
+                             "the same claims proved by MPFI enclosures of Delta and Delta'). Exit 0 if every "
                              "claim holds, 1 naming the first claim that fails, 2 for an unreadable file.");
   c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about; - reads standard input")->required();
   c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/2)")->required();
