@@ -1175,7 +1175,8 @@ def section_what_was_run(data):
             "positive says *collides* and the exact answer does not; *undecided* (the floating pipeline said it "
             "could not decide) and *errors* are counted apart, never as right or wrong. *Structure wrong*: among "
             "rows without error, the share whose collision intervals (ends within 1e-6), contacts or answer differ "
-            "from the exact ones. The exact pipeline is the ground truth.", ""]
+            "from the exact ones. The exact pipeline is the ground truth (for a cycloidal scene the certified one: "
+            "exact arithmetic cannot represent its motion; a scene without ground truth is counted above and left out).", ""]
     return out
 
 
