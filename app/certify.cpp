@@ -176,7 +176,7 @@ Command add_certify_command(CLI::App& app) {
     if (args->json) {
       nlohmann::json j = {{"scene", scene.path}, {"certificate", out.string()}, {"answer", cert["answer"]}, {"verdicts", vj},
                           {"projection", cert.contains("projection") ? cert["projection"]["name"] : nlohmann::json("cycloidal-delta")},
-                          {"certify_seconds", cert["seconds"]}};
+                          {"certify_seconds", cert["seconds"]}, {"complete", cert.value("complete", true)}};
       stamp_format(j, "eccd-certify/1");
       std::cout << j.dump(2) << "\n";
       return 0;

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <algorithm>
 #include <functional>
 
 namespace eccd {
@@ -57,6 +58,42 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
   if (crit.empty() || crit.front().lo != 0) inst.push_back({0, 0, "end"});
   for (const auto& c : crit) inst.push_back({c.lo, c.hi, c.simple ? "simple_root" : "undecided"});
   if (crit.empty() || crit.back().hi != 1) inst.push_back({1, 1, "end"});
+  // Gap covers first: every gap between consecutive instants cut into proved root-free pieces. An undecided
+  // stretch at 0 or 1 comes from the certified run as the end point itself ([0, 0] or [1, 1]); its extent is
+  // found here: the pieces next to it that no enclosure proves root-free (down to 2^-64) join the stretch.
+  std::vector<std::vector<mpq_class>> gap_cuts(inst.size());
+  for (std::size_t k = 0; k + 1 < inst.size(); ++k) {
+    Inst &left = inst[k], &right = inst[k + 1];
+    const bool grow_left = left.kind == "undecided" && left.lo == 0 && left.hi == 0;
+    const bool grow_right = right.kind == "undecided" && right.lo == 1 && right.hi == 1;
+    std::vector<mpq_class>& cuts = gap_cuts[k];
+    // left to right (or right to left when the stretch at 1 grows), bisecting until each piece is root-free
+    std::function<void(const mpq_class&, const mpq_class&, int)> cover = [&](const mpq_class& x, const mpq_class& y, int depth) {
+      if (enc.root_free(x, y)) return;
+      if (depth >= 64 && grow_left && x == left.hi) { left.hi = y; return; }
+      if (depth >= 64 && grow_right && y == right.lo) { right.lo = x; return; }
+      if (depth >= 200 || cuts.size() >= kCycloidalMaxGapPoints)
+        throw CertificationError("no root-free cover of the gap [" + left.hi.get_str() + ", " + right.lo.get_str() + "] near t = " +
+                                 decimal_string(x, 12));
+      const mpq_class m = (x + y) / 2;
+      if (grow_right) {
+        cover(m, y, depth + 1);
+        cuts.push_back(m);
+        cover(x, m, depth + 1);
+      } else {
+        cover(x, m, depth + 1);
+        cuts.push_back(m);
+        cover(m, y, depth + 1);
+      }
+    };
+    cover(left.hi, right.lo, 0);
+    if (grow_right) std::reverse(cuts.begin(), cuts.end());
+    // cuts swallowed by a grown stretch are not in the gap any more
+    std::vector<mpq_class> kept;
+    for (const auto& c : cuts)
+      if (left.hi < c && c < right.lo) kept.push_back(c);
+    cuts = kept;
+  }
   json timeline = json::array(), gaps = json::array();
   std::vector<TimelineNode> seq;
   bool complete = true;
@@ -81,13 +118,10 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
     e["instant"] = instant_json(it);
     e["kind"] = n.kind;
     e["status"] = to_string(n.status);
-    json ordered = {{"instant", e["instant"]}, {"kind", e["kind"]}, {"status", e["status"]}};
-    for (const char* key : {"evidence", "epsilon", "claim"})
-      if (e.contains(key)) ordered[key] = e[key];
-    timeline.push_back(ordered);
+    timeline.push_back(e);
     seq.push_back({it, n.status, false});
     if (k + 1 == inst.size()) break;
-    // the cell to the next instant, and the gap points that prove it root-free
+    // the cell to the next instant
     const mpq_class a = n.hi, b = inst[k + 1].lo;
     if (!(a < b)) throw CertificationError("two critical stretches share an end at t = " + a.get_str() + ": no cell between them");
     const mpq_class sample = (a + b) / 2;
@@ -95,18 +129,7 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
     if (cs == Status::uncertain) throw CertificationError("the static test at the cell sample " + sample.get_str() + " is not proved");
     timeline.push_back({{"cell_sample", sample.get_str()}, {"status", to_string(cs)}});
     seq.push_back({bracketed_instant(sample, sample, sample), cs, true});
-    std::vector<mpq_class> cuts;
-    std::function<void(const mpq_class&, const mpq_class&, int)> cover = [&](const mpq_class& x, const mpq_class& y, int depth) {
-      if (enc.root_free(x, y)) return;
-      if (depth >= 200 || cuts.size() >= kCycloidalMaxGapPoints)
-        throw CertificationError("no root-free cover of the gap [" + a.get_str() + ", " + b.get_str() + "] near t = " + decimal_string(x, 12));
-      const mpq_class m = (x + y) / 2;
-      cover(x, m, depth + 1);
-      cuts.push_back(m);
-      cover(m, y, depth + 1);
-    };
-    cover(a, b, 0);
-    for (const auto& c : cuts) gaps.push_back(c.get_str());
+    for (const auto& c : gap_cuts[k]) gaps.push_back(c.get_str());
   }
   if (gaps.size() > kCycloidalMaxGapPoints) throw CertificationError("more gap points than the checker accepts");
   Answer ans;

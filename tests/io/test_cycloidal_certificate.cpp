@@ -125,3 +125,22 @@ TEST_CASE("cycloidal certificate: a touch is stated as 'touch or near miss withi
   t["complete"] = true;
   CHECK_FALSE(check(s, t).valid);
 }
+
+TEST_CASE("cycloidal certificate: a touch at t = 0 makes the first instant an undecided stretch from 0", "[cycloidal][certify]") {
+  // as in tests/certified/test_cycloidal.cpp: A slides off B, touching at t = 0 only
+  const std::string text = R"({"format": "ellipse-ccd-scene/1", "name": "touch0", "dim": 2,
+    "a": {"shape": {"semi_axes": ["2", "1"]},
+          "motion": {"type": "cycloidal", "angle_over_pi": ["0", "0"], "translation": [["0", "2"], ["3", "0"]]}},
+    "b": {"shape": {"semi_axes": ["1", "2"]}, "motion": {"type": "static"}}})";
+  const Scene s = scene_from_text(text, "touch0");
+  const json cert = json::parse(certify(s).text);
+  CertificateCheck ok = check(s, cert);
+  INFO(ok.failed_claim << ": " << ok.reason);
+  REQUIRE(ok.valid);
+  const json& first = cert["timeline"][0];
+  CHECK(first["kind"] == "undecided");
+  CHECK(first["instant"]["lo"] == "0");
+  CHECK(parse_rational(first["instant"]["hi"].get<std::string>()) > 0);
+  CHECK(cert["complete"] == false);
+  CHECK(cert["answer"]["collides"] == false);  // outside the stretch: separate, proved
+}
