@@ -95,7 +95,16 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
       n.status = status_named(at(tl[k], "status", place), place + ".status", n.kind == "undecided");
       if (n.kind == "undecided" && n.status != Status::uncertain) reject(n.name, "an undecided stretch must have status \"uncertain\"");
       if (n.lo > n.hi) reject(n.name, "lo > hi");
-      if (!at(in, "approx", place + ".instant").is_string()) reject("certificate format", place + ".instant.approx: expected a decimal string");
+      const json& approx = at(in, "approx", place + ".instant");
+      if (!approx.is_string() || approx.get_ref<const std::string&>().size() > 64)
+        reject("certificate format", place + ".instant.approx: expected a decimal string of at most 64 characters");
+      mpq_class v;
+      try {
+        v = parse_rational(approx.get<std::string>());
+      } catch (const std::exception&) {
+        reject("certificate format", place + ".instant.approx: not a decimal");
+      }
+      if (n.lo == n.hi ? v != n.lo : (v < n.lo || v > n.hi)) reject(n.name, "approx " + approx.get<std::string>() + " lies outside its bracket");
     }
     nodes.push_back(n);
   }

@@ -83,6 +83,11 @@ TEST_CASE("cycloidal certificate: 003 Example 1 round trip and tampering", "[cyc
     t["answer"]["contacts"].erase(1);
     rejected(t, "answer");
   }
+  {  // an approx outside its bracket
+    json t = cert;
+    t["timeline"][root]["instant"]["approx"] = "0.5";
+    rejected(t, "instant");
+  }
   {  // a precision too high to check cheaply
     json t = cert;
     t["delta"]["precision_bits"] = 100000;
