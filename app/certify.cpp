@@ -7,6 +7,8 @@
 #include "api/solve.hpp"
 #include "io/solution_json.hpp"
 #include "compare/harness.hpp"
+#include "compare/harness_families.hpp"
+#include "io/cycloidal_certificate.hpp"
 #include "compare/verdict.hpp"
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
@@ -51,7 +53,34 @@ std::string instant_text(const nlohmann::json& i) {
   return i["approx"].get<std::string>() + " in [" + lo + ", " + hi + "]";
 }
 
+// A cycloidal scene's certificate (io/cycloidal_certificate.hpp): MPFI-proved brackets, stretches left undecided.
+std::string cycloidal_text(const nlohmann::json& cert) {
+  std::ostringstream o;
+  const auto& a = cert["answer"];
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f s", cert["seconds"].get<double>());
+  o << "scene " << cert["scene"]["name"].get<std::string>() << " (2D, cycloidal): certified in MPFI at "
+    << cert["delta"]["precision_bits"].get<int>() << " bits in " << buf << "\n";
+  int roots = 0;
+  for (const auto& n : cert["timeline"]) {
+    if (!n.contains("kind")) continue;
+    if (n["kind"] == "simple_root") ++roots;
+    if (n["kind"] == "undecided")
+      o << "  NOT PROVED: touch or near miss within epsilon = " << n["epsilon"].get<std::string>() << " (|Delta| <= epsilon proved) on ["
+        << n["instant"]["lo"].get<std::string>() << ", " << n["instant"]["hi"].get<std::string>() << "] (~" << n["instant"]["approx"].get<std::string>()
+        << "); nothing is claimed there\n";
+  }
+  o << "  Delta: " << roots << " simple root(s) in [0, 1], each in a bracket proved by opposite signs of Delta at its ends and Delta' != 0 on it\n";
+  o << "  collides: " << (a["collides"].get<bool>() ? "yes" : "no") << (cert["complete"].get<bool>() ? "" : " (outside the undecided stretches)") << "\n";
+  for (const auto& iv : a["intervals"]) o << "  collision interval: [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]\n";
+  if (!a["first_contact"].is_null()) o << "  first contact: " << instant_text(a["first_contact"]) << "\n";
+  for (const auto& c : a["contacts"]) o << "  external contact: " << instant_text(c) << "\n";
+  if (!cert["complete"].get<bool>()) o << "  the answer is NOT complete: " << a["undecided"].size() << " stretch(es) undecided\n";
+  return o.str();
+}
+
 std::string certified_text(const nlohmann::json& cert) {
+  if (cert["format"] == kCycloidalCertificateFormat) return cycloidal_text(cert);
   std::ostringstream o;
   const auto& s = cert["scene"];
   const auto& p = cert["projection"];
@@ -87,7 +116,9 @@ Command add_certify_command(CLI::App& app) {
   c.sub = app.add_subcommand("certify",
                              "Certify one scene: the exact answer (collision intervals, first contact, external contacts, each "
                              "instant a proved rational bracket), a verdict for each double and MPFR pipeline against it, and a "
-                             "certificate that `eccd check-certificate` re-checks without the solver.");
+                             "certificate that `eccd check-certificate` re-checks without the solver. A cycloidal scene (not "
+                             "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/1): proved root brackets "
+                             "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon.");
   auto* s = c.sub;
   s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
   s->add_option("--out", args->out, "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder)");
@@ -119,10 +150,14 @@ Command add_certify_command(CLI::App& app) {
 
     std::vector<Verdict> verdicts;
     if (!args->no_floating) {
-      const Answer certified = answer_from_json(cert["answer"], "the certificate", "/answer");
+      nlohmann::json plain = cert["answer"];
+      plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches (io/cycloidal_certificate.hpp)
+      Answer certified = answer_from_json(plain, "the certificate", "/answer");
+      if (cert["answer"].contains("undecided"))
+        for (const auto& u : cert["answer"]["undecided"]) certified.undecided.push_back(instant_from_json(u, "the certificate", "/answer/undecided"));
       HarnessOptions ho;
       ho.mpfr_bits = args->mpfr_bits;
-      for (const auto& p : harness_pipelines(scene.dim, ho)) {
+      for (const auto& p : motion_family_scene(scene) ? motion_family_pipelines(scene, ho) : harness_pipelines(scene.dim, ho)) {
         if (!p.opt.arith.floating()) continue;  // double and MPFR only: not exact, nor the peers certified and fcl/
         if (!quiet()) std::cerr << "certify: " << p.label << " ...\n";
         try {
@@ -140,7 +175,8 @@ Command add_certify_command(CLI::App& app) {
 
     if (args->json) {
       nlohmann::json j = {{"scene", scene.path}, {"certificate", out.string()}, {"answer", cert["answer"]}, {"verdicts", vj},
-                          {"projection", cert["projection"]["name"]}, {"certify_seconds", cert["seconds"]}};
+                          {"projection", cert.contains("projection") ? cert["projection"]["name"] : nlohmann::json("cycloidal-delta")},
+                          {"certify_seconds", cert["seconds"]}, {"complete", cert.value("complete", true)}};
       stamp_format(j, "eccd-certify/1");
       std::cout << j.dump(2) << "\n";
       return 0;
@@ -174,7 +210,8 @@ Command add_check_certificate_command(CLI::App& app) {
   c.sub = app.add_subcommand("check-certificate",
                              "Re-check a certificate written by `eccd certify` against its scene, without the solver: f and the "
                              "projection recomputed exactly, one root per bracket and none elsewhere (Descartes' rule), each "
-                             "cell's status by the exact static test, each instant's evidence, and the answer. Exit 0 if every "
+                             "cell's status by the exact static test, each instant's evidence, and the answer (a cycloidal scene: "
+                             "the same claims proved by MPFI enclosures of Delta and Delta'). Exit 0 if every "
                              "claim holds, 1 naming the first claim that fails, 2 for an unreadable file.");
   c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about; - reads standard input")->required();
   c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/2)")->required();

@@ -64,9 +64,10 @@ void add_plan_options(CLI::App* s, GeneratePlan& plan) {
                 "Families: colliding, free, touch, near-miss; overlap (linear translations that just overlap, depth "
                 "10^-e, degree 1), graze (linear translations with an isolated touch, degree 1); decimal (a generic "
                 "scene with every number rounded to --digits significant digits), keyframe (keyframed rigid motions "
-                "with decimal key poses, degrees 2-6)")
+                "with decimal key poses, degrees 2-6); cycloidal (2D, 003 section V) and independent (3D, \"parameters\": "
+                "\"independent\", straight paths A(s), B(t)), not in the default list (compare/motion_families.hpp)")
       ->delimiter(',')->capture_default_str()
-      ->check(CLI::IsMember({"colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe"}));
+      ->check(CLI::IsMember({"colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe", "cycloidal", "independent"}));
   s->add_option("--motions", plan.motions, "Restrict motions: kinematic (2D), euler, affine (3D); default all")
       ->delimiter(',')->check(CLI::IsMember({"kinematic", "euler", "affine"}));
   s->add_option("--separations", plan.d_exponents, "Near-miss separations as exponents e of d = 10^-e")

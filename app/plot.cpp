@@ -6,7 +6,12 @@
 // discriminant Δ(t) of f(λ;t) = det(λA(t) - B(t)) (003 eq. (2)); 3D, the zero
 // set of F(u,t) = det((u-1)A(t) - uB(t)) in the (u,t) square (001 section 4,
 // 002 section III), with the critical instants, collision intervals and
-// contacts that `eccd solve` reports in the chosen arithmetic.
+// contacts that `eccd solve` reports in the chosen arithmetic. Independent
+// motions ("parameters": "independent", 001 section 4; issue 20): one panel,
+// where A(s) meets B(t) on a grid of the (s, t) square (add_st_grid below),
+// whose boundary is the zero set of F(u, s, t) projected on (s, t), with the
+// answer's s- and t-intervals drawn along the axes (exact by default, double
+// where exact refuses the pair).
 //
 // This file computes the data; compare/plots/scene_figure.py draws it. The
 // data goes through a temporary JSON file ("eccd-plot-data/1", the --data
@@ -39,6 +44,7 @@
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "api/solve.hpp"
+#include "api/static_test.hpp"
 #include "io/solution_json.hpp"
 #include "number/double_traits.hpp"
 #include "kernel/characteristic_polynomial.hpp"
@@ -521,7 +527,56 @@ std::string find_python(std::string& tried) {
   return "";
 }
 
+// Independent motions (001 section 4; issue 20 point 5): where A(s) and B(t) meet, on an n x n grid of the
+// (s, t) square, by the double static test (api/static_test.hpp, status_at: 001 Appendix A with its error
+// bound) on the shared-parameter scene with A fixed at A(s), and the exact static test where double's error
+// bound cannot decide (two balls: f always has a double root): 1 meets (touching or overlapping), 0 separate. The zero set of F(u, s, t) = det((u-1)A(s) - uB(t))
+// projected on (s, t) is the boundary of that region (F > 0 for some u iff separate).
+constexpr int kStGrid = 64;
+void add_st_grid(json& data, const Scene& s) {
+  auto fixed = [&](const SceneObject& o, const Rational& x) {
+    SceneObject f = o;
+    auto M = motion_matrix<Rational, 4>(o.motion, [](const Rational& q) { return q; });
+    MatrixMotion mm;
+    mm.m.assign(4, std::vector<RPoly>(4));
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) mm.m[i][j] = RPoly::constant(M[i][j](x));
+    f.motion = mm;
+    return f;
+  };
+  std::vector<Rational> g;
+  for (int k = 0; k < kStGrid; ++k) g.push_back(Rational(2 * k + 1, 2 * kStGrid));  // cell centres
+  for (auto& x : g) x.canonicalize();
+  json meets = json::array();  // meets[i][k]: s = g[i], t = g[k]
+  int unsure = 0;
+  for (const auto& sv : g) {
+    Scene sh = s;
+    sh.independent = false;
+    sh.answer.reset();
+    sh.a = fixed(s.a, sv);
+    json row = json::array();
+    for (const auto& tv : g) {
+      Status st = status_at(sh, tv, Arithmetic::double_precision());
+      if (st == Status::uncertain) {  // e.g. two balls: f always has a double root, which double cannot tell apart
+        ++unsure;
+        st = status_at(sh, tv, Arithmetic::exact());
+      }
+      row.push_back(st == Status::uncertain ? -1 : in_collision(st) ? 1 : 0);
+    }
+    meets.push_back(row);
+  }
+  std::vector<double> axis;
+  for (const auto& x : g) axis.push_back(x.get_d());
+  data["st_grid"] = {{"n", kStGrid}, {"s", axis}, {"t", axis}, {"meets", meets}, {"uncertain", unsure},
+                     {"how", "static test at each cell's centre: double (001 App. A, error-bounded), exact where double "
+                             "cannot decide (" + std::to_string(unsure) + " cells)"}};
+}
+
 std::string answer_words(const Solution& rep) {
+  if (rep.answer.independent)
+    return !rep.answer.collides ? "free (the swept volumes do not meet)"
+                                : "collides, " + std::to_string(rep.answer.s_intervals.size()) + " s-interval(s), " +
+                                      std::to_string(rep.answer.t_intervals.size()) + " t-interval(s)";
   std::ostringstream o;
   if (!rep.answer.collides) return "free";
   o << "collides";
@@ -554,8 +609,18 @@ int run_plot(const PlotOptions& o) {
   Solution rep;
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
-    refuse_independent(s, "eccd plot (it draws the shared-parameter answer)");
-    rep = solve(s, opt);
+    if (s.independent && o.arith_opt->count() == 0) {  // exact where it answers (two balls), else double
+      try {
+        rep = solve(s, opt);
+      } catch (const std::invalid_argument& e) {
+        opt.arith = Arithmetic::double_precision();
+        arith_note = "exact arithmetic refuses this pair, so double";
+        warn("plot", src.label + ": independent motions: " + e.what() + "; drawing the double answer");
+        rep = solve(s, opt);
+      }
+    } else {
+      rep = solve(s, opt);
+    }
   } catch (const std::invalid_argument& e) {
     std::cerr << "eccd plot: " << src.label << ": " << cli_message(e) << "\n";
     return 3;
@@ -583,7 +648,10 @@ int run_plot(const PlotOptions& o) {
   data["arith"] = opt.arith.name();
   data["arith_note"] = arith_note;
   data["solve"] = solution_to_json(rep);
-  if (s.dim == 2) {
+  if (s.independent) {
+    data["kind"] = "independent";
+    add_st_grid(data, s);
+  } else if (s.dim == 2) {
     add_objects<3>(data, s, rep, o.instants);
     add_curve_2d(data, s, rep);
   } else {

@@ -20,6 +20,7 @@
 #include "app/time_left.hpp"
 #include "compare/csv.hpp"
 #include "compare/harness.hpp"
+#include "compare/harness_families.hpp"
 #include "compare/scene_generator.hpp"
 #include "kernel/budget.hpp"
 #include "io/scene_reader.hpp"
@@ -257,7 +258,7 @@ std::vector<std::string> scene_key(const std::string& line) {
   auto f = csv_split(line, "results.csv row");
   static const std::map<std::string, std::string> fam{{"colliding", "0"}, {"free", "1"}, {"touch", "2"}, {"near-miss", "3"},
                                                        {"overlap", "4"}, {"graze", "5"}, {"decimal", "6"}, {"keyframe", "7"},
-                                                       {"case", "8"}};
+                                                       {"case", "8"}, {"cycloidal", "9a"}, {"independent", "9b"}};
   auto pad = [](const std::string& x) { return std::string(8 - std::min<std::size_t>(8, x.size()), '0') + x; };
   std::string d = f.size() > 6 && !f[6].empty() ? pad(f[6].substr(3)) : "";
   std::string digits = f.size() > 27 ? pad(f[27]) : "";  // results_csv_header(): column 28 is digits
@@ -887,14 +888,6 @@ int run_report(const ReportArgs& a) {
         ++corpus;
         continue;
       }
-      if (s.independent) {  // issue 20: the report's answers are shared-parameter ones
-        if (!quiet()) std::fprintf(stderr, "eccd report: %s: skipped (independent motions: not part of the report yet)\n", f.string().c_str());
-        continue;
-      }
-      if (scene_degree(s) < 0) {
-        if (!quiet()) std::fprintf(stderr, "eccd report: %s: skipped (cycloidal motion: no exact ground truth)\n", f.string().c_str());
-        continue;
-      }
       tasks.push_back({Task::SceneTask, text, f.string(), source});
       tasks.back().dim = s.dim;
       tasks.back().degree = scene_degree(s);
@@ -1050,6 +1043,7 @@ int run_report(const ReportArgs& a) {
   meta["shard"] = shard_n > 1 ? nlohmann::json(a.shard) : nlohmann::json(nullptr);
   meta["scene_count"] = generated + from_cases;
   meta["failed"] = failures;
+  meta["no_ground_truth"] = no_ground_truth_meta(rows);  // issue 20: scenes whose ground truth is refused or undecided
   meta["result_rows"] = rows.size();  // --merge checks a part's row counts against these
   meta["map_rows"] = cells.size();
   {
@@ -1247,6 +1241,7 @@ int run_merge(const ReportArgs& a) {
   meta["wall_seconds"] = wall;
   meta["shard"] = nullptr;
   meta["result_rows"] = rows.size();
+  meta["no_ground_truth"] = no_ground_truth_meta(rows);
   meta["map_rows"] = cells.size();
   if (meta.contains("externals") && meta["externals"].is_array()) meta["externals"] = externals_meta(meta["externals"], rows);
   if (meta.contains("fcl") && meta["fcl"].is_object() && meta["pipelines"].is_array()) {  // the parts' counts, recounted over all rows
@@ -1284,7 +1279,8 @@ Command add_report_command(CLI::App& app) {
   c.sub = app.add_subcommand(
       "report",
       "Robustness report: generate seeded scenes (2D and 3D, motion degrees 2-6, families colliding / free / touch / "
-      "near-miss, overlap / graze (linear translations, degree 1), and the realistic-input families decimal / keyframe), "
+      "near-miss, overlap / graze (linear translations, degree 1), and the realistic-input families decimal / keyframe; "
+      "--families cycloidal,independent adds issue 20's motions, against the certified resp. exact answer), "
       "add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
       "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and in "
       "power form (double), the sampling and marching baselines), each floating one per input mode (--input) and under a "

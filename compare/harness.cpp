@@ -2,6 +2,7 @@
 #include "compare/harness.hpp"
 
 #include "compare/csv.hpp"
+#include "compare/harness_families.hpp"
 #include "compare/scene_generator.hpp"
 #include "io/solution_json.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -370,7 +371,34 @@ void rows_from_external(const ExternalEngine& e, const SceneInfo& info, const An
 
 }  // namespace
 
+void fill_row_from_run(ResultRow& row, BoundedRun&& br, const Answer& truth) {
+  std::optional<Solution> got = std::move(br.got);
+  row.error = br.error;
+  row.reason = br.reason;
+  if (br.timed_out) {
+    row.m = answer_metrics(nullptr, truth);
+    row.m.outcome = "undecided";
+    row.time_us = br.wall_s * 1e6;
+    return;
+  }
+  row.m = answer_metrics(got ? &got->answer : nullptr, truth);
+  if (got) {
+    row.time_us = got->time_ms * 1e3;
+    row.input = to_string(got->input);
+  }
+  if (row.m.outcome == "undecided") {
+    // the pipeline's own reasons, else where
+    std::string why;
+    for (const auto& w : got->undecided_reasons)
+      if (!w.empty() && why.find(w) == std::string::npos) why += (why.empty() ? "" : "; ") + w;
+    if (why.empty())
+      for (const auto& u : got->answer.undecided) why += (why.empty() ? "" : "; ") + ("undecided near t = " + u.approx);
+    row.reason = why.empty() ? "undecided" : why;
+  }
+}
+
 std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const HarnessOptions& opt) {
+  if (motion_family_scene(s)) return run_motion_family_scene(s, info, opt);  // cycloidal, independent (harness_families.hpp)
   std::vector<ResultRow> rows;
   auto pipes = harness_pipelines(s.dim, opt);
   Solution exact;
@@ -420,39 +448,10 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
       rows.push_back(row);
       continue;
     }
-    std::optional<Solution> got;
-    bool timed_out = false;
-    double wall = 0;
-    if (ps.label == "exact") {
-      got = exact;
-    } else {
-      BoundedRun br = run_bounded(s, ps.opt, opt.budget_s, opt.isolate);
-      got = std::move(br.got);
-      timed_out = br.timed_out;
-      wall = br.wall_s;
-      row.error = br.error;
-      row.reason = br.reason;
-    }
-    if (timed_out) {
-      row.m = answer_metrics(nullptr, exact.answer);
-      row.m.outcome = "undecided";
-      row.time_us = wall * 1e6;
-    } else {
-      row.m = answer_metrics(got ? &got->answer : nullptr, exact.answer);
-      if (got) {
-        row.time_us = got->time_ms * 1e3;
-        row.input = to_string(got->input);
-      }
-      if (row.m.outcome == "undecided") {
-        // the pipeline's own reasons, else where
-        std::string why;
-        for (const auto& w : got->undecided_reasons)
-          if (!w.empty() && why.find(w) == std::string::npos) why += (why.empty() ? "" : "; ") + w;
-        if (why.empty())
-          for (const auto& u : got->answer.undecided) why += (why.empty() ? "" : "; ") + ("undecided near t = " + u.approx);
-        row.reason = why.empty() ? "undecided" : why;
-      }
-    }
+    BoundedRun br;
+    if (ps.label == "exact") br.got = exact;
+    else br = run_bounded(s, ps.opt, opt.budget_s, opt.isolate);
+    fill_row_from_run(row, std::move(br), exact.answer);
     // Coefficient errors are recomputed from the prepared scene, i.e. for the prepared input mode only (a rounded
     // row leaves them empty rather than show another mode's numbers).
     if ((ps.arith == "double" || ps.arith == "mpfr") && ps.input == "prepared") {
@@ -486,7 +485,8 @@ std::string results_csv_line(const ResultRow& r) {
                    s.family == "near-miss" || s.family == "overlap" ? separation_label(s.d_exponent) : "",
                    s.seed ? std::to_string(*s.seed) : "", r.pipeline, r.arith, std::to_string(r.bits), r.basis, r.method,
                    opt(r.coef_err), opt(r.delta_err), r.m.outcome, r.m.collides ? (*r.m.collides ? "1" : "0") : "",
-                   r.m.exact_collides ? "1" : "0", std::to_string(r.m.intervals), std::to_string(r.m.exact_intervals),
+                   r.m.outcome == kNoGroundTruthOutcome ? "" : r.m.exact_collides ? "1" : "0", std::to_string(r.m.intervals),
+                   r.m.outcome == kNoGroundTruthOutcome ? "" : std::to_string(r.m.exact_intervals),
                    std::to_string(r.m.missed_contacts), std::to_string(r.m.false_contacts), opt(r.m.first_contact_err),
                    opt(r.m.endpoint_err), fmt(r.time_us, "%.1f"), r.m.structure_ok ? "1" : "0", r.input,
                    s.digits ? std::to_string(s.digits) : "", csv_text(r.reason), opt(r.coef_err_common)});

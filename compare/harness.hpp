@@ -53,8 +53,10 @@
 // and its structure_ok means collides and the first contact agree. A scene
 // whose motions FCL's translation motion cannot express gets no fcl/ccd row
 // (fcl_skipped counts them from the rows).
-// Requirements: a scene with rational motions (the exact pipeline refuses
-// cycloidal motions, and so does the harness).
+// Scenes of the motion families (a cycloidal motion, or "parameters":
+// "independent"; issue 20) have their own pipelines and ground truth:
+// compare/harness_families.hpp (run_scene hands them over).
+// Requirements: none beyond a scene the reader accepted.
 #include "api/solve.hpp"
 #include "compare/external_answers.hpp"
 #include "compare/fcl_engine.hpp"
@@ -149,6 +151,10 @@ struct ResultRow {
   std::string input;   // rounded | prepared: where the floating run started
   std::string reason;  // undecided rows: why (time budget, the pipeline's undecided instants); error rows: the message
 };
+
+// A row's outcome, metrics, time, input and reason from one run (br.got, or
+// its time-out or error) against the ground-truth answer `truth`.
+void fill_row_from_run(ResultRow& row, BoundedRun&& br, const Answer& truth);
 
 // Every pipeline on one scene; the exact row first, the external engines' rows
 // (compare/external_answers.hpp; arith "external", basis "none") last.

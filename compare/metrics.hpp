@@ -31,7 +31,8 @@
 //    or wrong, error = the pipeline threw); the numbers of intervals; missed
 //    and false contacts (matched one to one within `tol`); the first-contact
 //    error and the largest interval-end error (only when the interval counts
-//    agree; 0 without intervals); structure_ok = correct, the same intervals
+//    agree; 0 without intervals; independent motions: the s- and t-intervals
+//    count together, as api/answer_difference.hpp counts them); structure_ok = correct, the same intervals
 //    one to one (ends matching), the same contacts and contact intervals.
 //    This follows the habit of CCD benchmarks against an exact ground truth
 //    (Wang et al., ACM TOG 2021: false positives, false negatives, time).
@@ -175,7 +176,7 @@ struct AnswerMetrics {
 inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, double tol = 1e-6) {
   AnswerMetrics m;
   m.exact_collides = exact.collides;
-  m.exact_intervals = int(exact.intervals.size());
+  m.exact_intervals = int(exact.independent ? exact.s_intervals.size() + exact.t_intervals.size() : exact.intervals.size());
   if (!got) {
     m.outcome = "error";
     return m;
@@ -185,6 +186,7 @@ inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, doub
   AnswerDifference d = answer_difference(*got, exact, o);
   m.collides = got->collides;
   m.intervals = d.intervals;
+  m.exact_intervals = d.reference_intervals;  // independent motions: s- and t-intervals together (issue 20)
   if (!got->undecided.empty()) m.outcome = "undecided";
   else if (!d.collides_differs) m.outcome = "correct";
   else m.outcome = got->collides ? "false_positive" : "false_negative";

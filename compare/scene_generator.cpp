@@ -1,6 +1,7 @@
 // Scene generators (see compare/scene_generator.hpp for the constructions).
 #include "compare/scene_generator.hpp"
 
+#include "compare/motion_families.hpp"
 #include "compare/seeded_rng.hpp"
 
 #include "kernel/bernstein.hpp"
@@ -784,6 +785,7 @@ std::uint64_t scene_seed(std::uint64_t run_seed, const GeneratorSpec& c, int ind
 }
 
 GeneratedScene generate_scene(const GeneratorSpec& spec) {
+  if (auto g = generate_motion_family(spec)) return *g;  // cycloidal, independent (compare/motion_families.hpp)
   if (spec.dim != 2 && spec.dim != 3) throw std::invalid_argument("dimension must be 2 or 3");
   if (spec.degree < 1 || spec.degree > 8) throw std::invalid_argument("motion degree must be between 1 and 8");
   const bool linear = linear_family(spec.family), realistic = realistic_family(spec.family);
@@ -896,9 +898,11 @@ std::vector<GeneratorSpec> plan_scenes(const GeneratePlan& plan) {
         }
   };
   for (int dim : plan.dims) {
+    for (const auto& fam : plan.families)  // cycloidal (2D), independent (3D): degree 1, once per dimension
+      for (int d : motion_family_dims(fam)) if (d == dim) emit(dim, 1, fam, motion_family_motion(fam));
     for (int deg : plan.degrees)
       for (const auto& fam : plan.families) {
-        if (linear_family(fam)) continue;
+        if (linear_family(fam) || motion_family(fam)) continue;
         if (fam == "keyframe" && (deg < 2 || deg > 6)) continue;
         for (const auto& mot : motions_for(dim)) {
           if (!plan.motions.empty() && std::find(plan.motions.begin(), plan.motions.end(), mot) == plan.motions.end()) continue;

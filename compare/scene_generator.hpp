@@ -72,6 +72,12 @@
 //              follows the same rule. One joint is written as `euler` (3D) or
 //              `kinematic` (2D) with Bernstein coefficients = the key values;
 //              a chain as a `matrix` motion (exact products of the decimals).
+//   cycloidal, independent (issue 20) motions that are not shared-parameter
+//              rational ones: cycloidal (2D, 003 section V) and independent
+//              straight paths A(s), B(t) (3D, 001 section 4), each with a kind
+//              (colliding, free, touch, ...) picked by the seed and stated in
+//              the note; generated once per dimension at degree 1, in their own
+//              functions (compare/motion_families.hpp, which describes them).
 // The pipelines never see these facts: the harness takes the exact pipeline
 // as ground truth, and a test checks the construction against it.
 // Requirements: exact rationals only (no floating value decides anything;
@@ -90,7 +96,7 @@ namespace eccd {
 struct GeneratorSpec {
   int dim = 2;
   int degree = 2;                    // motion degree, 1..8 (the report uses 2..6)
-  std::string family = "colliding";  // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe
+  std::string family = "colliding";  // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe | cycloidal | independent
   std::string motion = "kinematic";  // 2D: kinematic; 3D: euler | affine; overlap and graze: translation
   int d_exponent = 0;                // near-miss: separation d = 10^-d_exponent (>= 1); overlap: depth 10^-d_exponent
   int digits = 0;                    // decimal, keyframe: significant digits of every number (1..30)

@@ -4,6 +4,7 @@
 #include "io/certificate_check.hpp"
 
 #include "io/certificate.hpp"
+#include "io/cycloidal_certificate.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "exact/descartes.hpp"
 #include "kernel/collision_timeline.hpp"
@@ -533,6 +534,7 @@ struct Checker {
 }  // namespace
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
+  if (cycloidal_certificate_scene(s)) return check_cycloidal_certificate(s, scene_doc, cert);  // io/cycloidal_certificate.hpp
   CertificateCheck out;
   Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
   try {

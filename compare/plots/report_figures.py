@@ -101,12 +101,14 @@ class InputError(Exception):
 
 # --------------------------------------------------------------------------- input
 
-OUTCOMES = ("correct", "false_positive", "false_negative", "undecided", "error")
+OUTCOMES = ("correct", "false_positive", "false_negative", "undecided", "error", "no_ground_truth")
+NO_TRUTH = "no_ground_truth"  # issue 20: the scene has no ground truth (compare/harness_families.hpp); kept out of every table
 ARITHS = ("double", "mpfr", "exact", "certified", "fcl", "external")  # fcl: FCL as a peer; external: report --external
-BASES = ("power", "bernstein", "scaled-bernstein", "exact", "none")  # none: certified, fcl and external rows
-FAMILIES = ("colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe", "case")
+BASES = ("power", "bernstein", "scaled-bernstein", "exact", "none", "pointwise")  # none: certified, fcl and external rows; pointwise: cycloidal
+FAMILIES = ("colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe", "case", "cycloidal",
+            "independent")
 SOURCES = ("generated", "cases")
-MOTIONS = ("kinematic", "euler", "affine", "translation", "case")
+MOTIONS = ("kinematic", "euler", "affine", "translation", "case", "cycloidal")
 INPUTS = ("rounded", "prepared")
 ANSWERS = ("separate", "touching", "colliding", "undecided", "error")
 
@@ -227,7 +229,7 @@ def read_csv(path, columns, optional=()):
             text = raw[col]
             where = f"{name} line {ln}, column '{col}' (column {index[col] + 1})"
             if text == "":
-                if (empty_ok is True or (empty_ok == "error" and raw["outcome"] == "error")
+                if (empty_ok is True or (empty_ok == "error" and raw["outcome"] == "error") or raw["outcome"] == NO_TRUTH
                         or (empty_ok == "nodecision" and raw["outcome"] in ("error", "undecided"))):
                     row[col] = None
                     continue
@@ -1142,13 +1144,17 @@ def section_what_was_run(data):
     out.append(f"- Started: {m['started']}")
     out.append(f"- Wall time: {fmt_seconds(m['wall_seconds'])} in {m['shards']} shard{'s' if m['shards'] != 1 else ''}")
     sc = f"- Scenes: {nscenes} in results.csv, {len(data.rows)} rows"
-    if m["scene_count"] != nscenes:
+    if m["scene_count"] != nscenes + len(getattr(data, "no_truth", {})):
         sc += f" (meta.json says {m['scene_count']} scenes)"
     out.append(sc)
     failed = m.get("failed")
     if isinstance(failed, list) and failed:
         shown = "; ".join(str(f) for f in failed[:3]) + ("; …" if len(failed) > 3 else "")
         out.append(f"- Failed tasks (meta.json): {len(failed)}: {shown}")
+    no_truth = getattr(data, "no_truth", {})
+    if no_truth:
+        shown = "; ".join(f"{k} ({v[:160]})" for k, v in list(no_truth.items())[:3]) + ("; …" if len(no_truth) > 3 else "")
+        out.append(f"- Scenes without ground truth (never guessed, left out of every table): {len(no_truth)}: {shown}")
     bits_data = sorted({data.pinfo[p][1] for p in data.order if data.pinfo[p][0] == "mpfr"})
     if set(bits_data) != set(m["mpfr_bits"]):
         out.append(f"- Note: results.csv has MPFR precisions {', '.join(map(str, bits_data)) or 'none'}, "
@@ -1169,7 +1175,8 @@ def section_what_was_run(data):
             "positive says *collides* and the exact answer does not; *undecided* (the floating pipeline said it "
             "could not decide) and *errors* are counted apart, never as right or wrong. *Structure wrong*: among "
             "rows without error, the share whose collision intervals (ends within 1e-6), contacts or answer differ "
-            "from the exact ones. The exact pipeline is the ground truth.", ""]
+            "from the exact ones. The exact pipeline is the ground truth (for a cycloidal scene the certified one: "
+            "exact arithmetic cannot represent its motion; a scene without ground truth is counted above and left out).", ""]
     return out
 
 
@@ -1181,6 +1188,8 @@ FAMILY_GROUPS = (
     ("just overlapping and graze", ("overlap", "graze")),
     ("realistic decimals", ("decimal", "keyframe")),
     ("paper cases", ("case",)),
+    ("cycloidal (003 V; certified truth)", ("cycloidal",)),
+    ("independent motions (001 4; s-, t-intervals)", ("independent",)),
 )
 # The MPFR tables put the two isolated-contact families on rows of their own (a double root: see MINBITS_NOTE).
 MPFR_FAMILY_GROUPS = tuple(g for g in FAMILY_GROUPS if g[0] != "just overlapping and graze")[:4] + (
@@ -2332,6 +2341,16 @@ def main(argv):
     if not os.path.isdir(out_dir):
         raise InputError(f"{out_dir}: not a directory")
     all_rows = read_csv(os.path.join(out_dir, "results.csv"), RESULT_COLUMNS, OPTIONAL_RESULT_COLUMNS)
+    check_results(all_rows)
+    # Issue 20: rows of scenes without ground truth, and the certified row that IS a cycloidal scene's ground truth
+    # (compared with itself), are kept out of every table; the scenes without ground truth are counted apart.
+    no_truth = {}
+    for r in all_rows:
+        if r["outcome"] == NO_TRUTH:
+            no_truth.setdefault(r["scene"], r["reason"] or "")
+    all_rows = [r for r in all_rows if r["outcome"] != NO_TRUTH and not (r["reason"] or "").startswith("ground truth:")]
+    if not all_rows:
+        raise InputError("results.csv: every scene lacks a ground truth (outcome no_ground_truth): nothing to report")
     all_pinfo = check_results(all_rows)
     # The main sections read one input mode (rounded where present: what users run); the section on input modes
     # and families reads every row.
@@ -2339,7 +2358,10 @@ def main(argv):
     modes = [m for m in INPUTS if any(r["input"] == m and r["arith"] in ("double", "mpfr") for r in all_rows)]
     primary = modes[0] if modes else "prepared"
     # exact and the engines that run in one input mode only (certified, FCL, external) are in every section
-    rows = [r for r in all_rows if r["arith"] in ("exact",) + OTHER_ENGINES or r["input"] == primary]
+    # (a pipeline that runs in one input mode only, e.g. double/independent or double/cycloidal, is in every section)
+    in_primary = {base_label(r["pipeline"]) for r in all_rows if r["input"] == primary}
+    rows = [r for r in all_rows if r["arith"] in ("exact",) + OTHER_ENGINES or r["input"] == primary
+            or base_label(r["pipeline"]) not in in_primary]
     pinfo = check_results(rows)
     meta = read_meta(os.path.join(out_dir, "meta.json"))
     fmap = None
@@ -2350,6 +2372,7 @@ def main(argv):
         fmap = {"rows": fm_rows, "exact": exact_at, "ux": ux, "uy": uy}
     data = Data(rows, pinfo, meta, fmap)
     data.all_rows, data.primary_input, data.input_modes = all_rows, primary, modes
+    data.no_truth = no_truth
     data.all_pinfo = all_pinfo
     data.all_order = [p for p in data.order if p in all_pinfo] + [p for p in dict.fromkeys(r["pipeline"] for r in all_rows)
                                                                   if p not in data.order]

@@ -274,6 +274,50 @@ def draw_zero_set(ax, data):
     ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.85, title=marks_title(rep), title_fontsize=8)
 
 
+def draw_st(ax, data):
+    """Independent motions (001 section 4): where A(s) meets B(t) in the (s, t) square (the zero set of F(u, s, t)
+    projected on (s, t) is its boundary), with the answer's s-intervals along the s-axis and t-intervals along the
+    t-axis."""
+    import numpy as np
+    from matplotlib.colors import ListedColormap
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    g, rep = data["st_grid"], data["solve"]
+    z = np.array(g["meets"], dtype=float).T  # rows: t, columns: s
+    cmap = ListedColormap(["#bbbbbb", "#b8e3b0", "#f4a6a6"])  # -1 uncertain, 0 separate, 1 meets
+    ax.imshow(z, origin="lower", extent=(0, 1, 0, 1), cmap=cmap, vmin=-1.5, vmax=1.5, interpolation="nearest", aspect="auto")
+    def bars(key, along_s):
+        for a, b in rep.get(key, []):
+            lo, hi = float(a["approx"]), float(b["approx"])
+            w = max(hi - lo, 0.004)
+            if along_s:
+                ax.add_patch(matplotlib.patches.Rectangle((lo - (w - (hi - lo)) / 2, -0.045), w, 0.03, color="#c0392b", clip_on=False))
+                ax.annotate(f"[{short(lo)}, {short(hi)}]", ((lo + hi) / 2, -0.07), ha="center", va="top", fontsize=8,
+                            color="#c0392b", annotation_clip=False)
+            else:
+                ax.add_patch(matplotlib.patches.Rectangle((-0.045, lo - (w - (hi - lo)) / 2), 0.03, w, color="#1f4e9c", clip_on=False))
+                ax.annotate(f"[{short(lo)}, {short(hi)}]", (-0.07, (lo + hi) / 2), ha="right", va="center", fontsize=8,
+                            color="#1f4e9c", annotation_clip=False, rotation=90)
+    bars("s_intervals", True)
+    bars("t_intervals", False)
+    ax.set_xlim(0, 1)
+    ax.set_ylim(0, 1)
+    ax.set_xlabel("s (A's path parameter)", labelpad=28)
+    ax.set_ylabel("t (B's path parameter)", labelpad=28)
+    ax.set_title(f"where A(s) meets B(t), {g['n']}×{g['n']} grid: its boundary is the zero set of\n"
+                 f"F(u, s, t) = det((u−1)A(s) − uB(t)) projected on (s, t)\n{g['how']}", fontsize=9)
+    handles = [Patch(color="#f4a6a6", label="A(s) and B(t) meet"), Patch(color="#b8e3b0", label="separate"),
+               Line2D([], [], color="#c0392b", lw=6, label="s_intervals of the answer"),
+               Line2D([], [], color="#1f4e9c", lw=6, label="t_intervals of the answer")]
+    ax.legend(handles=handles, fontsize=8, loc="upper right", framealpha=0.85)
+
+
+def independent_text(rep):
+    if not rep.get("collides"):
+        return "free: the swept volumes do not meet"
+    return f"collides: {len(rep.get('s_intervals', []))} s-interval(s), {len(rep.get('t_intervals', []))} t-interval(s)"
+
+
 def main(argv):
     if len(argv) != 3:
         print("usage: scene_figure.py DATA.json OUT.png", file=sys.stderr)
@@ -284,6 +328,13 @@ def main(argv):
         print(f"scene_figure.py: {argv[1]}: not an eccd-plot-data/1 file", file=sys.stderr)
         return 2
     rep = data["solve"]
+    if data.get("kind") == "independent":
+        fig = plt.figure(figsize=(9, 8), dpi=100, layout="constrained")
+        draw_st(fig.subplots(1, 1), data)
+        fig.suptitle(f"{data['scene']} (3D, independent motions A(s), B(t)): {independent_text(rep)}\n"
+                     f"answer in {data['arith']}" + (f" ({data['arith_note']})" if data.get("arith_note") else ""), fontsize=11)
+        fig.savefig(argv[2], format="png")
+        return 0
     fig = plt.figure(figsize=(14, 6), dpi=100, layout="constrained")
     left, right = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.0, 1.15]})
     draw_objects(left, data)

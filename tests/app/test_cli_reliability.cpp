@@ -255,11 +255,12 @@ TEST_CASE("long keys are cut, NUL bytes named, unreadable files named", "[cli][r
   CHECK(contains(n.err, "NUL byte"));
   CHECK(!contains(n.err, "unexpected end of input"));
 
-  // check-certificate names the scene it refuses (cycloidal: no exact pipeline)
+  // check-certificate on a cycloidal scene expects its MPFI certificate (issue 20): a scene file given as
+  // the certificate is REJECTED (exit 1), naming the format it expected
   Run c = run_eccd("check-certificate " + q(bad("cycloidal_exact.json")) + " " + q(bad("cycloidal_exact.json")), 30);
-  INFO("stderr: " << c.err);
-  CHECK(c.code == 2);
-  CHECK(contains(c.err, "cycloidal_exact.json"));
+  INFO("stderr: " << c.err << " stdout: " << c.out);
+  CHECK(c.code == 1);
+  CHECK(contains(c.out, "eccd-cycloidal-certificate/1"));
 }
 
 // ---- item 8: long commands -------------------------------------------------------
