@@ -3,15 +3,19 @@
 
   two-rows-3d.json  12 ellipsoids in two groups ("left", "right") of six,
                     51 key times (50 frames), pairs "between-groups" (36 pairs
-                    per frame). The rows stand 6 apart; two bodies punch across:
-                    left-2 translates towards right-2 (frames 10-30, peak at 20),
-                    right-4 towards left-4 (frames 28-48, peak at 38). right-2
-                    turns slowly about z with a fixed centre; left-4 breathes (an
-                    affine deformation, diag(1 + s/4, 1 - s/5, 1), fixed centre);
-                    the others turn slowly in place. Each body either translates
-                    or turns in a frame, never both, so every motion has degree
-                    <= 2 and exact mode stays cheap; the bounding spheres drop
-                    every pair that is not a punching pair near its target.
+                    per frame). The rows stand 5 apart (x = -2.5 and 2.5, y =
+                    0, 2.5, ..., 12.5); four bodies punch across, by translation
+                    only: left-0 diagonally into right-1 (frames 2-14, peak at
+                    key 8), left-2 into right-2 (10-30, peak 20), left-5 under
+                    right-5, 0.05 short of it (18-34, peak 26: a near miss),
+                    right-4 into left-4 (28-48, peak 38). right-2 turns slowly
+                    about z with a fixed centre; left-4 breathes (an affine
+                    deformation diag(1 + s/4, 1 - s/5, 1), fixed centre);
+                    right-5 stands still; the others turn slowly in place. Each
+                    body either translates or turns in a frame, never both, so
+                    every motion has degree <= 2 and exact mode stays cheap; the
+                    bounding spheres drop every pair that is not a punching pair
+                    near another body.
   swarm-2d.json     5 ellipses in the plane, 21 key times (20 frames), pairs
                     "all": three turn in place, two cross the field; some pairs
                     collide in some frames.
@@ -71,7 +75,7 @@ def rows_3d():
     bodies = []
     semi = [["0.9", "0.6", "0.5"], ["0.7", "0.7", "0.5"], ["0.9", "0.5", "0.6"],
             ["0.6", "0.8", "0.5"], ["0.8", "0.6", "0.6"], ["0.7", "0.5", "0.7"]]
-    for side, x0 in (("left", F(-3)), ("right", F(3))):
+    for side, x0 in (("left", F(-5, 2)), ("right", F(5, 2))):
         for i in range(6):
             name = f"{side}-{i}"
             y = F(5, 2) * i
@@ -80,10 +84,21 @@ def rows_3d():
                 pos = [x0, y, F(0)]
                 q = [F(1), F(0), F(0), F(0)]
                 deform = None
-                if name == "left-2":  # punches right-2: translation only
-                    pos[0] = x0 + F(46, 10) * bump(k, 10, 20, 30)
+                if name == "left-0":  # punches right-1 diagonally: translation only
+                    b = bump(k, 2, 8, 14)
+                    pos[0] = x0 + F(37, 10) * b
+                    pos[1] = y + F(5, 2) * b
+                elif name == "left-2":  # punches right-2: translation only
+                    pos[0] = x0 + F(36, 10) * bump(k, 10, 20, 30)
+                elif name == "left-5":  # under right-5, 0.05 short at the peak (semi-axes 0.5 in y both)
+                    b = bump(k, 18, 26, 34)
+                    pos[0] = x0 + 5 * b
+                    pos[1] = y - F(105, 100) * b
+                    q = [F(1), F(0), F(0), F(0)]
+                elif name == "right-5":  # stands still
+                    pass
                 elif name == "right-4":  # punches left-4: translation only
-                    pos[0] = x0 - F(47, 10) * bump(k, 28, 38, 48)
+                    pos[0] = x0 - F(36, 10) * bump(k, 28, 38, 48)
                     pos[1] = y + F(1, 10) * bump(k, 28, 38, 48)
                 elif name == "right-2":  # turns about z in place
                     q = turn_z(k, F(1, 40))
@@ -106,8 +121,9 @@ def rows_3d():
         "times": times,
         "bodies": bodies,
         "pairs": "between-groups",
-        "note": "cases/animations/make_animations.py: two rows of six ellipsoids 6 apart; left-2 punches right-2 "
-                "(frames 10-30), right-4 punches left-4 (frames 28-48); 50 frames",
+        "note": "cases/animations/make_animations.py: two rows of six ellipsoids 5 apart; left-0 punches right-1 "
+                "(frames 2-14), left-2 right-2 (10-30), left-5 passes under right-5, 0.05 apart (18-34), right-4 punches "
+                "left-4 (28-48); 50 frames",
     }
 
 
