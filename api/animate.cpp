@@ -333,6 +333,20 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
   return res;
 }
 
+namespace {
+// animation-format.md: "With a floating arithmetic the instants carry no lo/hi" (the scene answer writes null).
+void drop_null_brackets(nlohmann::ordered_json& j) {
+  if (j.is_object()) {
+    if (j.contains("approx"))
+      for (const char* k : {"lo", "hi"})
+        if (j.contains(k) && j[k].is_null()) j.erase(k);
+    for (auto& [key, v] : j.items()) drop_null_brackets(v);
+  } else if (j.is_array()) {
+    for (auto& v : j) drop_null_brackets(v);
+  }
+}
+}  // namespace
+
 nlohmann::ordered_json animation_result_to_json(const AnimationResult& r) {
   nlohmann::ordered_json j;
   j["format"] = kAnimationAnswerFormat;
@@ -348,6 +362,7 @@ nlohmann::ordered_json animation_result_to_json(const AnimationResult& r) {
     ev["frame"] = e.frame;
     ev["pair"] = pair(e.body_a, e.body_b);
     ev["answer"] = nlohmann::ordered_json::parse(answer_to_json(e.answer).dump());
+    drop_null_brackets(ev["answer"]);
     j["events"].push_back(ev);
   }
   j["undecided"] = nlohmann::ordered_json::array();
