@@ -306,6 +306,9 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
         std::string why;
         for (const auto& w : r.solution.undecided_reasons) why += (why.empty() ? "" : "; ") + w;
         if (why.empty()) why = "undecided instants in the answer";
+        std::string at;
+        for (const auto& u : pa.answer.undecided) at += (at.empty() ? "" : ", ") + u.approx;
+        if (!at.empty()) why += " (at t ~ " + at + ")";
         res.undecided.push_back({k, tasks[t].a, tasks[t].b, why});
         ++fs.undecided;
       } else if (r.solution.answer.collides) {

@@ -272,3 +272,35 @@ TEST_CASE("animate: the bounding sphere contains the body over the frame", "[ani
   // the semi-axes bound: right-0 has semi-axes 0.9, 0.6, 0.5 and stands still: radius exactly 9/10
   REQUIRE(swept_bounding_sphere(anim, 1, 0).radius == Rational(9, 10));
 }
+
+TEST_CASE("animate: a graze double cannot decide is undecided, never an event; exact finds the touch", "[animation]") {
+  // Two unit disks / balls; b passes a at centre distance 2 at tau = 1/2: an isolated touch at t = 1/2.
+  for (int dim : {2, 3}) {
+    json q = dim == 3 ? json::array({"1", "0", "0", "0"}) : json::array({"1", "0"});
+    auto at = [&](const char* x, const char* y) {
+      json p = json::array({x, y});
+      if (dim == 3) p.push_back("0");
+      return json{{"position", p}, {"orientation", q}};
+    };
+    json semi = dim == 3 ? json::array({"1", "1", "1"}) : json::array({"1", "1"});
+    json doc = {{"format", "ellipse-ccd-animation/1"}, {"name", "graze"}, {"dim", dim}, {"times", {"0", "1"}},
+                {"bodies", {{{"name", "a"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("0", "0"), at("0", "0")}}},
+                            {{"name", "b"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("-1", "2"), at("1", "2")}}}}}};
+    const Animation anim = animation_from_text(doc.dump(), "graze");
+    AnimateOptions o;
+    o.all_intervals = true;
+    o.solve.arith = parse_arithmetic("double");
+    const AnimationResult d = animate(anim, o);
+    INFO(dim);
+    REQUIRE(d.events.empty());
+    REQUIRE(d.undecided.size() == 1);
+    REQUIRE_FALSE(d.undecided[0].why.empty());
+    o.solve.arith = parse_arithmetic("exact");
+    const AnimationResult e = animate(anim, o);
+    REQUIRE(e.undecided.empty());
+    REQUIRE(e.events.size() == 1);
+    REQUIRE(e.events[0].answer.contacts.size() == 1);
+    REQUIRE(*e.events[0].answer.contacts[0].lo == Rational(1, 2));
+    REQUIRE(*e.events[0].answer.contacts[0].hi == Rational(1, 2));
+  }
+}
