@@ -72,6 +72,8 @@
 //              follows the same rule. One joint is written as `euler` (3D) or
 //              `kinematic` (2D) with Bernstein coefficients = the key values;
 //              a chain as a `matrix` motion (exact products of the decimals).
+//              The interpolation is kernel/keyframe_motion.hpp's, the code
+//              `eccd animate` runs (one rule for the family and animations).
 // The pipelines never see these facts: the harness takes the exact pipeline
 // as ground truth, and a test checks the construction against it.
 // Requirements: exact rationals only (no floating value decides anything;
