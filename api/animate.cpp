@@ -130,9 +130,6 @@ struct TaskResult {
   Solution solution;
   bool solved = false;
   std::string budget_why;  // exact: a budget ran out
-#ifdef ECCD_ANIMATE_PLANES
-  std::optional<SeparatingPlane> next_plane;
-#endif
   std::exception_ptr error;
 };
 
@@ -177,7 +174,8 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
   if (opt.shard_count < 1 || opt.shard_index >= opt.shard_count)
     throw std::invalid_argument("--shard " + std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count) +
                                 ": expected i/n with 0 <= i < n");
-  const auto t_start = std::chrono::steady_clock::now();
+  using SteadyClock = std::chrono::steady_clock;
+  const auto t_start = SteadyClock::now();
   AnimationResult res;
   res.animation = anim.name;
   res.file = anim.path;
@@ -209,16 +207,15 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
 
   const std::size_t F = anim.frames();
   const std::size_t first = F * opt.shard_index / opt.shard_count, last = F * (opt.shard_index + 1) / opt.shard_count;
-#ifdef ECCD_ANIMATE_PLANES
-  std::vector<std::optional<SeparatingPlane>> kept(anim.pairs.size());
-#endif
 
+  // Stage 1, frame by frame: bounding spheres, sweep-and-prune on x, then the exact sphere test.
+  std::vector<FrameSummary> summary;
+  std::vector<std::vector<PairTask>> frame_tasks;  // per frame, in the order of pairs
   for (std::size_t k = first; k < last; ++k) {
-    const auto t_frame = std::chrono::steady_clock::now();
+    const auto t_frame = SteadyClock::now();
     FrameSummary fs;
     fs.frame = k;
     fs.pairs = anim.pairs.size();
-    // Stage 1: bounding spheres, sweep-and-prune on x, then the exact sphere test.
     std::vector<BoundingSphere> sph;
     for (std::size_t b = 0; b < n; ++b) sph.push_back(swept_bounding_sphere(anim, b, k));
     std::vector<std::size_t> order(n);
@@ -245,62 +242,116 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
     }
     std::sort(tasks.begin(), tasks.end(), [](const PairTask& x, const PairTask& y) { return x.pair < y.pair; });
     fs.bounding_volumes = anim.pairs.size() - tasks.size();
+    fs.seconds = std::chrono::duration<double>(SteadyClock::now() - t_frame).count();
+    summary.push_back(fs);
+    frame_tasks.push_back(std::move(tasks));
+  }
 
-    // Stages 2 and 3 on a pool of threads; results by position.
-    std::vector<TaskResult> out(tasks.size());
-    std::atomic<std::size_t> next{0};
-    auto work = [&]() {
-      for (std::size_t t = next++; t < tasks.size(); t = next++) {
-        TaskResult& r = out[t];
-        try {
-          const Scene scene = pair_frame_scene(anim, tasks[t].a, tasks[t].b, k);
+  // Stages 2 and 3, pair by pair (a pair's frames in order, so that the plane
+  // kept from frame k - 1 is at hand in frame k), pairs on a pool of threads;
+  // results stored by (frame, position), so nothing depends on the schedule.
+  struct Slot {
+    std::size_t frame_pos = 0, task_pos = 0;
+  };
+  std::vector<std::vector<Slot>> by_pair(anim.pairs.size());
+  std::size_t total = 0;
+  for (std::size_t f = 0; f < frame_tasks.size(); ++f)
+    for (std::size_t t = 0; t < frame_tasks[f].size(); ++t) {
+      by_pair[frame_tasks[f][t].pair].push_back({f, t});
+      ++total;
+    }
+  std::vector<std::size_t> work_pairs;
+  for (std::size_t p = 0; p < by_pair.size(); ++p)
+    if (!by_pair[p].empty()) work_pairs.push_back(p);
+  std::stable_sort(work_pairs.begin(), work_pairs.end(),
+                   [&](std::size_t x, std::size_t y) { return by_pair[x].size() > by_pair[y].size(); });  // longest first
+  std::vector<std::vector<TaskResult>> out(frame_tasks.size());
+  std::vector<std::vector<double>> task_seconds(frame_tasks.size());
+  for (std::size_t f = 0; f < frame_tasks.size(); ++f) {
+    out[f].resize(frame_tasks[f].size());
+    task_seconds[f].resize(frame_tasks[f].size());
+  }
+  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<bool> failed{false};
+  auto work = [&]() {
+    for (std::size_t w = next++; w < work_pairs.size() && !failed; w = next++) {
 #ifdef ECCD_ANIMATE_PLANES
-          if (const auto& plane = kept[tasks[t].pair]; plane && plane_separates_on_frame(scene, *plane, so) == PlaneCheck::separates) {
-            r.plane_settled = true;
-            r.next_plane = plane;  // checked on this frame; the next frame checks it again
-            continue;
-          }
+      std::optional<SeparatingPlane> kept;
+      std::size_t kept_frame = 0;  // the frame position after which `kept` may be checked
 #endif
-          try {
-            r.solution = solve(scene, so);
-            r.solved = true;
-          } catch (const BudgetExhausted& e) {
-            r.budget_why = std::string("resource budget exhausted: ") + e.what();
-          }
+      for (const Slot& slot : by_pair[work_pairs[w]]) {
+        const PairTask& task = frame_tasks[slot.frame_pos][slot.task_pos];
+        TaskResult& r = out[slot.frame_pos][slot.task_pos];
+        const std::size_t k = first + slot.frame_pos;
+        const auto t0 = SteadyClock::now();
+        try {
+          const Scene scene = pair_frame_scene(anim, task.a, task.b, k);
 #ifdef ECCD_ANIMATE_PLANES
-          if (r.solved && !r.solution.answer.collides && r.solution.decided()) {
-            Separation sep = separate_at(scene, Rational(1), so);
-            if (sep.status == "separate" && sep.plane) r.next_plane = sep.plane;
+          // Only a plane from the frame just before (a frame dropped by stage 1 in between forgets it).
+          if (kept && kept_frame + 1 == slot.frame_pos && plane_separates_on_frame(scene, *kept, so) == PlaneCheck::separates) {
+            r.plane_settled = true;
+            kept_frame = slot.frame_pos;  // checked on this frame; the next frame checks it again
+          } else {
+            kept.reset();
+#endif
+            try {
+              r.solution = solve(scene, so);
+              r.solved = true;
+            } catch (const BudgetExhausted& e) {
+              r.budget_why = std::string("resource budget exhausted: ") + e.what();
+            }
+#ifdef ECCD_ANIMATE_PLANES
+            if (r.solved && !r.solution.answer.collides && r.solution.decided()) {
+              Separation sep = separate_at(scene, Rational(1), so);
+              if (sep.status == "separate" && sep.plane) {
+                kept = sep.plane;
+                kept_frame = slot.frame_pos;
+              }
+            }
           }
 #endif
         } catch (...) {
           r.error = std::current_exception();
+          failed = true;
         }
+        task_seconds[slot.frame_pos][slot.task_pos] = std::chrono::duration<double>(SteadyClock::now() - t0).count();
+        ++done;
+        if (failed) break;
       }
-    };
-    const std::size_t nthreads = std::min<std::size_t>(std::size_t(opt.threads), tasks.size());
-    if (nthreads <= 1) {
-      work();
-    } else {
-      std::vector<std::thread> pool;
-      for (std::size_t w = 0; w < nthreads; ++w) pool.emplace_back(work);
-      for (auto& th : pool) th.join();
     }
+  };
+  const std::size_t nthreads = std::min<std::size_t>(std::size_t(opt.threads), work_pairs.size());
+  {
+    std::vector<std::thread> pool;
+    for (std::size_t w = 0; w < nthreads; ++w) pool.emplace_back(work);
+    if (opt.progress) {  // the calling thread reports while the pool works
+      while (done < total && !failed) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        opt.progress(done, total);
+      }
+    }
+    for (auto& th : pool) th.join();
+  }
+  if (opt.progress) opt.progress(done, total);
+
+  // The answers, frame by frame in the order of pairs.
+  for (std::size_t f = 0; f < frame_tasks.size(); ++f) {
+    const std::size_t k = first + f;
+    FrameSummary& fs = summary[f];
     const Rational dt = anim.times[k + 1] - anim.times[k];
-    for (std::size_t t = 0; t < tasks.size(); ++t) {
-      TaskResult& r = out[t];
+    for (std::size_t t = 0; t < frame_tasks[f].size(); ++t) {
+      const PairTask& task = frame_tasks[f][t];
+      TaskResult& r = out[f][t];
       if (r.error) std::rethrow_exception(r.error);
-#ifdef ECCD_ANIMATE_PLANES
-      kept[tasks[t].pair] = r.next_plane;
-#endif
+      fs.seconds += task_seconds[f][t];
       if (r.plane_settled) { ++fs.separating_plane; continue; }
       ++fs.continuous_test;
       if (!r.solved) {
-        res.undecided.push_back({k, tasks[t].a, tasks[t].b, r.budget_why});
+        res.undecided.push_back({k, task.a, task.b, r.budget_why});
         ++fs.undecided;
         continue;
       }
-      PairFrameAnswer pa{k, tasks[t].a, tasks[t].b, to_global(r.solution.answer, anim.times[k], dt, float_digits), r.solution.answer};
+      PairFrameAnswer pa{k, task.a, task.b, to_global(r.solution.answer, anim.times[k], dt, float_digits), r.solution.answer};
       if (opt.keep_tested) res.tested.push_back(pa);
       if (!r.solution.decided()) {
         std::string why;
@@ -309,30 +360,19 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
         std::string at;
         for (const auto& u : pa.answer.undecided) at += (at.empty() ? "" : ", ") + u.approx;
         if (!at.empty()) why += " (at t ~ " + at + ")";
-        res.undecided.push_back({k, tasks[t].a, tasks[t].b, why});
+        res.undecided.push_back({k, task.a, task.b, why});
         ++fs.undecided;
       } else if (r.solution.answer.collides) {
         res.events.push_back(std::move(pa));
         ++fs.events;
       }
     }
-#ifdef ECCD_ANIMATE_PLANES
-    // A pair dropped by the bounding volumes keeps no plane: the next frame starts from the continuous test.
-    {
-      std::vector<bool> ran(anim.pairs.size(), false);
-      for (const auto& t : tasks) ran[t.pair] = true;
-      for (std::size_t p = 0; p < ran.size(); ++p)
-        if (!ran[p]) kept[p].reset();
-    }
-#endif
-    fs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_frame).count();
     res.bounding_volumes += fs.bounding_volumes;
     res.separating_plane += fs.separating_plane;
     res.continuous_test += fs.continuous_test;
     res.per_frame.push_back(fs);
-    if (opt.progress) opt.progress(k - first + 1, last - first);
   }
-  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  res.seconds = std::chrono::duration<double>(SteadyClock::now() - t_start).count();
   return res;
 }
 

@@ -31,9 +31,11 @@
 // Instants are mapped to global time t = t_k + τ(t_{k+1} − t_k) exactly: a
 // certified bracket [lo, hi] becomes [t_k + lo·Δ, t_k + hi·Δ] (Δ > 0).
 // Events are ordered by frame, then by the positions of the pair's bodies in
-// `bodies`. The pair-frames of a frame run on a pool of `threads` std::threads;
-// results are stored by position, so the output does not depend on the
-// schedule. `shard_index`/`shard_count` (the command line's --shard i/n) keeps
+// `bodies`. Stage 1 runs frame by frame; stages 2 and 3 run pair by pair (each
+// pair's surviving frames in order, so that the plane kept from frame k − 1 is
+// at hand in frame k; a frame dropped by stage 1 in between forgets it), the
+// pairs on a pool of `threads` std::threads, longest first; results are stored
+// by (frame, pair), so the output does not depend on the schedule. `shard_index`/`shard_count` (the command line's --shard i/n) keeps
 // the i-th of n contiguous blocks of frames (contiguous so that kept planes
 // carry from frame to frame inside a shard).
 // Requirements: the animation is exact (rationals); the arithmetic of the
@@ -60,7 +62,7 @@ struct AnimateOptions {
   int threads = 2;              // >= 1
   std::size_t shard_index = 0, shard_count = 1;  // 0 <= index < count
   bool keep_tested = false;     // keep every continuous test's local answer (AnimationResult::tested; for tests)
-  // Called on the calling thread after each frame: (frames done, frames of this run).
+  // Called on the calling thread about every 0.1 s and at the end: (pair-frames of stages 2-3 done, of this run).
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
@@ -80,7 +82,7 @@ struct FrameSummary {
   std::size_t separating_plane = 0;   // settled by stage 2
   std::size_t continuous_test = 0;    // settled by stage 3 (including undecided ones)
   std::size_t events = 0, undecided = 0;
-  double seconds = 0;
+  double seconds = 0;  // stage 1 of the frame plus the work of its pair-frames (thread time, summed)
 };
 
 struct AnimationResult {

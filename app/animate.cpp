@@ -4,7 +4,7 @@
 // otherwise a summary table (frames, pairs per frame, pair-frames settled by
 // each stage, events, time per frame) and the events. --out FILE writes that
 // output to FILE instead of stdout (atomically: nothing is written on error).
-// Progress (frames done, time left) on stderr unless --quiet.
+// Progress (pair-frames done, time left) on stderr unless --quiet.
 // Exit codes (docs/exit-codes.md): 2 bad options or a bad animation file
 // (checked before any work), 3 a request the pipeline refuses, 5 a budget.
 #include "app/atomic_write.hpp"
@@ -114,14 +114,18 @@ Command add_animate_command(CLI::App& app) {
     const Animation anim = read_animation(args->path);
     const auto start = std::chrono::steady_clock::now();
     auto last = start;
+    bool reported_end = false;
     o.progress = [&](std::size_t done, std::size_t total) {
       if (quiet()) return;
       const auto now = std::chrono::steady_clock::now();
       if (done < total && now - last < std::chrono::seconds(1)) return;
+      if (done == total && reported_end) return;
+      reported_end = done == total;
       last = now;
       const double el = std::chrono::duration<double>(now - start).count();
-      std::cerr << "eccd animate: frame " << done << "/" << total << ", " << fixed(el, 1) << " s, about "
-                << fixed(el / double(done) * double(total - done), 1) << " s left\n";
+      std::cerr << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, " << fixed(el, 1) << " s"
+                << (done > 0 && done < total ? ", about " + fixed(el / double(done) * double(total - done), 1) + " s left" : std::string())
+                << "\n";
     };
     AnimationResult r;
     try {

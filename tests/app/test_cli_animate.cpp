@@ -49,7 +49,7 @@ TEST_CASE("eccd animate prints a summary table and progress on stderr", "[app][c
   REQUIRE(r.code == 0);
   REQUIRE(r.out.find("frame   pairs  bounding  plane  continuous  events  undecided") != std::string::npos);
   REQUIRE(r.out.find("stages: bounding volumes") != std::string::npos);
-  REQUIRE(r.err.find("eccd animate: frame 20/20") != std::string::npos);
+  REQUIRE(r.err.find("eccd animate: pair-frames 30/30 past the bounding volumes") != std::string::npos);
 }
 
 TEST_CASE("eccd animate: bad file, bad options, and nothing written on error", "[app][cli][animation]") {
