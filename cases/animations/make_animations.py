@@ -25,6 +25,7 @@ point is used: fractions.Fraction throughout). Run from this folder:
     python3 make_animations.py
 """
 import json
+import re
 from fractions import Fraction as F
 
 
@@ -64,9 +65,13 @@ def turn_z(k, rate):
 
 
 def write(path, doc):
+    """Indented JSON with each array of numbers (and of number arrays) on one line."""
+    text = json.dumps(doc, indent=1)
+    flat = lambda m: "[" + ", ".join(x.strip() for x in m.group(1).split(",")) + "]"
+    for _ in range(2):  # rows of a deformation, then the matrix
+        text = re.sub(r"\[\s+([^\[\]{}]*?)\s+\]", flat, text)
     with open(path, "w") as f:
-        json.dump(doc, f, indent=1)
-        f.write("\n")
+        f.write(text + "\n")
 
 
 def rows_3d():
