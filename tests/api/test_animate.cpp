@@ -271,6 +271,16 @@ TEST_CASE("animate: the bounding sphere contains the body over the frame", "[ani
   REQUIRE(extra < Rational(245, 100));  // sqrt(6) = 2.449...
   // the semi-axes bound: right-0 has semi-axes 0.9, 0.6, 0.5 and stands still: radius exactly 9/10
   REQUIRE(swept_bounding_sphere(anim, 1, 0).radius == Rational(9, 10));
+  // a matrix shape off its body's origin: the unit ball centred at (3, 0, 0) in the body frame,
+  // (x - 3)^2 + y^2 + z^2 <= 1: every point within |x0| + 1 = 4 of the origin
+  doc["bodies"][1]["shape"] = {{"matrix", {{"1", "0", "0", "-3"}, {"0", "1", "0", "0"}, {"0", "0", "1", "0"}, {"-3", "0", "0", "8"}}}};
+  REQUIRE(swept_bounding_sphere(animation_from_text(doc.dump(), "m"), 1, 0).radius == 4);
+  // a tilted ellipse: A = [[2, 1, 0], [1, 2, 0], [0, 0, 1]]: |x|^2 <= tr(A^-1) = 2/3 + 2/3 + 1 (the bound used), and the
+  // true radius 1 (along z; the tilted axes have 1/sqrt(1) and 1/sqrt(3)) lies below it
+  doc["bodies"][1]["shape"] = {{"matrix", {{"2", "1", "0", "0"}, {"1", "2", "0", "0"}, {"0", "0", "1", "0"}, {"0", "0", "0", "-1"}}}};
+  const Rational r = swept_bounding_sphere(animation_from_text(doc.dump(), "m"), 1, 0).radius;
+  REQUIRE(r * r >= Rational(7, 3));
+  REQUIRE(r < Rational(153, 100));  // sqrt(7/3) = 1.5275...
 }
 
 TEST_CASE("animate: a graze double cannot decide is undecided, never an event; exact finds the touch", "[animation]") {
