@@ -406,6 +406,8 @@ nlohmann::ordered_json animation_result_to_json(const AnimationResult& r) {
     ev["pair"] = pair(e.body_a, e.body_b);
     ev["answer"] = nlohmann::ordered_json::parse(answer_to_json(e.answer).dump());
     drop_null_brackets(ev["answer"]);
+    ev["local_answer"] = nlohmann::ordered_json::parse(answer_to_json(e.local).dump());  // in τ (the pair-frame's scene)
+    drop_null_brackets(ev["local_answer"]);
     j["events"].push_back(ev);
   }
   j["undecided"] = nlohmann::ordered_json::array();

@@ -110,7 +110,10 @@ Scene pair_frame_scene(const Animation& anim, std::size_t body_i, std::size_t bo
 AnimationResult animate(const Animation& anim, const AnimateOptions& options = {});
 
 // The spec's answer object (docs/animation-format.md, "The answer of an
-// animation"), plus "stages" details, "per_frame", "separating_plane_stage".
+// animation"), plus "mode", "separating_plane_stage", "per_frame", "seconds",
+// and in each event "local_answer": the same answer in the local time τ of the
+// pair-frame's scene (animation-format.md: "given in the local time τ and, for
+// people, also in the global time t").
 nlohmann::ordered_json animation_result_to_json(const AnimationResult& result);
 
 // The bounding sphere of body b's swept volume in frame k (stage 1): centre and

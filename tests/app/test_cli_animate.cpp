@@ -3,6 +3,7 @@
 // and nothing written on error.
 #include "tests/app/cli_run.hpp"
 
+#include <gmpxx.h>
 #include <nlohmann/json.hpp>
 
 using namespace eccd::clitest;
@@ -32,6 +33,14 @@ TEST_CASE("eccd animate --json prints the animation answer object", "[app][cli][
     REQUIRE(e["pair"].size() == 2);
     REQUIRE(e["answer"]["collides"] == true);
     REQUIRE(e["answer"]["first_contact"]["lo"].is_string());  // exact: certified brackets
+    // global t = t_k + tau (t_{k+1} - t_k) with t_k = k/20 here: the local bracket maps exactly
+    const std::size_t k = e["frame"].get<std::size_t>();
+    mpq_class lo_t(e["answer"]["first_contact"]["lo"].get<std::string>()), lo_tau(e["local_answer"]["first_contact"]["lo"].get<std::string>());
+    lo_t.canonicalize();
+    lo_tau.canonicalize();
+    mpq_class t_k(long(k), 20);
+    t_k.canonicalize();
+    REQUIRE(lo_t == t_k + lo_tau / 20);
     REQUIRE(e["frame"].get<std::size_t>() >= last_frame);    // ordered by frame
     last_frame = e["frame"].get<std::size_t>();
   }
