@@ -140,7 +140,8 @@ int main(int argc, char** argv) {
   std::vector<Command> commands{add_solve_command(app),    add_table_command(app),             add_generate_command(app),
                                 add_report_command(app),   add_plot_command(app),              add_certify_command(app),
                                 add_check_certificate_command(app), add_regress_command(app), add_judge_command(app),
-                                add_fcl_command(app)};
+                               add_fcl_command(app),
+                               add_animate_command(app)};
   commands.push_back(add_separate_command(app));  // app/separate.cpp (issue 17)
 
   // Under --json a failure is also one JSON object on stdout (README "Exit codes").

@@ -5,6 +5,7 @@
 #include "compare/seeded_rng.hpp"
 
 #include "kernel/bernstein.hpp"
+#include "kernel/keyframe_motion.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/poly_matrix.hpp"
 #include "io/scene_reader.hpp"
@@ -565,27 +566,6 @@ Vec random_orientation(Rng& r, int dim, int digits) {
     return out;
   }
 }
-// Rotation part of one joint as a homogeneous matrix of degree 2 (size dim + 1).
-HMat joint_rotation(const Vec& q0, const Vec& q1, int dim) {
-  auto lin = [](const Rational& a, const Rational& b) { return RPoly(std::vector<Rational>{a, b - a}); };
-  HMat h(dim + 1, std::vector<RPoly>(dim + 1));
-  if (dim == 2) {
-    RPoly w = lin(q0[0], q1[0]), z = lin(q0[1], q1[1]);
-    h[0][0] = w * w - z * z;
-    h[0][1] = constant(-2) * w * z;
-    h[1][0] = constant(2) * w * z;
-    h[1][1] = w * w - z * z;
-    h[2][2] = w * w + z * z;
-    return h;
-  }
-  Poly<Rational> q[4];
-  for (int i = 0; i < 4; ++i) q[i] = lin(q0[i], q1[i]);
-  auto R = quaternion_matrix(q);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) h[i][j] = R[i][j];
-  h[3][3] = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-  return h;
-}
 Keyframed keyframed_body(Rng& r, int dim, int degree, int digits, const Vec& box_lo, const Vec& box_hi) {
   const int joints = degree / 2;          // 2 -> 1, 3 -> 1, 4 -> 2, 5 -> 2, 6 -> 3
   const bool moving_root = degree % 2 == 1;
@@ -597,42 +577,29 @@ Keyframed keyframed_body(Rng& r, int dim, int degree, int digits, const Vec& box
   std::vector<std::pair<Vec, Vec>> keys;
   for (int k = 0; k < joints; ++k) {
     Vec q0 = random_orientation(r, dim, digits), q1 = random_orientation(r, dim, digits);
-    // animation-format.md: q'_1 = -q_1 when q_0 . q_1 < 0 (the shorter way round)
-    if (dot(q0, q1) < 0)
-      for (auto& x : q1) x = -x;
-    keys.push_back({q0, q1});
+    // animation-format.md: q'_1 = -q_1 when q_0 . q_1 < 0 (the shorter way round; kernel/keyframe_motion.hpp)
+    keys.push_back({q0, shorter_way(q0, q1)});
   }
   Keyframed out;
   if (joints == 1) {
     const Vec& q0 = keys[0].first;
     const Vec& q1 = keys[0].second;
-    auto lin = [](const Rational& a, const Rational& b) { return RPoly(std::vector<Rational>{a, b - a}); };
+    // The motion by the animation rule (kernel/keyframe_motion.hpp); the JSON writes the key values.
+    out.motion = keyframe_motion(KeyPose{c0, q0, std::nullopt}, KeyPose{c1, q1, std::nullopt}, dim);
     nlohmann::ordered_json j;
     if (dim == 3) {
-      EulerMotion em;
       j["type"] = "euler";
-      for (int i = 0; i < 4; ++i) { em.e[i] = lin(q0[i], q1[i]); j["e"].push_back(bern_json(q0[i], q1[i])); }
-      for (int i = 0; i < 3; ++i) {
-        em.v[i] = lin(c0[i], c1[i]);
+      for (int i = 0; i < 4; ++i) j["e"].push_back(bern_json(q0[i], q1[i]));
+      for (int i = 0; i < 3; ++i)
         j["translation"].push_back(moving_root ? bern_json(c0[i], c1[i]) : nlohmann::ordered_json(number_text(c0[i])));
-      }
-      em.v3 = constant(1);
       j["translation_denominator"] = "1";
-      out.motion = em;
     } else {
-      // kinematic: d2 = w(τ), d3 = -z(τ); centre (x, y) through d0 = (x d3 + y d2)/2, d1 = (y d3 - x d2)/2
-      KinematicMotion km;
-      RPoly x = lin(c0[0], c1[0]), y = lin(c0[1], c1[1]);
-      km.d[2] = lin(q0[0], q1[0]);
-      km.d[3] = lin(-q0[1], -q1[1]);
-      km.d[0] = Rational(1, 2) * (x * km.d[3] + y * km.d[2]);
-      km.d[1] = Rational(1, 2) * (y * km.d[3] - x * km.d[2]);
+      const KinematicMotion& km = std::get<KinematicMotion>(out.motion);
       j["type"] = "kinematic";
       j["d"].push_back(poly_json(km.d[0]));
       j["d"].push_back(poly_json(km.d[1]));
       j["d"].push_back(bern_json(q0[0], q1[0]));
       j["d"].push_back(bern_json(-q0[1], -q1[1]));
-      out.motion = km;
     }
     out.json = j;
     return out;
@@ -642,7 +609,7 @@ Keyframed keyframed_body(Rng& r, int dim, int degree, int digits, const Vec& box
   for (int i = 0; i <= dim; ++i) M[i][i] = constant(1);
   for (int i = 0; i < dim; ++i) M[i][dim] = RPoly(std::vector<Rational>{c0[i], c1[i] - c0[i]});
   for (int k = 0; k < joints; ++k) {
-    M = hmul(M, joint_rotation(keys[k].first, keys[k].second, dim));
+    M = hmul(M, keyframe_rotation(keys[k].first, keys[k].second, dim));
     Vec o;
     for (int i = 0; i < dim; ++i) o.push_back(decimal_in(r, -0.8, 0.8, digits));
     M = hmul(M, hconst(identity(dim), o));

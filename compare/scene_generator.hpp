@@ -72,6 +72,8 @@
 //              follows the same rule. One joint is written as `euler` (3D) or
 //              `kinematic` (2D) with Bernstein coefficients = the key values;
 //              a chain as a `matrix` motion (exact products of the decimals).
+//              The interpolation is kernel/keyframe_motion.hpp's, the code
+//              `eccd animate` runs (one rule for the family and animations).
 //   cycloidal, independent (issue 20) motions that are not shared-parameter
 //              rational ones: cycloidal (2D, 003 section V) and independent
 //              straight paths A(s), B(t) (3D, 001 section 4), each with a kind

@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <streambuf>
@@ -67,10 +68,18 @@ void check_deadline_now(const char* where) {
 constexpr std::size_t kMaxCgalBits = 20000;
 
 // std::cerr while CGAL runs: keeps what CGAL prints (never shown) and stops
-// the run on the prime-exhaustion message.
+// the run on the prime-exhaustion message. Threads (eccd animate runs
+// pair-frames on a pool): std::cerr is one object, so the first guard of the
+// process installs the buffer and the last one restores std::cerr (a count
+// under a mutex; swapping per guard let one thread restore another's buffer
+// after it was destroyed); the text is kept per thread, by the thread that
+// writes it (CGAL's own code).
 class CgalErrBuf : public std::streambuf {
  public:
-  std::string text;
+  static std::string& text() {
+    static thread_local std::string t;
+    return t;
+  }
  protected:
   int overflow(int ch) override {
     if (ch != EOF) put(char(ch));
@@ -82,21 +91,31 @@ class CgalErrBuf : public std::streambuf {
   }
  private:
   void put(char c) {
-    if (text.size() < 4096) text += c;
-    if (text.find("primes in the array exhausted") != std::string::npos)
+    std::string& t = text();
+    if (t.size() < 4096) t += c;
+    if (t.find("primes in the array exhausted") != std::string::npos)
       throw BudgetExhausted("exact root isolation: the coefficients are too large for CGAL's modular gcd (it ran out of primes)");
   }
 };
 
 class CgalGuard {
  public:
-  CgalGuard() : old_(std::cerr.rdbuf(&buf_)), old_ex_(std::cerr.exceptions()) {
-    std::cerr.exceptions(std::ios::badbit);
+  CgalGuard() {
+    std::lock_guard<std::mutex> lock(shared().mu);
+    CgalErrBuf::text().clear();
+    if (shared().depth++ == 0) {
+      shared().old = std::cerr.rdbuf(&shared().buf);
+      shared().old_ex = std::cerr.exceptions();
+      std::cerr.exceptions(std::ios::badbit);
+    }
   }
   ~CgalGuard() {
-    std::cerr.rdbuf(old_);
-    std::cerr.clear();
-    std::cerr.exceptions(old_ex_);
+    std::lock_guard<std::mutex> lock(shared().mu);
+    if (--shared().depth == 0) {
+      std::cerr.rdbuf(shared().old);
+      std::cerr.clear();
+      std::cerr.exceptions(shared().old_ex);
+    }
   }
   CgalGuard(const CgalGuard&) = delete;
   CgalGuard& operator=(const CgalGuard&) = delete;
@@ -111,9 +130,17 @@ class CgalGuard {
   }
 
  private:
-  CgalErrBuf buf_;
-  std::streambuf* old_;
-  std::ios::iostate old_ex_;
+  struct Shared {
+    std::mutex mu;
+    int depth = 0;
+    CgalErrBuf buf;
+    std::streambuf* old = nullptr;
+    std::ios::iostate old_ex{};
+  };
+  static Shared& shared() {
+    static Shared s;
+    return s;
+  }
 };
 
 // Runs f (a call into CGAL) under CgalGuard; an exception escaping CGAL's

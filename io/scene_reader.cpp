@@ -431,6 +431,11 @@ class Reader {
   }
 
   Scene scene(const json& root);
+  std::vector<std::vector<Rational>> shape_of_dim(const json& j, const std::string& ptr, int dim) {  // parse_strict_json users
+    dim_ = dim;
+    return shape(j, ptr);
+  }
+  Rational number_at(const json& j, const std::string& ptr) const { return number(j, ptr); }
   // independent: the scene's "parameters" (nullopt: from the keys, for an answer file).
   Answer answer(const json& j, const std::string& ptr, std::optional<bool> independent = std::nullopt);
   Answer independent_answer(const json& j, const std::string& ptr);
@@ -1007,6 +1012,25 @@ Scene parse_scene(const std::string& json_text, const std::string& file_label) {
     throw SceneError(file_label + ": top level: internal error while reading the scene: " + std::string(e.what()));
   }
 }
+
+StrictJson parse_strict_json(const std::string& json_text, const std::string& file_label) {
+  if (json_text.size() > input_limits().max_file_bytes)
+    throw SceneError(file_label + ": " + std::to_string(json_text.size()) + " bytes, beyond the input limit of " +
+                     std::to_string(input_limits().max_file_bytes) + " bytes (--max-file-bytes)");
+  DomBuilder b;
+  parse_dom(json_text, file_label, b, nullptr);
+  return StrictJson{std::move(b.root), std::move(b.float_text)};
+}
+Rational json_rational(const StrictJson& doc, const json& j, const std::string& file_label, const std::string& place) {
+  return Reader(file_label, &doc.raw_numbers).number_at(j, place);
+}
+std::vector<std::vector<Rational>> json_shape(const StrictJson& doc, const json& j, const std::string& file_label,
+                                              const std::string& place, int dim) {
+  return Reader(file_label, &doc.raw_numbers).shape_of_dim(j, place, dim);
+}
+std::string json_place(const std::string& pointer) { return place_text(pointer); }
+std::string json_quote(const std::string& text) { return quote(text); }
+std::string json_type_name(const json& j) { return type_name(j); }
 
 Scene read_scene_file(const std::string& path) { return parse_scene(read_file_bytes(path), path); }
 

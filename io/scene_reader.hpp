@@ -83,6 +83,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace eccd {
 
@@ -112,6 +113,22 @@ std::string read_file_bytes(const std::string& path);
 // result is null (the certificate checker rejects such a certificate).
 nlohmann::json parse_json_document(const std::string& json_text, const std::string& file_label,
                                    std::string* structure_error = nullptr);
+
+// For readers of formats built on this one (io/animation_reader.hpp): the same
+// strict JSON (choice 6, the file size limit of choice 14), numbers (choices 1,
+// 2) and shapes, with the same messages "FILE: PLACE: what is wrong".
+struct StrictJson {
+  nlohmann::json root;
+  std::unordered_map<std::string, std::string> raw_numbers;  // JSON pointer -> raw text of a non-integer number
+};
+StrictJson parse_strict_json(const std::string& json_text, const std::string& file_label);
+Rational json_rational(const StrictJson& doc, const nlohmann::json& j, const std::string& file_label, const std::string& place);
+// A shape of dimension dim: the matrix Q (throws SceneError at `place`).
+std::vector<std::vector<Rational>> json_shape(const StrictJson& doc, const nlohmann::json& j, const std::string& file_label,
+                                              const std::string& place, int dim);
+std::string json_place(const std::string& pointer);    // "top level" for "", long tokens cut
+std::string json_quote(const std::string& text);       // a user's string in a message: quoted, cut at 80 characters
+std::string json_type_name(const nlohmann::json& j);   // "an integer", "a number with a fraction part", ...
 
 // Exact value of a number string (choice 1 above). Throws std::invalid_argument
 // whose what() is the reason (the reader turns it into a SceneError).

@@ -1,0 +1,151 @@
+// `eccd animate`: every checked pair of an animation file in every frame
+// (docs/animation-format.md; api/animate.hpp), in one arithmetic. Prints the
+// spec's answer object with --json (format ellipse-ccd-animation-answer/1),
+// otherwise a summary table (frames, pairs per frame, pair-frames settled by
+// each stage, events, time per frame) and the events. --out FILE writes that
+// output to FILE instead of stdout (atomically: nothing is written on error).
+// Progress (pair-frames done, time left) on stderr unless --quiet.
+// Exit codes (docs/exit-codes.md): 2 bad options or a bad animation file
+// (checked before any work), 3 a request the pipeline refuses, 5 a budget.
+#include "app/atomic_write.hpp"
+#include "app/commands.hpp"
+#include "api/animate.hpp"
+#include "io/animation_reader.hpp"
+#include "io/scene_reader.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace eccd {
+
+namespace {
+
+struct AnimateArgs {
+  std::string path, arith = "exact", shard, out;
+  bool json = false, all_intervals = false, quiet = false;
+  int threads = 2;
+};
+
+std::string fixed(double x, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+std::string summary_text(const AnimationResult& r) {
+  std::ostringstream o;
+  o << "animation " << r.animation << " (" << r.file << "), " << r.dim << "D, arithmetic " << r.arithmetic << ", "
+    << (r.all_intervals ? "all intervals" : "first contact") << "\n";
+  o << "frames " << r.frames << (r.shard_count > 1 ? " (this shard: " + std::to_string(r.per_frame.size()) + ")" : std::string())
+    << ", pairs per frame " << r.pairs_per_frame << ", separating-plane stage " << (r.plane_stage_built ? "built" : "not built")
+    << "\n\n";
+  o << "frame   pairs  bounding  plane  continuous  events  undecided       ms\n";
+  for (const auto& f : r.per_frame) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%5zu  %6zu  %8zu  %5zu  %10zu  %6zu  %9zu  %7.1f\n", f.frame, f.pairs, f.bounding_volumes,
+                  f.separating_plane, f.continuous_test, f.events, f.undecided, f.seconds * 1e3);
+    o << line;
+  }
+  const double total = double(r.bounding_volumes + r.separating_plane + r.continuous_test);
+  auto pct = [&](std::size_t x) { return total > 0 ? fixed(100.0 * double(x) / total, 1) + " %" : std::string("-"); };
+  o << "\nstages: bounding volumes " << r.bounding_volumes << " (" << pct(r.bounding_volumes) << "), separating plane "
+    << r.separating_plane << " (" << pct(r.separating_plane) << "), continuous test " << r.continuous_test << " ("
+    << pct(r.continuous_test) << ")\n";
+  o << "events " << r.events.size() << ", undecided " << r.undecided.size() << ", " << fixed(r.seconds, 3) << " s ("
+    << (r.per_frame.empty() ? std::string("-") : fixed(r.seconds * 1e3 / double(r.per_frame.size()), 1)) << " ms per frame)\n";
+  if (!r.events.empty()) o << "\nevents (global time t):\n";
+  for (const auto& e : r.events) {
+    o << "  frame " << e.frame << "  " << r.body_names[e.body_a] << " -- " << r.body_names[e.body_b];
+    if (e.answer.first_contact) o << "  first contact t ~ " << e.answer.first_contact->approx;
+    for (const auto& [s, t] : e.answer.intervals) o << "  [" << s.approx << ", " << t.approx << "]";
+    o << "\n";
+  }
+  if (!r.undecided.empty()) o << "\nundecided:\n";
+  for (const auto& u : r.undecided)
+    o << "  frame " << u.frame << "  " << r.body_names[u.body_a] << " -- " << r.body_names[u.body_b] << ": " << u.why << "\n";
+  return o.str();
+}
+
+}  // namespace
+
+Command add_animate_command(CLI::App& app) {
+  auto args = std::make_shared<AnimateArgs>();
+  Command c;
+  c.sub = app.add_subcommand("animate",
+                             "Every checked pair of an animation (docs/animation-format.md) in every frame: bounding spheres, "
+                             "the kept separating plane, then the continuous test in the chosen arithmetic.");
+  c.sub->add_option("ANIMATION", args->path, "Animation file (format ellipse-ccd-animation/1)")->required();
+  c.sub->add_option("--arith", args->arith, "Arithmetic of the continuous test: double, mpfr:BITS, exact or certified")
+      ->capture_default_str();
+  c.sub->add_flag("--json", args->json, "Print the answer object (format ellipse-ccd-animation-answer/1)");
+  c.sub->add_flag("--all-intervals", args->all_intervals, "Every collision interval of each pair-frame (default: the first contact)");
+  c.sub->add_option("--threads", args->threads, "Threads running pair-frames (the output does not depend on it)")
+      ->capture_default_str();
+  c.sub->add_option("--shard", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
+  c.sub->add_option("--out", args->out, "Write the output to this file (atomically) instead of standard output");
+
+  c.run = [args]() -> int {
+    AnimateOptions o;
+    o.solve.arith = parse_arithmetic(args->arith);
+    o.all_intervals = args->all_intervals;
+    // Each pair-frame's solve gets --time-limit (floating: at most the default 30 s); beyond it the pair-frame is undecided.
+    const double limit = run_budget().time_limit_s;
+    o.solve.time_limit_s = o.solve.arith.floating() ? (limit > 0 ? std::min(limit, kDefaultFloatingSeconds) : 0) : limit;
+    if (args->threads < 1 || args->threads > 256)
+      throw std::invalid_argument("--threads " + std::to_string(args->threads) + ": expected 1 to 256");
+    o.threads = args->threads;
+    if (!args->shard.empty()) {
+      const std::string& s = args->shard;
+      const auto slash = s.find('/');
+      bool ok = slash != std::string::npos && slash > 0 && slash + 1 < s.size() && s.find_first_not_of("0123456789/") == std::string::npos &&
+                s.find('/', slash + 1) == std::string::npos && slash <= 6 && s.size() - slash - 1 <= 6;
+      if (ok) {
+        o.shard_index = std::stoul(s.substr(0, slash));
+        o.shard_count = std::stoul(s.substr(slash + 1));
+        ok = o.shard_count >= 1 && o.shard_index < o.shard_count;
+      }
+      if (!ok) throw std::invalid_argument("--shard " + s + ": expected i/n with 0 <= i < n");
+    }
+    if (!args->out.empty()) check_output_path("--out", args->out);
+    const Animation anim = read_animation(args->path);
+    const auto start = std::chrono::steady_clock::now();
+    auto last = start;
+    bool reported_end = false;
+    o.progress = [&](std::size_t done, std::size_t total) {
+      if (quiet()) return;
+      const auto now = std::chrono::steady_clock::now();
+      if (done < total && now - last < std::chrono::seconds(1)) return;
+      if (done == total && reported_end) return;
+      reported_end = done == total;
+      last = now;
+      const double el = std::chrono::duration<double>(now - start).count();
+      std::cerr << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, " << fixed(el, 1) << " s"
+                << (done > 0 && done < total ? ", about " + fixed(el / double(done) * double(total - done), 1) + " s left" : std::string())
+                << "\n";
+    };
+    AnimationResult r;
+    try {
+      r = animate(anim, o);
+    } catch (const std::invalid_argument& e) {  // valid options, valid file: the pipeline refuses the request
+      throw ExitError(3, "animate: " + args->path + ": " + cli_message(e));
+    }
+    std::string text;
+    if (args->json) {
+      nlohmann::ordered_json j = animation_result_to_json(r);
+      stamp_format(j, kAnimationAnswerFormat);
+      text = j.dump(2) + "\n";
+    } else {
+      text = summary_text(r);
+    }
+    if (!args->out.empty()) write_text_atomically(args->out, text);
+    else std::cout << text;
+    return 0;
+  };
+  return c;
+}
+
+}  // namespace eccd
