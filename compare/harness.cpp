@@ -345,6 +345,18 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
   return r;
 }
 
+ResultRow pipeline_row(const SceneInfo& info, const PipelineSpec& ps) {
+  ResultRow row;
+  row.scene = info;
+  row.pipeline = ps.label;
+  row.arith = ps.arith;
+  row.bits = ps.bits;
+  row.basis = ps.basis;
+  row.method = ps.method;
+  row.input = ps.input;
+  return row;
+}
+
 namespace {
 
 // The row of an external engine on one scene (compare/external_answers.hpp), if it answered the scene: its
@@ -420,14 +432,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
     r3.F = ellipsoid_function(r3.g_bern, Rational(1));
   }
   for (const auto& ps : pipes) {
-    ResultRow row;
-    row.scene = info;
-    row.pipeline = ps.label;
-    row.arith = ps.arith;
-    row.bits = ps.bits;
-    row.basis = ps.basis;
-    row.method = ps.method;
-    row.input = ps.input;
+    ResultRow row = pipeline_row(info, ps);
     if (ps.engine != PipelineSpec::Engine::solve) {  // FCL, in this process (see the header)
       const bool ccd = ps.engine == PipelineSpec::Engine::fcl_ccd;
       if (ccd && !fcl_ccd_inexpressible(s).empty()) continue;  // no row: counted by fcl_skipped

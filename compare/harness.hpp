@@ -152,6 +152,9 @@ struct ResultRow {
   std::string reason;  // undecided rows: why (time budget, the pipeline's undecided instants); error rows: the message
 };
 
+// The row of pipeline `ps` on the scene `info`, before its run: the scene's and the pipeline's columns.
+ResultRow pipeline_row(const SceneInfo& info, const PipelineSpec& ps);
+
 // A row's outcome, metrics, time, input and reason from one run (br.got, or
 // its time-out or error) against the ground-truth answer `truth`.
 void fill_row_from_run(ResultRow& row, BoundedRun&& br, const Answer& truth);

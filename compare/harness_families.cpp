@@ -78,14 +78,7 @@ std::vector<ResultRow> run_motion_family_scene(const Scene& s, const SceneInfo& 
   std::vector<ResultRow> rows;
   for (std::size_t k = 0; k < pipes.size(); ++k) {
     const PipelineSpec& ps = pipes[k];
-    ResultRow row;
-    row.scene = info;
-    row.pipeline = ps.label;
-    row.arith = ps.arith;
-    row.bits = ps.bits;
-    row.basis = ps.basis;
-    row.method = ps.method;
-    row.input = ps.input;
+    ResultRow row = pipeline_row(info, ps);
     BoundedRun br;
     if (k == 0) {
       if (truth) br.got = *truth;
