@@ -139,7 +139,7 @@ TEST_CASE("exact separating planes pass an independent exact check (3D and 2D, f
   CHECK(checked >= 30);
 }
 
-TEST_CASE("separate_at: touching and overlapping are stated exactly; floating says undecided or proves", "[separate]") {
+TEST_CASE("separate_at: touching and overlapping are stated exactly, and floating says undecided or proves", "[separate]") {
   const Body a{{3, 2, 1}, identity(3), {0, 0, 0}, {0, 0, 0}};
   Scene touch = scene_from_text(scene_json(a, ball(3, 1, {4, 0, 0}, {0, 0, 0}), "touch"), "touch");
   Scene over = scene_from_text(scene_json(a, ball(3, 1, {Q(7, 2), 0, 0}, {0, 0, 0}), "over"), "over");

@@ -28,6 +28,7 @@ TEST_CASE("eccd animate --json prints the animation answer object", "[app][cli][
   REQUIRE(j["undecided"].empty());
   const json& st = j["stages"];
   REQUIRE(st["bounding_volumes"].get<int>() + st["separating_plane"].get<int>() + st["continuous_test"].get<int>() == 200);
+  REQUIRE(j["separating_plane_stage"] == "built");  // api/separate.hpp is part of the build (000 section 4)
   std::size_t last_frame = 0;
   for (const auto& e : j["events"]) {
     REQUIRE(e["pair"].size() == 2);
