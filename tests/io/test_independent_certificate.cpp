@@ -3,6 +3,7 @@
 // (a moved bracket, a flipped strip, a dropped strip, a changed scene
 // number) REJECTED naming the claim.
 #include "api/certify.hpp"
+#include "api/solve.hpp"
 #include "io/independent_certificate.hpp"
 #include "io/scene_reader.hpp"
 
@@ -92,10 +93,10 @@ TEST_CASE("independent certificate: spheres-end round trip and tampering", "[ind
     t["s_proof"].erase(t["s_proof"].begin() + long(out));
     rejected(s, t, "coverage");
   }
-  {  // a dropped box of an out-strip with more than one: its t-ranges no longer cover [0, 1] (or a box was needed)
+  {  // a dropped box of an in-strip with more than one: its u-ranges no longer cover [0, 1]
     json t = cert;
     std::size_t k = 0;
-    while (k < items.size() && !(items[k]["kind"] == "out" && items[k]["boxes"].size() > 1)) ++k;
+    while (k < items.size() && !(items[k]["kind"] == "in" && items[k]["boxes"].size() > 1)) ++k;
     REQUIRE(k < items.size());
     t["s_proof"][k]["boxes"].erase(t["s_proof"][k]["boxes"].begin());
     rejected(s, t, "s_proof item " + std::to_string(k + 1) + " (");
@@ -128,9 +129,14 @@ TEST_CASE("independent certificate: ellipsoids-apart (no meeting) round trip", "
   REQUIRE(ok.valid);
   CHECK(cert["answer"]["collides"] == false);
   CHECK(cert["answer"]["s_intervals"].empty());
-  {  // claiming a meeting the proofs do not give
+  {  // an out-strip claimed in: its boxes are positive, not negative
     json t = cert;
-    t["answer"]["collides"] = true;
-    rejected(s, t, "answer");
+    t["s_proof"][0]["kind"] = "in";
+    rejected(s, t, "s_proof item 1 (");
+  }
+  {  // a changed scene number
+    json t = cert;
+    t["scene"]["a"]["shape"]["semi_axes"][0] = "7";
+    rejected(s, t, "scene");
   }
 }
