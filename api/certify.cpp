@@ -4,6 +4,7 @@
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
 #include "io/cycloidal_certificate.hpp"
+#include "io/independent_certificate.hpp"
 #include "io/scene_reader.hpp"
 
 #include <chrono>
@@ -40,6 +41,10 @@ Certificate certify(const Scene& scene) {
     s.basis = "pointwise";
     s.method = "cd-disc-cycloidal";
     s.certified = s.answer.undecided.empty();
+  }
+  if (independent_certificate_scene(scene)) {  // interval proofs about the exact F: io/independent_certificate.hpp
+    s.basis = "interval+mpfi";
+    s.method = "bezier-independent-proved";
   }
   s.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
   return c;

@@ -9,6 +9,7 @@
 #include "compare/harness.hpp"
 #include "compare/harness_families.hpp"
 #include "io/cycloidal_certificate.hpp"
+#include "io/independent_certificate.hpp"
 #include "compare/verdict.hpp"
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
@@ -79,8 +80,22 @@ std::string cycloidal_text(const nlohmann::json& cert) {
   return o.str();
 }
 
+// An independent scene's certificate (io/independent_certificate.hpp): strips and ends proved, s- and t-intervals.
+std::string independent_text(const nlohmann::json& cert) {
+  std::ostringstream o;
+  const auto& a = cert["answer"];
+  o << "scene " << cert["scene"]["name"].get<std::string>() << " (3D, independent motions): proved by interval proofs about the exact F "
+    << "(MPFI " << cert["precision_bits"].get<int>() << " bits; " << cert["s_proof"].size() << " s-items, " << cert["t_proof"].size()
+    << " t-items)\n";
+  o << "  " << (a["collides"].get<bool>() ? "the paths meet" : "the paths do not meet") << "\n";
+  for (const char* k : {"s_intervals", "t_intervals"})
+    for (const auto& iv : a[k]) o << "  " << k << ": [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]\n";
+  return o.str();
+}
+
 std::string certified_text(const nlohmann::json& cert) {
   if (cert["format"] == kCycloidalCertificateFormat) return cycloidal_text(cert);
+  if (cert["format"] == kIndependentCertificateFormat) return independent_text(cert);
   std::ostringstream o;
   const auto& s = cert["scene"];
   const auto& p = cert["projection"];
@@ -118,7 +133,9 @@ Command add_certify_command(CLI::App& app) {
                              "instant a proved rational bracket), a verdict for each double and MPFR pipeline against it, and a "
                              "certificate that `eccd check-certificate` re-checks without the solver. A cycloidal scene (not "
                              "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/1): proved root brackets "
-                             "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon.");
+                             "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon. An independent "
+                             "scene (3D) gets eccd-independent-certificate/1: its s- and t-intervals with the strip and Krawczyk "
+                             "proofs about the exact F(u, s, t); exit 4 if the proof leaves a range undecided.");
   auto* s = c.sub;
   s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
   s->add_option("--out", args->out, "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder)");
@@ -149,7 +166,7 @@ Command add_certify_command(CLI::App& app) {
       throw std::logic_error("the certificate fails its own check (" + chk.failed_claim + ": " + chk.reason + ")");
 
     std::vector<Verdict> verdicts;
-    if (!args->no_floating) {
+    if (!args->no_floating && !scene.independent) {  // independent scenes: the harness pipelines are shared-parameter methods
       nlohmann::json plain = cert["answer"];
       plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches (io/cycloidal_certificate.hpp)
       Answer certified = answer_from_json(plain, "the certificate", "/answer");
@@ -175,7 +192,7 @@ Command add_certify_command(CLI::App& app) {
 
     if (args->json) {
       nlohmann::json j = {{"scene", scene.path}, {"certificate", out.string()}, {"answer", cert["answer"]}, {"verdicts", vj},
-                          {"projection", cert.contains("projection") ? cert["projection"]["name"] : nlohmann::json("cycloidal-delta")},
+                          {"projection", cert.contains("projection") ? cert["projection"]["name"] : nlohmann::json(scene.independent ? "independent-krawczyk" : "cycloidal-delta")},
                           {"certify_seconds", cert["seconds"]}, {"complete", cert.value("complete", true)}};
       stamp_format(j, "eccd-certify/1");
       std::cout << j.dump(2) << "\n";
@@ -211,7 +228,8 @@ Command add_check_certificate_command(CLI::App& app) {
                              "Re-check a certificate written by `eccd certify` against its scene, without the solver: f and the "
                              "projection recomputed exactly, one root per bracket and none elsewhere (Descartes' rule), each "
                              "cell's status by the exact static test, each instant's evidence, and the answer (a cycloidal scene: "
-                             "the same claims proved by MPFI enclosures of Delta and Delta'). Exit 0 if every "
+                             "the same claims proved by MPFI enclosures of Delta and Delta'; an independent scene: every strip's "
+                             "boxes, every end's Krawczyk chain and exclusion, the coverage of [0, 1]). Exit 0 if every "
                              "claim holds, 1 naming the first claim that fails, 2 for an unreadable file.");
   c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about; - reads standard input")->required();
   c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/2)")->required();

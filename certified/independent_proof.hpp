@@ -116,9 +116,23 @@ struct IndependentProofOptions {
   bool localise_in_mpfi = false;  // localisation in intervals of doubles (number/interval.hpp: also enclosures) or in MPFI
   long max_boxes = 20000;        // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
   int max_box_depth = 36;
+  bool record = false;  // keep the proof (strip witness boxes, Krawczyk boxes) in the result: for the certificate
+};
+
+// What a proof of one projection consists of, for the certificate (io/independent_certificate.hpp).
+struct IndependentEndRecord {
+  mpq_class run_lo, run_hi;           // the run of unresolved strips holding the end
+  std::string system;                 // "fold", "t = 0", "t = 1" (the other parameter named by var)
+  std::vector<std::vector<mpq_class>> chain_lo, chain_hi;  // X = Y_0 (K(X) inside X), Y_{i+1} contains Y_i ∩ K(Y_i)
+  mpq_class lo, hi;                   // the bracket: [max(run_lo, Y_last.s_lo), min(run_hi, Y_last.s_hi)]
+};
+struct IndependentProjectionRecord {
+  std::vector<independent_detail::Piece> pieces;  // in order, proved ones with their witness boxes
+  std::vector<IndependentEndRecord> ends;
 };
 
 struct IndependentProofResult {
+  IndependentProjectionRecord s_record, t_record;  // filled (witness boxes) when IndependentProofOptions::record
   Answer answer;  // independent = true; instants with proved brackets
   std::vector<std::string> undecided_reasons;
   std::vector<std::string> proofs;  // one line per end: how it was proved
@@ -322,7 +336,7 @@ inline bool krawczyk(Nets& nets, const System& sys, const Box& X, Box& K) {
       for (std::size_t l = 0; l < m; ++l) a = a - Y[i][l] * J[l][j];
       k = k + a * (box[sys.vars[j]] - centre[sys.vars[j]]);
     }
-    if (!finite(k)) return false;
+    if (!finite(k)) { K = Box{}; return false; }  // no enclosure: K left empty, never half filled
     K.lo[i] = lower(k);
     K.hi[i] = upper(k);
     inside = inside && K.lo[i] > X.lo[i] && K.hi[i] < X.hi[i];
@@ -333,6 +347,8 @@ inline bool krawczyk(Nets& nets, const System& sys, const Box& X, Box& K) {
 struct EndProof {
   bool proved = false;
   mpq_class lo, hi;  // the bracket of the end
+  std::string system;
+  std::vector<std::vector<mpq_class>> chain_lo, chain_hi;
   std::string how, why;
   long boxes = 0;
 };
@@ -445,6 +461,9 @@ class EndProver {
       if (!ex.empty()) { r.why += ": " + ex; continue; }
       // tighten: X <- K(X) ∩ X keeps the unique zero
       Box Y = X;
+      r.system = sys.fixed_t ? sys.kind.substr(4) : sys.kind;  // "fold", "0", "1"
+      r.chain_lo = {X.lo};
+      r.chain_hi = {X.hi};
       for (int it = 0; it < 12; ++it) {
         Box K2;
         krawczyk(nets_, sys, Y, K2);
@@ -456,6 +475,8 @@ class EndProver {
           ok = ok && Y.lo[v] <= Y.hi[v];
         }
         if (!ok) return r;  // cannot happen for a proved zero: then nothing is claimed
+        r.chain_lo.push_back(Y.lo);
+        r.chain_hi.push_back(Y.hi);
         if (Y.hi[1] - Y.lo[1] < mpq_class(1, mpz_class(1) << 100)) break;
       }
       r.lo = std::max(lo, Y.lo[1]);
@@ -473,6 +494,37 @@ class EndProver {
 
   long last_boxes_ = 0;
   long budget_end_ = 0;  // exclusion boxes allowed up to here for the current end
+
+ public:
+  // For a checker: the conditions of step 3b (besides K(X) inside X) and the exclusion 3c for a claimed end:
+  // "" when they hold, else why not. system: "fold" or "0" / "1" (the other parameter fixed there); X in (u, s[, t]).
+  std::string check_end(const std::string& system, const Box& X, const mpq_class& lo, const mpq_class& hi) {
+    const int bits = nets_.bits();
+    budget_end_ = boxes + 3 * opt_.max_boxes;
+    mpq_class xt0, xt1;
+    std::array<I, 3> region{I(X.lo[0], X.hi[0], bits), I(X.lo[1], X.hi[1], bits), I(mpq_class(0), bits)};
+    if (system != "fold") {
+      const mpq_class rho = (X.hi[0] - X.lo[0]) / 2;
+      const bool at0 = system == "0";
+      xt0 = at0 ? mpq_class(0) : mpq_class(1 - rho);
+      xt1 = at0 ? rho : mpq_class(1);
+      if (rho <= 0 || rho > mpq_class(1, 16)) return "the box's half-width is not in (0, 1/16]";
+      region[1] = I(std::min(lo, X.lo[1]), std::max(hi, X.hi[1]), bits);
+      region[2] = I(xt0, xt1, bits);
+      if (!one_sign(nets_.eval({0, 0, 1}, region)) || !one_sign(nets_.eval({2, 0, 0}, region)))
+        return "F_t or F_uu is not proved of one sign near that end of the path";
+    } else {
+      if (X.lo.size() != 3) return "a fold's box needs (u, s, t)";
+      xt0 = X.lo[2];
+      xt1 = X.hi[2];
+      region[2] = I(xt0, xt1, bits);
+      if (sgn(xt0) <= 0 || xt1 >= 1 || sign(nets_.eval({2, 0, 0}, region)) != Sign::negative)
+        return "F_uu is not proved < 0 on the box, or its t-range is not inside (0, 1)";
+    }
+    return exclude(lo, hi, X.lo[0], X.hi[0], xt0, xt1);
+  }
+
+ private:
 
   static bool one_sign(const I& x) {
     const Sign s = sign(x);
@@ -534,8 +586,11 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<I>& F, 
                                                            long& kz) {
   using independent_detail::Projector;
   Projector<L> proj(opt.localise, FL.c[0]);
+  proj.record = opt.record;
   std::vector<Piece> pieces = proj.project(FL);
   tests += proj.tests;
+  IndependentProjectionRecord& rec = std::string(var) == "s" ? res.s_record : res.t_record;
+  if (opt.record) rec.pieces = pieces;
   // merge equal neighbours
   std::vector<Piece> m;
   for (auto& p : pieces)
@@ -585,6 +640,7 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<I>& F, 
     if (e.proved) {
       end = bracketed_instant((e.lo + e.hi) / 2, e.lo, e.hi);
       res.proofs.push_back(e.how);
+      if (opt.record) rec.ends.push_back(IndependentEndRecord{p.lo, p.hi, e.system, e.chain_lo, e.chain_hi, e.lo, e.hi});
     } else {
       undecided(p.lo, p.hi, "an end of the " + v + "-intervals lies here (" + v + " = " + decimal_string(p.lo, 12) + " proved " +
                                 (before == Strip::in ? "in" : "out") + ", " + decimal_string(p.hi, 12) + " proved " +

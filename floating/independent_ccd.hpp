@@ -52,6 +52,7 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -77,9 +78,22 @@ namespace independent_detail {
 
 enum class Strip { in, out, unknown };
 
+// A dyadic range [i / 2^d, (i + 1) / 2^d] of u or t (within the strip's own [0, 1]).
+struct Dyadic {
+  int d = 0;
+  unsigned long long i = 0;
+};
+// One box of a strip's proof: t-range x u-range, all control points > 0 (out) or < 0 (in).
+struct WitnessBox {
+  Dyadic t, u;
+};
+
 struct Piece {
   mpq_class lo, hi;
   Strip status;
+  // Filled when the Projector records witnesses: "in": boxes with one t-range whose u-ranges cover [0, 1], each < 0;
+  // "out": boxes each > 0 whose t-ranges cover [0, 1].
+  std::vector<WitnessBox> witness = {};
 };
 
 template <class T>
@@ -90,6 +104,7 @@ class Projector {
 
   long tests = 0, strips = 0, points = 0;
   std::string stop_reason;
+  bool record = false;  // keep each proved strip's boxes in Piece::witness (io/independent_certificate.hpp)
 
   // The pieces of [0, 1] along axis 1 of F (s), in order.
   std::vector<Piece> project(const TriBern<T>& F) {
@@ -162,16 +177,23 @@ class Projector {
   // proof from this piece or its sub-pieces. A piece that can help neither
   // proof is dropped (it needs a finer s or t, which the caller provides).
   int classify_u(const TriBern<T>& box, int u_limit) {
-    std::vector<std::pair<TriBern<T>, int>> stack;
-    stack.emplace_back(box, 0);
+    std::vector<std::tuple<TriBern<T>, int, unsigned long long>> stack;
+    stack.emplace_back(box, 0, 0ULL);
     bool unknown = false, can_overlap = true;
+    if (record) neg_u_.clear();
     while (!stack.empty()) {
-      auto [f, d] = std::move(stack.back());
+      auto [f, d, ui] = std::move(stack.back());
       stack.pop_back();
       ++tests;
       const int sg = f.strict_sign();
-      if (sg == 1) return 1;
-      if (sg == -1) continue;
+      if (sg == 1) {
+        if (record) pos_u_ = Dyadic{d, ui};
+        return 1;
+      }
+      if (sg == -1) {
+        if (record) neg_u_.push_back(Dyadic{d, ui});
+        continue;
+      }
       bool pos = false, neg = false;  // some corner's edge all positive / all negative
       for (int j : {0, f.n[1]})
         for (int k : {0, f.n[2]}) {
@@ -190,36 +212,51 @@ class Projector {
         continue;
       }
       auto halves = f.split_half(0, half_);
-      stack.emplace_back(std::move(halves.second), d + 1);
-      stack.emplace_back(std::move(halves.first), d + 1);
+      stack.emplace_back(std::move(halves.second), d + 1, 2 * ui + 1);
+      stack.emplace_back(std::move(halves.first), d + 1, 2 * ui);
     }
     return unknown ? 0 : -1;
   }
 
   Strip classify_strip(const TriBern<T>& strip, int limit) {
-    std::vector<std::pair<TriBern<T>, int>> stack;
-    stack.emplace_back(strip, 0);
+    std::vector<std::tuple<TriBern<T>, int, unsigned long long>> stack;
+    stack.emplace_back(strip, 0, 0ULL);
     bool unknown = false;
+    if (record) witness_.clear();
     while (!stack.empty()) {
       if (stopped()) return Strip::unknown;
-      auto [f, d] = std::move(stack.back());
+      auto [f, d, ti] = std::move(stack.back());
       stack.pop_back();
       const int r = classify_u(f, limit);
-      if (r == -1) return Strip::in;
-      if (r == 1) continue;
+      if (r == -1) {
+        if (record) {
+          witness_.clear();
+          for (const Dyadic& u : neg_u_) witness_.push_back(WitnessBox{Dyadic{d, ti}, u});
+        }
+        return Strip::in;
+      }
+      if (r == 1) {
+        if (record) witness_.push_back(WitnessBox{Dyadic{d, ti}, pos_u_});
+        continue;
+      }
       if (d >= limit) { unknown = true; continue; }
       auto halves = f.split_half(2, half_);
-      stack.emplace_back(std::move(halves.second), d + 1);
-      stack.emplace_back(std::move(halves.first), d + 1);
+      stack.emplace_back(std::move(halves.second), d + 1, 2 * ti + 1);
+      stack.emplace_back(std::move(halves.first), d + 1, 2 * ti);
     }
     return unknown ? Strip::unknown : Strip::out;
   }
+
+  std::vector<Dyadic> neg_u_;
+  Dyadic pos_u_;
+  std::vector<WitnessBox> witness_;
 
   void walk(const TriBern<T>& strip, const mpq_class& lo, const mpq_class& hi, int depth, std::vector<Piece>& out) {
     ++strips;
     const Strip r = stopped() ? Strip::unknown : classify_strip(strip, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth));
     if (r != Strip::unknown || depth >= opt_.strip_depth || !stop_reason.empty()) {
       out.push_back({lo, hi, r});
+      if (record && r != Strip::unknown) out.back().witness = witness_;
       return;
     }
     auto halves = strip.split_half(1, half_);

@@ -3,6 +3,7 @@
 // io/certificate_check.hpp prove every claim.
 #include "io/certificate.hpp"
 #include "io/cycloidal_certificate.hpp"
+#include "io/independent_certificate.hpp"
 
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -82,6 +83,7 @@ PipelineResult<Rational> run_exact(const Scene& s, std::vector<Isolation>& recor
 
 nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved) {
   if (cycloidal_certificate_scene(s)) return make_cycloidal_certificate(s, scene_doc, solved);  // io/cycloidal_certificate.hpp
+  if (independent_certificate_scene(s)) return make_independent_certificate(s, scene_doc, solved);  // io/independent_certificate.hpp
   auto start = std::chrono::steady_clock::now();
   std::vector<Isolation> record;
   PipelineResult<Rational> res = s.dim == 2 ? run_exact<3>(s, record) : run_exact<4>(s, record);

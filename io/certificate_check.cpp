@@ -5,6 +5,7 @@
 
 #include "io/certificate.hpp"
 #include "io/cycloidal_certificate.hpp"
+#include "io/independent_certificate.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "exact/descartes.hpp"
 #include "kernel/collision_timeline.hpp"
@@ -535,6 +536,7 @@ struct Checker {
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
   if (cycloidal_certificate_scene(s)) return check_cycloidal_certificate(s, scene_doc, cert);  // io/cycloidal_certificate.hpp
+  if (independent_certificate_scene(s)) return check_independent_certificate(s, scene_doc, cert);  // io/independent_certificate.hpp
   CertificateCheck out;
   Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
   try {

@@ -184,13 +184,14 @@ TEST_CASE("double and MPFR: ellipsoids on parallel paths never meet", "[independ
   }
 }
 
-TEST_CASE("independent scenes: the shared-parameter commands refuse them with exit 3", "[independent][cli]") {
+TEST_CASE("independent scenes: certify and plot take them, the shared-parameter commands refuse them with exit 3", "[independent][cli]") {
   using namespace eccd::clitest;
   const std::string f = q(indep("spheres-end"));
   // (exact and certified solve them: tests/certified/test_independent_proof.cpp)
+  // certify writes eccd-independent-certificate/1 (io/independent_certificate.hpp; tests/io/test_independent_certificate.cpp)
   Run cert = run_eccd("certify " + f + " --out /dev/null");
-  CHECK(cert.code == 3);
-  CHECK(cert.err.find("independent motions") != std::string::npos);
+  CHECK(cert.code == 0);
+  CHECK(cert.out.find("s_intervals") != std::string::npos);
   // plot draws an independent scene (issue 20 point 5): where A(s) meets B(t) in the (s, t) square
   const std::string png = (std::filesystem::temp_directory_path() / ("eccd-indep-plot-" + std::to_string(::getpid()) + ".png")).string();
   Run plot = run_eccd("plot " + f + " --output " + q(png));

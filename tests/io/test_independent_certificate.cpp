@@ -1,0 +1,142 @@
+// The independent-motion certificate (io/independent_certificate.hpp): two
+// cheap cases certified, their certificates VALID, and tampered copies
+// (a moved bracket, a flipped strip, a dropped strip, a changed scene
+// number) REJECTED naming the claim.
+#include "api/certify.hpp"
+#include "api/solve.hpp"
+#include "io/independent_certificate.hpp"
+#include "io/scene_reader.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <string>
+
+using namespace eccd;
+using json = nlohmann::json;
+
+namespace {
+
+CertificateCheck check(const Scene& s, const json& cert) { return check_certificate(s, cert.dump()); }
+
+void rejected(const Scene& s, const json& t, const std::string& claim) {
+  const CertificateCheck r = check(s, t);
+  INFO("expected to fail: " << claim << "; got " << (r.valid ? "VALID" : r.failed_claim + ": " + r.reason));
+  CHECK_FALSE(r.valid);
+  CHECK(r.failed_claim.find(claim) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("independent certificate: spheres-end round trip and tampering", "[independent][certificate]") {
+  const Scene s = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/independent/spheres-end.json");
+  const Certificate c = certify(s);
+  const json cert = json::parse(c.text);
+  REQUIRE(cert["format"] == kIndependentCertificateFormat);
+  const CertificateCheck ok = check(s, cert);
+  INFO(ok.failed_claim << ": " << ok.reason);
+  REQUIRE(ok.valid);
+  // the answer: the paths meet, one s-interval and one t-interval, their brackets containing the stored answer's
+  REQUIRE(cert["answer"]["collides"] == true);
+  REQUIRE(s.answer);
+  REQUIRE(cert["answer"]["s_intervals"].size() == s.answer->s_intervals.size());
+  REQUIRE(cert["answer"]["t_intervals"].size() == s.answer->t_intervals.size());
+  for (const char* k : {"s_intervals", "t_intervals"}) {
+    const auto& stored = std::string(k) == "s_intervals" ? s.answer->s_intervals : s.answer->t_intervals;
+    for (std::size_t i = 0; i < stored.size(); ++i)
+      for (int e = 0; e < 2; ++e) {
+        const Instant& want = e ? stored[i].second : stored[i].first;
+        const json& got = cert["answer"][k][i][e];
+        const mpq_class lo = parse_rational(got["lo"].get<std::string>()), hi = parse_rational(got["hi"].get<std::string>());
+        INFO(k << " " << i << " end " << e << ": stored " << want.approx << ", certified [" << lo.get_d() << ", " << hi.get_d() << "]");
+        CHECK(hi - lo < mpq_class(1, 1000000));
+        CHECK(std::abs(want.value - lo.get_d()) < 1e-6);
+      }
+  }
+  // find an end and a strip of each kind in the s-proof
+  std::size_t end = 0, in = 0, out = 0;
+  const json& items = cert["s_proof"];
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (items[i]["kind"] == "end" && !end) end = i;
+    if (items[i]["kind"] == "in" && !in) in = i;
+    if (items[i]["kind"] == "out" && !out) out = i;
+  }
+  REQUIRE(end > 0);
+  REQUIRE(in > 0);
+  {  // a moved bracket: shifted by its run's width, it leaves the run
+    json t = cert;
+    json& e = t["s_proof"][end];
+    const mpq_class lo = parse_rational(e["bracket"][0].get<std::string>()), hi = parse_rational(e["bracket"][1].get<std::string>());
+    const mpq_class w = parse_rational(e["hi"].get<std::string>()) - parse_rational(e["lo"].get<std::string>());
+    e["bracket"] = {mpq_class(lo + w).get_str(), mpq_class(hi + w).get_str()};
+    rejected(s, t, "s_proof item " + std::to_string(end + 1) + " (");
+  }
+  {  // a moved bracket in the answer only: no longer what the proofs give
+    json t = cert;
+    json& a = t["answer"]["s_intervals"][0][0];
+    a["lo"] = mpq_class(parse_rational(a["lo"].get<std::string>()) - mpq_class(1, 1024)).get_str();
+    rejected(s, t, "answer");
+  }
+  {  // a flipped strip: an in-strip claimed out (its boxes are negative, not positive)
+    json t = cert;
+    t["s_proof"][in]["kind"] = "out";
+    rejected(s, t, "s_proof item " + std::to_string(in + 1) + " (");
+  }
+  {  // a flipped strip: an out-strip claimed in
+    json t = cert;
+    t["s_proof"][out]["kind"] = "in";
+    rejected(s, t, "s_proof item " + std::to_string(out + 1) + " (");
+  }
+  {  // a dropped strip: the coverage of [0, 1] has a gap
+    json t = cert;
+    t["s_proof"].erase(t["s_proof"].begin() + long(out));
+    rejected(s, t, "coverage");
+  }
+  {  // a dropped box of an in-strip with more than one: its u-ranges no longer cover [0, 1]
+    json t = cert;
+    std::size_t k = 0;
+    while (k < items.size() && !(items[k]["kind"] == "in" && items[k]["boxes"].size() > 1)) ++k;
+    REQUIRE(k < items.size());
+    t["s_proof"][k]["boxes"].erase(t["s_proof"][k]["boxes"].begin());
+    rejected(s, t, "s_proof item " + std::to_string(k + 1) + " (");
+  }
+  {  // a changed scene number: a certificate for another scene
+    json t = cert;
+    t["scene"]["b"]["shape"]["semi_axes"][0] = "3/5";
+    rejected(s, t, "scene");
+  }
+  {  // the scene file changed (B larger): F differs, so the claims about its net fail
+    std::ifstream in(std::string(ECCD_SOURCE_DIR) + "/cases/independent/spheres-end.json");
+    json doc = json::parse(in);
+    doc["b"]["shape"]["semi_axes"] = {"3/5", "3/5", "3/5"};
+    doc.erase("answer");
+    json t = cert;
+    t["scene"]["b"] = doc["b"];
+    const Scene s3 = parse_scene(doc.dump(), "changed.json");
+    const CertificateCheck r = check(s3, t);
+    CHECK_FALSE(r.valid);
+  }
+}
+
+TEST_CASE("independent certificate: ellipsoids-apart (no meeting) round trip", "[independent][certificate]") {
+  const Scene s = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/independent/ellipsoids-apart.json");
+  const Certificate c = certify(s);
+  const json cert = json::parse(c.text);
+  REQUIRE(cert["format"] == kIndependentCertificateFormat);
+  const CertificateCheck ok = check(s, cert);
+  INFO(ok.failed_claim << ": " << ok.reason);
+  REQUIRE(ok.valid);
+  CHECK(cert["answer"]["collides"] == false);
+  CHECK(cert["answer"]["s_intervals"].empty());
+  {  // an out-strip claimed in: its boxes are positive, not negative
+    json t = cert;
+    t["s_proof"][0]["kind"] = "in";
+    rejected(s, t, "s_proof item 1 (");
+  }
+  {  // a changed scene number
+    json t = cert;
+    t["scene"]["a"]["shape"]["semi_axes"][0] = "7";
+    rejected(s, t, "scene");
+  }
+}
