@@ -48,23 +48,28 @@ for rate in 0.1 0.5 1; do
     [ -s "$G/table1-$rate-$f.json" ] || { echo "run-animation-report: table1-$rate-$f failed" >&2; exit 1; }
   done
 done
-python3 "$GEN" table2 --frames "$T2_FRAMES" --radius 5.49 --scenes "$G/table2-scenes" "$G/table2.anim.json"
-run table2-certified "$G/table2.anim.json" certified --all-intervals
-run table2-double "$G/table2.anim.json" double --all-intervals
-if "$E" fcl "$G/table2-scenes/frame-0.json" --samples 1 >/dev/null 2>&1; then
-  fcl_frames() {  # N: eccd fcl on every frame's scene, one JSON line per frame
-    echo "run-animation-report: table2 fcl/sample:$1 on $T2_FRAMES frames" >&2
-    for ((k = 0; k < T2_FRAMES; k++)); do
-      "$E" fcl "$G/table2-scenes/frame-$k.json" --samples "$1" --json | tr -d '\n'
-      echo
-    done > "$G/table2-fcl-$1.jsonl"
-  }
-  fcl_frames 1 &
-  fcl_frames 10
-  wait
-else
-  echo "run-animation-report: eccd fcl is not available (FCL not built in): no FCL column" >&2
-fi
+# table2: the main orbit (radius 5.49) and a grazing one (5.4999999: 1e-7 deep at the ends of the 4.5 axis)
+fcl_ok=0
+"$E" fcl cases/spheres/spheres-crossing.json --samples 1 >/dev/null 2>&1 && fcl_ok=1
+[ "$fcl_ok" = 1 ] || echo "run-animation-report: eccd fcl is not available (FCL not built in): no FCL column" >&2
+fcl_frames() {  # VARIANT N: eccd fcl on every frame's scene, one JSON line per frame
+  echo "run-animation-report: table2-$1 fcl/sample:$2 on $T2_FRAMES frames" >&2
+  for ((k = 0; k < T2_FRAMES; k++)); do
+    "$E" fcl "$G/table2-$1-scenes/frame-$k.json" --samples "$2" --json | tr -d '\n'
+    echo
+  done > "$G/table2-$1-fcl-$2.jsonl"
+}
+for v in main:5.49 graze:5.4999999; do
+  name=${v%%:*} radius=${v#*:}
+  python3 "$GEN" table2 --frames "$T2_FRAMES" --radius "$radius" --scenes "$G/table2-$name-scenes" "$G/table2-$name.anim.json"
+  run "table2-$name-certified" "$G/table2-$name.anim.json" certified --all-intervals
+  run "table2-$name-double" "$G/table2-$name.anim.json" double --all-intervals
+  if [ "$fcl_ok" = 1 ]; then
+    fcl_frames "$name" 1 &
+    fcl_frames "$name" 10
+    wait
+  fi
+done
 python3 "$GEN" boxers --frames "$BOX_FRAMES" "$G/boxers.anim.json"
 python3 "$GEN" boxers --frames "$BOX_CERT_FRAMES" "$G/boxers-cert.anim.json"
 run boxers-double "$G/boxers.anim.json" double
