@@ -68,6 +68,9 @@ for v in main:5.49 graze:5.4999999; do
     fcl_frames "$name" 1 &
     fcl_frames "$name" 10
     wait
+    for n in 1 10; do
+      [ "$(wc -l < "$G/table2-$name-fcl-$n.jsonl")" = "$T2_FRAMES" ] || { echo "run-animation-report: table2-$name fcl/sample:$n failed" >&2; exit 1; }
+    done
   fi
 done
 python3 "$GEN" boxers --frames "$BOX_FRAMES" "$G/boxers.anim.json"
