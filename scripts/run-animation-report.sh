@@ -7,9 +7,9 @@
 #  (a) paper 000 Table 1: two ellipsoids 3,3,5, centres 8 apart, 0.1, 0.5, 1 rad per frame, with and without planes;
 #  (b) paper 000 Table 2: a sphere orbiting an ellipsoid 4.5,4,2; certified against FCL (eccd fcl) per frame;
 #  (c) paper 001 section 5 in spirit: two figures of 24 ellipsoids, 576 pairs per frame, double and certified.
-# Sizes (environment): T1_FRAMES (double, default 10000), T1_CERT_FRAMES (certified, default 200),
-# T2_FRAMES (default 629: one orbit), BOX_FRAMES (double, 1000), BOX_CERT_FRAMES (certified, 50):
-# certified is far slower than double here (about 0.13 s per frame for (a), 3 s for (c) on this machine).
+# Sizes (environment): T1_FRAMES (double, default 10000), T1_CERT_FRAMES (certified, default 1000),
+# T2_FRAMES (default 629: one orbit), BOX_FRAMES (double, 1000), BOX_CERT_FRAMES (certified, 200):
+# certified is far slower than double here (about 12-45 ms per frame for (a), 0.5 s for (c) on this machine, unloaded).
 # Single-pair runs go two at a time (2 cores); per-frame times are each run's own thread time..
 # Builds eccd first if build/eccd is missing (scripts/bootstrap.sh, like run-main.sh).
 set -euo pipefail
@@ -19,10 +19,10 @@ E=build/eccd
 OUT=reports/animation
 G=$OUT/generated
 T1_FRAMES=${T1_FRAMES:-10000}
-T1_CERT_FRAMES=${T1_CERT_FRAMES:-200}
+T1_CERT_FRAMES=${T1_CERT_FRAMES:-1000}
 T2_FRAMES=${T2_FRAMES:-629}
 BOX_FRAMES=${BOX_FRAMES:-1000}
-BOX_CERT_FRAMES=${BOX_CERT_FRAMES:-50}
+BOX_CERT_FRAMES=${BOX_CERT_FRAMES:-200}
 GEN=cases/animations/make_repro.py
 rm -rf "$G"
 mkdir -p "$G"
