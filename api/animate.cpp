@@ -188,8 +188,9 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
   res.shard_count = opt.shard_count;
   res.all_intervals = opt.all_intervals;
 #ifdef ECCD_ANIMATE_PLANES
-  res.plane_stage_built = true;
+  res.plane_stage_built = opt.planes;
 #endif
+  res.planes_disabled = !opt.planes;
 
   SolveOptions so = opt.solve;
   if (opt.all_intervals) {
@@ -288,7 +289,7 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
           const Scene scene = pair_frame_scene(anim, task.a, task.b, k);
 #ifdef ECCD_ANIMATE_PLANES
           // Only a plane from the frame just before (a frame dropped by stage 1 in between forgets it).
-          if (kept && kept_frame + 1 == slot.frame_pos && plane_separates_on_frame(scene, *kept, so) == PlaneCheck::separates) {
+          if (opt.planes && kept && kept_frame + 1 == slot.frame_pos && plane_separates_on_frame(scene, *kept, so) == PlaneCheck::separates) {
             r.plane_settled = true;
             kept_frame = slot.frame_pos;  // checked on this frame; the next frame checks it again
           } else {
@@ -301,7 +302,7 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
               r.budget_why = std::string("resource budget exhausted: ") + e.what();
             }
 #ifdef ECCD_ANIMATE_PLANES
-            if (r.solved && !r.solution.answer.collides && r.solution.decided()) {
+            if (opt.planes && r.solved && !r.solution.answer.collides && r.solution.decided()) {
               Separation sep = separate_at(scene, Rational(1), so);
               if (sep.status == "separate" && sep.plane) {
                 kept = sep.plane;
@@ -413,7 +414,7 @@ nlohmann::ordered_json animation_result_to_json(const AnimationResult& r) {
   j["undecided"] = nlohmann::ordered_json::array();
   for (const auto& u : r.undecided) j["undecided"].push_back({{"frame", u.frame}, {"pair", pair(u.body_a, u.body_b)}, {"why", u.why}});
   j["stages"] = {{"bounding_volumes", r.bounding_volumes}, {"separating_plane", r.separating_plane}, {"continuous_test", r.continuous_test}};
-  j["separating_plane_stage"] = r.plane_stage_built ? "built" : "not built";
+  j["separating_plane_stage"] = r.planes_disabled ? "off" : r.plane_stage_built ? "built" : "not built";
   if (r.shard_count > 1) j["shard"] = std::to_string(r.shard_index) + "/" + std::to_string(r.shard_count);
   nlohmann::ordered_json pf = nlohmann::ordered_json::array();
   for (const auto& f : r.per_frame)

@@ -61,6 +61,7 @@ struct AnimateOptions {
   bool all_intervals = false;   // false: first contact only
   int threads = 2;              // >= 1
   std::size_t shard_index = 0, shard_count = 1;  // 0 <= index < count
+  bool planes = true;           // false: skip stage 2 (no plane kept or built; --no-planes, 000 Table 1's "without")
   bool keep_tested = false;     // keep every continuous test's local answer (AnimationResult::tested; for tests)
   // Called on the calling thread about every 0.1 s and at the end: (pair-frames of stages 2-3 done, of this run).
   std::function<void(std::size_t, std::size_t)> progress;
@@ -98,6 +99,7 @@ struct AnimationResult {
   std::vector<PairFrameAnswer> tested;  // with keep_tested: every pair-frame of stage 3
   std::size_t bounding_volumes = 0, separating_plane = 0, continuous_test = 0;
   bool plane_stage_built = false;
+  bool planes_disabled = false;     // AnimateOptions::planes was false ("separating_plane_stage": "off")
   bool all_intervals = false;
   double seconds = 0;
 };

@@ -26,7 +26,7 @@ namespace {
 
 struct AnimateArgs {
   std::string path, arith = "exact", shard, out;
-  bool json = false, all_intervals = false, quiet = false;
+  bool json = false, all_intervals = false, quiet = false, no_planes = false;
   int threads = 2;
 };
 
@@ -41,7 +41,7 @@ std::string summary_text(const AnimationResult& r) {
   o << "animation " << r.animation << " (" << r.file << "), " << r.dim << "D, arithmetic " << r.arithmetic << ", "
     << (r.all_intervals ? "all intervals" : "first contact") << "\n";
   o << "frames " << r.frames << (r.shard_count > 1 ? " (this shard: " + std::to_string(r.per_frame.size()) + ")" : std::string())
-    << ", pairs per frame " << r.pairs_per_frame << ", separating-plane stage " << (r.plane_stage_built ? "built" : "not built")
+    << ", pairs per frame " << r.pairs_per_frame << ", separating-plane stage " << (r.planes_disabled ? "off" : r.plane_stage_built ? "built" : "not built")
     << "\n\n";
   o << "frame   pairs  bounding  plane  continuous  events  undecided       ms\n";
   for (const auto& f : r.per_frame) {
@@ -83,6 +83,8 @@ Command add_animate_command(CLI::App& app) {
       ->capture_default_str();
   c.sub->add_flag("--json", args->json, "Print the answer object (format ellipse-ccd-animation-answer/1)");
   c.sub->add_flag("--all-intervals", args->all_intervals, "Every collision interval of each pair-frame (default: the first contact)");
+  c.sub->add_flag("--no-planes", args->no_planes,
+                  "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
   c.sub->add_option("--threads", args->threads, "Threads running pair-frames (the output does not depend on it)")
       ->capture_default_str();
   c.sub->add_option("--shard", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
@@ -92,6 +94,7 @@ Command add_animate_command(CLI::App& app) {
     AnimateOptions o;
     o.solve.arith = parse_arithmetic(args->arith);
     o.all_intervals = args->all_intervals;
+    o.planes = !args->no_planes;
     // Each pair-frame's solve gets --time-limit (floating: at most the default 30 s); beyond it the pair-frame is undecided.
     const double limit = run_budget().time_limit_s;
     o.solve.time_limit_s = o.solve.arith.floating() ? (limit > 0 ? std::min(limit, kDefaultFloatingSeconds) : 0) : limit;
