@@ -105,14 +105,10 @@ TEST_CASE("independent family: each kind is what the exact (balls) or double (el
         CHECK(*s1.hi - *s0.lo < mpq_class(1, 1000000));
       }
     } else {
-      // Ellipsoids: exact refuses them until branch indepx extends it (then it must agree with the construction);
+      // Ellipsoids: the proved answer (certified/independent_proof.hpp) must agree with the construction;
       // the double subdivision is not run here (it can take its whole 30 s budget on a crossing pair).
-      try {
-        Solution r = solve(s, exact);
-        CHECK(r.answer.collides == (kind == "ellipsoids-colliding"));
-      } catch (const std::invalid_argument&) {
-        SUCCEED("exact refuses independent ellipsoids (no ground truth)");
-      }
+      Solution r = solve(s, exact);
+      CHECK(r.answer.collides == (kind == "ellipsoids-colliding"));
     }
   }
 }
