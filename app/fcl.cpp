@@ -1,11 +1,11 @@
-// `eccd fcl SCENE [--samples N | --ccd N] [--json]`: FCL's answer for a scene
+// `eccd fcl SCENE [--samples N [--gjk-tolerance X] | --ccd N] [--json]`: FCL's answer for a scene
 // (compare/fcl_engine.hpp, docs/fcl.md), in the scene format's answer form,
 // so that `eccd judge SCENE ANSWER` judges the real FCL. Without --json it
 // prints the bare answer object ({"collides", "intervals", "first_contact",
 // "contacts"}; for --ccd only collides and first_contact: FCL's continuous
 // collision claims nothing else); with --json one object with "format"
 // ("eccd-fcl-answer/1"), "version", the engine, FCL's version and tolerances
-// and the answer under "answer" (judge reads it from there). Exit 0, 2 bad
+// ("gjk_tolerance": the one fcl::collide received) and the answer under "answer" (judge reads it from there). Exit 0, 2 bad
 // option or scene, 3 refused: FCL is not built in, a motion --ccd cannot
 // express, a pose that is not an ellipsoid in double.
 #include "app/commands.hpp"
@@ -22,8 +22,9 @@ namespace {
 struct FclArgs {
   std::string scene;
   int samples = 100, ccd = 0;
+  double gjk_tolerance = 0;
   bool json = false;
-  CLI::Option *samples_opt = nullptr, *ccd_opt = nullptr;
+  CLI::Option *samples_opt = nullptr, *ccd_opt = nullptr, *gjk_opt = nullptr;
 };
 
 }  // namespace
@@ -45,6 +46,11 @@ Command add_fcl_command(CLI::App& app) {
                                 "and first contact only; only for constant shapes moving by a translation linear in t")
                       ->check(CLI::Range(2, 10000000));
   args->samples_opt->excludes(args->ccd_opt);
+  args->gjk_opt = s->add_option("--gjk-tolerance", args->gjk_tolerance,
+                                "FCL's CollisionRequest::gjk_tolerance for fcl::collide (default FCL's own, 1e-6), e.g. 1e-12; "
+                                "not with --ccd (FCL's continuous collision uses a default request inside)")
+                      ->check(CLI::PositiveNumber);
+  args->gjk_opt->excludes(args->ccd_opt);
   s->add_flag("--json", args->json, "Print one JSON object (format eccd-fcl-answer/1) with the answer under \"answer\"");
   c.run = [args]() -> int {
     const SceneSource src = read_scene_source(args->scene);
@@ -54,9 +60,11 @@ Command add_fcl_command(CLI::App& app) {
     const bool ccd = args->ccd_opt->count() > 0;
     const int n = ccd ? args->ccd : args->samples;
     const std::string engine = std::string(ccd ? "fcl/ccd:" : "fcl/sample:") + std::to_string(n);
+    FclOptions fo;
+    fo.gjk_tolerance = args->gjk_tolerance;
     Answer a;
     try {
-      a = ccd ? fcl_ccd(scene, n) : fcl_sample(scene, n);
+      a = ccd ? fcl_ccd(scene, n, fo) : fcl_sample(scene, n, fo);
     } catch (const std::invalid_argument& e) {  // a valid scene FCL is not given: inexpressible motion, not an ellipsoid
       throw ExitError(3, "fcl: " + src.label + ": " + engine + ": " + e.what());
     }
@@ -72,7 +80,8 @@ Command add_fcl_command(CLI::App& app) {
       out["scene_file"] = src.label;
       out["engine"] = engine;
       out["fcl_version"] = fa.version;
-      out["tolerances"] = fcl_tolerances();
+      out["tolerances"] = fcl_tolerances(fo);
+      out["gjk_tolerance"] = fcl_gjk_tolerance(fo);
       out["answer"] = ans;
       std::cout << out.dump(2) << "\n";
     } else {

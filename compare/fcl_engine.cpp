@@ -156,14 +156,25 @@ fcl::Transform3d transform_of(const FclPose& p) {
   return tf;
 }
 
-bool fcl_collide_posed(const Poser& poser, double t) {
+fcl::CollisionRequestd request_of(const FclOptions& o) {
+  fcl::CollisionRequestd request;  // FCL's defaults, as a user calls it
+  if (o.gjk_tolerance > 0) request.gjk_tolerance = o.gjk_tolerance;
+  return request;
+}
+
+bool fcl_collide_posed(const Poser& poser, double t, const FclOptions& o) {
   FclScenePose p = poser.at(t);
   fcl::Ellipsoidd ea(p.a.radii[0], p.a.radii[1], p.a.radii[2]), eb(p.b.radii[0], p.b.radii[1], p.b.radii[2]);
-  fcl::CollisionRequestd request;  // FCL's defaults, as a user calls it
+  const fcl::CollisionRequestd request = request_of(o);
   fcl::CollisionResultd result;
   return fcl::collide(&ea, transform_of(p.a), &eb, transform_of(p.b), request, result) > 0;
 }
 #endif
+
+void check_options(const FclOptions& o) {
+  if (!(o.gjk_tolerance >= 0) || !std::isfinite(o.gjk_tolerance))
+    throw std::invalid_argument("FCL's gjk_tolerance must be a finite number > 0 (or 0 for FCL's default)");
+}
 
 void need_fcl() {
 #ifndef ECCD_HAVE_FCL
@@ -184,13 +195,24 @@ FclAvailability fcl_availability() {
   return a;
 }
 
-std::string fcl_tolerances() {
+double fcl_gjk_tolerance(const FclOptions& options) {
+  check_options(options);
 #ifdef ECCD_HAVE_FCL
-  fcl::CollisionRequestd r;
+  return request_of(options).gjk_tolerance;
+#else
+  return 0;
+#endif
+}
+
+std::string fcl_tolerances(const FclOptions& options) {
+  check_options(options);
+#ifdef ECCD_HAVE_FCL
+  const fcl::CollisionRequestd r = request_of(options);
   fcl::detail::GJKSolver_libccd<double> solver;
   fcl::ContinuousCollisionRequestd cr;
   std::ostringstream o;
-  o << "fcl::collide with the default CollisionRequest: GJK solver "
+  o << "fcl::collide with " << (options.gjk_tolerance > 0 ? "a CollisionRequest (gjk_tolerance set)" : "the default CollisionRequest")
+    << ": GJK solver "
     << (r.gjk_solver_type == fcl::GST_LIBCCD ? "libccd (GST_LIBCCD)" : "indep (GST_INDEP)") << ", gjk_tolerance "
     << r.gjk_tolerance << ", at most " << solver.max_collision_iterations
     << " GJK iterations; fcl::continuousCollide: CCDC_NAIVE with CCDM_TRANS, num_max_iterations N, toc_err " << cr.toc_err
@@ -212,25 +234,27 @@ std::string fcl_ccd_inexpressible(const Scene& s) {
   return "";
 }
 
-bool fcl_collides_at(const Scene& s, double t) {
+bool fcl_collides_at(const Scene& s, double t, const FclOptions& o) {
   need_fcl();
+  check_options(o);
 #ifdef ECCD_HAVE_FCL
-  return fcl_collide_posed(Poser(s), t);
+  return fcl_collide_posed(Poser(s), t, o);
 #else
   (void)s, (void)t;
   return false;
 #endif
 }
 
-Answer fcl_sample(const Scene& s, int n) {
+Answer fcl_sample(const Scene& s, int n, const FclOptions& o) {
   need_fcl();
+  check_options(o);
   if (n < 1) throw std::invalid_argument("fcl/sample:N needs N >= 1");
   Answer a;
 #ifdef ECCD_HAVE_FCL
   const Poser poser(s);
   long start = -1;
   for (long k = 0; k <= n; ++k) {
-    const bool hit = fcl_collide_posed(poser, double(k) / double(n));
+    const bool hit = fcl_collide_posed(poser, double(k) / double(n), o);
     if (hit && start < 0) start = k;
     if (start >= 0 && (!hit || k == n)) {
       const long end = hit ? k : k - 1;
@@ -246,8 +270,11 @@ Answer fcl_sample(const Scene& s, int n) {
   return a;
 }
 
-Answer fcl_ccd(const Scene& s, int n) {
+Answer fcl_ccd(const Scene& s, int n, const FclOptions& o) {
   need_fcl();
+  check_options(o);
+  if (o.gjk_tolerance > 0)
+    throw std::invalid_argument("fcl/ccd: FCL's naive continuous collision makes its own default CollisionRequest, so a gjk_tolerance cannot reach it");
   // FCL's naive solver samples t = i/(N-1): N = 1 would divide by zero.
   if (n < 2) throw std::invalid_argument("fcl/ccd:N needs N >= 2");
   if (std::string why = fcl_ccd_inexpressible(s); !why.empty()) throw std::invalid_argument(why);

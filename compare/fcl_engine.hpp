@@ -26,7 +26,8 @@
 //    they meet at z = 0, i.e. iff the ellipses meet.
 //  * `fcl/sample:N`: fcl::collide with the default fcl::CollisionRequestd
 //    (GJK solver libccd, gjk_tolerance 1e-6, at most 500 GJK iterations:
-//    fcl_tolerances() reads them from FCL's own objects) at t = k/N,
+//    fcl_tolerances() reads them from FCL's own objects; FclOptions sets
+//    gjk_tolerance, e.g. the tight 1e-12 of the animation report) at t = k/N,
 //    k = 0..N. Runs of colliding samples k..m become intervals [k/N, m/N]
 //    (decimals, no brackets), collides = some sample collides, first_contact
 //    = the first interval's start; no contacts (FCL reports none). Any
@@ -70,9 +71,24 @@ struct FclAvailability {
 };
 FclAvailability fcl_availability();
 
+// What a caller may change in FCL's collision request (issue 17 point 2).
+// gjk_tolerance: fcl::CollisionRequestd::gjk_tolerance, which fcl::collide
+// passes to the libccd solver as its collision_tolerance (the MPR/GJK
+// termination tolerance; fcl/narrowphase/collision-inl.h); 0 keeps FCL's
+// default (1e-6). It reaches fcl::collide (fcl/sample:N and
+// fcl_collides_at) only: FCL's naive continuous collision builds its own
+// default CollisionRequest inside, so fcl_ccd refuses a non-zero one.
+struct FclOptions {
+  double gjk_tolerance = 0;  // > 0, or 0 for FCL's default
+};
+
 // FCL's settings these pipelines use, read from FCL's request and solver
-// objects ("GJK solver libccd, gjk_tolerance 1e-06, ..."); "" without FCL.
-std::string fcl_tolerances();
+// objects after `options` are applied ("GJK solver libccd, gjk_tolerance
+// 1e-06, ..."); "" without FCL.
+std::string fcl_tolerances(const FclOptions& options = {});
+// The gjk_tolerance fcl::collide receives with `options` (FCL's default for
+// 0), read back from FCL's request object; 0 without FCL.
+double fcl_gjk_tolerance(const FclOptions& options = {});
 
 // A call that needs FCL in a build without it.
 struct FclUnavailable : std::runtime_error {
@@ -99,12 +115,13 @@ std::string fcl_ccd_inexpressible(const Scene& scene);
 
 // FCL's static test at instant t: fcl::collide with the default request on
 // the poses above (throws like fcl_sample).
-bool fcl_collides_at(const Scene& scene, double t);
+bool fcl_collides_at(const Scene& scene, double t, const FclOptions& options = {});
 
 // The pipelines (throw FclUnavailable without FCL; std::invalid_argument for
-// n < 1, an inexpressible scene (ccd) or a pose that is not an ellipsoid).
-Answer fcl_sample(const Scene& scene, int n);
-Answer fcl_ccd(const Scene& scene, int n);
+// n < 1, an inexpressible scene (ccd) or a pose that is not an ellipsoid, a
+// gjk_tolerance that is negative or not finite, or non-zero for fcl_ccd).
+Answer fcl_sample(const Scene& scene, int n, const FclOptions& options = {});
+Answer fcl_ccd(const Scene& scene, int n, const FclOptions& options = {});
 
 // An answer as a first-contact-only engine (fcl/ccd) sees it: collides and
 // first_contact kept, no intervals, contacts or contact intervals; the
