@@ -7,6 +7,7 @@
 // independent-motions scene), 4 exact/certified could not prove a plane.
 #include "app/commands.hpp"
 #include "api/separate.hpp"
+#include "api/separate_json.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/budget.hpp"
 
@@ -28,11 +29,6 @@ std::string tuple_text(const std::vector<mpq_class>& v, bool exact) {
   std::string r = "(";
   for (std::size_t i = 0; i < v.size(); ++i) r += (i ? ", " : "") + (exact ? v[i].get_str() : decimal_string(v[i], 17));
   return r + ")";
-}
-std::vector<std::string> strings_of(const std::vector<mpq_class>& v, bool exact) {
-  std::vector<std::string> r;
-  for (const auto& x : v) r.push_back(exact ? x.get_str() : decimal_string(x, 20));
-  return r;
 }
 
 }  // namespace
@@ -73,42 +69,9 @@ Command add_separate_command(CLI::App& app) {
     if (exact && sep.status == "undecided") throw ExitError(4, "separate: " + src.label + ": " + sep.why);
     if (args->json) {
       nlohmann::ordered_json j;
-      stamp_format(j, "eccd-separate/1");
-      j["scene"] = scene.name;
-      j["file"] = src.label;
-      j["dim"] = scene.dim;
-      j["arith"] = opt.arith.name();
-      j["t"] = t.get_str();
-      j["status"] = sep.status;
-      if (sep.plane) {
-        nlohmann::ordered_json pl;
-        pl["normal"] = strings_of(sep.plane->normal, true);
-        pl["offset"] = sep.plane->offset.get_str();
-        pl["meaning"] = "n.x + o = 0; object a in n.x + o < 0, object b in n.x + o > 0";
-        j["plane"] = pl;
-        nlohmann::ordered_json tp = nlohmann::ordered_json::array();
-        for (const auto& p : sep.tangent_points) tp.push_back(strings_of(p, false));
-        j["tangent_points"] = tp;
-        j["tangent_points_note"] = "000 section 3: P_R^A on a and P_L^B on b, decimals (irrational in general)";
-      }
-      if (!sep.checks.empty()) {
-        nlohmann::ordered_json ch = nlohmann::ordered_json::array();
-        for (const auto& k : sep.checks) {
-          nlohmann::ordered_json x;
-          x["object"] = k.object;
-          x["quantity"] = k.quantity;
-          x["relation"] = k.relation;
-          x["value"] = exact ? k.value.get_str() : decimal_string(k.value, 17);
-          if (!exact) x["error_bound"] = k.error_bound;
-          if (!k.centre.empty()) x["centre"] = strings_of(k.centre, exact);
-          ch.push_back(x);
-        }
-        j["checks"] = ch;
-        j["checks_note"] = exact ? "exact rationals: q = M(t)^T (n, o) with M(t) the scene's motion matrix and Q its shape matrix; "
-                                   "q^T adj(Q) q > 0 iff the plane misses the object (det Q < 0)"
-                                 : "computed in " + opt.arith.name() + " with a running error bound";
-      }
-      if (!sep.why.empty()) j["why"] = sep.why;
+      stamp_format(j, kSeparateFormat);
+      const nlohmann::ordered_json body = separation_to_json(scene, src.label, t, opt.arith, sep);  // api/separate_json.hpp
+      for (const auto& it : body.items()) j[it.key()] = it.value();
       std::cout << j.dump(2) << "\n";
       return 0;
     }
