@@ -6,6 +6,8 @@
 //   s = eccd.read_scene("cases/paper003/example2.json")   # or eccd.scene_from_dict(d), eccd.scene_from_text(t)
 //   r = eccd.solve(s, arith="exact")                        # "double", "mpfr:128", "exact", "certified", ...
 //   r.collides, r.intervals, r.first_contact, r.contacts    # instants: .approx (float), .lo / .hi (Fraction or None)
+//   eccd.animate("cases/animations/swarm-2d.json", arith="certified")   # the animation answer, a dict
+//   eccd.separate(s, "1/3")                                 # a separating plane at t = 1/3, a dict
 //
 // Types: an Instant's bracket [lo, hi] is exact (fractions.Fraction, made
 // from the rational's text, never through a float); .approx is the
@@ -13,6 +15,10 @@
 // eccd.SceneError (a ValueError) whose message names the file, the place and
 // what is wrong; a request the pipelines refuse raises ValueError.
 #include "eccd/eccd.hpp"
+#include "api/animate.hpp"          // eccd.animate (issue 17 point 4)
+#include "api/separate_json.hpp"    // eccd.separate's dict: the same builder as `eccd separate --json`
+#include "io/animation_reader.hpp"
+#include "io/scene_reader.hpp"
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -252,6 +258,88 @@ PYBIND11_MODULE(eccd, m) {
       }, py::arg("scene"), py::arg("answer"), py::arg("tol") = 1e-6, py::arg("name") = "yours", py::arg("use_stored") = false,
       "Compares an answer (Answer, Solution, dict in the scene format or JSON text) with the scene's certified answer; "
       "returns a Judgement (.agrees, .verdict, .differences, .counts)");
+
+  // Animations and separating planes (issue 17 point 4): the same JSON objects as `eccd animate --json` and
+  // `eccd separate --json`, as dicts (built by the API's own functions, then json.loads).
+  m.def("animate", [](const std::string& path, const std::string& arith, int threads, bool all_intervals, bool planes,
+                      double time_limit) {
+        eccd::AnimateOptions o;
+        o.solve.arith = eccd::parse_arithmetic(arith);
+        if (threads < 1 || threads > 256) throw std::invalid_argument("threads must be 1 to 256");
+        if (time_limit < 0) throw std::invalid_argument("time_limit must be >= 0 seconds");
+        o.threads = threads;
+        o.all_intervals = all_intervals;
+        o.planes = planes;
+        o.solve.time_limit_s = time_limit;
+        std::string text;
+        {
+          py::gil_scoped_release unlocked;
+          const eccd::Animation anim = eccd::read_animation(path);
+          nlohmann::ordered_json j;
+          j["format"] = eccd::kAnimationAnswerFormat;
+          const nlohmann::ordered_json body = eccd::animation_result_to_json(eccd::animate(anim, o));
+          for (const auto& it : body.items()) j[it.key()] = it.value();
+          text = j.dump();
+        }
+        return py::module_::import("json").attr("loads")(text);
+      }, py::arg("path"), py::arg("arith") = "double", py::arg("threads") = 2, py::arg("all_intervals") = false,
+      py::arg("planes") = true, py::arg("time_limit") = 0.0,
+      "Every checked pair of the animation file in every frame (docs/animation-format.md; api/animate.hpp): bounding "
+      "spheres, the separating plane kept from the previous frame, then the continuous test in `arith` ('double', "
+      "'mpfr:BITS', 'exact', 'certified'); first contact only unless all_intervals. Returns the answer object of "
+      "`eccd animate FILE --json` as a dict (format ellipse-ccd-animation-answer/1, without the program's \"version\"; "
+      "its times are this run's). threads: pair-frames in parallel (the answer does not depend on it); planes=False is "
+      "--no-planes; time_limit: seconds per pair-frame's solve (0: the pipelines' default), beyond it the pair-frame is "
+      "undecided. A bad file raises SceneError naming the file and the JSON place; a refused request ValueError.");
+  m.def("separate", [](const py::object& scene_arg, const py::object& t, const std::string& arith) {
+        static py::object Fraction = py::module_::import("fractions").attr("Fraction");
+        eccd::Scene scene;
+        std::string label;
+        if (py::isinstance<eccd::Scene>(scene_arg)) {
+          scene = scene_arg.cast<eccd::Scene>();
+          label = "<Scene>";
+        } else if (py::isinstance<py::dict>(scene_arg)) {
+          label = "<dict>";
+          scene = eccd::scene_from_text(py::module_::import("json").attr("dumps")(scene_arg).cast<std::string>(), label);
+        } else if (py::isinstance<py::str>(scene_arg)) {
+          label = scene_arg.cast<std::string>();
+          scene = eccd::read_scene(label);
+        } else {
+          throw py::type_error("separate: scene must be an eccd Scene, a scene dict or a scene file's path");
+        }
+        // exact: a str such as '1/3' or '0.25' is read as a rational; a float is taken at its exact binary value
+        const std::string ttext = py::isinstance<py::str>(t) ? t.cast<std::string>() : py::str(Fraction(t)).cast<std::string>();
+        mpq_class q;
+        try {
+          q = eccd::parse_rational(ttext);
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument("separate: t = " + ttext + ": " + e.what() + " (expected a rational in [0, 1] such as 1/3 or 0.25)");
+        }
+        if (sgn(q) < 0 || q > 1) throw std::invalid_argument("separate: t = " + ttext + ": the instant must lie in [0, 1]");
+        eccd::SolveOptions o;
+        o.arith = eccd::parse_arithmetic(arith);
+        std::string text;
+        {
+          py::gil_scoped_release unlocked;
+          const eccd::Separation sep = eccd::separate_at(scene, q, o);
+          if (!o.arith.floating() && sep.status == "undecided")
+            throw std::runtime_error("separate: " + label + ": " + sep.why);  // `eccd separate` exits 4 here
+          nlohmann::ordered_json j;
+          j["format"] = eccd::kSeparateFormat;
+          const nlohmann::ordered_json body = eccd::separation_to_json(scene, label, q, o.arith, sep);
+          for (const auto& it : body.items()) j[it.key()] = it.value();
+          text = j.dump();
+        }
+        return py::module_::import("json").attr("loads")(text);
+      }, py::arg("scene"), py::arg("t"), py::arg("arith") = "exact",
+      "The scene's two objects at the instant t (paper 000 section 3; api/separate.hpp): a dict as `eccd separate SCENE "
+      "--at T --json` prints (format eccd-separate/1, without \"version\"): \"status\" ('separate', 'touching', "
+      "'overlapping'; floating arithmetics also 'undecided' with \"why\"), and when separate \"plane\" {\"normal\", "
+      "\"offset\"} (n.x + o = 0, a on the negative side; exact rational strings), the tangent points and the inequalities "
+      "that prove the plane. scene: an eccd Scene, a dict in the scene format or a file path; t: a rational string "
+      "('1/3', '0.25'), a Fraction or an int (a float is taken at its exact binary value), 0 <= t <= 1. arith 'exact' "
+      "(default) and 'certified' prove the plane; RuntimeError when they cannot (the command line's exit 4); ValueError "
+      "for a cycloidal or independent-motions scene.");
 
   m.def("solve", [](const eccd::Scene& scene, const std::string& arith, const std::string& basis, int variant,
                     const std::string& method, bool first_contact, const std::string& input, double time_limit) {
