@@ -72,11 +72,26 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--seconds", type=float, default=0)
     ap.add_argument("--sizes", default="")
+    ap.add_argument("--full", default="0", help="1 when the script ran with FULL=1")
+    ap.add_argument("--gjk-tight", default="1e-12", help="FCL's tight gjk_tolerance of the run")
     a = ap.parse_args()
     g = a.generated
-    summary = {"format": "eccd-animation-report/1", "run_seconds": a.seconds, "sizes": a.sizes}
+    sizes = dict(kv.split("=", 1) for kv in a.sizes.split() if "=" in kv)
+    full = all(sizes.get(k) == v for k, v in (("T1_FRAMES", "10000"), ("T1_CERT_FRAMES", "10000"), ("T2_FRAMES", "629"),
+                                              ("BOX_FRAMES", "1000"), ("BOX_CERT_FRAMES", "1000")))
+    summary = {"format": "eccd-animation-report/1", "run_seconds": a.seconds, "sizes": a.sizes, "full_size": full,
+               "fcl_gjk_tight": a.gjk_tight}
+    if full:
+        size_text = ("**Full size**: every run at the papers' sizes (Table 1: 10 000 frames per rate in double and "
+                     "certified; Table 2: one orbit, 629 frames; boxers: 1000 frames in double and certified).")
+    else:
+        size_text = (f"**Reduced sizes** (not the papers'): Table 1 {sizes.get('T1_FRAMES', '?')} frames per rate in double, "
+                     f"{sizes.get('T1_CERT_FRAMES', '?')} in certified (paper: 10 000); Table 2 {sizes.get('T2_FRAMES', '?')} "
+                     f"frames; boxers {sizes.get('BOX_FRAMES', '?')} frames in double, {sizes.get('BOX_CERT_FRAMES', '?')} in "
+                     "certified (paper: 1000). `FULL=1 bash scripts/run-animation-report.sh` runs the full sizes.")
     md = ["# Paper reproductions on animations (issue 17 point 5)", "",
           f"Written by `bash scripts/run-animation-report.sh` ({a.sizes}; {a.seconds:.0f} s on this machine, 2 cores).",
+          size_text, "",
           "The animation files are `cases/animations/make_repro.py`'s (seeded, exact decimals); the raw `eccd animate --json`",
           "answers are in `generated/` (not committed). Times are eccd's own per-frame thread time (`per_frame[].ms`:",
           "bounding spheres, plane check, continuous test, building the next plane), not process start-up.",
@@ -157,11 +172,11 @@ def main():
            "Orbit radius 5.49 in the plane of the two longer axes (chosen so that about 8 % of the poses collide, as the",
            "paper's 1 157 of 13 746; it collides only near the ends of the 4.5 axis), 0.01 rad per frame; the centre moves",
            "on the chord between keys. No bounding boxes here: every frame goes to the plane and the continuous test.",
-           "FCL 0.7: `eccd fcl FRAME-SCENE --samples N` (compare/fcl_engine.hpp: `fcl::collide` with the default request,",
-           "libccd GJK, tolerance 1e-6) on the frame's own scene at t = k/N, k = 0..N; N = 1 is the two key poses.",
-           "A frame counts as colliding for FCL when some sample collides. A tight GJK tolerance is not exposed by",
-           "fcl_engine: not run. A second orbit at radius 5.4999999 grazes: the sphere is 1e-7 deep at the ends of",
-           "the 4.5 axis (below FCL's tolerance).", ""]
+           "FCL 0.7: `eccd fcl FRAME-SCENE --samples N` (compare/fcl_engine.hpp: `fcl::collide`, libccd GJK/MPR) on the",
+           "frame's own scene at t = k/N, k = 0..N; N = 1 is the two key poses. Each FCL row runs twice, side by side:",
+           f"with FCL's default gjk_tolerance (1e-6) and with a tight one (`--gjk-tolerance {a.gjk_tight}`).",
+           "A frame counts as colliding for FCL when some sample collides. A second orbit at radius 5.4999999 grazes:",
+           "the sphere is 1e-7 deep at the ends of the 4.5 axis (below FCL's default tolerance).", ""]
     t2all = {}
     for variant, radius in (("main", "5.49"), ("graze", "5.4999999")):
       c2, d2 = load(g, f"table2-{variant}-certified"), load(g, f"table2-{variant}-double")
@@ -182,7 +197,7 @@ def main():
                  f"| µs per frame | 2.12 | 15.2 … 54.3 | {sc['us_per_frame']:.1f} | {t2['double']['us_per_frame']:.1f} |",
                  f"| undecided | - | - | {sc['undecided']} | {t2['double']['undecided']} |", ""]
           fcl = {}
-          for n in (1, 10):
+          for n in ("1", "10", "1-tight", "10-tight"):
               p = os.path.join(g, f"table2-{variant}-fcl-{n}.jsonl")
               if not os.path.exists(p):
                   continue
@@ -194,16 +209,23 @@ def main():
                       tol = j.get("tolerances", "")
                       if j["answer"]["collides"]:
                           fr.add(k)
+                      gtol = j.get("gjk_tolerance")
               fn, fp = sorted(cert_frames - fr), sorted(fr - cert_frames)
-              fcl[f"sample:{n}"] = {"frames_in_collision": len(fr), "missed": len(fn), "false_collisions": len(fp),
-                                    "missed_frames": fn[:20], "false_frames": fp[:20], "tolerances": tol}
+              label = "sample:" + n.replace("-tight", "") + (f", gjk_tolerance {gtol:g}" if gtol is not None else
+                                                             (", tight" if "tight" in n else ""))
+              fcl[label] = {"frames_in_collision": len(fr), "missed": len(fn), "false_collisions": len(fp),
+                            "missed_frames": fn[:20], "false_frames": fp[:20], "tolerances": tol, "gjk_tolerance": gtol}
           t2["fcl"] = fcl
           if fcl:
-              md += ["| FCL | frames in collision | misclassified against certified | of which missed | of which false collisions |",
-                     "|---|---|---|---|---|"]
+              md += ["| engine | frames in collision | misclassified against certified | of which missed | of which false collisions |",
+                     "|---|---|---|---|---|",
+                     "| paper 000 Table 2: EECD (10 000 frames) | 1 157 | - | - | - |",
+                     "| paper 000 Table 2: enhanced GJK, polyhedra n = 488, 1 838, 3 932, 13 124 | 0, 435, 971, 1 111 "
+                     "| 1 157, 722, 186, 46 against EECD | all of them | 0 |",
+                     f"| certified (eccd), {sc['frames']} frames | {sc['events']} | (the reference) | - | - |"]
               for n, v in fcl.items():
                   md.append(f"| fcl/{n} | {v['frames_in_collision']} | {v['missed'] + v['false_collisions']} | {v['missed']} | {v['false_collisions']} |")
-              md += ["", f"FCL's settings: {next(iter(fcl.values()))['tolerances']}. The paper's enhanced GJK on polyhedra missed",
+              md += ["", f"FCL's settings (default rows): {next(iter(fcl.values()))['tolerances']}. The paper's enhanced GJK on polyhedra missed",
                      "1 157 − 1 111 = 46 frames at best (n = 13 124). FCL's misses here are frames whose collision lies",
                      "between FCL's samples or is shallower than its tolerance: the certified answer sees the whole frame.", ""]
           else:
