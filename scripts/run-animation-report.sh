@@ -10,9 +10,11 @@
 # Sizes (environment): T1_FRAMES (double, default 10000), T1_CERT_FRAMES (certified, default 1000),
 # T2_FRAMES (default 629: one orbit), BOX_FRAMES (double, 1000), BOX_CERT_FRAMES (certified, 200).
 # FULL=1: the papers' sizes in certified mode too (T1_CERT_FRAMES=T1_FRAMES, BOX_CERT_FRAMES=BOX_FRAMES,
-# unless set explicitly). Certified is far slower than double here (about 12-45 ms per frame for (a), 0.5 s for
-# (c) on this machine, unloaded, before the interval Bezier proof of issue 18), so FULL=1 took an estimated
-# 25-40 min then; the reduced sizes are the default. report.md states which sizes were run.
+# unless set explicitly). Certified is far slower than double here: the committed report (reduced sizes, 309 s)
+# measured 23-80 ms per frame for (a) with and without planes and 0.44 s per frame for (c) (thread time, before the
+# interval Bezier proof of issue 18), so FULL=1 would take about 40 min on 2 cores (Table 1 certified about 32 min,
+# the two runs of a rate in parallel; boxers about 4 min on 2 threads); the reduced sizes stay the default until a
+# faster certified mode makes FULL=1 fit. report.md states which sizes were run.
 # GJK_TIGHT (default 1e-12): FCL's tight gjk_tolerance for Table 2 (`eccd fcl --gjk-tolerance`), next to
 # FCL's default (1e-6).
 # Both cores: single-pair runs go two at a time (with/without planes; certified and double), the boxers run with
