@@ -59,6 +59,12 @@
 //        JSON building included), from a table of (label, SolveOptions),
 //        kSolveSceneRows below: double, MPFR, exact and the certified interval
 //        mode (`--arith certified`, issue 6 part 2; its rows go there).
+//   plane-check, animate-boxers  issue 17: the kept plane's check over one
+//        frame per pair-frame (baseline: the continuous test in double) and
+//        the boxers' animation per frame in double, double without planes and
+//        certified (baseline: double); with static-certified-2d/3d (the
+//        static test from two poses) they form the report's "Animations"
+//        section (bench/performance_report.py ANIMATION_GROUPS).
 // What "pipeline" means in the ccd rows: what api/solve.cpp runs after the
 // scene is read and prepared (prepare_pair<N>: exact, done once per scene, not
 // timed): 2D to_arithmetic<T, 3> + cd_disc with FloatingPolicy<T> (Bernstein
@@ -75,6 +81,7 @@
 #include "api/solve.hpp"
 #include "api/static_test.hpp"
 #include "api/separate.hpp"
+#include "api/animate.hpp"
 #include "io/solution_json.hpp"
 #include "bench/isolation.hpp"
 #include "exact/algebraic_roots.hpp"
@@ -134,7 +141,7 @@ namespace {
 // ---------------------------------------------------------------------------
 // Registry: groups, rows, and what each row answered.
 
-enum class Cost { fast, slow, very_slow };  // repetitions / minimum time policy
+enum class Cost { fast, slow, very_slow, heavy };  // repetitions / minimum time policy (heavy: seconds per iteration, 3 repetitions)
 
 struct Group {
   std::string id, title, description, anchor;
@@ -161,7 +168,7 @@ void row(const std::string& grp, const std::string& label, bool baseline, Cost c
   std::string key = grp + "/" + label;
   g_rows.push_back({key, grp, label, note, baseline});
   auto* b = benchmark::RegisterBenchmark(key.c_str(), [fn](benchmark::State& st) { fn(st); });
-  int reps = cost == Cost::fast ? 10 : (cost == Cost::slow ? 9 : 5);
+  int reps = cost == Cost::fast ? 10 : (cost == Cost::slow ? 9 : (cost == Cost::very_slow ? 5 : 3));
   double min_time = cost == Cost::fast ? 0.1 : 0.05;
   if (g_quick) { reps = 3; min_time = 0.01; }
   if (g_profile_seconds > 0) { reps = 1; min_time = g_profile_seconds; }
@@ -1275,6 +1282,59 @@ void register_planes() {
 }
 
 // ---------------------------------------------------------------------------
+// Reproduction (c) of issue 17 (paper 001 section 5 in spirit): the boxers,
+// two figures of 24 ellipsoids (make_repro.py boxers), 576 pairs per frame,
+// through eccd::animate (api/animate.hpp: bounding spheres, the kept plane,
+// the continuous test), one thread. The input is bench/data/boxers-10.anim.json
+// (`python3 cases/animations/make_repro.py boxers --frames 10`): keys 0..10,
+// so frames 0..9, the same as the first ten frames of the report's 1000-frame
+// animation (a key's pose depends on its index only; the arms' period is 20
+// keys, the legs' 40). One iteration animates all ten frames; the report
+// divides by "frames" in the result. Baseline: double. CPU time of the whole
+// process (animate's stages 2-3 run on a worker thread, even with threads 1).
+void register_animation() {
+  const char* rel = "bench/data/boxers-10.anim.json";
+  group("animate-boxers", "Animation of the boxers (001 section 5 in spirit), 576 pairs per frame, frames 0-9",
+        "eccd::animate(animation, arith, threads 1) on bench/data/boxers-10.anim.json (make_repro.py boxers --frames 10: "
+        "two figures of 24 ellipsoids, pairs between the groups, frames 0 to 9 of the report's animation): per frame "
+        "the bounding spheres of the swept volumes, the separating plane kept from the previous frame, then the "
+        "continuous test of the surviving pairs (first contact). One iteration is the ten frames; the per-frame cost is "
+        "the median divided by 10 (CPU time of the process: the pair-frames run on a worker thread). Baseline: double. "
+        "The row without planes shows what the kept planes save.",
+        "001 section 5: 3.4 ms per frame (1000 frames, 576 pairs, 3 GHz Pentium IV, double)");
+  static Lazy<Animation> anim([rel] { return read_animation(src(rel)); });
+  struct R {
+    const char* label;
+    const char* arith;
+    bool planes, baseline;
+    Cost cost;
+  };
+  for (const R& r : {R{"double, 10 frames (baseline)", "double", true, true, Cost::slow},
+                     R{"double without planes, 10 frames", "double", false, false, Cost::slow},
+                     R{"certified, 10 frames", "certified", true, false, Cost::heavy}}) {
+    const std::string label = r.label, key = "animate-boxers/" + label;
+    AnimateOptions o;
+    o.solve.arith = parse_arithmetic(r.arith);
+    o.threads = 1;
+    o.planes = r.planes;
+    row("animate-boxers", label, r.baseline, r.cost,
+        std::string("eccd::animate, arith ") + r.arith + (r.planes ? "" : ", planes off") + ", threads 1, " + rel,
+        [key, o](benchmark::State& st) {
+          timed(st, key, [&] { return animate(anim.get(), o); }, [](const AnimationResult& a) {
+            return json{{"frames", a.per_frame.size()},
+                        {"pairs_per_frame", a.pairs_per_frame},
+                        {"bounding_volumes", a.bounding_volumes},
+                        {"separating_plane", a.separating_plane},
+                        {"continuous_test", a.continuous_test},
+                        {"events", a.events.size()},
+                        {"undecided", a.undecided.size()}};
+          });
+        },
+        true);  // process CPU time: animate runs its pair-frames on a worker std::thread even with threads 1
+  }
+}
+
+// ---------------------------------------------------------------------------
 // The certified mode's own target (issue 6): its median cost against the
 // double pipeline over the degree-4 generated sets of the corpus. One group per
 // set; per scene a row `SCENE double` (what `eccd solve` runs by default: 2D
@@ -1614,6 +1674,7 @@ int main(int argc, char** argv) {
   register_static_certified();
   register_certified_cost();
   register_planes();  // 000 section 4: the plane check per pair-frame (issue 17)
+  register_animation();  // 001 section 5 in spirit: the boxers per frame, double and certified (issue 17)
 
   SummaryReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

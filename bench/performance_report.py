@@ -108,6 +108,65 @@ RATIO_TARGETS = [
 ]
 
 
+# Issue 17's benchmarks (animations), each a ratio to its group's baseline in
+# the same process: (a) the boxers per frame (group animate-boxers, one
+# iteration = "frames" frames in the row's result), (b) the plane check per
+# pair-frame (plane-check), (c) the static test from two poses
+# (static-certified-2d/3d). No limits: figures next to the papers'.
+ANIMATION_GROUPS = [
+    dict(group="animate-boxers", what="(a) per frame of the boxers (001 section 5 in spirit), 576 pairs per frame",
+         per="frames", anchor="001 section 5: 3.4 ms per frame in double (3 GHz Pentium IV, 1000 frames)"),
+    dict(group="plane-check", what="(b) the kept plane's check over one frame, per pair-frame (000 section 4)",
+         per=None, anchor="000 Table 1: planes save the continuous test in most separate frames (µs per frame with and without)"),
+    dict(group="static-certified-2d", what="(c) the static test from two poses, 2D, per pair", per=None,
+         anchor="001: under 1 µs for the whole static procedure (3 GHz Pentium IV); issue 18: certified at most 1.5x double"),
+    dict(group="static-certified-3d", what="(c) the static test from two poses, 3D, per pair", per=None,
+         anchor="001: under 1 µs for the whole static procedure (3 GHz Pentium IV); issue 18: certified at most 1.5x double"),
+]
+
+
+def write_animation_section(w, summ):
+    groups = {g["id"]: g for g in summ["groups"]}
+    w("## Animations (issue 17)")
+    w("")
+    w("Each figure is a row's median CPU time and its ratio to the baseline row of its group, measured in the same "
+      "process (the groups' full tables are under *Tables*). For the boxers one iteration animates all the frames of "
+      "`bench/data/boxers-10.anim.json` (frames 0 to 9 of the report's animation, `make_repro.py boxers --frames 10`) "
+      "with one thread (CPU time of the whole process: the pair-frames run on a worker thread); the per-frame time is the "
+      "median divided by the frame count. The reproduction itself (1000 frames) is `scripts/run-animation-report.sh`.")
+    w("")
+    w("| benchmark | row | median (CPU) | per frame | ratio to baseline | result | paper |")
+    w("| --- | --- | --- | --- | --- | --- | --- |")
+    for a in ANIMATION_GROUPS:
+        g = groups.get(a["group"])
+        if not g:
+            w(f"| {a['what']} | group `{a['group']}` not run | | | | | {a['anchor']} |")
+            continue
+        for i, r in enumerate(g["rows"]):
+            what, anchor = (a["what"], a["anchor"]) if i == 0 else ("", "")
+            label = md_escape(r["label"])
+            if r["baseline"] and "(baseline)" not in r["label"]:
+                label += " **(baseline)**"
+            if "median_cpu_ns" not in r:
+                w(f"| {what} | {label} | error: {md_escape(r.get('error', 'not measured'))} | | | | {anchor} |")
+                continue
+            res = r.get("result") if isinstance(r.get("result"), dict) else {}
+            per = "–"
+            if a["per"] and res.get(a["per"]):
+                per = fmt_time(r["median_cpu_ns"] / res[a["per"]])
+            if "pairs_per_frame" in res:  # an animation: the stages
+                text = (f"{res['frames']} frames × {res['pairs_per_frame']} pairs: bounding spheres {res['bounding_volumes']}, "
+                        f"kept plane {res['separating_plane']}, continuous test {res['continuous_test']}; "
+                        f"{res['events']} events, {res['undecided']} undecided")
+            elif res and all(isinstance(v, str) for v in res.values()):
+                text = ", ".join(f"{k} {v}" for k, v in res.items())
+            else:
+                text = answer_text(r.get("result"))
+            w(f"| {what} | {label} | {fmt_time(r['median_cpu_ns'])} | {per} | {fmt_ratio(r.get('ratio'))} | "
+              f"{md_escape(text)} | {anchor} |")
+    w("")
+
+
 def ratio_verdicts(summ):
     rows = {r["key"]: r for g in summ["groups"] for r in g["rows"] if "median_cpu_ns" in r}
     out = []
@@ -615,6 +674,7 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
 
     write_set_targets(w, info.get("set_targets", []))
     write_ratio_targets(w, info.get("ratio_targets", []))
+    write_animation_section(w, summ)
 
     # What dominates.
     missed = [v for v in verdicts if v["status"] == "missed" or v.get("borderline")]
