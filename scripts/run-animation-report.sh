@@ -114,6 +114,9 @@ run boxers-double "$G/boxers.anim.json" double --threads "$THREADS"
 run boxers-certified "$G/boxers-cert.anim.json" certified --threads "$THREADS"
 # double against certified on the same frames: double on the certified file's frames
 if [ "$BOX_CERT_FRAMES" != "$BOX_FRAMES" ]; then run boxers-double-certframes "$G/boxers-cert.anim.json" double --threads "$THREADS"; fi
+# the same motion sampled 4 times as finely (double): how the kept plane's share depends on the motion per frame
+python3 "$GEN" boxers --frames "$BOX_FRAMES" --subdivide 4 "$G/boxers-sub4.anim.json"
+run boxers-sub4-double "$G/boxers-sub4.anim.json" double --threads "$THREADS"
 end=$(date +%s)
 python3 scripts/animation_report.py "$G" "$OUT" --seconds $((end - start)) \
   --sizes "T1_FRAMES=$T1_FRAMES T1_CERT_FRAMES=$T1_CERT_FRAMES T2_FRAMES=$T2_FRAMES BOX_FRAMES=$BOX_FRAMES BOX_CERT_FRAMES=$BOX_CERT_FRAMES" \

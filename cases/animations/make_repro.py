@@ -19,7 +19,7 @@ construction, then exact: the animation IS those decimals).
       (the spec's linear interpolation). --scenes DIR also writes each frame
       as a scene (frame-K.json: the sphere translating linearly in t, the
       ellipsoid static) for `eccd fcl`.
-  boxers --frames N OUT
+  boxers --frames N [--subdivide S] OUT
       Paper 001 section 5 in spirit: two articulated figures of 24 ellipsoids
       each (groups "boxer-1", "boxer-2"), pairs "between-groups" (576). Each
       figure is a planar skeleton in its x-z plane (x towards the opponent):
@@ -29,8 +29,13 @@ construction, then exact: the animation IS those decimals).
       angle; the torso, neck and head sway in x by 0.08 sin(2 pi k/40). The
       second figure is the first, phase-shifted by 0.37 of a period, turned
       a half turn about z and set 1.0 along x. Keys 6 decimals (positions 4).
+      --subdivide S (default 1): key k is the pose of the motion above at
+      k/S, i.e. the same motion sampled S times as finely (S frames for each
+      frame of the default; the report uses S = 4 to show how the share of
+      the kept plane depends on the motion per frame).
 """
 import argparse
+import sys
 import json
 import math
 import os
@@ -165,10 +170,12 @@ def figure_pose(k, phase):
 
 
 def boxers(a):
+    if a.subdivide < 1:
+        sys.exit("make_repro.py boxers: --subdivide must be at least 1")
     times = [str(k) for k in range(a.frames + 1)]
     bodies = []
     for g, (phase, turn, shift) in enumerate([(0.0, False, 0.0), (0.37, True, 1.0)]):
-        per_key = [figure_pose(k, phase) for k in range(a.frames + 1)]
+        per_key = [figure_pose(k / a.subdivide, phase) for k in range(a.frames + 1)]
         for b in range(len(per_key[0])):
             name, axes = per_key[0][b][0], per_key[0][b][1]
             poses = []
@@ -200,6 +207,7 @@ def main():
     p.add_argument("out")
     p = sub.add_parser("boxers")
     p.add_argument("--frames", type=int, default=1000)
+    p.add_argument("--subdivide", type=int, default=1)
     p.add_argument("out")
     a = ap.parse_args()
     {"table1": table1, "table2": table2, "boxers": boxers}[a.cmd](a)
