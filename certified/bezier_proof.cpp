@@ -12,6 +12,7 @@
 #include "certified/bezier_proof.hpp"
 
 #include "certified/krawczyk.hpp"
+#include "floating/bezier_ccd.hpp"  // restrict_t
 #include "kernel/bivariate_bernstein.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/characteristic_polynomial.hpp"
@@ -55,24 +56,31 @@ class Engine {
 
   long box_tests = 0, strip_tests = 0, exclusion_boxes = 0, krawczyk_tests = 0;
   const BiBern<Interval>& F() const { return F_; }
-
-  // F < 0 on the faces u = 0 and u = 1 (their control points are the nets of det A(t), det B(t)).
-  bool faces_negative() const {
-    for (const auto& x : F_.b.front())
-      if (sign(x) != Sign::negative) return false;
-    for (const auto& x : F_.b.back())
-      if (sign(x) != Sign::negative) return false;
-    return true;
+  std::string stop_reason(const BezierProofOptions& o) const {
+    if (unresolved_ > kMaxUnresolved)
+      return "more than " + std::to_string(kMaxUnresolved) + " strips of width 2^-" + std::to_string(o.strip_depth) +
+             " unresolved (a touching stretch, a tangency or an ill-conditioned net)";
+    return "its work cap (" + std::to_string(o.max_boxes) + " box tests) was reached";
   }
 
   // The localisation: strips in t order, proved out / in, or not (at 2^-strip_depth).
-  // Returns false when the work cap was reached (the strips then stop early).
+  // Returns false when the work cap was reached or more than kMaxUnresolved strips stayed unresolved.
   bool localise(std::vector<Strip>& out) {
     return strip(F_, 0.0, 1.0, 0, out);
   }
 
   // The end in the run [lo, hi] (out on one side, in on the other): "" and the piece, or why not.
   std::string prove_end(double lo, double hi, BezierPiece& piece) {
+    use_full_net_ = false;
+    std::string why = prove_end_with(lo, hi, piece);
+    if (why.empty()) return why;
+    use_full_net_ = true;
+    why = prove_end_with(lo, hi, piece);
+    use_full_net_ = false;
+    return why;
+  }
+
+  std::string prove_end_with(double lo, double hi, BezierPiece& piece) {
     ensure_mpfi();
     const mpq_class qlo(lo), qhi(hi);
     const double tm = 0.5 * (lo + hi);
@@ -82,8 +90,8 @@ class Engine {
     sys.eqs = {{0, 0, 0}, {1, 0, 0}};
     sys.vars = {0, 2};
     sys.kind = "bezier-end";
-    std::optional<std::array<double, 3>> x = krawczyk_detail::newton(*nets_, sys, {u0, 0.0, tm});
-    if (!x) return "Newton's method on (F, F_u) did not converge from u = " + std::to_string(u0) + ", t = " + std::to_string(tm);
+    std::optional<std::array<double, 3>> x = krawczyk_detail::newton(nets(), sys, {u0, 0.0, tm});
+    if (!x) x = std::array<double, 3>{refine_argmax(u0, tm), 0.0, tm};  // no Newton point: the witness u at the run's middle
     const double ux = (*x)[0], tx = (*x)[2];
     if (!(ux > 0 && ux < 1) || !(tx > lo - (hi - lo) && tx < hi + (hi - lo)))
       return "Newton's method on (F, F_u) went outside the run (u = " + std::to_string(ux) + ", t = " + std::to_string(tx) + ")";
@@ -98,7 +106,7 @@ class Engine {
       if (sgn(X.lo[0]) <= 0 || X.hi[0] >= 1) continue;
       Box K;
       ++krawczyk_tests;
-      if (!krawczyk_detail::krawczyk(*nets_, sys, X, K)) continue;
+      if (!krawczyk_detail::krawczyk(nets(), sys, X, K)) continue;
       std::string ex = exclude(qlo, qhi, X.lo[0], X.hi[0]);
       if (!ex.empty()) { why += ": " + ex; continue; }
       // tighten: Y <- Y ∩ K(Y) keeps the unique zero
@@ -109,7 +117,7 @@ class Engine {
       Box Y = X;
       for (int it = 0; it < 12; ++it) {
         Box K2;
-        krawczyk_detail::krawczyk(*nets_, sys, Y, K2);
+        krawczyk_detail::krawczyk(nets(), sys, Y, K2);
         if (K2.lo.size() != Y.lo.size()) break;
         bool ok = true;
         for (std::size_t v = 0; v < 2; ++v) {
@@ -118,8 +126,10 @@ class Engine {
           ok = ok && Y.lo[v] <= Y.hi[v];
         }
         if (!ok) return "internal inconsistency: Krawczyk's chain became empty around a proved zero";
+        const mpq_class before = piece.boxes.back().t_hi - piece.boxes.back().t_lo;
         piece.boxes.push_back(BezierBox{Rational(Y.lo[0]), Rational(Y.hi[0]), Rational(Y.lo[1]), Rational(Y.hi[1])});
         if (Y.hi[1] - Y.lo[1] < mpq_class(1, mpz_class(1) << 100)) break;
+        if (2 * (Y.hi[1] - Y.lo[1]) > before) break;  // no longer converging: the net's width is reached
       }
       const mpq_class blo = std::max(qlo, Y.lo[1]), bhi = std::min(qhi, Y.hi[1]);
       if (blo > bhi) return "the proved zero of (F, F_u) lies outside the run (internal inconsistency)";
@@ -136,17 +146,35 @@ class Engine {
   BiBern<Interval> F_;
   BiBern<double> Fd_;
   std::optional<Nets> nets_;
+  long unresolved_ = 0;
+  static constexpr long kMaxUnresolved = 64;  // unresolved strips at the finest level, in all
 
+  // The nets for Krawczyk's test, in MPFI at `bits`: first the localisation's net of intervals of
+  // doubles held exactly in MPFI (an enclosure of the exact net, nothing to compute: cheap; brackets
+  // then ~1e-14 wide), and only where that fails the net built in MPFI from the prepared pair.
+  bool use_full_net_ = false;
+  std::optional<Nets> full_nets_;
   void ensure_mpfi() {
+    if (use_full_net_) {
+      if (!full_nets_) {
+        const I like(Rational(0), opt_.bits);
+        BiBern<I> f = ellipsoid_function(characteristic_bernstein<I, 4>(p_, false, like), like);
+        TriBern<I> t;
+        t.n = {f.degree_u(), 0, f.degree_t()};
+        for (const auto& row : f.b)
+          for (const auto& x : row) t.c.push_back(x);
+        full_nets_.emplace(t, opt_.bits);
+      }
+      return;
+    }
     if (nets_) return;
-    const I like(Rational(0), opt_.bits);
-    BiBern<I> f = ellipsoid_function(characteristic_bernstein<I, 4>(p_, false, like), like);
     TriBern<I> t;
-    t.n = {f.degree_u(), 0, f.degree_t()};
-    for (const auto& row : f.b)
-      for (const auto& x : row) t.c.push_back(x);
+    t.n = {F_.degree_u(), 0, F_.degree_t()};
+    for (const auto& row : F_.b)
+      for (const auto& x : row) t.c.emplace_back(mpq_class(x.lo), mpq_class(x.hi), opt_.bits);
     nets_.emplace(t, opt_.bits);
   }
+  Nets& nets() { return use_full_net_ ? *full_nets_ : *nets_; }
 
   void check_work() {
     if (deadline_passed()) throw BudgetExhausted("bezier proof: " + deadline_reason());
@@ -162,6 +190,18 @@ class Engine {
       if (v > best) { best = v; ub = u; }
     }
     return ub;
+  }
+  // The maximiser of the double net's F(., t) near u0 (golden-section search in [u0 - 1/128, u0 + 1/128]).
+  double refine_argmax(double u0, double t) const {
+    Bern<double> col;
+    for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
+    double a = std::max(0.0, u0 - 1.0 / 128), b = std::min(1.0, u0 + 1.0 / 128);
+    const double r = 0.6180339887498949;
+    for (int k = 0; k < 80; ++k) {
+      const double c = b - r * (b - a), d = a + r * (b - a);
+      if (col(c) > col(d)) b = d; else a = c;
+    }
+    return 0.5 * (a + b);
   }
   double peak(double t) const {
     Bern<double> col;
@@ -222,6 +262,8 @@ class Engine {
       s.proved = negative_all(f, 0, 1, 0, lo, hi, s.boxes);
     }
     if (s.proved || depth >= opt_.strip_depth) {
+      // a regular end leaves a few unresolved strips; many are a touching stretch or a tangency: not provable here
+      if (!s.proved && ++unresolved_ > kMaxUnresolved) return false;
       if (!s.proved) s.boxes.clear();
       out.push_back(std::move(s));
       return true;
@@ -230,18 +272,30 @@ class Engine {
     return strip(a, lo, tm, depth + 1, out) && strip(b, tm, hi, depth + 1, out);
   }
 
-  // Exclusion: on [0, 1] x [lo, hi] outside u in [xu0, xu1], F or F_u is of one sign on every box.
+  // Exclusion: on [0, 1] x [lo, hi] outside u in [xu0, xu1], F or F_u is of one sign on every box
+  // (the nets of F and F_u in intervals of doubles: signs of enclosures, so a proof as in MPFI).
   std::string exclude(const mpq_class& lo, const mpq_class& hi, const mpq_class& xu0, const mpq_class& xu1) {
-    const int bits = opt_.bits;
-    const I half(mpq_class(1, 2), bits);
+    const Interval half(0.5, 0.5);
+    const double dlo = nearest_double(lo), dhi = nearest_double(hi);
+    if (mpq_class(dlo) != lo || mpq_class(dhi) != hi) return "the run's ends are not doubles (internal)";
     struct Ex {
-      TriBern<I> f, fu;
-      mpq_class u0, u1;
+      BiBern<Interval> f, fu;
+      double u0, u1;
       int depth;
     };
+    BiBern<Interval> f = restrict_t(F_, Interval(dlo, dlo), Interval(dhi, dhi), Interval(1));
+    BiBern<Interval> fu;  // F_u: m (b[i+1] - b[i])
+    const int m = f.degree_u();
+    for (int i = 0; i < m; ++i) {
+      fu.b.emplace_back();
+      for (std::size_t j = 0; j < f.b[i].size(); ++j) fu.b.back().push_back(Interval(m) * (f.b[i + 1][j] - f.b[i][j]));
+    }
+    // the lemma needs F(0, t) = det A(t) < 0 and F(1, t) = det B(t) < 0 on the run (a maximum 0 lies inside (0, 1))
+    for (const auto* row : {&f.b.front(), &f.b.back()})
+      for (const auto& x : *row)
+        if (sign(x) != Sign::negative) return "F(0, t) = det A(t) or F(1, t) = det B(t) is not proved < 0 on the run";
     std::vector<Ex> stack;
-    stack.push_back(Ex{krawczyk_detail::restrict_axis(nets_->get({0, 0, 0}), 2, lo, hi, bits),
-                       krawczyk_detail::restrict_axis(nets_->get({1, 0, 0}), 2, lo, hi, bits), 0, 1, 0});
+    stack.push_back(Ex{std::move(f), std::move(fu), 0.0, 1.0, 0});
     long n = 0;
     while (!stack.empty()) {
       Ex b = std::move(stack.back());
@@ -249,19 +303,19 @@ class Engine {
       ++exclusion_boxes;
       if (++n > opt_.max_boxes) return "the exclusion of other zeros of (F, F_u) needed more than " + std::to_string(opt_.max_boxes) + " boxes";
       check_work();
-      if (b.u0 >= xu0 && b.u1 <= xu1) continue;
+      if (mpq_class(b.u0) >= xu0 && mpq_class(b.u1) <= xu1) continue;
       if (b.f.strict_sign() != 0 || b.fu.strict_sign() != 0) continue;
       if (b.depth >= 40)
-        return "another zero of (F, F_u) near u = " + decimal_string(b.u0, 8) + " could not be excluded";
+        return "another zero of (F, F_u) near u = " + std::to_string(b.u0) + " could not be excluded";
       // split in u (the t-range is the run's, already narrow), and in t every other level
-      const mpq_class um = (b.u0 + b.u1) / 2;
-      auto [fl, fh] = b.f.split_half(0, half);
-      auto [gl, gh] = b.fu.split_half(0, half);
+      const double um = 0.5 * (b.u0 + b.u1);
+      auto [fl, fh] = split_u(b.f, half);
+      auto [gl, gh] = split_u(b.fu, half);
       if (b.depth % 2 == 1) {
-        auto [fll, flh] = fl.split_half(2, half);
-        auto [fhl, fhh] = fh.split_half(2, half);
-        auto [gll, glh] = gl.split_half(2, half);
-        auto [ghl, ghh] = gh.split_half(2, half);
+        auto [fll, flh] = split_t(fl, half);
+        auto [fhl, fhh] = split_t(fh, half);
+        auto [gll, glh] = split_t(gl, half);
+        auto [ghl, ghh] = split_t(gh, half);
         stack.push_back(Ex{std::move(fhh), std::move(ghh), um, b.u1, b.depth + 1});
         stack.push_back(Ex{std::move(fhl), std::move(ghl), um, b.u1, b.depth + 1});
         stack.push_back(Ex{std::move(flh), std::move(glh), b.u0, um, b.depth + 1});
@@ -297,11 +351,9 @@ BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOption
     counters();
     return r;
   };
-  if (!e.faces_negative())
-    return refuse("F(0, t) = det A(t) or F(1, t) = det B(t) is not proved < 0 by its control points in intervals of doubles");
   std::vector<Strip> strips;
   if (!e.localise(strips))
-    return refuse("the localisation reached its work cap (" + std::to_string(options.max_boxes) + " box tests)");
+    return refuse("the localisation stopped: " + e.stop_reason(options));
   // merge neighbours of one kind (unproved strips into runs)
   std::vector<Strip> m;
   for (auto& s : strips) {
