@@ -389,13 +389,26 @@ BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOption
   bool stopped = false;
   for (std::size_t i = 0; i < m.size(); ++i) {
     const Strip& s = m[i];
-    if (s.proved) {
+    if (s.proved && s.kind == BezierPiece::out) {  // one piece: the boxes' t-ranges cover it
       BezierPiece pc;
       pc.kind = s.kind;
       pc.lo = rat(s.lo);
       pc.hi = rat(s.hi);
       pc.boxes = s.boxes;
       pieces.push_back(std::move(pc));
+      continue;
+    }
+    if (s.proved) {  // in: one piece per strip (the contract: every box spans the piece's t-range)
+      for (const BezierBox& b : s.boxes) {
+        if (pieces.empty() || pieces.back().kind != BezierPiece::in || pieces.back().lo != b.t_lo) {
+          BezierPiece pc;
+          pc.kind = BezierPiece::in;
+          pc.lo = b.t_lo;
+          pc.hi = b.t_hi;
+          pieces.push_back(std::move(pc));
+        }
+        pieces.back().boxes.push_back(b);
+      }
       continue;
     }
     const bool has_before = i > 0, has_after = i + 1 < m.size();

@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <variant>
 
@@ -79,6 +80,22 @@ void check_pieces(const BezierProofResult& r) {
         CHECK(b.u_lo >= 0);
         CHECK(b.u_hi <= 1);
         CHECK(b.u_lo < b.u_hi);
+      }
+      std::vector<BezierBox> bs = p.boxes;
+      if (p.kind == BezierPiece::in) {  // every box spans [lo, hi]; the u-ranges tile [0, 1]
+        std::sort(bs.begin(), bs.end(), [](const BezierBox& a, const BezierBox& b) { return a.u_lo < b.u_lo; });
+        CHECK(bs.front().u_lo == 0);
+        CHECK(bs.back().u_hi == 1);
+        for (std::size_t k = 0; k < bs.size(); ++k) {
+          CHECK(bs[k].t_lo == p.lo);
+          CHECK(bs[k].t_hi == p.hi);
+          if (k > 0) CHECK(bs[k].u_lo == bs[k - 1].u_hi);
+        }
+      } else {  // out: the t-ranges tile [lo, hi]
+        std::sort(bs.begin(), bs.end(), [](const BezierBox& a, const BezierBox& b) { return a.t_lo < b.t_lo; });
+        CHECK(bs.front().t_lo == p.lo);
+        CHECK(bs.back().t_hi == p.hi);
+        for (std::size_t k = 1; k < bs.size(); ++k) CHECK(bs[k].t_lo == bs[k - 1].t_hi);
       }
     }
   }
