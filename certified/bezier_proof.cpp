@@ -196,8 +196,8 @@ class Engine {
     if (deadline_passed()) throw BudgetExhausted("bezier proof: " + deadline_reason());
   }
 
-  // argmax over u of the double mid-point net at t (a witness only: 129 samples).
-  double argmax_u(double t) const {
+  // argmax over u of the double mid-point net at t and the value there (a witness only: 127 samples).
+  std::pair<double, double> witness(double t) const {
     Bern<double> col;
     for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
     double best = -INFINITY, ub = 0.5;
@@ -205,8 +205,9 @@ class Engine {
       const double u = k / 128.0, v = col(u);
       if (v > best) { best = v; ub = u; }
     }
-    return ub;
+    return {ub, best};
   }
+  double argmax_u(double t) const { return witness(t).first; }
   // The maximiser of the double net's F(., t) near u0 (golden-section search in [u0 - 1/128, u0 + 1/128]).
   double refine_argmax(double u0, double t) const {
     Bern<double> col;
@@ -219,19 +220,13 @@ class Engine {
     }
     return 0.5 * (a + b);
   }
-  double peak(double t) const {
-    Bern<double> col;
-    for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
-    return col(argmax_u(t));
-  }
-
   // One u-box containing u* (dyadic, guided bisection) with every control point > 0.
   bool positive_box(const BiBern<Interval>& f, double ustar, double lo, double hi, std::vector<BezierBox>& boxes) {
     BiBern<Interval> g = f;
     double u0 = 0, u1 = 1;
     for (int d = 0; d <= opt_.u_depth; ++d) {
-      ++box_tests;
-      const int s = g.strict_sign();
+      // a box touching u = 0 or u = 1 holds F(0, t) = det A(t) < 0 or F(1, t) = det B(t) < 0: not tried
+      const int s = u0 > 0 && u1 < 1 ? (++box_tests, g.strict_sign()) : 0;
       if (s == 1) {
         boxes.push_back({rat(u0), rat(u1), rat(lo), rat(hi)});
         return true;
@@ -270,9 +265,10 @@ class Engine {
     Strip s;
     s.lo = lo;
     s.hi = hi;
-    if (peak(tm) > 0) {
+    const auto [ustar, top] = witness(tm);
+    if (top > 0) {
       s.kind = BezierPiece::out;
-      s.proved = positive_box(f, argmax_u(tm), lo, hi, s.boxes);
+      s.proved = positive_box(f, ustar, lo, hi, s.boxes);
     } else {
       s.kind = BezierPiece::in;
       s.proved = negative_all(f, 0, 1, 0, lo, hi, s.boxes);
