@@ -2,6 +2,7 @@
 #include "io/independent_certificate.hpp"
 
 #include "certified/independent_proof.hpp"
+#include "io/certificate_json.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/trivariate_bernstein.hpp"
@@ -63,36 +64,12 @@ json projection_json(const IndependentProjectionRecord& rec) {
 }
 
 // ---------------------------------------------------------------- checker
-struct Reject {
-  std::string claim, reason;
-};
-[[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Reject{claim, reason}; }
+using namespace certificate_json;
 
-const json& at(const json& j, const std::string& key, const std::string& place) {
-  if (!j.is_object() || !j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
-  return j.at(key);
-}
+const json& at(const json& j, const std::string& key, const std::string& place) { return certificate_json::at(j, key, place, false); }
+mpq_class rat(const json& j, const std::string& place) { return read_short_rational(j, place, kIndependentMaxRationalBits); }
 
-mpq_class rat(const json& j, const std::string& place) {
-  if (!j.is_string() || j.get_ref<const std::string&>().size() > 2 * kIndependentMaxRationalBits)
-    reject("certificate format", place + ": expected a rational \"p/q\" of at most " + std::to_string(kIndependentMaxRationalBits) + " bits");
-  mpq_class x;
-  try {
-    x = parse_rational(j.get<std::string>());
-  } catch (const std::exception& e) {
-    reject("certificate format", place + ": " + e.what());
-  }
-  if (mpz_sizeinbase(x.get_num_mpz_t(), 2) > kIndependentMaxRationalBits || mpz_sizeinbase(x.get_den_mpz_t(), 2) > kIndependentMaxRationalBits)
-    reject("certificate format", place + ": a rational of more than " + std::to_string(kIndependentMaxRationalBits) + " bits");
-  return x;
-}
-
-std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& place) {
-  if (!j.is_array() || j.size() != n) reject("certificate format", place + ": expected " + std::to_string(n) + " rationals");
-  std::vector<mpq_class> r;
-  for (std::size_t i = 0; i < n; ++i) r.push_back(rat(j[i], place));
-  return r;
-}
+std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& place) { return read_short_rationals(j, n, place, kIndependentMaxRationalBits); }
 
 bool same(const Instant& a, const Instant& b) {
   return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi && a.approx == b.approx;
@@ -318,18 +295,8 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
 }
 
 CertificateCheck check_independent_certificate(const Scene& s, const json& scene_doc, const json& cert) {
-  CertificateCheck out;
-  try {
-    check(s, scene_doc, cert, out.checked);
-    out.valid = true;
-  } catch (const Reject& r) {
-    out.failed_claim = r.claim;
-    out.reason = r.reason;
-  } catch (const std::exception& e) {
-    out.failed_claim = "certificate format";
-    out.reason = std::string("malformed certificate after the claims checked so far: ") + e.what();
-  }
-  return out;
+  std::vector<std::string> checked;
+  return run_checker([&] { check(s, scene_doc, cert, checked); }, checked);
 }
 
 }  // namespace eccd
