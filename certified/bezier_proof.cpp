@@ -1,12 +1,432 @@
 // Proved 3D answers by the Bézier zero-set analysis in intervals (certified/bezier_proof.hpp).
-// Placeholder until the engine lands: proves nothing, so every caller goes on as before.
+//
+// Arithmetic. F's net for the localisation is built from the prepared pair in
+// intervals of doubles (characteristic_bernstein<Interval, 4>: every entry of
+// N(t) enclosed from its exact rational, every product widened outwards), so
+// each control point encloses the exact one; for the ends the same net is built
+// in MPFI at `bits` bits and read as a tensor net of degree 0 in s
+// (kernel/trivariate_bernstein.hpp), on which certified/krawczyk.hpp runs.
+// Strip ends are dyadic (2^-strip_depth), exact in double; de Casteljau at 1/2
+// is exact in its parameter. Double (the nets' mid-points) only proposes
+// witnesses u and Newton points; nothing is decided by it.
 #include "certified/bezier_proof.hpp"
+
+#include "certified/krawczyk.hpp"
+#include "floating/bezier_ccd.hpp"  // restrict_t
+#include "kernel/bivariate_bernstein.hpp"
+#include "kernel/budget.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/collision_timeline.hpp"
+#include "kernel/ellipsoid_function.hpp"
+#include "number/interval.hpp"
+#include "number/mpfi_interval.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <tuple>
 
 namespace eccd {
 
-BezierProofResult prove_bezier(const PreparedPair<4>&, const BezierProofOptions&) {
+namespace {
+
+using krawczyk_detail::Box;
+using krawczyk_detail::Nets;
+using krawczyk_detail::System;
+using I = MpfiInterval;
+
+Rational rat(double d) { return Rational(mpq_class(d)); }  // dyadic strip ends and box corners: exact
+
+// What the localisation proved about one strip [lo, hi] of t.
+struct Strip {
+  BezierPiece::Kind kind = BezierPiece::out;
+  bool proved = false;
+  double lo = 0, hi = 0;
+  std::vector<BezierBox> boxes;
+};
+
+class Engine {
+ public:
+  Engine(const PreparedPair<4>& p, const BezierProofOptions& o) : p_(p), opt_(o) {
+    F_ = ellipsoid_function(characteristic_bernstein<Interval, 4>(p, false, Interval(0)), Interval(0));
+    Fd_.b = std::vector<std::vector<double>>(F_.b.size());
+    for (std::size_t i = 0; i < F_.b.size(); ++i)
+      for (const auto& x : F_.b[i]) Fd_.b[i].push_back(x.mid());
+  }
+
+  long box_tests = 0, strip_tests = 0, exclusion_boxes = 0, krawczyk_tests = 0;
+  const BiBern<Interval>& F() const { return F_; }
+  std::string stop_reason(const BezierProofOptions& o) const {
+    if (unresolved_ > kMaxUnresolved)
+      return "more than " + std::to_string(kMaxUnresolved) + " strips of width 2^-" + std::to_string(o.strip_depth) +
+             " unresolved (a touching stretch, a tangency or an ill-conditioned net)";
+    return "its work cap (" + std::to_string(o.max_boxes) + " box tests) was reached";
+  }
+
+  // The localisation: strips in t order, proved out / in, or not (at 2^-strip_depth).
+  // Returns false when the work cap was reached or more than kMaxUnresolved strips stayed unresolved.
+  bool localise(std::vector<Strip>& out) {
+    return strip(F_, 0.0, 1.0, 0, out);
+  }
+
+  // The end in the run [lo, hi] (out on one side, in on the other): "" and the piece, or why not.
+  std::string prove_end(double lo, double hi, BezierPiece& piece) {
+    use_full_net_ = false;
+    std::string why = prove_end_with(lo, hi, piece);
+    if (why.empty()) return why;
+    use_full_net_ = true;
+    why = prove_end_with(lo, hi, piece);
+    use_full_net_ = false;
+    return why;
+  }
+
+  std::string prove_end_with(double lo, double hi, BezierPiece& piece) {
+    ensure_mpfi();
+    const mpq_class qlo(lo), qhi(hi);
+    const double tm = 0.5 * (lo + hi);
+    // seed: the witness u of max F(., tm) in double
+    const double u0 = argmax_u(tm);
+    System sys;
+    sys.eqs = {{0, 0, 0}, {1, 0, 0}};
+    sys.vars = {0, 2};
+    sys.kind = "bezier-end";
+    std::optional<std::array<double, 3>> x = krawczyk_detail::newton(nets(), sys, {u0, 0.0, tm});
+    if (!x) x = std::array<double, 3>{refine_argmax(u0, tm), 0.0, tm};  // no Newton point: the witness u at the run's middle
+    const double ux = (*x)[0], tx = (*x)[2];
+    if (!(ux > 0 && ux < 1) || !(tx > lo - (hi - lo) && tx < hi + (hi - lo)))
+      return "Newton's method on (F, F_u) went outside the run (u = " + std::to_string(ux) + ", t = " + std::to_string(tx) + ")";
+    const mpq_class uq(ux), tq(tx), w = qhi - qlo;
+    std::string why = "Krawczyk's test failed around u = " + std::to_string(ux) + ", t = " + std::to_string(tx);
+    for (const int f : {1024, 256, 64, 16, 4, 1}) {
+      const mpq_class rho = w * f;
+      if (rho > mpq_class(1, 16)) continue;
+      Box X;
+      X.lo = {mpq_class(uq - rho), std::min(qlo, mpq_class(tq - rho))};
+      X.hi = {mpq_class(uq + rho), std::max(qhi, mpq_class(tq + rho))};
+      if (sgn(X.lo[0]) <= 0 || X.hi[0] >= 1) continue;
+      Box K;
+      ++krawczyk_tests;
+      if (!krawczyk_detail::krawczyk(nets(), sys, X, K)) continue;
+      std::string ex = exclude(qlo, qhi, X.lo[0], X.hi[0]);
+      if (!ex.empty()) { why += ": " + ex; continue; }
+      // tighten: Y <- Y ∩ K(Y) keeps the unique zero
+      piece.kind = BezierPiece::end;
+      piece.lo = Rational(qlo);
+      piece.hi = Rational(qhi);
+      piece.boxes = {BezierBox{Rational(X.lo[0]), Rational(X.hi[0]), Rational(X.lo[1]), Rational(X.hi[1])}};
+      Box Y = X;
+      for (int it = 0; it < 12; ++it) {
+        Box K2;
+        krawczyk_detail::krawczyk(nets(), sys, Y, K2);
+        if (K2.lo.size() != Y.lo.size()) break;
+        bool ok = true;
+        for (std::size_t v = 0; v < 2; ++v) {
+          if (K2.lo[v] > Y.lo[v]) Y.lo[v] = K2.lo[v];
+          if (K2.hi[v] < Y.hi[v]) Y.hi[v] = K2.hi[v];
+          ok = ok && Y.lo[v] <= Y.hi[v];
+        }
+        if (!ok) return "internal inconsistency: Krawczyk's chain became empty around a proved zero";
+        const mpq_class before = piece.boxes.back().t_hi - piece.boxes.back().t_lo;
+        piece.boxes.push_back(BezierBox{Rational(Y.lo[0]), Rational(Y.hi[0]), Rational(Y.lo[1]), Rational(Y.hi[1])});
+        if (Y.hi[1] - Y.lo[1] < mpq_class(1, mpz_class(1) << 100)) break;
+        if (2 * (Y.hi[1] - Y.lo[1]) > before) break;  // no longer converging: the net's width is reached
+      }
+      const mpq_class blo = std::max(qlo, Y.lo[1]), bhi = std::min(qhi, Y.hi[1]);
+      if (blo > bhi) return "the proved zero of (F, F_u) lies outside the run (internal inconsistency)";
+      piece.bracket_lo = Rational(blo);
+      piece.bracket_hi = Rational(bhi);
+      return "";
+    }
+    return why;
+  }
+
+ private:
+  const PreparedPair<4>& p_;
+  const BezierProofOptions& opt_;
+  BiBern<Interval> F_;
+  BiBern<double> Fd_;
+  std::optional<Nets> nets_;
+  long unresolved_ = 0;
+  static constexpr long kMaxUnresolved = 64;  // unresolved strips at the finest level, in all
+
+  // The nets for Krawczyk's test, in MPFI at `bits`: first the localisation's net of intervals of
+  // doubles held exactly in MPFI (an enclosure of the exact net, nothing to compute: cheap; brackets
+  // then ~1e-14 wide), and only where that fails the net built in MPFI from the prepared pair.
+  bool use_full_net_ = false;
+  std::optional<Nets> full_nets_;
+  void ensure_mpfi() {
+    if (use_full_net_) {
+      if (!full_nets_) {
+        const I like(Rational(0), opt_.bits);
+        BiBern<I> f = ellipsoid_function(characteristic_bernstein<I, 4>(p_, false, like), like);
+        TriBern<I> t;
+        t.n = {f.degree_u(), 0, f.degree_t()};
+        for (const auto& row : f.b)
+          for (const auto& x : row) t.c.push_back(x);
+        full_nets_.emplace(t, opt_.bits);
+      }
+      return;
+    }
+    if (nets_) return;
+    TriBern<I> t;
+    t.n = {F_.degree_u(), 0, F_.degree_t()};
+    for (const auto& row : F_.b)
+      for (const auto& x : row) t.c.emplace_back(mpq_class(x.lo), mpq_class(x.hi), opt_.bits);
+    nets_.emplace(t, opt_.bits);
+  }
+  Nets& nets() { return use_full_net_ ? *full_nets_ : *nets_; }
+
+  void check_work() {
+    if (deadline_passed()) throw BudgetExhausted("bezier proof: " + deadline_reason());
+  }
+
+  // argmax over u of the double mid-point net at t (a witness only: 129 samples).
+  double argmax_u(double t) const {
+    Bern<double> col;
+    for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
+    double best = -INFINITY, ub = 0.5;
+    for (int k = 1; k < 128; ++k) {
+      const double u = k / 128.0, v = col(u);
+      if (v > best) { best = v; ub = u; }
+    }
+    return ub;
+  }
+  // The maximiser of the double net's F(., t) near u0 (golden-section search in [u0 - 1/128, u0 + 1/128]).
+  double refine_argmax(double u0, double t) const {
+    Bern<double> col;
+    for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
+    double a = std::max(0.0, u0 - 1.0 / 128), b = std::min(1.0, u0 + 1.0 / 128);
+    const double r = 0.6180339887498949;
+    for (int k = 0; k < 80; ++k) {
+      const double c = b - r * (b - a), d = a + r * (b - a);
+      if (col(c) > col(d)) b = d; else a = c;
+    }
+    return 0.5 * (a + b);
+  }
+  double peak(double t) const {
+    Bern<double> col;
+    for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
+    return col(argmax_u(t));
+  }
+
+  // One u-box containing u* (dyadic, guided bisection) with every control point > 0.
+  bool positive_box(const BiBern<Interval>& f, double ustar, double lo, double hi, std::vector<BezierBox>& boxes) {
+    BiBern<Interval> g = f;
+    double u0 = 0, u1 = 1;
+    for (int d = 0; d <= opt_.u_depth; ++d) {
+      ++box_tests;
+      const int s = g.strict_sign();
+      if (s == 1) {
+        boxes.push_back({rat(u0), rat(u1), rat(lo), rat(hi)});
+        return true;
+      }
+      const double um = 0.5 * (u0 + u1);
+      auto [a, b] = split_u(g, Interval(0.5, 0.5));
+      if (ustar < um) { g = std::move(a); u1 = um; }
+      else { g = std::move(b); u0 = um; }
+    }
+    return false;
+  }
+
+  // Every u-piece (adaptive, at most u_depth deep) with every control point < 0.
+  bool negative_all(const BiBern<Interval>& f, double u0, double u1, int depth, double lo, double hi,
+                    std::vector<BezierBox>& boxes) {
+    ++box_tests;
+    const int s = f.strict_sign();
+    if (s == -1) {
+      boxes.push_back({rat(u0), rat(u1), rat(lo), rat(hi)});
+      return true;
+    }
+    if (s == 1 || depth >= opt_.u_depth || box_tests > opt_.max_boxes) return false;
+    // a corner control point is F's value there (enclosed): > 0 means F > 0 somewhere
+    for (const Interval* c : {&f.b.front().front(), &f.b.front().back(), &f.b.back().front(), &f.b.back().back()})
+      if (sign(*c) == Sign::positive) return false;
+    auto [a, b] = split_u(f, Interval(0.5, 0.5));
+    const double um = 0.5 * (u0 + u1);
+    return negative_all(a, u0, um, depth + 1, lo, hi, boxes) && negative_all(b, um, u1, depth + 1, lo, hi, boxes);
+  }
+
+  bool strip(const BiBern<Interval>& f, double lo, double hi, int depth, std::vector<Strip>& out) {
+    check_work();
+    if (box_tests > opt_.max_boxes) return false;
+    ++strip_tests;
+    const double tm = 0.5 * (lo + hi);
+    Strip s;
+    s.lo = lo;
+    s.hi = hi;
+    if (peak(tm) > 0) {
+      s.kind = BezierPiece::out;
+      s.proved = positive_box(f, argmax_u(tm), lo, hi, s.boxes);
+    } else {
+      s.kind = BezierPiece::in;
+      s.proved = negative_all(f, 0, 1, 0, lo, hi, s.boxes);
+    }
+    if (s.proved || depth >= opt_.strip_depth) {
+      // a regular end leaves a few unresolved strips; many are a touching stretch or a tangency: not provable here
+      if (!s.proved && ++unresolved_ > kMaxUnresolved) return false;
+      if (!s.proved) s.boxes.clear();
+      out.push_back(std::move(s));
+      return true;
+    }
+    auto [a, b] = split_t(f, Interval(0.5, 0.5));
+    return strip(a, lo, tm, depth + 1, out) && strip(b, tm, hi, depth + 1, out);
+  }
+
+  // Exclusion: on [0, 1] x [lo, hi] outside u in [xu0, xu1], F or F_u is of one sign on every box
+  // (the nets of F and F_u in intervals of doubles: signs of enclosures, so a proof as in MPFI).
+  std::string exclude(const mpq_class& lo, const mpq_class& hi, const mpq_class& xu0, const mpq_class& xu1) {
+    const Interval half(0.5, 0.5);
+    const double dlo = nearest_double(lo), dhi = nearest_double(hi);
+    if (mpq_class(dlo) != lo || mpq_class(dhi) != hi) return "the run's ends are not doubles (internal)";
+    struct Ex {
+      BiBern<Interval> f, fu;
+      double u0, u1;
+      int depth;
+    };
+    BiBern<Interval> f = restrict_t(F_, Interval(dlo, dlo), Interval(dhi, dhi), Interval(1));
+    BiBern<Interval> fu;  // F_u: m (b[i+1] - b[i])
+    const int m = f.degree_u();
+    for (int i = 0; i < m; ++i) {
+      fu.b.emplace_back();
+      for (std::size_t j = 0; j < f.b[i].size(); ++j) fu.b.back().push_back(Interval(m) * (f.b[i + 1][j] - f.b[i][j]));
+    }
+    // the lemma needs F(0, t) = det A(t) < 0 and F(1, t) = det B(t) < 0 on the run (a maximum 0 lies inside (0, 1))
+    for (const auto* row : {&f.b.front(), &f.b.back()})
+      for (const auto& x : *row)
+        if (sign(x) != Sign::negative) return "F(0, t) = det A(t) or F(1, t) = det B(t) is not proved < 0 on the run";
+    std::vector<Ex> stack;
+    stack.push_back(Ex{std::move(f), std::move(fu), 0.0, 1.0, 0});
+    long n = 0;
+    while (!stack.empty()) {
+      Ex b = std::move(stack.back());
+      stack.pop_back();
+      ++exclusion_boxes;
+      if (++n > opt_.max_boxes) return "the exclusion of other zeros of (F, F_u) needed more than " + std::to_string(opt_.max_boxes) + " boxes";
+      check_work();
+      if (mpq_class(b.u0) >= xu0 && mpq_class(b.u1) <= xu1) continue;
+      if (b.f.strict_sign() != 0 || b.fu.strict_sign() != 0) continue;
+      if (b.depth >= 40)
+        return "another zero of (F, F_u) near u = " + std::to_string(b.u0) + " could not be excluded";
+      // split in u (the t-range is the run's, already narrow), and in t every other level
+      const double um = 0.5 * (b.u0 + b.u1);
+      auto [fl, fh] = split_u(b.f, half);
+      auto [gl, gh] = split_u(b.fu, half);
+      if (b.depth % 2 == 1) {
+        auto [fll, flh] = split_t(fl, half);
+        auto [fhl, fhh] = split_t(fh, half);
+        auto [gll, glh] = split_t(gl, half);
+        auto [ghl, ghh] = split_t(gh, half);
+        stack.push_back(Ex{std::move(fhh), std::move(ghh), um, b.u1, b.depth + 1});
+        stack.push_back(Ex{std::move(fhl), std::move(ghl), um, b.u1, b.depth + 1});
+        stack.push_back(Ex{std::move(flh), std::move(glh), b.u0, um, b.depth + 1});
+        stack.push_back(Ex{std::move(fll), std::move(gll), b.u0, um, b.depth + 1});
+      } else {
+        stack.push_back(Ex{std::move(fh), std::move(gh), um, b.u1, b.depth + 1});
+        stack.push_back(Ex{std::move(fl), std::move(gl), b.u0, um, b.depth + 1});
+      }
+    }
+    return "";
+  }
+};
+
+Instant exact_instant(const mpq_class& x) { return bracketed_instant(x, x, x); }
+
+std::string where(double lo, double hi) { return "t in [" + decimal_string(mpq_class(lo), 12) + ", " + decimal_string(mpq_class(hi), 12) + "]"; }
+
+}  // namespace
+
+BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOptions& options) {
   BezierProofResult r;
-  r.reason = "the interval Bézier proof is not built yet";
+  Engine e(p, options);
+  auto counters = [&] {
+    r.work = {{"bezier_strip_tests", e.strip_tests}, {"bezier_box_tests", e.box_tests},
+              {"bezier_exclusion_boxes", e.exclusion_boxes}, {"bezier_krawczyk_tests", e.krawczyk_tests},
+              {"bezier_degree_t", long(e.F().degree_t())}};
+  };
+  auto refuse = [&](const std::string& why) {
+    r.decided = false;
+    r.reason = why;
+    r.answer = Answer{};
+    r.pieces.clear();
+    counters();
+    return r;
+  };
+  std::vector<Strip> strips;
+  if (!e.localise(strips))
+    return refuse("the localisation stopped: " + e.stop_reason(options));
+  // merge neighbours of one kind (unproved strips into runs)
+  std::vector<Strip> m;
+  for (auto& s : strips) {
+    if (!m.empty() && m.back().proved == s.proved && (!s.proved || m.back().kind == s.kind)) {
+      m.back().hi = s.hi;
+      for (auto& b : s.boxes) m.back().boxes.push_back(std::move(b));
+    } else {
+      m.push_back(std::move(s));
+    }
+  }
+  // pieces, ends proved; the timeline for the answer
+  std::vector<BezierPiece> pieces;
+  std::vector<TimelineNode> seq;
+  long n_ends = 0;
+  auto status_of = [](BezierPiece::Kind k) { return k == BezierPiece::in ? Status::overlapping : Status::separate; };
+  bool stopped = false;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Strip& s = m[i];
+    if (s.proved) {
+      BezierPiece pc;
+      pc.kind = s.kind;
+      pc.lo = rat(s.lo);
+      pc.hi = rat(s.hi);
+      pc.boxes = s.boxes;
+      pieces.push_back(std::move(pc));
+      continue;
+    }
+    const bool has_before = i > 0, has_after = i + 1 < m.size();
+    if (!has_before || !has_after)
+      return refuse(where(s.lo, s.hi) + ": nothing proved at " + (has_before ? "t = 1" : "t = 0") +
+                    " (a touch, or a contact within 2^-" + std::to_string(options.strip_depth) + " of it)");
+    if (m[i - 1].kind == m[i + 1].kind)
+      return refuse(where(s.lo, s.hi) + std::string(": ") +
+                    (m[i - 1].kind == BezierPiece::out ? "separate on both sides: a touch, a near miss or a collision narrower than the strips"
+                                                       : "overlapping on both sides: a touching gap or none") +
+                    " (a tangency cannot be proved by intervals)");
+    BezierPiece pc;
+    const std::string why = e.prove_end(s.lo, s.hi, pc);
+    if (!why.empty()) return refuse(where(s.lo, s.hi) + ": an end of a collision interval lies here but is not proved: " + why);
+    pieces.push_back(std::move(pc));
+  }
+  // the timeline: instants at 0, the ends and 1; cells between them
+  const Status s0 = status_of(pieces.front().kind);
+  seq.push_back({exact_instant(0), s0, false});
+  Status cur = s0;
+  mpq_class cell_lo = 0;
+  for (const auto& pc : pieces) {
+    if (pc.kind != BezierPiece::end) continue;
+    const mpq_class blo = pc.bracket_lo, bhi = pc.bracket_hi;
+    const Instant end = bracketed_instant((blo + bhi) / 2, blo, bhi);
+    seq.push_back({exact_instant((cell_lo + blo) / 2), cur, true});
+    const Status next = cur == Status::separate ? Status::overlapping : Status::separate;
+    if (options.first_contact && next == Status::separate) {
+      seq.push_back({end, Status::touching, false});
+      ++n_ends;
+      stopped = true;
+      break;
+    }
+    seq.push_back({end, Status::touching, false});
+    ++n_ends;
+    cur = next;
+    cell_lo = bhi;
+  }
+  if (!stopped) {
+    seq.push_back({exact_instant((cell_lo + 1) / 2), cur, true});
+    seq.push_back({exact_instant(1), cur, false});
+  }
+  assemble_answer(seq, r.answer, [](std::size_t) {});
+  if (options.first_contact && r.answer.intervals.size() > 1) r.answer.intervals.resize(1);
+  r.decided = true;
+  if (options.record) r.pieces = std::move(pieces);
+  counters();
+  r.work.emplace_back("bezier_proved_ends", n_ends);
   return r;
 }
 

@@ -1,6 +1,7 @@
 // The certified ladder (certified/ladder.hpp).
 #include "certified/ladder.hpp"
 
+#include "certified/bezier_proof.hpp"
 #include "certified/certified_policy.hpp"
 #include "exact/cd_disc_exact.hpp"
 #include "kernel/budget.hpp"
@@ -61,6 +62,49 @@ std::optional<Solution> try_certified_rung(const PreparedPair<N>& p, Variant var
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// The Bézier rung (3D, certified/bezier_proof.hpp) within `budget_s` seconds:
+// a Solution if the proof decided [0, 1], else nothing with `reason` set.
+std::optional<Solution> try_bezier_rung(const PreparedPair<4>& p, bool first_contact, double budget_s, std::string& reason) {
+  try {
+    ScopedDeadline rung_deadline(budget_s);
+    if (deadline_passed()) throw BudgetExhausted("bezier rung: " + deadline_reason());
+    BezierProofOptions o;
+    o.first_contact = first_contact;
+    o.record = true;  // the pieces give the cells
+    const auto start = Clock::now();
+    BezierProofResult r = prove_bezier(p, o);
+    if (!r.decided) {
+      reason = r.reason;
+      return std::nullopt;
+    }
+    Solution s;
+    s.dim = 3;
+    s.answer = r.answer;
+    s.variant = first_contact ? Variant::first_contact : Variant::answer;
+    const bool in_at_0 = !r.answer.intervals.empty() && r.answer.intervals.front().first.lo &&
+                         sgn(*r.answer.intervals.front().first.hi) == 0;
+    s.status_at_0 = in_at_0 ? Status::overlapping : Status::separate;
+    for (const Instant& c : r.answer.contacts) s.critical.push_back({c, Status::touching, 1});
+    for (const BezierPiece& pc : r.pieces)
+      if (pc.kind != BezierPiece::end)
+        s.cells.push_back({bracketed_instant((pc.lo + pc.hi) / 2, (pc.lo + pc.hi) / 2, (pc.lo + pc.hi) / 2),
+                           pc.kind == BezierPiece::in ? Status::overlapping : Status::separate});
+    s.work = r.work;
+    s.projection = "bezier";
+    for (const auto& [k, v] : r.work)
+      if (k == "bezier_degree_t") s.projection_degree = int(v);
+    s.basis = "bernstein";
+    s.method = "bezier";
+    s.certified = true;
+    s.time_ms = seconds_since(start) * 1e3;
+    return s;
+  } catch (const BudgetExhausted& e) {
+    if (deadline_passed()) throw;  // the caller's deadline: the whole run is over
+    reason = std::string("rung budget exhausted (") + e.what() + ")";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 template <int N>
@@ -84,6 +128,12 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
   };
   std::string reason;
   bool multiple_root = false, out_of_budget = false, not_converging = false;
+  // Rung 0 (3D): the Bézier proof in intervals (certified/bezier_proof.hpp), within its fixed budget B_Z.
+  if constexpr (N == 4) {
+    const auto tb = Clock::now();
+    if (auto s = try_bezier_rung(p, first_contact, budget.bezier_s, reason)) return finish(*s, "bezier");
+    escalations.push_back({"bezier", reason, seconds_since(tb) * 1e3, budget.bezier_s * 1e3});
+  }
   // Rung 1: intervals of doubles, within the fixed budget B_I.
   auto t = Clock::now();
   if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, budget.interval_s, reason,

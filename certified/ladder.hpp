@@ -1,5 +1,7 @@
 #pragma once
-// The certified ladder (`--arith certified`): the 2D or 3D projection
+// The certified ladder (`--arith certified`): in 3D first the Bézier proof
+// (certified/bezier_proof.hpp: 001 section 4 in intervals, no projection
+// polynomial; decided_in "bezier"), then the 2D or 3D projection
 // pipeline (kernel/cd_disc.hpp, kernel/ccd_projection.hpp) in interval
 // arithmetic, up a ladder of rungs — intervals of doubles, then MPFI
 // intervals at each precision of `mpfi_rungs` (increasing) — and, where every
@@ -14,6 +16,9 @@
 // of one rung between two looks at its deadline (one polynomial product or
 // one isolation piece in that rung's arithmetic; kernel/budget.hpp). By
 // construction (each rung runs under a ScopedDeadline nested in the caller's):
+//   - in 3D the Bézier rung has the fixed budget B_Z (LadderBudget::bezier_s),
+//     so its time Z <= B_Z + δ (δ there: one strip or box test, one Krawczyk
+//     step); in 2D Z = 0;
 //   - the interval rung has the fixed budget B_I (LadderBudget::interval_s), so
 //     I <= B_I + δ;
 //   - all MPFI rungs together have the budget f·I (LadderBudget::mpfi_factor,
@@ -23,9 +28,10 @@
 //     precision raise: not converging) sends the ladder straight to exact;
 //   - the exact rung is run_exact itself, once.
 // Hence, whichever rung decides,
-//     time(certified) <= X + (1 + f)·I + c  <=  X + 2·min(I, B_I + δ) + c  (f = 1),
+//     time(certified) <= X + Z + (1 + f)·I + c  <=  X + (B_Z + δ) + 2·min(I, B_I + δ) + c  (f = 1),
 // with c the ladder's own overhead plus δ per MPFI rung tried. In words: at
-// most exact plus twice the interval rung, which is itself capped. A rung that
+// most exact plus the Bézier rung (3D, capped) plus twice the interval rung,
+// which is itself capped. A rung that
 // decides is never cut short by the guarantee (its answer is certified), and
 // the caller's deadline still ends the whole run (BudgetExhausted).
 // Requirements: a prepared pair (kernel/prepared_scene.hpp), N = 3 (2D) or 4 (3D).
@@ -41,6 +47,7 @@ namespace eccd {
 
 // The budgets of the rungs (see "Cost guarantee" above).
 struct LadderBudget {
+  double bezier_s = 0.25;    // B_Z: the Bézier rung's budget in 3D (seconds; <= 0: none)
   double interval_s = 1.0;   // B_I: the interval rung's budget (seconds; <= 0: none)
   double mpfi_factor = 1.0;  // f: all MPFI rungs together at most f x the interval rung's time
 };
