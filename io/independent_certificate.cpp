@@ -3,6 +3,7 @@
 
 #include "certified/independent_proof.hpp"
 #include "io/certificate_json.hpp"
+#include "io/krawczyk_claims.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/trivariate_bernstein.hpp"
@@ -119,27 +120,13 @@ std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, c
           if (!(b.lo[v] < b.hi[v])) reject("certificate format", name + ": chain box " + std::to_string(i) + " is empty in a coordinate");
         Y.push_back(std::move(b));
       }
+      check_krawczyk_chain(nets, sys, Y, 1, lo, hi, var, claim);
       const Box& X = Y[0];
-      if (X.lo[1] > lo || X.hi[1] < hi) reject(claim, "the Krawczyk box's " + var + "-range does not cover the run");
-      Box K;
-      if (!krawczyk(nets, sys, X, K)) reject(claim, "Krawczyk's K(X) is not inside the interior of X: the box is not proved to hold one zero");
-      for (std::size_t i = 0; i + 1 < Y.size(); ++i) {
-        Box K2;
-        krawczyk(nets, sys, Y[i], K2);
-        if (K2.lo.size() != m) reject(claim, "K(Y_" + std::to_string(i) + ") is not computable");
-        for (std::size_t v = 0; v < m; ++v)
-          if (Y[i + 1].lo[v] > std::max(Y[i].lo[v], K2.lo[v]) || Y[i + 1].hi[v] < std::min(Y[i].hi[v], K2.hi[v]))
-            reject(claim, "chain box " + std::to_string(i + 1) + " does not contain Y_" + std::to_string(i) + " ∩ K(Y_" + std::to_string(i) + ")");
-      }
       const std::string side = prover.check_end(sys.kind, X, lo, hi);
       if (!side.empty()) reject(claim, side);
       const json& br = at(it, "bracket", name);
       const auto b = rats(br, 2, name + ".bracket");
-      const mpq_class need_lo = std::max(lo, Y.back().lo[1]), need_hi = std::min(hi, Y.back().hi[1]);
-      if (need_lo > need_hi) reject(claim, "the last chain box misses the run");
-      if (b[0] > need_lo || b[1] < need_hi || b[0] < lo || b[1] > hi)
-        reject(claim, "the bracket [" + q(b[0]) + ", " + q(b[1]) + "] does not hold [" + q(need_lo) + ", " + q(need_hi) +
-                          "] (the run ∩ the last chain box) inside the run");
+      check_krawczyk_bracket(Y.back(), 1, lo, hi, b[0], b[1], claim);
       seq.push_back({"end", lo, hi, b[0], b[1]});
       ++n_end;
       continue;
