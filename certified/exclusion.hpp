@@ -17,10 +17,10 @@
 // `t_every` levels; coordinates are tracked exactly (rationals). The result is
 // "every box excluded or kept", or the first box that could not be (at
 // `max_depth`), or the box count passing `max_boxes`, or the deadline.
-// Requirements: nets TriBern<MpfiInterval> already restricted to the region.
+// Requirements: nets TriBern<T> already restricted to the region, T an interval type whose operations
+// round outwards (MpfiInterval, Interval).
 #include "kernel/budget.hpp"
 #include "kernel/trivariate_bernstein.hpp"
-#include "number/mpfi_interval.hpp"
 
 #include <gmpxx.h>
 
@@ -41,12 +41,12 @@ struct ExclusionResult {
 };
 
 // excluded(nets of the box, box) -> true when the box holds no zero that matters.
-template <std::size_t N, class Excluded>
-ExclusionResult exclude_region(std::array<TriBern<MpfiInterval>, N> nets, int ax_u, int ax_t, const ExclusionRegion& region,
+// T: MpfiInterval or Interval (number/interval.hpp, outward rounding); half: 1/2 in T (exact in both).
+template <class T, std::size_t N, class Excluded>
+ExclusionResult exclude_region(std::array<TriBern<T>, N> nets, int ax_u, int ax_t, const ExclusionRegion& region,
                                const ExclusionRegion& keep, Excluded&& excluded, long max_boxes, int max_depth, int t_every,
-                               int bits) {
-  using I = MpfiInterval;
-  const I half(mpq_class(1, 2), bits);
+                               const T& half) {
+  using I = T;
   struct Ex {
     std::array<TriBern<I>, N> f;
     ExclusionRegion r;

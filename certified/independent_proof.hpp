@@ -350,7 +350,7 @@ class EndProver {
       return sgn(r.t0) > 0 && r.t1 < 1 && g[2].strict_sign() != 0 && g[3].strict_sign() != 0;
     };
     const ExclusionResult e = exclude_region(std::move(f), 0, 2, {0, 1, 0, 1}, {xu0, xu1, xt0, xt1}, excluded, opt_.max_boxes,
-                                             opt_.max_box_depth, 1, bits);
+                                             opt_.max_box_depth, 1, I(mpq_class(1, 2), bits));
     boxes += e.boxes;
     last_boxes_ = e.boxes;
     if (e.status == ExclusionResult::too_many_boxes)

@@ -509,7 +509,7 @@ struct Checker {
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
   if (cycloidal_certificate_scene(s)) return check_cycloidal_certificate(s, scene_doc, cert);  // io/cycloidal_certificate.hpp
   if (independent_certificate_scene(s)) return check_independent_certificate(s, scene_doc, cert);  // io/independent_certificate.hpp
-  if (cert.is_object() && cert.value("format", "") == kBezierCertificateFormat) return check_bezier_certificate(s, scene_doc, cert);  // io/bezier_certificate.hpp
+  if (cert.is_object() && cert.contains("format") && cert["format"] == kBezierCertificateFormat) return check_bezier_certificate(s, scene_doc, cert);  // io/bezier_certificate.hpp
   Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
   return run_checker([&] { c.run(); }, c.checked);
 }
