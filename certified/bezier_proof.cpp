@@ -3,9 +3,11 @@
 // Arithmetic. F's net for the localisation is built from the prepared pair in
 // intervals of doubles (characteristic_bernstein<Interval, 4>: every entry of
 // N(t) enclosed from its exact rational, every product widened outwards), so
-// each control point encloses the exact one; for the ends the same net is built
-// in MPFI at `bits` bits and read as a tensor net of degree 0 in s
-// (kernel/trivariate_bernstein.hpp), on which certified/krawczyk.hpp runs.
+// each control point encloses the exact one. For the ends Krawczyk's test
+// (certified/krawczyk.hpp, on a tensor net of degree 0 in s) runs on that net
+// first (cheap; brackets ~1e-12 wide), then on the same net held in MPFI, and
+// only where both fail on the net built in MPFI at `bits` bits. The exclusion
+// of other zeros of (F, F_u) runs on the net of doubles.
 // Strip ends are dyadic (2^-strip_depth), exact in double; de Casteljau at 1/2
 // is exact in its parameter. Double (the nets' mid-points) only proposes
 // witnesses u and Newton points; nothing is decided by it.
@@ -70,18 +72,31 @@ class Engine {
   }
 
   // The end in the run [lo, hi] (out on one side, in on the other): "" and the piece, or why not.
+  // Krawczyk's test first on the localisation's net in intervals of doubles, then on the same net held in
+  // MPFI, then on the net built in MPFI at `bits` (each an enclosure of the exact net: each a proof).
   std::string prove_end(double lo, double hi, BezierPiece& piece) {
-    use_full_net_ = false;
-    std::string why = prove_end_with(lo, hi, piece);
+    if (!dnets_) {
+      TriBern<Interval> t;
+      t.n = {F_.degree_u(), 0, F_.degree_t()};
+      for (const auto& row : F_.b)
+        for (const auto& x : row) t.c.push_back(x);
+      dnets_.emplace(t, opt_.bits);
+    }
+    std::string why = prove_end_with(*dnets_, lo, hi, piece);
     if (why.empty()) return why;
-    use_full_net_ = true;
-    why = prove_end_with(lo, hi, piece);
     use_full_net_ = false;
-    return why;
+    ensure_mpfi();
+    std::string why2 = prove_end_with(nets(), lo, hi, piece);
+    if (why2.empty()) return why2;
+    use_full_net_ = true;
+    ensure_mpfi();
+    why2 = prove_end_with(nets(), lo, hi, piece);
+    use_full_net_ = false;
+    return why2.empty() ? why2 : why2 + " (also in intervals of doubles: " + why + ")";
   }
 
-  std::string prove_end_with(double lo, double hi, BezierPiece& piece) {
-    ensure_mpfi();
+  template <class IT>
+  std::string prove_end_with(krawczyk_detail::NetsT<IT>& nets, double lo, double hi, BezierPiece& piece) {
     const mpq_class qlo(lo), qhi(hi);
     const double tm = 0.5 * (lo + hi);
     // seed: the witness u of max F(., tm) in double
@@ -90,14 +105,14 @@ class Engine {
     sys.eqs = {{0, 0, 0}, {1, 0, 0}};
     sys.vars = {0, 2};
     sys.kind = "bezier-end";
-    std::optional<std::array<double, 3>> x = krawczyk_detail::newton(nets(), sys, {u0, 0.0, tm});
+    std::optional<std::array<double, 3>> x = krawczyk_detail::newton(nets, sys, {u0, 0.0, tm});
     if (!x) x = std::array<double, 3>{refine_argmax(u0, tm), 0.0, tm};  // no Newton point: the witness u at the run's middle
     const double ux = (*x)[0], tx = (*x)[2];
     if (!(ux > 0 && ux < 1) || !(tx > lo - (hi - lo) && tx < hi + (hi - lo)))
       return "Newton's method on (F, F_u) went outside the run (u = " + std::to_string(ux) + ", t = " + std::to_string(tx) + ")";
     const mpq_class uq(ux), tq(tx), w = qhi - qlo;
     std::string why = "Krawczyk's test failed around u = " + std::to_string(ux) + ", t = " + std::to_string(tx);
-    for (const int f : {1024, 256, 64, 16, 4, 1}) {
+    for (const int f : {64, 16, 4, 256, 1, 1024}) {
       const mpq_class rho = w * f;
       if (rho > mpq_class(1, 16)) continue;
       Box X;
@@ -106,7 +121,7 @@ class Engine {
       if (sgn(X.lo[0]) <= 0 || X.hi[0] >= 1) continue;
       Box K;
       ++krawczyk_tests;
-      if (!krawczyk_detail::krawczyk(nets(), sys, X, K)) continue;
+      if (!krawczyk_detail::krawczyk(nets, sys, X, K)) continue;
       std::string ex = exclude(qlo, qhi, X.lo[0], X.hi[0]);
       if (!ex.empty()) { why += ": " + ex; continue; }
       // tighten: Y <- Y ∩ K(Y) keeps the unique zero
@@ -117,7 +132,7 @@ class Engine {
       Box Y = X;
       for (int it = 0; it < 12; ++it) {
         Box K2;
-        krawczyk_detail::krawczyk(nets(), sys, Y, K2);
+        krawczyk_detail::krawczyk(nets, sys, Y, K2);
         if (K2.lo.size() != Y.lo.size()) break;
         bool ok = true;
         for (std::size_t v = 0; v < 2; ++v) {
@@ -146,6 +161,7 @@ class Engine {
   BiBern<Interval> F_;
   BiBern<double> Fd_;
   std::optional<Nets> nets_;
+  std::optional<krawczyk_detail::NetsT<Interval>> dnets_;
   long unresolved_ = 0;
   static constexpr long kMaxUnresolved = 64;  // unresolved strips at the finest level, in all
 
@@ -180,8 +196,8 @@ class Engine {
     if (deadline_passed()) throw BudgetExhausted("bezier proof: " + deadline_reason());
   }
 
-  // argmax over u of the double mid-point net at t (a witness only: 129 samples).
-  double argmax_u(double t) const {
+  // argmax over u of the double mid-point net at t and the value there (a witness only: 127 samples).
+  std::pair<double, double> witness(double t) const {
     Bern<double> col;
     for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
     double best = -INFINITY, ub = 0.5;
@@ -189,8 +205,9 @@ class Engine {
       const double u = k / 128.0, v = col(u);
       if (v > best) { best = v; ub = u; }
     }
-    return ub;
+    return {ub, best};
   }
+  double argmax_u(double t) const { return witness(t).first; }
   // The maximiser of the double net's F(., t) near u0 (golden-section search in [u0 - 1/128, u0 + 1/128]).
   double refine_argmax(double u0, double t) const {
     Bern<double> col;
@@ -203,19 +220,13 @@ class Engine {
     }
     return 0.5 * (a + b);
   }
-  double peak(double t) const {
-    Bern<double> col;
-    for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
-    return col(argmax_u(t));
-  }
-
   // One u-box containing u* (dyadic, guided bisection) with every control point > 0.
   bool positive_box(const BiBern<Interval>& f, double ustar, double lo, double hi, std::vector<BezierBox>& boxes) {
     BiBern<Interval> g = f;
     double u0 = 0, u1 = 1;
     for (int d = 0; d <= opt_.u_depth; ++d) {
-      ++box_tests;
-      const int s = g.strict_sign();
+      // a box touching u = 0 or u = 1 holds F(0, t) = det A(t) < 0 or F(1, t) = det B(t) < 0: not tried
+      const int s = u0 > 0 && u1 < 1 ? (++box_tests, g.strict_sign()) : 0;
       if (s == 1) {
         boxes.push_back({rat(u0), rat(u1), rat(lo), rat(hi)});
         return true;
@@ -254,9 +265,10 @@ class Engine {
     Strip s;
     s.lo = lo;
     s.hi = hi;
-    if (peak(tm) > 0) {
+    const auto [ustar, top] = witness(tm);
+    if (top > 0) {
       s.kind = BezierPiece::out;
-      s.proved = positive_box(f, argmax_u(tm), lo, hi, s.boxes);
+      s.proved = positive_box(f, ustar, lo, hi, s.boxes);
     } else {
       s.kind = BezierPiece::in;
       s.proved = negative_all(f, 0, 1, 0, lo, hi, s.boxes);
@@ -307,11 +319,12 @@ class Engine {
       if (b.f.strict_sign() != 0 || b.fu.strict_sign() != 0) continue;
       if (b.depth >= 40)
         return "another zero of (F, F_u) near u = " + std::to_string(b.u0) + " could not be excluded";
-      // split in u (the t-range is the run's, already narrow), and in t every other level
+      // split in u (the t-range is the run's, already narrow; a t-split costs a degree in t squared),
+      // and below depth 12 in t every other level
       const double um = 0.5 * (b.u0 + b.u1);
       auto [fl, fh] = split_u(b.f, half);
       auto [gl, gh] = split_u(b.fu, half);
-      if (b.depth % 2 == 1) {
+      if (b.depth >= 12 && b.depth % 2 == 1) {
         auto [fll, flh] = split_t(fl, half);
         auto [fhl, fhh] = split_t(fh, half);
         auto [gll, glh] = split_t(gl, half);
@@ -372,13 +385,26 @@ BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOption
   bool stopped = false;
   for (std::size_t i = 0; i < m.size(); ++i) {
     const Strip& s = m[i];
-    if (s.proved) {
+    if (s.proved && s.kind == BezierPiece::out) {  // one piece: the boxes' t-ranges cover it
       BezierPiece pc;
       pc.kind = s.kind;
       pc.lo = rat(s.lo);
       pc.hi = rat(s.hi);
       pc.boxes = s.boxes;
       pieces.push_back(std::move(pc));
+      continue;
+    }
+    if (s.proved) {  // in: one piece per strip (the contract: every box spans the piece's t-range)
+      for (const BezierBox& b : s.boxes) {
+        if (pieces.empty() || pieces.back().kind != BezierPiece::in || pieces.back().lo != b.t_lo) {
+          BezierPiece pc;
+          pc.kind = BezierPiece::in;
+          pc.lo = b.t_lo;
+          pc.hi = b.t_hi;
+          pieces.push_back(std::move(pc));
+        }
+        pieces.back().boxes.push_back(b);
+      }
       continue;
     }
     const bool has_before = i > 0, has_after = i + 1 < m.size();

@@ -13,9 +13,14 @@
 // from F's tensor Bernstein net enclosed in MPFI intervals (outward rounding,
 // `bits` bits): every evaluation encloses the exact value. Double is used
 // only to propose points (Newton) and for Y (any value is sound there).
+// The nets and the test are templated on the interval type (NetsT<IT>, IT =
+// MpfiInterval or Interval: intervals of doubles, widened outwards): the same
+// test on an enclosure of the same net is the same proof, only cheaper and
+// with wider brackets in doubles.
 // restrict_axis encloses the net restricted to a rational range of one axis.
 // Requirements: TriBern<MpfiInterval> (kernel/trivariate_bernstein.hpp).
 #include "kernel/trivariate_bernstein.hpp"
+#include "number/interval.hpp"
 #include "number/mpfi_interval.hpp"
 #include "number/rational_traits.hpp"
 
@@ -48,6 +53,21 @@ inline mpq_class upper(const I& x) {
 }
 inline bool finite(const I& x) { return !mpfi_nan_p(x.get()) && mpfr_number_p(&x.get()->left) && mpfr_number_p(&x.get()->right); }
 inline mpq_class exact_of(double d) { return mpq_class(d); }  // a double is an exact rational
+// The same for intervals of doubles (number/interval.hpp): its end points are doubles, exact rationals.
+inline mpq_class lower(const Interval& x) { return mpq_class(x.lo); }
+inline mpq_class upper(const Interval& x) { return mpq_class(x.hi); }
+inline bool finite(const Interval& x) { return std::isfinite(x.lo) && std::isfinite(x.hi); }
+
+// Enclosures of rationals in an interval type (MPFI at `bits`, or doubles rounded outwards).
+template <class IT> struct Enclose;
+template <> struct Enclose<MpfiInterval> {
+  static MpfiInterval point(const mpq_class& q, int bits) { return MpfiInterval(q, bits); }
+  static MpfiInterval hull(const mpq_class& a, const mpq_class& b, int bits) { return MpfiInterval(a, b, bits); }
+};
+template <> struct Enclose<Interval> {
+  static Interval point(const mpq_class& q, int) { return interval_of(q); }
+  static Interval hull(const mpq_class& a, const mpq_class& b, int) { return Interval(interval_of(a).lo, interval_of(b).hi); }
+};
 
 // The derivative of a tensor Bernstein net along `axis` (degree one lower there; a constant gives 0).
 template <class T>
@@ -88,10 +108,14 @@ inline TriBern<I> restrict_axis(const TriBern<I>& f, int axis, const mpq_class& 
   return r;
 }
 
-// The nets of F and its partial derivatives (orders (a, b, c) in u, s, t), in intervals and (mid-points) in double.
-class Nets {
+// The nets of F and its partial derivatives (orders (a, b, c) in u, s, t), in intervals IT (MPFI or
+// doubles) and (mid-points) in double.
+template <class IT>
+class NetsT {
+  using I = IT;
+
  public:
-  Nets(const TriBern<I>& F, int bits) : bits_(bits), zero_(mpq_class(0), bits) { nets_[{0, 0, 0}] = F; }
+  NetsT(const TriBern<I>& F, int bits) : bits_(bits), zero_(Enclose<I>::point(mpq_class(0), bits)) { nets_[{0, 0, 0}] = F; }
   const TriBern<I>& get(std::array<int, 3> o) {
     auto it = nets_.find(o);
     if (it != nets_.end()) return it->second;
@@ -123,6 +147,7 @@ class Nets {
   std::map<std::array<int, 3>, TriBern<I>> nets_;
   std::map<std::array<int, 3>, TriBern<double>> mids_;
 };
+using Nets = NetsT<MpfiInterval>;
 
 // A square system: equations are partial derivatives of F (orders), unknowns a subset of (u, s, t);
 // the other coordinate (t for an end on t = t_b) is fixed.
@@ -157,7 +182,8 @@ inline bool solve_small(std::vector<std::vector<double>> a, std::vector<double>&
 }
 
 // Newton's method in double (only proposes a point).
-inline std::optional<std::array<double, 3>> newton(Nets& nets, const System& sys, std::array<double, 3> x) {
+template <class IT>
+std::optional<std::array<double, 3>> newton(NetsT<IT>& nets, const System& sys, std::array<double, 3> x) {
   const std::size_t m = sys.vars.size();
   for (int it = 0; it < 60; ++it) {
     std::vector<double> g(m);
@@ -184,17 +210,20 @@ struct Box {
 };
 
 // One Krawczyk step on box X: K(X) in K; true if K lies in the interior of X.
-inline bool krawczyk(Nets& nets, const System& sys, const Box& X, Box& K) {
+template <class IT>
+bool krawczyk(NetsT<IT>& nets, const System& sys, const Box& X, Box& K) {
+  using I = IT;
+  using E = Enclose<I>;
   const int bits = nets.bits();
   const std::size_t m = sys.vars.size();
   std::array<I, 3> centre, box;
   std::vector<mpq_class> mid(m);
-  for (int ax = 0; ax < 3; ++ax) centre[ax] = box[ax] = I(mpq_class(sys.fixed_t.value_or(0)), bits);
+  for (int ax = 0; ax < 3; ++ax) centre[ax] = box[ax] = E::point(mpq_class(sys.fixed_t.value_or(0)), bits);
   for (std::size_t v = 0; v < m; ++v) {
     mid[v] = (X.lo[v] + X.hi[v]) / 2;
     // a short rational near the mid-point (any point of X is a valid centre)
-    centre[sys.vars[v]] = I(mid[v], bits);
-    box[sys.vars[v]] = I(X.lo[v], X.hi[v], bits);
+    centre[sys.vars[v]] = E::point(mid[v], bits);
+    box[sys.vars[v]] = E::hull(X.lo[v], X.hi[v], bits);
   }
   std::vector<I> fx;
   std::vector<std::vector<I>> J(m);
@@ -213,7 +242,7 @@ inline bool krawczyk(Nets& nets, const System& sys, const Box& X, Box& K) {
     std::vector<double> col(m, 0.0);
     col[c] = 1;
     if (!solve_small(Jm, col)) return false;
-    for (std::size_t r = 0; r < m; ++r) Y[r][c] = I(exact_of(col[r]), bits);
+    for (std::size_t r = 0; r < m; ++r) Y[r][c] = E::point(exact_of(col[r]), bits);
   }
   K = Box{std::vector<mpq_class>(m), std::vector<mpq_class>(m)};
   bool inside = true;

@@ -85,10 +85,15 @@ std::optional<Solution> try_bezier_rung(const PreparedPair<4>& p, bool first_con
                          sgn(*r.answer.intervals.front().first.hi) == 0;
     s.status_at_0 = in_at_0 ? Status::overlapping : Status::separate;
     for (const Instant& c : r.answer.contacts) s.critical.push_back({c, Status::touching, 1});
-    for (const BezierPiece& pc : r.pieces)
-      if (pc.kind != BezierPiece::end)
-        s.cells.push_back({bracketed_instant((pc.lo + pc.hi) / 2, (pc.lo + pc.hi) / 2, (pc.lo + pc.hi) / 2),
-                           pc.kind == BezierPiece::in ? Status::overlapping : Status::separate});
+    // one cell per run of proved pieces of one kind (a sample at its middle)
+    for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+      if (r.pieces[i].kind == BezierPiece::end) continue;
+      std::size_t j = i;
+      while (j + 1 < r.pieces.size() && r.pieces[j + 1].kind == r.pieces[i].kind) ++j;
+      const Rational mid = (r.pieces[i].lo + r.pieces[j].hi) / 2;
+      s.cells.push_back({bracketed_instant(mid, mid, mid), r.pieces[i].kind == BezierPiece::in ? Status::overlapping : Status::separate});
+      i = j;
+    }
     s.work = r.work;
     s.projection = "bezier";
     for (const auto& [k, v] : r.work)
