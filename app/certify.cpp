@@ -168,7 +168,7 @@ Command add_certify_command(CLI::App& app) {
   s->add_option("--tol", args->tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")->capture_default_str()->check(CLI::PositiveNumber);
   s->add_option("--arith", args->arith,
                 "exact: the exact pipeline's certificate; certified: 3D scenes try the interval Bezier proof first "
-                "(eccd-bezier-certificate/1) and fall back to the exact certificate; 2D: the exact certificate")
+                "(eccd-bezier-certificate/1) and fall back to the exact certificate; 2D and independent scenes: the certificate --arith exact writes")
       ->capture_default_str()
       ->check(CLI::IsMember({"exact", "certified"}));
   s->add_flag("--no-floating", args->no_floating, "Certify only; do not run the floating pipelines");
