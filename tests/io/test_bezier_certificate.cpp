@@ -269,3 +269,23 @@ TEST_CASE("bezier certificate: generated colliding 3D cases and paper 002's exam
     rejected(Case{s, doc, cert}, t, "coverage");
   }
 }
+
+TEST_CASE("cli: regress --arith certified --certify certifies each scene by the certified route, every certificate VALID",
+          "[bezier-certificate][cli]") {
+  const std::string exe = ECCD_EXE;
+  std::string out;
+  REQUIRE(eccd::test::run(exe + " regress " + src + "/cases/spheres --arith certified --certify --json", out) == 0);
+  const json r = json::parse(out);
+  int bezier = 0, exact = 0;
+  REQUIRE(r["scenes"].size() == 7);
+  for (const auto& row : r["scenes"]) {
+    INFO(row.dump());
+    CHECK(row["result"] == "ok");
+    CHECK(row["certificate"]["valid"] == true);
+    bezier += row["certificate"]["route"] == "bezier";
+    exact += row["certificate"]["route"] == "exact";
+  }
+  // the two touches (spheres-touch, spheres-touch-at-start) are not decided by intervals: exact route; the rest by the proof
+  CHECK(bezier == 5);
+  CHECK(exact == 2);
+}
