@@ -43,7 +43,10 @@ std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& pla
   return read_short_rationals(j, n, place, kBezierMaxRationalBits);
 }
 
-bool same(const Instant& a, const Instant& b) { return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi; }
+// Equal brackets and the same decimal (the derived instant's approx is its bracket's mid-point, as bracketed_instant writes it).
+bool same(const Instant& a, const Instant& b) {
+  return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi && a.approx == b.approx;
+}
 
 // F(u, t)'s net from the scene, exactly, as a tensor net (u, s, t) of degree 0 in s.
 TriBern<Rational> exact_net(const Scene& scene) {

@@ -150,6 +150,11 @@ TEST_CASE("bezier certificate: every kind of tampering is rejected naming the cl
     t["answer"]["intervals"][0][1] = t["answer"]["intervals"][0][0];
     rejected(c, t, "answer");
   }
+  {  // the answer's decimal changed, its bracket kept: the approx must be the bracket's mid-point
+    json t = cert;
+    t["answer"]["first_contact"]["approx"] = "0.5";
+    rejected(c, t, "answer");
+  }
   {  // the answer changed: no collision
     json t = cert;
     t["answer"] = {{"collides", false}, {"intervals", json::array()}, {"first_contact", nullptr}, {"contacts", json::array()}};
