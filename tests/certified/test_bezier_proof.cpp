@@ -11,6 +11,7 @@
 #include "compare/regress.hpp"
 #include "compare/scene_generator.hpp"
 #include "io/scene_reader.hpp"
+#include "kernel/budget.hpp"
 #include "kernel/prepared_scene.hpp"
 
 #include <catch2/catch.hpp>
@@ -225,4 +226,24 @@ TEST_CASE("the Bézier proof does not decide a touch; the ladder still returns e
     CHECK(c.decided_in != "bezier");
     CHECK(regress_differences(*s.answer, c.answer).empty());
   }
+}
+
+TEST_CASE("the Bézier rung keeps its budget B_Z; the caller's deadline still ends a 3D certified run", "[bezier][cost]") {
+  Scene s = read_scene_file(kCases + "spheres/spheres-crossing.json");
+  REQUIRE(s.answer);
+  PreparedPair<4> p = prepare_pair<4>(s);
+  // A Bézier budget already spent: the rung gives up at once with that reason, and the ladder goes on
+  // (intervals of doubles, MPFI, exact) to the same answer.
+  LadderBudget none;
+  none.bezier_s = 1e-9;
+  Solution c = run_certified<4>(p, {256}, Variant::answer, false, none);
+  REQUIRE_FALSE(c.escalations.empty());
+  CHECK(c.escalations.front().rung == "bezier");
+  CHECK_THAT(c.escalations.front().reason, Catch::StartsWith("rung budget exhausted"));
+  CHECK(c.escalations.front().budget_ms == Approx(1e-6));
+  CHECK(c.decided_in != "bezier");
+  CHECK(regress_differences(*s.answer, c.answer).empty());
+  // The caller's own deadline is not an escalation: the whole run ends.
+  ScopedDeadline caller(1e-9);
+  CHECK_THROWS_AS(run_certified<4>(p, {256}, Variant::answer, false), BudgetExhausted);
 }
