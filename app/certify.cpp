@@ -10,6 +10,7 @@
 #include "compare/harness_families.hpp"
 #include "io/cycloidal_certificate.hpp"
 #include "io/independent_certificate.hpp"
+#include "io/bezier_certificate.hpp"
 #include "compare/verdict.hpp"
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
@@ -32,6 +33,7 @@ struct CertifyArgs {
   std::vector<int> mpfr_bits{128, 256};
   double tol = 1e-6;
   bool json = false, no_floating = false;
+  std::string arith = "exact";
 };
 
 // The scene and its JSON from ONE read of the file's bytes: a file that
@@ -93,7 +95,27 @@ std::string independent_text(const nlohmann::json& cert) {
   return o.str();
 }
 
+// A Bézier certificate (io/bezier_certificate.hpp): pieces of t proved out / in, ends by Krawczyk.
+std::string bezier_text(const nlohmann::json& cert) {
+  std::ostringstream o;
+  const auto& a = cert["answer"];
+  int n_in = 0, n_out = 0, n_end = 0;
+  for (const auto& p : cert["pieces"]) (p["kind"] == "in" ? n_in : p["kind"] == "out" ? n_out : n_end)++;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f s", cert["seconds"].get<double>());
+  o << "scene " << cert["scene"]["name"].get<std::string>() << " (3D): certified by the interval Bezier proof about the exact F(u, t) in "
+    << buf << " (MPFI " << cert["precision_bits"].get<int>() << " bits; " << n_out << " out, " << n_in << " in pieces, " << n_end
+    << " end(s) by Krawczyk)\n";
+  o << "  collides: " << (a["collides"].get<bool>() ? "yes" : "no") << "\n";
+  for (const auto& iv : a["intervals"]) o << "  collision interval: [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]\n";
+  if (!a["first_contact"].is_null()) o << "  first contact: " << instant_text(a["first_contact"]) << "\n";
+  if (a["contacts"].empty()) o << "  external contacts: none\n";
+  for (const auto& c : a["contacts"]) o << "  external contact: " << instant_text(c) << "\n";
+  return o.str();
+}
+
 std::string certified_text(const nlohmann::json& cert) {
+  if (cert["format"] == kBezierCertificateFormat) return bezier_text(cert);
   if (cert["format"] == kCycloidalCertificateFormat) return cycloidal_text(cert);
   if (cert["format"] == kIndependentCertificateFormat) return independent_text(cert);
   std::ostringstream o;
@@ -135,12 +157,20 @@ Command add_certify_command(CLI::App& app) {
                              "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/1): proved root brackets "
                              "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon. An independent "
                              "scene (3D) gets eccd-independent-certificate/1: its s- and t-intervals with the strip and Krawczyk "
-                             "proofs about the exact F(u, s, t); exit 4 if the proof leaves a range undecided.");
+                             "proofs about the exact F(u, s, t); exit 4 if the proof leaves a range undecided. --arith certified: a 3D scene with "
+                             "shared parameters gets eccd-bezier-certificate/1 (the interval Bezier proof's pieces and Krawczyk ends) "
+                             "when that proof decides it, else the exact certificate; 2D scenes (and independent ones) get the "
+                             "certificate they get with --arith exact; the route taken is printed (JSON key \"route\").");
   auto* s = c.sub;
   s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
   s->add_option("--out", args->out, "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder)");
   s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions of the floating pipelines judged")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--tol", args->tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")->capture_default_str()->check(CLI::PositiveNumber);
+  s->add_option("--arith", args->arith,
+                "exact: the exact pipeline's certificate; certified: 3D scenes try the interval Bezier proof first "
+                "(eccd-bezier-certificate/1) and fall back to the exact certificate; 2D and independent scenes: the certificate --arith exact writes")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exact", "certified"}));
   s->add_flag("--no-floating", args->no_floating, "Certify only; do not run the floating pipelines");
   s->add_flag("--json", args->json, "Print one JSON object (certified answer, verdicts, certificate path) instead of text");
   c.run = [args]() {
@@ -150,18 +180,24 @@ Command add_certify_command(CLI::App& app) {
     if (args->out.empty() && args->scene == "-") throw std::invalid_argument("certify -: name the certificate file with --out (the scene comes from standard input)");
     fs::path out = args->out.empty() ? fs::path(fs::path(args->scene).stem().string() + ".cert.json") : fs::path(args->out);
     const std::string label = scene.path;
-    if (!quiet()) std::cerr << "certify: exact pipeline and certificate ...\n";
+    if (!quiet()) std::cerr << (args->arith == "certified" ? "certify: certified route and certificate ...\n" : "certify: exact pipeline and certificate ...\n");
     nlohmann::json cert;
+    std::string route = "exact", route_why;
     try {
-      cert = nlohmann::json::parse(certify(scene).text);
+      if (args->arith == "certified") cert = make_certified_mode_certificate(scene, doc, route, route_why);
+      else cert = nlohmann::json::parse(certify(scene).text);
+      if (args->arith != "certified") route = cycloidal_certificate_scene(scene) ? "cycloidal" : scene.independent ? "independent" : "exact";
     } catch (const CertificationError& e) {
       throw ExitError(4, "certify: " + label + ": " + e.what());
     } catch (const std::invalid_argument& e) {  // a scene the exact pipeline refuses (cycloidal motion)
       throw ExitError(3, "certify: " + label + ": " + cli_message(e));
     }
     // The writer's output must pass the checker before anyone sees it.
-    if (!quiet()) std::cerr << "certify: re-checking the certificate with the checker ...\n";
-    CertificateCheck chk = check_certificate(scene, doc, cert);
+    if (!quiet() && route != "bezier") std::cerr << "certify: re-checking the certificate with the checker ...\n";
+    // (a Bézier certificate has just passed this very checker inside its writer: io/bezier_certificate.cpp)
+    CertificateCheck chk;
+    if (route == "bezier") chk.valid = true;
+    else chk = check_certificate(scene, doc, cert);
     if (!chk.valid)
       throw std::logic_error("the certificate fails its own check (" + chk.failed_claim + ": " + chk.reason + ")");
 
@@ -192,13 +228,16 @@ Command add_certify_command(CLI::App& app) {
 
     if (args->json) {
       nlohmann::json j = {{"scene", scene.path}, {"certificate", out.string()}, {"answer", cert["answer"]}, {"verdicts", vj},
-                          {"projection", cert.contains("projection") ? cert["projection"]["name"] : nlohmann::json(scene.independent ? "independent-krawczyk" : "cycloidal-delta")},
-                          {"certify_seconds", cert["seconds"]}, {"complete", cert.value("complete", true)}};
+                          {"projection", cert.contains("projection") ? cert["projection"]["name"] : nlohmann::json(scene.independent ? "independent-krawczyk" : route == "bezier" ? "bezier-krawczyk" : "cycloidal-delta")},
+                          {"certify_seconds", cert["seconds"]}, {"complete", cert.value("complete", true)}, {"route", route}};
+      if (!route_why.empty()) j["route_reason"] = route_why;
       stamp_format(j, "eccd-certify/1");
       std::cout << j.dump(2) << "\n";
       return 0;
     }
     std::cout << certified_text(cert);
+    if (args->arith == "certified")
+      std::cout << "route: " << route << (route_why.empty() ? "" : " (" + route_why + ")") << "\n";
     if (!verdicts.empty()) {
       char tol[32];
       std::snprintf(tol, sizeof tol, "%g", args->tol);
@@ -229,10 +268,11 @@ Command add_check_certificate_command(CLI::App& app) {
                              "projection recomputed exactly, one root per bracket and none elsewhere (Descartes' rule), each "
                              "cell's status by the exact static test, each instant's evidence, and the answer (a cycloidal scene: "
                              "the same claims proved by MPFI enclosures of Delta and Delta'; an independent scene: every strip's "
-                             "boxes, every end's Krawczyk chain and exclusion, the coverage of [0, 1]). Exit 0 if every "
+                             "boxes, every end's Krawczyk chain and exclusion, the coverage of [0, 1]; a Bezier certificate from --arith certified: every "
+                             "piece's boxes, every end's faces, Krawczyk chain and exclusion, the coverage of [0, 1], the answer). Exit 0 if every "
                              "claim holds, 1 naming the first claim that fails, 2 for an unreadable file.");
   c.sub->add_option("SCENE", args->scene, "Scene file the certificate is about; - reads standard input")->required();
-  c.sub->add_option("CERT", args->cert, "Certificate (JSON, format eccd-certificate/2)")->required();
+  c.sub->add_option("CERT", args->cert, "Certificate (JSON: eccd-certificate/2, or the cycloidal, independent or Bezier format; the checker follows its \"format\")")->required();
   c.sub->add_flag("--json", args->json, "Print one JSON object {valid, checked, failed_claim, reason}");
   c.run = [args]() {
     // Each file read once; a directory or unreadable file is exit 2 with its path (SceneError).

@@ -10,6 +10,7 @@
 #include "compare/verdict.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/cycloidal_motion.hpp"
+#include "io/bezier_certificate.hpp"
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
 #include "io/scene_reader.hpp"
@@ -106,7 +107,9 @@ Command add_regress_command(CLI::App& app) {
       });
   s->add_flag("--certify", args->certify,
               "Also write each scene's certificate (in memory) and re-check it with the certificate checker; a certificate "
-              "that cannot be made or fails its check fails the scene");
+              "that cannot be made or fails its check fails the scene; with --arith certified a 3D scene's certificate is "
+              "the interval Bezier proof's (eccd-bezier-certificate/1) when that proof decides it, else the exact one "
+              "(the route is reported per scene)");
   s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions for --floating")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--tol", args->tol, "--floating: tolerance on instants (an interval end further off counts as off)")->capture_default_str()->check(CLI::PositiveNumber);
   s->add_flag("--json", args->json, "Print one JSON object (per-scene results, summary, floating table) instead of text");
@@ -197,8 +200,10 @@ Command add_regress_command(CLI::App& app) {
           nlohmann::json doc = nlohmann::json::parse(texts[f]);
           auto c0 = std::chrono::steady_clock::now();
           nlohmann::json cert;
+          std::string route, route_why;
           try {
-            cert = make_certificate(sc, doc);
+            // certified mode: the certified route's certificate (io/bezier_certificate.hpp), else the exact one
+            cert = certified_mode ? make_certified_mode_certificate(sc, doc, route, route_why) : make_certificate(sc, doc);
           } catch (const CertificationError& e) {  // the proof left a range undecided: nothing certified, and said so
             if (!sc.independent) throw;
             cert = nullptr;
@@ -209,9 +214,17 @@ Command add_regress_command(CLI::App& app) {
           CertificateCheck chk = check_certificate(sc, doc, cert);
           double cs = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
           row["certificate"] = {{"valid", chk.valid}, {"seconds", cs}};
-          char buf[48];
-          std::snprintf(buf, sizeof buf, ", certificate checked (%.2f s)", cs);
-          if (chk.valid) {
+          if (certified_mode) row["certificate"]["route"] = route;
+          char buf[80];
+          std::snprintf(buf, sizeof buf, ", certificate%s%s checked (%.2f s)", route.empty() ? "" : " ", route.c_str(), cs);
+          std::vector<std::string> cdiff;  // the certified route's certificate proves an answer: it must be the stored one
+          if (chk.valid && route == "bezier") cdiff = regress_differences(*sc.answer, answer_from_json(cert["answer"], name, "/answer"));
+          if (!cdiff.empty()) {
+            row["certificate"]["differences"] = cdiff;
+            if (diff.empty()) { --agree; ++differ; row["result"] = "differs"; }
+            line = "FAIL  " + name + ": its Bezier certificate proves an answer other than the stored one:";
+            for (const auto& d : cdiff) line += "\n        " + d;
+          } else if (chk.valid) {
             line += buf;
           } else {
             row["certificate"]["failed_claim"] = chk.failed_claim;

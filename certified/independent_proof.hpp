@@ -81,6 +81,7 @@
 // Requirements: the exact net TriBern<Rational>; intervals Interval and
 // MpfiInterval; double only for the Newton points and Y (any value is sound
 // there).
+#include "certified/exclusion.hpp"
 #include "certified/krawczyk.hpp"
 #include "floating/independent_ccd.hpp"
 #include "kernel/answer.hpp"
@@ -341,45 +342,23 @@ class EndProver {
   std::string exclude(const mpq_class& lo, const mpq_class& hi, const mpq_class& xu0, const mpq_class& xu1,
                       const mpq_class& xt0, const mpq_class& xt1) {
     const int bits = nets_.bits();
-    const I half(mpq_class(1, 2), bits);
-    struct Ex {
-      std::array<TriBern<I>, 4> f;  // F, F_u, F_t, F_uu
-      mpq_class u0, u1, t0, t1;
-      int depth;
+    std::array<TriBern<I>, 4> f;  // F, F_u, F_t, F_uu on s in [lo, hi]
+    const std::array<std::array<int, 3>, 4> ords{{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {2, 0, 0}}};
+    for (int i = 0; i < 4; ++i) f[i] = restrict_axis(nets_.get(ords[i]), 1, lo, hi, bits);
+    auto excluded = [](const std::array<TriBern<I>, 4>& g, const ExclusionRegion& r) {
+      if (g[0].strict_sign() != 0 || g[1].strict_sign() != 0) return true;
+      return sgn(r.t0) > 0 && r.t1 < 1 && g[2].strict_sign() != 0 && g[3].strict_sign() != 0;
     };
-    std::vector<Ex> stack;
-    {
-      Ex root;
-      const std::array<std::array<int, 3>, 4> ords{{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {2, 0, 0}}};
-      for (int i = 0; i < 4; ++i) root.f[i] = restrict_axis(nets_.get(ords[i]), 1, lo, hi, bits);
-      root.u0 = 0; root.u1 = 1; root.t0 = 0; root.t1 = 1; root.depth = 0;
-      stack.push_back(std::move(root));
-    }
-    last_boxes_ = 0;
-    while (!stack.empty()) {
-      Ex b = std::move(stack.back());
-      stack.pop_back();
-      ++boxes;
-      if (++last_boxes_ > opt_.max_boxes) return "the exclusion of other extreme points needed more than " + std::to_string(opt_.max_boxes) + " boxes";
-      if (deadline_passed()) return deadline_reason();
-      if (b.u0 >= xu0 && b.u1 <= xu1 && b.t0 >= xt0 && b.t1 <= xt1) continue;
-      if (b.f[0].strict_sign() != 0 || b.f[1].strict_sign() != 0) continue;
-      if (sgn(b.t0) > 0 && b.t1 < 1 && b.f[2].strict_sign() != 0 && b.f[3].strict_sign() != 0) continue;
-      if (b.depth >= opt_.max_box_depth)
-        return "another possible extreme point near u = " + decimal_string(b.u0, 8) + ", " + std::string("other parameter = ") +
-               decimal_string(b.t0, 8) + " could not be excluded";
-      const mpq_class um = (b.u0 + b.u1) / 2, tm = (b.t0 + b.t1) / 2;
-      std::array<TriBern<I>, 4> lu, hu;
-      for (int i = 0; i < 4; ++i) std::tie(lu[i], hu[i]) = b.f[i].split_half(0, half);
-      for (int side = 0; side < 2; ++side) {
-        auto& g = side ? hu : lu;
-        std::array<TriBern<I>, 4> lt, ht;
-        for (int i = 0; i < 4; ++i) std::tie(lt[i], ht[i]) = g[i].split_half(2, half);
-        const mpq_class a0 = side ? um : b.u0, a1 = side ? b.u1 : um;
-        stack.push_back(Ex{std::move(ht), a0, a1, tm, b.t1, b.depth + 1});
-        stack.push_back(Ex{std::move(lt), a0, a1, b.t0, tm, b.depth + 1});
-      }
-    }
+    const ExclusionResult e = exclude_region(std::move(f), 0, 2, {0, 1, 0, 1}, {xu0, xu1, xt0, xt1}, excluded, opt_.max_boxes,
+                                             opt_.max_box_depth, 1, I(mpq_class(1, 2), bits));
+    boxes += e.boxes;
+    last_boxes_ = e.boxes;
+    if (e.status == ExclusionResult::too_many_boxes)
+      return "the exclusion of other extreme points needed more than " + std::to_string(opt_.max_boxes) + " boxes";
+    if (e.status == ExclusionResult::deadline) return deadline_reason();
+    if (e.status == ExclusionResult::stuck)
+      return "another possible extreme point near u = " + decimal_string(e.u0, 8) + ", " + std::string("other parameter = ") +
+             decimal_string(e.t0, 8) + " could not be excluded";
     return "";
   }
 };

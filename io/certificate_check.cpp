@@ -4,8 +4,10 @@
 #include "io/certificate_check.hpp"
 
 #include "io/certificate.hpp"
+#include "io/certificate_json.hpp"
 #include "io/cycloidal_certificate.hpp"
 #include "io/independent_certificate.hpp"
+#include "io/bezier_certificate.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "exact/descartes.hpp"
 #include "kernel/collision_timeline.hpp"
@@ -20,39 +22,9 @@ namespace {
 
 using json = nlohmann::json;
 
-struct Reject {
-  std::string claim, reason;
-};
+using namespace certificate_json;
 
-[[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Reject{claim, reason}; }
-
-const json& at(const json& j, const std::string& key, const std::string& place) {
-  if (!j.is_object()) reject("certificate format", place + ": expected an object with the key \"" + key + "\", got " + j.dump().substr(0, 40));
-  if (!j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
-  return j.at(key);
-}
-
-// A rational of at most max_bits bits in numerator and denominator: longer
-// strings are refused before they are parsed, so a forged 10^6-digit number
-// costs nothing (denial of service, issue 15).
-Rational rat(const json& j, const std::string& place, std::size_t max_bits) {
-  if (!j.is_string()) reject("certificate format", place + ": expected a rational written as a string \"p/q\"");
-  const std::string& text = j.get_ref<const std::string&>();
-  const std::size_t max_chars = 2 * (max_bits * 30103 / 100000 + 2) + 8;
-  auto too_big = [&]() {
-    reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) +
-                                     " bits, beyond what any certificate of this scene needs (" + std::to_string(text.size()) + " characters)");
-  };
-  if (text.size() > max_chars) too_big();
-  Rational q;
-  try {
-    q = parse_rational(text);
-  } catch (const std::exception& e) {
-    reject("certificate format", place + ": " + e.what());
-  }
-  if (mpz_sizeinbase(q.get_num_mpz_t(), 2) > max_bits || mpz_sizeinbase(q.get_den_mpz_t(), 2) > max_bits) too_big();
-  return q;
-}
+Rational rat(const json& j, const std::string& place, std::size_t max_bits) { return read_rational(j, place, max_bits); }
 
 Poly<Rational> poly(const json& j, const std::string& place, std::size_t max_bits, std::size_t max_terms) {
   if (!j.is_array()) reject("certificate format", place + ": expected an array of coefficients");
@@ -537,20 +509,9 @@ struct Checker {
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
   if (cycloidal_certificate_scene(s)) return check_cycloidal_certificate(s, scene_doc, cert);  // io/cycloidal_certificate.hpp
   if (independent_certificate_scene(s)) return check_independent_certificate(s, scene_doc, cert);  // io/independent_certificate.hpp
-  CertificateCheck out;
+  if (cert.is_object() && cert.contains("format") && cert["format"] == kBezierCertificateFormat) return check_bezier_certificate(s, scene_doc, cert);  // io/bezier_certificate.hpp
   Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
-  try {
-    c.run();
-    out.valid = true;
-  } catch (const Reject& r) {
-    out.failed_claim = r.claim;
-    out.reason = r.reason;
-  } catch (const std::exception& e) {  // safety net: a malformed part the checks above did not foresee
-    out.failed_claim = "certificate format";
-    out.reason = std::string("malformed certificate after the claims checked so far: ") + e.what();
-  }
-  out.checked = c.checked;
-  return out;
+  return run_checker([&] { c.run(); }, c.checked);
 }
 
 CertificateCheck check_certificate_text(const Scene& s, const nlohmann::json& scene_doc, const std::string& cert_text,

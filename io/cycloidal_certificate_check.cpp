@@ -3,6 +3,7 @@
 // at the certificate's brackets, samples and gap points, and the timeline-to-answer
 // step; no subdivision search, no refinement, no solver.
 #include "io/cycloidal_certificate.hpp"
+#include "io/certificate_json.hpp"
 
 #include "io/cycloidal_enclosures.hpp"
 #include "io/scene_reader.hpp"
@@ -14,29 +15,10 @@ namespace {
 
 using json = nlohmann::json;
 
-struct Reject {
-  std::string claim, reason;
-};
-[[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Reject{claim, reason}; }
+using namespace certificate_json;
 
-const json& at(const json& j, const std::string& key, const std::string& place) {
-  if (!j.is_object() || !j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
-  return j.at(key);
-}
-
-mpq_class rat(const json& j, const std::string& place) {
-  if (!j.is_string() || j.get_ref<const std::string&>().size() > 2 * kCycloidalMaxRationalBits)
-    reject("certificate format", place + ": expected a rational \"p/q\" of at most " + std::to_string(kCycloidalMaxRationalBits) + " bits");
-  mpq_class q;
-  try {
-    q = parse_rational(j.get<std::string>());
-  } catch (const std::exception& e) {
-    reject("certificate format", place + ": " + e.what());
-  }
-  if (mpz_sizeinbase(q.get_num_mpz_t(), 2) > kCycloidalMaxRationalBits || mpz_sizeinbase(q.get_den_mpz_t(), 2) > kCycloidalMaxRationalBits)
-    reject("certificate format", place + ": a rational of more than " + std::to_string(kCycloidalMaxRationalBits) + " bits");
-  return q;
-}
+const json& at(const json& j, const std::string& key, const std::string& place) { return certificate_json::at(j, key, place, false); }
+mpq_class rat(const json& j, const std::string& place) { return read_short_rational(j, place, kCycloidalMaxRationalBits); }
 
 Status status_named(const json& j, const std::string& place, bool uncertain_ok) {
   if (j.is_string())
@@ -223,18 +205,8 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
 }  // namespace
 
 CertificateCheck check_cycloidal_certificate(const Scene& s, const json& scene_doc, const json& cert) {
-  CertificateCheck out;
-  try {
-    check(s, scene_doc, cert, out.checked);
-    out.valid = true;
-  } catch (const Reject& r) {
-    out.failed_claim = r.claim;
-    out.reason = r.reason;
-  } catch (const std::exception& e) {  // a malformed part the checks above did not foresee
-    out.failed_claim = "certificate format";
-    out.reason = std::string("malformed certificate after the claims checked so far: ") + e.what();
-  }
-  return out;
+  std::vector<std::string> checked;
+  return run_checker([&] { check(s, scene_doc, cert, checked); }, checked);
 }
 
 }  // namespace eccd

@@ -2,6 +2,8 @@
 #include "io/independent_certificate.hpp"
 
 #include "certified/independent_proof.hpp"
+#include "io/certificate_json.hpp"
+#include "io/krawczyk_claims.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/trivariate_bernstein.hpp"
@@ -63,36 +65,12 @@ json projection_json(const IndependentProjectionRecord& rec) {
 }
 
 // ---------------------------------------------------------------- checker
-struct Reject {
-  std::string claim, reason;
-};
-[[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Reject{claim, reason}; }
+using namespace certificate_json;
 
-const json& at(const json& j, const std::string& key, const std::string& place) {
-  if (!j.is_object() || !j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
-  return j.at(key);
-}
+const json& at(const json& j, const std::string& key, const std::string& place) { return certificate_json::at(j, key, place, false); }
+mpq_class rat(const json& j, const std::string& place) { return read_short_rational(j, place, kIndependentMaxRationalBits); }
 
-mpq_class rat(const json& j, const std::string& place) {
-  if (!j.is_string() || j.get_ref<const std::string&>().size() > 2 * kIndependentMaxRationalBits)
-    reject("certificate format", place + ": expected a rational \"p/q\" of at most " + std::to_string(kIndependentMaxRationalBits) + " bits");
-  mpq_class x;
-  try {
-    x = parse_rational(j.get<std::string>());
-  } catch (const std::exception& e) {
-    reject("certificate format", place + ": " + e.what());
-  }
-  if (mpz_sizeinbase(x.get_num_mpz_t(), 2) > kIndependentMaxRationalBits || mpz_sizeinbase(x.get_den_mpz_t(), 2) > kIndependentMaxRationalBits)
-    reject("certificate format", place + ": a rational of more than " + std::to_string(kIndependentMaxRationalBits) + " bits");
-  return x;
-}
-
-std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& place) {
-  if (!j.is_array() || j.size() != n) reject("certificate format", place + ": expected " + std::to_string(n) + " rationals");
-  std::vector<mpq_class> r;
-  for (std::size_t i = 0; i < n; ++i) r.push_back(rat(j[i], place));
-  return r;
-}
+std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& place) { return read_short_rationals(j, n, place, kIndependentMaxRationalBits); }
 
 bool same(const Instant& a, const Instant& b) {
   return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi && a.approx == b.approx;
@@ -142,27 +120,13 @@ std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, c
           if (!(b.lo[v] < b.hi[v])) reject("certificate format", name + ": chain box " + std::to_string(i) + " is empty in a coordinate");
         Y.push_back(std::move(b));
       }
+      check_krawczyk_chain(nets, sys, Y, 1, lo, hi, var, claim);
       const Box& X = Y[0];
-      if (X.lo[1] > lo || X.hi[1] < hi) reject(claim, "the Krawczyk box's " + var + "-range does not cover the run");
-      Box K;
-      if (!krawczyk(nets, sys, X, K)) reject(claim, "Krawczyk's K(X) is not inside the interior of X: the box is not proved to hold one zero");
-      for (std::size_t i = 0; i + 1 < Y.size(); ++i) {
-        Box K2;
-        krawczyk(nets, sys, Y[i], K2);
-        if (K2.lo.size() != m) reject(claim, "K(Y_" + std::to_string(i) + ") is not computable");
-        for (std::size_t v = 0; v < m; ++v)
-          if (Y[i + 1].lo[v] > std::max(Y[i].lo[v], K2.lo[v]) || Y[i + 1].hi[v] < std::min(Y[i].hi[v], K2.hi[v]))
-            reject(claim, "chain box " + std::to_string(i + 1) + " does not contain Y_" + std::to_string(i) + " ∩ K(Y_" + std::to_string(i) + ")");
-      }
       const std::string side = prover.check_end(sys.kind, X, lo, hi);
       if (!side.empty()) reject(claim, side);
       const json& br = at(it, "bracket", name);
       const auto b = rats(br, 2, name + ".bracket");
-      const mpq_class need_lo = std::max(lo, Y.back().lo[1]), need_hi = std::min(hi, Y.back().hi[1]);
-      if (need_lo > need_hi) reject(claim, "the last chain box misses the run");
-      if (b[0] > need_lo || b[1] < need_hi || b[0] < lo || b[1] > hi)
-        reject(claim, "the bracket [" + q(b[0]) + ", " + q(b[1]) + "] does not hold [" + q(need_lo) + ", " + q(need_hi) +
-                          "] (the run ∩ the last chain box) inside the run");
+      check_krawczyk_bracket(Y.back(), 1, lo, hi, b[0], b[1], claim);
       seq.push_back({"end", lo, hi, b[0], b[1]});
       ++n_end;
       continue;
@@ -318,18 +282,8 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
 }
 
 CertificateCheck check_independent_certificate(const Scene& s, const json& scene_doc, const json& cert) {
-  CertificateCheck out;
-  try {
-    check(s, scene_doc, cert, out.checked);
-    out.valid = true;
-  } catch (const Reject& r) {
-    out.failed_claim = r.claim;
-    out.reason = r.reason;
-  } catch (const std::exception& e) {
-    out.failed_claim = "certificate format";
-    out.reason = std::string("malformed certificate after the claims checked so far: ") + e.what();
-  }
-  return out;
+  std::vector<std::string> checked;
+  return run_checker([&] { check(s, scene_doc, cert, checked); }, checked);
 }
 
 }  // namespace eccd

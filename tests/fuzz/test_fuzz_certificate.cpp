@@ -1,5 +1,5 @@
 // Fuzz: the certificate checker (io/certificate_check.hpp) on mutated
-// certificates of a few corpus scenes. The certificate text is mutated, then
+// certificates of a few corpus scenes (one of them a Bézier certificate from --arith certified). The certificate text is mutated, then
 // parsed (a text that is not JSON is an unreadable file: exit 2 at the command
 // line, not the checker's business) and checked. Every mutant must give a
 // verdict (VALID or REJECTED with the claim named), never an exception that
@@ -8,6 +8,7 @@
 // the genuine answer (a mutant cannot forge another one). Runs
 // ECCD_FUZZ_SECONDS (default 10) from ECCD_FUZZ_SEED (default random; printed).
 #include "compare/regress.hpp"
+#include "io/bezier_certificate.hpp"
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
 #include "io/scene_reader.hpp"
@@ -52,6 +53,16 @@ TEST_CASE("fuzz: the certificate checker gives a verdict on mutated certificates
     g.scene = eccd::read_scene_file(path);
     g.doc = nlohmann::json::parse(slurp(path));
     g.cert = eccd::make_certificate(g.scene, g.doc);
+    g.text = g.cert.dump(1);
+    REQUIRE(eccd::check_certificate(g.scene, g.doc, g.cert).valid);
+    genuine.push_back(std::move(g));
+  }
+  {  // a Bézier certificate (certify --arith certified: io/bezier_certificate.hpp)
+    Genuine g;
+    std::string path = std::string(ECCD_SOURCE_DIR) + "/cases/spheres/spheres-crossing.json";
+    g.scene = eccd::read_scene_file(path);
+    g.doc = nlohmann::json::parse(slurp(path));
+    g.cert = eccd::make_bezier_certificate(g.scene, g.doc);
     g.text = g.cert.dump(1);
     REQUIRE(eccd::check_certificate(g.scene, g.doc, g.cert).valid);
     genuine.push_back(std::move(g));
