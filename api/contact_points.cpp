@@ -9,7 +9,9 @@
 #include "number/rational_traits.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <type_traits>
 
 namespace eccd {
 
@@ -35,6 +37,12 @@ ContactPoint point_of(const ContactGeometry<T, 4>& g) {
   return cp;
 }
 
+template <class T>
+std::optional<MovingPair<T, 4>>& rounded_pair_cache(std::optional<MovingPair<double, 4>>& d, std::optional<MovingPair<Mpfr, 4>>& m) {
+  if constexpr (std::is_same_v<T, double>) return d;
+  else return m;
+}
+
 mpq_class instant_value(const Instant& i) {
   if (i.certified()) return (*i.lo + *i.hi) / 2;
   if (std::isfinite(i.value)) return mpq_class(i.value);
@@ -51,6 +59,9 @@ void add_contact_points_3d(const Scene& scene, Solution& s) {
   std::vector<ContactPoint> pts;
   const bool floating = s.arith.kind == Arithmetic::Double || s.arith.kind == Arithmetic::Mpfr;
   std::optional<PreparedPair3> prepared;
+  std::optional<MovingPair<double, 4>> double_pair;
+  std::optional<MovingPair<Mpfr, 4>> mpfr_pair;
+  std::string double_trouble, mpfr_trouble;
   for (const Instant& c : s.answer.contacts) {
     const mpq_class t = instant_value(c);
     if (sgn(t) < 0 || t > 1) { pts.push_back({}); continue; }
@@ -67,8 +78,12 @@ void add_contact_points_3d(const Scene& scene, Solution& s) {
     }
     auto run = [&](const auto& like) {
       using T = std::decay_t<decltype(like)>;
-      std::string trouble;
-      const MovingPair<T, 4> m = round_pair<T, 4>(scene, like, trouble);
+      // The rounded pair is made once per scene, not once per contact (issue 21).
+      static_assert(std::is_same_v<T, double> || std::is_same_v<T, Mpfr>);
+      std::optional<MovingPair<T, 4>>& cached = rounded_pair_cache<T>(double_pair, mpfr_pair);
+      std::string& trouble = std::is_same_v<T, double> ? double_trouble : mpfr_trouble;
+      if (!cached) cached = round_pair<T, 4>(scene, like, trouble);
+      const MovingPair<T, 4>& m = *cached;
       if (!trouble.empty()) return ContactPoint{};
       const T tt = scalar_traits<T>::from_rational(t, like);
       return point_of<T>(contact_geometry<T, 4>(quadric_at<T, 4>(m.qa, m.na, tt), quadric_at<T, 4>(m.qb, m.nb, tt)));
