@@ -8,7 +8,9 @@
 #include "kernel/fast_quartic.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
+#include "kernel/quartic_sign_status.hpp"
 #include "kernel/quartic_status.hpp"
+#include "number/forward_bound.hpp"
 #include "number/interval.hpp"
 #include "number/mpfi_interval.hpp"
 #include "number/mpfr_real.hpp"
@@ -97,6 +99,7 @@ void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& po
 template <class T>
 T from_double(double x) {
   if constexpr (std::is_same_v<T, Rational>) return Rational(x);
+  else if constexpr (std::is_same_v<T, ForwardBound>) return ForwardBound::exact(x);
   else return T(x, 0);  // Bounded<double>: the given double is exact
 }
 
@@ -138,8 +141,11 @@ Mat<T, N> shape_matrix(const std::array<double, N - 1>& axes) {
   const T zero = from_double<T>(0), one = from_double<T>(1);
   for (auto& row : q) row.fill(zero);
   for (int i = 0; i < N - 1; ++i) {
-    T a = from_double<T>(axes[i]);
-    q[i][i] = one / (a * a);
+    if constexpr (std::is_same_v<T, ForwardBound>) q[i][i] = ForwardBound::inverse_square_leaf(axes[i]);
+    else {
+      T a = from_double<T>(axes[i]);
+      q[i][i] = one / (a * a);
+    }
   }
   q[N - 1][N - 1] = zero - one;
   return q;
@@ -160,11 +166,12 @@ Status exact_pose_status(const std::array<double, N - 1>& axes_a, const Mat<doub
 }
 
 // Double: a in standard position, b relative to it; 001 Appendix A in 3D.
-template <int N>
+// T = ForwardBound (the fast path: a-priori bound, signs of Δ and Descartes,
+// kernel/quartic_sign_status.hpp) or Bounded<double> (running bound, Sturm).
+template <int N, class T = ForwardBound>
 Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
                           const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
-  using T = Bounded<double>;
-  const T zero(0.0, 0);
+  const T zero = from_double<T>(0.0);
   Mat<T, N> nb = affine_adjugate<T, N>(pose_b);
   Mat<T, N> r;  // adj(M_b) M_a: b's frame relative to a's; affine, so its last row is (0 ... 0 det R_b)
   for (int i = 0; i < N - 1; ++i)
@@ -187,7 +194,9 @@ Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<dou
     }
   Mat<T, N> qa = shape_matrix<T, N>(axes_a);
   if constexpr (N == 4) {
-    return status_of(appendix_a_coefficients(qa[0][0], qa[1][1], qa[2][2], b));
+    std::array<T, 5> g = appendix_a_coefficients(qa[0][0], qa[1][1], qa[2][2], b);
+    if constexpr (std::is_same_v<T, ForwardBound>) return quartic_sign_status(g);
+    else return status_of(g);
   } else {
     // det(λ diag(d1, d2, d3) - b), the 3x3 analogue of Appendix A.
     const T &d1 = qa[0][0], &d2 = qa[1][1], &d3 = qa[2][2];
@@ -200,16 +209,26 @@ Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<dou
   }
 }
 
+// The double test: the fast ForwardBound path, and where it cannot decide
+// (Δ within its bound of 0, e.g. the positive double root of symmetric
+// shapes) the running-bound Sturm test, which decides some of those.
+template <int N>
+Status double_pose_status_filtered(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                                   const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  Status s = double_pose_status<N, ForwardBound>(axes_a, pose_a, axes_b, pose_b);
+  return s != Status::uncertain ? s : double_pose_status<N, Bounded<double>>(axes_a, pose_a, axes_b, pose_b);
+}
+
 template <int N>
 Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
                    const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b, const Arithmetic& arith) {
   check_shape<N>(axes_a, pose_a, "a");
   check_shape<N>(axes_b, pose_b, "b");
   switch (arith.kind) {
-    case Arithmetic::Double: return double_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    case Arithmetic::Double: return double_pose_status_filtered<N>(axes_a, pose_a, axes_b, pose_b);
     case Arithmetic::Exact: return exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
     case Arithmetic::Certified: {  // the filtered predicate: double with its error bound, exact only when it cannot decide
-      Status s = double_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+      Status s = double_pose_status_filtered<N>(axes_a, pose_a, axes_b, pose_b);
       return s != Status::uncertain ? s : exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
     }
     default: throw std::invalid_argument("static test from two poses: arithmetic " + arith.name() + " is not offered (double or exact)");

@@ -16,10 +16,17 @@
 //    3D): a proof about the doubles given.
 //  - double: a in standard position (001 section 3), b = Rᵀ Q_b R with R =
 //    adj(M_b) M_a; in 3D f by 001 Appendix A (kernel/fast_quartic.hpp), in 2D
-//    by the same closed form for a 3x3 diagonal A; then the same status rules
-//    in Bounded<double> (number/running_error.hpp): a status only where
-//    double's own error bound makes every sign it needs certain, uncertain
-//    otherwise. It allocates nothing.
+//    by the same closed form for a 3x3 diagonal A. Fast path (issue 21): all
+//    of it in plain double with an a-priori error bound carried as a
+//    magnitude and a rounding depth (number/forward_bound.hpp, the derivation
+//    is there), status from signs only: 2D 003 Theorem 6's rule, 3D the
+//    quartic's discriminant and Descartes (kernel/quartic_sign_status.hpp,
+//    the bound on Δ's sign derived there). Where a sign is within its bound
+//    (Δ ≈ 0: touching, near-touching, or a positive double root of symmetric
+//    shapes such as two spheres) the running-bound test follows: the same
+//    computation in Bounded<double> (number/running_error.hpp) with the Sturm
+//    count in 3D. A status only where an error bound makes every sign it
+//    needs certain, uncertain otherwise. It allocates nothing.
 // Scene at t: the scene's motions at t (kernel/prepared_scene.hpp for exact;
 // the scene's numbers rounded for double and MPFR, as `eccd solve` does);
 // Certified (issue 18 point 5) is a filtered predicate that gives the exact
