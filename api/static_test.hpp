@@ -46,6 +46,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <span>
 
 namespace eccd {
 
@@ -64,5 +65,19 @@ Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith
 // The status of two shapes at two poses: arith double (default), exact or certified (double filter, then exact).
 Status static_status(const Ellipse& a, const Ellipse& b, const Arithmetic& arith = Arithmetic::double_precision());
 Status static_status(const Ellipsoid& a, const Ellipsoid& b, const Arithmetic& arith = Arithmetic::double_precision());
+
+// Batched static test from two poses (issue 21): out[i] = static_status(a[i], b[i], arith) for every i, the same
+// answer pair by pair (arith double, exact or certified). In double (and as certified's filter) the pairs go
+// through in blocks of kStaticBatchLanes: the relative pose and f's coefficients with their a-priori bounds
+// (ForwardBound) for the whole block in one loop over the pairs' lanes (structure of arrays inside the block,
+// straight-line code: the compiler vectorises it), then the sign rule per pair; a pair the fast path cannot
+// decide takes the single-pair path (running bound, then exact for certified). Errors: std::invalid_argument
+// as static_status (naming the pair's index), or when the spans' sizes differ; out is written only when every
+// pair is valid.
+inline constexpr int kStaticBatchLanes = 8;
+void static_status_batch(std::span<const Ellipsoid> a, std::span<const Ellipsoid> b, std::span<Status> out,
+                         const Arithmetic& arith = Arithmetic::double_precision());
+void static_status_batch(std::span<const Ellipse> a, std::span<const Ellipse> b, std::span<Status> out,
+                         const Arithmetic& arith = Arithmetic::double_precision());
 
 }  // namespace eccd

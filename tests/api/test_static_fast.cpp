@@ -164,3 +164,47 @@ TEST_CASE("fast double static test never disagrees with the exact status (random
   INFO(near_decided << " of " << near_asymmetric << " near-touching asymmetric pairs decided in double");
   CHECK(near_decided > near_asymmetric / 3);  // the 2^-8 and 2^-20 offsets at least are mostly decided
 }
+
+TEST_CASE("static_status_batch gives static_status pair by pair (double and certified, 2D and 3D)", "[static]") {
+  std::mt19937_64 rng(210004);
+  std::uniform_real_distribution<double> axis(0.2, 3), ang(0, 6.3), pos(-4, 4), q(-1, 1);
+  const int n = 1003;  // not a multiple of the block
+  std::vector<Ellipsoid> a3, b3;
+  std::vector<Ellipse> a2, b2;
+  for (int i = 0; i < n; ++i) {
+    if (i % 10 == 3) {  // exactly touching spheres along x
+      a3.push_back(Ellipsoid{{0.5, 0.5, 0.5}, pose3({1, 0, 0, 0}, 0, 0, 0)});
+      b3.push_back(Ellipsoid{{0.75, 0.75, 0.75}, pose3({1, 0, 0, 0}, 1.25, 0, 0)});
+      a2.push_back(Ellipse{{0.5, 0.25}, pose2(0, 0, 0)});
+      b2.push_back(Ellipse{{0.75, 1.5}, pose2(0, 1.25, 0)});
+      continue;
+    }
+    a3.push_back(Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
+    b3.push_back(Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
+    a2.push_back(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))});
+    b2.push_back(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))});
+  }
+  for (const Arithmetic& arith : {Arithmetic::double_precision(), Arithmetic::certified()}) {
+    INFO(arith.name());
+    std::vector<Status> o3(n), o2(n);
+    static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3), std::span<Status>(o3), arith);
+    static_status_batch(std::span<const Ellipse>(a2), std::span<const Ellipse>(b2), std::span<Status>(o2), arith);
+    for (int i = 0; i < n; ++i) {
+      INFO("pair " << i);
+      CHECK(o3[i] == static_status(a3[i], b3[i], arith));
+      CHECK(o2[i] == static_status(a2[i], b2[i], arith));
+      if (i % 10 == 3) {
+        CHECK(o3[i] == (arith.kind == Arithmetic::Double ? Status::uncertain : Status::touching));
+        CHECK(o2[i] == (arith.kind == Arithmetic::Double ? Status::uncertain : Status::touching));
+      }
+    }
+  }
+  // Bad input: sizes, and a bad pair named by its index, nothing written.
+  std::vector<Status> out(n, Status::separate);
+  CHECK_THROWS_AS(static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3).first(5), std::span<Status>(out)),
+                  std::invalid_argument);
+  b3[7].semi_axes[1] = -1;
+  CHECK_THROWS_WITH(static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3), std::span<Status>(out)),
+                    Catch::Contains("pair 7"));
+  CHECK(out[0] == Status::separate);
+}
