@@ -230,6 +230,9 @@ Status coefficient_status(const std::array<T, K>& g) {
   else return status_of(g);
 }
 
+template <class T, std::size_t K>
+[[gnu::flatten]] Status fast_coefficient_status(const std::array<T, K>& g) { return coefficient_status(g); }
+
 template <int N, class T>
 Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
                           const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
@@ -239,10 +242,19 @@ Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<dou
 // The double test: the fast ForwardBound path, and where it cannot decide
 // (Δ within its bound of 0, e.g. the positive double root of symmetric
 // shapes) the running-bound Sturm test, which decides some of those.
+// The fast path as one function: flatten inlines the whole straight-line
+// program (the ForwardBound operations, Appendix A, Δ), which the compiler
+// otherwise leaves as calls passing 24-byte values through memory.
+template <int N>
+[[gnu::flatten]] Status fast_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                                         const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  return double_pose_status<N, ForwardBound>(axes_a, pose_a, axes_b, pose_b);
+}
+
 template <int N>
 Status double_pose_status_filtered(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
                                    const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
-  Status s = double_pose_status<N, ForwardBound>(axes_a, pose_a, axes_b, pose_b);
+  Status s = fast_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
   return s != Status::uncertain ? s : double_pose_status<N, Bounded<double>>(axes_a, pose_a, axes_b, pose_b);
 }
 
@@ -259,6 +271,38 @@ Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>
       return s != Status::uncertain ? s : exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
     }
     default: throw std::invalid_argument("static test from two poses: arithmetic " + arith.name() + " is not offered (double or exact)");
+  }
+}
+
+// One block of the batch: the lanes' inputs in structure of arrays (a short
+// last block repeats its first pair), then f's coefficients with their
+// a-priori bounds for every lane in one straight-line loop (vectorised).
+template <int N, class Shape>
+[[gnu::flatten]] void coefficient_block(const Shape* a, const Shape* b, int lanes, double (&gv)[N + 1][kStaticBatchLanes],
+                                        double (&gm)[N + 1][kStaticBatchLanes], double (&gd)[N + 1][kStaticBatchLanes]) {
+  constexpr int L = kStaticBatchLanes;
+  // Structure of arrays: the block's inputs lane by lane (a short last block repeats its first pair).
+  double axa[N - 1][L], axb[N - 1][L], ma[N][N][L], mb[N][N][L];
+  for (int l = 0; l < L; ++l) {
+    const Shape& sa = a[l < lanes ? l : 0];
+    const Shape& sb = b[l < lanes ? l : 0];
+    for (int k = 0; k < N - 1; ++k) { axa[k][l] = sa.semi_axes[k]; axb[k][l] = sb.semi_axes[k]; }
+    for (int r = 0; r < N; ++r)
+      for (int c = 0; c < N; ++c) { ma[r][c][l] = sa.pose[r][c]; mb[r][c][l] = sb.pose[r][c]; }
+  }
+  // The vectorised loop: straight-line code over the lanes.
+  for (int l = 0; l < L; ++l) {
+    std::array<double, N - 1> xa, xb;
+    Mat<double, N> pa, pb;
+#pragma GCC unroll 16
+    for (int k = 0; k < N - 1; ++k) { xa[k] = axa[k][l]; xb[k] = axb[k][l]; }
+#pragma GCC unroll 16
+    for (int r = 0; r < N; ++r)
+#pragma GCC unroll 16
+      for (int c = 0; c < N; ++c) { pa[r][c] = ma[r][c][l]; pb[r][c] = mb[r][c][l]; }
+    std::array<ForwardBound, N + 1> g = pose_coefficients<N, ForwardBound>(xa, pa, xb, pb);
+#pragma GCC unroll 16
+    for (int k = 0; k <= N; ++k) { gv[k][l] = g[k].value(); gm[k][l] = g[k].magnitude(); gd[k][l] = g[k].depth(); }
   }
 }
 
@@ -287,34 +331,11 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
   for (std::size_t base = 0; base < n; base += L) {
     const int lanes = int(std::min<std::size_t>(L, n - base));
     double gv[N + 1][L], gm[N + 1][L], gd[N + 1][L];
-    // The vectorised loop (a full block; a short last block repeats its first pair in the spare lanes).
-    // Structure of arrays: the block's inputs lane by lane (a short last block repeats its first pair).
-    double axa[N - 1][L], axb[N - 1][L], ma[N][N][L], mb[N][N][L];
-    for (int l = 0; l < L; ++l) {
-      const Shape& sa = a[base + (l < lanes ? l : 0)];
-      const Shape& sb = b[base + (l < lanes ? l : 0)];
-      for (int k = 0; k < N - 1; ++k) { axa[k][l] = sa.semi_axes[k]; axb[k][l] = sb.semi_axes[k]; }
-      for (int r = 0; r < N; ++r)
-        for (int c = 0; c < N; ++c) { ma[r][c][l] = sa.pose[r][c]; mb[r][c][l] = sb.pose[r][c]; }
-    }
-    // The vectorised loop: straight-line code over the lanes.
-    for (int l = 0; l < L; ++l) {
-      std::array<double, N - 1> xa, xb;
-      Mat<double, N> pa, pb;
-#pragma GCC unroll 16
-      for (int k = 0; k < N - 1; ++k) { xa[k] = axa[k][l]; xb[k] = axb[k][l]; }
-#pragma GCC unroll 16
-      for (int r = 0; r < N; ++r)
-#pragma GCC unroll 16
-        for (int c = 0; c < N; ++c) { pa[r][c] = ma[r][c][l]; pb[r][c] = mb[r][c][l]; }
-      std::array<ForwardBound, N + 1> g = pose_coefficients<N, ForwardBound>(xa, pa, xb, pb);
-#pragma GCC unroll 16
-      for (int k = 0; k <= N; ++k) { gv[k][l] = g[k].value(); gm[k][l] = g[k].magnitude(); gd[k][l] = g[k].depth(); }
-    }
+    coefficient_block<N, Shape>(a.data() + base, b.data() + base, lanes, gv, gm, gd);
     for (int l = 0; l < lanes; ++l) {
       std::array<ForwardBound, N + 1> g;
       for (int k = 0; k <= N; ++k) g[k] = ForwardBound(gv[k][l], gm[k][l], gd[k][l]);
-      Status s = coefficient_status(g);
+      Status s = fast_coefficient_status(g);
       const std::size_t i = base + l;
       if (s == Status::uncertain) s = pose_status<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
       out[i] = s;
