@@ -8,13 +8,16 @@
 #include "kernel/fast_quartic.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
+#include "kernel/quartic_sign_status.hpp"
 #include "kernel/quartic_status.hpp"
+#include "number/forward_bound.hpp"
 #include "number/interval.hpp"
 #include "number/mpfi_interval.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/rational_traits.hpp"
 #include "number/running_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -97,6 +100,7 @@ void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& po
 template <class T>
 T from_double(double x) {
   if constexpr (std::is_same_v<T, Rational>) return Rational(x);
+  else if constexpr (std::is_same_v<T, ForwardBound>) return ForwardBound::exact(x);
   else return T(x, 0);  // Bounded<double>: the given double is exact
 }
 
@@ -104,9 +108,11 @@ T from_double(double x) {
 // so that N M = det(R) I (a positive multiple of M^-1 up to the sign of det R,
 // which the quadric Nᵀ Q N squares away). R is not singular (check_shape).
 template <class T, int N>
-Mat<T, N> affine_adjugate(const Mat<double, N>& pose) {
+[[gnu::always_inline]] inline Mat<T, N> affine_adjugate(const Mat<double, N>& pose) {
   Mat<T, N> m;
+  #pragma GCC unroll 16
   for (int i = 0; i < N; ++i)
+    #pragma GCC unroll 16
     for (int j = 0; j < N; ++j) m[i][j] = from_double<T>(pose[i][j]);
   Mat<T, N> n;
   T det;
@@ -122,8 +128,10 @@ Mat<T, N> affine_adjugate(const Mat<double, N>& pose) {
     det = m[0][0] * n[0][0] + m[0][1] * n[1][0] + m[0][2] * n[2][0];
   }
   constexpr int d = N - 1;
+  #pragma GCC unroll 16
   for (int i = 0; i < d; ++i) {
     T s = m[0][0] - m[0][0];
+    #pragma GCC unroll 16
     for (int k = 0; k < d; ++k) s = s - n[i][k] * m[k][d];
     n[i][d] = s;
     n[d][i] = m[0][0] - m[0][0];
@@ -133,13 +141,18 @@ Mat<T, N> affine_adjugate(const Mat<double, N>& pose) {
 }
 
 template <class T, int N>
-Mat<T, N> shape_matrix(const std::array<double, N - 1>& axes) {
+[[gnu::always_inline]] inline Mat<T, N> shape_matrix(const std::array<double, N - 1>& axes) {
   Mat<T, N> q;
   const T zero = from_double<T>(0), one = from_double<T>(1);
+  #pragma GCC unroll 16
   for (auto& row : q) row.fill(zero);
+  #pragma GCC unroll 16
   for (int i = 0; i < N - 1; ++i) {
-    T a = from_double<T>(axes[i]);
-    q[i][i] = one / (a * a);
+    if constexpr (std::is_same_v<T, ForwardBound>) q[i][i] = ForwardBound::inverse_square_leaf(axes[i]);
+    else {
+      T a = from_double<T>(axes[i]);
+      q[i][i] = one / (a * a);
+    }
   }
   q[N - 1][N - 1] = zero - one;
   return q;
@@ -160,26 +173,36 @@ Status exact_pose_status(const std::array<double, N - 1>& axes_a, const Mat<doub
 }
 
 // Double: a in standard position, b relative to it; 001 Appendix A in 3D.
-template <int N>
-Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
-                          const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
-  using T = Bounded<double>;
-  const T zero(0.0, 0);
+// T = ForwardBound (the fast path: a-priori bound, signs of Δ and Descartes,
+// kernel/quartic_sign_status.hpp) or Bounded<double> (running bound, Sturm).
+// pose_coefficients: f's coefficients g_0..g_{N-1}; straight-line code for
+// ForwardBound (the batch loop below vectorises it across pairs).
+template <int N, class T>
+[[gnu::always_inline]] inline std::array<T, N + 1> pose_coefficients(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                                       const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  const T zero = from_double<T>(0.0);
   Mat<T, N> nb = affine_adjugate<T, N>(pose_b);
   Mat<T, N> r;  // adj(M_b) M_a: b's frame relative to a's; affine, so its last row is (0 ... 0 det R_b)
+  #pragma GCC unroll 16
   for (int i = 0; i < N - 1; ++i)
+    #pragma GCC unroll 16
     for (int j = 0; j < N; ++j) {
       T s = zero;
+      #pragma GCC unroll 16
       for (int k = 0; k < N; ++k)
-        if (pose_a[k][j] != 0) s = s + nb[i][k] * from_double<T>(pose_a[k][j]);
+        if (std::is_same_v<T, ForwardBound> || pose_a[k][j] != 0) s = s + nb[i][k] * from_double<T>(pose_a[k][j]);
       r[i][j] = s;
     }
+  #pragma GCC unroll 16
   for (int j = 0; j < N; ++j) r[N - 1][j] = j == N - 1 ? nb[N - 1][N - 1] : zero;
   // b = Rᵀ Q_b R with Q_b diagonal: b_ij = sum_k q_k r_ki r_kj (40 products in 3D, not 128).
   Mat<T, N> qb = shape_matrix<T, N>(axes_b), b;
+  #pragma GCC unroll 16
   for (int i = 0; i < N; ++i)
+    #pragma GCC unroll 16
     for (int j = i; j < N; ++j) {
       T s = zero;
+      #pragma GCC unroll 16
       for (int k = 0; k < N - 1; ++k) s = s + qb[k][k] * r[k][i] * r[k][j];
       if (i == N - 1 && j == N - 1) s = s + qb[N - 1][N - 1] * r[N - 1][N - 1] * r[N - 1][N - 1];  // the last row's one entry
       b[i][j] = s;
@@ -187,17 +210,52 @@ Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<dou
     }
   Mat<T, N> qa = shape_matrix<T, N>(axes_a);
   if constexpr (N == 4) {
-    return status_of(appendix_a_coefficients(qa[0][0], qa[1][1], qa[2][2], b));
+    return appendix_a_coefficients(qa[0][0], qa[1][1], qa[2][2], b);
   } else {
     // det(λ diag(d1, d2, d3) - b), the 3x3 analogue of Appendix A.
     const T &d1 = qa[0][0], &d2 = qa[1][1], &d3 = qa[2][2];
     const T &b11 = b[0][0], &b12 = b[0][1], &b13 = b[0][2], &b22 = b[1][1], &b23 = b[1][2], &b33 = b[2][2];
     T m1 = b22 * b33 - b23 * b23, m2 = b11 * b33 - b13 * b13, m3 = b11 * b22 - b12 * b12;
     T det = b11 * m1 - b12 * (b12 * b33 - b13 * b23) + b13 * (b12 * b23 - b13 * b22);
-    std::array<T, 4> g{zero - det, d1 * m1 + d2 * m2 + d3 * m3, zero - (d1 * d2 * b33 + d1 * d3 * b22 + d2 * d3 * b11),
-                       d1 * d2 * d3};
-    return status_of(g);
+    return std::array<T, 4>{zero - det, d1 * m1 + d2 * m2 + d3 * m3, zero - (d1 * d2 * b33 + d1 * d3 * b22 + d2 * d3 * b11),
+                            d1 * d2 * d3};
   }
+}
+
+// The status from the coefficients: the sign rules (ForwardBound: Δ and
+// Descartes; Bounded<double>: the Sturm count in 3D, 003 Theorem 6 in 2D).
+template <class T, std::size_t K>
+Status coefficient_status(const std::array<T, K>& g) {
+  if constexpr (K == 5 && std::is_same_v<T, ForwardBound>) return quartic_sign_status(g);
+  else return status_of(g);
+}
+
+template <class T, std::size_t K>
+[[gnu::flatten]] Status fast_coefficient_status(const std::array<T, K>& g) { return coefficient_status(g); }
+
+template <int N, class T>
+Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                          const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  return coefficient_status(pose_coefficients<N, T>(axes_a, pose_a, axes_b, pose_b));
+}
+
+// The double test: the fast ForwardBound path, and where it cannot decide
+// (Δ within its bound of 0, e.g. the positive double root of symmetric
+// shapes) the running-bound Sturm test, which decides some of those.
+// The fast path as one function: flatten inlines the whole straight-line
+// program (the ForwardBound operations, Appendix A, Δ), which the compiler
+// otherwise leaves as calls passing 24-byte values through memory.
+template <int N>
+[[gnu::flatten]] Status fast_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                                         const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  return double_pose_status<N, ForwardBound>(axes_a, pose_a, axes_b, pose_b);
+}
+
+template <int N>
+Status double_pose_status_filtered(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
+                                   const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+  Status s = fast_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+  return s != Status::uncertain ? s : double_pose_status<N, Bounded<double>>(axes_a, pose_a, axes_b, pose_b);
 }
 
 template <int N>
@@ -206,17 +264,93 @@ Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>
   check_shape<N>(axes_a, pose_a, "a");
   check_shape<N>(axes_b, pose_b, "b");
   switch (arith.kind) {
-    case Arithmetic::Double: return double_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    case Arithmetic::Double: return double_pose_status_filtered<N>(axes_a, pose_a, axes_b, pose_b);
     case Arithmetic::Exact: return exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
     case Arithmetic::Certified: {  // the filtered predicate: double with its error bound, exact only when it cannot decide
-      Status s = double_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+      Status s = double_pose_status_filtered<N>(axes_a, pose_a, axes_b, pose_b);
       return s != Status::uncertain ? s : exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
     }
     default: throw std::invalid_argument("static test from two poses: arithmetic " + arith.name() + " is not offered (double or exact)");
   }
 }
 
+// One block of the batch: the lanes' inputs in structure of arrays (a short
+// last block repeats its first pair), then f's coefficients with their
+// a-priori bounds for every lane in one straight-line loop (vectorised).
+template <int N, class Shape>
+[[gnu::flatten]] void coefficient_block(const Shape* a, const Shape* b, int lanes, double (&gv)[N + 1][kStaticBatchLanes],
+                                        double (&gm)[N + 1][kStaticBatchLanes], double (&gd)[N + 1][kStaticBatchLanes]) {
+  constexpr int L = kStaticBatchLanes;
+  // Structure of arrays: the block's inputs lane by lane (a short last block repeats its first pair).
+  double axa[N - 1][L], axb[N - 1][L], ma[N][N][L], mb[N][N][L];
+  for (int l = 0; l < L; ++l) {
+    const Shape& sa = a[l < lanes ? l : 0];
+    const Shape& sb = b[l < lanes ? l : 0];
+    for (int k = 0; k < N - 1; ++k) { axa[k][l] = sa.semi_axes[k]; axb[k][l] = sb.semi_axes[k]; }
+    for (int r = 0; r < N; ++r)
+      for (int c = 0; c < N; ++c) { ma[r][c][l] = sa.pose[r][c]; mb[r][c][l] = sb.pose[r][c]; }
+  }
+  // The vectorised loop: straight-line code over the lanes.
+  for (int l = 0; l < L; ++l) {
+    std::array<double, N - 1> xa, xb;
+    Mat<double, N> pa, pb;
+#pragma GCC unroll 16
+    for (int k = 0; k < N - 1; ++k) { xa[k] = axa[k][l]; xb[k] = axb[k][l]; }
+#pragma GCC unroll 16
+    for (int r = 0; r < N; ++r)
+#pragma GCC unroll 16
+      for (int c = 0; c < N; ++c) { pa[r][c] = ma[r][c][l]; pb[r][c] = mb[r][c][l]; }
+    std::array<ForwardBound, N + 1> g = pose_coefficients<N, ForwardBound>(xa, pa, xb, pb);
+#pragma GCC unroll 16
+    for (int k = 0; k <= N; ++k) { gv[k][l] = g[k].value(); gm[k][l] = g[k].magnitude(); gd[k][l] = g[k].depth(); }
+  }
+}
+
+// The batch: validation first (nothing written on a bad pair), then blocks of
+// kStaticBatchLanes pairs: the coefficients of every lane in one loop (SoA
+// lanes g[k][lane]: value, magnitude, depth), then the sign rule per lane.
+template <int N, class Shape>
+void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::span<Status> out, const Arithmetic& arith) {
+  if (a.size() != b.size() || a.size() != out.size())
+    throw std::invalid_argument("static_status_batch: the spans have different sizes (" + std::to_string(a.size()) + ", " +
+                                std::to_string(b.size()) + ", " + std::to_string(out.size()) + ")");
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    try {
+      check_shape<N>(a[i].semi_axes, a[i].pose, "a");
+      check_shape<N>(b[i].semi_axes, b[i].pose, "b");
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("static_status_batch: pair " + std::to_string(i) + ": " + e.what());
+    }
+  }
+  if (arith.kind != Arithmetic::Double && arith.kind != Arithmetic::Certified) {
+    for (std::size_t i = 0; i < a.size(); ++i) out[i] = pose_status<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
+    return;
+  }
+  constexpr int L = kStaticBatchLanes;
+  const std::size_t n = a.size();
+  for (std::size_t base = 0; base < n; base += L) {
+    const int lanes = int(std::min<std::size_t>(L, n - base));
+    double gv[N + 1][L], gm[N + 1][L], gd[N + 1][L];
+    coefficient_block<N, Shape>(a.data() + base, b.data() + base, lanes, gv, gm, gd);
+    for (int l = 0; l < lanes; ++l) {
+      std::array<ForwardBound, N + 1> g;
+      for (int k = 0; k <= N; ++k) g[k] = ForwardBound(gv[k][l], gm[k][l], gd[k][l]);
+      Status s = fast_coefficient_status(g);
+      const std::size_t i = base + l;
+      if (s == Status::uncertain) s = pose_status<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
+      out[i] = s;
+    }
+  }
+}
+
 }  // namespace
+
+void static_status_batch(std::span<const Ellipsoid> a, std::span<const Ellipsoid> b, std::span<Status> out, const Arithmetic& arith) {
+  pose_status_batch<4>(a, b, out, arith);
+}
+void static_status_batch(std::span<const Ellipse> a, std::span<const Ellipse> b, std::span<Status> out, const Arithmetic& arith) {
+  pose_status_batch<3>(a, b, out, arith);
+}
 
 Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith) {
   if (t < 0 || t > 1) throw std::invalid_argument("status_at: t = " + t.get_str() + " is outside [0, 1]");

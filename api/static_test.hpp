@@ -16,10 +16,17 @@
 //    3D): a proof about the doubles given.
 //  - double: a in standard position (001 section 3), b = Rᵀ Q_b R with R =
 //    adj(M_b) M_a; in 3D f by 001 Appendix A (kernel/fast_quartic.hpp), in 2D
-//    by the same closed form for a 3x3 diagonal A; then the same status rules
-//    in Bounded<double> (number/running_error.hpp): a status only where
-//    double's own error bound makes every sign it needs certain, uncertain
-//    otherwise. It allocates nothing.
+//    by the same closed form for a 3x3 diagonal A. Fast path (issue 21): all
+//    of it in plain double with an a-priori error bound carried as a
+//    magnitude and a rounding depth (number/forward_bound.hpp, the derivation
+//    is there), status from signs only: 2D 003 Theorem 6's rule, 3D the
+//    quartic's discriminant and Descartes (kernel/quartic_sign_status.hpp,
+//    the bound on Δ's sign derived there). Where a sign is within its bound
+//    (Δ ≈ 0: touching, near-touching, or a positive double root of symmetric
+//    shapes such as two spheres) the running-bound test follows: the same
+//    computation in Bounded<double> (number/running_error.hpp) with the Sturm
+//    count in 3D. A status only where an error bound makes every sign it
+//    needs certain, uncertain otherwise. It allocates nothing.
 // Scene at t: the scene's motions at t (kernel/prepared_scene.hpp for exact;
 // the scene's numbers rounded for double and MPFR, as `eccd solve` does);
 // Certified (issue 18 point 5) is a filtered predicate that gives the exact
@@ -39,6 +46,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <span>
 
 namespace eccd {
 
@@ -57,5 +65,19 @@ Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith
 // The status of two shapes at two poses: arith double (default), exact or certified (double filter, then exact).
 Status static_status(const Ellipse& a, const Ellipse& b, const Arithmetic& arith = Arithmetic::double_precision());
 Status static_status(const Ellipsoid& a, const Ellipsoid& b, const Arithmetic& arith = Arithmetic::double_precision());
+
+// Batched static test from two poses (issue 21): out[i] = static_status(a[i], b[i], arith) for every i, the same
+// answer pair by pair (arith double, exact or certified). In double (and as certified's filter) the pairs go
+// through in blocks of kStaticBatchLanes: the relative pose and f's coefficients with their a-priori bounds
+// (ForwardBound) for the whole block in one loop over the pairs' lanes (structure of arrays inside the block,
+// straight-line code: the compiler vectorises it), then the sign rule per pair; a pair the fast path cannot
+// decide takes the single-pair path (running bound, then exact for certified). Errors: std::invalid_argument
+// as static_status (naming the pair's index), or when the spans' sizes differ; out is written only when every
+// pair is valid.
+inline constexpr int kStaticBatchLanes = 8;
+void static_status_batch(std::span<const Ellipsoid> a, std::span<const Ellipsoid> b, std::span<Status> out,
+                         const Arithmetic& arith = Arithmetic::double_precision());
+void static_status_batch(std::span<const Ellipse> a, std::span<const Ellipse> b, std::span<Status> out,
+                         const Arithmetic& arith = Arithmetic::double_precision());
 
 }  // namespace eccd
