@@ -99,8 +99,10 @@ TEST_CASE("solve: double and certified runs of paper 002's example, typed", "[ap
   o.arith = eccd::Arithmetic::certified();
   eccd::Solution c = eccd::solve(s, o);
   CHECK(c.certified);
-  CHECK(c.decided_in != "interval");  // 002's example escalates (tests/certified)
-  CHECK(c.escalations.size() >= 1);
+  // 002's example leaves the projection's interval rung (tests/certified) but is decided by the interval Bézier
+  // proof, the first 3D rung (certified/bezier_proof.hpp), before any escalation.
+  CHECK(c.decided_in == "bezier");
+  CHECK(c.escalations.empty());
   CHECK(c.answer.intervals.size() == ex.answer.intervals.size());
 
   o.method = eccd::Method::sampling;  // a grid of 0 instants is refused

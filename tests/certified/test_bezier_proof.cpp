@@ -210,7 +210,7 @@ TEST_CASE("paper 002's example (two intervals): first contact stops after the fi
   CHECK(r.answer.contacts.size() == x.contacts.size());
 }
 
-TEST_CASE("the Bézier proof does not decide a touch; the ladder still returns exact's answer", "[bezier]") {
+TEST_CASE("the Bézier proof does not decide a touch, the ladder still returns exact's answer", "[bezier]") {
   for (const char* rel : {"touch3d/touch-and-separate.json", "generated/3d-euler/3d-deg4-touch-euler-2609545266629497.json"}) {
     INFO(rel);
     Scene s = read_scene_file(kCases + rel);
@@ -228,7 +228,7 @@ TEST_CASE("the Bézier proof does not decide a touch; the ladder still returns e
   }
 }
 
-TEST_CASE("the Bézier rung keeps its budget B_Z; the caller's deadline still ends a 3D certified run", "[bezier][cost]") {
+TEST_CASE("the Bézier rung keeps its budget B_Z, the caller's deadline still ends a 3D certified run", "[bezier][cost]") {
   Scene s = read_scene_file(kCases + "spheres/spheres-crossing.json");
   REQUIRE(s.answer);
   PreparedPair<4> p = prepare_pair<4>(s);

@@ -191,7 +191,7 @@ TEST_CASE("bezier certificate: a free and an overlapping-at-start scene", "[bezi
   }
 }
 
-TEST_CASE("bezier certificate: a touch is not decided by the proof; the certified route falls back to the exact certificate",
+TEST_CASE("bezier certificate: a touch is not decided by the proof, the certified route falls back to the exact certificate",
           "[bezier-certificate]") {
   const Scene s = read_scene(src + "/cases/spheres/spheres-touch.json");
   const json doc = parse_json_document(s.source_text, s.path);
