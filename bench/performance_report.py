@@ -437,7 +437,10 @@ def answer_text(res):
     if not isinstance(res, dict):
         return ""
     if "time_ms_inside" in res:
-        t = ("collides" if res["collides"] else "no collision") + f", {res['contacts']} contact(s), {res['intervals']} interval(s)"
+        t = "collides" if res["collides"] else "no collision"
+        if "contacts" in res:  # the certified-cost set's rows count intervals only
+            t += f", {res['contacts']} contact(s)"
+        t += f", {res['intervals']} interval(s)"
         if res.get("decided_in"):
             t += f"; decided in {res['decided_in']} arithmetic"
             if res.get("escalated"):
