@@ -17,6 +17,7 @@
 // that Lemma 1 forbids (1 or 3 sign changes) is reported as `uncertain`.
 // Requirements on T: ring operations, scalar_traits<T>::sign.
 #include "kernel/discriminant.hpp"
+#include "kernel/sign_variations.hpp"
 #include "number/scalar_traits.hpp"
 
 namespace eccd {
@@ -50,15 +51,10 @@ Status cubic_contact_status(const T& g3, const T& g2, const T& g1, const T& g0) 
     return status_at_multiple_root(sign(double_root_numerator(g3, g2, g1, g0)),
                                    sign(double_root_denominator(g3, g2, g1)));
   // Δ > 0: count sign changes of f(-λ) = -g3 λ³ + g2 λ² - g1 λ + g0.
-  Sign seq[4] = {sign(g3) * Sign::negative, sign(g2), sign(g1) * Sign::negative, sign(g0)};
-  int changes = 0;
-  Sign last = Sign::zero;
-  for (Sign x : seq) {
-    if (x == Sign::uncertain) return Status::uncertain;
-    if (x == Sign::zero) continue;
-    if (last != Sign::zero && x != last) ++changes;
-    last = x;
-  }
+  const Sign seq[4] = {sign(g3) * Sign::negative, sign(g2), sign(g1) * Sign::negative, sign(g0)};
+  const SignVariations v = sign_variations_n<4>(4, [&](std::size_t k) { return seq[k]; });
+  if (v.uncertain) return Status::uncertain;
+  const int changes = v.count;
   if (changes == 2) return Status::separate;
   if (changes == 0) return Status::overlapping;
   return Status::uncertain;

@@ -73,15 +73,10 @@ Status quartic_sign_status(const std::array<T, 5>& g) {
     if constexpr (scalar_traits<T>::is_exact) return quartic_contact_status(g);
     else return Status::uncertain;
   }
-  Sign seq[5] = {sign(g[4]), sign(g[3]) * Sign::negative, sign(g[2]), sign(g[1]) * Sign::negative, sign(g[0])};
-  int changes = 0;
-  Sign last = Sign::zero;
-  for (Sign x : seq) {
-    if (x == Sign::uncertain) return Status::uncertain;
-    if (x == Sign::zero) continue;
-    if (last != Sign::zero && x != last) ++changes;
-    last = x;
-  }
+  const Sign seq[5] = {sign(g[4]), sign(g[3]) * Sign::negative, sign(g[2]), sign(g[1]) * Sign::negative, sign(g[0])};
+  const SignVariations v = sign_variations_n<5>(5, [&](std::size_t k) { return seq[k]; });
+  if (v.uncertain) return Status::uncertain;
+  const int changes = v.count;
   if (changes == 2) return Status::separate;
   if (changes == 0) return Status::overlapping;
   if constexpr (scalar_traits<T>::is_exact)
