@@ -3,6 +3,7 @@
 // --floating, every floating pipeline is also judged against the stored
 // answers (compare/verdict.hpp) and tabulated.
 #include "app/commands.hpp"
+#include "app/scene_files.hpp"
 #include "api/solve.hpp"
 #include "io/solution_json.hpp"
 #include "compare/harness.hpp"
@@ -35,37 +36,6 @@ struct RegressArgs {
   std::vector<int> mpfr_bits{128};
   double tol = 1e-6;
 };
-
-// What a .json file under DIR is (issue 15: never skip a scene silently).
-// Decided by parsing the whole file: an object whose "format" is the scene
-// format is a scene; a file that does not parse, or an object that looks like
-// a scene (a "format" starting with "ellipse-ccd-scene", or the keys "dim",
-// "a" and "b") with another or no format, is reported as an error; other JSON
-// (certificates, plot data: another "format") is not a scene.
-enum class FileKind { Scene, NotScene, Broken };
-FileKind classify_file(const fs::path& p, std::string& text, std::string& why) {
-  try {
-    text = read_file_bytes(p.string());
-  } catch (const SceneError& e) {
-    why = e.what();
-    why = why.substr(std::min(why.size(), p.string().size() + 2));  // without the path (the caller adds it)
-    return FileKind::Broken;
-  }
-  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (j.is_discarded()) { why = "not a JSON text (malformed or truncated): cannot tell whether it is a scene"; return FileKind::Broken; }
-  if (!j.is_object()) return FileKind::NotScene;
-  auto f = j.find("format");
-  const std::string scene_format = "ellipse-ccd-scene/1";
-  if (f != j.end() && f->is_string() && f->get<std::string>() == scene_format) return FileKind::Scene;
-  const bool scene_like = (f != j.end() && f->is_string() && f->get<std::string>().rfind("ellipse-ccd-scene", 0) == 0) ||
-                          (j.contains("dim") && j.contains("a") && j.contains("b"));
-  if (scene_like) {
-    std::string got = f == j.end() ? std::string("no \"format\" key") : "\"format\" " + f->dump().substr(0, 80);
-    why = "looks like a scene but has " + got + " (a scene has \"format\": \"" + scene_format + "\")";
-    return FileKind::Broken;
-  }
-  return FileKind::NotScene;
-}
 
 std::string answer_summary(const Answer& a) {
   std::string s = a.collides ? "collides" : "free";

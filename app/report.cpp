@@ -17,6 +17,7 @@
 // interrupted run (Ctrl-C, SIGTERM, kill -9) continues with `--resume`.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "app/scene_files.hpp"
 #include "app/time_left.hpp"
 #include "compare/csv.hpp"
 #include "compare/harness.hpp"
@@ -877,12 +878,20 @@ int run_report(const ReportArgs& a) {
   auto add_dir = [&](const std::string& dir, const std::string& source) {
     if (!fs::is_directory(dir)) throw std::invalid_argument(dir + ": not a folder of scene files");
     std::vector<fs::path> files;
-    for (auto& e : fs::recursive_directory_iterator(dir))
-      if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
+    std::map<fs::path, std::string> texts;  // each scene's bytes, read once: the bytes checked are the bytes run
+    for (auto& e : fs::recursive_directory_iterator(dir)) {
+      if (!e.is_regular_file() || e.path().extension() != ".json") continue;
+      std::string text, why;
+      FileKind k = classify_file(e.path(), text, why);  // animations, certificates, answers: not scenes, left out
+      if (k == FileKind::Broken) throw SceneError(e.path().string() + ": " + why);  // exit 2 before any work
+      if (k == FileKind::NotScene) continue;
+      texts[e.path()] = std::move(text);
+      files.push_back(e.path());
+    }
     std::sort(files.begin(), files.end());
     std::size_t corpus = 0;
     for (const auto& f : files) {
-      std::string text = read_file_bytes(f.string());  // read once: the bytes checked are the bytes run
+      const std::string& text = texts[f];
       Scene s = parse_scene(text, f.string());  // a bad file stops the run before any work (exit 2)
       if (source == "cases" && spec_from_note(s.note)) {  // cases/generated: the report generates its own
         ++corpus;

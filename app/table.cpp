@@ -2,6 +2,7 @@
 // scaled Bernstein) and MPFR arithmetic, side by side; '!' marks a floating
 // answer that differs from the exact one.
 #include "app/commands.hpp"
+#include "app/scene_files.hpp"
 #include "api/answer_difference.hpp"
 #include "api/solve.hpp"
 #include "io/scene_reader.hpp"
@@ -40,8 +41,13 @@ std::string short_answer(const Solution& r) {
 int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool json) {
   std::vector<fs::path> files;
   if (!fs::is_directory(dir)) throw std::invalid_argument(dir + ": not a directory");
-  for (auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
+  for (auto& e : fs::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file() || e.path().extension() != ".json") continue;
+    std::string text, why;
+    FileKind k = classify_file(e.path(), text, why);  // animations, certificates, answers: not scenes, left out
+    if (k == FileKind::Broken) throw SceneError(e.path().string() + ": " + why);
+    if (k == FileKind::Scene) files.push_back(e.path());
+  }
   std::sort(files.begin(), files.end());
   struct Col { std::string label; SolveOptions opt; };
   std::vector<Col> cols;

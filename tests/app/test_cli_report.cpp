@@ -403,3 +403,27 @@ TEST_CASE("eccd report without --name writes a new folder and leaves reports/def
   CHECK(resumed.out == "reports/" + name + "/results.csv\n");
   CHECK(!fs::exists(partial));
 }
+
+TEST_CASE("eccd report --cases: animation files under the folder are left out, a broken scene stops the run",
+          "[cli][report][folders]") {
+  // cases/ holds animations (cases/animations, format ellipse-ccd-animation/1) next to scenes: the main job
+  // (scripts/run-main.sh) once stopped on the first one, reading it as a scene.
+  eccd::clitest::TempDir t;
+  fs::create_directories(t.path / "c" / "animations");
+  fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "spheres" / "spheres-crossing.json", t.path / "c" / "crossing.json");
+  fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "animations" / "swarm-2d.json", t.path / "c" / "animations" / "swarm-2d.json");
+  const std::string plan = "--dims 2 --degrees 2 --families touch --count 1 --mpfr 64 --map-size 2 --no-figures --seed 3 --jobs 1";
+  auto ok = eccd::clitest::run_eccd("report " + plan + " --cases c --out r", 300, t.str());
+  INFO(ok.err);
+  REQUIRE(ok.code == 0);
+  const std::string csv = slurp(t.path / "r" / "results.csv");
+  CHECK(csv.find("spheres-crossing") != std::string::npos);
+  CHECK(ok.err.find("1 case(s)") != std::string::npos);
+  CHECK(csv.find("swarm-2d") == std::string::npos);
+  // A file that looks like a scene but has another format is an error naming it, before any work.
+  eccd::clitest::spit(t.path / "c" / "bad.json", R"({"format": "ellipse-ccd-scene/9", "dim": 2, "a": {}, "b": {}})");
+  auto bad = eccd::clitest::run_eccd("report " + plan + " --cases c --out r2", 120, t.str());
+  CHECK(bad.code == 2);
+  CHECK(bad.err.find("bad.json") != std::string::npos);
+  CHECK(!fs::exists(t.path / "r2" / "results.csv"));
+}
