@@ -282,22 +282,9 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
   }
   c["pieces"] = pieces;
   // the writer checks its own certificate: a claim it cannot re-prove is never written
-  const CertificateCheck self = check_bezier_certificate(s, scene_doc, c);
-  if (!self.valid)
-    throw CertificationError("the Bézier proof's certificate does not pass its own check: " + self.failed_claim + ": " + self.reason);
-  c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (solved) {
-    Solution& o = *solved;
-    o.dim = 3;
-    o.answer = r.answer;
-    o.certified = true;
-    o.work = r.work;
-    o.basis = "interval+mpfi:" + std::to_string(kBits);
-    o.method = "bezier-proved";
-    o.projection = "krawczyk";
-    o.decided_in = "interval proofs about the exact F (certificate " + std::string(kBezierCertificateFormat) + ")";
-    o.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
-  }
+  finish_proof_certificate(c, check_bezier_certificate(s, scene_doc, c), kBezierCertificateFormat, kBits, r.answer,
+                           "bezier-proved", start, solved);
+  if (solved) solved->work = r.work;
   return c;
 }
 

@@ -11,6 +11,7 @@
 // Rationals are size-bounded before they are parsed (denial of service,
 // issue 15): a forged 10^6-digit number costs nothing.
 // Requirements: nlohmann::json documents; rationals are number/rational_traits.hpp's.
+#include "certified/solution.hpp"
 #include "io/certificate_result.hpp"
 #include "io/scene_reader.hpp"
 #include "number/rational_traits.hpp"
@@ -18,6 +19,7 @@
 #include <gmpxx.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -102,6 +104,31 @@ CertificateCheck run_checker(Check&& check, std::vector<std::string>& checked) {
   }
   out.checked = checked;
   return out;
+}
+
+// The end of a proof certificate's writer (io/bezier_certificate.cpp,
+// io/independent_certificate.cpp): the writer has run its own checker on the
+// certificate (`self`) and never writes a claim it cannot re-prove; it stamps
+// the seconds taken and fills the proved run's Solution with what both proofs
+// share (the caller adds its own counters and details).
+inline void finish_proof_certificate(nlohmann::json& c, const CertificateCheck& self, const std::string& format, int bits,
+                                     const Answer& answer, const std::string& method,
+                                     std::chrono::steady_clock::time_point start, Solution* solved) {
+  if (!self.valid)
+    throw CertificationError("internal: the " + format + " certificate does not pass its own check: " + self.failed_claim +
+                             ": " + self.reason);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  c["seconds"] = seconds;
+  if (!solved) return;
+  Solution& o = *solved;
+  o.dim = 3;
+  o.answer = answer;
+  o.certified = true;
+  o.basis = "interval+mpfi:" + std::to_string(bits);
+  o.method = method;
+  o.projection = "krawczyk";
+  o.decided_in = "interval proofs about the exact F (certificate " + format + ")";
+  o.time_ms = seconds * 1e3;
 }
 
 }  // namespace eccd::certificate_json

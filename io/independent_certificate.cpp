@@ -261,22 +261,12 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
   c["s_proof"] = projection_json(r.s_record);
   c["t_proof"] = projection_json(r.t_record);
   // the writer checks its own certificate: a claim it cannot re-prove is never written
-  const CertificateCheck self = check_independent_certificate(s, scene_doc, c);
-  if (!self.valid) throw CertificationError("internal: the certificate does not pass its own check: " + self.failed_claim + ": " + self.reason);
-  c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  finish_proof_certificate(c, check_independent_certificate(s, scene_doc, c), kIndependentCertificateFormat, kBits, r.answer,
+                           "bezier-independent-proved", start, solved);
   if (solved) {
-    Solution& o = *solved;
-    o.dim = 3;
-    o.answer = r.answer;
-    o.certified = true;
-    o.work = r.counters;
-    o.basis = "interval+mpfi:" + std::to_string(kBits);
-    o.method = "bezier-independent-proved";
-    o.projection = "krawczyk";
-    o.projection_degree = r.degree_s;
-    o.decided_in = "interval proofs about the exact F (certificate " + std::string(kIndependentCertificateFormat) + ")";
-    o.proofs = r.proofs;
-    o.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+    solved->work = r.counters;
+    solved->projection_degree = r.degree_s;
+    solved->proofs = r.proofs;
   }
   return c;
 }
