@@ -7,14 +7,11 @@
 #  (a) paper 000 Table 1: two ellipsoids 3,3,5, centres 8 apart, 0.1, 0.5, 1 rad per frame, with and without planes;
 #  (b) paper 000 Table 2: a sphere orbiting an ellipsoid 4.5,4,2; certified against FCL (eccd fcl) per frame;
 #  (c) paper 001 section 5 in spirit: two figures of 24 ellipsoids, 576 pairs per frame, double and certified.
-# Sizes (environment): T1_FRAMES (double, default 10000), T1_CERT_FRAMES (certified, default 1000),
-# T2_FRAMES (default 629: one orbit), BOX_FRAMES (double, 1000), BOX_CERT_FRAMES (certified, 200).
-# FULL=1: the papers' sizes in certified mode too (T1_CERT_FRAMES=T1_FRAMES, BOX_CERT_FRAMES=BOX_FRAMES,
-# unless set explicitly). Certified is far slower than double here: the committed report (reduced sizes, 309 s)
-# measured 23-80 ms per frame for (a) with and without planes and 0.44 s per frame for (c) (thread time, before the
-# interval Bezier proof of issue 18), so FULL=1 would take about 40 min on 2 cores (Table 1 certified about 32 min,
-# the two runs of a rate in parallel; boxers about 4 min on 2 threads); the reduced sizes stay the default until a
-# faster certified mode makes FULL=1 fit. report.md states which sizes were run.
+# Sizes (environment): T1_FRAMES (default 10000), T2_FRAMES (default 629: one orbit), BOX_FRAMES (1000), and the
+# certified runs' T1_CERT_FRAMES and BOX_CERT_FRAMES. By default (FULL=1) every run has the papers' sizes, certified
+# too (T1_CERT_FRAMES=T1_FRAMES, BOX_CERT_FRAMES=BOX_FRAMES unless set): 149 s on 2 cores since 3D certified mode
+# decides by the interval Bezier proof (issue 18; before it, about 40 min). FULL=0: certified on 1000 Table 1 frames
+# and 200 boxers frames only (a quicker trial). report.md states which sizes were run.
 # GJK_TIGHT (default 1e-12): FCL's tight gjk_tolerance for Table 2 (`eccd fcl --gjk-tolerance`), next to
 # FCL's default (1e-6).
 # Both cores: single-pair runs go two at a time (with/without planes; certified and double), the boxers run with
@@ -26,7 +23,7 @@ cd "$(dirname "$0")/.."
 E=build/eccd
 OUT=${OUT:-reports/animation}  # OUT=DIR: somewhere else (a trial run at small sizes)
 G=$OUT/generated
-FULL=${FULL:-0}
+FULL=${FULL:-1}
 T1_FRAMES=${T1_FRAMES:-10000}
 T2_FRAMES=${T2_FRAMES:-629}
 BOX_FRAMES=${BOX_FRAMES:-1000}
