@@ -43,11 +43,6 @@ std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& pla
   return read_short_rationals(j, n, place, kBezierMaxRationalBits);
 }
 
-// Equal brackets and the same decimal (the derived instant's approx is its bracket's mid-point, as bracketed_instant writes it).
-bool same(const Instant& a, const Instant& b) {
-  return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi && a.approx == b.approx;
-}
-
 // F(u, t)'s net from the scene, exactly, as a tensor net (u, s, t) of degree 0 in s.
 TriBern<Rational> exact_net(const Scene& scene) {
   if (!bezier_certificate_scene(scene)) throw std::invalid_argument("a Bézier certificate is for 3D scenes with shared parameters");
@@ -231,22 +226,16 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
   } catch (const std::exception& e) {
     reject("certificate format", e.what());
   }
-  auto same_list = [&](const std::vector<std::pair<Instant, Instant>>& x, const std::vector<std::pair<Instant, Instant>>& y, const char* what) {
-    if (x.size() != y.size())
-      reject("answer", std::string("the pieces give ") + std::to_string(x.size()) + " " + what + ", the certificate " + std::to_string(y.size()));
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (!same(x[i].first, y[i].first) || !same(x[i].second, y[i].second))
-        reject("answer", std::string(what) + " " + std::to_string(i + 1) + " differs from the one the pieces give");
-  };
+  auto same_list = [](const auto& x, const auto& y, const char* what) { require_same_intervals(x, y, what, "the pieces"); };
   if (got.collides != want.collides) reject("answer", std::string("the pieces give collides = ") + (got.collides ? "true" : "false"));
   same_list(got.intervals, want.intervals, "collision interval(s)");
   same_list(got.contact_intervals, want.contact_intervals, "contact interval(s)");
-  if (got.first_contact.has_value() != want.first_contact.has_value() || (got.first_contact && !same(*got.first_contact, *want.first_contact)))
+  if (got.first_contact.has_value() != want.first_contact.has_value() || (got.first_contact && !same_instant(*got.first_contact, *want.first_contact)))
     reject("answer", "first_contact differs from the one the pieces give");
   if (got.contacts.size() != want.contacts.size())
     reject("answer", "the pieces give " + std::to_string(got.contacts.size()) + " contact(s), the certificate " + std::to_string(want.contacts.size()));
   for (std::size_t i = 0; i < got.contacts.size(); ++i)
-    if (!same(got.contacts[i], want.contacts[i])) reject("answer", "contact " + std::to_string(i + 1) + " differs from the one the pieces give");
+    if (!same_instant(got.contacts[i], want.contacts[i])) reject("answer", "contact " + std::to_string(i + 1) + " differs from the one the pieces give");
   checked.push_back("answer: follows from the checked pieces");
 }
 

@@ -21,6 +21,7 @@
 
 #include <chrono>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eccd::certificate_json {
@@ -104,6 +105,24 @@ CertificateCheck run_checker(Check&& check, std::vector<std::string>& checked) {
   }
   out.checked = checked;
   return out;
+}
+
+// Equal brackets and the same decimal (a derived instant's approx is its bracket's mid-point, as
+// bracketed_instant writes it): an answer instant of a certificate against the one its claims give.
+inline bool same_instant(const Instant& a, const Instant& b) {
+  return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi && a.approx == b.approx;
+}
+
+// The certificate's list of intervals `y` must be `x`, the one its claims give, instant for instant; else an
+// "answer" rejection. `source` says what gave x ("the pieces", "the proofs").
+inline void require_same_intervals(const std::vector<std::pair<Instant, Instant>>& x,
+                                   const std::vector<std::pair<Instant, Instant>>& y, const std::string& what,
+                                   const std::string& source) {
+  if (x.size() != y.size())
+    reject("answer", source + " give " + std::to_string(x.size()) + " " + what + ", the certificate " + std::to_string(y.size()));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!same_instant(x[i].first, y[i].first) || !same_instant(x[i].second, y[i].second))
+      reject("answer", what + " " + std::to_string(i + 1) + " differs from the one " + source + " give");
 }
 
 // The end of a proof certificate's writer (io/bezier_certificate.cpp,

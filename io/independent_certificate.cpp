@@ -72,10 +72,6 @@ mpq_class rat(const json& j, const std::string& place) { return read_short_ratio
 
 std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& place) { return read_short_rationals(j, n, place, kIndependentMaxRationalBits); }
 
-bool same(const Instant& a, const Instant& b) {
-  return a.certified() && b.certified() && *a.lo == *b.lo && *a.hi == *b.hi && a.approx == b.approx;
-}
-
 // The checked intervals of one projection (var "s" on F, "t" on F with s and t exchanged).
 std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, const json& items, const std::string& var, int bits,
                                                           std::vector<std::string>& checked) {
@@ -222,13 +218,7 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
   } catch (const std::exception& e) {
     reject("certificate format", e.what());
   }
-  auto same_list = [&](const std::vector<std::pair<Instant, Instant>>& x, const std::vector<std::pair<Instant, Instant>>& y, const char* what) {
-    if (x.size() != y.size())
-      reject("answer", std::string("the proofs give ") + std::to_string(x.size()) + " " + what + ", the certificate " + std::to_string(y.size()));
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (!same(x[i].first, y[i].first) || !same(x[i].second, y[i].second))
-        reject("answer", std::string(what) + " " + std::to_string(i + 1) + " differs from the one the proofs give");
-  };
+  auto same_list = [](const auto& x, const auto& y, const char* what) { require_same_intervals(x, y, what, "the proofs"); };
   if (want.collides != !s_iv.empty()) reject("answer", std::string("the proofs give collides = ") + (s_iv.empty() ? "false" : "true"));
   same_list(s_iv, want.s_intervals, "s_intervals");
   same_list(t_iv, want.t_intervals, "t_intervals");
