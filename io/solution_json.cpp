@@ -137,7 +137,13 @@ Solution solution_from_json(const json& j, const std::string& label) {
   json ans = json::object();
   ans["collides"] = j.contains("collides") ? j["collides"] : json(nullptr);
   if (j.contains("s_intervals")) {  // independent motions
-    for (const char* k : {"s_intervals", "t_intervals"}) ans[k] = list(k);
+    // A run left undecided may have proved one side's intervals and none of
+    // the other's: an empty list next to collides = true is then not the
+    // contradiction it is in a stored answer (scene-format.md), so it is left
+    // out rather than refused.
+    const bool undecided = !list("undecided").empty();
+    for (const char* k : {"s_intervals", "t_intervals"})
+      if (!(undecided && list(k).empty())) ans[k] = list(k);
   } else {
     for (const char* k : {"intervals", "contacts", "contact_intervals"}) ans[k] = list(k);
     ans["first_contact"] = j.contains("first_contact") ? j["first_contact"] : json(nullptr);
