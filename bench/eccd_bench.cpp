@@ -1399,6 +1399,19 @@ void register_translation3d() {
               [&] { return run_certified<4>(sc.get().p, rungs, Variant::answer, false); },
               [](const Solution& r) { return summarise_solution(r); });
       });
+  // Issue 21's anchor (FCL's continuous test of such a pair, 1000 samples, 0.39 ms) in the same run.
+  row(grp, "FCL continuous, 1000 samples (fcl_ccd)", false, Cost::slow,
+      "compare/fcl_engine fcl_ccd(scene, 1000): fcl::continuousCollide, CCDC_NAIVE, CCDM_TRANS (first contact only)",
+      [grp](benchmark::State& st) {
+        const std::string why = eccd_bench::fcl_bench_unavailable(), bad = why.empty() ? fcl_ccd_inexpressible(sc.get().scene) : "";
+        if (!why.empty() || !bad.empty()) { st.SkipWithError((why + bad).c_str()); return; }
+        timed(st, std::string(grp) + "/FCL continuous, 1000 samples (fcl_ccd)", [&] { return fcl_ccd(sc.get().scene, 1000); },
+              [](const Answer& a) {
+                json j{{"collides", a.collides}};
+                if (a.first_contact) j["first_contact"] = short_instant(*a.first_contact);
+                return j;
+              });
+      });
   row(grp, "double pipeline only", false, Cost::slow, "characteristic_bernstein<double,4> + ccd_bezier from the prepared pair",
       [grp](benchmark::State& st) {
         timed(st, std::string(grp) + "/double pipeline only",

@@ -37,6 +37,8 @@ import time
 # target is missed), steps (rows of that group to show), also (related rows),
 # per (the row's median is for several items: divide by this number, or by the
 # result field of that name, e.g. "frames"; the verdict is on the quotient).
+HAND = "Call-graph profile by hand (`perf record --call-graph dwarf` of the row alone, 2026-11-26, revision a90e296, before the other issue-21 branches were merged; inclusive shares): "
+
 TARGETS = [
     dict(
         name="3D static separation test in double",
@@ -97,7 +99,7 @@ TARGETS = [
         anchor="issue 21: at most 50 µs; FCL's continuous test of such a pair (1000 samples) 0.39 ms (this run: see the FCL section)",
         phases="ccd3d-deg1-translation",
         steps=["ccd3d-deg1-translation/double pipeline only"],
-        also=["ccd3d-deg1-translation/double pipeline only"],
+        also=["ccd3d-deg1-translation/double pipeline only", "ccd3d-deg1-translation/FCL continuous, 1000 samples (fcl_ccd)"],
     ),
     dict(
         name="3D continuous query, both ellipsoids translating linearly (degree 1), certified (issue 21)",
@@ -106,6 +108,8 @@ TARGETS = [
         anchor="issue 21: at most 150 µs (3x the double limit); FCL's continuous test (1000 samples, no certificate) 0.39 ms",
         phases="ccd3d-deg1-translation",
         steps=["ccd3d-deg1-translation/certified ladder only (run_certified)"],
+        note=HAND + "the contact points (`add_contact_points_3d` → `contact_geometry<Mpfr>`, `small_real_roots<Mpfr>`) "
+             "53 %, the interval Bézier proof (`run_certified` → `prove_bezier`) 32 %, `prepare_pair` 11 %.",
         also=["ccd3d-deg1-translation/certified ladder only (run_certified)"],
     ),
     dict(
@@ -116,6 +120,9 @@ TARGETS = [
         anchor="issue 21: at most 0.3 ms per frame; 001 section 5: 3.4 ms per frame (3 GHz Pentium IV, double)",
         phases=None,
         also=["animate-boxers/double without planes, 10 frames"],
+        note=HAND + "the continuous test `eccd::solve` 71 % (BezierZeroSet::run 44 %, characteristic_bernstein 20 %), "
+             "building the next kept plane (`separate_at` in double) 17 %; the row 'double without planes' in the "
+             "animation section shows what the kept planes save.",
     ),
     dict(
         name="001-style animation frame (the boxers, 576 pairs, after the bounding spheres and the kept planes), certified, per frame",
@@ -124,6 +131,9 @@ TARGETS = [
         limit_ns=1e6,
         anchor="issue 21: at most 1 ms per frame in certified mode; 001 section 5: 3.4 ms per frame in double (no certificate)",
         phases=None,
+        note=HAND + "building the next kept plane exactly (`separate_at` → `separate_exact`) 63 %, most of it the exact "
+             "static test's characteristic polynomial (`characteristic_of` over rationals, `ring_det` 34 %); the "
+             "continuous test (`eccd::solve`, certified: `prove_bezier` 12 %, `prepare_pair` 12 %) 21 %.",
         also=[],
     ),
 ]
@@ -150,7 +160,10 @@ RATIO_TARGETS = [
     dict(name="Certified mode on paper 002's example against double (issue 21)",
          key="ccd3d-paper002/certified", base="ccd3d-paper002/double bezier", limit_ratio=3.0,
          anchor="issue 21: certified at most 3x double on paper 002's example (both from the prepared pair: "
-                "run_certified against characteristic_bernstein + ccd_bezier)"),
+                "run_certified against characteristic_bernstein + ccd_bezier)",
+         note=HAND + "the interval Bézier proof (`prove_bezier`) 98 %: `Engine::strip` 46 % and `Engine::prove_end` 43 %, "
+              "whose time is the subdivision of F in intervals (`split_u` 28 %, `split_t` 28 %, `de_casteljau_in_place` "
+              "20 %, `keep_left` / `keep_right` 15 % each, self) and the Krawczyk steps (21 %)."),
     dict(name="Certified static test from two poses, 2D, against the double one",
          key="static-certified-2d/certified static_status (API, two poses)",
          base="static-certified-2d/double static_status (API, two poses)", limit_ratio=1.5,
@@ -282,6 +295,21 @@ def write_fcl_section(w, summ):
               f"{fmt_time(base['median_cpu_ns'])} for eccd's double static test: FCL / eccd = "
               f"×{fcl_best['median_cpu_ns'] / base['median_cpu_ns']:.2f} (issue 21's anchor: 549 / 144 = ×3.81).")
             w("")
+    g = groups.get("ccd3d-deg1-translation")
+    fr = next((r for r in g["rows"] if r["label"].startswith("FCL") and "median_cpu_ns" in r), None) if g else None
+    base = next((r for r in g["rows"] if r["baseline"] and "median_cpu_ns" in r), None) if g else None
+    cert = next((r for r in g["rows"] if r["label"] == "certified solve (API)" and "median_cpu_ns" in r), None) if g else None
+    if fr and base:
+        w("### One continuous query of a translating pair")
+        w("")
+        w(f"The pair of the `ccd3d-deg1-translation` group (both translating linearly, colliding): FCL's naive continuous "
+          f"collision with 1000 samples (`fcl_ccd`, first contact only) {fmt_time(fr['median_cpu_ns'])}, eccd's double query "
+          f"(`eccd::solve`, all intervals and contact points) {fmt_time(base['median_cpu_ns'])} (FCL / eccd ×{fmt_ratio(fr['median_cpu_ns'] / base['median_cpu_ns'])[1:]})"
+          + (f", certified {fmt_time(cert['median_cpu_ns'])} (FCL / eccd certified ×{fmt_ratio(fr['median_cpu_ns'] / cert['median_cpu_ns'])[1:]})" if cert else "")
+          + ". FCL stops at its first colliding sample"
+          + (f" (here t = {fr['result']['first_contact']})" if isinstance(fr.get("result"), dict) and fr["result"].get("first_contact") else "")
+          + ", so its cost depends on where the contact lies. Issue 21's anchor: FCL 0.39 ms.")
+        w("")
     w("### Per frame of paper 000's Table 2 set-up")
     w("")
     w("A unit sphere orbiting a static ellipsoid 4.5, 4, 2 (0.01 rad per frame), frames 0 to 39 of "
@@ -359,6 +387,9 @@ def write_ratio_targets(w, ratios):
             continue
         w(f"### {v['name']}: ×{v['ratio']:.2f} against ×{v['limit_ratio']} (missed)")
         w("")
+        if v.get("note"):
+            w(v["note"])
+            w("")
         if v.get("perf"):
             w(f"Sampling profile of the row `{v['key']}` alone (`perf record -F 2999`; setup of the inputs included, flat, "
               "symbols above 1 %):")
@@ -927,6 +958,9 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
                 top = max(top_level)
                 w(f"Largest part: **{top[1]}**, {100 * top[0] / total:.0f} % of the total.")
                 w("")
+        if v.get("note"):
+            w(v["note"])
+            w("")
         if v.get("perf"):
             w(f"Sampling profile of the row alone (`perf record -F 2999`, one repetition of at least "
               f"{args.profile_seconds:g} s; setup of the inputs included, flat, symbols above 1 %):")
