@@ -65,6 +65,13 @@
 //        certified (baseline: double); with static-certified-2d/3d (the
 //        static test from two poses) they form the report's "Animations"
 //        section (bench/performance_report.py ANIMATION_GROUPS).
+//   fcl-static3d, fcl-table2-main, fcl-table2-graze  issue 21: FCL side by
+//        side in the same process: fcl::collide on the static3d pairs (per
+//        pair, against eccd::static_status), and per frame of 000 Table 2's
+//        orbit (bench/data/table2-*-40.anim.json): eccd::animate double and
+//        certified, eccd::solve per frame, FCL sampled and continuous, with
+//        the frames each misclassifies against the certified animation.
+//        bench/fcl_side.* holds the FCL calls (FCL's headers stay there).
 // What "pipeline" means in the ccd rows: what api/solve.cpp runs after the
 // scene is read and prepared (prepare_pair<N>: exact, done once per scene, not
 // timed): 2D to_arithmetic<T, 3> + cd_disc with FloatingPolicy<T> (Bernstein

@@ -8,15 +8,18 @@ library only. Steps:
   2. one run of eccd_bench: Google Benchmark's JSON (--benchmark_out) and the
      program's summary (--eccd_summary: groups, rows, medians over the
      repetitions, ratios to each group's baseline, what each row answered);
-  3. the targets of issue 6, each against its anchor from the papers: met, or
-     missed by how much;
+  3. the targets (issue 21's limits, which replaced issue 6's; the certified
+     mode's set and ratio targets of issues 6, 18 and 21), each against its
+     anchor (a paper's figure, FCL, or the flop count): met, or missed by how much;
   4. for each missed target, what dominates the time: the target's phase group
      (the pipeline's public steps timed one by one in the same run) and, when
      `perf` works here, a sampling profile of the target's row alone
      (eccd_bench --benchmark_filter=ROW --eccd_profile_seconds=S under
      `perf record`; flat profile by symbol and by shared object);
-  5. reports/performance.md: the machine, the targets, the profiles, one table
-     per group, the scenes, and what was left out.
+  5. reports/performance.md: the machine, the targets, the animations, FCL side
+     by side (issue 21: static test per pair, per frame of 000 Table 2 with the
+     misclassified frames), the profiles, one table per group, the scenes, and
+     what was left out.
 Raw outputs stay in the work directory (--work, default build-bench/bench-results).
 """
 import argparse
@@ -1048,8 +1051,11 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
       "paper 002's example are not affected, and the exact pipeline answers every scene (rows *exact*).")
     w("- The certified interval mode (`--arith certified`, issue 6 part 2) is measured through `eccd::solve_scene` "
       "in the `solve_scene-*` groups (rows *certified*; the answer column says whether it decided in interval "
-      "arithmetic or escalated to exact). It has no target of its own; rows and a target are added in "
-      "`kSolveSceneRows` (`bench/eccd_bench.cpp`) and `TARGETS` (`bench/performance_report.py`).")
+      "arithmetic or escalated to exact), and from the prepared pair (`run_certified`) in the rows *certified* of "
+      "`ccd3d-paper002` and `ccd3d-deg1-translation`, which carry issue 21's targets; more rows and targets go into "
+      "`bench/eccd_bench.cpp` and `TARGETS` / `RATIO_TARGETS` (`bench/performance_report.py`).")
+    w("- FCL (Debian libfcl-dev; `scripts/bootstrap.sh` installs it) is found when build-bench is configured; without "
+      "it the FCL rows are not measured and say why.")
     w("- MPSolve isolates all complex roots (inclusion discs), a larger task than CGAL's real roots; its count of "
       "roots in [0, 1] is the number of discs meeting the segment, a plausibility check. The CGAL rows construct a "
       "fresh kernel per run; the workbench's row uses its thread-local kernel, as the pipeline does.")
