@@ -51,7 +51,7 @@ mpq_class instant_value(const Instant& i) {
 
 }  // namespace
 
-void add_contact_points_3d(const Scene& scene, Solution& s) {
+void add_contact_points_3d(const Scene& scene, Solution& s, const PreparedPair<4>* given) {
   if (scene.dim != 3 || scene.independent || s.answer.contacts.empty() || s.answer.contact_points.size() >= s.answer.contacts.size())
     return;
   for (const SceneObject* o : {&scene.a, &scene.b})
@@ -66,10 +66,11 @@ void add_contact_points_3d(const Scene& scene, Solution& s) {
     const mpq_class t = instant_value(c);
     if (sgn(t) < 0 || t > 1) { pts.push_back({}); continue; }
     if (!floating) {  // exact A(t), B(t) at the rational t, then MPFR at 256 bits
-      if (!prepared) prepared = prepare_pair<H_3D>(scene);
+      if (!given && !prepared) prepared = prepare_pair<H_3D>(scene);
+      const PreparedPair3& pp = given ? *given : *prepared;
       const Rational rt(t);
-      Matrix<Rational, 4> a = quadric_at<Rational, 4>(prepared->qa, prepared->na, rt);
-      Matrix<Rational, 4> b = quadric_at<Rational, 4>(prepared->qb, prepared->nb, rt);
+      Matrix<Rational, 4> a = quadric_at<Rational, 4>(pp.qa, pp.na, rt);
+      Matrix<Rational, 4> b = quadric_at<Rational, 4>(pp.qb, pp.nb, rt);
       Matrix<Mpfr, 4> am, bm;
       for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) { am[i][j] = Mpfr(a[i][j], 256); bm[i][j] = Mpfr(b[i][j], 256); }

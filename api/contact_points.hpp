@@ -14,11 +14,14 @@
 // Requirements: a shared-parameter 3D scene with rational motions; anything
 // else is left as it is.
 #include "api/solution.hpp"
+#include "kernel/prepared_scene.hpp"
 #include "kernel/scene.hpp"
 
 namespace eccd {
 
 // Fills solution.answer.contact_points (one per contact) for a 3D scene whose run left them out.
-void add_contact_points_3d(const Scene& scene, Solution& solution);
+// prepared: the scene's exactly prepared pair when the caller has it already (an exact or certified run), so
+// that it is not prepared a second time (issue 18: a tenth of a certified 3D query); null: prepared here if needed.
+void add_contact_points_3d(const Scene& scene, Solution& solution, const PreparedPair<4>* prepared = nullptr);
 
 }  // namespace eccd

@@ -327,18 +327,21 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
     s.arith = opt.arith;
     return s;
   }
+  std::optional<PreparedPair<4>> prepared3;  // an exact or certified 3D run's pair, shared with its contact points
   switch (opt.arith.kind) {  // prepare_pair refuses cycloidal motions for exact arithmetic
     case Arithmetic::Double: s = run_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0)); break;
     case Arithmetic::Mpfr:
       s = run_floating<Bounded<Mpfr>>(scene, opt, Bounded<Mpfr>(Mpfr(mpq_class(1), opt.arith.mpfr_bits), 0));
       break;
     case Arithmetic::Exact:
-      s = scene.dim == 3 ? run_exact<4>(prepare_pair<4>(scene), opt.variant, opt.first_contact)
+      if (scene.dim == 3) prepared3 = prepare_pair<4>(scene);
+      s = scene.dim == 3 ? run_exact<4>(*prepared3, opt.variant, opt.first_contact)
                          : run_exact<3>(prepare_pair<3>(scene), opt.variant, opt.first_contact);
       break;
     case Arithmetic::Certified:
       if (scene.dim == 2 && has_cycloidal_motion(scene)) { s = run_certified_cycloidal(scene, opt.arith.mpfi_rungs, opt.variant); break; }
-      s = scene.dim == 3 ? run_certified<4>(prepare_pair<4>(scene), opt.arith.mpfi_rungs, opt.variant, opt.first_contact)
+      if (scene.dim == 3) prepared3 = prepare_pair<4>(scene);
+      s = scene.dim == 3 ? run_certified<4>(*prepared3, opt.arith.mpfi_rungs, opt.variant, opt.first_contact)
                          : run_certified<3>(prepare_pair<3>(scene), opt.arith.mpfi_rungs, opt.variant, opt.first_contact);
       break;
   }
@@ -347,7 +350,7 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
   s.dim = scene.dim;
   s.arith = opt.arith;
   s.input = floating ? opt.input : InputMode::prepared;
-  add_contact_points_3d(scene, s);  // issue 17 point 4: 3D contact points and normals (api/contact_points.hpp)
+  add_contact_points_3d(scene, s, prepared3 ? &*prepared3 : nullptr);  // issue 17 point 4: 3D contact points and normals (api/contact_points.hpp)
   return s;
 }
 

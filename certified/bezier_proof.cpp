@@ -232,9 +232,9 @@ class Engine {
         return true;
       }
       const double um = 0.5 * (u0 + u1);
-      auto [a, b] = split_u(g, Interval(0.5, 0.5));
-      if (ustar < um) { g = std::move(a); u1 = um; }
-      else { g = std::move(b); u0 = um; }
+      // only the half that holds u* is computed (issue 18: split_u was a sixth of a certified 3D query)
+      if (ustar < um) { keep_u_left(g, Interval(0.5, 0.5)); u1 = um; }
+      else { keep_u_right(g, Interval(0.5, 0.5)); u0 = um; }
     }
     return false;
   }
@@ -252,9 +252,15 @@ class Engine {
     // a corner control point is F's value there (enclosed): > 0 means F > 0 somewhere
     for (const Interval* c : {&f.b.front().front(), &f.b.front().back(), &f.b.back().front(), &f.b.back().back()})
       if (sign(*c) == Sign::positive) return false;
-    auto [a, b] = split_u(f, Interval(0.5, 0.5));
     const double um = 0.5 * (u0 + u1);
-    return negative_all(a, u0, um, depth + 1, lo, hi, boxes) && negative_all(b, um, u1, depth + 1, lo, hi, boxes);
+    {  // the right half is computed only when the left one was proved (the same values as split_u's)
+      BiBern<Interval> a = f;
+      keep_u_left(a, Interval(0.5, 0.5));
+      if (!negative_all(a, u0, um, depth + 1, lo, hi, boxes)) return false;
+    }
+    BiBern<Interval> b = f;
+    keep_u_right(b, Interval(0.5, 0.5));
+    return negative_all(b, um, u1, depth + 1, lo, hi, boxes);
   }
 
   bool strip(const BiBern<Interval>& f, double lo, double hi, int depth, std::vector<Strip>& out) {

@@ -49,6 +49,10 @@ struct FloatRoot {
 template <class T>
 struct BernsteinRootOptions {
   int precision_bits = 53;
+  // Where a simple root is refined to: 2^-(simple_bits - 3) of its piece (0: precision_bits). Clusters and the
+  // merging of close roots follow precision_bits either way. A caller that needs only a witness near the
+  // root (bern_argmax: the peak's u) asks for fewer bits than the arithmetic has.
+  int simple_bits = 0;
   bool first_only = false;
   long max_pieces = 20000;  // work bound: pieces examined (de Casteljau splits are O(n^2) each)
   mutable std::string stopped;  // out: "" or why the search stopped early
@@ -69,7 +73,7 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
   // deeper subdivision (O(n²) per level) would not make a double root better
   // conditioned. Capped at 2^-64: cluster instants are reported to ~5e-20.
   const T cluster_width = pow2(-std::min(opt.precision_bits / 2 + 2, 64));
-  const T simple_width = pow2(-(opt.precision_bits - 3));
+  const T simple_width = pow2(-((opt.simple_bits > 0 ? opt.simple_bits : opt.precision_bits) - 3));
   const T half = pow2(-1);
   std::vector<FloatRoot<T>> out;
 

@@ -121,22 +121,55 @@ BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
 
 // argmax of a univariate Bernstein polynomial on [0, 1] by the roots of its
 // derivative (rounded arithmetic), with the value there.
+//
+// The peak's u is a witness, not a decision (any u with F(u, t0) > 0 proves
+// separation; the value is then computed, with its bound, at that u): it is
+// located in the plain arithmetic under a running bound (Bounded<V>: V), and
+// only to 2^-(bits/2 + 6) of its piece. Near a simple maximum u* of f,
+// f(u) = f(u*) - O(|f''| (u - u*)^2), so a witness that close gives the peak's
+// value to within |f''| 2^-(bits + 12), below the rounding of its evaluation
+// (n(n-1) = 12 for the quartic F(., t0)); refining further (to 2^-50, as the
+// first version did at every static test and shot) changed nothing but the last
+// bits of u and cost a third of a 3D query (issue 21). Clusters (a multiple
+// root of f', an inflection) are still found at the full precision.
 template <class U>
 struct Peak { U u, value; };
+
+namespace bezier_detail {
+template <class U>
+struct Plain {  // the arithmetic a witness is located in
+  using type = U;
+  static const U& of(const U& x) { return x; }
+  static U lift(const U& x) { return x; }
+};
+template <class V>
+struct Plain<Bounded<V>> {
+  using type = V;
+  static const V& of(const Bounded<V>& x) { return x.value(); }
+  static Bounded<V> lift(const V& x) { return Bounded<V>(x, 0); }  // an evaluation point (point_of)
+};
+}  // namespace bezier_detail
 
 // u0, u1: 0 and 1 at the precision of f's coefficients.
 template <class U>
 Peak<U> bern_argmax(const Bern<U>& f, int bits, const U& u0, const U& u1) {
+  using P = bezier_detail::Plain<U>;
+  using V = typename P::type;
   Peak<U> best{u0, f(u0)};
   U v1 = f(u1);
   if (v1 > best.value) best = {u1, v1};
-  BernsteinRootOptions<U> ro;
+  Bern<V> df;  // f' in V: the same values as f' in U (a running bound only adds a bound)
+  const int n = f.degree();
+  df.b.reserve(std::max(n, 1));
+  if (n <= 0) df.b.push_back(V(0));
+  for (int i = 0; i < n; ++i) { V diff = P::of(f.b[i + 1]) - P::of(f.b[i]); df.b.push_back(V(n) * diff); }
+  BernsteinRootOptions<V> ro;
   ro.precision_bits = bits;
-  Bern<U> df = derivative(f);
-  for (auto& x : df.b) x = point_of(x);  // where the peak is: a witness u, located as plain U would (no claim)
+  ro.simple_bits = std::min(bits, bits / 2 + 6);
   for (const auto& r : bernstein_roots(df, ro)) {
-    U v = f(r.value);
-    if (v > best.value) best = {r.value, v};
+    U u = P::lift(r.value);
+    U v = f(u);
+    if (v > best.value) best = {u, v};
   }
   return best;
 }

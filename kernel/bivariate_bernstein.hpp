@@ -69,19 +69,34 @@ std::pair<BiBern<T>, BiBern<T>> split_t(const BiBern<T>& f, const T& tau) {
   return {std::move(lo), std::move(hi)};
 }
 
-// de Casteljau in u at tau: the same products and sums as split() on every
-// column, carried out row by row in place (no column copies).
+// In place: f becomes its piece over [0, tau] (keep_u_left) or [tau, 1]
+// (keep_u_right) in u, reparameterised to [0, 1]: the same products and sums
+// as keep_left / keep_right on every column, carried out row by row (no
+// column copies). A caller that needs one piece (a guided bisection) computes
+// only that one; split_u below is the two together.
+template <class T>
+void keep_u_right(BiBern<T>& f, const T& tau) {
+  const int m = f.degree_u(), n = f.degree_t();
+  T s = T(1) - tau;
+  for (int r = 1; r <= m; ++r)
+    for (int i = 0; i + r <= m; ++i)
+      for (int j = 0; j <= n; ++j) { T x = s * f.b[i][j]; T y = tau * f.b[i + 1][j]; f.b[i][j] = x + y; }
+}
+template <class T>
+void keep_u_left(BiBern<T>& f, const T& tau) {
+  const int m = f.degree_u(), n = f.degree_t();
+  T s = T(1) - tau;
+  for (int r = 1; r <= m; ++r)
+    for (int i = m; i >= r; --i)
+      for (int j = 0; j <= n; ++j) { T x = s * f.b[i - 1][j]; T y = tau * f.b[i][j]; f.b[i][j] = x + y; }
+}
+
+// de Casteljau in u at tau: the pieces over [0, tau] and [tau, 1] in u.
 template <class T>
 std::pair<BiBern<T>, BiBern<T>> split_u(const BiBern<T>& f, const T& tau) {
-  const int m = f.degree_u(), n = f.degree_t();
   BiBern<T> lo = f, hi = f;
-  T s = T(1) - tau;
-  for (int r = 1; r <= m; ++r) {
-    for (int i = 0; i + r <= m; ++i)  // as keep_right, on rows
-      for (int j = 0; j <= n; ++j) { T x = s * hi.b[i][j]; T y = tau * hi.b[i + 1][j]; hi.b[i][j] = x + y; }
-    for (int i = m; i >= r; --i)  // as keep_left, on rows
-      for (int j = 0; j <= n; ++j) { T x = s * lo.b[i - 1][j]; T y = tau * lo.b[i][j]; lo.b[i][j] = x + y; }
-  }
+  keep_u_left(lo, tau);
+  keep_u_right(hi, tau);
   return {std::move(lo), std::move(hi)};
 }
 

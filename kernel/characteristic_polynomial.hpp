@@ -25,16 +25,64 @@
 namespace eccd {
 
 // g_0 .. g_H (f's coefficients in λ, H = dim + 1) with entries in any ring R (Poly<T> or Bern<T>).
+//
+// The 2^H determinants share their leading minors: det(C_S) expands row by
+// row (kernel/ring_determinant.hpp: the sum over placements of the first r
+// rows into a set M of columns), and that partial sum depends only on M and
+// on which columns of M come from A. So all 2^H expansions run at once over
+// the 3^H states (column unused / from B / from A; ternary digit j for column
+// j): 208 ring products in 3D instead of 16 x 28 = 448 (issue 21: g_k over
+// heap-allocated Bernstein polynomials was a sixth of a 3D query in double).
+// Every state receives the same terms, in the same order, as in ring_det on
+// C_S alone, and g_k sums the determinants in the same order as one ring_det
+// per S did, so the results are the same to the last bit (and the same
+// running error bounds).
 template <class R, int H>
 std::vector<R> characteristic_coefficients_in(const std::array<std::array<R, H>, H>& a,
                                               const std::array<std::array<R, H>, H>& b, const R& zero) {
+  constexpr unsigned N = 1u << H;
+  unsigned pow3[H + 1] = {1};
+  for (int j = 0; j < H; ++j) pow3[j + 1] = 3 * pow3[j];
+  auto index = [&](unsigned mask, unsigned from_a) {
+    unsigned x = 0;
+    for (int j = 0; j < H; ++j)
+      if (mask >> j & 1u) x += ((from_a >> j & 1u) ? 2u : 1u) * pow3[j];
+    return x;
+  };
+  std::vector<R> dp(pow3[H]);  // default-made (no allocation for Bern / Poly): written before read
+  std::vector<char> live(pow3[H], 0);
+  live[0] = 1;
+  for (int r = 0; r < H; ++r)
+    for (unsigned mask = 0; mask < N; ++mask) {  // rows 0..r-1 placed into mask, in increasing mask order as ring_det
+      if (std::popcount(mask) != r) continue;
+      for (unsigned s = mask;; s = (s - 1) & mask) {  // every choice of A-columns within mask
+        const unsigned from = index(mask, s);
+        if (live[from]) {
+          for (int c = 0; c < H; ++c) {
+            if (mask >> c & 1u) continue;
+            const bool neg = std::popcount(mask >> (c + 1)) % 2;
+            for (int src = 0; src < 2; ++src) {
+              const R& e = src ? a[r][c] : b[r][c];
+              if (is_ring_zero(e)) continue;
+              const unsigned to = from + (src ? 2u : 1u) * pow3[c];
+              if (!live[to]) { dp[to] = zero; live[to] = 1; }
+              if (r == 0) {
+                if (neg) dp[to] = dp[to] - e; else dp[to] = dp[to] + e;
+              } else {
+                R term = dp[from] * e;
+                if (neg) dp[to] = dp[to] - term; else dp[to] = dp[to] + term;
+              }
+            }
+          }
+        }
+        if (s == 0) break;
+      }
+    }
   std::vector<R> g(H + 1, zero);
-  for (unsigned mask = 0; mask < (1u << H); ++mask) {
-    std::vector<std::vector<R>> c(H, std::vector<R>(H, zero));
-    for (int i = 0; i < H; ++i)
-      for (int j = 0; j < H; ++j) c[i][j] = (mask >> j & 1u) ? a[i][j] : b[i][j];
+  for (unsigned mask = 0; mask < N; ++mask) {
+    const unsigned full = index(N - 1, mask);
+    const R& d = live[full] ? dp[full] : zero;
     int k = std::popcount(mask);
-    R d = ring_det(c, zero);
     if ((H - k) % 2) g[k] = g[k] - d; else g[k] = g[k] + d;
   }
   return g;
