@@ -669,26 +669,21 @@ void zero_one_descartes(const IntPoly& P, const mpz_class& i, unsigned long D, s
   zero_one_descartes(Q, mpz_class(left + 1), D + 1, brackets, exact);
 }
 
-// real_roots on [0, 1] when p's primitive integer multiple z is certainly
-// square-free (certainly_square_free; else nullopt and the general path runs):
-// every root is simple. Roots at 0 and 1 are z(0) = 0 and z(1) = 0 (exact);
-// they are divided out (exactly, in integers), leaving f, square-free, with
-// f(0), f(1) != 0, whose roots in the open (0, 1) are isolated on that
-// interval alone by zero_one_descartes (each returned interval holds exactly
-// one root of f and f is non-zero at its ends, or it is a dyadic midpoint
-// that is a root). Nothing is
-// spent on the roots outside [0, 1] (the general path isolates every real
-// root of p and factorises it first), which is what the pipelines ask for.
-std::optional<std::vector<AlgebraicRoot>> unit_interval_roots(const Poly<Rational>& p, int bits) {
-  IntPoly z = integer_multiple(p);
-  CgalGuard::check_size(z, "exact root isolation");
-  if (!certainly_square_free(z)) return std::nullopt;
+// The roots in [0, 1] of the square-free integer polynomial z (degree >= 1),
+// each of multiplicity m in the caller's polynomial, appended to `all`
+// (increasing). Roots at 0 and 1 are z(0) = 0 and z(1) = 0 (exact); they are
+// divided out (exactly, in integers), leaving f, square-free, with f(0),
+// f(1) != 0, whose roots in the open (0, 1) are isolated on that interval
+// alone by zero_one_descartes (each returned interval holds exactly one root
+// of f and f is non-zero at its ends, or it is a dyadic midpoint that is a
+// root) and refined to width 2^-bits.
+void unit_roots_of_square_free(IntPoly z, int m, int bits, std::vector<Work>& all) {
   if (z.back() < 0)
     for (auto& x : z) x = -x;
-  std::vector<Work> all;
   auto rational_root = [&](const Rational& x) {
     Work w;
     w.r.lo = w.r.hi = x;
+    w.r.multiplicity = m;
     all.push_back(std::move(w));
   };
   const bool at0 = sgn(z[0]) == 0;
@@ -715,6 +710,7 @@ std::optional<std::vector<AlgebraicRoot>> unit_interval_roots(const Poly<Rationa
       if (exact[i]) { rational_root(brackets[i].first); continue; }
       Work w;
       w.r.impl = impl;
+      w.r.multiplicity = m;
       Refiner rf(impl->f);
       std::optional<Rational> ex;
       if (!rf.init(brackets[i].first, brackets[i].second, w.d, ex)) w.r.lo = w.r.hi = *ex;
@@ -723,6 +719,42 @@ std::optional<std::vector<AlgebraicRoot>> unit_interval_roots(const Poly<Rationa
     }
   }
   if (at1) rational_root(Rational(1));
+}
+
+// real_roots on [0, 1]: only the roots there are isolated (the general path
+// below isolates every real root of p). When p's primitive integer multiple z
+// is certainly square-free (certainly_square_free, a modular certificate: the
+// usual case in 2D), every root is simple and no factorisation is needed;
+// otherwise CGAL's square-free factorisation z = c · Π F_i^m_i (pairwise
+// coprime, so the roots of different factors are distinct) and each F_i's
+// roots in [0, 1] with multiplicity m_i, merged in increasing order: brackets
+// are sorted by their left ends and overlapping neighbours (of distinct
+// roots) refined until all are disjoint, which puts them in root order.
+std::vector<AlgebraicRoot> unit_interval_roots(const Poly<Rational>& p, int bits) {
+  IntPoly z = integer_multiple(p);
+  CgalGuard::check_size(z, "exact root isolation");
+  std::vector<Work> all;
+  if (certainly_square_free(z)) return unit_roots_of_square_free(z, 1, bits, all), finish_roots(all, bits);
+  std::vector<std::pair<AKPoly, int>> f;
+  with_cgal([&] { PT::Square_free_factorize_up_to_constant_factor()(to_ak(z), std::back_inserter(f)); return 0; });
+  for (auto& [q, m] : f)
+    if (PT::Degree()(q) > 0) unit_roots_of_square_free(from_ak(q), m, bits, all);
+  for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
+    check_deadline("ordering root brackets");
+    std::sort(all.begin(), all.end(), [](const Work& x, const Work& y) { return x.r.lo < y.r.lo; });
+    bool disjoint = true;
+    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
+      if (all[i].r.hi < all[i + 1].r.lo) continue;
+      if (b2 > long(kMaxLevel)) throw std::logic_error("internal error: brackets of distinct roots do not separate");
+      disjoint = false;
+      for (Work* w : {&all[i], &all[i + 1]})
+        if (!w->r.is_rational()) {
+          Refiner rf(w->r.impl->f);
+          refine_to(w->r, w->d, rf, b2);
+        }
+    }
+    if (disjoint) break;
+  }
   return finish_roots(all, bits);
 }
 
@@ -732,8 +764,7 @@ std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a
   if (p.is_zero()) throw std::invalid_argument("real_roots: the zero polynomial has every number as a root");
   std::vector<AlgebraicRoot> out;
   if (p.degree() < 1) return out;
-  if (a == 0 && b == 1)
-    if (auto r = unit_interval_roots(p, bits)) return std::move(*r);
+  if (a == 0 && b == 1) return unit_interval_roots(p, bits);
   std::vector<std::pair<AKReal, AK::Multiplicity_type>> roots;
   {
     IntPoly z = integer_multiple(p);
