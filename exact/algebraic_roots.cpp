@@ -425,6 +425,53 @@ bool is_root(const IntPoly& f, const Rational& q) {
   return sign_at_rational(f, q) == 0;
 }
 
+// A certificate that the integer polynomial z (degree >= 1) is square-free:
+// gcd(z mod q, z' mod q) = 1 for a prime q not dividing lc(z). If z had a
+// square factor h² (deg h >= 1, h primitive), h would divide z and z' over
+// Z; lc(h) divides lc(z), so h mod q keeps its degree and divides both
+// reductions, whose gcd would then have degree >= 1. So a constant gcd mod q
+// proves z square-free; a non-constant one proves nothing (q may be unlucky),
+// and three primes are tried before the caller falls back to CGAL's
+// square-free factorisation. Arithmetic mod q < 2^62 in unsigned 128-bit products.
+bool certainly_square_free(const IntPoly& z) {
+  using u64 = unsigned long long;
+  using u128 = unsigned __int128;
+  const int n = int(z.size()) - 1;
+  if (n < 1) return false;
+  for (u64 q : {4611686018427387847ull, 4611686018427387817ull, 4611686018427387787ull}) {
+    auto mod = [q](const mpz_class& x) { return u64(mpz_fdiv_ui(x.get_mpz_t(), static_cast<unsigned long>(q))); };
+    auto mul = [q](u64 x, u64 y) { return u64(u128(x) * y % q); };
+    auto inv = [&](u64 x) {  // x^(q-2) mod q
+      u64 r = 1, e = q - 2;
+      for (; e; e >>= 1, x = mul(x, x))
+        if (e & 1) r = mul(r, x);
+      return r;
+    };
+    std::vector<u64> a(n + 1), b(n);
+    for (int i = 0; i <= n; ++i) a[i] = mod(z[i]);
+    if (a[n] == 0) continue;
+    for (int i = 1; i <= n; ++i) b[i - 1] = mul(a[i], u64(i) % q);
+    auto trim = [](std::vector<u64>& v) { while (!v.empty() && v.back() == 0) v.pop_back(); };
+    trim(b);
+    if (b.empty()) continue;
+    // Euclid: a <- a mod b, swap, until b = 0; deg gcd = deg a at the end.
+    while (!b.empty()) {
+      const u64 li = inv(b.back());
+      while (a.size() >= b.size()) {
+        const u64 f = mul(a.back(), li);
+        const std::size_t k = a.size() - b.size();
+        for (std::size_t i = 0; i < b.size(); ++i) a[i + k] = (a[i + k] + q - mul(f, b[i])) % q;
+        a.pop_back();  // cancelled exactly
+        trim(a);
+        if (a.empty()) break;
+      }
+      a.swap(b);
+    }
+    if (a.size() == 1) return true;  // a non-zero constant
+  }
+  return false;
+}
+
 // Where the root in the isolating bracket (lo, hi) of f (s_lo: the sign of f
 // at lo) lies with respect to the rational c: -1 below, 0 at, 1 above.
 int compare_root(const IntPoly& f, const Rational& lo, const Rational& hi, int s_lo, const Rational& c) {
@@ -529,12 +576,195 @@ void refine_to(AlgebraicRoot& r, Dyadic& d, Refiner& rf, long bits) {
   set_bracket(r, d);
 }
 
+struct Work {
+  AlgebraicRoot r;
+  Dyadic d;
+};
+
+// The common end of real_roots: consecutive brackets made disjoint (the roots
+// are distinct and sorted), and a rational root with a small denominator
+// written exactly (the simplest rational in the bracket is a root of the
+// factor iff it is the bracket's root).
+std::vector<AlgebraicRoot> finish_roots(std::vector<Work>& all, int bits) {
+  for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
+    check_deadline("separating root brackets");
+    bool disjoint = true;
+    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
+      if (all[i].r.hi < all[i + 1].r.lo) continue;
+      if (all[i + 1].r.hi < all[i].r.lo) throw std::logic_error("internal error: the roots are not in increasing order");
+      if (b2 > long(kMaxLevel)) throw std::logic_error("internal error: brackets of distinct roots do not separate");
+      disjoint = false;
+      for (Work* w : {&all[i], &all[i + 1]})
+        if (!w->r.is_rational()) {
+          Refiner rf(w->r.impl->f);
+          refine_to(w->r, w->d, rf, b2);
+        }
+    }
+    if (disjoint) break;
+  }
+  std::vector<AlgebraicRoot> out;
+  for (auto& w : all) {
+    if (!w.r.is_rational()) {
+      Rational q = simplest_rational_in(w.r.lo, w.r.hi);
+      if (is_root(w.r.impl->f, q)) w.r.lo = w.r.hi = q;
+    }
+    out.push_back(std::move(w.r));
+  }
+  return out;
+}
+
+// Descartes' method on (0, 1) (Collins-Akritas 1976, as in CGAL's
+// Algebraic_kernel_d/Descartes.h zero_one_descartes, here on GMP integers
+// without CGAL's polynomial class): P(x) = 2^(D n) f((i + x) / 2^D) up to a
+// positive power of two, so P's roots in (0, 1) are f's in (i/2^D,
+// (i+1)/2^D). V = sign variations of (1 + x)^n P(1 / (1 + x)) bounds their
+// number, with V - #roots even and >= 0 (exact/descartes.hpp): V = 0, none;
+// V = 1 with P(0), P(1) != 0, exactly one, simple, and f is non-zero at both
+// ends; otherwise bisect: 2^n P(x / 2) for the left half, its Taylor shift
+// by 1 for the right one, whose constant term is P at the midpoint (zero:
+// the midpoint is an exact root). Terminates for square-free f (Vincent's
+// theorem); bounded by the run's deadline and by kMaxLevel.
+void zero_one_descartes(const IntPoly& P, const mpz_class& i, unsigned long D, std::vector<std::pair<Rational, Rational>>& brackets,
+                        std::vector<bool>& exact) {
+  check_deadline("exact root isolation");
+  if (D > kMaxLevel) throw std::logic_error("internal error: root isolation does not converge");
+  const std::size_t n = P.size() - 1;
+  auto taylor_shift_1 = [n](IntPoly& r) {  // r(x) <- r(x + 1)
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t k = n - 1;; --k) {
+        mpz_add(r[k].get_mpz_t(), r[k].get_mpz_t(), r[k + 1].get_mpz_t());
+        if (k == a) break;
+      }
+  };
+  IntPoly R(P.rbegin(), P.rend());
+  taylor_shift_1(R);
+  int V = 0, last = 0;
+  for (const auto& x : R) {
+    int sx = sgn(x);
+    if (sx == 0) continue;
+    if (last != 0 && sx != last) ++V;
+    last = sx;
+  }
+  if (V == 0) return;
+  if (V == 1 && sgn(P[0]) != 0 && sgn(R[0]) != 0) {  // R(0) = P(1)
+    brackets.push_back({dyadic(i, D), dyadic(mpz_class(i + 1), D)});
+    exact.push_back(false);
+    return;
+  }
+  IntPoly Q(P);  // 2^n P(x / 2): Q_k = 2^(n - k) P_k, then the common power of two removed
+  unsigned long common = ~0ul;
+  for (std::size_t k = 0; k <= n; ++k) {
+    mpz_mul_2exp(Q[k].get_mpz_t(), Q[k].get_mpz_t(), n - k);
+    if (sgn(Q[k])) common = std::min<unsigned long>(common, mpz_scan1(Q[k].get_mpz_t(), 0));
+  }
+  if (common != ~0ul && common > 0)
+    for (auto& x : Q) mpz_fdiv_q_2exp(x.get_mpz_t(), x.get_mpz_t(), common);
+  const mpz_class left = 2 * i;
+  zero_one_descartes(Q, left, D + 1, brackets, exact);
+  taylor_shift_1(Q);  // the right half
+  if (sgn(Q[0]) == 0) {
+    brackets.push_back({dyadic(mpz_class(left + 1), D + 1), dyadic(mpz_class(left + 1), D + 1)});
+    exact.push_back(true);
+  }
+  zero_one_descartes(Q, mpz_class(left + 1), D + 1, brackets, exact);
+}
+
+// The roots in [0, 1] of the square-free integer polynomial z (degree >= 1),
+// each of multiplicity m in the caller's polynomial, appended to `all`
+// (increasing). Roots at 0 and 1 are z(0) = 0 and z(1) = 0 (exact); they are
+// divided out (exactly, in integers), leaving f, square-free, with f(0),
+// f(1) != 0, whose roots in the open (0, 1) are isolated on that interval
+// alone by zero_one_descartes (each returned interval holds exactly one root
+// of f and f is non-zero at its ends, or it is a dyadic midpoint that is a
+// root) and refined to width 2^-bits.
+void unit_roots_of_square_free(IntPoly z, int m, int bits, std::vector<Work>& all) {
+  if (z.back() < 0)
+    for (auto& x : z) x = -x;
+  auto rational_root = [&](const Rational& x) {
+    Work w;
+    w.r.lo = w.r.hi = x;
+    w.r.multiplicity = m;
+    all.push_back(std::move(w));
+  };
+  const bool at0 = sgn(z[0]) == 0;
+  if (at0) z.erase(z.begin());  // z / t
+  mpz_class sum = 0;
+  for (const auto& x : z) sum += x;
+  const bool at1 = sgn(sum) == 0;
+  if (at1) {  // z / (t - 1) by synthetic division: q_(i-1) = z_i + q_i, from the top
+    IntPoly q(z.size() - 1);
+    mpz_class carry = 0;
+    for (std::size_t i = z.size() - 1; i >= 1; --i) {
+      carry += z[i];
+      q[i - 1] = carry;
+    }
+    z.swap(q);
+  }
+  if (at0) rational_root(Rational(0));
+  if (z.size() >= 2) {
+    auto impl = std::make_shared<AlgebraicRootImpl>(AlgebraicRootImpl{z, to_ak(z)});
+    std::vector<std::pair<Rational, Rational>> brackets;
+    std::vector<bool> exact;
+    zero_one_descartes(z, 0, 0, brackets, exact);
+    for (std::size_t i = 0; i < brackets.size(); ++i) {
+      if (exact[i]) { rational_root(brackets[i].first); continue; }
+      Work w;
+      w.r.impl = impl;
+      w.r.multiplicity = m;
+      Refiner rf(impl->f);
+      std::optional<Rational> ex;
+      if (!rf.init(brackets[i].first, brackets[i].second, w.d, ex)) w.r.lo = w.r.hi = *ex;
+      else refine_to(w.r, w.d, rf, bits);
+      all.push_back(std::move(w));
+    }
+  }
+  if (at1) rational_root(Rational(1));
+}
+
+// real_roots on [0, 1]: only the roots there are isolated (the general path
+// below isolates every real root of p). When p's primitive integer multiple z
+// is certainly square-free (certainly_square_free, a modular certificate: the
+// usual case in 2D), every root is simple and no factorisation is needed;
+// otherwise CGAL's square-free factorisation z = c · Π F_i^m_i (pairwise
+// coprime, so the roots of different factors are distinct) and each F_i's
+// roots in [0, 1] with multiplicity m_i, merged in increasing order: brackets
+// are sorted by their left ends and overlapping neighbours (of distinct
+// roots) refined until all are disjoint, which puts them in root order.
+std::vector<AlgebraicRoot> unit_interval_roots(const Poly<Rational>& p, int bits) {
+  IntPoly z = integer_multiple(p);
+  CgalGuard::check_size(z, "exact root isolation");
+  std::vector<Work> all;
+  if (certainly_square_free(z)) return unit_roots_of_square_free(z, 1, bits, all), finish_roots(all, bits);
+  std::vector<std::pair<AKPoly, int>> f;
+  with_cgal([&] { PT::Square_free_factorize_up_to_constant_factor()(to_ak(z), std::back_inserter(f)); return 0; });
+  for (auto& [q, m] : f)
+    if (PT::Degree()(q) > 0) unit_roots_of_square_free(from_ak(q), m, bits, all);
+  for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
+    check_deadline("ordering root brackets");
+    std::sort(all.begin(), all.end(), [](const Work& x, const Work& y) { return x.r.lo < y.r.lo; });
+    bool disjoint = true;
+    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
+      if (all[i].r.hi < all[i + 1].r.lo) continue;
+      if (b2 > long(kMaxLevel)) throw std::logic_error("internal error: brackets of distinct roots do not separate");
+      disjoint = false;
+      for (Work* w : {&all[i], &all[i + 1]})
+        if (!w->r.is_rational()) {
+          Refiner rf(w->r.impl->f);
+          refine_to(w->r, w->d, rf, b2);
+        }
+    }
+    if (disjoint) break;
+  }
+  return finish_roots(all, bits);
+}
+
 }  // namespace
 
 std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a, const Rational& b, int bits) {
   if (p.is_zero()) throw std::invalid_argument("real_roots: the zero polynomial has every number as a root");
   std::vector<AlgebraicRoot> out;
   if (p.degree() < 1) return out;
+  if (a == 0 && b == 1) return unit_interval_roots(p, bits);
   std::vector<std::pair<AKReal, AK::Multiplicity_type>> roots;
   {
     IntPoly z = integer_multiple(p);
@@ -543,10 +773,6 @@ std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a
   }
   // CGAL returns them sorted. Only those whose isolating interval meets [a, b]
   // are worked on; the others are known to be outside.
-  struct Work {
-    AlgebraicRoot r;
-    Dyadic d;
-  };
   std::vector<Work> all;
   std::vector<std::shared_ptr<AlgebraicRootImpl>> factors;
   for (auto& [alpha, mult] : roots) {
@@ -588,33 +814,7 @@ std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a
     }
     all.push_back(std::move(w));
   }
-  // Consecutive brackets made disjoint (the roots are distinct and sorted).
-  for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
-    check_deadline("separating root brackets");
-    bool disjoint = true;
-    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
-      if (all[i].r.hi < all[i + 1].r.lo) continue;
-      if (all[i + 1].r.hi < all[i].r.lo) throw std::logic_error("internal error: the roots are not in increasing order");
-      if (b2 > long(kMaxLevel)) throw std::logic_error("internal error: brackets of distinct roots do not separate");
-      disjoint = false;
-      for (Work* w : {&all[i], &all[i + 1]})
-        if (!w->r.is_rational()) {
-          Refiner rf(w->r.impl->f);
-          refine_to(w->r, w->d, rf, b2);
-        }
-    }
-    if (disjoint) break;
-  }
-  // A rational root with a small denominator is written exactly: the simplest
-  // rational in the bracket is a root of the factor iff it is the bracket's root.
-  for (auto& w : all) {
-    if (!w.r.is_rational()) {
-      Rational q = simplest_rational_in(w.r.lo, w.r.hi);
-      if (is_root(w.r.impl->f, q)) w.r.lo = w.r.hi = q;
-    }
-    out.push_back(std::move(w.r));
-  }
-  return out;
+  return finish_roots(all, bits);
 }
 
 Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {

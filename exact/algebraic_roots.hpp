@@ -10,7 +10,11 @@
 // factorisation (modular gcd) and isolation (Descartes' method) are CGAL's
 // Algebraic_kernel_d_1 over CORE::BigInt (CORE ships inside CGAL's headers;
 // issue 6 measured it 1.5-4x faster than the kernel over CGAL::Gmpz with MPFI
-// on the workbench's polynomials). What follows isolation is done in
+// on the workbench's polynomials). On [0, 1] (what the pipelines ask for)
+// only the roots there are isolated, by Descartes' bisection of (0, 1) in
+// GMP integers, after a modular certificate that the polynomial is
+// square-free (else after CGAL's square-free factorisation), issue 21; other
+// ranges use CGAL's isolation of every real root. What follows isolation is done in
 // exact/algebraic_roots.cpp on the isolating intervals, with integers only:
 // refinement by quadratic interval refinement (Abbott, "Quadratic interval
 // refinement for real roots", 2006; exact signs of the square-free factor at

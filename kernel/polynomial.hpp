@@ -12,11 +12,14 @@
 // Known failure modes: Horner evaluation of high degree in rounded arithmetic
 // near a cluster of roots; trim() only drops coefficients that are exactly 0.
 #include "kernel/budget.hpp"
+#include "number/integer_poly_product.hpp"
+#include "number/rational_poly_eval.hpp"
 #include "number/scalar_traits.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace eccd {
@@ -41,6 +44,8 @@ struct Poly {
   template <class U>
   U operator()(const U& t) const {  // Horner
     if (c.empty()) return U(0);
+    if constexpr (std::is_same_v<T, mpq_class> && std::is_same_v<U, mpq_class>)  // exact: integer Horner (number/rational_poly_eval.hpp)
+      return rational_poly_eval(c, t);
     U r = U(c.back());
     for (int i = int(c.size()) - 2; i >= 0; --i) { r = r * t; r = r + U(c[i]); }
     return r;
@@ -68,6 +73,9 @@ struct Poly {
     check_deadline("polynomial product");
     Poly r;
     if (a.c.empty() || b.c.empty()) return r;
+    if constexpr (std::is_same_v<T, mpq_class>) {  // exact rationals: Kronecker substitution (number/integer_poly_product.hpp)
+      if (std::min(a.c.size(), b.c.size()) > 2) { r.c = rational_poly_product(a.c, b.c); r.trim(); return r; }
+    }
     r.c.assign(a.c.size() + b.c.size() - 1, T(0));
     for (std::size_t i = 0; i < a.c.size(); ++i)
       for (std::size_t j = 0; j < b.c.size(); ++j) { T p = a.c[i] * b.c[j]; r.c[i + j] = r.c[i + j] + p; }

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdint>
+
 using namespace eccd;
 using Q = mpq_class;
 using RP = Poly<Rational>;
@@ -268,4 +270,44 @@ TEST_CASE("square_free_factors and polynomial_gcd", "[exact][algebraic_roots]") 
   CHECK(F[1].first == poly({-1, 3}));
   CHECK(F[2].first == c);
   CHECK(polynomial_gcd(p, a * poly({5, 1})) == a);
+}
+
+TEST_CASE("real_roots on [0, 1] (square-free fast path) agrees with the general isolation on random products", "[exact][algebraic_roots]") {
+  // Products of linear factors k t - m (roots in and around [0, 1], including
+  // 0, 1 and dyadic midpoints that the bisection hits exactly), k t^2 - m
+  // (irrational roots), t^2 + 1 and roots < 0, scaled by a big rational;
+  // some with a repeated factor (not square-free: the general path). The
+  // [0, 1] answer must pass the complete isolation check and match, root by
+  // root, the general path's on q(s) = p(s / 2) over [0, 2] (the same roots,
+  // doubled: the general path runs for every range other than [0, 1]).
+  std::uint64_t state = 12345;
+  auto next = [&state](std::uint64_t m) { state = state * 6364136223846793005ull + 1442695040888963407ull; return (state >> 33) % m; };
+  for (int trial = 0; trial < 60; ++trial) {
+    RP p = poly({Q(1)});
+    const int factors = 2 + int(next(6));
+    for (int f = 0; f < factors; ++f) {
+      switch (next(5)) {
+        case 0: p = p * poly({Q(-long(next(9)), 8), 1}); break;                                // m/8: 0, 1/2, 1, ... exact
+        case 1: p = p * poly({Q(-long(next(2001))), Q(long(1 + next(1000)))}); break;          // m/k in [0, 2]
+        case 2: p = p * poly({Q(-long(1 + next(97)), long(1 + next(97))), 0, 1}); break;       // t^2 - c
+        case 3: p = p * poly({1, 0, 1}); break;                                                // ±i
+        default: p = p * poly({Q(long(3 + next(5))), 1}); break;                               // a root < 0
+      }
+    }
+    if (next(4) == 0) p = p * poly({Q(-1, 3), 1}) * poly({Q(-1, 3), 1});  // a double root at 1/3
+    p = Q(long(1 + next(1000000)), long(1 + next(1000))) * p;
+    INFO("trial " << trial << ", degree " << p.degree());
+    auto fast = real_roots(p, Q(0), Q(1), 64);
+    check_isolation(p, fast, Q(0), Q(1), 64);
+    RP q = p;
+    for (int i = 0; i <= q.degree(); ++i) q.c[i] *= two_pow(-i);
+    auto general = real_roots(q, Q(0), Q(2), 64);
+    REQUIRE(fast.size() == general.size());
+    for (std::size_t i = 0; i < fast.size(); ++i) {
+      CHECK(fast[i].multiplicity == general[i].multiplicity);
+      CHECK(fast[i].is_rational() == general[i].is_rational());
+      CHECK(2 * fast[i].lo <= general[i].hi);  // the brackets of one root overlap
+      CHECK(general[i].lo <= 2 * fast[i].hi);
+    }
+  }
 }
