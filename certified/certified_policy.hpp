@@ -39,7 +39,7 @@
 //     next to a multiple root or a cluster, and the scene escalates as before,
 //     so touches cost what they cost without the oracle); the sign of a piece's
 //     end value is then the exact one, not the interval's. At most
-//     max_local_splits (16) exact evaluations per run go to this: a polynomial whose interval
+//     max_local_splits (4) exact evaluations per run go to this: a polynomial whose interval
 //     coefficients are uncertain on every piece would otherwise make one at
 //     each of up to 2^12 pieces;
 //   - "identically_zero": whether a polynomial of degree d whose interval
@@ -114,7 +114,7 @@ struct CertifiedPolicy {
   T like;
   mutable long pieces = 0;  // Bernstein pieces examined (work counter)
   const ExactPointOracle* oracle = nullptr;   // exact values at rational instants (local decisions); may be null
-  long max_local_splits = 16;  // exact split-point evaluations allowed per run (beyond: escalate as without the oracle)
+  long max_local_splits = 4;  // exact split-point evaluations allowed per run (beyond: escalate as without the oracle)
   mutable long local_split_evaluations = 0;
   mutable std::map<std::string, long> local;  // decisions made locally with the oracle, by kind (see above)
 

@@ -52,7 +52,7 @@
 // from the motions' rationals, then one formula of them: a few hundred
 // products of rationals) runs between two looks at the rung's deadline, so
 // it is part of that rung's time and budget; δ now also covers one such
-// evaluation. Split-point evaluations are capped at max_local_splits (16) per run,
+// evaluation. Split-point evaluations are capped at max_local_splits (4) per run,
 // and an identically-zero test of degree d makes at most d + 1.
 // Requirements: a prepared pair (kernel/prepared_scene.hpp), N = 3 (2D) or 4 (3D).
 #include "certified/solution.hpp"

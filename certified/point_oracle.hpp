@@ -6,9 +6,10 @@
 // exact rationals, so A(t), B(t) and the coefficients g_0..g_H of
 // f(λ; t) = det(λA(t) − B(t)) (003 eq. (1), 002 section III) are exact
 // rationals, computed from the pair's rational matrices with a few dozen
-// products (the entries of the motion evaluated at t, then the determinant
-// expansion of kernel/characteristic_polynomial.hpp on numbers, not
-// polynomials). From them, without building any projection polynomial:
+// products: the entries of the motion evaluated at t, A(t) and B(t)
+// (kernel/quadric.hpp on numbers), det(kA(t) − B(t)) for k = 0..H by
+// Gaussian elimination over Q, and the interpolating polynomial in λ.
+// From them, without building any projection polynomial:
 //   - the static test at t (kernel/contact_status.hpp in 2D, 002 Theorem 1 /
 //     kernel/quartic_status.hpp in 3D) is an exact decision;
 //   - the value at t of any ring formula of g_0..g_H (Δ, P, D, the quartic
@@ -20,7 +21,6 @@
 // PreparedPair. g_at(t) equals the exact pipeline's characteristic_of(pair)
 // evaluated at t (tests/certified/test_local_escalation.cpp).
 // Requirements: H = 3 (2D) or 4 (3D); t rational (any, not only dyadic).
-#include "kernel/characteristic_polynomial.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
@@ -55,10 +55,47 @@ class PreparedPointOracle final : public ExactPointOracle {
     const Rational zero(0);
     const auto a = moving_quadric_in<Rational, Rational, H>(p_.qa, na, zero);
     const auto b = moving_quadric_in<Rational, Rational, H>(p_.qb, nb, zero);
-    return characteristic_coefficients_in<Rational, H>(a, b, zero);
+    // f(λ) = det(λA − B) at λ = 0..H (Gaussian elimination over Q), then the
+    // interpolating polynomial's coefficients (Newton's divided differences):
+    // H + 1 small determinants instead of the 2^H of the expansion.
+    std::vector<Rational> c(H + 1);
+    for (int k = 0; k <= H; ++k) {
+      Matrix<Rational, H> m;
+      for (int i = 0; i < H; ++i)
+        for (int j = 0; j < H; ++j) m[i][j] = Rational(k) * a[i][j] - b[i][j];
+      c[k] = det(m);
+    }
+    for (int j = 1; j <= H; ++j)  // divided differences on the nodes 0..H
+      for (int k = H; k >= j; --k) c[k] = (c[k] - c[k - 1]) / Rational(j);
+    std::vector<Rational> g(H + 1, zero);  // Σ c_k Π_{i<k} (λ − i), expanded from the top
+    g[0] = c[H];
+    for (int k = H - 1; k >= 0; --k) {
+      for (int i = H; i >= 1; --i) g[i] = g[i - 1] - Rational(k) * g[i];
+      g[0] = c[k] - Rational(k) * g[0];
+    }
+    return g;
   }
 
  private:
+  static Rational det(Matrix<Rational, H> m) {
+    Rational d(1);
+    for (int col = 0; col < H; ++col) {
+      int piv = col;
+      while (piv < H && sgn(m[piv][col]) == 0) ++piv;
+      if (piv == H) return Rational(0);
+      if (piv != col) {
+        std::swap(m[piv], m[col]);
+        d = -d;
+      }
+      d *= m[col][col];
+      for (int r = col + 1; r < H; ++r) {
+        if (sgn(m[r][col]) == 0) continue;
+        const Rational f = m[r][col] / m[col][col];
+        for (int k = col + 1; k < H; ++k) m[r][k] -= f * m[col][k];
+      }
+    }
+    return d;
+  }
   const PreparedPair<H>& p_;
 };
 
