@@ -104,6 +104,8 @@ Command add_regress_command(CLI::App& app) {
     int agree = 0, differ = 0, failed = 0, skipped = 0, escalated = 0;
     const bool certified_mode = args->arith != "exact";
     std::map<std::string, int> decided_in;  // certified mode: scenes per deciding rung
+    std::map<std::string, long> local_decisions;  // certified mode: decisions made locally, by kind (summed over scenes)
+    int local_scenes = 0;                        // certified mode: scenes decided with at least one local decision
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::string> pipeline_order;
     std::map<std::string, PipelineTally> tally;
@@ -141,6 +143,9 @@ Command add_regress_command(CLI::App& app) {
         if (sol.arith.kind == Arithmetic::Certified) {
           const nlohmann::json r = solution_to_json(sol);  // the ladder's keys as `eccd solve --json` writes them
           for (const char* k : {"escalated", "decided_in", "escalations"}) row[k] = r[k];
+          if (r.contains("local_decisions")) row["local_decisions"] = r["local_decisions"];
+          for (const auto& [kind, n] : sol.local_decisions) local_decisions[kind] += n;
+          if (!sol.local_decisions.empty()) ++local_scenes;
           ++decided_in[sol.decided_in];
           if (r["escalated"].get<bool>()) {
             ++escalated;
@@ -263,6 +268,8 @@ Command add_regress_command(CLI::App& app) {
       if (certified_mode) {
         j["escalated"] = escalated;
         j["decided_in"] = decided_in;
+        j["local_decisions"] = local_decisions;
+        j["local_scenes"] = local_scenes;
       }
       if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
       stamp_format(j, "eccd-regress/1");
@@ -287,6 +294,11 @@ Command add_regress_command(CLI::App& app) {
                   agree + differ, escalated);
       for (const auto& [rung, n] : decided_in) std::printf(" %s %d", rung.c_str(), n);
       std::printf("\n");
+      if (local_scenes) {
+        std::printf("decided with local exact decisions: %d scene(s);", local_scenes);
+        for (const auto& [kind, n] : local_decisions) std::printf(" %s %ld", kind.c_str(), n);
+        std::printf("\n");
+      }
     }
     if (bad) std::printf("REGRESSION: %d scene(s) do not match their stored answers (FAIL lines above)\n", bad);
     return bad ? 1 : 0;

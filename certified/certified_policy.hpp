@@ -24,6 +24,33 @@
 // dyadic rationals that provably hold one root each. Isolation and refinement
 // ask the running thread's deadline at every piece and every bisection step
 // (check_deadline, kernel/budget.hpp): the ladder gives each rung a budget.
+//
+// Local decisions (issue 18 point 2). With an exact oracle at rational
+// instants (certified/point_oracle.hpp, `oracle`; the ladder sets it), one
+// uncertain sign at one rational point is decided there exactly instead of
+// escalating the scene: every polynomial built carries its formula, and its
+// exact value at a rational t is formula(g(t)) (the formula commutes with
+// evaluation). Decided locally, each counted by kind in `local`:
+//   - "end_sign": the projection's sign at t = 0 or t = 1 (a zero there is a
+//     root at the end, which this policy does not take: Escalate rational_root);
+//   - "split_sign": at a split point of the isolation where the interval value
+//     is uncertain at all five candidate dyadics, the exact sign at the first
+//     candidate where it is non-zero (only at depth < 12: deeper, the piece is
+//     next to a multiple root or a cluster, and the scene escalates as before,
+//     so touches cost what they cost without the oracle); the sign of a piece's
+//     end value is then the exact one, not the interval's. At most
+//     max_local_splits (4) exact evaluations per run go to this: a polynomial whose interval
+//     coefficients are uncertain on every piece would otherwise make one at
+//     each of up to 2^12 pieces;
+//   - "identically_zero": whether a polynomial of degree d whose interval
+//     coefficients all hold 0 vanishes identically: exactly, from its values
+//     at t = 0, 1, ..., d (zero at all of them: zero; else not);
+//   - "cell_status": the static test at a dyadic sample (a cell, t = 0, t = 1)
+//     whose interval signs are uncertain (settle_status, the optional hook of
+//     kernel/pipeline_policy.hpp).
+// Every exact evaluation is between two looks at the deadline, so the rung's
+// budget still bounds its time (certified/ladder.hpp: δ includes one exact
+// evaluation at a point). Without an oracle the policy is as before.
 // Requirements on T: Interval or MpfiInterval — scalar_traits<T> whose sign()
 // is certain-or-uncertain and whose operations enclose exact results, plus
 // interval_hull(lo, hi, like) and exact_point(x) (number/interval.hpp,
@@ -37,6 +64,10 @@
 #include "kernel/budget.hpp"
 #include "kernel/pipeline_policy.hpp"
 #include "kernel/polynomial.hpp"
+#include "certified/point_oracle.hpp"
+
+#include <functional>
+#include <map>
 
 #include <optional>
 #include <span>
@@ -51,7 +82,10 @@ namespace eccd {
 // 2^-max_depth: almost always a true multiple root, which no precision
 // separates — every touch scene — so the ladder goes straight to exact).
 struct Escalate : std::runtime_error {
-  enum Kind { precision, multiple_root } kind;
+  // rational_root: the projection vanishes exactly at a rational point this
+  // policy cannot place a root at (t = 0, t = 1, a split point): no precision
+  // helps either, so the ladder treats it like multiple_root.
+  enum Kind { precision, multiple_root, rational_root } kind;
   explicit Escalate(const std::string& what, Kind k = precision) : std::runtime_error(what), kind(k) {}
 };
 
@@ -59,14 +93,30 @@ struct CertifiedRoot {
   Rational lo, hi;  // dyadic bracket holding exactly one root
 };
 
+// A polynomial of the certified policy: its Bernstein coefficients over
+// intervals and, when the policy has an oracle, its formula in g_0..g_H, to
+// be evaluated exactly at a rational instant.
+template <class T>
+struct CertifiedRep : Bern<T> {
+  using Exact = std::function<Poly<Rational>(const std::vector<Poly<Rational>>&)>;
+  Exact exact;  // empty: no exact value available
+  CertifiedRep() = default;
+  CertifiedRep(Bern<T> b) : Bern<T>(std::move(b)) {}  // NOLINT: a plain Bernstein polynomial, no formula
+  CertifiedRep(Bern<T> b, Exact e) : Bern<T>(std::move(b)), exact(std::move(e)) {}
+};
+
 template <class T>
 struct CertifiedPolicy {
-  using Rep = Bern<T>;
+  using Rep = CertifiedRep<T>;
   using Root = CertifiedRoot;
   int max_depth = 48;    // isolation gives up (escalates) below pieces of width 2^-max_depth
   int refine_bits = 30;  // brackets are refined to width <= 2^-refine_bits while signs are certain
   T like;
   mutable long pieces = 0;  // Bernstein pieces examined (work counter)
+  const ExactPointOracle* oracle = nullptr;   // exact values at rational instants (local decisions); may be null
+  long max_local_splits = 4;  // exact split-point evaluations allowed per run (beyond: escalate as without the oracle)
+  mutable long local_split_evaluations = 0;
+  mutable std::map<std::string, long> local;  // decisions made locally with the oracle, by kind (see above)
 
   explicit CertifiedPolicy(const T& like_value = T(0)) : like(like_value) {}
 
@@ -74,10 +124,21 @@ struct CertifiedPolicy {
 
   // In the Bernstein basis (kernel/basis_build.hpp): its coefficients enclose the range, which sign_at uses.
   template <class F>
-  Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
-    return build_in_basis(Basis::bernstein, g, formula, T(0));
+  Rep build(const std::vector<Poly<T>>& g, F formula) const {
+    Rep r(build_in_basis(Basis::bernstein, g, formula, T(0)));
+    if (oracle)  // the formula is a stateless ring formula (kernel/basis_build.hpp): held by value
+      r.exact = [formula](const std::vector<Poly<Rational>>& G) { return Poly<Rational>(formula(G)); };
+    return r;
   }
-  bool identically_zero(const Bern<T>& q) const {
+  // q's exact sign at the rational t, or uncertain when there is no oracle or formula.
+  Sign exact_sign(const Rep& q, const Rational& t) const {
+    if (!oracle || !q.exact) return Sign::uncertain;
+    std::vector<Poly<Rational>> G;
+    for (const Rational& c : oracle->g_at(t)) G.push_back(Poly<Rational>(std::vector<Rational>{c}));
+    const Poly<Rational> v = q.exact(G);
+    return v.is_zero() ? Sign::zero : (sgn(v.c[0]) > 0 ? Sign::positive : Sign::negative);
+  }
+  bool identically_zero(const Rep& q) const {
     bool all_zero = true;
     for (const auto& x : q.b) {
       Sign s = eccd::sign(x);
@@ -85,15 +146,50 @@ struct CertifiedPolicy {
       if (s == Sign::uncertain) all_zero = false;
     }
     if (all_zero) return true;
+    if (oracle && q.exact) {
+      // Local: a polynomial of degree <= d that vanishes at d + 1 points is
+      // zero. The points need not lie in [0, 1]: the integers 0..d keep the
+      // numbers small.
+      const int d = q.degree();
+      for (int i = 0; i <= d; ++i) {
+        check_deadline("certified: exact identically-zero test");
+        if (exact_sign(q, Rational(i)) != Sign::zero) {
+          ++local["identically_zero"];
+          return false;
+        }
+      }
+      ++local["identically_zero"];
+      return true;
+    }
     throw Escalate("cannot tell in interval arithmetic whether the projection vanishes identically");
   }
+  // The hook of kernel/pipeline_policy.hpp: a static test whose interval signs
+  // are uncertain at a point instant, decided there exactly.
+  Status settle_status(const T& t, Status s) const {
+    if (s != Status::uncertain || !oracle) return s;
+    std::optional<Rational> q = exact_point(t);
+    if (!q) return s;
+    check_deadline("certified: exact static test at a sample");
+    ++local["cell_status"];
+    return oracle->status_at(*q);
+  }
 
-  std::vector<Root> roots(const Bern<T>& q, bool /*first_only*/) const {
+  std::vector<Root> roots(const Rep& q, bool /*first_only*/) const {
     std::vector<Root> out;
-    if (is_certain_nonzero(q.b.front()) == false || is_certain_nonzero(q.b.back()) == false)
-      throw Escalate("the projection may vanish at t = 0 or t = 1");
+    local_in_isolation = false;
+    const Sign s0 = end_sign(q, 0), s1 = end_sign(q, 1);
     whole = &q;
-    isolate(q, Rational(0), Rational(1), 0, out);
+    try {
+      isolate(q, Rational(0), Rational(1), 0, out, s0, s1);
+    } catch (const Escalate& e) {
+      whole = nullptr;
+      // Without the local decisions this isolation would have given up
+      // earlier, on precision (an MPFI rung may decide it): a later failure
+      // that looks like a multiple root is not taken for one.
+      if (local_in_isolation && e.kind == Escalate::multiple_root)
+        throw Escalate(std::string(e.what()) + " (after local decisions; without them: precision)", Escalate::precision);
+      throw;
+    }
     whole = nullptr;
     return out;
   }
@@ -102,7 +198,7 @@ struct CertifiedPolicy {
   // enclose its range there; two de Casteljau splits). Evaluating q at the
   // interval [lo, hi] instead would suffer the dependency problem: for
   // degree 100+ its width is many times q's true range.
-  Sign sign_at(const Bern<T>& q, const Root& r) const {
+  Sign sign_at(const Rep& q, const Root& r) const {
     if (q.degree() <= 0) return eccd::sign(q.b.empty() ? T(0) : q.b[0]);
     std::vector<T> piece = q.b;
     if (r.lo > 0) keep_right(std::span<T>(piece), of(r.lo));
@@ -112,7 +208,7 @@ struct CertifiedPolicy {
       if (eccd::sign(x) != s) return Sign::uncertain;
     return s;
   }
-  Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
+  Sign sign_at_value(const Rep& q, const T& t) const { return eccd::sign(q(t)); }
   // Two brackets from neighbouring pieces of the subdivision may share their
   // end point m (each root lies in the OPEN bracket, and the split point m had
   // a certain non-zero value, isolate): m itself is then strictly between the
@@ -140,20 +236,39 @@ struct CertifiedPolicy {
   bool at_one(const Root&) const { return false; }
 
  private:
-  static bool is_certain_nonzero(const T& x) {
-    Sign s = eccd::sign(x);
-    return s == Sign::positive || s == Sign::negative;
+  // q's certain non-zero sign at t = e (0 or 1): its end coefficient's, or
+  // decided locally by the oracle; otherwise Escalate.
+  Sign end_sign(const Rep& q, int e) const {
+    const Sign s = eccd::sign(e ? q.b.back() : q.b.front());
+    if (s == Sign::positive || s == Sign::negative) return s;
+    check_deadline("certified: exact sign at an end");
+    const Sign x = exact_sign(q, Rational(e));
+    if (x == Sign::positive || x == Sign::negative) {
+      ++local["end_sign"];
+      local_in_isolation = true;
+      return x;
+    }
+    if (x == Sign::zero)
+      throw Escalate(std::string("the projection vanishes exactly at t = ") + (e ? "1" : "0") +
+                         " (decided locally; a root at an end is left to the exact rung)",
+                     Escalate::rational_root);
+    throw Escalate("the projection may vanish at t = 0 or t = 1");
   }
-  // q is the restriction to [a, b] (reparameterised to [0, 1]); its end
-  // coefficients (the values at a and b) have certain non-zero signs.
-  void isolate(const Bern<T>& q, const Rational& a, const Rational& b, int depth, std::vector<Root>& out) const {
+  // q is the restriction to [a, b] (reparameterised to [0, 1]); its values at
+  // a and b have the certain non-zero signs sa and sb (the end coefficients'
+  // intervals may hold 0 when a sign was decided locally).
+  void isolate(const Bern<T>& q, const Rational& a, const Rational& b, int depth, std::vector<Root>& out, Sign sa,
+               Sign sb) const {
     ++pieces;
     check_deadline("certified root isolation");  // the rung's budget (certified/ladder.hpp)
     // An uncertain count (a coefficient whose interval holds 0) proves nothing: split.
-    const SignVariations v = sign_variations(q.b);
+    const std::size_t n = q.b.size();
+    const SignVariations v = sign_variations_n(n, [&](std::size_t k) {
+      return k == 0 ? sa : k + 1 == n ? sb : eccd::sign(q.b[k]);
+    });
     if (v.is(0)) return;
     if (v.is(1)) {
-      refine(q, a, b, out);
+      refine(a, b, sa, out);
       return;
     }
     if (depth >= max_depth)
@@ -161,14 +276,40 @@ struct CertifiedPolicy {
                      " (a multiple root, or roots closer than 2^-" + std::to_string(max_depth) + ")",
                      Escalate::multiple_root);
     // Split at the middle, or near it if the value there is not certainly non-zero.
-    for (const char* frac : {"1/2", "7/16", "9/16", "3/8", "5/8"}) {
+    static const char* const fracs[] = {"1/2", "7/16", "9/16", "3/8", "5/8"};
+    for (const char* frac : fracs) {
       Rational f(frac);
       auto [left, right] = split(q, of(f));
-      if (!is_certain_nonzero(left.b.back())) continue;
+      const Sign sm = eccd::sign(left.b.back());
+      if (sm != Sign::positive && sm != Sign::negative) continue;
       Rational m = a + f * (b - a);
-      isolate(left, a, m, depth + 1, out);
-      isolate(right, m, b, depth + 1, out);
+      isolate(left, a, m, depth + 1, out, sa, sm);
+      isolate(right, m, b, depth + 1, out, sm, sb);
       return;
+    }
+    // Local: the exact sign at the first candidate where it is not zero
+    // (shallow pieces only, see the prose block).
+    if (depth < 12 && oracle && whole && whole->exact && local_split_evaluations < max_local_splits) {
+      bool vanishes = false;
+      for (const char* frac : fracs) {
+        check_deadline("certified: exact sign at a split point");
+        Rational f(frac);
+        Rational m = a + f * (b - a);
+        ++local_split_evaluations;
+        const Sign sm = exact_sign(*whole, m);
+        if (sm == Sign::zero) vanishes = true;
+        if (sm != Sign::positive && sm != Sign::negative) continue;
+        ++local["split_sign"];
+        local_in_isolation = true;
+        auto [left, right] = split(q, of(f));
+        isolate(left, a, m, depth + 1, out, sa, sm);
+        isolate(right, m, b, depth + 1, out, sm, sb);
+        return;
+      }
+      if (vanishes)
+        throw Escalate("the projection vanishes exactly at a split point near t = " + decimal_string(a, 12) +
+                           " (decided locally; left to the exact rung)",
+                       Escalate::rational_root);
     }
     // Deep in the subdivision (pieces of width <= 2^-12) a polynomial too flat
     // to sign at five points of a piece is near a multiple root or a tight
@@ -180,8 +321,7 @@ struct CertifiedPolicy {
   }
   // One root in (a, b) of the piece q: bisect while the midpoint's sign is
   // certain, evaluating the whole polynomial at the midpoint in O(n).
-  void refine(const Bern<T>& q, Rational a, Rational b, std::vector<Root>& out) const {
-    const Sign sa = eccd::sign(q.b.front());
+  void refine(Rational a, Rational b, Sign sa, std::vector<Root>& out) const {
     Rational limit(mpz_class(1), mpz_class(1) << refine_bits);
     while (b - a > limit) {
       check_deadline("certified root refinement");
@@ -206,7 +346,8 @@ struct CertifiedPolicy {
     for (int k = 0; k < n; ++k) pw = pw * y;
     return acc * pw;
   }
-  mutable const Bern<T>* whole = nullptr;  // the polynomial being isolated (for refine)
+  mutable const Rep* whole = nullptr;       // the polynomial being isolated (for refine and the local split signs)
+  mutable bool local_in_isolation = false;  // roots() used a local decision (end or split sign)
 };
 
 static_assert(PipelinePolicy<CertifiedPolicy<Interval>, Interval>);

@@ -3,6 +3,7 @@
 
 #include "certified/bezier_proof.hpp"
 #include "certified/certified_policy.hpp"
+#include "certified/point_oracle.hpp"
 #include "exact/cd_disc_exact.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/ccd_projection.hpp"
@@ -35,23 +36,29 @@ Solution& named(Solution& s, const char* basis, bool certified) {
 // passing is not this rung's business: BudgetExhausted goes on up.
 template <class T, int N>
 std::optional<Solution> try_certified_rung(const PreparedPair<N>& p, Variant variant, bool first_contact, const T& like,
-                                           int max_depth, double budget_s, std::string& reason, bool& multiple_root,
-                                           bool& out_of_budget) {
+                                           int max_depth, double budget_s, bool local, std::string& reason,
+                                           bool& multiple_root, bool& out_of_budget) {
   try {
     ScopedDeadline rung_deadline(budget_s);
     if (deadline_passed()) throw BudgetExhausted("certified rung: " + deadline_reason());  // a budget already spent
     CertifiedPolicy<T> pol(like);
     pol.max_depth = max_depth;
+    const PreparedPointOracle<N> oracle(p);  // local decisions: exact at one rational instant
+    if (local) pol.oracle = &oracle;
     PipelineResult<T> r = projection_pipeline(to_arithmetic<T, N>(p, like), pol, variant, first_contact);
     if (r.answer.undecided.empty()) {
       Solution s = solution_of(r, N - 1);
       s.work.emplace_back("interval_pieces", pol.pieces);
+      for (const auto& [kind, count] : pol.local) {
+        s.local_decisions.emplace_back(kind, count);
+        s.work.emplace_back("local_" + kind, count);
+      }
       return named<N>(s, "bernstein", true);
     }
     reason = std::to_string(r.answer.undecided.size()) + " instant(s) undecided";
   } catch (const Escalate& e) {
     reason = e.what();
-    multiple_root = e.kind == Escalate::multiple_root;
+    multiple_root = e.kind == Escalate::multiple_root || e.kind == Escalate::rational_root;
   } catch (const BudgetExhausted& e) {
     if (deadline_passed()) throw;  // the caller's deadline (the rung's scope has ended): the whole run is over
     reason = std::string("rung budget exhausted (") + e.what() + ")";
@@ -141,7 +148,7 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
   }
   // Rung 1: intervals of doubles, within the fixed budget B_I.
   auto t = Clock::now();
-  if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, budget.interval_s, reason,
+  if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, budget.interval_s, budget.local, reason,
                                                multiple_root, out_of_budget))
     return finish(*s, "interval");
   const double interval_s = seconds_since(t);
@@ -157,7 +164,7 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
     const double left_s = mpfi_total_s - mpfi_spent_s;
     // Not converging: straight to exact.
     std::string skip;
-    if (multiple_root) skip = "skipped: the rung below met a multiple root (no precision separates it)";
+    if (multiple_root) skip = "skipped: the rung below met a multiple root or an exact zero (no precision separates it)";
     else if (not_converging) skip = "skipped: the rung below was not converging";
     else if (out_of_budget) skip = "skipped: the rung below ran out of its budget";
     else if (left_s <= 0) skip = "skipped: the MPFI budget (" + std::to_string(budget.mpfi_factor).substr(0, 4) +
@@ -173,7 +180,7 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
     int depth = std::clamp(bits / 4, 48, 256);
     t = Clock::now();
     if (auto s = try_certified_rung<MpfiInterval, N>(p, variant, first_contact, MpfiInterval(Rational(0), bits), depth,
-                                                     left_s, reason, multiple_root, out_of_budget))
+                                                     left_s, budget.local, reason, multiple_root, out_of_budget))
       return finish(*s, rung);
     const double rung_s = seconds_since(t);
     mpfi_spent_s += rung_s;

@@ -34,6 +34,26 @@
 // which is itself capped. A rung that
 // decides is never cut short by the guarantee (its answer is certified), and
 // the caller's deadline still ends the whole run (BudgetExhausted).
+//
+// Local decisions (issue 18 point 2). The interval and MPFI rungs carry an
+// exact oracle at rational instants (certified/point_oracle.hpp, filled here
+// from the PreparedPair): one sign or one status that the rung's intervals
+// leave uncertain at one rational point (an end of [0, 1], a split point of
+// the isolation, a cell's sample, an identically-zero test) is decided there
+// exactly instead of giving up the scene (certified/certified_policy.hpp,
+// "Local decisions"); the Solution lists them by kind (local_decisions). What
+// still escalates: a piece with two or more sign changes at 2^-max_depth or
+// too flat at depth >= 12 (a multiple root: every touch), a projection that
+// vanishes exactly at a rational point where the policy cannot place a root
+// (t = 0, t = 1, a split point: kind rational_root, straight to exact like a
+// multiple root), and a sign at an irrational root (a touch rule's sign, a
+// cell boundary's status) that the intervals cannot decide. The guarantee
+// above is unchanged: each exact evaluation (f's coefficients at the point
+// from the motions' rationals, then one formula of them: a few hundred
+// products of rationals) runs between two looks at the rung's deadline, so
+// it is part of that rung's time and budget; δ now also covers one such
+// evaluation. Split-point evaluations are capped at max_local_splits (4) per run,
+// and an identically-zero test of degree d makes at most d + 1.
 // Requirements: a prepared pair (kernel/prepared_scene.hpp), N = 3 (2D) or 4 (3D).
 #include "certified/solution.hpp"
 #include "kernel/prepared_scene.hpp"
@@ -50,6 +70,7 @@ struct LadderBudget {
   double bezier_s = 0.25;    // B_Z: the Bézier rung's budget in 3D (seconds; <= 0: none)
   double interval_s = 1.0;   // B_I: the interval rung's budget (seconds; <= 0: none)
   double mpfi_factor = 1.0;  // f: all MPFI rungs together at most f x the interval rung's time
+  bool local = true;         // local decisions with the exact oracle at rational instants (false: as before issue 18 point 2)
 };
 
 template <int N>

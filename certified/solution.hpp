@@ -65,6 +65,9 @@ struct Solution {
   // Certified runs.
   std::string decided_in;  // "interval", "mpfi:256", "exact"
   std::vector<Escalation> escalations;
+  // Decisions the deciding rung made locally, exactly at one rational instant
+  // instead of escalating the scene (certified/certified_policy.hpp), by kind.
+  std::vector<std::pair<std::string, long>> local_decisions;
   // Proved independent-motion answers (certified/independent_proof.hpp): how each end was proved.
   std::vector<std::string> proofs;
 

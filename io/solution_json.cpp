@@ -85,6 +85,11 @@ json solution_to_json(const Solution& s) {
       if (e.reason.rfind("skipped", 0) != 0) j["escalation_reason"] = e.rung + ": " + e.reason;
     }
     j["escalations"] = esc;
+    if (!s.local_decisions.empty()) {  // decided locally, exactly at one rational instant (issue 18 point 2)
+      json local = json::object();
+      for (const auto& [k, v] : s.local_decisions) local[k] = v;
+      j["local_decisions"] = local;
+    }
     j["decided_in"] = s.decided_in;
   }
   return j;

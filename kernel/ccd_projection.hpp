@@ -56,7 +56,7 @@ PipelineResult<T> ccd_projection(const MovingPair3<T>& pair, Policy& pol, bool f
   const auto& g = res.g;
   auto finish = [&]() { return finish_run(res, pol, start); };
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
-  auto status_at = [&](const T& t) { return quartic_status_at(g, t); };
+  auto status_at = [&](const T& t) { return policy_hooks::settle_status(pol, t, quartic_status_at(g, t)); };
   res.status_at_0 = status_at(zero);
 
   // Subresultant coefficients s_{j,i}(t) (kernel/quartic_touch_rule.hpp), built on demand in the Policy's ring.

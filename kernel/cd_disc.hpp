@@ -131,7 +131,7 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
   auto finish = [&]() { return finish_run(res, pol, start); };
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
 
-  auto status_at = [&](const T& t) { return cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t)); };
+  auto status_at = [&](const T& t) { return policy_hooks::settle_status(pol, t, cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t))); };
   res.status_at_0 = status_at(zero);
 
   auto delta = discriminant_of(g, pol);

@@ -30,8 +30,12 @@
 //                                 the pipeline then answers undecided on [0, 1] with it
 //   notes                         a std::vector<std::string> member: why parts were left undecided
 //   Root::unresolved              a bool member: the root's place is unknown (work bound, deadline)
+// The certified policy has one more (issue 18 point 2):
+//   settle_status(t, s) -> Status the static test's status s at the instant t, uncertain in the policy's
+//                                 arithmetic, decided another way (exactly at a rational t), or s
 // Requirements on T: scalar_traits<T>.
 #include "kernel/answer.hpp"
+#include "kernel/contact_status.hpp"
 #include "kernel/polynomial.hpp"
 #include "number/scalar_traits.hpp"
 
@@ -75,6 +79,8 @@ template <class P>
 concept ReportsTrouble = requires(const P& pol) { { pol.trouble } -> std::convertible_to<std::string>; };
 template <class P>
 concept KeepsNotes = requires(const P& pol) { { pol.notes } -> std::convertible_to<std::vector<std::string>>; };
+template <class P, class T>
+concept SettlesStatus = requires(const P& pol, const T& t, Status s) { { pol.settle_status(t, s) } -> std::same_as<Status>; };
 template <class R>
 concept MayBeUnresolved = requires(const R& r) { { r.unresolved } -> std::convertible_to<bool>; };
 
@@ -92,6 +98,11 @@ template <class Policy>
 std::vector<std::string> notes(const Policy& pol) {
   if constexpr (KeepsNotes<Policy>) return pol.notes;
   else return {};
+}
+template <class Policy, class T>
+Status settle_status(const Policy& pol, const T& t, Status s) {
+  if constexpr (SettlesStatus<Policy, T>) return s == Status::uncertain ? pol.settle_status(t, s) : s;
+  else return s;
 }
 template <class Root>
 bool unresolved(const Root& r) {
