@@ -27,6 +27,7 @@
 // Example 2 has degree 192 there, not 96). Comparing the two modes separates
 // the error of rounding the input from the error of the computation.
 #include "kernel/bernstein.hpp"
+#include "kernel/modular_coprime.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/quadric.hpp"
 #include "kernel/ring_determinant.hpp"
@@ -79,9 +80,10 @@ inline void make_primitive(std::vector<Rational*> xs) {
 template <int H>
 void remove_polynomial_content(PolyMatrix<Rational, H>& n) {
   RPoly g;
-  for (auto& row : n)
-    for (auto& e : row)
-      if (!e.is_zero()) g = g.is_zero() ? gcd(e, e) : gcd(g, e);
+  if (!content_is_constant(n))  // proved constant modulo a prime (kernel/modular_coprime.hpp): no Euclid over Q
+    for (auto& row : n)
+      for (auto& e : row)
+        if (!e.is_zero()) g = g.is_zero() ? gcd(e, e) : gcd(g, e);
   if (g.degree() > 0)
     for (auto& row : n)
       for (auto& e : row) { RPoly q, r; divide(e, g, q, r); e = q; }
@@ -119,8 +121,15 @@ void balance_pencil(PreparedPair<H>& p) {
   long sum = 0;
   int used = 0;
   for (const Rational& t : {Rational(0), Rational(1, 2), Rational(1)}) {
-    Rational da = field_det<Rational, H>(quadric_at<Rational, H>(p.qa, p.na, t));
-    Rational db = field_det<Rational, H>(quadric_at<Rational, H>(p.qb, p.nb, t));
+    // det A(t) = det(N(t)^T Q N(t)) = det Q · det N(t)^2: the same rational, without forming A(t).
+    auto det_at = [&](const Matrix<Rational, H>& q, const PolyMatrix<Rational, H>& n) {
+      Matrix<Rational, H> nt{};
+      for (int i = 0; i < H; ++i) for (int j = 0; j < H; ++j) nt[i][j] = n[i][j](t);
+      const Rational dn = field_det<Rational, H>(nt);
+      return Rational(field_det<Rational, H>(q) * dn * dn);
+    };
+    Rational da = det_at(p.qa, p.na);
+    Rational db = det_at(p.qb, p.nb);
     if (da == 0 || db == 0) continue;
     sum += log2_size(db) - log2_size(da);
     ++used;
