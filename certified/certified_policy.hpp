@@ -38,8 +38,10 @@
 #include "kernel/pipeline_policy.hpp"
 #include "kernel/polynomial.hpp"
 
+#include <cstring>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -75,7 +77,8 @@ struct CertifiedPolicy {
   // In the Bernstein basis (kernel/basis_build.hpp): its coefficients enclose the range, which sign_at uses.
   template <class F>
   Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
-    return build_in_basis(Basis::bernstein, g, formula, T(0));
+    if constexpr (std::is_same_v<T, Interval>) return formula(bernstein_g(g));  // Δ, P, D share g's conversion
+    else return build_in_basis(Basis::bernstein, g, formula, T(0));
   }
   bool identically_zero(const Bern<T>& q) const {
     bool all_zero = true;
@@ -207,6 +210,25 @@ struct CertifiedPolicy {
     return acc * pw;
   }
   mutable const Bern<T>* whole = nullptr;  // the polynomial being isolated (for refine)
+  // g_0..g_N in Bernstein form, as build_in_basis(bernstein) converts them,
+  // kept for the next build with the same g: the same end points bit for bit
+  // (compared, not assumed), hence the same conversion (issue 18: the three
+  // builds of Δ, P and D converted g three times).
+  mutable std::vector<Poly<T>> g_seen;
+  mutable std::vector<Bern<T>> g_bern;
+  const std::vector<Bern<T>>& bernstein_g(const std::vector<Poly<T>>& g) const {
+    auto same = [](const Poly<T>& x, const Poly<T>& y) {
+      return x.c.size() == y.c.size() && (x.c.empty() || std::memcmp(x.c.data(), y.c.data(), x.c.size() * sizeof(T)) == 0);
+    };
+    bool hit = g.size() == g_seen.size();
+    for (std::size_t i = 0; hit && i < g.size(); ++i) hit = same(g[i], g_seen[i]);
+    if (!hit) {
+      g_seen = g;
+      g_bern.assign(g.size(), Bern<T>());
+      for (std::size_t i = 0; i < g.size(); ++i) g_bern[i] = bernstein_or_zero(g[i], T(0));
+    }
+    return g_bern;
+  }
 };
 
 static_assert(PipelinePolicy<CertifiedPolicy<Interval>, Interval>);

@@ -63,10 +63,12 @@ inline std::uint64_t residue(const mpz_class& z) {
 // the numerator of the leading coefficient (the lemma's conditions).
 inline std::optional<std::vector<std::uint64_t>> image(const Poly<Rational>& a) {
   std::vector<std::uint64_t> r(a.c.size());
+  std::uint64_t last_d = 1, last_inv = 1;  // denominators repeat (scenes write few): one inversion each
   for (std::size_t i = 0; i < a.c.size(); ++i) {
     std::uint64_t d = residue(a.c[i].get_den());
     if (d == 0) return std::nullopt;
-    r[i] = mul(residue(a.c[i].get_num()), inverse(d));
+    if (d != last_d) { last_d = d; last_inv = inverse(d); }
+    r[i] = mul(residue(a.c[i].get_num()), last_inv);
   }
   if (r.empty() || r.back() == 0) return std::nullopt;
   return r;

@@ -12,11 +12,13 @@
 // Known failure modes: Horner evaluation of high degree in rounded arithmetic
 // near a cluster of roots; trim() only drops coefficients that are exactly 0.
 #include "kernel/budget.hpp"
+#include "number/rational_convolution.hpp"
 #include "number/scalar_traits.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace eccd {
@@ -68,6 +70,13 @@ struct Poly {
     check_deadline("polynomial product");
     Poly r;
     if (a.c.empty() || b.c.empty()) return r;
+    if constexpr (std::is_same_v<T, mpq_class>) {  // the same rationals, over common denominators
+      r.c = rational_convolution(a.c, b.c);
+      if (!r.c.empty()) {
+        r.trim();
+        return r;
+      }
+    }
     r.c.assign(a.c.size() + b.c.size() - 1, T(0));
     for (std::size_t i = 0; i < a.c.size(); ++i)
       for (std::size_t j = 0; j < b.c.size(); ++j) { T p = a.c[i] * b.c[j]; r.c[i + j] = r.c[i + j] + p; }

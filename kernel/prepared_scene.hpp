@@ -30,6 +30,7 @@
 #include "kernel/modular_coprime.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/quadric.hpp"
+#include "kernel/quadric_determinant.hpp"
 #include "kernel/ring_determinant.hpp"
 #include "kernel/scene.hpp"
 
@@ -74,7 +75,12 @@ inline void make_primitive(std::vector<Rational*> xs) {
   for (auto* x : xs) { x->canonicalize(); mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t()); }
   for (auto* x : xs) { mpz_class n = x->get_num() * (l / x->get_den()); mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), n.get_mpz_t()); }
   if (g == 0) return;
-  for (auto* x : xs) { Rational y = *x * Rational(l) / Rational(g); *x = y; }
+  // x · l / g is the integer num(x) · (l / den(x)) / g (exact divisions): the same value, no rational gcds
+  for (auto* x : xs) {
+    mpz_class n = x->get_num() * (l / x->get_den());
+    mpz_divexact(n.get_mpz_t(), n.get_mpz_t(), g.get_mpz_t());
+    *x = Rational(n);
+  }
 }
 
 template <int H>
@@ -121,15 +127,9 @@ void balance_pencil(PreparedPair<H>& p) {
   long sum = 0;
   int used = 0;
   for (const Rational& t : {Rational(0), Rational(1, 2), Rational(1)}) {
-    // det A(t) = det(N(t)^T Q N(t)) = det Q · det N(t)^2: the same rational, without forming A(t).
-    auto det_at = [&](const Matrix<Rational, H>& q, const PolyMatrix<Rational, H>& n) {
-      Matrix<Rational, H> nt{};
-      for (int i = 0; i < H; ++i) for (int j = 0; j < H; ++j) nt[i][j] = n[i][j](t);
-      const Rational dn = field_det<Rational, H>(nt);
-      return Rational(field_det<Rational, H>(q) * dn * dn);
-    };
-    Rational da = det_at(p.qa, p.na);
-    Rational db = det_at(p.qb, p.nb);
+    // det A(t) without forming A(t): the same rational (kernel/quadric_determinant.hpp).
+    Rational da = quadric_det_at<H>(p.qa, p.na, t);
+    Rational db = quadric_det_at<H>(p.qb, p.nb, t);
     if (da == 0 || db == 0) continue;
     sum += log2_size(db) - log2_size(da);
     ++used;
