@@ -69,8 +69,10 @@
 #include <functional>
 #include <map>
 
+#include <cstring>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -125,7 +127,9 @@ struct CertifiedPolicy {
   // In the Bernstein basis (kernel/basis_build.hpp): its coefficients enclose the range, which sign_at uses.
   template <class F>
   Rep build(const std::vector<Poly<T>>& g, F formula) const {
-    Rep r(build_in_basis(Basis::bernstein, g, formula, T(0)));
+    Rep r;
+    if constexpr (std::is_same_v<T, Interval>) r = Rep(formula(bernstein_g(g)));  // Δ, P, D share g's conversion
+    else r = Rep(build_in_basis(Basis::bernstein, g, formula, T(0)));
     if (oracle)  // the formula is a stateless ring formula (kernel/basis_build.hpp): held by value
       r.exact = [formula](const std::vector<Poly<Rational>>& G) { return Poly<Rational>(formula(G)); };
     return r;
@@ -348,6 +352,25 @@ struct CertifiedPolicy {
   }
   mutable const Rep* whole = nullptr;       // the polynomial being isolated (for refine and the local split signs)
   mutable bool local_in_isolation = false;  // roots() used a local decision (end or split sign)
+  // g_0..g_N in Bernstein form, as build_in_basis(bernstein) converts them,
+  // kept for the next build with the same g: the same end points bit for bit
+  // (compared, not assumed), hence the same conversion (issue 18: the three
+  // builds of Δ, P and D converted g three times).
+  mutable std::vector<Poly<T>> g_seen;
+  mutable std::vector<Bern<T>> g_bern;
+  const std::vector<Bern<T>>& bernstein_g(const std::vector<Poly<T>>& g) const {
+    auto same = [](const Poly<T>& x, const Poly<T>& y) {
+      return x.c.size() == y.c.size() && (x.c.empty() || std::memcmp(x.c.data(), y.c.data(), x.c.size() * sizeof(T)) == 0);
+    };
+    bool hit = g.size() == g_seen.size();
+    for (std::size_t i = 0; hit && i < g.size(); ++i) hit = same(g[i], g_seen[i]);
+    if (!hit) {
+      g_seen = g;
+      g_bern.assign(g.size(), Bern<T>());
+      for (std::size_t i = 0; i < g.size(); ++i) g_bern[i] = bernstein_or_zero(g[i], T(0));
+    }
+    return g_bern;
+  }
 };
 
 static_assert(PipelinePolicy<CertifiedPolicy<Interval>, Interval>);

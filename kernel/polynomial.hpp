@@ -13,6 +13,7 @@
 // near a cluster of roots; trim() only drops coefficients that are exactly 0.
 #include "kernel/budget.hpp"
 #include "number/integer_poly_product.hpp"
+#include "number/rational_convolution.hpp"
 #include "number/rational_poly_eval.hpp"
 #include "number/scalar_traits.hpp"
 
@@ -73,8 +74,16 @@ struct Poly {
     check_deadline("polynomial product");
     Poly r;
     if (a.c.empty() || b.c.empty()) return r;
-    if constexpr (std::is_same_v<T, mpq_class>) {  // exact rationals: Kronecker substitution (number/integer_poly_product.hpp)
+    if constexpr (std::is_same_v<T, mpq_class>) {
+      // The same canonical rationals either way: long factors by Kronecker substitution
+      // (number/integer_poly_product.hpp), short ones over common denominators
+      // (number/rational_convolution.hpp, empty when that would not pay).
       if (std::min(a.c.size(), b.c.size()) > 2) { r.c = rational_poly_product(a.c, b.c); r.trim(); return r; }
+      r.c = rational_convolution(a.c, b.c);
+      if (!r.c.empty()) {
+        r.trim();
+        return r;
+      }
     }
     r.c.assign(a.c.size() + b.c.size() - 1, T(0));
     for (std::size_t i = 0; i < a.c.size(); ++i)

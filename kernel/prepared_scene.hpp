@@ -27,8 +27,10 @@
 // Example 2 has degree 192 there, not 96). Comparing the two modes separates
 // the error of rounding the input from the error of the computation.
 #include "kernel/bernstein.hpp"
+#include "kernel/modular_coprime.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/quadric.hpp"
+#include "kernel/quadric_determinant.hpp"
 #include "kernel/ring_determinant.hpp"
 #include "kernel/scene.hpp"
 
@@ -73,15 +75,21 @@ inline void make_primitive(std::vector<Rational*> xs) {
   for (auto* x : xs) { x->canonicalize(); mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t()); }
   for (auto* x : xs) { mpz_class n = x->get_num() * (l / x->get_den()); mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), n.get_mpz_t()); }
   if (g == 0) return;
-  for (auto* x : xs) { Rational y = *x * Rational(l) / Rational(g); *x = y; }
+  // x · l / g is the integer num(x) · (l / den(x)) / g (exact divisions): the same value, no rational gcds
+  for (auto* x : xs) {
+    mpz_class n = x->get_num() * (l / x->get_den());
+    mpz_divexact(n.get_mpz_t(), n.get_mpz_t(), g.get_mpz_t());
+    *x = Rational(n);
+  }
 }
 
 template <int H>
 void remove_polynomial_content(PolyMatrix<Rational, H>& n) {
   RPoly g;
-  for (auto& row : n)
-    for (auto& e : row)
-      if (!e.is_zero()) g = g.is_zero() ? gcd(e, e) : gcd(g, e);
+  if (!content_is_constant(n))  // proved constant modulo a prime (kernel/modular_coprime.hpp): no Euclid over Q
+    for (auto& row : n)
+      for (auto& e : row)
+        if (!e.is_zero()) g = g.is_zero() ? gcd(e, e) : gcd(g, e);
   if (g.degree() > 0)
     for (auto& row : n)
       for (auto& e : row) { RPoly q, r; divide(e, g, q, r); e = q; }
@@ -119,8 +127,9 @@ void balance_pencil(PreparedPair<H>& p) {
   long sum = 0;
   int used = 0;
   for (const Rational& t : {Rational(0), Rational(1, 2), Rational(1)}) {
-    Rational da = field_det<Rational, H>(quadric_at<Rational, H>(p.qa, p.na, t));
-    Rational db = field_det<Rational, H>(quadric_at<Rational, H>(p.qb, p.nb, t));
+    // det A(t) without forming A(t): the same rational (kernel/quadric_determinant.hpp).
+    Rational da = quadric_det_at<H>(p.qa, p.na, t);
+    Rational db = quadric_det_at<H>(p.qb, p.nb, t);
     if (da == 0 || db == 0) continue;
     sum += log2_size(db) - log2_size(da);
     ++used;

@@ -11,7 +11,9 @@
 // exact result of the operation on any values inside the operands lies inside
 // the result. (std::nextafter would widen by one ulp but costs a library call
 // per end point: it was half the run time.) NaN end points (inf - inf) make
-// the sign uncertain; products and quotients with a NaN are (-inf, inf). Rationals enter as [RNDD, RNDU] roundings
+// the sign uncertain; products and quotients with a NaN are (-inf, inf), and
+// so is a product whose end point would be 0 · inf (a product takes the two
+// end-point products that the signs of the operands name, not all four). Rationals enter as [RNDD, RNDU] roundings
 // (MPFR), so the scene's exact numbers are enclosed from the start. Division
 // by an interval that contains 0 gives (-inf, inf). The sign of an interval is
 // certain when it lies on one side of 0 (or is exactly [0, 0]); otherwise it
@@ -58,9 +60,25 @@ struct Interval {
       if (p == 0 && (a.lo == 0 || b.lo == 0)) return {0, 0};
       return {down(p), up(p)};
     }
-    double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-    if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4)) return entire();  // 0 * inf
-    return {down(std::min({p1, p2, p3, p4})), up(std::max({p1, p2, p3, p4}))};
+    // By the signs of the end points (the classical nine cases, Moore 1966): the
+    // extremes of {x·y} are the two products named; two products instead of four.
+    double lo, hi;
+    if (a.lo >= 0) {
+      if (b.lo >= 0) { lo = a.lo * b.lo; hi = a.hi * b.hi; }
+      else if (b.hi <= 0) { lo = a.hi * b.lo; hi = a.lo * b.hi; }
+      else { lo = a.hi * b.lo; hi = a.hi * b.hi; }
+    } else if (a.hi <= 0) {
+      if (b.lo >= 0) { lo = a.lo * b.hi; hi = a.hi * b.lo; }
+      else if (b.hi <= 0) { lo = a.hi * b.hi; hi = a.lo * b.lo; }
+      else { lo = a.lo * b.hi; hi = a.lo * b.lo; }
+    } else {  // 0 inside a (or a NaN end point: every comparison false)
+      const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+      if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4)) return entire();
+      lo = std::min({p1, p2, p3, p4});
+      hi = std::max({p1, p2, p3, p4});
+    }
+    if (std::isnan(lo) || std::isnan(hi)) return entire();  // 0 · inf, or a NaN end point of b
+    return {down(lo), up(hi)};
   }
   friend Interval operator/(const Interval& a, const Interval& b) {
     if (b.contains_zero() || std::isnan(b.lo) || std::isnan(b.hi) || std::isnan(a.lo) || std::isnan(a.hi)) return entire();
@@ -78,8 +96,39 @@ struct Interval {
   friend bool operator>=(const Interval& a, const Interval& b) { return a.lo >= b.hi; }
 };
 
-// Interval from an exact rational, rounded outwards.
+// Interval from an exact rational, rounded outwards: [RNDD(q), RNDU(q)], the
+// tightest enclosure by doubles (a point when q is a double).
+// Fast paths, which give exactly these two doubles (issue 18: the MPFR
+// conversion was most of the cost of entering the interval rung):
+//  - q an integer of at most 1000 bits: mpz_get_d truncates towards 0 (GMP
+//    manual), so d = RZ(q); mpz_cmp_d(q, d) == 0 says d = q exactly (a
+//    point); otherwise q lies strictly between d and the next double away
+//    from 0, nextafter(d, ±inf), which are then RNDD(q) and RNDU(q);
+//  - q = n/d with |n| and d below 2^53 (both exact doubles, q >= 2^-53 in
+//    magnitude: no underflow; d > 0): x = n / d in round-to-nearest, and the
+//    remainder x·d - n is exactly a double (the remainder of a correctly
+//    rounded quotient is representable, Boldo & Daumas 2003, "Representable
+//    correcting terms for possibly underflowing floating point operations"),
+//    so fma(x, d, -n) is computed exactly and its sign is the sign of x - q
+//    (d > 0): 0 gives the point [x, x], > 0 gives [nextafter(x, -inf), x],
+//    < 0 gives [x, nextafter(x, +inf)].
+// Anything else goes through MPFR's directed roundings.
 inline Interval interval_of(const mpq_class& q) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const mpz_srcptr num = q.get_num_mpz_t(), den = q.get_den_mpz_t();
+  if (mpz_cmp_ui(den, 1) == 0 && mpz_sizeinbase(num, 2) <= 1000) {
+    const double d = mpz_get_d(num);
+    const int c = mpz_cmp_d(num, d);
+    if (c == 0) return {d, d};
+    return c > 0 ? Interval(d, std::nextafter(d, inf)) : Interval(std::nextafter(d, -inf), d);
+  }
+  if (mpz_sgn(den) > 0 && mpz_sizeinbase(num, 2) <= 53 && mpz_sizeinbase(den, 2) <= 53) {
+    const double n = mpz_get_d(num), d = mpz_get_d(den);  // exact
+    const double x = n / d;
+    const double r = std::fma(x, d, -n);
+    if (r == 0) return {x, x};
+    return r > 0 ? Interval(std::nextafter(x, -inf), x) : Interval(x, std::nextafter(x, inf));
+  }
   mpfr_t r;
   mpfr_init2(r, 53);
   mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDD);
