@@ -582,12 +582,14 @@ struct Work {
 };
 
 // The common end of real_roots: consecutive brackets made disjoint (the roots
-// are distinct and sorted), and a rational root with a small denominator
+// are distinct and sorted; with reorder, the roots of several factors, sorted
+// again after each refinement pass), and a rational root with a small denominator
 // written exactly (the simplest rational in the bracket is a root of the
 // factor iff it is the bracket's root).
-std::vector<AlgebraicRoot> finish_roots(std::vector<Work>& all, int bits) {
+std::vector<AlgebraicRoot> finish_roots(std::vector<Work>& all, int bits, bool reorder = false) {
   for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
     check_deadline("separating root brackets");
+    if (reorder) std::sort(all.begin(), all.end(), [](const Work& x, const Work& y) { return x.r.lo < y.r.lo; });
     bool disjoint = true;
     for (std::size_t i = 0; i + 1 < all.size(); ++i) {
       if (all[i].r.hi < all[i + 1].r.lo) continue;
@@ -739,23 +741,7 @@ std::vector<AlgebraicRoot> unit_interval_roots(const Poly<Rational>& p, int bits
   with_cgal([&] { PT::Square_free_factorize_up_to_constant_factor()(to_ak(z), std::back_inserter(f)); return 0; });
   for (auto& [q, m] : f)
     if (PT::Degree()(q) > 0) unit_roots_of_square_free(from_ak(q), m, bits, all);
-  for (long b2 = std::max(2L * bits, 1L);; b2 *= 2) {
-    check_deadline("ordering root brackets");
-    std::sort(all.begin(), all.end(), [](const Work& x, const Work& y) { return x.r.lo < y.r.lo; });
-    bool disjoint = true;
-    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
-      if (all[i].r.hi < all[i + 1].r.lo) continue;
-      if (b2 > long(kMaxLevel)) throw std::logic_error("internal error: brackets of distinct roots do not separate");
-      disjoint = false;
-      for (Work* w : {&all[i], &all[i + 1]})
-        if (!w->r.is_rational()) {
-          Refiner rf(w->r.impl->f);
-          refine_to(w->r, w->d, rf, b2);
-        }
-    }
-    if (disjoint) break;
-  }
-  return finish_roots(all, bits);
+  return finish_roots(all, bits, /*reorder: roots of different factors interleave*/ true);
 }
 
 }  // namespace
