@@ -8,6 +8,7 @@
 #include "api/solve.hpp"
 #include "api/static_test.hpp"
 #include "tests/support/arith.hpp"
+#include "tests/support/poses.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -18,21 +19,10 @@ using namespace eccd;
 
 namespace {
 
-const std::string kCases = std::string(ECCD_SOURCE_DIR) + "/cases/";
+using eccd::test::pose2;
+using eccd::test::pose3;
 
-std::array<std::array<double, 3>, 3> pose2(double angle, double x, double y) {
-  double c = std::cos(angle), s = std::sin(angle);
-  return {{{c, -s, x}, {s, c, y}, {0, 0, 1}}};
-}
-std::array<std::array<double, 4>, 4> pose3(std::array<double, 4> q, double x, double y, double z) {
-  double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  for (double& v : q) v /= n;
-  auto [w, a, b, c] = q;
-  return {{{1 - 2 * (b * b + c * c), 2 * (a * b - w * c), 2 * (a * c + w * b), x},
-           {2 * (a * b + w * c), 1 - 2 * (a * a + c * c), 2 * (b * c - w * a), y},
-           {2 * (a * c - w * b), 2 * (b * c + w * a), 1 - 2 * (a * a + b * b), z},
-           {0, 0, 0, 1}}};
-}
+const std::string kCases = std::string(ECCD_SOURCE_DIR) + "/cases/";
 
 const Arithmetic kCertified = Arithmetic::certified();
 

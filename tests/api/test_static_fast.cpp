@@ -12,6 +12,7 @@
 #include "number/forward_bound.hpp"
 #include "number/rational_traits.hpp"
 #include "tests/support/arith.hpp"
+#include "tests/support/poses.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -22,19 +23,8 @@ using namespace eccd;
 
 namespace {
 
-std::array<std::array<double, 4>, 4> pose3(std::array<double, 4> q, double x, double y, double z) {
-  double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  for (double& v : q) v /= n;
-  auto [w, a, b, c] = q;
-  return {{{1 - 2 * (b * b + c * c), 2 * (a * b - w * c), 2 * (a * c + w * b), x},
-           {2 * (a * b + w * c), 1 - 2 * (a * a + c * c), 2 * (b * c - w * a), y},
-           {2 * (a * c - w * b), 2 * (b * c + w * a), 1 - 2 * (a * a + b * b), z},
-           {0, 0, 0, 1}}};
-}
-std::array<std::array<double, 3>, 3> pose2(double angle, double x, double y) {
-  double c = std::cos(angle), s = std::sin(angle);
-  return {{{c, -s, x}, {s, c, y}, {0, 0, 1}}};
-}
+using eccd::test::pose2;
+using eccd::test::pose3;
 
 // The double answer is the exact one or uncertain; counts the decided ones.
 template <class Shape>
