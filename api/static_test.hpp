@@ -16,12 +16,16 @@
 //    3D): a proof about the doubles given.
 //  - double: a in standard position (001 section 3), b = Rᵀ Q_b R with R =
 //    adj(M_b) M_a; in 3D f by 001 Appendix A (kernel/fast_quartic.hpp), in 2D
-//    by the same closed form for a 3x3 diagonal A. Fast path (issue 21): all
-//    of it in plain double with an a-priori error bound carried as a
-//    magnitude and a rounding depth (number/forward_bound.hpp, the derivation
-//    is there), status from signs only: 2D 003 Theorem 6's rule, 3D the
-//    quartic's discriminant and Descartes (kernel/quartic_sign_status.hpp,
-//    the bound on Δ's sign derived there). Where a sign is within its bound
+//    by the same closed form for a 3x3 diagonal A. Fast path (issue 21): in
+//    3D both shapes as unit balls under their poses scaled by the semi-axes
+//    (no division), the relative pose by the adjugate, 001 Appendix A with
+//    A = diag(1, 1, 1, -1), in plain double with static bounds: the same
+//    program run for its magnitude beside the value (two doubles in one SSE2
+//    register) and a rounding depth fixed at compile time, then Descartes
+//    and the discriminant's sign (kernel/static_filter3d.hpp, each bound
+//    derived there; number/static_bound.hpp); in 2D all of it with an
+//    a-priori bound carried as a magnitude and a depth (number/forward_bound.hpp),
+//    status by 003 Theorem 6's rule. Where a sign is within its bound
 //    (Δ ≈ 0: touching, near-touching, or a positive double root of symmetric
 //    shapes such as two spheres) the running-bound test follows: the same
 //    computation in Bounded<double> (number/running_error.hpp) with the Sturm
@@ -67,11 +71,12 @@ Status static_status(const Ellipse& a, const Ellipse& b, const Arithmetic& arith
 Status static_status(const Ellipsoid& a, const Ellipsoid& b, const Arithmetic& arith = Arithmetic::double_precision());
 
 // Batched static test from two poses (issue 21): out[i] = static_status(a[i], b[i], arith) for every i, the same
-// answer pair by pair (arith double, exact or certified). In double (and as certified's filter) the pairs go
-// through in blocks of kStaticBatchLanes: the relative pose and f's coefficients with their a-priori bounds
-// (ForwardBound) for the whole block in one loop over the pairs' lanes (structure of arrays inside the block,
-// straight-line code: the compiler vectorises it), then the sign rule per pair; a pair the fast path cannot
-// decide takes the single-pair path (running bound, then exact for certified). Errors: std::invalid_argument
+// answer pair by pair (arith double, exact or certified). In double (and as certified's filter): in 3D each pair
+// through the single pair's plain-double program (kernel/static_filter3d.hpp; its lane form over structure-of-
+// arrays blocks vectorises only for AVX, which the default build does not target, and was slower in SSE2); in
+// 2D blocks of kStaticBatchLanes: the relative pose and f's coefficients with their a-priori bounds
+// (ForwardBound) for the whole block in one loop over the pairs' lanes, then the sign rule per pair. A pair the
+// fast path cannot decide takes the running-bound path (then exact for certified). Errors: std::invalid_argument
 // as static_status (naming the pair's index), or when the spans' sizes differ; out is written only when every
 // pair is valid.
 inline constexpr int kStaticBatchLanes = 8;
