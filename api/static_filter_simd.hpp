@@ -1,0 +1,25 @@
+#pragma once
+// The 3D static filter (kernel/static_filter3d.hpp) compiled for AVX-512
+// (F, DQ, VL) with AVX2 and FMA in its own translation unit,
+// api/static_filter_simd.cpp, which CMakeLists.txt builds with those flags;
+// api/static_test.cpp calls it only when __builtin_cpu_supports says the CPU
+// has all of them, and the default build otherwise (issue 21). AVX-512, not
+// AVX2: GCC 12 if-converts and vectorises the lane loop's compares with
+// AVX-512's mask registers only (with -mavx2 -mfma: "control flow in loop").
+// Why a translation unit and not target attributes: GCC does not inline a
+// function compiled for the default target (std::array's operator[], the
+// program's templates) into one with target("avx2"), so the lane loop kept
+// calls and did not vectorise. In this unit everything is compiled for AVX-512
+// and flattened into its one entry point, so the unit emits no shared
+// (weak) instantiation that the linker could pick for default-target code
+// (checked with nm: the unit defines only the entry point).
+// FMA contraction keeps the bounds (number/static_bound.hpp).
+// Inputs: in[k][l] is input k of lane l as numbered by kernel/static_filter3d.hpp (static_axis_a, ...).
+// Results: a status code, 0 uncertain, 1 separate, 2 overlapping.
+namespace eccd::simd {
+
+inline constexpr int kSimdLanes = 8;
+bool has_avx512();  // the CPU runs this unit's code (defined in api/static_test.cpp, compiled for any CPU)
+void static_filter3d_lanes_avx512(const double (&in)[30][kSimdLanes], double (&code)[kSimdLanes]);
+
+}  // namespace eccd::simd
