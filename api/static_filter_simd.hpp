@@ -13,7 +13,11 @@
 // and flattened into its one entry point, so the unit emits no shared
 // (weak) instantiation that the linker could pick for default-target code
 // (checked with nm: the unit defines only the entry point).
-// FMA contraction keeps the bounds (number/static_bound.hpp).
+// FMA contraction is off in this unit (-ffp-contract=off): the lanes then
+// round exactly as the single pair's program in the default build (lane 0 of
+// ValueMagnitude is the double run, lane 1 the Magnitude run), so the batch
+// decides exactly the pairs static_status decides (contraction would keep the
+// bounds, number/static_bound.hpp, but could move a pair at a bound's edge).
 // Inputs: in[k][l] is input k of lane l as numbered by kernel/static_filter3d.hpp (static_axis_a, ...).
 // Results: a status code, 0 uncertain, 1 separate, 2 overlapping.
 namespace eccd::simd {

@@ -315,6 +315,19 @@ Status after_fast(const std::array<double, N - 1>& axes_a, const Mat<double, N>&
 template <int N>
 Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
                    const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b, const Arithmetic& arith) {
+  if constexpr (N == 4) {
+    // The 3D filter first: a status from it implies valid input (finite, semi-axes >= 2^-12, both linear parts
+    // non-singular: kernel/static_filter3d.hpp), so the full validation runs only when it is uncertain; the
+    // filter does not read the last rows, which are checked here.
+    auto affine = [](const Mat<double, 4>& m) { return (m[3][0] == 0) & (m[3][1] == 0) & (m[3][2] == 0) & (m[3][3] == 1); };
+    if ((arith.kind == Arithmetic::Double || arith.kind == Arithmetic::Certified) && affine(pose_a) && affine(pose_b)) {
+      Status s = fast_status3(axes_a, pose_a, axes_b, pose_b);
+      if (s != Status::uncertain) return s;
+      check_shape<N>(axes_a, pose_a, "a");
+      check_shape<N>(axes_b, pose_b, "b");
+      return after_fast<N>(axes_a, pose_a, axes_b, pose_b, arith);
+    }
+  }
   check_shape<N>(axes_a, pose_a, "a");
   check_shape<N>(axes_b, pose_b, "b");
   switch (arith.kind) {
@@ -391,8 +404,14 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
         for (int l = 0; l < SL; ++l) {  // a short last block repeats its first pair
           const Shape& sa = a[base + (l < lanes ? l : 0)];
           const Shape& sb = b[base + (l < lanes ? l : 0)];
-          auto leaf = static_leaves(sa.semi_axes, sa.pose, sb.semi_axes, sb.pose);
-          for (int k = 0; k < kStaticInputs; ++k) in[k][l] = leaf(k);
+          for (int j = 0; j < 3; ++j) {
+            in[static_axis_a(j)][l] = sa.semi_axes[j];
+            in[static_axis_b(j)][l] = sb.semi_axes[j];
+            for (int c = 0; c < 4; ++c) {
+              in[static_pose_a(j, c)][l] = sa.pose[j][c];
+              in[static_pose_b(j, c)][l] = sb.pose[j][c];
+            }
+          }
         }
         simd::static_filter3d_lanes_avx512(in, code);
         for (int l = 0; l < lanes; ++l) {

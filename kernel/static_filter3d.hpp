@@ -43,6 +43,12 @@
 // uncertain. Underflow in Δ: every |ĝ_k| in [2^-150, 2^150] (else uncertain),
 // so every product's magnitude is >= 2^-900 and an underflow's 2^-1075 is
 // below 2^-175 of it (inside the factor 2); no overflow below 2^900 · 2^10.
+// A status implies valid input: the ranges exclude infinities, semi-axes
+// below 2^-12 and non-positive ones; a NaN input (which passes one pair's
+// max/min range test) is a factor of some monomial of g_1..g_3, so some ĝ_k
+// is NaN and no sign is certain; and |ĝ_0| > e_0 makes the exact g_0 =
+// -(det L'_a det³)² non-zero, so both linear parts are non-singular. The last
+// rows of the poses (0 0 0 1) are not read: the caller checks them.
 // The lane form (static_filter3d_lanes) is the same program over arrays of
 // doubles, one lane per pair, no branch and no call in the loop, so the
 // compiler vectorises it; its status per lane is computed with selects.
@@ -144,13 +150,11 @@ inline constexpr double kU = 0x1p-53, kTau = 0x1p-430, kMaxEntry = 0x1p12, kMinA
 // ok: 1 when the inputs' ranges held, else 0.
 template <bool kLanes>
 [[gnu::always_inline]] inline double decide(double ok, const std::array<double, 5>& g, const std::array<double, 5>& e) {
-  // ρ: the sum of the e_k / |ĝ_k| (>= their maximum; a sum needs no select).
-  double certain = ok, in_range = 1, rho = 0;
+  double certain = ok, in_range = 1;
 #pragma GCC unroll 5
   for (int k = 0; k < 5; ++k) {
     const double a = std::fabs(g[k]);
     certain *= flag(a > e[k]);
-    rho += e[k] / a;
     in_range *= flag(a >= 0x1p-150) * flag(a <= 0x1p150);
   }
   // Sign changes of g4, -g3, g2, -g1, g0 (all non-zero when certain).
@@ -160,7 +164,10 @@ template <bool kLanes>
     if (certain == 0) return 0.0;
     if (changes == 0) return 2.0;
   }
-  // Δ on fresh leaves ĝ.
+  // ρ: the sum of the e_k / |ĝ_k| (>= their maximum; a sum needs no select). Δ on fresh leaves ĝ.
+  double rho = 0;
+#pragma GCC unroll 5
+  for (int k = 0; k < 5; ++k) rho += e[k] / std::fabs(g[k]);
   double dv, dm;
   if constexpr (kLanes) {
     dv = quartic_discriminant(g[4], g[3], g[2], g[1], g[0]);

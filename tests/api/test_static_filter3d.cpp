@@ -16,6 +16,8 @@
 
 #include <cmath>
 #include <random>
+#include <span>
+#include <vector>
 
 using namespace eccd;
 
@@ -165,5 +167,37 @@ TEST_CASE("ValueMagnitude: the value lane is the double run and the magnitude la
     CHECK(d.value() == quartic_discriminant(g[4], g[3], g[2], g[1], g[0]));
     CHECK(d.magnitude() == m.value());
     CHECK(m.value() >= std::fabs(d.value()));
+  }
+}
+
+TEST_CASE("static test 3D: bad input is refused with the reason although the filter runs first", "[static]") {
+  // The filter runs before the full validation (api/static_test.cpp): it must never decide on an input the
+  // validation refuses (kernel/static_filter3d.hpp: a status implies valid input).
+  std::array<double, 3> ax{1, 2, 3}, bx{1.5, 0.5, 2};
+  M4 id = pose3({1, 0, 0, 0}, 0, 0, 0), far = pose3({1, 0, 0, 0}, 10, 0, 0);
+  M4 singular = far, nan = far, inf = far, projective = far;
+  singular[1] = {2, 0, 0, 3};  // row 2 = 2 row 1 in the linear part
+  singular[0] = {1, 0, 0, 10};
+  nan[1][2] = std::nan("");
+  inf[2][3] = HUGE_VAL;
+  projective[3] = {0, 0.5, 0, 1};
+  for (const Arithmetic& arith : {Arithmetic::double_precision(), Arithmetic::certified(), Arithmetic::exact()}) {
+    INFO(arith.name());
+    CHECK(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, far}, arith) == Status::separate);
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, singular}, arith), Catch::Contains("object b: the pose is singular"));
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, singular}, Ellipsoid{bx, id}, arith), Catch::Contains("object a: the pose is singular"));
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, nan}, arith), Catch::Contains("not finite"));
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, inf}, Ellipsoid{bx, id}, arith), Catch::Contains("not finite"));
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, projective}, arith), Catch::Contains("not affine"));
+    for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
+      std::array<double, 3> b2 = bx;
+      b2[1] = bad;
+      CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{b2, far}, arith), Catch::Contains("object b: semi-axis"));
+    }
+    std::vector<Ellipsoid> as{Ellipsoid{ax, id}, Ellipsoid{ax, id}}, bs{Ellipsoid{bx, far}, Ellipsoid{bx, singular}};
+    std::vector<Status> out(2, Status::touching);
+    CHECK_THROWS_WITH(static_status_batch(std::span<const Ellipsoid>(as), std::span<const Ellipsoid>(bs), std::span<Status>(out), arith),
+                      Catch::Contains("pair 1"));
+    CHECK(out[0] == Status::touching);  // nothing written
   }
 }
