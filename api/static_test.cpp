@@ -25,6 +25,7 @@
 #include <stdexcept>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace eccd {
 
@@ -381,26 +382,26 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
   if (a.size() != b.size() || a.size() != out.size())
     throw std::invalid_argument("static_status_batch: the spans have different sizes (" + std::to_string(a.size()) + ", " +
                                 std::to_string(b.size()) + ", " + std::to_string(out.size()) + ")");
-  for (std::size_t i = 0; i < a.size(); ++i) {
+  auto validate = [&](std::size_t i) {
     try {
       check_shape<N>(a[i].semi_axes, a[i].pose, "a");
       check_shape<N>(b[i].semi_axes, b[i].pose, "b");
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("static_status_batch: pair " + std::to_string(i) + ": " + e.what());
     }
-  }
-  if (arith.kind != Arithmetic::Double && arith.kind != Arithmetic::Certified) {
-    for (std::size_t i = 0; i < a.size(); ++i) out[i] = pose_status<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
-    return;
-  }
-  constexpr int L = kStaticBatchLanes;
+  };
   const std::size_t n = a.size();
   if constexpr (N == 4) {
-    if (simd::has_avx512()) {  // blocks of lanes in structure of arrays, vectorised (AVX-512)
+    if ((arith.kind == Arithmetic::Double || arith.kind == Arithmetic::Certified) && simd::has_avx512()) {
+      // Blocks of lanes in structure of arrays, vectorised (AVX-512). A status from the filter implies valid input
+      // (kernel/static_filter3d.hpp; the last rows are checked here), so only the pairs it leaves uncertain are
+      // validated in full; the codes wait in `codes` until every pair is known valid (nothing written before).
       constexpr int SL = simd::kSimdLanes;
+      std::vector<double> codes(n);
       for (std::size_t base = 0; base < n; base += SL) {
         const int lanes = int(std::min<std::size_t>(SL, n - base));
         double in[kStaticInputs][SL], code[SL];
+        bool affine[SL];
         for (int l = 0; l < SL; ++l) {  // a short last block repeats its first pair
           const Shape& sa = a[base + (l < lanes ? l : 0)];
           const Shape& sb = b[base + (l < lanes ? l : 0)];
@@ -412,16 +413,29 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
               in[static_pose_b(j, c)][l] = sb.pose[j][c];
             }
           }
+          affine[l] = (sa.pose[3][0] == 0) & (sa.pose[3][1] == 0) & (sa.pose[3][2] == 0) & (sa.pose[3][3] == 1) &
+                      (sb.pose[3][0] == 0) & (sb.pose[3][1] == 0) & (sb.pose[3][2] == 0) & (sb.pose[3][3] == 1);
         }
         simd::static_filter3d_lanes_avx512(in, code);
         for (int l = 0; l < lanes; ++l) {
-          const std::size_t i = base + l;
-          Status s = static_filter_detail::status_of_code(code[l]);
-          out[i] = s != Status::uncertain ? s : after_fast<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
+          codes[base + l] = affine[l] ? code[l] : 0.0;
+          if (codes[base + l] == 0.0) validate(base + l);
         }
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        Status s = static_filter_detail::status_of_code(codes[i]);
+        out[i] = s != Status::uncertain ? s : after_fast<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
       }
       return;
     }
+  }
+  for (std::size_t i = 0; i < n; ++i) validate(i);
+  if (arith.kind != Arithmetic::Double && arith.kind != Arithmetic::Certified) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = pose_status<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
+    return;
+  }
+  constexpr int L = kStaticBatchLanes;
+  if constexpr (N == 4) {
     for (std::size_t i = 0; i < n; ++i) {  // pair by pair: without AVX the lanes do not vectorise
       Status s = fast_status3(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose);
       out[i] = s != Status::uncertain ? s : after_fast<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
