@@ -551,9 +551,10 @@ void register_static() {
   group("static3d", "3D static separation test in double (per pair)",
         "A batch of 1024 random ellipsoid pairs, A in standard position (diag(1/a², 1/b², 1/c², -1)), B rotated and "
         "translated into A's frame; one pair per iteration. The target row 'Appendix A + Sturm' times the API, "
-        "eccd::static_status from the two ellipsoids' semi-axes and poses (api/static_test.hpp: the relative pose and "
-        "Appendix A with an a-priori error bound, number/forward_bound.hpp, the signs of the discriminant and Descartes, "
-        "kernel/quartic_sign_status.hpp; the running-bound Sturm test only where that is uncertain). Row "
+        "eccd::static_status from the two ellipsoids' semi-axes and poses (api/static_test.hpp: both shapes as unit balls "
+        "under their axis-scaled poses, the relative pose by the adjugate and 001 Appendix A in plain double with static "
+        "error bounds, Descartes and the discriminant's sign, kernel/static_filter3d.hpp; the running-bound Sturm test "
+        "only where that is uncertain). Row "
         "'static_status_batch' is the batched API, 64 pairs per iteration. The other rows "
         "split plain double on B given in A's frame: coefficients of f(λ) = det(λA - B) by the generic "
         "determinant expansion (2^4 column choices, kernel/characteristic_polynomial.hpp) or by 001 Appendix A "
@@ -595,8 +596,9 @@ void register_static() {
       });
   // Issue 21: the batched API, 64 pairs per iteration (the figure per pair is the median / 64; target 15 ns per pair).
   row("static3d", "static_status_batch (API, 64 pairs per iteration)", false, Cost::fast,
-      "eccd::static_status_batch over 64 pairs from two poses (blocks of 8 in structure of arrays, vectorised coefficients "
-      "with a-priori bounds, sign rule per pair); divide by 64 for the time per pair",
+      "eccd::static_status_batch over 64 pairs from two poses (blocks of 8 lanes in structure of arrays through the static "
+      "filter compiled for AVX-512 where the CPU has it, api/static_filter_simd.hpp; pair by pair otherwise); divide by 64 "
+      "for the time per pair",
       [all3](benchmark::State& st) {
         const Static3D& s = static3d.get();
         std::size_t i = 0;
