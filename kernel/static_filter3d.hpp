@@ -275,7 +275,7 @@ Status static_filter3d(const Axes& axes_a, const Pose& pose_a, const Axes& axes_
 }
 
 // Lanes: in[k][l] is input k (static_axis_a, ...) of lane l; code[l] = 0 uncertain, 1 separate, 2 overlapping.
-// Straight-line over the lanes: the compiler vectorises the loop (the caller compiles it for AVX2 / AVX-512).
+// Straight-line over the lanes: GCC 12 vectorises the loop for AVX-512 (api/static_filter_simd.hpp), not for AVX2.
 template <int L>
 [[gnu::always_inline]] inline void static_filter3d_lanes(const double (&in)[kStaticInputs][L], double (&code)[L]) {
 #pragma GCC ivdep
