@@ -39,6 +39,7 @@
 #include "kernel/polynomial.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <type_traits>
 #include <vector>
 
@@ -61,6 +62,24 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
   } else {
     const Poly<T> dp = derivative(p);
     T x = (l + r) / T(2);
+    // A seed from double (the bisection above on p rounded to double), kept only as a proposal: the bracket is
+    // narrowed to x_d -+ delta where the signs of p (in T) there confirm it, else left as it is.
+    if (const int bits = scalar_traits<T>::precision(l); bits > 64) {
+      Poly<double> pd;
+      for (const T& c : p.c) pd.c.push_back(scalar_traits<T>::to_double(c));
+      const double ld = scalar_traits<T>::to_double(l), rd = scalar_traits<T>::to_double(r);
+      if (std::isfinite(ld) && std::isfinite(rd) && ld < rd) {
+        const double xd = root_in_bracket<double>(pd, ld, rd, sl);
+        const double delta = std::ldexp(std::max(1.0, std::fabs(xd)), -40);
+        const T a(xd - delta, bits), b(xd + delta, bits), xs(xd, bits);
+        if (l < a && a < b && b < r) {
+          const Sign sa = sign(p(a)), sb = sign(p(b));
+          if (sa == Sign::zero) return a;
+          if (sb == Sign::zero) return b;
+          if (sa == sl && sb != sl) { l = a; r = b; x = xs; }
+        }
+      }
+    }
     T step_old = r - l, step = step_old;
     for (int it = 0; it < 100000; ++it) {
       const T fx = p(x);
