@@ -197,16 +197,33 @@ class Engine {
   }
 
   // argmax over u of the double mid-point net at t and the value there (a witness only: 127 samples).
+  // The 127 de Casteljau evaluations run side by side (issue 21: a sixth of the degree-1 certified query): the
+  // same products and sums as bernstein_value at each u, in the same order, so the same values bit for bit.
   std::pair<double, double> witness(double t) const {
     Bern<double> col;
     for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
     double best = -INFINITY, ub = 0.5;
+    constexpr int K = 127;
+    const int n = int(col.b.size());
+    if (n >= 1 && n <= kWitnessRows) {
+      alignas(64) double w[kWitnessRows][K], su[K], uu[K];
+      for (int k = 0; k < K; ++k) { uu[k] = (k + 1) / 128.0; su[k] = 1.0 - uu[k]; }
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k < K; ++k) w[i][k] = col.b[i];
+      for (int r = 1; r < n; ++r)
+        for (int i = 0; i + r < n; ++i)
+          for (int k = 0; k < K; ++k) { const double x = su[k] * w[i][k]; const double y = uu[k] * w[i + 1][k]; w[i][k] = x + y; }
+      for (int k = 0; k < K; ++k)
+        if (w[0][k] > best) { best = w[0][k]; ub = uu[k]; }
+      return {ub, best};
+    }
     for (int k = 1; k < 128; ++k) {
       const double u = k / 128.0, v = col(u);
       if (v > best) { best = v; ub = u; }
     }
     return {ub, best};
   }
+  static constexpr int kWitnessRows = 17;  // F's degree in u plus one (5 for ellipsoids), with room
   double argmax_u(double t) const { return witness(t).first; }
   // The maximiser of the double net's F(., t) near u0 (golden-section search in [u0 - 1/128, u0 + 1/128]).
   double refine_argmax(double u0, double t) const {
