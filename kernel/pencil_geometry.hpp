@@ -16,9 +16,12 @@
 //    Newton's method safeguarded by that bracket (Numerical Recipes' rtsafe:
 //    a bisection step whenever Newton's step would leave the bracket or did
 //    not halve the step before last, so the steps shrink at least as fast as
-//    bisection's and the loop ends; it ends when a step no longer moves x, or
-//    the bracket's midpoint equals an end). Both keep the sign-change bracket,
-//    so the result is the same root to the last bits; Newton needs a handful
+//    bisection's and the loop ends; it ends when a step or the bracket is
+//    below 2^-(bits - 8) relative, or a step no longer moves x, or the
+//    bracket's midpoint equals an end; the first step is the root of p
+//    rounded to double, and the bracket x_d -+ 2^-40 |x_d| where p's signs in
+//    Mpfr confirm it). Both keep the sign-change bracket, so the result is the
+//    same root to within 2^-(bits - 9) relative; Newton needs a handful
 //    of evaluations where bisection needs about one per bit (issue 21: the
 //    certified 3D contact points spent half the query bisecting to 256 bits).
 //    A root where p has no
@@ -60,6 +63,7 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
     }
     return (l + r) / T(2);
   } else {
+    static_assert(std::is_same_v<T, Mpfr>, "small_real_roots: double or Mpfr");
     const Poly<T> dp = derivative(p);
     T x = (l + r) / T(2);
     // A seed from double (the bisection above on p rounded to double), kept only as a proposal: the bracket is
@@ -80,6 +84,15 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
         }
       }
     }
+    // Rounded evaluation leaves p's sign random within a band of a few ulps around the root (cancellation in
+    // Horner), where Newton's steps are noise that never settles on one value: stop when a step or the bracket
+    // is below 2^-(bits - 8) relative (256 times the precision; bisection's last bits in that band are noise too).
+    const long fine = long(scalar_traits<T>::precision(l)) - 8;
+    auto negligible = [&](const T& dx, const T& ref) {
+      if (sign(dx) == Sign::zero) return true;
+      if (sign(ref) == Sign::zero || fine <= 0) return false;
+      return long(mpfr_get_exp(dx.get())) <= long(mpfr_get_exp(ref.get())) - fine;
+    };
     T step_old = r - l, step = step_old;
     for (int it = 0; it < 100000; ++it) {
       const T fx = p(x);
@@ -88,6 +101,7 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
       (sx == sl ? l : r) = x;
       const T m = (l + r) / T(2);
       if (!(l < m && m < r)) return m;  // the bracket is down to the precision of T
+      if (negligible(T(r - l), abs_of(l) < abs_of(r) ? r : l)) return m;
       const T d = dp(x);
       bool newton = sign(d) != Sign::zero;
       T nx = x;
@@ -97,6 +111,7 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
         // Inside the bracket and at most half the step before last (else bisect).
         newton = l < nx && nx < r && abs_of(T(dx + dx)) <= abs_of(step_old);
         if (newton) { step_old = step; step = dx; }
+        if (newton && negligible(dx, x)) return nx;
       }
       if (!newton) { step_old = step; step = m - x; nx = m; }
       if (nx == x) return x;  // a step below the precision of T
