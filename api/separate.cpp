@@ -225,12 +225,26 @@ Separation separate_floating(const Scene& scene, const mpq_class& t, const Arith
   return s;
 }
 
+// Certified (issue 21): 000's construction in double from the scene rounded to double; its plane (the exact
+// rationals of the doubles) is proved by the four inequalities of check_at evaluated in Bounded<double>, whose
+// running error bounds hold against the same formulas on the scene's exact numbers (number/running_error.hpp):
+// each certainly-signed value has the exact value's sign, so the plane provably separates a and b at t. When the
+// double static test cannot decide or the bounded checks do not all hold, the exact path (separate_exact) decides,
+// which also gives the exact statement "touching" / "overlapping".
+template <int H>
+Separation separate_certified(const Scene& scene, const mpq_class& t) {
+  Separation s = separate_floating<double, H>(scene, t, Arithmetic::double_precision(), Bounded<double>(1.0, 0));
+  if (s.status == "separate" && s.plane) return s;
+  return separate_exact<H>(scene, t);
+}
+
 template <int H>
 Separation separate_dim(const Scene& scene, const mpq_class& t, const SolveOptions& o) {
   switch (o.arith.kind) {
     case Arithmetic::Double: return separate_floating<double, H>(scene, t, o.arith, Bounded<double>(1.0, 0));
     case Arithmetic::Mpfr:
       return separate_floating<Mpfr, H>(scene, t, o.arith, Bounded<Mpfr>(Mpfr(mpq_class(1), o.arith.mpfr_bits), 0));
+    case Arithmetic::Certified: return separate_certified<H>(scene, t);
     default: return separate_exact<H>(scene, t);
   }
 }

@@ -9,12 +9,17 @@
 //    (kernel/separating_plane.hpp: eigenvectors of the pencil, the polar line
 //    V0V1, the tangent points P_R^A, P_L^B) and a plane n·x + o = 0 with a on
 //    the negative side, b on the positive side.
-//      exact / certified: the construction at 128, 256, ... 4096 bits of MPFR
+//      exact: the construction at 128, 256, ... 4096 bits of MPFR
 //      from the exact A(t), B(t); the plane rounded to short rationals (the
 //      simplest rational within 2^-16, 2^-32, ... of each entry, then the
 //      MPFR value itself) and each candidate checked by exact inequalities
 //      (below) until one holds: the plane is proved. Not separate: the exact
 //      statement "touching" or "overlapping".
+//      certified: first the double construction below, its plane proved by
+//      the same inequalities with running error bounds (bounds that hold
+//      against the exact scene numbers, so a certain sign is the exact one:
+//      `bits` 53, each check's error_bound given); when the double static
+//      test or a bounded check cannot decide, the exact path above.
 //      double / mpfr:BITS: the construction in that arithmetic from the
 //      scene's numbers rounded to it; the plane (exact rationals of the
 //      floating values) is checked by the same inequalities evaluated with a

@@ -43,7 +43,7 @@ Command add_separate_command(CLI::App& app) {
   c.sub->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
   c.sub->add_option("--at", args->at, "The instant t in [0, 1], an exact rational: 1/3, 0.25, 1e-3")->required();
   c.sub->add_option("--arith", args->arith, "Arithmetic: exact (default: a plane with rational coefficients, proved), certified "
-                                           "(the same), double or mpfr:BITS (checked with a running error bound; undecided where "
+                                           "(proved too: the double plane when its error-bounded checks hold, else exact), double or mpfr:BITS (checked with a running error bound; undecided where "
                                            "it cannot decide)")->capture_default_str();
   c.sub->add_flag("--json", args->json, "Print one JSON object (format eccd-separate/1)");
   c.run = [args]() -> int {
@@ -84,13 +84,16 @@ Command add_separate_command(CLI::App& app) {
       if (sep.tangent_points.size() == 2)
         o << "  tangent points (000 section 3): a " << tuple_text(sep.tangent_points[0], false) << ", b "
           << tuple_text(sep.tangent_points[1], false) << "\n";
-      o << (exact ? "  proof (exact; q = M(t)^T (n, o), M the scene's motion matrix, Q its shape matrix, det Q < 0):\n"
-                  : "  checks (computed in " + opt.arith.name() + " with a running error bound):\n");
+      bool bounded = !exact;  // certified: the double plane's checks carry error bounds (api/separate.hpp)
+      for (const auto& k : sep.checks) bounded = bounded || k.error_bound > 0;
+      o << (!bounded ? "  proof (exact; q = M(t)^T (n, o), M the scene's motion matrix, Q its shape matrix, det Q < 0):\n"
+            : exact  ? "  proof (in double with a running error bound that holds for the scene's exact numbers; q = M(t)^T (n, o)):\n"
+                     : "  checks (computed in " + opt.arith.name() + " with a running error bound):\n");
       for (const auto& k : sep.checks) {
-        o << "    " << k.object << ": " << k.quantity << " = " << (exact ? k.value.get_str() : decimal_string(k.value, 17));
-        if (!exact) o << " (error bound " << k.error_bound << ")";
+        o << "    " << k.object << ": " << k.quantity << " = " << (!bounded ? k.value.get_str() : decimal_string(k.value, 17));
+        if (bounded) o << " (error bound " << k.error_bound << ")";
         o << " " << k.relation;
-        if (!k.centre.empty()) o << ", c = " << tuple_text(k.centre, exact);
+        if (!k.centre.empty()) o << ", c = " << tuple_text(k.centre, !bounded);
         o << "\n";
       }
     } else if (!sep.why.empty()) {

@@ -52,8 +52,16 @@ class Engine {
   Engine(const PreparedPair<4>& p, const BezierProofOptions& o) : p_(p), opt_(o) {
     F_ = ellipsoid_function(characteristic_bernstein<Interval, 4>(p, false, Interval(0)), Interval(0));
     Fd_.b = std::vector<std::vector<double>>(F_.b.size());
+    double scale = 0, width = 0;
     for (std::size_t i = 0; i < F_.b.size(); ++i)
-      for (const auto& x : F_.b[i]) Fd_.b[i].push_back(x.mid());
+      for (const auto& x : F_.b[i]) {
+        Fd_.b[i].push_back(x.mid());
+        scale = std::max(scale, std::max(std::fabs(x.lo), std::fabs(x.hi)));
+        width = std::max(width, x.width());
+      }
+    // |Fd(u, t) - F(u, t)| <= half the widest interval of the net (the mid-points) plus de Casteljau's rounding
+    // in double (a few ulps of the scale): far below this margin, so a double value beyond it has F's sign.
+    sure_margin_ = std::isfinite(scale) && std::isfinite(width) ? width + 1e-9 * scale : INFINITY;
   }
 
   long box_tests = 0, strip_tests = 0, exclusion_boxes = 0, krawczyk_tests = 0;
@@ -163,6 +171,7 @@ class Engine {
   std::optional<Nets> nets_;
   std::optional<krawczyk_detail::NetsT<Interval>> dnets_;
   long unresolved_ = 0;
+  double sure_margin_ = INFINITY;
   static constexpr long kMaxUnresolved = 64;  // unresolved strips at the finest level, in all
 
   // The nets for Krawczyk's test, in MPFI at `bits`: first the localisation's net of intervals of
@@ -197,17 +206,40 @@ class Engine {
   }
 
   // argmax over u of the double mid-point net at t and the value there (a witness only: 127 samples).
+  // The 127 de Casteljau evaluations run side by side (issue 21: a sixth of the degree-1 certified query): the
+  // same products and sums as bernstein_value at each u, in the same order, so the same values bit for bit.
   std::pair<double, double> witness(double t) const {
     Bern<double> col;
     for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
     double best = -INFINITY, ub = 0.5;
+    constexpr int K = 127;
+    const int n = int(col.b.size());
+    if (n >= 1 && n <= kWitnessRows) {
+      alignas(64) double w[kWitnessRows][K], su[K], uu[K];
+      for (int k = 0; k < K; ++k) { uu[k] = (k + 1) / 128.0; su[k] = 1.0 - uu[k]; }
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k < K; ++k) w[i][k] = col.b[i];
+      for (int r = 1; r < n; ++r)
+        for (int i = 0; i + r < n; ++i)
+          for (int k = 0; k < K; ++k) { const double x = su[k] * w[i][k]; const double y = uu[k] * w[i + 1][k]; w[i][k] = x + y; }
+      for (int k = 0; k < K; ++k)
+        if (w[0][k] > best) { best = w[0][k]; ub = uu[k]; }
+      return {ub, best};
+    }
     for (int k = 1; k < 128; ++k) {
       const double u = k / 128.0, v = col(u);
       if (v > best) { best = v; ub = u; }
     }
     return {ub, best};
   }
+  static constexpr int kWitnessRows = 17;  // F's degree in u plus one (5 for ellipsoids), with room
   double argmax_u(double t) const { return witness(t).first; }
+  // F(u, t) of the double mid-point net (a proposal; see sure_margin_).
+  double value_at(double u, double t) const {
+    Bern<double> col;
+    for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
+    return col(u);
+  }
   // The maximiser of the double net's F(., t) near u0 (golden-section search in [u0 - 1/128, u0 + 1/128]).
   double refine_argmax(double u0, double t) const {
     Bern<double> col;
@@ -272,12 +304,19 @@ class Engine {
     s.lo = lo;
     s.hi = hi;
     const auto [ustar, top] = witness(tm);
+    // A box test that must fail is skipped (issue 21: the strips that hold an end failed their box tests at
+    // every depth): F(u*, lo) or F(u*, hi) surely < 0 (every u-box around u* then has F <= 0 somewhere, so not
+    // every control point is > 0), or F(u, lo) or F(u, hi) surely > 0 for some u (not every control point of
+    // every u-piece is < 0). "Surely": the double value beyond sure_margin_ (see the constructor). The strip is
+    // then not proved, exactly as the failed test would leave it; only the box count differs.
     if (top > 0) {
       s.kind = BezierPiece::out;
-      s.proved = positive_box(f, ustar, lo, hi, s.boxes);
+      const bool fails = value_at(ustar, lo) < -sure_margin_ || value_at(ustar, hi) < -sure_margin_;
+      s.proved = !fails && positive_box(f, ustar, lo, hi, s.boxes);
     } else {
       s.kind = BezierPiece::in;
-      s.proved = negative_all(f, 0, 1, 0, lo, hi, s.boxes);
+      const bool fails = witness(lo).second > sure_margin_ || witness(hi).second > sure_margin_;
+      s.proved = !fails && negative_all(f, 0, 1, 0, lo, hi, s.boxes);
     }
     if (s.proved || depth >= opt_.strip_depth) {
       // a regular end leaves a few unresolved strips; many are a touching stretch or a tangency: not provable here

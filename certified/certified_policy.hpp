@@ -66,6 +66,7 @@
 #include "kernel/polynomial.hpp"
 #include "certified/point_oracle.hpp"
 
+#include <chrono>
 #include <functional>
 #include <map>
 
@@ -119,6 +120,14 @@ struct CertifiedPolicy {
   long max_local_splits = 4;  // exact split-point evaluations allowed per run (beyond: escalate as without the oracle)
   mutable long local_split_evaluations = 0;
   mutable std::map<std::string, long> local;  // decisions made locally with the oracle, by kind (see above)
+  // Seconds spent in the oracle's exact evaluations (issue 21: the ladder's MPFI budget leaves them out).
+  mutable double local_seconds = 0;
+  struct LocalClock {  // adds its lifetime to a counter
+    double& total;
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    explicit LocalClock(double& t) : total(t) {}
+    ~LocalClock() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  };
 
   explicit CertifiedPolicy(const T& like_value = T(0)) : like(like_value) {}
 
@@ -137,6 +146,7 @@ struct CertifiedPolicy {
   // q's exact sign at the rational t, or uncertain when there is no oracle or formula.
   Sign exact_sign(const Rep& q, const Rational& t) const {
     if (!oracle || !q.exact) return Sign::uncertain;
+    const LocalClock clock(local_seconds);
     std::vector<Poly<Rational>> G;
     for (const Rational& c : oracle->g_at(t)) G.push_back(Poly<Rational>(std::vector<Rational>{c}));
     const Poly<Rational> v = q.exact(G);
@@ -175,6 +185,7 @@ struct CertifiedPolicy {
     if (!q) return s;
     check_deadline("certified: exact static test at a sample");
     ++local["cell_status"];
+    const LocalClock clock(local_seconds);
     return oracle->status_at(*q);
   }
 

@@ -37,7 +37,8 @@ Solution& named(Solution& s, const char* basis, bool certified) {
 template <class T, int N>
 std::optional<Solution> try_certified_rung(const PreparedPair<N>& p, Variant variant, bool first_contact, const T& like,
                                            int max_depth, double budget_s, bool local, std::string& reason,
-                                           bool& multiple_root, bool& out_of_budget) {
+                                           bool& multiple_root, bool& out_of_budget, double& local_s) {
+  local_s = 0;
   try {
     ScopedDeadline rung_deadline(budget_s);
     if (deadline_passed()) throw BudgetExhausted("certified rung: " + deadline_reason());  // a budget already spent
@@ -45,6 +46,11 @@ std::optional<Solution> try_certified_rung(const PreparedPair<N>& p, Variant var
     pol.max_depth = max_depth;
     const PreparedPointOracle<N> oracle(p);  // local decisions: exact at one rational instant
     if (local) pol.oracle = &oracle;
+    struct Report {  // the oracle's time, also when the rung gives up (Escalate, BudgetExhausted)
+      const CertifiedPolicy<T>& pol;
+      double& out;
+      ~Report() { out = pol.local_seconds; }
+    } report{pol, local_s};
     PipelineResult<T> r = projection_pipeline(to_arithmetic<T, N>(p, like), pol, variant, first_contact);
     if (r.answer.undecided.empty()) {
       Solution s = solution_of(r, N - 1);
@@ -148,15 +154,17 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
   }
   // Rung 1: intervals of doubles, within the fixed budget B_I.
   auto t = Clock::now();
+  double local_s = 0;
   if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, budget.interval_s, budget.local, reason,
-                                               multiple_root, out_of_budget))
+                                               multiple_root, out_of_budget, local_s))
     return finish(*s, "interval");
   const double interval_s = seconds_since(t);
   escalations.push_back({"interval", reason, interval_s * 1e3, budget.interval_s * 1e3});
   // The MPFI rungs share one budget: mpfi_factor x the interval rung's time
-  // (what was spent before them), so that all of them together cost at most
-  // that much; each rung gets what is left.
-  const double mpfi_total_s = budget.mpfi_factor * interval_s;
+  // without its local exact evaluations (issue 21: they decided nothing on the
+  // degree-1 graze and overlap rows and doubled the MPFI rung's allowance), so
+  // that all of them together cost at most that much; each rung gets what is left.
+  const double mpfi_total_s = budget.mpfi_factor * std::max(0.0, interval_s - local_s);
   double mpfi_spent_s = 0;
   std::string previous_reason = reason;
   for (int bits : mpfi_rungs) {
@@ -179,8 +187,9 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
     // the exact rung: 2^-64 at the default 256 bits.
     int depth = std::clamp(bits / 4, 48, 256);
     t = Clock::now();
+    double mpfi_local_s = 0;
     if (auto s = try_certified_rung<MpfiInterval, N>(p, variant, first_contact, MpfiInterval(Rational(0), bits), depth,
-                                                     left_s, budget.local, reason, multiple_root, out_of_budget))
+                                                     left_s, budget.local, reason, multiple_root, out_of_budget, mpfi_local_s))
       return finish(*s, rung);
     const double rung_s = seconds_since(t);
     mpfi_spent_s += rung_s;

@@ -21,8 +21,9 @@
 //     step); in 2D Z = 0;
 //   - the interval rung has the fixed budget B_I (LadderBudget::interval_s), so
 //     I <= B_I + δ;
-//   - all MPFI rungs together have the budget f·I (LadderBudget::mpfi_factor,
-//     f = 1: at most what was spent before them), each rung what is left; a
+//   - all MPFI rungs together have the budget f·I' (LadderBudget::mpfi_factor,
+//     f = 1; I' <= I the interval rung's time without its local exact
+//     evaluations, issue 21), each rung what is left; a
 //     rung that meets a multiple root, runs out of budget, or gives up with the
 //     same reason as the rung below (the same sign still uncertain after the
 //     precision raise: not converging) sends the ladder straight to exact;

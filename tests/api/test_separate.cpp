@@ -306,3 +306,40 @@ TEST_CASE("contact points and normals: 3D in every arithmetic, 2D with normals",
     CHECK(std::abs(std::stod(r.answer.contact_points[0].normal[1]) + 1) < 1e-9);
   }
 }
+
+// Issue 21: certified separate_at takes the double construction when its bounded checks hold (bits 53, each
+// check with its error bound) and the exact path otherwise (a 1e-12 gap: the double static test cannot decide).
+// Either way the plane passes the first-principles check above, and the status agrees with exact.
+TEST_CASE("certified separating planes: the double plane when its bounded checks hold, else exact", "[separate]") {
+  const Q eps12("1/1000000000000");
+  const Body far_a{{3, 2, 1}, rot3a(), {0, 0, 0}, {0, 0, 0}}, far_b{{1, 2, 3}, rot3b(), {7, 1, 0}, {-2, 0, 1}};
+  const Body gap_a{{3, 2, 1}, identity(3), {0, 0, 0}, {0, 0, 0}};
+  const Body gap_b = ball(3, 1, {Q(4) + eps12, 0, 0}, {0, 0, 0});
+  Scene far = scene_from_text(scene_json(far_a, far_b, "far"), "far");
+  Scene gap = scene_from_text(scene_json(gap_a, gap_b, "gap"), "gap");
+  for (const Q& t : {Q(0), Q(1, 3), Q(1, 2)}) {
+    INFO("t = " << t.get_str());
+    REQUIRE(status_at(far, t, Arithmetic::exact()) == Status::separate);
+    Separation c = separate_at(far, t, arith("certified"));
+    REQUIRE(c.status == "separate");
+    REQUIRE(c.plane);
+    CHECK(c.bits == 53);  // the double path
+    CHECK(separates_by_hand(far_a, far_b, t, *c.plane));
+    REQUIRE(c.checks.size() == 4);
+    bool bounded = false;
+    for (const auto& ch : c.checks) bounded = bounded || ch.error_bound > 0;
+    CHECK(bounded);
+  }
+  Separation g = separate_at(gap, Q(0), arith("certified"));
+  REQUIRE(g.status == "separate");
+  REQUIRE(g.plane);
+  CHECK(g.bits >= 128);  // the exact path: the double one cannot prove a 1e-12 gap
+  CHECK(separates_by_hand(gap_a, gap_b, Q(0), *g.plane));
+  for (const auto& ch : g.checks) CHECK(ch.error_bound == 0);
+  // Not separate: the exact statement, as in exact arithmetic.
+  const Body touch_b = ball(3, 1, {Q(4), 0, 0}, {0, 0, 0});
+  Scene touch = scene_from_text(scene_json(gap_a, touch_b, "touch"), "touch");
+  Separation tc = separate_at(touch, Q(0), arith("certified"));
+  CHECK(tc.status == to_string(status_at(touch, Q(0), Arithmetic::exact())));
+  CHECK(!tc.plane);
+}
