@@ -271,6 +271,8 @@ class BezierZeroSet {
     // before that, the instant is reported uncertain, not as a touch.
     touch_tol_ = pow2(-(bits / 2));
     noise_ = pow2(-(bits - 8));
+    degree_u_ = F_.degree_u();
+    for (int i = 0; i <= degree_u_; ++i) abscissa_.push_back(q(i, std::max(degree_u_, 1)));
   }
 
   const BiBern<T>& F() const { return F_; }
@@ -287,6 +289,21 @@ class BezierZeroSet {
       return quartic_status_at(g_, t0);
     } else {
       Bern<T> f = ellipsoid_function_at(F_, t0);
+      if constexpr (has_error_bound_v<T>) {
+        // Before the peak (issue 21: its root finding was a quarter of a query),
+        // two decisions that need none: every control point surely negative
+        // (then F(., t0) < 0 on [0, 1] by the convex hull, and no peak could be
+        // surely positive), or F surely positive at the abscissa i/m of the
+        // largest control point (a witness u, which proves separation).
+        bool negative = true;
+        std::size_t top = 0;
+        for (std::size_t i = 0; i < f.b.size(); ++i) {
+          negative = negative && sign(f.b[i]) == Sign::negative;
+          if (f.b[i] > f.b[top]) top = i;
+        }
+        if (negative) return Status::overlapping;
+        if (f.degree() == degree_u_ && sign(f(abscissa_[top])) == Sign::positive) return Status::separate;
+      }
       Peak p = argmax(f);
       if constexpr (has_error_bound_v<T>) {
         // With a running error bound the sign of the peak decides, or nothing does.
@@ -422,6 +439,8 @@ class BezierZeroSet {
   BiBern<T> F_;
   T zero_, one_, half_, eps_t_, touch_tol_, noise_;
   std::vector<TimelineNode> seq_;
+  int degree_u_ = 0;
+  std::vector<T> abscissa_;  // i / degree_u_, i = 0..degree_u_ (status's witnesses)
   std::vector<T> seq_t_;  // the instant of seq_[k] in T (its text is made by format_kept)
   std::vector<BiBern<T>> gauss_piece_;  // collect_gradient's u-piece at each depth (storage reused)
   std::vector<T> small_ints_;  // 0, 1, 2, ... as T (small_int)
