@@ -50,10 +50,17 @@
 // touch found by two shots meeting is reported uncertain (a tangency cannot
 // be told from a near-miss in rounded arithmetic).
 // Requirements on T: an ordered field with scalar_traits<T>. Shooting and the
-// Gaussian test need rounded T (the test's angles are compared in double).
+// Gaussian test need rounded T (the test's cross-product signs are taken of the
+// gradients' control points rounded to double).
 // Cost: the inner loops (static tests, shooting, Gaussian test) restrict and
 // subdivide F in place and use the constants 0, 1, 1/2 made once per run
-// (zero_, one_, half_) instead of converting rationals each time.
+// (zero_, one_, half_) instead of converting rationals each time. Issue 21:
+// the Gaussian test's u-pieces are made in buffers kept per depth (no heap
+// in its recursion), the deadline is read on every 16th poll only (a poll
+// comes once per shot iteration or gap, so a run overshoots its deadline by
+// at most 15 of those), and only the instants that reach the answer or a
+// cell are formatted as text (the others, about half, were %.17g-printed and
+// thrown away).
 #include "floating/bernstein_roots.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/cd_disc.hpp"
@@ -182,43 +189,62 @@ Peak<U> bern_argmax(const Bern<U>& f, int bits) {
 
 namespace bezier_detail {
 
-// The largest cyclic gap between the sorted angles (what the Gaussian-circle
-// test decides by: the points lie in an open half-plane iff it exceeds π).
-inline double max_angle_gap(std::vector<double> ang) {
-  std::sort(ang.begin(), ang.end());
-  double gap = ang.front() + 2 * M_PI - ang.back();
-  for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
-  return gap;
+// The sign of a·d − b·c, exact for doubles as long as no product under- or
+// overflows (pointed() below scales each point so that it cannot overflow).
+// Rounding to nearest is monotone, so p = fl(a·d) > q = fl(b·c) implies
+// a·d > b·c; when p == q, a·d − b·c = ep − eq exactly (the fma gives the
+// products' rounding errors exactly), and comparing two doubles is exact.
+inline int cross_sign(double a, double b, double c, double d) {
+  const double p = a * d, q = b * c;
+  if (p != q) return p > q ? 1 : -1;
+  const double ep = std::fma(a, d, -p), eq = std::fma(b, c, -q);
+  return ep > eq ? 1 : ep < eq ? -1 : 0;
 }
 
-// All points strictly inside one open half-plane through the origin, i.e.
-// max_angle_gap of their angles (atan2) > π. Only two gaps can exceed π: the
-// cyclic one, min + 2π - max, and the one across 0 between the largest
-// negative and the smallest positive angle (both ends of any other gap lie in
-// [-π, 0] or in [0, π], so its computed difference is at most π). So no sort
-// is needed, and the decision is max_angle_gap's to the last bit; with a NaN
-// angle max_angle_gap itself decides.
+// Two non-zero collinear vectors point the same way iff their coordinates have
+// the same signs (one is a positive multiple of the other).
+inline bool same_way(double x1, double y1, double x2, double y2) {
+  return (x1 > 0) == (x2 > 0) && (x1 < 0) == (x2 < 0) && (y1 > 0) == (y2 > 0) && (y1 < 0) == (y2 < 0);
+}
+
+// All points strictly inside one open half-plane through the origin (001
+// section 4's Gaussian-circle test: the gradients' directions cover less than
+// a half circle). Decided by the signs of cross products, no angles (atan2 was
+// 15 % of paper 002's double query, issue 21): the points are taken in order
+// and the cone [lo, hi] (counter-clockwise from lo to hi, narrower than π)
+// spanned by those seen so far is kept; a point inside it changes nothing, a
+// point less than π counter-clockwise of lo and beyond hi becomes hi (the
+// mirror case becomes lo), any other point (on the far side of both, or
+// opposite one of them) means no open half-plane holds them all. The cone of
+// a finite set in an open half-plane is unique, so the answer does not depend
+// on the order, and with exact cross signs it is the exact answer for the
+// given doubles (a zero point or a non-finite coordinate: false, i.e. not shown
+// loop-free; the caller subdivides).
 inline bool pointed(const std::vector<std::pair<double, double>>& pts) {
-  if (pts.empty()) return true;
-  std::vector<double> ang;
-  ang.reserve(pts.size());
+  double lx = 0, ly = 0, hx = 0, hy = 0;
+  bool first = true;
   for (auto [x, y] : pts) {
-    if (x == 0 && y == 0) return false;
-    ang.push_back(std::atan2(y, x));
+    const double ax = std::fabs(x), ay = std::fabs(y);
+    if (!(ax < 0x1p400 && ay < 0x1p400 && (ax > 0x1p-400 || ay > 0x1p-400))) {  // NaN lands here too
+      // outside the range where the products are exact: scaled by a power of two
+      if (!std::isfinite(x) || !std::isfinite(y) || (x == 0 && y == 0)) return false;
+      const int e = std::ilogb(std::max(ax, ay));
+      x = std::ldexp(x, -e);
+      y = std::ldexp(y, -e);
+    }
+    if (first) { lx = hx = x; ly = hy = y; first = false; continue; }
+    const int c1 = cross_sign(lx, ly, x, y), c2 = cross_sign(x, y, hx, hy);  // lo × p, p × hi
+    if (c1 >= 0 && c2 >= 0) {  // inside [lo, hi], or on one of its lines
+      if ((c1 == 0 && !same_way(lx, ly, x, y)) || (c2 == 0 && !same_way(x, y, hx, hy))) return false;
+    } else if (c1 > 0 && c2 < 0) {
+      hx = x; hy = y;
+    } else if (c1 < 0 && c2 > 0) {
+      lx = x; ly = y;
+    } else {
+      return false;
+    }
   }
-  double lo = ang.front(), hi = ang.front();
-  double neg = -std::numeric_limits<double>::infinity(), pos = std::numeric_limits<double>::infinity();
-  bool zero = false;
-  for (double a : ang) {
-    if (std::isnan(a)) return max_angle_gap(ang) > M_PI;
-    lo = std::min(lo, a);
-    hi = std::max(hi, a);
-    if (a < 0) neg = std::max(neg, a);
-    else if (a > 0) pos = std::min(pos, a);
-    else zero = true;
-  }
-  if (lo + 2 * M_PI - hi > M_PI) return true;
-  return !zero && std::isfinite(neg) && std::isfinite(pos) && pos - neg > M_PI;
+  return true;
 }
 
 }  // namespace bezier_detail
@@ -245,6 +271,8 @@ class BezierZeroSet {
     // before that, the instant is reported uncertain, not as a touch.
     touch_tol_ = pow2(-(bits / 2));
     noise_ = pow2(-(bits - 8));
+    degree_u_ = F_.degree_u();
+    for (int i = 0; i <= degree_u_; ++i) abscissa_.push_back(q(i, std::max(degree_u_, 1)));
   }
 
   const BiBern<T>& F() const { return F_; }
@@ -261,6 +289,21 @@ class BezierZeroSet {
       return quartic_status_at(g_, t0);
     } else {
       Bern<T> f = ellipsoid_function_at(F_, t0);
+      if constexpr (has_error_bound_v<T>) {
+        // Before the peak (issue 21: its root finding was a quarter of a query),
+        // two decisions that need none: every control point surely negative
+        // (then F(., t0) < 0 on [0, 1] by the convex hull, and no peak could be
+        // surely positive), or F surely positive at the abscissa i/m of the
+        // largest control point (a witness u, which proves separation).
+        bool negative = true;
+        std::size_t top = 0;
+        for (std::size_t i = 0; i < f.b.size(); ++i) {
+          negative = negative && sign(f.b[i]) == Sign::negative;
+          if (f.b[i] > f.b[top]) top = i;
+        }
+        if (negative) return Status::overlapping;
+        if (f.degree() == degree_u_ && sign(f(abscissa_[top])) == Sign::positive) return Status::separate;
+      }
       Peak p = argmax(f);
       if constexpr (has_error_bound_v<T>) {
         // With a running error bound the sign of the peak decides, or nothing does.
@@ -306,7 +349,7 @@ class BezierZeroSet {
     ++shots;
     T t = from;
     for (int it = 0; it < opt_.max_shots; ++it) {
-      if (deadline_passed()) return {ShotKind::inconclusive, t};
+      if (out_of_time()) return {ShotKind::inconclusive, t};
       ++shot_iterations;
       Peak p = peak(t);
       if (!(p.value > zero_)) return {ShotKind::converged, t};
@@ -358,8 +401,10 @@ class BezierZeroSet {
   bool loop_free(const T& a, const T& b) {
     ++gauss_tests;
     BiBern<T> Fab = restrict_t(F_, a, b, one_);
-    std::vector<std::pair<double, double>> pts;
+    std::vector<std::pair<double, double>>& pts = gauss_pts_;
+    pts.clear();
     const double wt = to_double(b - a);
+    if (int(gauss_piece_.size()) < opt_.gauss_depth) gauss_piece_.resize(std::max(opt_.gauss_depth, 0));
     collect_gradient(Fab, opt_.gauss_depth, 1.0, wt, pts);
     bool ok = bezier_detail::pointed(pts);
     if (ok) ++gauss_passed;
@@ -375,12 +420,14 @@ class BezierZeroSet {
       st.push_back(status(ts.back()));
     }
     seq_.clear();
+    seq_t_.clear();
     push_instant(ts[0], st[0]);
     for (int k = 0; k < opt_.samples; ++k) {
       resolve(ts[k], st[k], ts[k + 1], st[k + 1], 0);
       push_instant(ts[k + 1], st[k + 1]);
       if (opt_.first_contact_only && first_run_closed()) break;
     }
+    format_kept();
     return seq_;
   }
 
@@ -392,6 +439,22 @@ class BezierZeroSet {
   BiBern<T> F_;
   T zero_, one_, half_, eps_t_, touch_tol_, noise_;
   std::vector<TimelineNode> seq_;
+  int degree_u_ = 0;
+  std::vector<T> abscissa_;  // i / degree_u_, i = 0..degree_u_ (status's witnesses)
+  std::vector<T> seq_t_;  // the instant of seq_[k] in T (its text is made by format_kept)
+  std::vector<BiBern<T>> gauss_piece_;  // collect_gradient's u-piece at each depth (storage reused)
+  std::vector<T> small_ints_;  // 0, 1, 2, ... as T (small_int)
+  std::vector<std::pair<double, double>> gauss_pts_;
+  unsigned polls_ = 0;
+  bool late_ = false;
+
+  // deadline_passed() on every 16th call (see the header's Cost paragraph); once passed, always.
+  bool out_of_time() {
+    if (late_) return true;
+    if (polls_++ % 16 != 0) return false;
+    late_ = deadline_passed();
+    return late_;
+  }
 
   T q(long n, long d = 1) const { return scalar_traits<T>::from_rational(mpq_class(n, d), like_); }
   T pow2(int e) const {
@@ -413,41 +476,73 @@ class BezierZeroSet {
   }
 
   // Control points of ∇F (in the coordinates of the whole square) over the
-  // u-pieces of f where F may vanish.
-  void collect_gradient(const BiBern<T>& f, int depth, double wu, double wt, std::vector<std::pair<double, double>>& pts) const {
+  // u-pieces of f where F may vanish. The pieces are split_u's (keep_u_left /
+  // keep_u_right on a copy: the same values), made in gauss_piece_[depth - 1].
+  void collect_gradient(const BiBern<T>& f, int depth, double wu, double wt, std::vector<std::pair<double, double>>& pts) {
     if (f.strict_sign() == -1) return;  // F < 0 on this piece: no zero-set here
     if (depth > 0) {
-      auto [lo, hi] = split_u(f, half_);
-      collect_gradient(lo, depth - 1, wu / 2, wt, pts);
-      collect_gradient(hi, depth - 1, wu / 2, wt, pts);
+      BiBern<T>& piece = gauss_piece_[depth - 1];
+      piece.b.resize(f.b.size());
+      for (std::size_t i = 0; i < f.b.size(); ++i) piece.b[i].assign(f.b[i].begin(), f.b[i].end());
+      keep_u_left(piece, half_);
+      collect_gradient(piece, depth - 1, wu / 2, wt, pts);
+      for (std::size_t i = 0; i < f.b.size(); ++i) piece.b[i].assign(f.b[i].begin(), f.b[i].end());
+      keep_u_right(piece, half_);
+      collect_gradient(piece, depth - 1, wu / 2, wt, pts);
       return;
     }
-    // pts gets (F_u, F_t) at control point (i, j) as entry i (n + 1) + j; the
-    // derivatives are elevated back to degree (m, n) (scratch d, e reused).
+    // pts gets (F_u, F_t) at control point (i, j) as entry i (n + 1) + j: the
+    // derivative in u (t) elevated back to degree m (n), whose entry k is
+    // k (c_k − c_{k−1}) + (m − k)(c_{k+1} − c_k) along each column (row) c
+    // (the values derivative_into then elevate_into by one give, without
+    // their binomial divisions and scratch vectors).
     const int m = f.degree_u(), n = f.degree_t();
     const std::size_t base = pts.size();
     pts.resize(base + std::size_t(m + 1) * std::size_t(n + 1));
     auto at = [&](int i, int j) -> std::pair<double, double>& { return pts[base + std::size_t(i) * std::size_t(n + 1) + j]; };
-    std::vector<T> col(m + 1), d, e;
-    for (int j = 0; j <= n; ++j) {
-      for (int i = 0; i <= m; ++i) col[i] = f.b[i][j];
-      derivative_into(std::span<const T>(col), d);
-      elevate_into(std::span<const T>(d), 1, e);
-      for (int i = 0; i <= m; ++i) at(i, j).first = to_double(e[i]) / wu;
-    }
+    auto elevated_derivative = [&](auto c, int k, int deg) {
+      T e = zero_;
+      if (k > 0) { T d = c(k) - c(k - 1); e = small_int(k) * d; }
+      if (k < deg) { T d = c(k + 1) - c(k); T term = small_int(deg - k) * d; e = k > 0 ? T(e + term) : term; }
+      return e;
+    };
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= m; ++i) at(i, j).first = to_double(elevated_derivative([&](int k) -> const T& { return f.b[k][j]; }, i, m)) / wu;
     for (int i = 0; i <= m; ++i) {
-      if (n > 0) {
-        derivative_into(std::span<const T>(f.b[i]), d);
-        elevate_into(std::span<const T>(d), 1, e);
-        for (int j = 0; j <= n; ++j) at(i, j).second = to_double(e[j]) / wt;
-      } else {
-        at(i, 0).second = to_double(zero_) / wt;
-      }
+      const std::vector<T>& row = f.b[i];
+      for (int j = 0; j <= n; ++j) at(i, j).second = to_double(elevated_derivative([&](int k) -> const T& { return row[k]; }, j, n)) / wt;
     }
   }
 
-  void push_instant(const T& t, Status s) { seq_.push_back({instant(t), s, false}); }
-  void push_cell(const T& a, const T& b, Status s) { seq_.push_back({instant(half_ * (a + b)), s, true}); }
+  // k as T (0 <= k <= the larger degree of F), made once per run.
+  const T& small_int(int k) {
+    while (int(small_ints_.size()) <= k) small_ints_.push_back(q(long(small_ints_.size())));
+    return small_ints_[k];
+  }
+
+  void push_instant(const T& t, Status s) { push_node(t, s, false); }
+  void push_cell(const T& a, const T& b, Status s) { push_node(T(half_ * (a + b)), s, true); }
+  void push_node(const T& t, Status s, bool cell) {
+    seq_.push_back({Instant{std::string(), std::nullopt, std::nullopt, to_double(t)}, s, cell});
+    seq_t_.push_back(t);
+  }
+  // The text of every node that can reach the answer: every cell (the
+  // solution lists each cell's sample), every instant whose status is not
+  // separate or overlapping (a touch, an undecided instant), the two ends, and
+  // every instant next to a cell of another status (an interval's or a
+  // contact interval's end, and an overlapping instant between separate
+  // cells, which check_isolated_instants makes undecided). An instant inside
+  // a run of one status (separate or overlapping) appears nowhere
+  // (assemble_answer), so it keeps only its double value.
+  void format_kept() {
+    const std::size_t last = seq_.size() - 1;
+    for (std::size_t k = 0; k < seq_.size(); ++k) {
+      const TimelineNode& nd = seq_[k];
+      const bool plain = !nd.is_cell && (nd.status == Status::separate || nd.status == Status::overlapping) && k > 0 &&
+                         k < last && seq_[k - 1].status == nd.status && seq_[k + 1].status == nd.status;
+      if (!plain) seq_[k].t = instant(seq_t_[k]);
+    }
+  }
   Instant instant(const T& t) const {
     if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), t, t, nearest_double(t)};
     else return rounded_instant(t);
@@ -473,9 +568,9 @@ class BezierZeroSet {
     } else {
       // Out of work (the run's subdivision cap or its deadline): this gap is
       // undecided, with the reason; never guessed (issue 14).
-      if (subdivisions >= opt_.max_subdivisions || deadline_passed()) {
+      if (subdivisions >= opt_.max_subdivisions || out_of_time()) {
         if (stopped.empty())
-          stopped = deadline_passed() ? deadline_reason()
+          stopped = late_ ? deadline_reason()
                                       : "Bezier subdivision stopped at its work bound of " + std::to_string(opt_.max_subdivisions) + " subdivisions";
         push_cell(a, b, Status::uncertain);
         return;
