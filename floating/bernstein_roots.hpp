@@ -7,7 +7,12 @@
 // strict sign (convex hull property). Here a piece whose coefficients have
 // exactly one sign change and whose end values have opposite strict signs
 // holds exactly one simple root (Descartes' rule for the Bernstein basis), and
-// is refined by bisection to the working precision. A piece narrower than
+// is refined by modified regula falsi to the working precision: from degree 16
+// on (issue 21) each step's value is O(n) (Horner in t/(1-t):
+// kernel/bernstein_horner.hpp), the first point is where the control polygon
+// crosses zero and the damping is Anderson-Björck's; below degree 16 the steps
+// are Illinois' from the ends on de Casteljau values, as before. The
+// subdivision stays de Casteljau. A piece narrower than
 // `cluster_width` that is neither is reported as a root cluster (a double
 // root, as at a touch, or roots closer than the arithmetic can separate);
 // roots closer than cluster_width to each other are merged into one cluster. `first_only` stops after the leftmost root
@@ -30,6 +35,7 @@
 #include "number/pow2_scaling.hpp"
 #include "number/running_error.hpp"
 #include "kernel/bernstein.hpp"
+#include "kernel/bernstein_horner.hpp"
 #include "kernel/budget.hpp"
 
 #include <algorithm>
@@ -57,6 +63,23 @@ struct BernsteinRootOptions {
   long max_pieces = 20000;  // work bound: pieces examined (de Casteljau splits are O(n^2) each)
   mutable std::string stopped;  // out: "" or why the search stopped early
 };
+
+// Where the control polygon of b (one sign change, b.front() of sign sa) crosses zero,
+// in [0, 1]: an evaluation point only (its error does not matter); 1/2 if it cannot be formed.
+template <class T>
+T control_polygon_zero(const std::vector<T>& b, Sign sa, const T& half) {
+  const int n = int(b.size()) - 1;
+  int i = 0;  // the last coefficient of sign sa before the change
+  for (int k = 1; k <= n; ++k) {
+    Sign sk = sign(b[k]);
+    if (sk == sa) { i = k; continue; }
+    if (sk == Sign::zero) continue;
+    T d = b[i] - b[k];
+    T x = (T(i) + T(k - i) * (b[i] / d)) / T(n);
+    return x > T(0) && x < T(1) ? x : half;
+  }
+  return half;
+}
 
 template <class T>
 std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootOptions<T>& opt) {
@@ -136,33 +159,51 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
     // Descartes' rule needs every coefficient's sign: an uncertain one (a
     // running error bound) leaves the count unknown, and the piece is split.
     if (sign_variations(pc.q.b).is(1) && sa != Sign::zero && sb != Sign::zero && sa != sb) {
-      // exactly one simple root: Illinois (modified regula falsi), which
+      // exactly one simple root: modified regula falsi (Anderson-Björck), which
       // converges superlinearly, down to the working precision
       T lo = zero, hi = one, flo = pc.q.b.front(), fhi = pc.q.b.back();
       int side = 0;
+      // The piece's values in O(n) each from degree 16 on (kernel/bernstein_horner.hpp:
+      // the same order of error as de Casteljau's triangle, which it falls back to).
+      const BernsteinHorner<T> piece_value{std::span<const T>(pc.q.b)};
+      // With the O(n) values (degree >= 16; below, the steps are Illinois' as before
+      // issue 21, bit for bit): the first point is where the control polygon crosses
+      // zero (close to the curve once one sign change is left; from the end values
+      // alone the secant crept towards a root near an end by doubling steps, ~8 of
+      // ~16 evaluations at n = 144), and the damping is Anderson-Björck's (below).
+      const bool fast = piece_value.linear();
+      const T x_first = fast ? point_of(control_polygon_zero(pc.q.b, sa, half)) : half;
       bool out_of_time = false;
       for (int it = 0; it < 4 * opt.precision_bits && hi - lo > simple_width; ++it) {
-        // Each step evaluates the piece (O(n^2)); at degree ~100 in MPFR the
+        // Each step evaluates the piece (O(n^2) before issue 21); at degree ~100 in MPFR the
         // up to 4p steps took seconds past the deadline: ask it every step,
         // except below degree 8, where eight steps cost less than the clock
         // read they would each add (issue 21: 5 % of a 3D query in double).
         if ((low_degree ? it % 8 == 0 : true) && deadline_passed()) { out_of_time = true; break; }
         T den = fhi - flo;
-        T x = point_of(T((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
+        T x = it == 0 && fast ? x_first : point_of(T((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
         if (!(x > lo && x < hi)) x = point_of(T(half * (lo + hi)));
-        T fx = pc.q(x);
+        T fx = piece_value(x);
         // The root is proved to be in the piece; where the bound leaves fx's sign
         // uncertain, its location is refined by the value's sign (best effort, as plain T).
         Sign sx = value_sign(fx);
         if (sx == Sign::uncertain) break;
         if (sx == Sign::zero) { lo = x; hi = x; break; }
+        // An end kept twice has its value scaled: Illinois by 1/2; Anderson-Björck
+        // (fast) by m = 1 - f(x)/f(replaced end), 1/2 if that is not in (0, 1):
+        // with Illinois' fixed 1/2 the last steps crawled by halvings.
+        auto damp = [&](const T& f_new, const T& f_old) {
+          if (!fast) return half;
+          T m = one - f_new / f_old;
+          return m > zero && m < one ? m : half;
+        };
         if (sx == sa) {
+          if (side == -1) fhi = damp(fx, flo) * fhi;
           lo = x; flo = fx;
-          if (side == -1) fhi = half * fhi;
           side = -1;
         } else {
+          if (side == 1) flo = damp(fx, fhi) * flo;
           hi = x; fhi = fx;
-          if (side == 1) flo = half * flo;
           side = 1;
         }
       }

@@ -18,6 +18,7 @@
 // undecided, and the reason is kept in `notes`.
 // Requirements on T: scalar_traits<T> with is_exact == false.
 #include "floating/bernstein_roots.hpp"
+#include "kernel/bernstein_horner.hpp"
 #include "number/pow2_scaling.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/basis_build.hpp"
@@ -39,6 +40,9 @@ struct FloatingPolicy {
   Basis basis = Basis::bernstein;
   int bits = 53;
   T like;
+  // Δ in the Hessian form (kernel/cd_disc.hpp, discriminant_of; issue 21): plain double and MPFR. With a
+  // running error bound the classic formula stays (its bounds, and so the certified ladder's escalations, as before).
+  static constexpr bool delta_from_hessian = !has_error_bound_v<T>;
   long max_pieces = 20000;               // root isolation work bound (per polynomial)
   mutable std::string trouble;           // "" or why nothing can be decided (a non-finite value)
   mutable std::vector<std::string> notes;  // why parts were left undecided (work bound, deadline)
@@ -81,9 +85,12 @@ struct FloatingPolicy {
   // With a running error bound (number/running_error.hpp) a cluster is a
   // place where Δ's sign is unknown: there may be a double root (a touch),
   // two close roots or none, so nothing is claimed there.
+  // The value at the root in O(n) (kernel/bernstein_horner.hpp, issue 21: the same order of
+  // error as de Casteljau's); with a running error bound the triangle's smaller bound is kept.
   Sign sign_at(const Bern<T>& q, const Root& r) const {
     if (unknown_inside(r)) return Sign::uncertain;
-    return eccd::sign(q(r.value));
+    if constexpr (has_error_bound_v<T>) return eccd::sign(q(r.value));
+    else return eccd::sign(BernsteinHorner<T>(std::span<const T>(q.b))(r.value));
   }
   Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
   T sample_between(const Root* l, const Root* r) const {
