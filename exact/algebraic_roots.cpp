@@ -444,8 +444,8 @@ bool is_root(const IntPoly& f, const Rational& q) {
 // Z; lc(h) divides lc(z), so h mod q keeps its degree and divides both
 // reductions, whose gcd would then have degree >= 1. So a constant gcd mod q
 // proves z square-free; a non-constant one proves nothing (q may be unlucky),
-// and three primes are tried before the caller falls back to CGAL's
-// square-free factorisation. Arithmetic mod q < 2^62 in unsigned 128-bit products.
+// and the caller falls back to FLINT's square-free factorisation (further
+// primes only when q divides lc(z) or z'). Arithmetic mod q < 2^62 in unsigned 128-bit products.
 bool certainly_square_free(const IntPoly& z) {
   using u64 = unsigned long long;
   using u128 = unsigned __int128;
@@ -480,7 +480,10 @@ bool certainly_square_free(const IntPoly& z) {
       }
       a.swap(b);
     }
-    if (a.size() == 1) return true;  // a non-zero constant
+    // A non-zero constant: square-free. Otherwise z is almost surely not
+    // square-free (q would have to divide its discriminant): FLINT's
+    // factorisation decides at once instead of two more primes (issue 21).
+    return a.size() == 1;
   }
   return false;
 }
