@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <thread>
 #include <string>
 
 using namespace eccd;
@@ -150,4 +151,35 @@ TEST_CASE("FlintQPoly gives the very Poly<Rational> of each formula: random rati
     formulas += both(alg.g);
   }
   CHECK(formulas >= 100);
+}
+
+TEST_CASE("FLINT's square-free factorisation and gcds give the same results from several threads at once", "[exact][flint_poly]") {
+  // eccd animate decides pair-frames on a thread pool; FLINT (Debian's is built with thread-local storage) must
+  // answer each thread as it answers one: paper 002's projection F1 · F2^12 and 2D Δ's, four threads, eight rounds.
+  std::vector<RP> polys;
+  for (const char* f : {"/cases/paper002/example.json", "/cases/paper003/example2.json", "/cases/paper003/example1.json"}) {
+    try {
+      polys.push_back(certificate_algebra(read_scene_file(std::string(ECCD_SOURCE_DIR) + f)).projection);
+    } catch (const std::exception&) {
+    }
+  }
+  REQUIRE(polys.size() >= 2);
+  std::vector<std::vector<std::pair<RP, int>>> ref;
+  std::vector<RP> gref;
+  for (const auto& p : polys) {
+    ref.push_back(square_free_factors(p));
+    gref.push_back(polynomial_gcd(p, derivative_of(p)));
+  }
+  std::vector<int> bad(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 8; ++round)
+        for (std::size_t k = 0; k < polys.size(); ++k) {
+          if (square_free_factors(polys[k]) != ref[k]) ++bad[t];
+          if (polynomial_gcd(polys[k], derivative_of(polys[k])) != gref[k]) ++bad[t];
+        }
+    });
+  for (auto& th : threads) th.join();
+  for (int t = 0; t < 4; ++t) CHECK(bad[t] == 0);
 }
