@@ -1161,9 +1161,9 @@ void register_phases() {
     timed(st, grp + "/1 g = det(λA - B)", [&] { return characteristic_of(to_arithmetic<Rational, 4>(s.p, Rational(1))); },
           [](const auto&) { return json(); });
   });
-  row(grp, "2 projection build", false, Cost::slow, "quartic_discriminant of g (exact)", [grp, gx](benchmark::State& st) {
+  row(grp, "2 projection build", false, Cost::slow, "ExactPolicy::build of quartic_discriminant (FLINT, as the pipeline)", [grp, gx](benchmark::State& st) {
     const auto& g = gx->get();
-    timed(st, grp + "/2 projection build", [&] { return quartic_discriminant(g[4], g[3], g[2], g[1], g[0]); },
+    timed(st, grp + "/2 projection build", [&] { return ExactPolicy().build(g, [](const auto& G) { return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]); }); },
           [](const Poly<Rational>& p) { return json{{"degree", p.degree()}}; });
   });
   row(grp, "3 roots of the projection", false, Cost::slow, "ExactPolicy::roots (real_roots on [0, 1] + refinement)",
@@ -1204,12 +1204,12 @@ void register_phases() {
     return pl;
   });
   row(grp, "4 s(j,i) build (those the touch rule asks for)", false, Cost::slow,
-      "subresultant_evidence(g, j, i), exact, for each distinct (j, i) asked at the roots", [grp, gx, plan](benchmark::State& st) {
+      "ExactPolicy::build of subresultant_evidence(g, j, i) (FLINT, as the pipeline), for each distinct (j, i) asked at the roots", [grp, gx, plan](benchmark::State& st) {
         const auto& g = gx->get();
         const Plan& pl = plan->get();
         timed(st, grp + "/4 s(j,i) build (those the touch rule asks for)", [&] {
           std::vector<Poly<Rational>> out;
-          for (auto [j, i] : pl.needed) out.push_back(subresultant_evidence(g, j, i));
+          for (auto [j, i] : pl.needed) out.push_back(ExactPolicy().build(g, [j, i](const auto& G) { return subresultant_evidence(G, j, i); }));
           return out;
         }, [&](const auto&) {
           json j = json::array();

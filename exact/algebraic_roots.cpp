@@ -1,8 +1,10 @@
 // Real roots of rational polynomials behind exact/algebraic_roots.hpp (the
 // only CGAL translation unit of the workbench: CGAL is header heavy).
 //
-// CGAL's Algebraic_kernel_d_1 over CORE::BigInt does the square-free
-// factorisation and the isolation (solve_1) and the polynomial gcds. CORE is
+// CGAL's Algebraic_kernel_d_1 over CORE::BigInt does the isolation of every
+// real root (solve_1) when the range is not [0, 1]; the square-free
+// factorisation and the polynomial gcds are FLINT's (exact/flint_poly.hpp,
+// issue 21: CGAL's modular gcd was a fifth of the exact pipelines). CORE is
 // header-only in CGAL 5.5 (Debian libcgal-dev) and enabled by CGAL itself when
 // GMP and MPFR are there (CGAL_USE_CORE); nothing else to link. Everything
 // after isolation is done here on the isolating intervals, in integer
@@ -25,6 +27,7 @@
 #include "exact/algebraic_roots.hpp"
 #include "number/simplest_rational.hpp"
 #include "exact/integer_polynomial.hpp"
+#include "exact/flint_poly.hpp"
 #include "kernel/budget.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
@@ -64,7 +67,9 @@ void check_deadline_now(const char* where) {
 }
 
 // Largest coefficient (bits) of a polynomial handed to CGAL's modular gcd:
-// well inside what its 2000 primes (~52 000 bits) can reconstruct.
+// well inside what its 2000 primes (~52 000 bits) can reconstruct. FLINT's
+// gcds (exact/flint_poly.hpp) have no such limit; the same check guards them,
+// so what is refused did not change with them (issue 21).
 constexpr std::size_t kMaxCgalBits = 20000;
 
 // std::cerr while CGAL runs: keeps what CGAL prints (never shown) and stops
@@ -182,6 +187,14 @@ Poly<Rational> poly_from_ak(const AKPoly& p) {
   if (z.back() < 0) c = -c;
   Poly<Rational> out;
   for (const auto& x : z) out.c.push_back(Rational(mpz_class(x / c)));
+  out.trim();
+  return out;
+}
+
+// An integer polynomial (already primitive, positive leading coefficient) as Poly<Rational>.
+Poly<Rational> int_poly_to_rational(const IntPoly& z) {
+  Poly<Rational> out;
+  for (const auto& x : z) out.c.push_back(Rational(x));
   out.trim();
   return out;
 }
@@ -431,8 +444,8 @@ bool is_root(const IntPoly& f, const Rational& q) {
 // Z; lc(h) divides lc(z), so h mod q keeps its degree and divides both
 // reductions, whose gcd would then have degree >= 1. So a constant gcd mod q
 // proves z square-free; a non-constant one proves nothing (q may be unlucky),
-// and three primes are tried before the caller falls back to CGAL's
-// square-free factorisation. Arithmetic mod q < 2^62 in unsigned 128-bit products.
+// and the caller falls back to FLINT's square-free factorisation (further
+// primes only when q divides lc(z) or z'). Arithmetic mod q < 2^62 in unsigned 128-bit products.
 bool certainly_square_free(const IntPoly& z) {
   using u64 = unsigned long long;
   using u128 = unsigned __int128;
@@ -467,7 +480,10 @@ bool certainly_square_free(const IntPoly& z) {
       }
       a.swap(b);
     }
-    if (a.size() == 1) return true;  // a non-zero constant
+    // A non-zero constant: square-free. Otherwise z is almost surely not
+    // square-free (q would have to divide its discriminant): FLINT's
+    // factorisation decides at once instead of two more primes (issue 21).
+    return a.size() == 1;
   }
   return false;
 }
@@ -556,7 +572,7 @@ int constant_sign(const IntPoly& Q, const Dyadic& d) {
 
 struct AlgebraicRootImpl {
   IntPoly f;   // the square-free factor of p that the root is a simple root of (primitive, integer)
-  AKPoly fak;  // the same, as CGAL's polynomial (for gcds)
+  AKPoly fak;  // the same, as CGAL's polynomial (only on the general path: to tell CGAL's factors apart)
 };
 
 namespace {
@@ -704,7 +720,7 @@ void unit_roots_of_square_free(IntPoly z, int m, int bits, std::vector<Work>& al
   }
   if (at0) rational_root(Rational(0));
   if (z.size() >= 2) {
-    auto impl = std::make_shared<AlgebraicRootImpl>(AlgebraicRootImpl{z, to_ak(z)});
+    auto impl = std::make_shared<AlgebraicRootImpl>(AlgebraicRootImpl{z, AKPoly()});
     std::vector<std::pair<Rational, Rational>> brackets;
     std::vector<bool> exact;
     zero_one_descartes(z, 0, 0, brackets, exact);
@@ -727,7 +743,7 @@ void unit_roots_of_square_free(IntPoly z, int m, int bits, std::vector<Work>& al
 // below isolates every real root of p). When p's primitive integer multiple z
 // is certainly square-free (certainly_square_free, a modular certificate: the
 // usual case in 2D), every root is simple and no factorisation is needed;
-// otherwise CGAL's square-free factorisation z = c · Π F_i^m_i (pairwise
+// otherwise FLINT's square-free factorisation z = c · Π F_i^m_i (pairwise
 // coprime, so the roots of different factors are distinct) and each F_i's
 // roots in [0, 1] with multiplicity m_i, merged in increasing order: brackets
 // are sorted by their left ends and overlapping neighbours (of distinct
@@ -737,10 +753,7 @@ std::vector<AlgebraicRoot> unit_interval_roots(const Poly<Rational>& p, int bits
   CgalGuard::check_size(z, "exact root isolation");
   std::vector<Work> all;
   if (certainly_square_free(z)) return unit_roots_of_square_free(z, 1, bits, all), finish_roots(all, bits);
-  std::vector<std::pair<AKPoly, int>> f;
-  with_cgal([&] { PT::Square_free_factorize_up_to_constant_factor()(to_ak(z), std::back_inserter(f)); return 0; });
-  for (auto& [q, m] : f)
-    if (PT::Degree()(q) > 0) unit_roots_of_square_free(from_ak(q), m, bits, all);
+  for (auto& [q, m] : flint_square_free_factors(z)) unit_roots_of_square_free(std::move(q), m, bits, all);
   return finish_roots(all, bits, /*reorder: roots of different factors interleave*/ true);
 }
 
@@ -825,9 +838,8 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   // bracket is simple, so it has it iff it changes sign over the bracket.
   const IntPoly& f = r.impl->f;
   CgalGuard::check_size(Q, "sign at an algebraic number");
-  AKPoly g = with_cgal([&] { return PT::Gcd_up_to_constant_factor()(to_ak(Q), r.impl->fak); });
-  if (PT::Degree()(g) > 0) {
-    IntPoly gi = from_ak(g);
+  IntPoly gi = flint_gcd(Q, f);
+  if (gi.size() > 1) {
     int glo = sign_at_rational(gi, r.lo), ghi = sign_at_rational(gi, r.hi);
     if (glo == 0 || ghi == 0) throw std::invalid_argument("sign_at: the root's factor vanishes at an end of its bracket");
     if (glo != ghi) return Sign::zero;
@@ -846,6 +858,22 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
 
 std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Rational>& p) {
   if (p.is_zero()) throw std::invalid_argument("square_free_factors: the zero polynomial");
+  IntPoly z = integer_multiple(p);
+  CgalGuard::check_size(z, "square-free factorisation");
+  std::vector<std::pair<Poly<Rational>, int>> out;
+  for (auto& [q, m] : flint_square_free_factors(z)) out.push_back({int_poly_to_rational(q), m});
+  return out;
+}
+
+Poly<Rational> polynomial_gcd(const Poly<Rational>& p, const Poly<Rational>& q) {
+  IntPoly zp = integer_multiple(p), zq = integer_multiple(q);
+  CgalGuard::check_size(zp, "polynomial gcd");
+  CgalGuard::check_size(zq, "polynomial gcd");
+  return int_poly_to_rational(flint_gcd(zp, zq));
+}
+
+std::vector<std::pair<Poly<Rational>, int>> square_free_factors_cgal(const Poly<Rational>& p) {
+  if (p.is_zero()) throw std::invalid_argument("square_free_factors: the zero polynomial");
   std::vector<std::pair<AKPoly, int>> f;
   IntPoly z = integer_multiple(p);
   CgalGuard::check_size(z, "square-free factorisation");
@@ -857,7 +885,7 @@ std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Ratio
   return out;
 }
 
-Poly<Rational> polynomial_gcd(const Poly<Rational>& p, const Poly<Rational>& q) {
+Poly<Rational> polynomial_gcd_cgal(const Poly<Rational>& p, const Poly<Rational>& q) {
   IntPoly zp = integer_multiple(p), zq = integer_multiple(q);
   CgalGuard::check_size(zp, "polynomial gcd");
   CgalGuard::check_size(zq, "polynomial gcd");

@@ -12,6 +12,7 @@
 // Guarantee: every instant of the answer carries a bracket [lo, hi] that
 // contains it and no other root of Δ (0 and 1 and rational roots are exact).
 #include "exact/algebraic_roots.hpp"
+#include "exact/flint_poly.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/pipeline_policy.hpp"
@@ -34,9 +35,15 @@ struct ExactPolicy {
   std::vector<Isolation>* record = nullptr;
 
   // The formula in the power basis, kept in power form: nothing is rounded, so the basis does not matter
-  // (kernel/basis_build.hpp).
+  // (kernel/basis_build.hpp). Computed in FLINT's rational polynomials (exact/flint_poly.hpp, issue 21):
+  // the very polynomial the formula gives in Poly<Rational>, faster.
   template <class F>
-  Poly<Rational> build(const std::vector<Poly<Rational>>& g, F formula) const { return formula(g); }
+  Poly<Rational> build(const std::vector<Poly<Rational>>& g, F formula) const {
+    std::vector<FlintQPoly> G;
+    G.reserve(g.size());
+    for (const auto& p : g) G.emplace_back(p);
+    return Poly<Rational>(formula(G).to_poly());
+  }
   bool identically_zero(const Poly<Rational>& q) const { return q.is_zero(); }
 
   std::vector<Root> roots(const Poly<Rational>& q, bool /*first_only: all roots are isolated anyway*/) const {

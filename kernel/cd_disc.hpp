@@ -26,6 +26,7 @@
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/collision_timeline.hpp"
 #include "kernel/contact_status.hpp"
+#include "kernel/contact_point_integer.hpp"
 #include "kernel/pipeline_policy.hpp"
 #include "kernel/pipeline_result.hpp"
 #include "kernel/prepared_scene.hpp"
@@ -259,7 +260,8 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
 
   assemble_answer(seq, ans, [&](std::size_t k) {
     const T at = node_root[k] ? pol.value(*node_root[k]) : (k == 0 ? zero : one);
-    ans.contact_points.push_back(contact_point(A, B, g, at));
+    if constexpr (std::is_same_v<T, mpq_class>) ans.contact_points.push_back(contact_point_integer(A, B, g, at));  // the same point over the integers (issue 21)
+    else ans.contact_points.push_back(contact_point(A, B, g, at));
   });
   if (variant == Variant::all_contacts) ans.intervals.clear();
   return finish();

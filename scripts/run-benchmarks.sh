@@ -14,7 +14,7 @@ started=$(python3 -c 'import time; print(time.time())' 2>/dev/null || date +%s)
 # The main build's packages plus the benchmark's own: Google Benchmark, MPSolve,
 # and perf (linux-perf) for the profiles of missed targets (optional: the
 # report says so when it is missing or not allowed to run).
-PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 libbenchmark-dev libmps-dev libfcl-dev"
+PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libflint-dev libeigen3-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 libbenchmark-dev libmps-dev libfcl-dev"
 OPTIONAL="linux-perf"
 missing=""
 for p in $PACKAGES; do
