@@ -1094,8 +1094,8 @@ void register_phases() {
                                                 [] { return FloatingPolicy<double>(Basis::bernstein, 53, 1.0); },
                                                 [] { return 1.0; });
   group("phases-2d-deg6-exact-v0", "Where the time goes: 2D degree 6, full answer, exact",
-        "The steps of cd_disc with ExactPolicy timed one by one on the same inputs (roots: CGAL isolation and "
-        "refinement; signs: exact signs at algebraic numbers).",
+        "The steps of cd_disc with ExactPolicy timed one by one on the same inputs (roots: the square-free "
+        "part by FLINT, CGAL's isolation and refinement; signs: exact signs at algebraic numbers).",
         "issue 21 target for the total: at most 5 ms (issue 6: 50 ms)");
   add_phases_2d<Rational, ExactPolicy>("phases-2d-deg6-exact-v0", &s2d_deg6, Variant::answer, [] { return ExactPolicy(); },
                                        [] { return Rational(1); });
@@ -1142,8 +1142,8 @@ void register_phases() {
   // 3D paper 002, exact projection.
   grp = "phases-paper002-exact";
   group(grp, "Where the time goes: paper 002's example, exact projection",
-        "ccd_projection with ExactPolicy split: the exact g_k, the discriminant of the quartic (degree 216), its "
-        "isolation on [0, 1] (CGAL), and the rest (exact Sturm counts in the cells, subresultant signs at the roots).",
+        "ccd_projection with ExactPolicy split: the exact g_k, the discriminant of the quartic (degree 216, built in "
+        "FLINT), its isolation on [0, 1] (square-free factors by FLINT, isolation by CGAL), and the rest (exact Sturm counts in the cells, subresultant signs at the roots).",
         "issue 21 target for the total: at most 25 ms (issue 6: 1 s)");
   auto gx = std::make_shared<Lazy<std::vector<Poly<Rational>>>>([] {
     return characteristic_of(to_arithmetic<Rational, 4>(s3d_paper002.get().p, Rational(1)));

@@ -565,7 +565,7 @@ def machine_info(root):
     cache = read(os.path.join(root, "build-bench", "CMakeCache.txt"))
     m = re.search(r"^CMAKE_CXX_FLAGS_RELEASE:STRING=(.*)$", cache, re.M)
     info["release_flags"] = m.group(1) if m else ""
-    for pkg in ("libcgal-dev", "libbenchmark-dev", "libmps-dev", "libgmp-dev", "libmpfr-dev", "libmpfi-dev"):
+    for pkg in ("libcgal-dev", "libbenchmark-dev", "libmps-dev", "libgmp-dev", "libmpfr-dev", "libmpfi-dev", "libflint-dev"):
         v = run(["dpkg-query", "-W", "-f=${Version}", pkg]).stdout.strip() if shutil.which("dpkg-query") else ""
         info["pkg " + pkg] = v or "?"
     return info
@@ -833,7 +833,7 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
     w(f"| compiler | {summ.get('compiler', '?')} |")
     w(f"| build | CMake build type {summ.get('build_type', '?')} (flags `{info.get('release_flags', '')}`), directory build-bench |")
     w(f"| libraries | GMP {summ.get('gmp', '?')}, MPFR {summ.get('mpfr', '?')}, CGAL (libcgal-dev) {info['pkg libcgal-dev']}, "
-      f"MPFI (libmpfi-dev) {info['pkg libmpfi-dev']}, {summ.get('mpsolve', 'MPSolve ?')} (libmps-dev {info['pkg libmps-dev']}), "
+      f"MPFI (libmpfi-dev) {info['pkg libmpfi-dev']}, FLINT (libflint-dev) {info['pkg libflint-dev']}, {summ.get('mpsolve', 'MPSolve ?')} (libmps-dev {info['pkg libmps-dev']}), "
       f"Google Benchmark (libbenchmark-dev) {info['pkg libbenchmark-dev']} |")
     w(f"| load average | {info['load_before']} before the benchmark, {info['load_after']} after it, "
       f"{info.get('load_after_rerun', '?')} after the re-run of the targets (1, 5, 15 min) |")
