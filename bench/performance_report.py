@@ -40,7 +40,7 @@ import time
 # target is missed), steps (rows of that group to show), also (related rows),
 # per (the row's median is for several items: divide by this number, or by the
 # result field of that name, e.g. "frames"; the verdict is on the quotient).
-HAND = "Call-graph profile by hand (`perf record --call-graph dwarf` of the row alone, 2026-11-26, revision a90e296, before the other issue-21 branches were merged; inclusive shares): "
+HAND = "Call-graph profile by hand (`perf record --call-graph dwarf` of the row alone, 2026-11-26, revision 8b13203, after this stop's issue-21 branches were merged; inclusive shares): "
 
 TARGETS = [
     dict(
@@ -111,8 +111,10 @@ TARGETS = [
         anchor="issue 21: at most 150 µs (3x the double limit); FCL's continuous test (1000 samples, no certificate) 0.39 ms",
         phases="ccd3d-deg1-translation",
         steps=["ccd3d-deg1-translation/certified ladder only (run_certified)"],
-        note=HAND + "the contact points (`add_contact_points_3d` → `contact_geometry<Mpfr>`, `small_real_roots<Mpfr>`) "
-             "53 %, the interval Bézier proof (`run_certified` → `prove_bezier`) 32 %, `prepare_pair` 11 %.",
+        note=HAND + "the interval Bézier proof (`run_certified` → `prove_bezier`) 39 % (`Engine::prove_end` 13 %, "
+             "`Engine::strip` 9 %, `Engine::witness` 8 %), the contact points (`add_contact_points_3d` → "
+             "`contact_geometry<Mpfr>` 29 %, of it the Newton roots `small_real_roots<Mpfr>` 18 %), the exact "
+             "`quadric_at` over rationals 7 %, `prepare_pair` 4 %.",
         also=["ccd3d-deg1-translation/certified ladder only (run_certified)"],
     ),
     dict(
@@ -123,9 +125,11 @@ TARGETS = [
         anchor="issue 21: at most 0.3 ms per frame; 001 section 5: 3.4 ms per frame (3 GHz Pentium IV, double)",
         phases=None,
         also=["animate-boxers/double without planes, 10 frames"],
-        note=HAND + "the continuous test `eccd::solve` 71 % (BezierZeroSet::run 44 %, characteristic_bernstein 20 %), "
-             "building the next kept plane (`separate_at` in double) 17 %; the row 'double without planes' in the "
-             "animation section shows what the kept planes save.",
+        note=HAND + "the continuous test `eccd::solve` 71 % (BezierZeroSet::run 47 %, of it F(·, t0) evaluated by "
+             "de Casteljau in `Bounded<double>` (`bernstein_value` 32 %: degree below 16, where the O(n) evaluation "
+             "of kernel/bernstein_horner.hpp is not used); characteristic_bernstein 17 %), building the next kept "
+             "plane (`separate_at` in double) 20 %; the row 'double without planes' in the animation section shows "
+             "what the kept planes save.",
     ),
     dict(
         name="001-style animation frame (the boxers, 576 pairs, after the bounding spheres and the kept planes), certified, per frame",
@@ -134,9 +138,10 @@ TARGETS = [
         limit_ns=1e6,
         anchor="issue 21: at most 1 ms per frame in certified mode; 001 section 5: 3.4 ms per frame in double (no certificate)",
         phases=None,
-        note=HAND + "building the next kept plane exactly (`separate_at` → `separate_exact`) 63 %, most of it the exact "
-             "static test's characteristic polynomial (`characteristic_of` over rationals, `ring_det` 34 %); the "
-             "continuous test (`eccd::solve`, certified: `prove_bezier` 12 %, `prepare_pair` 12 %) 21 %.",
+        note=HAND + "the certified continuous test `eccd::solve` 64 % (`prove_bezier` 42 %, of it the interval net "
+             "`characteristic_bernstein<Interval>` 21 %; `prepare_pair` 13 %; contact points 9 %), building the next kept "
+             "plane (`separate_at`, now the double construction proved by its error-bounded checks) 20 %. "
+             "Before this stop the exact plane (`separate_exact`) was 63 %.",
         also=[],
     ),
 ]
@@ -164,9 +169,11 @@ RATIO_TARGETS = [
          key="ccd3d-paper002/certified", base="ccd3d-paper002/double bezier", limit_ratio=3.0,
          anchor="issue 21: certified at most 3x double on paper 002's example (both from the prepared pair: "
                 "run_certified against characteristic_bernstein + ccd_bezier)",
-         note=HAND + "the interval Bézier proof (`prove_bezier`) 98 %: `Engine::strip` 46 % and `Engine::prove_end` 43 %, "
-              "whose time is the subdivision of F in intervals (`split_u` 28 %, `split_t` 28 %, `de_casteljau_in_place` "
-              "20 %, `keep_left` / `keep_right` 15 % each, self) and the Krawczyk steps (21 %)."),
+         note=HAND + "the interval Bézier proof (`prove_bezier`) 93 %: `Engine::prove_end` 55 % and `Engine::strip` 30 %, "
+              "whose time is the subdivision of F in t (`split_t` 37 %: `keep_left` / `keep_right` 19 % each, self) "
+              "and the Krawczyk steps (28 %, of it the degree-36 net evaluated by de Casteljau in intervals 26 %). "
+              "The double Bézier run it is measured against became 1.3x faster this stop (cross-product signs "
+              "instead of atan2), so the ratio grew although the proof did not get slower."),
     dict(name="Certified static test from two poses, 2D, against the double one",
          key="static-certified-2d/certified static_status (API, two poses)",
          base="static-certified-2d/double static_status (API, two poses)", limit_ratio=1.5,
