@@ -33,6 +33,23 @@ RP derivative_of(const RP& p) {
   return d;
 }
 
+// The exact algebra of every scene of cases/ with rational motions (animations, cycloidal motions and other files
+// that are not such scenes are skipped), handed to f with the file's path.
+template <class F>
+void for_each_case_algebra(F&& f) {
+  namespace fs = std::filesystem;
+  for (const auto& e : fs::recursive_directory_iterator(std::string(ECCD_SOURCE_DIR) + "/cases")) {
+    if (!e.is_regular_file() || e.path().extension() != ".json") continue;
+    CertificateAlgebra alg;
+    try {
+      alg = certificate_algebra(read_scene_file(e.path().string()));
+    } catch (const std::exception&) {
+      continue;
+    }
+    f(e.path().string(), alg);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("flint_square_free_factors and flint_gcd on a product with known factors", "[exact][flint_poly]") {
@@ -58,18 +75,10 @@ TEST_CASE("flint_square_free_factors and flint_gcd on a product with known facto
 }
 
 TEST_CASE("FLINT's square-free factorisation and gcds equal CGAL's on every projection polynomial of cases/", "[exact][flint_poly]") {
-  namespace fs = std::filesystem;
   int compared = 0, not_square_free = 0;
-  for (const auto& e : fs::recursive_directory_iterator(std::string(ECCD_SOURCE_DIR) + "/cases")) {
-    if (!e.is_regular_file() || e.path().extension() != ".json") continue;
-    CertificateAlgebra alg;
-    try {
-      alg = certificate_algebra(read_scene_file(e.path().string()));
-    } catch (const std::exception&) {
-      continue;  // not a scene with rational motions (an animation, a cycloidal motion, ...)
-    }
-    if (alg.projection.is_zero() || alg.projection.degree() < 1) continue;
-    INFO(e.path().string() << ": " << alg.projection_name << " of degree " << alg.projection.degree());
+  for_each_case_algebra([&](const std::string& path, const CertificateAlgebra& alg) {
+    if (alg.projection.is_zero() || alg.projection.degree() < 1) return;
+    INFO(path << ": " << alg.projection_name << " of degree " << alg.projection.degree());
     const auto F = square_free_factors(alg.projection);
     CHECK(F == square_free_factors_cgal(alg.projection));
     if (F.size() > 1 || (F.size() == 1 && F[0].second > 1)) ++not_square_free;
@@ -82,7 +91,7 @@ TEST_CASE("FLINT's square-free factorisation and gcds equal CGAL's on every proj
       CHECK(polynomial_gcd(alg.projection, q) == polynomial_gcd_cgal(alg.projection, q));
     }
     ++compared;
-  }
+  });
   // cases/ has 2D and 3D scenes, paper 002's projection F1 · F2^12 among them
   CHECK(compared >= 100);
   CHECK(not_square_free >= 1);
@@ -136,20 +145,12 @@ TEST_CASE("FlintQPoly gives the very Poly<Rational> of each formula: random rati
     }
     formulas += both(g);
   }
-  namespace fs = std::filesystem;
   int scenes = 0;
-  for (const auto& e : fs::recursive_directory_iterator(std::string(ECCD_SOURCE_DIR) + "/cases")) {
-    if (!e.is_regular_file() || e.path().extension() != ".json") continue;
-    CertificateAlgebra alg;
-    try {
-      alg = certificate_algebra(read_scene_file(e.path().string()));
-    } catch (const std::exception&) {
-      continue;
-    }
-    if (++scenes % 5) continue;  // every fifth scene (the 3D s(j,i) in Poly<Rational> are slow)
-    INFO(e.path().string());
+  for_each_case_algebra([&](const std::string& path, const CertificateAlgebra& alg) {
+    if (++scenes % 5) return;  // every fifth scene (the 3D s(j,i) in Poly<Rational> are slow)
+    INFO(path);
     formulas += both(alg.g);
-  }
+  });
   CHECK(formulas >= 100);
 }
 
