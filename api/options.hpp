@@ -22,6 +22,16 @@ namespace eccd {
 // 3D floating methods (001 section 4 Bézier zero-set; the projection in
 // floating point; the sampled baselines of 002 IV on a grid of N instants).
 enum class Method { bezier, projection, sampling, marching };
+
+// The two faces of a floating run (design.md "two faces"): `none` runs the
+// published algorithm in plain T (double or MPFR), nothing added, so its
+// errors are the algorithm's; `bound` runs the same templates in Bounded<T>
+// (number/running_error.hpp), where a sign the error bound cannot decide
+// makes that place "undecided". Exact and certified runs have no face.
+enum class Guard { none, bound };
+const char* to_string(Guard g);
+// "none" / "bound" -> Guard; std::invalid_argument ("--guard TEXT: expected none or bound") otherwise.
+Guard parse_guard(const std::string& text);
 const char* to_string(Method m);
 // "bezier", "projection", "sampling:N", "marching:N" -> method and N (0 for the first two).
 // std::invalid_argument ("--method TEXT: expected ...") otherwise.
@@ -34,6 +44,7 @@ struct SolveOptions {
   Method method = Method::bezier;  // 3D floating only
   int grid = 0;                    // sampling / marching: N instants (>= 1)
   bool first_contact = false;      // 3D: stop after the first collision interval (001 section 4)
+  Guard guard = Guard::bound;      // floating only: as published (none) or guarded (bound)
   // Floating only: start from the scene's numbers rounded to the arithmetic
   // (default, what a user's program does) or from the exactly prepared scene.
   InputMode input = InputMode::rounded;

@@ -53,6 +53,14 @@ std::pair<Method, int> parse_method(const std::string& text) {
   throw std::invalid_argument("--method " + text + ": expected bezier, projection, sampling:N or marching:N");
 }
 
+const char* to_string(Guard g) { return g == Guard::none ? "none" : "bound"; }
+
+Guard parse_guard(const std::string& text) {
+  if (text == "none") return Guard::none;
+  if (text == "bound") return Guard::bound;
+  throw std::invalid_argument("--guard " + text + ": expected none (the algorithm as published) or bound (guarded)");
+}
+
 std::string SolveOptions::method_name() const {
   if (method == Method::sampling || method == Method::marching) return std::string(to_string(method)) + ":" + std::to_string(grid);
   return to_string(method);
