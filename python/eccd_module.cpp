@@ -333,8 +333,10 @@ std::array<std::array<double, N>, N> matrix_of(const py::handle& h, const char* 
 }
 
 // Batch input: (n, D) semi-axes and (n, D+1, D+1) poses, read in place.
+// The shapes go into `out`, a buffer kept from call to call (resized, never shrunk): a fresh vector of N shapes
+// would cost its pages' first touch on every call, about as much as the static tests themselves.
 template <class Shape, std::size_t D>
-std::vector<Shape> shapes_of(const Array& axes, const Array& poses, const char* which, py::ssize_t& n) {
+void shapes_of(const Array& axes, const Array& poses, const char* which, py::ssize_t& n, std::vector<Shape>& out) {
   constexpr py::ssize_t P = py::ssize_t(D) + 1;
   const std::string a = std::string("semi_axes_") + which, p = std::string("poses_") + which;
   if (axes.ndim() != 2 || axes.shape(1) != py::ssize_t(D))
@@ -347,14 +349,13 @@ std::vector<Shape> shapes_of(const Array& axes, const Array& poses, const char* 
     throw std::invalid_argument("the two bodies' arrays have different lengths (" + std::to_string(n) + " and " +
                                 std::to_string(axes.shape(0)) + ")");
   n = axes.shape(0);
-  std::vector<Shape> out(static_cast<std::size_t>(n));
+  if (out.size() < std::size_t(n)) out.resize(std::size_t(n));
   const double* ax = axes.data();
   const double* po = poses.data();
   for (py::ssize_t i = 0; i < n; ++i) {
     std::memcpy(out[std::size_t(i)].semi_axes.data(), ax + i * py::ssize_t(D), sizeof(double) * D);
     std::memcpy(out[std::size_t(i)].pose.data(), po + i * P * P, sizeof(double) * std::size_t(P * P));
   }
-  return out;
 }
 
 // ---------------------------------------------------------------------------
@@ -641,23 +642,31 @@ PYBIND11_MODULE(_eccd, m) {
         py::array_t<std::int8_t> out;
         const int dim = semi_axes_a.ndim() == 2 ? int(semi_axes_a.shape(1)) : 0;
         if (dim == 3) {
-          std::vector<eccd::Ellipsoid> a = shapes_of<eccd::Ellipsoid, 3>(semi_axes_a, poses_a, "a", n);
-          std::vector<eccd::Ellipsoid> b = shapes_of<eccd::Ellipsoid, 3>(semi_axes_b, poses_b, "b", n);
-          std::vector<eccd::Status> st(static_cast<std::size_t>(n));
+          thread_local std::vector<eccd::Ellipsoid> a, b;
+          thread_local std::vector<eccd::Status> st;
+          shapes_of<eccd::Ellipsoid, 3>(semi_axes_a, poses_a, "a", n, a);
+          shapes_of<eccd::Ellipsoid, 3>(semi_axes_b, poses_b, "b", n, b);
+          if (st.size() < std::size_t(n)) st.resize(std::size_t(n));
           {
             py::gil_scoped_release unlocked;
-            eccd::static_status_batch(a, b, st, ar);
+            const std::size_t k = std::size_t(n);
+            eccd::static_status_batch(std::span<const eccd::Ellipsoid>(a.data(), k), std::span<const eccd::Ellipsoid>(b.data(), k),
+                                      std::span<eccd::Status>(st.data(), k), ar);
           }
           out = py::array_t<std::int8_t>(n);
           std::int8_t* o = out.mutable_data();
           for (py::ssize_t i = 0; i < n; ++i) o[i] = std::int8_t(st[std::size_t(i)]);
         } else if (dim == 2) {
-          std::vector<eccd::Ellipse> a = shapes_of<eccd::Ellipse, 2>(semi_axes_a, poses_a, "a", n);
-          std::vector<eccd::Ellipse> b = shapes_of<eccd::Ellipse, 2>(semi_axes_b, poses_b, "b", n);
-          std::vector<eccd::Status> st(static_cast<std::size_t>(n));
+          thread_local std::vector<eccd::Ellipse> a, b;
+          thread_local std::vector<eccd::Status> st;
+          shapes_of<eccd::Ellipse, 2>(semi_axes_a, poses_a, "a", n, a);
+          shapes_of<eccd::Ellipse, 2>(semi_axes_b, poses_b, "b", n, b);
+          if (st.size() < std::size_t(n)) st.resize(std::size_t(n));
           {
             py::gil_scoped_release unlocked;
-            eccd::static_status_batch(a, b, st, ar);
+            const std::size_t k = std::size_t(n);
+            eccd::static_status_batch(std::span<const eccd::Ellipse>(a.data(), k), std::span<const eccd::Ellipse>(b.data(), k),
+                                      std::span<eccd::Status>(st.data(), k), ar);
           }
           out = py::array_t<std::int8_t>(n);
           std::int8_t* o = out.mutable_data();

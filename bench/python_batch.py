@@ -1,0 +1,55 @@
+"""Benchmark row (not a test): eccd.static_status_batch through Python, per pair.
+
+N random pairs of ellipsoids (3D) and ellipses (2D) at random rigid poses, as
+numpy arrays of shape (N, 3) / (N, 4, 4) (2D (N, 2) / (N, 3, 3)); the median of
+REPEAT calls, divided by N, printed in nanoseconds per pair, beside the same
+pairs one call at a time through eccd.static_status (numpy poses), for scale.
+    PYTHONPATH=build/python python3 bench/python_batch.py [N] [REPEAT]
+"""
+import statistics
+import sys
+import time
+
+import numpy as np
+
+import eccd
+
+
+def pairs(n, dim, rng):
+    def poses():
+        q, _ = np.linalg.qr(rng.normal(size=(n, dim, dim)))
+        p = np.zeros((n, dim + 1, dim + 1))
+        p[:, :dim, :dim] = q
+        p[:, :dim, dim] = rng.uniform(-3, 3, (n, dim))
+        p[:, dim, dim] = 1
+        return p
+    return rng.uniform(0.5, 2, (n, dim)), poses(), rng.uniform(0.5, 2, (n, dim)), poses()
+
+
+def median_seconds(f, repeat):
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        f()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def main():
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 100_000
+    repeat = int(sys.argv[2]) if len(sys.argv) > 2 else 15
+    rng = np.random.default_rng(1)
+    print(f"eccd {eccd.__version__}: static_status_batch, N = {n}, median of {repeat} calls")
+    for dim in (3, 2):
+        aa, pa, ab, pb = pairs(n, dim, rng)
+        codes = eccd.static_status_batch(aa, pa, ab, pb)
+        counts = {eccd.status_of_code(c).value: int((codes == c).sum()) for c in np.unique(codes)}
+        batch = median_seconds(lambda: eccd.static_status_batch(aa, pa, ab, pb), repeat)
+        make = eccd.Ellipsoid if dim == 3 else eccd.Ellipse
+        m = min(n, 2000)
+        single = median_seconds(lambda: [eccd.static_status(make(aa[i], pa[i]), make(ab[i], pb[i])) for i in range(m)], 3)
+        print(f"  {dim}D: batch {batch / n * 1e9:8.1f} ns per pair   one call per pair {single / m * 1e9:8.0f} ns per pair   {counts}")
+
+
+if __name__ == "__main__":
+    main()
