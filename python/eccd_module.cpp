@@ -23,6 +23,7 @@
 #include "eccd/eccd.hpp"
 #include "api/animate.hpp"          // eccd.animate (issue 17 point 4)
 #include "api/separate_json.hpp"    // eccd.separate's dict: the same builder as `eccd separate --json`
+#include "compare/fcl_engine.hpp"   // eccd.fcl: FCL as a peer engine, as `eccd fcl` runs it
 #include "io/animation_reader.hpp"
 #include "io/certificate_result.hpp"
 #include "io/pose_import.hpp"
@@ -792,6 +793,21 @@ PYBIND11_MODULE(_eccd, m) {
             for (const auto& b : a.keyframes.bodies) out.append(b.name);
             return out;
           }, "the bodies' names")
+      .def("pair_frame_scene", [](const PyAnimation& a, const std::string& body_a, const std::string& body_b, std::size_t frame) {
+            const eccd::Animation anim = eccd::animation_from_text(a.json.dump(), a.label);
+            auto index = [&](const std::string& name) {
+              for (std::size_t i = 0; i < anim.bodies.size(); ++i)
+                if (anim.bodies[i].name == name) return i;
+              throw std::invalid_argument("pair_frame_scene: no body named '" + name + "'");
+            };
+            const std::size_t i = index(body_a), j = index(body_b);
+            if (i == j) throw std::invalid_argument("pair_frame_scene: two different bodies are needed");
+            if (frame >= anim.frames())
+              throw std::invalid_argument("pair_frame_scene: frame=" + std::to_string(frame) + ": the animation has frames 0 to " + std::to_string(anim.frames() - 1));
+            return eccd::pair_frame_scene(anim, i, j, frame);
+          }, py::arg("body_a"), py::arg("body_b"), py::arg("frame"),
+          "The scene of two bodies in frame k ([t_k, t_k+1] as local time 0..1): what eccd.animate solves for that "
+          "pair-frame (api/animate.hpp pair_frame_scene); for eccd.solve, eccd.fcl, eccd.judge")
       .def("to_json", [](const PyAnimation& a) { return eccd::animation_text(a.json); },
            "The animation file's text (format ellipse-ccd-animation/1), as `eccd import-poses` writes it")
       .def("to_dict", [](const PyAnimation& a) { return json_loads(a.json.dump()); })
@@ -799,6 +815,24 @@ PYBIND11_MODULE(_eccd, m) {
         return "Animation(" + py::repr(py::str(a.keyframes.name)).cast<std::string>() + ", dim=" + std::to_string(a.keyframes.dim) +
                ", bodies=" + std::to_string(a.keyframes.bodies.size()) + ", times=" + std::to_string(a.keyframes.times.size()) + ")";
       });
+
+  m.def("fcl", [](const py::object& scene_arg, int samples, int ccd, double gjk_tolerance) {
+        const eccd::Scene scene = scene_of(scene_arg, "fcl");
+        const eccd::FclAvailability fa = eccd::fcl_availability();
+        if (!fa.available) throw std::runtime_error("fcl: " + fa.reason);
+        if (samples < 1) throw std::invalid_argument("samples=" + std::to_string(samples) + ": expected at least 1");
+        if (ccd != 0 && ccd < 2) throw std::invalid_argument("ccd=" + std::to_string(ccd) + ": expected at least 2 iterations");
+        if (!std::isfinite(gjk_tolerance) || gjk_tolerance < 0) throw std::invalid_argument("gjk_tolerance: expected a positive number (0: FCL's default)");
+        if (ccd && gjk_tolerance > 0) throw std::invalid_argument("gjk_tolerance applies to sampling, not to ccd");
+        eccd::FclOptions fo;
+        fo.gjk_tolerance = gjk_tolerance;
+        py::gil_scoped_release unlocked;
+        return ccd ? eccd::fcl_ccd(scene, ccd, fo) : eccd::fcl_sample(scene, samples, fo);
+      }, py::arg("scene"), py::arg("samples") = 100, py::arg("ccd") = 0, py::arg("gjk_tolerance") = 0.0,
+      "FCL's answer for a scene (docs/fcl.md), as `eccd fcl SCENE` computes it: fcl::collide at t = k/samples, colliding "
+      "samples merged into intervals (fcl/sample:N), or with ccd=N fcl::continuousCollide (collides and first contact "
+      "only; constant shapes moving by a translation linear in t). An Answer, for eccd.judge. RuntimeError when FCL is "
+      "not built in; ValueError for a motion FCL cannot be given.");
 
   m.def("animate", [](const py::object& source, const std::string& arith, int threads, bool all_intervals, bool planes,
                       double time_limit) {

@@ -37,6 +37,7 @@ from ._eccd import (  # noqa: F401
     answer_from_dict,
     certify,
     check_certificate,
+    fcl,
     judge,
     number_text,
     read_scene,
@@ -53,7 +54,7 @@ from . import motions  # noqa: F401
 __all__ = [
     "Animation", "Answer", "Certificate", "CertificateCheck", "CertificationError", "ContactPoint", "Ellipse",
     "Ellipsoid", "Instant", "Judgement", "Scene", "SceneError", "Solution", "Status", "STATUS_CODES", "__version__",
-    "animate", "answer_from_dict", "certify", "check_certificate", "import_poses", "judge", "motions", "number_text",
+    "animate", "answer_from_dict", "certify", "check_certificate", "fcl", "import_poses", "judge", "motions", "number_text",
     "program", "read_scene", "scene_from_dict", "scene_from_text", "separate", "solve", "static_status",
     "static_status_batch", "status_at", "status_of_code",
 ]
