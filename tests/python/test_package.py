@@ -413,3 +413,12 @@ def test_fcl_is_the_program_s_and_judge_takes_it():
     assert by_cli.returncode == 1 and json.loads(by_cli.stdout)["verdict"] == verdict.verdict
     with pytest.raises(ValueError, match="samples=0"):
         eccd.fcl(path, samples=0)
+
+
+def test_a_run_past_its_time_limit():
+    # A limit of a nanosecond has passed by the pipeline's first look at the clock, however fast the machine.
+    s = case("paper002/example.json")
+    with pytest.raises(TimeoutError, match="time budget"):
+        eccd.solve(s, arith="exact", time_limit=1e-9)
+    d = eccd.solve(s, arith="double", time_limit=1e-9)  # a floating run says what it could not decide
+    assert d.undecided and any("time budget" in r for r in d.undecided_reasons)
