@@ -493,8 +493,11 @@ PYBIND11_MODULE(_eccd, m) {
       members.append(py::make_tuple(eccd::to_string(s), eccd::to_string(s)));
       codes.append(py::make_tuple(static_cast<int>(s), eccd::to_string(s)));
     }
-    g_status = py::module_::import("enum").attr("Enum")("Status", members, py::arg("module") = "eccd",
-                                                        py::arg("type") = py::module_::import("builtins").attr("str"));
+    // enum.StrEnum (Python 3.11) prints as its value; before 3.11 an Enum with the str mixin.
+    py::module_ en = py::module_::import("enum");
+    g_status = py::hasattr(en, "StrEnum") ? en.attr("StrEnum")("Status", members, py::arg("module") = "eccd")
+                                          : en.attr("Enum")("Status", members, py::arg("module") = "eccd",
+                                                            py::arg("type") = py::module_::import("builtins").attr("str"));
     g_status.attr("__doc__") = "The contact status of two objects at one instant (a str: Status.separate == 'separate')";
     m.attr("Status") = g_status;
     m.attr("_status_codes") = codes;

@@ -113,6 +113,7 @@ def test_status_is_an_enum_and_a_str():
     st = eccd.static_status(a, eccd.Ellipse([1.0, 1.0], np.array([[1, 0, 4.0], [0, 1, 0], [0, 0, 1]])))
     assert st is eccd.Status.separate and st == "separate" and isinstance(st, eccd.Status)
     assert [s.value for s in eccd.Status] == ["separate", "touching", "overlapping", "uncertain"]
+    assert f"{st}" == "separate" and eccd.Status("touching") is eccd.Status.touching
     r = eccd.solve(case("paper003/example2.json"))
     assert r.status_at_0 is eccd.Status.separate
     assert all(isinstance(c[1], eccd.Status) for c in r.critical)
