@@ -705,10 +705,20 @@ PYBIND11_MODULE(_eccd, m) {
       .def("__repr__", [](const eccd::CertificateCheck& c) {
         return c.valid ? std::string("CertificateCheck(VALID)") : "CertificateCheck(REJECTED: " + c.failed_claim + ": " + c.reason + ")";
       });
-  m.def("certify", &eccd::certify, py::arg("scene"), py::call_guard<py::gil_scoped_release>(),
-        "Solves the scene exactly and writes a certificate of the answer (raises CertificationError if a claim cannot be made provable)");
-  m.def("check_certificate", &eccd::check_certificate, py::arg("scene"), py::arg("text"), py::call_guard<py::gil_scoped_release>(),
-        "Re-checks a certificate (JSON text) against its scene without the solver; text that is not JSON raises SceneError");
+  m.def("certify", [](const py::object& scene_arg) {
+        const eccd::Scene scene = scene_of(scene_arg, "certify");
+        py::gil_scoped_release unlocked;
+        return eccd::certify(scene);
+      }, py::arg("scene"),
+      "Solves the scene (an eccd Scene, a scene dict or a path) exactly and writes a certificate of the answer (raises "
+      "CertificationError if a claim cannot be made provable)");
+  m.def("check_certificate", [](const py::object& scene_arg, const std::string& text) {
+        const eccd::Scene scene = scene_of(scene_arg, "check_certificate");
+        py::gil_scoped_release unlocked;
+        return eccd::check_certificate(scene, text);
+      }, py::arg("scene"), py::arg("text"),
+      "Re-checks a certificate (JSON text) against its scene (an eccd Scene, a scene dict or a path) without the solver; "
+      "text that is not JSON raises SceneError");
 
   // Judge any engine's answer against the certified one (api/judge.hpp).
   py::class_<eccd::Judgement>(m, "Judgement", "judge's result: .agrees, .verdict, .differences (in words), .counts, .certified (the Solution)")

@@ -65,6 +65,8 @@ def test_solve_takes_a_path_a_pathlike_a_dict_and_a_scene():
         for k in ("collides", "intervals", "first_contact", "contacts", "critical_instants"):
             assert got[k] == dicts[0][k]
     assert dicts[0]["file"] == path and dicts[2]["file"] in ("<dict>", "")
+    c = eccd.certify(path)  # certify and check_certificate take the same three forms
+    assert eccd.check_certificate(d, c.text).valid
 
 
 @pytest.mark.parametrize("name,arith", [("paper003/example2.json", "exact"), ("touch3d/touch-and-separate.json", "exact"),
@@ -166,6 +168,8 @@ def test_missing_files_and_bad_paths(tmp_path):
         eccd.read_scene(case("paper002/example.json") + "\x00junk")
     with pytest.raises(TypeError):
         eccd.solve(42)
+    with pytest.raises(FileNotFoundError):
+        eccd.certify(str(missing))
 
 
 def test_bytes_that_are_not_utf8_give_a_scene_error_naming_the_file(tmp_path):
