@@ -141,6 +141,13 @@ std::string json_dumps(const py::handle& d) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+// JSON text of a library object for Python: a string that is not UTF-8 (a file name's bytes) gets U+FFFD where
+// nlohmann's dump() would throw.
+template <class Json>
+std::string dump_text(const Json& j) {
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 // A scene from an eccd Scene, a dict in the scene format or a file path.
 eccd::Scene scene_of(const py::handle& arg, const char* what, std::string* label = nullptr) {
   if (py::isinstance<eccd::Scene>(arg)) {
@@ -523,9 +530,9 @@ PYBIND11_MODULE(_eccd, m) {
       .def("__hash__", [](const eccd::Instant& i) {
         return py::hash(py::make_tuple(i.approx, i.lo ? i.lo->get_str() : "", i.hi ? i.hi->get_str() : ""));
       })
-      .def("to_dict", [](const eccd::Instant& i) { return json_loads(eccd::instant_to_json(i).dump()); },
+      .def("to_dict", [](const eccd::Instant& i) { return json_loads(dump_text(eccd::instant_to_json(i))); },
            "{'approx', 'lo', 'hi'} as the answer format writes an instant")
-      .def(py::pickle([](const eccd::Instant& i) { return eccd::instant_to_json(i).dump(); },
+      .def(py::pickle([](const eccd::Instant& i) { return dump_text(eccd::instant_to_json(i)); },
                       [](const std::string& text) { return eccd::instant_from_json(nlohmann::json::parse(text), "<pickle>", ""); }))
       .def("__repr__", &instant_repr);
 
@@ -542,7 +549,7 @@ PYBIND11_MODULE(_eccd, m) {
   py::class_<eccd::Answer> answer(m, "Answer", "A scene's stored answer");
   answer_properties(answer, [](const eccd::Answer& a) -> const eccd::Answer& { return a; });
   answer.def("__repr__", [](const eccd::Answer& a) { return answer_repr("Answer(", a); })
-      .def("to_dict", [](const eccd::Answer& a) { return json_loads(eccd::answer_to_json(a).dump()); },
+      .def("to_dict", [](const eccd::Answer& a) { return json_loads(dump_text(eccd::answer_to_json(a))); },
            "the answer in the scene format's keys (what a scene file stores under \"answer\")");
 
   py::class_<eccd::Scene>(m, "Scene", "A scene: two objects and their motions on t in [0, 1]")
@@ -587,11 +594,11 @@ PYBIND11_MODULE(_eccd, m) {
             return out;
           }, "certified runs: (rung, why it gave up) for each lower rung")
       .def("to_dict", [](const py::object& self) {
-            return json_loads(solution_dict_json(self.cast<const eccd::Solution&>(), self).dump());
+            return json_loads(dump_text(solution_dict_json(self.cast<const eccd::Solution&>(), self)));
           }, "the object `eccd solve --json` prints (format eccd-solution/1; \"version\" is the package's), JSON-serialisable")
       .def(py::pickle(
           [](const py::object& self) {
-            return py::make_tuple(eccd::solution_to_json(self.cast<const eccd::Solution&>()).dump(), self.attr("__dict__"));
+            return py::make_tuple(dump_text(eccd::solution_to_json(self.cast<const eccd::Solution&>())), self.attr("__dict__"));
           },
           [](const py::tuple& state) {
             if (state.size() != 2) throw std::invalid_argument("Solution: not a pickled Solution");
@@ -807,7 +814,7 @@ PYBIND11_MODULE(_eccd, m) {
             return out;
           }, "the bodies' names")
       .def("pair_frame_scene", [](const PyAnimation& a, const std::string& body_a, const std::string& body_b, std::size_t frame) {
-            const eccd::Animation anim = eccd::animation_from_text(a.json.dump(), a.label);
+            const eccd::Animation anim = eccd::animation_from_text(dump_text(a.json), a.label);
             auto index = [&](const std::string& name) {
               for (std::size_t i = 0; i < anim.bodies.size(); ++i)
                 if (anim.bodies[i].name == name) return i;
@@ -823,7 +830,7 @@ PYBIND11_MODULE(_eccd, m) {
           "pair-frame (api/animate.hpp pair_frame_scene); for eccd.solve, eccd.fcl, eccd.judge")
       .def("to_json", [](const PyAnimation& a) { return eccd::animation_text(a.json); },
            "The animation file's text (format ellipse-ccd-animation/1), as `eccd import-poses` writes it")
-      .def("to_dict", [](const PyAnimation& a) { return json_loads(a.json.dump()); })
+      .def("to_dict", [](const PyAnimation& a) { return json_loads(dump_text(a.json)); })
       .def("__repr__", [](const PyAnimation& a) {
         return "Animation(" + py::repr(py::str(a.keyframes.name)).cast<std::string>() + ", dim=" + std::to_string(a.keyframes.dim) +
                ", bodies=" + std::to_string(a.keyframes.bodies.size()) + ", times=" + std::to_string(a.keyframes.times.size()) + ")";
@@ -859,7 +866,7 @@ PYBIND11_MODULE(_eccd, m) {
         std::string text, label;
         if (py::isinstance<PyAnimation>(source)) {
           const PyAnimation& a = source.cast<const PyAnimation&>();
-          text = a.json.dump();
+          text = dump_text(a.json);
           label = a.label;
         } else if (is_path(source)) {
           label = path_bytes(source, "animate");
@@ -874,7 +881,7 @@ PYBIND11_MODULE(_eccd, m) {
           j["format"] = eccd::kAnimationAnswerFormat;
           const nlohmann::ordered_json body = eccd::animation_result_to_json(eccd::animate(anim, o));
           for (const auto& it : body.items()) j[it.key()] = it.value();
-          text = j.dump();
+          text = dump_text(j);
         }
         return json_loads(text);
       }, py::arg("animation"), py::arg("arith") = "double", py::arg("threads") = 2, py::arg("all_intervals") = false,
@@ -912,7 +919,7 @@ PYBIND11_MODULE(_eccd, m) {
           j["format"] = eccd::kSeparateFormat;
           const nlohmann::ordered_json body = eccd::separation_to_json(scene, label, q, o.arith, sep);
           for (const auto& it : body.items()) j[it.key()] = it.value();
-          text = j.dump();
+          text = dump_text(j);
         }
         return json_loads(text);
       }, py::arg("scene"), py::arg("t"), py::arg("arith") = "exact",

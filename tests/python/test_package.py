@@ -179,6 +179,12 @@ def test_bytes_that_are_not_utf8_give_a_scene_error_naming_the_file(tmp_path):
         with pytest.raises(eccd.SceneError) as e:
             eccd.read_scene(str(p))
         assert str(p) in str(e.value)
+    odd = os.path.join(os.fsencode(tmp_path), b"scene\xfe.json")  # a file name that is not UTF-8
+    with open(case("paper002/example.json"), "rb") as f, open(odd, "wb") as g:
+        g.write(f.read())
+    r = eccd.solve(os.fsdecode(odd), arith="double")
+    assert json.loads(json.dumps(r.to_dict()))["file"].endswith("scene\ufffd.json")
+    assert pickle.loads(pickle.dumps(r)).collides == r.collides
     with pytest.raises(eccd.SceneError) as e:
         eccd.scene_from_text("{", label="a\x00b")
     assert "a\\x00b" in str(e.value)
