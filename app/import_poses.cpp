@@ -9,8 +9,10 @@
 #include "io/pose_import.hpp"
 #include "io/scene_reader.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 namespace eccd {
 
@@ -27,7 +29,18 @@ Command add_import_poses_command(CLI::App& app) {
   c.sub->add_option("--shapes", args->shapes, "The shapes file: dim, the bodies' names, shapes and groups, the pairs to check")->required();
   c.sub->add_option("--out", args->out, "Write the animation to this file (atomically) instead of standard output");
   c.run = [args]() -> int {
-    if (!args->out.empty()) check_output_path("--out", args->out);
+    if (!args->out.empty()) {
+      check_output_path("--out", args->out);
+      // Replaced only if it is a regular file (never a device, a FIFO or what a symlink points to), and never an input.
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      const fs::file_status st = fs::symlink_status(args->out, ec);
+      if (fs::exists(st) && !fs::is_regular_file(st))
+        throw std::invalid_argument("--out " + args->out + ": not a regular file (a device, a FIFO, a directory or a symlink): nothing is written there");
+      for (const std::string& in : {args->csv, args->shapes})
+        if (in != "-" && fs::exists(st) && fs::equivalent(in, args->out, ec))
+          throw std::invalid_argument("--out " + args->out + ": it is one of the inputs (" + in + ")");
+    }
     const SceneSource shapes = read_scene_source(args->shapes);
     const SceneSource csv = read_scene_source(args->csv);
     const Keyframes k = pose_keyframes_from_csv(csv.text, csv.label, shapes_from_text(shapes.text, shapes.label));

@@ -433,3 +433,18 @@ def test_a_run_past_its_time_limit():
         eccd.solve(s, arith="exact", time_limit=1e-9)
     d = eccd.solve(s, arith="double", time_limit=1e-9)  # a floating run says what it could not decide
     assert d.undecided and any("time budget" in r for r in d.undecided_reasons)
+
+
+def test_import_poses_replaces_only_regular_files(tmp_path):
+    csv, shapes = write_csv_and_shapes(tmp_path)
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    target = tmp_path / "kept.json"
+    target.write_text("decoy")
+    link = tmp_path / "link.json"
+    link.symlink_to(target)
+    for out in (fifo, link, csv, shapes):
+        r = cli("import-poses", str(csv), "--shapes", str(shapes), "--out", str(out), check=False)
+        assert r.returncode == 2 and str(out) in r.stderr, r.stderr
+    assert fifo.is_fifo() and link.is_symlink() and target.read_text() == "decoy"
+    assert csv.read_text().count("\n") == 6
