@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Builds everything and runs the whole test suite (Catch2 tests through CTest).
+# Builds everything and runs the whole test suite (Catch2 tests through CTest),
+# then the Python tests against a pip install (scripts/test-python-install.sh).
 # The suite includes `eccd regress cases/ --certify` over the whole corpus and
 # the metamorphic tests over generated scenes; their seeds are printed at the end.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+# The Python package installed by pip into a fresh venv, its tests against that install.
+bash scripts/test-python-install.sh
 log=build/Testing/Temporary/LastTest.log
 if [ -f "$log" ]; then
   echo "== metamorphic tests ran on these generated scenes (rerun: ECCD_METAMORPHIC_SEED=BASE build/eccd_tests '[metamorphic]') =="
