@@ -9,6 +9,7 @@
 // (checked before any work), 3 a request the pipeline refuses, 5 a budget.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "app/option_names.hpp"
 #include "api/animate.hpp"
 #include "io/animation_reader.hpp"
 #include "io/scene_reader.hpp"
@@ -85,9 +86,12 @@ Command add_animate_command(CLI::App& app) {
   c.sub->add_flag("--all-intervals", args->all_intervals, "Every collision interval of each pair-frame (default: the first contact)");
   c.sub->add_flag("--no-planes", args->no_planes,
                   "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
-  c.sub->add_option("--threads", args->threads, "Threads running pair-frames (the output does not depend on it)")
+  c.sub->add_option("--jobs", args->threads, "Threads running pair-frames (the output does not depend on it)")
       ->capture_default_str();
-  c.sub->add_option("--shard", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
+  add_old_spelling(c.sub, "--threads", "--threads", "--jobs", args->threads);
+  // report --shard takes every n-th task; a block of frames is another partition, so it has its own name.
+  c.sub->add_option("--frame-block", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
+  add_old_spelling(c.sub, "--shard", "--shard", "--frame-block", args->shard);
   c.sub->add_option("--out", args->out, "Write the output to this file (atomically) instead of standard output");
 
   c.run = [args]() -> int {
@@ -99,7 +103,7 @@ Command add_animate_command(CLI::App& app) {
     const double limit = run_budget().time_limit_s;
     o.solve.time_limit_s = o.solve.arith.floating() ? (limit > 0 ? std::min(limit, kDefaultFloatingSeconds) : 0) : limit;
     if (args->threads < 1 || args->threads > 256)
-      throw std::invalid_argument("--threads " + std::to_string(args->threads) + ": expected 1 to 256");
+      throw std::invalid_argument("--jobs " + std::to_string(args->threads) + ": expected 1 to 256");
     o.threads = args->threads;
     if (!args->shard.empty()) {
       const std::string& s = args->shard;
@@ -111,7 +115,7 @@ Command add_animate_command(CLI::App& app) {
         o.shard_count = std::stoul(s.substr(slash + 1));
         ok = o.shard_count >= 1 && o.shard_index < o.shard_count;
       }
-      if (!ok) throw std::invalid_argument("--shard " + s + ": expected i/n with 0 <= i < n");
+      if (!ok) throw std::invalid_argument("--frame-block " + s + ": expected i/n with 0 <= i < n");
     }
     if (!args->out.empty()) check_output_path("--out", args->out);
     const Animation anim = read_animation(args->path);
