@@ -642,7 +642,7 @@ int run_plot(const PlotOptions& o) {
   }
 
   json data;
-  data["format"] = "eccd-plot-data/1";
+  stamp_format(data, "eccd-plot-data/1");  // format and version, as every JSON object eccd writes
   data["scene"] = s.name;
   data["file"] = s.path;
   data["dim"] = s.dim;
