@@ -26,8 +26,8 @@ import tempfile
 FAILS = []
 
 
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what, flush=True)
+def check(ok, what, detail=""):
+    print(("ok    " if ok else "FAIL  ") + what + (f" ({detail})" if detail and not ok else ""), flush=True)
     if not ok:
         FAILS.append(what)
 
@@ -75,7 +75,7 @@ def main(argv):
             if lang == "python":
                 r = subprocess.run([sys.executable, "-c", body], cwd=work, env=env, capture_output=True, text=True,
                                    timeout=300)
-                check(r.returncode == 0, f"the Python lines run (exit {r.returncode}; {r.stderr.strip()[-300:]})")
+                check(r.returncode == 0, "the Python lines run", f"exit {r.returncode}; {r.stderr.strip()[-300:]}")
                 check(r.stdout.startswith("True"), f"the Python lines print the answer ({r.stdout.strip()[:80]!r})")
                 ran["python"] += 1
                 continue
@@ -91,11 +91,11 @@ def main(argv):
                     check(os.path.isfile(script), f"{words[1]} exists")
                     r = subprocess.run(["bash", script, "--help"], capture_output=True, text=True, timeout=60)
                     check(r.returncode == 0 and r.stdout.startswith("usage:"),
-                          f"bash {words[1]} --help prints its usage (exit {r.returncode})")
+                          f"bash {words[1]} --help prints its usage", f"exit {r.returncode}")
                     ran["scripts"] += 1
                 elif words[0] == "build/eccd":
                     r = subprocess.run(line, shell=True, cwd=work, capture_output=True, text=True, timeout=900)
-                    check(r.returncode == 0, f"{line} (exit {r.returncode}; {r.stderr.strip()[-300:]})")
+                    check(r.returncode == 0, line, f"exit {r.returncode}; {r.stderr.strip()[-300:]}")
                     check("warning" not in r.stderr, f"{words[1]}: no warning on stderr (the quick start uses today's option names)")
                     if "--out-dir" in words:
                         d = os.path.join(work, words[words.index("--out-dir") + 1])

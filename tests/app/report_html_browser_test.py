@@ -26,8 +26,8 @@ import tempfile
 FAILS = []
 
 
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
+def check(ok, what, detail=""):
+    print(("ok    " if ok else "FAIL  ") + what + (f" ({detail})" if detail and not ok else ""))
     if not ok:
         FAILS.append(what)
 
@@ -75,7 +75,7 @@ def main(argv):
                "--separations", "2", "--count", "1", "--mpfr-bits", "64", "--cases", os.path.join(src, "cases", "spheres"),
                "--map-size", "2", "--no-fcl", "--budget", "2", "--jobs", "2", "--quiet"]
         r = subprocess.run(cmd, capture_output=True, text=True, timeout=900)
-        check(r.returncode == 0, f"eccd report exits 0 (got {r.returncode}; stderr: {r.stderr[-400:]})")
+        check(r.returncode == 0, "eccd report exits 0", f"exit {r.returncode}; stderr: {r.stderr[-400:]}")
         page_path = os.path.join(out, "report.html")
         check(os.path.exists(page_path), "report.html is written beside report.md")
         if FAILS:
@@ -107,9 +107,8 @@ def main(argv):
         sec = re.search(r'<section id="verdict-section">(.*?)</section>', dom, flags=re.S)
         html_text = html.unescape(re.sub(r"<[^>]+>", " ", sec.group(1))) if sec else ""
         a, b = numbers(md_verdict_text(md)), numbers(html_text)
-        check(bool(a) and a == b, f"the verdict's numbers equal report.md's ({len(a)} numbers; first difference: "
-              + next((f"{x} vs {y}" for x, y in zip(a, b) if x != y), "lengths " + str((len(a), len(b)))) + ")"
-              if a != b else f"the verdict's numbers equal report.md's ({len(a)} numbers)")
+        first_diff = next((f"{x} vs {y}" for x, y in zip(a, b) if x != y), f"{len(a)} vs {len(b)} numbers")
+        check(bool(a) and a == b, f"the verdict's numbers equal report.md's ({len(a)} numbers)", first_diff)
 
         # a table sorts
         t0 = re.search(r'<table class="data"[^>]*data-sorted="2:desc"[^>]*>(.*?)</table>', dom, flags=re.S)
