@@ -10,15 +10,19 @@
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/option_names.hpp"
+#include "app/time_left.hpp"
 #include "api/animate.hpp"
 #include "io/animation_reader.hpp"
 #include "io/scene_reader.hpp"
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace eccd {
@@ -120,19 +124,16 @@ Command add_animate_command(CLI::App& app) {
     if (!args->out.empty()) check_output_path("--out", args->out);
     const Animation anim = read_animation(args->path);
     const auto start = std::chrono::steady_clock::now();
-    auto last = start;
-    bool reported_end = false;
+    std::optional<ProgressCadence> cadence;  // redrawn on a terminal, a line per 5 % in a log (app/time_left.hpp)
     o.progress = [&](std::size_t done, std::size_t total) {
       if (quiet()) return;
-      const auto now = std::chrono::steady_clock::now();
-      if (done < total && now - last < std::chrono::seconds(1)) return;
-      if (done == total && reported_end) return;
-      reported_end = done == total;
-      last = now;
-      const double el = std::chrono::duration<double>(now - start).count();
-      std::cerr << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, " << fixed(el, 1) << " s"
-                << (done > 0 && done < total ? ", about " + fixed(el / double(done) * double(total - done), 1) + " s left" : std::string())
-                << "\n";
+      if (!cadence) cadence.emplace(isatty(2) != 0, long(total));
+      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (!cadence->due(long(done), el)) return;
+      std::optional<double> left;
+      if (done > 0) left = el / double(done) * double(total - done);  // the measured rate per pair-frame
+      std::cerr << cadence->begin() << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, "
+                << fixed(el, 1) << " s, " << (done == total ? std::string("done") : time_left_text(left)) << cadence->end(done == total);
     };
     AnimationResult r;
     try {
