@@ -32,8 +32,8 @@ std::vector<nlohmann::json> json_lines(const std::string& out) {
 }  // namespace
 
 TEST_CASE("a parser error starts with eccd: like every other error", "[cli][names]") {
-  for (const std::string args : {"solve " + q(kScene2d) + " --bogus", "table --mpfr-bits 12", "report --no-such-option",
-                                 std::string("generate --out-dir"), std::string("nosuchcommand")}) {
+  for (const std::string& args : std::vector<std::string>{"solve " + q(kScene2d) + " --bogus", "table --mpfr-bits 12",
+                                                           "report --no-such-option", "generate --out-dir", "nosuchcommand"}) {
     INFO(args);
     Run r = run_eccd(args);
     CHECK(r.code == 2);
