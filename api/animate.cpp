@@ -395,7 +395,8 @@ nlohmann::ordered_json animation_result_to_json(const AnimationResult& r) {
   nlohmann::ordered_json j;
   j["format"] = kAnimationAnswerFormat;
   j["animation"] = r.animation;
-  j["arithmetic"] = r.arithmetic;
+  j["arith"] = r.arithmetic;       // the key every other eccd JSON object uses (eccd solve --json)
+  j["arithmetic"] = r.arithmetic;  // the same: the key the animation answer format names (docs/animation-format.md)
   j["frames"] = r.frames;
   j["pairs_per_frame"] = r.pairs_per_frame;
   j["mode"] = r.all_intervals ? "all-intervals" : "first-contact";

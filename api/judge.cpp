@@ -44,7 +44,9 @@ AnswerInput answer_from_text(const std::string& json_text, const std::string& la
   if (doc.contains("answer")) {
     if (doc["answer"].is_null()) throw SceneError(label + ": /answer: is null: the scene file has no answer to judge");
     in.answer = answer_from_json(doc["answer"], label, "/answer");
-    in.taken = "the \"answer\" of a scene file";
+    in.taken = doc.contains("format") && doc["format"].is_string() && doc["format"] != "ellipse-ccd-scene/1"
+                   ? "the \"answer\" of an " + doc["format"].get<std::string>() + " object"
+                   : "the \"answer\" of a scene file";
   } else if (doc.contains("collides") && doc.contains("arith")) {
     in.answer = solution_from_json(doc, label).answer;
     in.taken = "the answer of an `eccd solve --json` report";

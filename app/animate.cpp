@@ -9,15 +9,20 @@
 // (checked before any work), 3 a request the pipeline refuses, 5 a budget.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "app/option_names.hpp"
+#include "app/time_left.hpp"
 #include "api/animate.hpp"
 #include "io/animation_reader.hpp"
 #include "io/scene_reader.hpp"
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace eccd {
@@ -85,9 +90,12 @@ Command add_animate_command(CLI::App& app) {
   c.sub->add_flag("--all-intervals", args->all_intervals, "Every collision interval of each pair-frame (default: the first contact)");
   c.sub->add_flag("--no-planes", args->no_planes,
                   "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
-  c.sub->add_option("--threads", args->threads, "Threads running pair-frames (the output does not depend on it)")
+  c.sub->add_option("--jobs", args->threads, "Threads running pair-frames (the output does not depend on it)")
       ->capture_default_str();
-  c.sub->add_option("--shard", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
+  add_old_spelling(c.sub, "--threads", "--threads", "--jobs", args->threads);
+  // report --shard takes every n-th task; a block of frames is another partition, so it has its own name.
+  c.sub->add_option("--frame-block", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
+  add_old_spelling(c.sub, "--shard", "--shard", "--frame-block", args->shard);
   c.sub->add_option("--out", args->out, "Write the output to this file (atomically) instead of standard output");
 
   c.run = [args]() -> int {
@@ -99,7 +107,7 @@ Command add_animate_command(CLI::App& app) {
     const double limit = run_budget().time_limit_s;
     o.solve.time_limit_s = o.solve.arith.floating() ? (limit > 0 ? std::min(limit, kDefaultFloatingSeconds) : 0) : limit;
     if (args->threads < 1 || args->threads > 256)
-      throw std::invalid_argument("--threads " + std::to_string(args->threads) + ": expected 1 to 256");
+      throw std::invalid_argument("--jobs " + std::to_string(args->threads) + ": expected 1 to 256");
     o.threads = args->threads;
     if (!args->shard.empty()) {
       const std::string& s = args->shard;
@@ -111,24 +119,21 @@ Command add_animate_command(CLI::App& app) {
         o.shard_count = std::stoul(s.substr(slash + 1));
         ok = o.shard_count >= 1 && o.shard_index < o.shard_count;
       }
-      if (!ok) throw std::invalid_argument("--shard " + s + ": expected i/n with 0 <= i < n");
+      if (!ok) throw std::invalid_argument("--frame-block " + s + ": expected i/n with 0 <= i < n");
     }
     if (!args->out.empty()) check_output_path("--out", args->out);
     const Animation anim = read_animation(args->path);
     const auto start = std::chrono::steady_clock::now();
-    auto last = start;
-    bool reported_end = false;
+    std::optional<ProgressCadence> cadence;  // redrawn on a terminal, a line per 5 % in a log (app/time_left.hpp)
     o.progress = [&](std::size_t done, std::size_t total) {
       if (quiet()) return;
-      const auto now = std::chrono::steady_clock::now();
-      if (done < total && now - last < std::chrono::seconds(1)) return;
-      if (done == total && reported_end) return;
-      reported_end = done == total;
-      last = now;
-      const double el = std::chrono::duration<double>(now - start).count();
-      std::cerr << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, " << fixed(el, 1) << " s"
-                << (done > 0 && done < total ? ", about " + fixed(el / double(done) * double(total - done), 1) + " s left" : std::string())
-                << "\n";
+      if (!cadence) cadence.emplace(isatty(2) != 0, long(total));
+      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (!cadence->due(long(done), el)) return;
+      std::optional<double> left;
+      if (done > 0) left = el / double(done) * double(total - done);  // the measured rate per pair-frame
+      std::cerr << cadence->begin() << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, "
+                << fixed(el, 1) << " s, " << (done == total ? std::string("done") : time_left_text(left)) << cadence->end(done == total);
     };
     AnimationResult r;
     try {

@@ -180,7 +180,13 @@ Command add_certify_command(CLI::App& app) {
     if (args->out.empty() && args->scene == "-") throw std::invalid_argument("certify -: name the certificate file with --out (the scene comes from standard input)");
     fs::path out = args->out.empty() ? fs::path(fs::path(args->scene).stem().string() + ".cert.json") : fs::path(args->out);
     const std::string label = scene.path;
-    if (!quiet()) std::cerr << (args->arith == "certified" ? "certify: certified route and certificate ...\n" : "certify: exact pipeline and certificate ...\n");
+    // Say which prover runs: a cycloidal scene has no exact pipeline (MPFI enclosures prove it), an
+    // independent one is proved by interval subdivision and Krawczyk's test.
+    if (!quiet())
+      std::cerr << (args->arith == "certified"              ? "certify: certified route and certificate ...\n"
+                    : cycloidal_certificate_scene(scene) ? "certify: MPFI proof of the cycloidal scene and certificate ...\n"
+                    : scene.independent                  ? "certify: interval proofs of the independent motions and certificate ...\n"
+                                                         : "certify: exact pipeline and certificate ...\n");
     nlohmann::json cert;
     std::string route = "exact", route_why;
     try {

@@ -1,11 +1,9 @@
 // `eccd fcl SCENE [--samples N [--gjk-tolerance X] | --ccd N] [--json]`: FCL's answer for a scene
 // (compare/fcl_engine.hpp, docs/fcl.md), in the scene format's answer form,
-// so that `eccd judge SCENE ANSWER` judges the real FCL. Without --json it
-// prints the bare answer object ({"collides", "intervals", "first_contact",
-// "contacts"}; for --ccd only collides and first_contact: FCL's continuous
-// collision claims nothing else); with --json one object with "format"
-// ("eccd-fcl-answer/1"), "version", the engine, FCL's version and tolerances
-// ("gjk_tolerance": the one fcl::collide received) and the answer under "answer" (judge reads it from there). Exit 0, 2 bad
+// so that `eccd judge SCENE ANSWER` judges the real FCL. It prints one object
+// with "format" ("eccd-fcl-answer/1"), "version", the engine, FCL's version and tolerances
+// ("gjk_tolerance": the one fcl::collide received) and the answer under "answer" (judge reads it from there;
+// for --ccd only collides and first_contact: FCL's continuous collision claims nothing else); --json changes nothing. Exit 0, 2 bad
 // option or scene, 3 refused: FCL is not built in, a motion --ccd cannot
 // express, a pose that is not an ellipsoid in double.
 #include "app/commands.hpp"
@@ -51,7 +49,9 @@ Command add_fcl_command(CLI::App& app) {
                                 "not with --ccd (FCL's continuous collision uses a default request inside)")
                       ->check(CLI::PositiveNumber);
   args->gjk_opt->excludes(args->ccd_opt);
-  s->add_flag("--json", args->json, "Print one JSON object (format eccd-fcl-answer/1) with the answer under \"answer\"");
+  s->add_flag("--json", args->json,
+              "Print one JSON object (format eccd-fcl-answer/1) with the answer under \"answer\"; the output is that "
+              "object with or without --json (eccd judge reads it)");
   c.run = [args]() -> int {
     const SceneSource src = read_scene_source(args->scene);
     Scene scene = parse_scene(src.text, src.label);
@@ -73,7 +73,7 @@ Command add_fcl_command(CLI::App& app) {
       ans.erase("intervals");
       ans.erase("contacts");
     }
-    if (args->json) {
+    {  // with or without --json: one object with format and version; eccd judge takes its "answer"
       nlohmann::ordered_json out;
       stamp_format(out, "eccd-fcl-answer/1");
       out["scene"] = scene.name;
@@ -84,8 +84,6 @@ Command add_fcl_command(CLI::App& app) {
       out["gjk_tolerance"] = fcl_gjk_tolerance(fo);
       out["answer"] = ans;
       std::cout << out.dump(2) << "\n";
-    } else {
-      std::cout << ans.dump(2) << "\n";
     }
     return 0;
   };

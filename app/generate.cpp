@@ -5,6 +5,7 @@
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/json_text.hpp"
+#include "app/option_names.hpp"
 #include "api/solve.hpp"
 #include "io/solution_json.hpp"
 #include "compare/scene_generator.hpp"
@@ -89,7 +90,8 @@ Command add_generate_command(CLI::App& app) {
                              "(numbers written as decimals of 6, 9, 12, 15 significant digits). With --answer each file also "
                              "stores the exact pipeline's answer.");
   auto* s = c.sub;
-  s->add_option("--out", args->out, "Folder to write the scenes into (created if missing)")->required();
+  s->add_option("--out-dir", args->out, "Folder to write the scenes into (created if missing); required");
+  add_old_spelling(s, "--out", "--out", "--out-dir", args->out);
   add_plan_options(s, args->plan);
   s->add_option("--count", args->plan.count, "Scenes per combination (per separation for near-miss)")->capture_default_str()->check(CLI::Range(1, 100000));
   s->add_option("--seed", args->plan.seed, "Run seed (each scene's seed derives from it and the combination)")
@@ -101,7 +103,8 @@ Command add_generate_command(CLI::App& app) {
               "contacts) in the file under \"answer\"; progress (scene and exact time) goes to stderr. Exact solving "
               "can take seconds per scene at high degree; nothing is written until every scene is solved");
   c.run = [args]() {
-    check_output_path("--out", args->out);
+    if (args->out.empty()) throw std::invalid_argument("generate: --out-dir DIR is required (the folder the scenes are written into)");
+    check_output_path("--out-dir", args->out);
     check_plan(args->plan);
     {  // the folder must be creatable (or exist) before any scene is solved
       std::error_code ec;

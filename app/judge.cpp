@@ -69,7 +69,7 @@ Command add_judge_command(CLI::App& app) {
                              "certified answer and print the verdict: wrong collides, missed or false intervals and contacts, ends "
                              "off by more than --tol. Exit 0 agrees, 1 differs, 2 bad input, 3 refused (cycloidal), 5 budget.");
   auto* s = c.sub;
-  s->add_option("SCENE", args->scene, "Scene file (ellipse-ccd-scene/1)")->required();
+  s->add_option("SCENE", args->scene, "Scene file (ellipse-ccd-scene/1); - reads standard input (then ANSWER must be a file)")->required();
   s->add_option("ANSWER", args->answer,
                 "Answer to judge: a JSON answer object, a scene file with an \"answer\", or an `eccd solve --json` report; - for stdin")
       ->required();
@@ -83,7 +83,10 @@ Command add_judge_command(CLI::App& app) {
   s->add_flag("--use-stored", args->use_stored,
               "Compare with the scene's stored answer instead of solving exactly (when the scene has one; regress keeps it exact)");
   c.run = [args]() {
-    Scene scene = read_scene_file(args->scene);
+    if (args->scene == "-" && args->answer == "-")
+      throw std::invalid_argument("judge: SCENE and ANSWER are both - (standard input): at most one of them can be read from it");
+    const SceneSource src = read_scene_source(args->scene);
+    Scene scene = parse_scene(src.text, src.label);
     AnswerInput in = read_answer(args->answer);
     const std::string label = args->answer == "-" ? std::string("<stdin>") : args->answer;
     JudgeOptions o;
@@ -91,14 +94,14 @@ Command add_judge_command(CLI::App& app) {
     o.name = args->name;
     o.use_stored = args->use_stored;
     if (args->use_stored && !scene.answer)
-      std::cerr << "eccd judge: warning: " << args->scene << " has no stored answer; --use-stored ignored, solving exactly\n";
+      warn("judge", src.label + " has no stored answer; --use-stored ignored, solving exactly");
     Judgement j;
     arm_backstop(run_budget().time_limit_s);
     try {
       ScopedDeadline deadline(run_budget().time_limit_s);
       j = judge(scene, in.answer, o);
     } catch (const std::invalid_argument& e) {
-      std::cerr << "eccd judge: " << args->scene << ": " << e.what() << " (judge compares with the exact answer, so it refuses this scene)\n";
+      std::cerr << "eccd: judge: " << src.label << ": " << e.what() << " (judge compares with the exact answer, so it refuses this scene)\n";
       return 3;
     }
     { itimerval off{}; setitimer(ITIMER_REAL, &off, nullptr); }
@@ -107,7 +110,7 @@ Command add_judge_command(CLI::App& app) {
       nlohmann::ordered_json out = {{"format", "eccd-judgement/1"},
                             {"version", program_version()},
                             {"scene", scene.name},
-                            {"scene_file", args->scene},
+                            {"scene_file", src.label},
                             {"answer_file", label},
                             {"answer_taken", in.taken},
                             {"engine", args->name},

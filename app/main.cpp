@@ -115,6 +115,8 @@ std::string cut_message(const std::string& m) { return m.size() > 2000 ? m.subst
 int main(int argc, char** argv) {
   CLI::App app{"eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and ellipsoids"};
   app.require_subcommand(1);
+  // Parser errors (an unknown option, a bad value) start with "eccd: " like every other error.
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) { return "eccd: " + CLI::FailureMessage::simple(a, e); });
   app.fallthrough();  // before the sub-commands are added: they inherit it (the budget options below work after them too)
   app.set_version_flag("--version", std::string("eccd ") + program_version() + " (git " + program_revision() + ")",
                        "Print the program's version and the git revision it was built from, and exit");

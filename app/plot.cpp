@@ -43,6 +43,7 @@
 //     (largest column of its adjugate), A and B as the pipelines build them.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "app/option_names.hpp"
 #include "api/solve.hpp"
 #include "api/static_test.hpp"
 #include "io/solution_json.hpp"
@@ -588,7 +589,7 @@ std::string answer_words(const Solution& rep) {
 int run_plot(const PlotOptions& o) {
   const SceneSource src = read_scene_source(o.scene);  // "-": standard input
   Scene s = parse_scene(src.text, src.label);            // SceneError -> exit 2
-  for (const auto& [opt_name, f] : {std::pair<std::string, std::string>{"--output", o.out}, {"--data", o.data}}) {
+  for (const auto& [opt_name, f] : {std::pair<std::string, std::string>{"--out", o.out}, {"--data", o.data}}) {
     if (f.empty()) continue;
     check_output_path(opt_name, f);
     fs::path dir = fs::path(f).parent_path();
@@ -622,26 +623,26 @@ int run_plot(const PlotOptions& o) {
       rep = solve(s, opt);
     }
   } catch (const std::invalid_argument& e) {
-    std::cerr << "eccd plot: " << src.label << ": " << cli_message(e) << "\n";
+    std::cerr << "eccd: plot: " << src.label << ": " << cli_message(e) << "\n";
     return 3;
   }
 
   const fs::path script = fs::path(plots_dir()) / "scene_figure.py";
   if (!fs::is_regular_file(script)) {
-    std::cerr << "eccd plot: drawing script " << script.string() << " not found (set ECCD_PLOTS_DIR to the folder compare/plots)\n";
+    std::cerr << "eccd: plot: drawing script " << script.string() << " not found (set ECCD_PLOTS_DIR to the folder compare/plots)\n";
     return 1;
   }
   std::string tried;
   const std::string python = find_python(tried);
   if (python.empty()) {
-    std::cerr << "eccd plot: needs python3 with numpy and matplotlib, and none was found (tried " << tried
+    std::cerr << "eccd: plot: needs python3 with numpy and matplotlib, and none was found (tried " << tried
               << "): install them with `apt-get install python3-matplotlib` (it brings numpy), "
                  "or set ECCD_PYTHON to an interpreter that has them\n";
     return 1;
   }
 
   json data;
-  data["format"] = "eccd-plot-data/1";
+  stamp_format(data, "eccd-plot-data/1");  // format and version, as every JSON object eccd writes
   data["scene"] = s.name;
   data["file"] = s.path;
   data["dim"] = s.dim;
@@ -687,7 +688,7 @@ int run_plot(const PlotOptions& o) {
   std::error_code ec;
   if (rc != 0 || !fs::is_regular_file(tmp_png) || fs::file_size(tmp_png, ec) == 0) {
     cleanup();
-    std::cerr << "eccd plot: the drawing script " << script.string() << " failed (exit status " << rc
+    std::cerr << "eccd: plot: the drawing script " << script.string() << " failed (exit status " << rc
               << "); its messages are above; nothing was written\n";
     return 1;
   }
@@ -727,7 +728,8 @@ Command add_plot_command(CLI::App& app) {
       "Exit status: 0 written; 1 python/matplotlib missing or drawing failed (nothing written); 2 bad scene or "
       "option; 3 a request the pipeline refuses.");
   c.sub->add_option("SCENE", o->scene, "Scene file (format ellipse-ccd-scene/1); - reads it from standard input")->required();
-  c.sub->add_option("-o,--output", o->out,
+  add_old_spelling(c.sub, "-o,--output", "-o/--output", "--out", o->out);
+  c.sub->add_option("--out", o->out,
                     "PNG to write (default: the scene file's name with .png, in the current directory; for -, the "
                     "scene's name); "
                     "replaced only when drawing succeeded");

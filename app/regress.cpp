@@ -106,6 +106,7 @@ Command add_regress_command(CLI::App& app) {
     std::map<std::string, int> decided_in;  // certified mode: scenes per deciding rung
     std::map<std::string, long> local_decisions;  // certified mode: decisions made locally, by kind (summed over scenes)
     int local_scenes = 0;                        // certified mode: scenes decided with at least one local decision
+    int exact_only = 0;                          // certified mode: scenes run exactly (independent motions), in decided_in too
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::string> pipeline_order;
     std::map<std::string, PipelineTally> tally;
@@ -154,6 +155,10 @@ Command add_regress_command(CLI::App& app) {
           } else {
             how = sol.decided_in == "interval" ? "  (decided in interval arithmetic)" : "  (decided in " + sol.decided_in + ")";
           }
+        }
+        if (certified_mode && sol.arith.kind != Arithmetic::Certified) {  // an independent scene, run exactly
+          ++decided_in["exact (independent motions)"];
+          ++exact_only;
         }
         const Answer& got = sol.answer;
         std::vector<std::string> diff = regress_differences(*sc.answer, got);
@@ -290,8 +295,8 @@ Command add_regress_command(CLI::App& app) {
     std::printf("\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n", args->dir.c_str(),
                 agree + differ + failed, agree, differ, failed, skipped, secs);
     if (certified_mode) {
-      std::printf("certified mode: %d of %d scene(s) decided in intervals of doubles, %d escalated; decided in:", agree + differ - escalated,
-                  agree + differ, escalated);
+      std::printf("certified mode: %d of %d scene(s) decided in intervals of doubles, %d escalated, %d run exactly (independent motions); decided in:",
+                  agree + differ - escalated - exact_only, agree + differ, escalated, exact_only);
       for (const auto& [rung, n] : decided_in) std::printf(" %s %d", rung.c_str(), n);
       std::printf("\n");
       if (local_scenes) {

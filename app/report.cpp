@@ -11,12 +11,13 @@
 // (for several machines) and writes only the raw part; `--merge` joins parts.
 // The most expensive kinds of task run first (a shorter tail); the time left
 // is estimated per kind of task (app/time_left.hpp).
-// Output: a new reports/run-YYYYMMDD-HHMMSS unless --name or --out says
+// Output: a new reports/run-YYYYMMDD-HHMMSS unless --name or --out-dir says
 // otherwise. It goes to OUT.partial and replaces OUT only when everything
 // succeeded. OUT.partial holds a plan file and the workers' files, so that an
 // interrupted run (Ctrl-C, SIGTERM, kill -9) continues with `--resume`.
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
+#include "app/option_names.hpp"
 #include "app/scene_files.hpp"
 #include "app/time_left.hpp"
 #include "compare/csv.hpp"
@@ -57,9 +58,9 @@ namespace eccd {
 namespace {
 
 struct ReportArgs {
-  std::string name;        // --name; without --name and --out: a new reports/run-YYYYMMDD-HHMMSS
+  std::string name;        // --name; without --name and --out-dir: a new reports/run-YYYYMMDD-HHMMSS
   std::string out;
-  bool out_given = false;  // --out given (even as '')
+  bool out_given = false;  // --out-dir given (even as '')
   bool name_given = false;
   bool resume = false;     // --resume
   GeneratePlan plan;
@@ -491,7 +492,7 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
   }
   std::vector<char> seen(std::size_t(n), 0);
   std::vector<long> queued(kind_names.size(), 0);
-  double last_print = -1e9;
+  ProgressCadence cadence(tty, total);
   int running = jobs, bad = 0;
   while (running > 0) {
     if (g_interrupted) {  // stop the workers now; run_report keeps or removes the output
@@ -507,8 +508,7 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!show || el - last_print < (tty ? 0.5 : 10.0)) continue;
-    last_print = el;
+    if (!show || !cadence.due(std::min(total - 1, before + sh->done.load()), el)) continue;  // the end has its own line below
     // Measured costs so far, the tasks not started and the running ones.
     const long next = std::min(sh->next.load(), n);
     for (long j = 0; j < next; ++j)
@@ -519,30 +519,75 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
     std::fill(queued.begin(), queued.end(), 0);
     for (long j = next; j < n; ++j) ++queued[kind_of[std::size_t(todo[std::size_t(j)])]];
     std::vector<std::pair<std::size_t, double>> busy;
+    std::vector<std::size_t> busy_kinds;
     const std::int64_t now = now_ns();
     for (int w = 0; w < jobs; ++w) {
       long j = slots[w].task.load();
-      if (j >= 0 && j < n) busy.push_back({kind_of[std::size_t(todo[std::size_t(j)])], double(now - slots[w].since.load()) * 1e-9});
+      if (j >= 0 && j < n) {
+        busy.push_back({kind_of[std::size_t(todo[std::size_t(j)])], double(now - slots[w].since.load()) * 1e-9});
+        busy_kinds.push_back(busy.back().first);
+      }
     }
+    // Per kind (est.wall), checked against the run's own rate so far: the larger of the two.
     std::optional<double> left = est.wall(queued, busy, jobs);
-    std::fprintf(stderr, "%s[%ld/%ld] %s elapsed, %s (%d worker%s)%s", tty ? "\r" : "", before + sh->done.load(), total,
-                 fmt_duration(el).c_str(), left ? ("about " + fmt_duration(*left) + " left").c_str() : "time left not known yet",
-                 jobs, jobs == 1 ? "" : "s", tty ? "   " : "\n");
+    if (std::optional<double> by_rate = est.wall_by_rate(queued, busy_kinds, el); left && by_rate) left = std::max(*left, *by_rate);
+    std::fprintf(stderr, "%s[%ld/%ld] %s elapsed, %s (%d worker%s)%s", cadence.begin(), before + sh->done.load(), total,
+                 fmt_duration(el).c_str(), time_left_text(left).c_str(), jobs, jobs == 1 ? "" : "s", cadence.end(false));
     std::fflush(stderr);
   }
   const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long finished = sh->done.load();
-  if (show) std::fprintf(stderr, "%s[%ld/%ld] done in %s\n", tty ? "\r" : "", before + finished, total, fmt_duration(el).c_str());
+  if (show) std::fprintf(stderr, "%s[%ld/%ld] done in %s%s\n", cadence.begin(), before + finished, total, fmt_duration(el).c_str(),
+                        tty ? "\x1b[K" : "");
   if (bad || finished != n)
     throw std::runtime_error("a worker process failed (" + std::to_string(bad) + " of " + std::to_string(jobs) + "); the finished tasks are kept in " +
                              work.string() + " for --resume");
 }
 
+// The scene files behind the rows, for report.html's links (compare/plots/report_html.py):
+// scenes/NAME.json for each generated scene and the failure map's scene (they exist nowhere
+// else), and scenes/index.json, each scene's name -> its file relative to the report folder
+// `out` (a scene file given by --cases or --scenes links to that file: the link holds while the
+// report stays where it was written, beside them).
+void write_scene_files(const fs::path& partial, const fs::path& out, const std::vector<Task>& tasks, const FailureMap* map) {
+  const fs::path dir = partial / "scenes";
+  fs::create_directories(dir);
+  const fs::path out_abs = fs::absolute(out).lexically_normal();
+  nlohmann::ordered_json index = nlohmann::ordered_json::object();
+  auto own_file = [&](const std::string& name, const std::string& text) {
+    write_file(dir / (name + ".json"), text.back() == '\n' ? text : text + "\n");
+    index[name] = "scenes/" + name + ".json";
+  };
+  for (const auto& t : tasks) {
+    if (t.kind != Task::SceneTask) continue;
+    std::error_code ec;
+    if (fs::is_regular_file(t.label, ec)) {
+      const auto doc = nlohmann::json::parse(t.text, nullptr, false);
+      const std::string name = doc.is_object() && doc.contains("name") && doc["name"].is_string() ? doc["name"].get<std::string>()
+                                                                                                : fs::path(t.label).stem().string();
+      index[name] = fs::absolute(t.label).lexically_normal().lexically_relative(out_abs).generic_string();
+    } else if (t.label.find('/') == std::string::npos && t.label.find("..") == std::string::npos) {
+      own_file(t.label, nlohmann::json::parse(t.text).dump(1));
+    }
+  }
+  if (map && !index.contains(map->scene)) own_file(map->scene, map->doc.dump(1));
+  nlohmann::ordered_json j;
+  stamp_format(j, "eccd-report-scenes/1");
+  j["scenes"] = index;
+  write_file(dir / "index.json", j.dump(1) + "\n");
+}
+
 // Runs report_figures.py on DIR. Its stderr is passed on and kept: on failure
 // the error says the script failed, with the tail of its stderr, and says that
 // matplotlib (or numpy) is missing only when that import is what failed.
+void run_script(const fs::path& dir, const std::string& name);
+// report.md and the figures, then report.html from them.
 void run_figures(const fs::path& dir) {
-  fs::path script = fs::path(plots_dir()) / "report_figures.py";
+  run_script(dir, "report_figures.py");
+  run_script(dir, "report_html.py");
+}
+void run_script(const fs::path& dir, const std::string& name) {
+  fs::path script = fs::path(plots_dir()) / name;
   if (!fs::exists(script)) throw std::runtime_error(script.string() + ": the report script is missing (set ECCD_PLOTS_DIR?)");
   std::string cmd = "python3 " + shell_quote(script.string()) + " " + shell_quote(dir.string());
   std::fflush(nullptr);
@@ -590,7 +635,7 @@ bool looks_like_old_report(const fs::path& dir) {
   return !ec;
 }
 
-// Where the output goes, validated before anything is touched: --out PATH;
+// Where the output goes, validated before anything is touched: --out-dir PATH;
 // reports/NAME with --name (SUFFIX appended: a shard's part); without either a
 // new folder reports/run-YYYYMMDD-HHMMSS (UTC, "-2", "-3" ... if taken), so a
 // run never replaces an earlier one, and only an explicit --name default
@@ -598,7 +643,7 @@ bool looks_like_old_report(const fs::path& dir) {
 // reports/run-*SUFFIX.partial. `name` is set to the report's name.
 fs::path output_folder(const ReportArgs& a, const std::string& suffix, std::string& name) {
   if (a.out_given) {
-    check_output_path("--out", a.out);
+    check_output_path("--out-dir", a.out);
     name = a.name_given ? a.name : fs::path(a.out).lexically_normal().filename().string();
     return fs::path(a.out);
   }
@@ -617,7 +662,7 @@ fs::path output_folder(const ReportArgs& a, const std::string& suffix, std::stri
     }
     if (newest.empty())
       throw std::invalid_argument("--resume: nothing to resume: no reports/run-*" + suffix +
-                                  ".partial folder (an interrupted run keeps one; give --name or --out to resume another)");
+                                  ".partial folder (an interrupted run keeps one; give --name or --out-dir to resume another)");
     name = newest.substr(0, newest.size() - suffix.size() - 8);
     return fs::path("reports") / (name + suffix);
   }
@@ -666,7 +711,7 @@ nlohmann::json fcl_meta(const HarnessOptions& h, const std::vector<std::string>&
 // worker files belong to the run it is asked for. "options" are compared key
 // by key (the first difference is named); "tasks_digest" (FNV-1a over every
 // task's kind, label, source and scene text) catches a changed --cases or
-// --scenes folder. Options that do not change a result (--jobs, --name, --out,
+// --scenes folder. Options that do not change a result (--jobs, --name, --out-dir,
 // --no-figures, --quiet) are not in it.
 const char* const kPlanFile = "plan.json";
 
@@ -1003,7 +1048,7 @@ int run_report(const ReportArgs& a) {
       else lines.push_back(l);
     }
   }
-  for (const auto& f : failures) std::fprintf(stderr, "eccd report: failed: %s\n", f.c_str());
+  for (const auto& f : failures) std::fprintf(stderr, "eccd: report: failed: %s\n", f.c_str());
 
   std::vector<std::string> rows, cells;
   for (auto& l : lines) (l[0] == 'R' ? rows : cells).push_back(l.substr(1));
@@ -1074,6 +1119,7 @@ int run_report(const ReportArgs& a) {
     meta["failure_map"] = nullptr;
   }
   write_file(partial / "meta.json", meta.dump(2) + "\n");
+  if (shard_n == 1) write_scene_files(partial, out, tasks, map ? &*map : nullptr);
   if (g_interrupted) interrupted();
   if (shard_n == 1 && !a.no_figures) {
     try {
@@ -1279,7 +1325,7 @@ Command add_report_command(CLI::App& app) {
   auto a = std::make_shared<ReportArgs>();
   // The main job's defaults (scripts/run-main.sh, reports/default): one scene per plan entry, three MPFR
   // precisions and 2 s per floating run, so that the report of every family in both input modes takes
-  // minutes, not an hour, on 2 cores; --count, --mpfr, --budget and --map-size widen it.
+  // minutes, not an hour, on 2 cores; --count, --mpfr-bits, --budget and --map-size widen it.
   a->plan.count = 1;
   a->harness.mpfr_bits = {64, 128, 256};
   a->harness.budget_s = 2;
@@ -1294,23 +1340,25 @@ Command add_report_command(CLI::App& app) {
       "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and in "
       "power form (double), the sampling and marching baselines), each floating one per input mode (--input) and under a "
       "time budget (--budget), against the exact pipeline, and write "
-      "a new folder reports/run-YYYYMMDD-HHMMSS/ (or reports/NAME/ with --name, --out PATH): report.md, results.csv, "
+      "a new folder reports/run-YYYYMMDD-HHMMSS/ (or reports/NAME/ with --name, --out-dir PATH): report.md, results.csv, "
       "failure_map.csv, meta.json and PNG figures. Progress and time left go to stderr (--quiet: none); Ctrl-C keeps "
       "the finished tasks for --resume.");
   auto* s = c.sub;
   auto* name_opt = s->add_option("--name", a->name,
                 "Report name: the output goes to reports/NAME (a plain name: no '/', no '..'; an existing reports/NAME is "
-                "replaced only if an earlier eccd report wrote it). Without --name and --out every run writes a new folder "
+                "replaced only if an earlier eccd report wrote it). Without --name and --out-dir every run writes a new folder "
                 "reports/run-YYYYMMDD-HHMMSS (UTC start time); --name default refreshes the checked-in example reports/default");
-  auto* out_opt = s->add_option("--out", a->out,
+  auto* out_opt = s->add_option("--out-dir", a->out,
                                 "Output folder instead of reports/NAME (replaced only when the run succeeds, and only if an "
                                 "earlier eccd report wrote it); no '..'");
+  auto* old_out_opt = add_old_spelling(s, "--out", "--out", "--out-dir", a->out);
   s->add_option("--seed", a->plan.seed, "Run seed (same seed, same scenes, same numbers apart from timings)")
       ->capture_default_str()->check(check_seed_text);
   s->add_option("--count", a->plan.count, "Generated scenes per dimension x degree x family x motion (x separation)")
       ->capture_default_str()->check(CLI::Range(0, 100000));
   add_plan_options(s, a->plan);
-  s->add_option("--mpfr", a->harness.mpfr_bits, "MPFR precisions in bits")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
+  s->add_option("--mpfr-bits", a->harness.mpfr_bits, "MPFR precisions in bits")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
+  add_old_spelling(s, "--mpfr", "--mpfr", "--mpfr-bits", a->harness.mpfr_bits)->delimiter(',')->check(CLI::Range(53, 65536));
   s->add_option("--input", a->harness.inputs,
                 "Input modes of the floating pipelines, each a row of its own: rounded (the scene's numbers rounded to "
                 "the arithmetic) and prepared (coefficients prepared exactly, then rounded); a solver without input "
@@ -1325,6 +1373,7 @@ Command add_report_command(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--scenes", a->scenes, "Run the scene files under this folder instead of generating scenes");
   s->add_option("--jobs", a->jobs, "Worker processes (default: the number of cores)");
+  add_old_spelling(s, "--threads", "--threads", "--jobs", a->jobs);
   s->add_option("--shard", a->shard, "i/n: run only every n-th task starting at i and write the raw part (results.csv, meta.json) for --merge");
   s->add_option("--merge", a->merge, "Join the part folders written by --shard runs into one report")->expected(1, -1);
   s->add_option("--map-size", a->map_size, "Failure map: n x n cells (units in the last place around the touching input)")
@@ -1335,7 +1384,7 @@ Command add_report_command(CLI::App& app) {
                 "NAME=DIR: your engine's answers as rows ext:NAME in every table and plot, judged against the exact answer "
                 "like eccd's pipelines; DIR holds one answer file per scene, DIR/<scene name>.json, in any form `eccd judge` "
                 "reads (docs/answer-format.md), optionally with \"time_us\"; scenes without a file get no row "
-                "(meta.json counts them). Repeat for several engines. `eccd generate --out DIR` writes the generated "
+                "(meta.json counts them). Repeat for several engines. `eccd generate --out-dir DIR` writes the generated "
                 "scenes for your engine to answer.")
       ->expected(1, -1);
   // Peer pipelines (compare/harness.hpp): certified, and FCL when it is built in.
@@ -1350,10 +1399,10 @@ Command add_report_command(CLI::App& app) {
   });
   s->add_flag("--resume", a->resume,
               "Continue an interrupted run (Ctrl-C, SIGTERM, a crash): reuse the tasks it finished in its NAME.partial folder "
-              "and run the rest. Give the same options (and --name/--out; without them the newest reports/run-*.partial); "
+              "and run the rest. Give the same options (and --name/--out-dir; without them the newest reports/run-*.partial); "
               "a folder of another plan (seed, options, scenes, build) is refused with exit 2");
-  c.run = [a, out_opt, name_opt]() {
-    a->out_given = out_opt->count() > 0;
+  c.run = [a, out_opt, old_out_opt, name_opt]() {
+    a->out_given = out_opt->count() > 0 || old_out_opt->count() > 0;
     a->name_given = name_opt->count() > 0;
     for (const auto& spec : a->externals) {  // checked before any work: a bad spec is exit 2
       ExternalEngine e = parse_external(spec);
@@ -1364,7 +1413,7 @@ Command add_report_command(CLI::App& app) {
     try {
       return a->merge.empty() ? run_report(*a) : run_merge(*a);
     } catch (const Interrupted& e) {
-      std::fprintf(stderr, "\neccd report: %s\n", e.what());
+      std::fprintf(stderr, "\neccd: report: %s\n", e.what());
       return 130;
     }
   };

@@ -1,15 +1,22 @@
 // `eccd table`: every scene of a folder in exact, double (power, Bernstein,
 // scaled Bernstein) and MPFR arithmetic, side by side; '!' marks a floating
-// answer that differs from the exact one.
+// answer that differs from the exact one. Each scene's row is printed as soon
+// as the scene is done (--json: JSON Lines, one eccd-table-row/1 object per
+// scene); progress and the time left go to stderr (app/time_left.hpp).
 #include "app/commands.hpp"
+#include "app/option_names.hpp"
 #include "app/scene_files.hpp"
+#include "app/time_left.hpp"
 #include "api/answer_difference.hpp"
 #include "api/solve.hpp"
 #include "io/scene_reader.hpp"
 #include "io/solution_json.hpp"
 #include "kernel/budget.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -23,6 +30,9 @@ namespace fs = std::filesystem;
 namespace eccd {
 
 namespace {
+
+// One scene's line of `eccd table --json` (JSON Lines: one object per line, printed when the scene is done).
+constexpr const char* kTableRowFormat = "eccd-table-row/1";
 
 std::string short_answer(const Solution& r) {
   std::ostringstream o;
@@ -62,12 +72,36 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
   cols.push_back({"double/bernstein", col("double", Basis::bernstein)});
   cols.push_back({"double/scaled", col("double", Basis::scaled_bernstein)});
   for (int b : mpfr_bits) cols.push_back({"mpfr:" + std::to_string(b), col("mpfr:" + std::to_string(b), Basis::bernstein)});
-  nlohmann::json all = nlohmann::json::array();
-  std::vector<std::vector<std::string>> rows;
+  // Each scene's row goes to stdout as soon as it is finished (a line of the table, or with --json one JSON
+  // object per line, JSON Lines); progress goes to stderr. Column widths are fixed up front so that rows
+  // can be printed one by one: the longest file name, and each column at least as wide as its label.
+  std::vector<std::string> head{"scene"};
+  for (auto& c : cols) head.push_back(c.label);
+  std::vector<std::size_t> w(head.size(), 0);
+  for (std::size_t i = 0; i < head.size(); ++i) w[i] = std::max<std::size_t>(head[i].size(), i == 0 ? 0 : 22);
+  for (const auto& f : files) w[0] = std::max(w[0], f.filename().string().size());
+  auto line = [&](const std::vector<std::string>& r) {
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      std::cout << r[i];
+      if (i + 1 < r.size()) std::cout << std::string(r[i].size() < w[i] ? w[i] - r[i].size() + 2 : 2, ' ');
+    }
+    std::cout << std::endl;  // flushed: a reader of the pipe sees each row when it is done
+  };
+  if (!json) line(head);
+  const bool tty = isatty(2);
+  ProgressCadence cadence(tty, long(files.size()));
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   std::size_t done = 0;
   for (const auto& f : files) {
+    if (!quiet() && tty) {  // on a terminal: which scene is running now
+      std::fprintf(stderr, "\r[%zu/%zu] %s ...\x1b[K", done, files.size(), f.filename().string().c_str());
+      std::fflush(stderr);
+    }
     std::vector<std::string> row{f.filename().string()};
     nlohmann::json js;
+    stamp_format(js, kTableRowFormat);
+    js["folder"] = dir;
     js["file"] = f.string();
     std::optional<Solution> exact;
     try {
@@ -96,37 +130,22 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
       js["error"] = e.what();
       row.push_back(std::string("bad scene: ") + e.what());
     }
-    all.push_back(js);
-    rows.push_back(row);
     ++done;
-    if (!quiet()) {
-      std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), f.filename().string().c_str());
+    if (!quiet() && tty) std::fprintf(stderr, "\r\x1b[K");  // the row replaces the progress line on a shared terminal
+    if (json) std::cout << js.dump() << std::endl;
+    else line(row);
+    const double el = seconds();
+    if (!quiet() && cadence.due(long(done), el)) {
+      std::optional<double> left;
+      if (done < files.size()) left = el / double(done) * double(files.size() - done);  // the measured rate per scene
+      else left = 0.0;
+      std::fprintf(stderr, "%s[%zu/%zu] %s, %.0f s elapsed, %s%s", cadence.begin(), done, files.size(), f.filename().string().c_str(), el,
+                   time_left_text(left).c_str(), tty ? "" : "\n");
       std::fflush(stderr);
     }
   }
-  if (!quiet()) std::fprintf(stderr, "\n");
-  if (json) {
-    nlohmann::json j;
-    stamp_format(j, "eccd-table/1");
-    j["folder"] = dir;
-    j["scenes"] = all;
-    std::cout << j.dump(2) << "\n";
-    return 0;
-  }
-  std::vector<std::string> head{"scene"};
-  for (auto& c : cols) head.push_back(c.label);
-  std::vector<std::size_t> w(head.size(), 0);
-  for (std::size_t i = 0; i < head.size(); ++i) w[i] = head[i].size();
-  for (auto& r : rows) for (std::size_t i = 0; i < r.size() && i < w.size(); ++i) w[i] = std::max(w[i], r[i].size());
-  auto line = [&](const std::vector<std::string>& r) {
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      std::cout << r[i];
-      if (i + 1 < r.size()) std::cout << std::string(w[i] - r[i].size() + 2, ' ');
-    }
-    std::cout << "\n";
-  };
-  line(head);
-  for (auto& r : rows) line(r);
+  if (!quiet() && tty) std::fprintf(stderr, "\n");
+  if (json) return 0;
   std::cout << "\n'!' marks a floating answer that differs from the exact one (api/answer_difference.hpp: collides,\n"
                "an interval missed, false, split or merged, an end, the first contact or a contact more than 1e-6 away);\n"
                "3D scenes: floating columns run 001's Bezier method with f built in power or Bernstein form\n"
@@ -147,8 +166,9 @@ Command add_table_command(CLI::App& app) {
   Command c;
   c.sub = app.add_subcommand("table", "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR arithmetic and print a side-by-side table.");
   c.sub->add_option("DIR", args->dir, "Folder of scene files")->capture_default_str();
-  c.sub->add_option("--mpfr", args->mpfr_bits, "MPFR precisions in bits (repeatable, or a comma list: 64,128)")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
-  c.sub->add_flag("--json", args->json, "Print all results as one JSON object instead of the table (format eccd-table/1; \"scenes\": one object per scene file with a solution per column)");
+  c.sub->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions in bits (repeatable, or a comma list: 64,128)")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
+  add_old_spelling(c.sub, "--mpfr", "--mpfr", "--mpfr-bits", args->mpfr_bits)->delimiter(',')->check(CLI::Range(53, 65536));
+  c.sub->add_flag("--json", args->json, "JSON Lines instead of the table: one object per scene file, printed as soon as it is solved (format eccd-table-row/1: folder, file, and a solution per column, keyed by the column's label)");
   c.run = [args]() { return run_table(args->dir, args->mpfr_bits, args->json); };
   return c;
 }

@@ -21,10 +21,13 @@
 // running task's expected rest.
 //
 // Pure: no clock, no I/O (tests/app/test_cli_report.cpp checks it on a
-// synthetic sequence of costs). No paper section.
+// synthetic sequence of costs; tests/app/test_progress.cpp the rate and the
+// cadence below). No paper section.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -44,6 +47,21 @@ class TimeLeft {
   }
 
   bool measured() const { return measured_prior_ > 0; }
+
+  // Wall seconds left from the measured rate of the whole run: the prior
+  // units finished per wall second so far (`elapsed_s` since the start)
+  // against the prior units not finished (queued, and half of each running
+  // task). nullopt before any task has finished. A check on wall(): when
+  // the tasks measured so far are cheap kinds that calibrate the priors too
+  // low, the run's own rate still says how fast work gets done.
+  std::optional<double> wall_by_rate(const std::vector<long>& queued, const std::vector<std::size_t>& running_kinds,
+                                     double elapsed_s) const {
+    if (!measured() || elapsed_s <= 0) return std::nullopt;
+    double rest = 0;
+    for (std::size_t k = 0; k < queued.size(); ++k) rest += double(queued[k]) * prior_[k];
+    for (std::size_t kind : running_kinds) rest += 0.5 * prior_[kind];
+    return rest / (measured_prior_ / elapsed_s);
+  }
 
   // Expected cost in seconds of one task of kind k (needs measured()).
   double cost(std::size_t kind) const {
@@ -81,6 +99,57 @@ class TimeLeft {
   std::vector<double> prior_, sum_;
   std::vector<long> n_;
   double measured_s_ = 0, measured_prior_ = 0;
+};
+
+// "about 3 min 5 s left", or "time left unknown" while there is no measured rate.
+inline std::string time_left_text(std::optional<double> seconds) {
+  if (!seconds) return "time left unknown";
+  const long s = std::lround(std::max(0.0, *seconds));
+  std::string t;
+  if (s >= 3600) t = std::to_string(s / 3600) + " h " + std::to_string(s % 3600 / 60) + " min";
+  else if (s >= 60) t = std::to_string(s / 60) + " min " + std::to_string(s % 60) + " s";
+  else t = std::to_string(s) + " s";
+  return "about " + t + " left";
+}
+
+// When a long command prints its progress line on stderr. On a terminal the
+// line is redrawn in place ('\r', at most every `min_gap_s` seconds). In a log
+// file (not a terminal) there is no redrawing: a new line each time the share
+// done passes the next multiple of `step_percent`, or after `heartbeat_s`
+// seconds without a line, and one at the end. Pure: the caller passes the
+// clock and whether stderr is a terminal (isatty(2)).
+class ProgressCadence {
+ public:
+  ProgressCadence(bool tty, long total, double step_percent = 5, double min_gap_s = 0.5, double heartbeat_s = 120)
+      : tty_(tty), total_(std::max(1L, total)), step_(step_percent), gap_(min_gap_s), heartbeat_(heartbeat_s) {}
+
+  // true: print a line now (and remember that it was printed).
+  bool due(long done, double elapsed_s) {
+    bool print;
+    if (done >= total_) print = !ended_;
+    else if (tty_) print = elapsed_s - last_s_ >= gap_;
+    else print = std::floor(100.0 * double(done) / double(total_) / step_) > std::floor(100.0 * double(last_done_) / double(total_) / step_) ||
+                 elapsed_s - last_s_ >= heartbeat_ || last_s_ < 0;
+    if (print) {
+      last_s_ = elapsed_s;
+      last_done_ = done;
+      ended_ = done >= total_;
+    }
+    return print;
+  }
+  // What goes before a line ('\r' redraws on a terminal) and after it ("\n" in a log; on a
+  // terminal the rest of the old line is cleared and the cursor stays for the next redraw).
+  const char* begin() const { return tty_ ? "\r" : ""; }
+  const char* end(bool last) const { return last || !tty_ ? (tty_ ? "\x1b[K\n" : "\n") : "\x1b[K"; }
+  bool tty() const { return tty_; }
+
+ private:
+  bool tty_;
+  long total_;
+  double step_, gap_, heartbeat_;
+  double last_s_ = -1;
+  long last_done_ = 0;
+  bool ended_ = false;
 };
 
 }  // namespace eccd

@@ -237,6 +237,16 @@ Solution solution_from_json(const json& j, const std::string& label) {
   return s;
 }
 
+namespace {
+// "yes" when a collision is proved; "no" only when no instant is left undecided: an undecided
+// instant may hide a touch, so then no collision is claimed either way.
+std::string collides_text(const Answer& a) {
+  if (a.collides) return "yes";
+  if (a.undecided.empty()) return "no";
+  return "unknown (no collision proved; " + std::to_string(a.undecided.size()) + " instant(s) undecided, below)";
+}
+}  // namespace
+
 std::string summary_text(const Solution& s) {
   std::ostringstream o;
   auto inst = [](const Instant& i) {
@@ -250,7 +260,7 @@ std::string summary_text(const Solution& s) {
   if (s.answer.independent) {  // independent motions: A(s), B(t) (scene-format.md, "Independent motions")
     o << "scene " << s.scene << " (" << s.dim << "D, independent motions A(s), B(t)), arithmetic " << s.arith.name()
       << (s.certified ? ", certified" : ", not certified") << ", method " << s.method << "\n";
-    o << "  collides: " << (s.answer.collides ? "yes" : "no") << "\n";
+    o << "  collides: " << collides_text(s.answer) << "\n";
     for (const auto& [a, b] : s.answer.s_intervals) o << "  s-interval (A's path inside B's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& [a, b] : s.answer.t_intervals) o << "  t-interval (B's path inside A's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& u : s.answer.undecided) o << "  undecided near " << u.approx << "\n";
@@ -268,13 +278,15 @@ std::string summary_text(const Solution& s) {
   // Say what the polynomial is: Δ, psc_k, or for the Bézier method F(u,t).
   std::string poly = s.projection == "bezier" ? "F(u,t) of degree " + std::to_string(s.projection_degree) + " in t"
                      : s.method == "cd-disc-cycloidal" ? s.projection + " (cycloidal: not a polynomial)"
-                                              : s.projection + " degree " + std::to_string(s.projection_degree);
+                     : s.projection_degree < 0       ? "no polynomial in t (method " + s.method + " tests instants only)"
+                                                     : s.projection + " degree " + std::to_string(s.projection_degree);
   o << "  status at t = 0: " << to_string(s.status_at_0) << "; " << poly
     << (!s.projection_identically_zero ? ""
         : s.projection.rfind("psc_", 0) == 0 ? " (the discriminant vanishes identically)"
                                               : " (identically zero)")
-    << ", " << s.critical.size() << " root(s) in [0, 1]\n";
-  o << "  collides: " << (s.answer.collides ? "yes" : "no") << "\n";
+    << ", " << s.critical.size() << (s.projection_degree < 0 && s.projection != "bezier" && s.method != "cd-disc-cycloidal"
+                                         ? " change(s) of status between samples\n" : " root(s) in [0, 1]\n");
+  o << "  collides: " << collides_text(s.answer) << "\n";
   if (!two_d_partial)
     for (const auto& [a, b] : s.answer.intervals) {
       const bool touch = instant_to_json(a) == instant_to_json(b);

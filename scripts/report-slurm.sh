@@ -12,7 +12,7 @@
 #   report-slurm.sh merge N OUT OPTIONS   (the merge: OUT from OUT.parts/shard-0..N-1)
 # Each task uses SLURM_CPUS_PER_TASK worker processes (--jobs). Resources: set
 # SBATCH_OPTS, e.g. SBATCH_OPTS="--partition=short --time=02:00:00 --cpus-per-task=8".
-# The options (plan, --seed, --mpfr, --budget, ...) go to every task and must be
+# The options (plan, --seed, --mpfr-bits, --budget, ...) go to every task and must be
 # the same for all of them (--merge checks); --no-figures goes to the merge too.
 # Environment: ECCD (the eccd binary; default build/eccd of this checkout, else
 # eccd on PATH), SBATCH_OPTS (more sbatch options for both jobs).
@@ -50,14 +50,14 @@ case "$mode" in
     ;;
   task)
     i=${SLURM_ARRAY_TASK_ID:?"task mode runs inside a Slurm array task (SLURM_ARRAY_TASK_ID unset)"}
-    exec "$eccd" report --shard "$i/$n" --jobs "${SLURM_CPUS_PER_TASK:-1}" --out "$parts/shard-$i" "$@"
+    exec "$eccd" report --shard "$i/$n" --jobs "${SLURM_CPUS_PER_TASK:-1}" --out-dir "$parts/shard-$i" "$@"
     ;;
   merge)
     merge_opts=()
     for o in "$@"; do [ "$o" = --no-figures ] && merge_opts+=(--no-figures); done
     shards=()
     for ((i = 0; i < n; ++i)); do shards+=("$parts/shard-$i"); done
-    exec "$eccd" report --merge "${shards[@]}" --out "$out" "${merge_opts[@]}"
+    exec "$eccd" report --merge "${shards[@]}" --out-dir "$out" "${merge_opts[@]}"
     ;;
   *) usage ;;
 esac

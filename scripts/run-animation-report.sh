@@ -15,7 +15,7 @@
 # GJK_TIGHT (default 1e-12): FCL's tight gjk_tolerance for Table 2 (`eccd fcl --gjk-tolerance`), next to
 # FCL's default (1e-6).
 # Both cores: single-pair runs go two at a time (with/without planes; certified and double), the boxers run with
-# --threads 2 (THREADS); per-frame times are each run's own thread time. Progress of every run on stderr, each
+# --jobs 2 (THREADS); per-frame times are each run's own thread time. Progress of every run on stderr, each
 # line prefixed with the run's name (QUIET=1: none).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -58,11 +58,11 @@ run() {  # name file arith [extra...]: eccd animate, its progress on stderr pref
 for rate in 0.1 0.5 1; do
   python3 "$GEN" table1 --rate "$rate" --frames "$T1_FRAMES" --seed 1 "$G/table1-$rate.anim.json"
   python3 "$GEN" table1 --rate "$rate" --frames "$T1_CERT_FRAMES" --seed 1 "$G/table1-$rate-cert.anim.json"
-  run "table1-$rate-double" "$G/table1-$rate.anim.json" double --threads 1 &
-  run "table1-$rate-double-noplanes" "$G/table1-$rate.anim.json" double --threads 1 --no-planes
+  run "table1-$rate-double" "$G/table1-$rate.anim.json" double --jobs 1 &
+  run "table1-$rate-double-noplanes" "$G/table1-$rate.anim.json" double --jobs 1 --no-planes
   wait
-  run "table1-$rate-certified" "$G/table1-$rate-cert.anim.json" certified --threads 1 &
-  run "table1-$rate-certified-noplanes" "$G/table1-$rate-cert.anim.json" certified --threads 1 --no-planes
+  run "table1-$rate-certified" "$G/table1-$rate-cert.anim.json" certified --jobs 1 &
+  run "table1-$rate-certified-noplanes" "$G/table1-$rate-cert.anim.json" certified --jobs 1 --no-planes
   wait
 done
 for rate in 0.1 0.5 1; do
@@ -86,8 +86,8 @@ fcl_frames() {  # VARIANT N [TOL]: eccd fcl on every frame's scene, one JSON lin
 for v in main:5.49 graze:5.4999999; do
   name=${v%%:*} radius=${v#*:}
   python3 "$GEN" table2 --frames "$T2_FRAMES" --radius "$radius" --scenes "$G/table2-$name-scenes" "$G/table2-$name.anim.json"
-  run "table2-$name-certified" "$G/table2-$name.anim.json" certified --all-intervals --threads 1 &
-  run "table2-$name-double" "$G/table2-$name.anim.json" double --all-intervals --threads 1
+  run "table2-$name-certified" "$G/table2-$name.anim.json" certified --all-intervals --jobs 1 &
+  run "table2-$name-double" "$G/table2-$name.anim.json" double --all-intervals --jobs 1
   wait
   for f in certified double; do
     [ -s "$G/table2-$name-$f.json" ] || { echo "run-animation-report: table2-$name-$f failed" >&2; exit 1; }
@@ -107,13 +107,13 @@ for v in main:5.49 graze:5.4999999; do
 done
 python3 "$GEN" boxers --frames "$BOX_FRAMES" "$G/boxers.anim.json"
 python3 "$GEN" boxers --frames "$BOX_CERT_FRAMES" "$G/boxers-cert.anim.json"
-run boxers-double "$G/boxers.anim.json" double --threads "$THREADS"
-run boxers-certified "$G/boxers-cert.anim.json" certified --threads "$THREADS"
+run boxers-double "$G/boxers.anim.json" double --jobs "$THREADS"
+run boxers-certified "$G/boxers-cert.anim.json" certified --jobs "$THREADS"
 # double against certified on the same frames: double on the certified file's frames
-if [ "$BOX_CERT_FRAMES" != "$BOX_FRAMES" ]; then run boxers-double-certframes "$G/boxers-cert.anim.json" double --threads "$THREADS"; fi
+if [ "$BOX_CERT_FRAMES" != "$BOX_FRAMES" ]; then run boxers-double-certframes "$G/boxers-cert.anim.json" double --jobs "$THREADS"; fi
 # the same motion sampled 4 times as finely (double): how the kept plane's share depends on the motion per frame
 python3 "$GEN" boxers --frames "$BOX_FRAMES" --subdivide 4 "$G/boxers-sub4.anim.json"
-run boxers-sub4-double "$G/boxers-sub4.anim.json" double --threads "$THREADS"
+run boxers-sub4-double "$G/boxers-sub4.anim.json" double --jobs "$THREADS"
 end=$(date +%s)
 python3 scripts/animation_report.py "$G" "$OUT" --seconds $((end - start)) \
   --sizes "T1_FRAMES=$T1_FRAMES T1_CERT_FRAMES=$T1_CERT_FRAMES T2_FRAMES=$T2_FRAMES BOX_FRAMES=$BOX_FRAMES BOX_CERT_FRAMES=$BOX_CERT_FRAMES" \

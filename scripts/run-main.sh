@@ -7,6 +7,10 @@
 # refreshes the checked-in example reports/default/. After Ctrl-C or a crash,
 # the same arguments plus `--resume` continue the run (eccd prints the command).
 set -euo pipefail
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
+  printf '%b\n' "usage: bash scripts/run-main.sh [eccd report OPTIONS]\n  installs what is missing, builds, and writes the robustness report into a new reports/run-YYYYMMDD-HHMMSS/\n  (report.html, report.md, results.csv, figures); OPTIONS go to eccd report (build/eccd report --help)"
+  exit 0
+fi
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh
 rc=0

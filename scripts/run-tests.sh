@@ -4,6 +4,10 @@
 # The suite includes `eccd regress cases/ --certify` over the whole corpus and
 # the metamorphic tests over generated scenes; their seeds are printed at the end.
 set -euo pipefail
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
+  printf '%b\n' "usage: bash scripts/run-tests.sh\n  installs what is missing, builds, and runs the whole test suite (CTest + Catch2)"
+  exit 0
+fi
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"

@@ -829,9 +829,20 @@ def fig_misclass_vs_d(data, path):
     dims = [dim for dim in data.dims if data.nearmiss_pipelines(dim)]
     if not dims:
         return None
-    rows_spec = []  # (dim, pipelines of this row of panels)
+    # A pipeline never misclassified and never undecided at any d draws two flat lines at 0: it is named in
+    # the caption instead of taking panels (FCL at near-miss separations: it always says separate).
+    rows_spec, flat = [], []  # (dim, pipelines of this row of panels); (dim, pipeline) left out as flat
     for dim in dims:
-        for part in chunks(data.nearmiss_pipelines(dim)):
+        nm = data.nearmiss_rows(dim)
+        shown = []
+        for p in data.nearmiss_pipelines(dim):
+            rs = [r for r in nm if r["pipeline"] == p]
+            s_ = summarize(rs) if rs else None
+            if s_ and s_["mis"] == 0 and s_["und"] == 0:
+                flat.append((dim, p))
+            else:
+                shown.append(p)
+        for part in chunks(shown):
             rows_spec.append((dim, part))
     fig, axes = _grid(len(rows_spec), 2, width=6.0, height=5.6)
     for i, (dim, pl) in enumerate(rows_spec):
@@ -861,9 +872,16 @@ def fig_misclass_vs_d(data, path):
             ax.grid(True, alpha=0.3)
             _legend(ax, outside="below")
     _save(fig, path)
+    flat_note = ""
+    if flat:
+        by_dim = {}
+        for dim, p in flat:
+            by_dim.setdefault(dim, []).append(p)
+        flat_note = (" Never misclassified and never undecided at any d, so not drawn: "
+                     + "; ".join(f"{dim}D {', '.join(ps)}" for dim, ps in by_dim.items()) + ".")
     return ("Near-miss family, all degrees pooled: share of scenes misclassified (false positive or false negative, "
             "left) and undecided (right) against the separation d; one row of panels per dimension (more rows when "
-            "a dimension has more than 8 pipelines); identical series are one legend entry.")
+            "a dimension has more than 8 pipelines drawn); identical series are one legend entry." + flat_note)
 
 
 def fig_min_bits(data, path, minbits):
@@ -939,23 +957,32 @@ def fig_time(data, path):
     dims = [dim for dim in data.dims if any(r["time_us"] is not None for r in data.sel(dim=dim))]
     if not dims:
         return None
-    layout = []  # per dim: list of (title, pipelines)
+    # Two panels per dimension, at most 8 series each: eccd's arithmetics, each pooled over its bases and
+    # methods (the time of each basis is in the tables: *Bernstein versus power*), and the baselines and other
+    # engines with exact for reference.
+    layout = []  # per dim: list of (title, series specs); a spec: (label, style pipeline, pipelines pooled)
     for dim in dims:
         pl = data.pipelines(dim)
+        grid = [p for p in pl if data.pinfo[p][0] == "double" and data.pinfo[p][3] in ("sampling", "marching")]
+        ref = [p for p in pl if data.pinfo[p][0] == "exact"]
+        own = [("exact", ref[0], ref)] if ref else []
+        own += [(p, p, [p]) for p in pl if data.pinfo[p][0] == "certified"]
+        dbl = [p for p in pl if data.pinfo[p][0] == "double" and p not in grid]
+        if dbl:
+            own.append((f"double ({len(dbl)} pooled)" if len(dbl) > 1 else dbl[0], dbl[0], dbl))
+        levels = sorted({data.pinfo[p][1] for p in pl if data.pinfo[p][0] == "mpfr"})
+        for b in levels:
+            ps = [p for p in pl if data.pinfo[p][0] == "mpfr" and data.pinfo[p][1] == b]
+            own.append((f"mpfr:{b} ({len(ps)} pooled)" if len(ps) > 1 else ps[0], ps[0], ps))
+        peers = [(p, p, [p]) for p in grid] + [(p, p, [p]) for p in pl if data.pinfo[p][0] in ("fcl", "external")]
         panels = []
-        first = [p for p in pl if data.pinfo[p][0] in ("double", "exact")]
-        others = [p for p in pl if data.pinfo[p][0] in ("certified", "fcl", "external")]
-        for k, part in enumerate(chunks(first)):
-            panels.append((f"{dim}D: double and exact" + (f" ({k + 1})" if len(first) > MAX_SERIES else ""), part))
-        for (basis, method), by_bits in data.mpfr_groups(dim).items():
-            ps = [by_bits[b] for b in sorted(by_bits)]
-            for k, part in enumerate(chunks(ps)):
-                panels.append((f"{dim}D: MPFR, {group_name(basis, method)}"
-                               + (f" ({k + 1})" if len(ps) > MAX_SERIES else ""), part))
-        if others:
-            ref = [p for p in first if data.pinfo[p][0] == "exact"]
-            for k, part in enumerate(chunks(others, MAX_SERIES - len(ref))):
-                panels.append((f"{dim}D: other engines (exact for reference)", ref + part))
+        for k, part in enumerate(chunks(own)):
+            panels.append((f"{dim}D: eccd's arithmetics" + (f" ({k + 1})" if len(own) > MAX_SERIES else ""), part))
+        if peers:
+            ex = own[:1] if ref else []
+            for k, part in enumerate(chunks(peers, MAX_SERIES - len(ex))):
+                panels.append((f"{dim}D: baselines and other engines (exact for reference)"
+                               + (f" ({k + 1})" if len(peers) > MAX_SERIES - len(ex) else ""), ex + part))
         layout.append((dim, [pn for pn in panels if pn[1]]))
     ncol = max(len(p) for _, p in layout)
     fig, axes = _grid(len(layout), ncol, width=5.4, height=4.0)
@@ -965,15 +992,16 @@ def fig_time(data, path):
             if j >= len(panels):
                 ax.axis("off")
                 continue
-            title, pl = panels[j]
+            title, specs = panels[j]
             series = []
-            for p in pl:
+            for label, style, pooled in specs:
                 pts = {}
-                for r in data.sel(dim=dim, pipeline=p):
-                    if r["outcome"] != "error" and r["time_us"] is not None and r["time_us"] > 0:
-                        pts.setdefault(r["degree"], []).append(r["time_us"])
+                for p in pooled:
+                    for r in data.sel(dim=dim, pipeline=p):
+                        if r["outcome"] != "error" and r["time_us"] is not None and r["time_us"] > 0:
+                            pts.setdefault(r["degree"], []).append(r["time_us"])
                 degs = sorted(pts)
-                series.append({"label": p, "pipeline": p, "xs": degs,
+                series.append({"label": label, "pipeline": style, "xs": degs,
                                "ys": [float(statistics.median(pts[g])) for g in degs]})
             plot_series(ax, name, title, data, series)
             ax.set_yscale("log")
@@ -987,14 +1015,15 @@ def fig_time(data, path):
     for i in range(len(layout)):
         used = [ax for ax in axes[i] if ax.get_visible() and ax.lines]
         if used:
-            lo = min(ax.get_ylim()[0] for ax in used)
-            hi = max(ax.get_ylim()[1] for ax in used)
+            # from the data, with room on the log scale so that no marker is cut at the top or bottom
+            ys = [y for ax in used for line in ax.lines for y in line.get_ydata() if y > 0]
+            lo, hi = (min(ys) / 2.5, max(ys) * 2.5) if ys else (min(ax.get_ylim()[0] for ax in used), max(ax.get_ylim()[1] for ax in used))
             for ax in used:
                 ax.set_ylim(lo, hi)
     _save(fig, path)
     return ("Median wall time of one query per motion degree (log scale, one y range per dimension), rows that ended "
-            "in an error left out; panels: double and exact, then MPFR per basis, then other engines (certified, "
-            "FCL, external) next to exact.")
+            "in an error left out; left: eccd's arithmetics, each pooled over its bases and methods (per basis: "
+            "*Bernstein versus power*); right: the grid baselines, FCL and external engines next to exact.")
 
 
 FM_COLORS = {"separate": "#9ecae1", "touching": "#fdd835", "colliding": "#e53935", "undecided": "#9e9e9e",
@@ -1118,6 +1147,24 @@ def scenes_of(rows):
     return len({r["scene"] for r in rows})
 
 
+def row_counts(data):
+    """The one account of the rows, for the verdict and *What was run*: all rows of results.csv, those judged
+    against a ground truth (the rest: ground-truth rows themselves and rows of scenes without one), and those of
+    the input mode the sections show."""
+    total = getattr(data, "csv_rows", len(data.all_rows))
+    judged = len(data.all_rows)
+    parts = [f"{judged} judged against a ground truth"]
+    if getattr(data, "truth_rows", 0):
+        parts.append(f"{data.truth_rows} the ground truth itself (a cycloidal scene's certified answer)")
+    nt = total - judged - getattr(data, "truth_rows", 0)
+    if nt > 0:
+        parts.append(f"{nt} of scenes without a ground truth")
+    text = f"{total} rows: " + ", ".join(parts)
+    if len(data.rows) != judged:
+        text += f"; {len(data.rows)} of them in input mode *{getattr(data, 'primary_input', 'prepared')}*, the mode of the sections below"
+    return text
+
+
 def section_what_was_run(data):
     m = data.meta
     mach = m["machine"]
@@ -1143,7 +1190,7 @@ def section_what_was_run(data):
     out.append(f"- Version: {m['version']}" + (f" (git {rev})" if rev and rev != m["version"] else ""))
     out.append(f"- Started: {m['started']}")
     out.append(f"- Wall time: {fmt_seconds(m['wall_seconds'])} in {m['shards']} shard{'s' if m['shards'] != 1 else ''}")
-    sc = f"- Scenes: {nscenes} in results.csv, {len(data.rows)} rows"
+    sc = f"- Scenes: {scenes_of(data.all_rows)} in results.csv, {row_counts(data)}"
     if m["scene_count"] != nscenes + len(getattr(data, "no_truth", {})):
         sc += f" (meta.json says {m['scene_count']} scenes)"
     out.append(sc)
@@ -1385,7 +1432,7 @@ def section_verdict(data, minbits):
     nscenes = scenes_of(data.all_rows)
     mode = data.primary_input
     out = ["## Verdict", "",
-           f"Computed from results.csv ({nscenes} scenes, {len(data.all_rows)} rows). A pipeline is *trusted* where "
+           f"Computed from results.csv: {nscenes} scenes, {row_counts(data)}. A pipeline is *trusted* where "
            f"it is never confidently wrong (no false positive or false negative against the exact answer); an "
            f"*undecided* answer is honest and counted as the share it does not decide. *Double* means the "
            f"error-bounded double pipelines: 2D power / Bernstein / scaled-Bernstein (CD-DISC), 3D Bézier (both "
@@ -2345,6 +2392,8 @@ def main(argv):
     # Issue 20: rows of scenes without ground truth, and the certified row that IS a cycloidal scene's ground truth
     # (compared with itself), are kept out of every table; the scenes without ground truth are counted apart.
     no_truth = {}
+    csv_rows = len(all_rows)
+    truth_rows = sum(1 for r in all_rows if r["outcome"] != NO_TRUTH and (r["reason"] or "").startswith("ground truth:"))
     for r in all_rows:
         if r["outcome"] == NO_TRUTH:
             no_truth.setdefault(r["scene"], r["reason"] or "")
@@ -2373,6 +2422,7 @@ def main(argv):
     data = Data(rows, pinfo, meta, fmap)
     data.all_rows, data.primary_input, data.input_modes = all_rows, primary, modes
     data.no_truth = no_truth
+    data.csv_rows, data.truth_rows = csv_rows, truth_rows
     data.all_pinfo = all_pinfo
     data.all_order = [p for p in data.order if p in all_pinfo] + [p for p in dict.fromkeys(r["pipeline"] for r in all_rows)
                                                                   if p not in data.order]

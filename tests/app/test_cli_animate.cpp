@@ -46,7 +46,7 @@ TEST_CASE("eccd animate --json prints the animation answer object", "[app][cli][
     last_frame = e["frame"].get<std::size_t>();
   }
   // double: no brackets
-  Run d = run_eccd("animate " + swarm() + " --arith double --json --quiet --threads 1");
+  Run d = run_eccd("animate " + swarm() + " --arith double --json --quiet --jobs 1");
   REQUIRE(d.code == 0);
   json dj = json::parse(d.out);
   REQUIRE(dj["arithmetic"] == "double");

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
+#include <vector>
 #include <string>
 
 using namespace eccd::clitest;
@@ -96,20 +98,24 @@ TEST_CASE("eccd solve warns about options the combination ignores", "[cli][conve
   CHECK(fc.err.find("warning: --first-contact is ignored in 2D") != std::string::npos);
 }
 
-TEST_CASE("eccd table --mpfr takes a comma list", "[cli][conventions]") {
+TEST_CASE("eccd table --mpfr-bits takes a comma list", "[cli][conventions]") {
   TempDir t;
   fs::copy_file(kScene2d, t.path / "example2.json");
-  Run r = run_eccd("table " + q(t.str()) + " --mpfr 64,128 --json", 120);
+  Run r = run_eccd("table " + q(t.str()) + " --mpfr-bits 64,128 --json", 120);
   REQUIRE(r.code == 0);
-  auto top = nlohmann::json::parse(r.out);
-  CHECK(top["format"] == "eccd-table/1");
-  CHECK(top.contains("version"));
-  auto j = top["scenes"];
-  REQUIRE(j.size() == 1);
-  CHECK(j[0].contains("mpfr:64"));
-  CHECK(j[0].contains("mpfr:128"));
-  CHECK(j[0]["mpfr:64"]["arith"] == "mpfr:64");
-  CHECK(j[0]["mpfr:128"]["precision_bits"] == 128);
+  // JSON Lines: one object per scene, printed when the scene is done
+  std::istringstream lines(r.out);
+  std::string line;
+  std::vector<nlohmann::json> rows;
+  while (std::getline(lines, line))
+    if (!line.empty()) rows.push_back(nlohmann::json::parse(line));
+  REQUIRE(rows.size() == 1);
+  CHECK(rows[0]["format"] == "eccd-table-row/1");
+  CHECK(rows[0].contains("version"));
+  CHECK(rows[0].contains("mpfr:64"));
+  CHECK(rows[0].contains("mpfr:128"));
+  CHECK(rows[0]["mpfr:64"]["arith"] == "mpfr:64");
+  CHECK(rows[0]["mpfr:128"]["precision_bits"] == 128);
 }
 
 TEST_CASE("eccd solve - reads the scene from standard input", "[cli][conventions]") {

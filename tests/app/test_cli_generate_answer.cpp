@@ -76,11 +76,11 @@ TEST_CASE("eccd generate --answer stores the exact answer, and without it there 
   int with_collision = 0, without = 0;
   for (const auto& plan : plans) {
     INFO(plan);
-    REQUIRE(run(exe + " generate --out " + (t.path / "with").string() + plan + " --answer --json", out) == 0);
+    REQUIRE(run(exe + " generate --out-dir " + (t.path / "with").string() + plan + " --answer --json", out) == 0);
     auto with_doc = nlohmann::json::parse(out);
     CHECK(with_doc["format"] == "eccd-generate/1");
     auto with_files = with_doc["files"];
-    REQUIRE(run(exe + " generate --out " + (t.path / "without").string() + plan + " --json", out) == 0);
+    REQUIRE(run(exe + " generate --out-dir " + (t.path / "without").string() + plan + " --json", out) == 0);
     auto without_files = nlohmann::json::parse(out)["files"];
     REQUIRE(with_files.size() == without_files.size());
     REQUIRE(!with_files.empty());
@@ -99,10 +99,10 @@ TEST_CASE("eccd generate --answer stores the exact answer, and without it there 
   CHECK(with_collision > 0);  // colliding and touch scenes
   CHECK(without > 0);         // free and near-miss scenes
   // Existing files are not overwritten without --force, with or without --answer.
-  CHECK(run(exe + " generate --out " + (t.path / "without").string() + plans[1] + " --answer", out) == 2);
+  CHECK(run(exe + " generate --out-dir " + (t.path / "without").string() + plans[1] + " --answer", out) == 2);
   for (const auto& e : fs::directory_iterator(t.path / "without")) CHECK(!eccd::read_scene_file(e.path().string()).answer);
   // With --force the answer is added in place.
-  REQUIRE(run(exe + " generate --out " + (t.path / "without").string() + plans[1] + " --answer --force --json", out) == 0);
+  REQUIRE(run(exe + " generate --out-dir " + (t.path / "without").string() + plans[1] + " --answer --force --json", out) == 0);
   const nlohmann::json forced = nlohmann::json::parse(out);
   for (const auto& f : forced["files"]) check_stored_answer(f.get<std::string>());
 }

@@ -14,7 +14,7 @@ using namespace eccd::clitest;
 
 TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 3D independent scenes", "[cli][cycloidal][independent]") {
   TempDir d;
-  Run r = run_eccd("generate --out " + q((d.path / "g").string()) + " --families cycloidal,independent --count 3 --json");
+  Run r = run_eccd("generate --out-dir " + q((d.path / "g").string()) + " --families cycloidal,independent --count 3 --json");
   INFO(r.err);
   REQUIRE(r.code == 0);
   int cyc = 0, indep = 0;
@@ -34,6 +34,6 @@ TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 3D 
   CHECK(cyc == 3);
   CHECK(indep == 3);
   // a dimension without either family: nothing to generate (exit 2)
-  Run none = run_eccd("generate --out " + q((d.path / "h").string()) + " --families cycloidal --dims 3");
+  Run none = run_eccd("generate --out-dir " + q((d.path / "h").string()) + " --families cycloidal --dims 3");
   CHECK(none.code == 2);
 }

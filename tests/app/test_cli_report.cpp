@@ -59,29 +59,29 @@ TEST_CASE("eccd generate writes the same scenes for the same seed and refuses to
   const std::string exe = ECCD_EXE;
   std::string out;
   const std::string args = " --dims 2 --degrees 3 --families touch,near-miss --separations 6 --seed 5 --json";
-  REQUIRE(run(exe + " generate --out " + (t.path / "a").string() + args, out) == 0);
+  REQUIRE(run(exe + " generate --out-dir " + (t.path / "a").string() + args, out) == 0);
   auto files = nlohmann::json::parse(out)["files"];  // eccd-generate/1
   REQUIRE(files.size() == 2);
-  REQUIRE(run(exe + " generate --out " + (t.path / "b").string() + args, out) == 0);
+  REQUIRE(run(exe + " generate --out-dir " + (t.path / "b").string() + args, out) == 0);
   for (const auto& f : files) {
     fs::path p(f.get<std::string>());
     CHECK(slurp(p) == slurp(t.path / "b" / p.filename()));
     REQUIRE(run(exe + " solve " + p.string() + " --arith exact --json", out) == 0);  // the reader accepts it
   }
-  CHECK(run(exe + " generate --out " + (t.path / "a").string() + args, out) == 2);  // exists: no --force
-  CHECK(run(exe + " generate --out " + (t.path / "c").string() + " --degrees 9", out) == 2);
+  CHECK(run(exe + " generate --out-dir " + (t.path / "a").string() + args, out) == 2);  // exists: no --force
+  CHECK(run(exe + " generate --out-dir " + (t.path / "c").string() + " --degrees 9", out) == 2);
 }
 
 TEST_CASE("eccd report: two shards joined by --merge give the table of one run", "[app][cli][report]") {
   TempDir t;
   const std::string exe = ECCD_EXE;
-  const std::string plan = " --dims 2,3 --degrees 2 --families touch,free --count 1 --mpfr 64 --grid 16 --cases '' "
+  const std::string plan = " --dims 2,3 --degrees 2 --families touch,free --count 1 --mpfr-bits 64 --grid 16 --cases '' "
                            "--map-size 2 --seed 9 --no-figures";
   std::string out;
-  REQUIRE(run(exe + " report --out " + (t.path / "whole").string() + plan, out) == 0);
-  REQUIRE(run(exe + " report --out " + (t.path / "p0").string() + plan + " --shard 0/2 --jobs 1", out) == 0);
-  REQUIRE(run(exe + " report --out " + (t.path / "p1").string() + plan + " --shard 1/2 --jobs 1", out) == 0);
-  REQUIRE(run(exe + " report --out " + (t.path / "joined").string() + " --no-figures --merge " + (t.path / "p0").string() +
+  REQUIRE(run(exe + " report --out-dir " + (t.path / "whole").string() + plan, out) == 0);
+  REQUIRE(run(exe + " report --out-dir " + (t.path / "p0").string() + plan + " --shard 0/2 --jobs 1", out) == 0);
+  REQUIRE(run(exe + " report --out-dir " + (t.path / "p1").string() + plan + " --shard 1/2 --jobs 1", out) == 0);
+  REQUIRE(run(exe + " report --out-dir " + (t.path / "joined").string() + " --no-figures --merge " + (t.path / "p0").string() +
                   " " + (t.path / "p1").string(),
               out) == 0);
   std::string whole = slurp(t.path / "whole" / "results.csv");
@@ -97,9 +97,9 @@ TEST_CASE("eccd report: two shards joined by --merge give the table of one run",
   CHECK(meta["seed"] == 9);
   CHECK(!fs::exists(t.path / "joined.partial"));
   // A missing part, a bad shard and a part from another run are refused, and nothing is written.
-  CHECK(run(exe + " report --out " + (t.path / "bad").string() + " --no-figures --merge " + (t.path / "p0").string(), out) == 2);
-  CHECK(run(exe + " report --out " + (t.path / "bad").string() + plan + " --shard 2/2", out) == 2);
-  CHECK(run(exe + " report --out " + (t.path / "bad").string() + plan + " --shard x", out) == 2);
+  CHECK(run(exe + " report --out-dir " + (t.path / "bad").string() + " --no-figures --merge " + (t.path / "p0").string(), out) == 2);
+  CHECK(run(exe + " report --out-dir " + (t.path / "bad").string() + plan + " --shard 2/2", out) == 2);
+  CHECK(run(exe + " report --out-dir " + (t.path / "bad").string() + plan + " --shard x", out) == 2);
   CHECK(!fs::exists(t.path / "bad"));
 }
 
@@ -179,7 +179,7 @@ std::vector<std::string> operator+(std::vector<std::string> a, const std::vector
 }
 // A tiny plan: 3 2D and 6 3D scenes of degree 2 and 9 map cells, one worker,
 // no run near its time budget (so the rows do not depend on timing).
-const std::string kTinyPlan = "--dims 2,3 --degrees 2 --families touch,free,colliding --count 1 --mpfr 64 --grid 16 --cases '' "
+const std::string kTinyPlan = "--dims 2,3 --degrees 2 --families touch,free,colliding --count 1 --mpfr-bits 64 --grid 16 --cases '' "
                               "--map-size 3 --no-figures --jobs 1";
 constexpr int kTinyTasks = 3 + 6 + 9;
 
@@ -237,11 +237,11 @@ TEST_CASE("report's time left: weighted by the measured cost per kind, within a 
 TEST_CASE("eccd report --resume after a killed run gives the table of an uninterrupted one", "[cli][report][resume]") {
   eccd::clitest::TempDir t;
   const auto plan = words(kTinyPlan + " --seed 9");
-  auto whole = eccd::clitest::run_eccd("report --out " + (t.path / "whole").string() + " " + kTinyPlan + " --seed 9", 300);
+  auto whole = eccd::clitest::run_eccd("report --out-dir " + (t.path / "whole").string() + " " + kTinyPlan + " --seed 9", 300);
   REQUIRE(whole.code == 0);
   // Killed (SIGKILL: no clean-up at all) once 3 of the 18 tasks are in the worker files.
   const fs::path partial = t.path / "cut.partial";
-  pid_t pid = spawn_report(plan + std::vector<std::string>{"--out", "cut"}, t.path, t.path / "err1.txt");
+  pid_t pid = spawn_report(plan + std::vector<std::string>{"--out-dir", "cut"}, t.path, t.path / "err1.txt");
   REQUIRE(wait_for(pid, partial, 3));
   kill(pid, SIGKILL);
   CHECK(wait_code(pid) == 128 + SIGKILL);
@@ -255,7 +255,7 @@ TEST_CASE("eccd report --resume after a killed run gives the table of an uninter
     std::ofstream o(partial / "worker-1-7.txt", std::ios::binary);
     o << "0\tRbogus-row-of-an-unfinished-task,generated,2\n0\tRbogus-row-2\n5\tRtruncated-ro";
   }
-  auto resumed = eccd::clitest::run_eccd("report --out cut " + kTinyPlan + " --seed 9 --resume", 300, t.str());
+  auto resumed = eccd::clitest::run_eccd("report --out-dir cut " + kTinyPlan + " --seed 9 --resume", 300, t.str());
   INFO(resumed.err);
   REQUIRE(resumed.code == 0);
   CHECK(resumed.err.find("resuming") != std::string::npos);
@@ -273,32 +273,32 @@ TEST_CASE("eccd report --resume after a killed run gives the table of an uninter
 TEST_CASE("eccd report --resume refuses another plan and a missing partial folder", "[cli][report][resume]") {
   eccd::clitest::TempDir t;
   const fs::path partial = t.path / "r.partial";
-  pid_t pid = spawn_report(words(kTinyPlan + " --seed 9 --out r"), t.path, t.path / "err.txt");
+  pid_t pid = spawn_report(words(kTinyPlan + " --seed 9 --out-dir r"), t.path, t.path / "err.txt");
   REQUIRE(wait_for(pid, partial, 1));
   kill(pid, SIGKILL);
   wait_code(pid);
   REQUIRE(fs::is_directory(partial));
   const std::string before = slurp(partial / "plan.json");
   // Another seed: refused (exit 2), the folder left as it was for the right --resume.
-  auto other = eccd::clitest::run_eccd("report --out r " + kTinyPlan + " --seed 10 --resume", 120, t.str());
+  auto other = eccd::clitest::run_eccd("report --out-dir r " + kTinyPlan + " --seed 10 --resume", 120, t.str());
   CHECK(other.code == 2);
   CHECK(other.err.find("seed") != std::string::npos);
   CHECK(other.err.find("r.partial") != std::string::npos);
-  auto mpfr = eccd::clitest::run_eccd("report --out r " + kTinyPlan + " --seed 9 --mpfr 128 --resume", 120, t.str());
+  auto mpfr = eccd::clitest::run_eccd("report --out-dir r " + kTinyPlan + " --seed 9 --mpfr-bits 128 --resume", 120, t.str());
   CHECK(mpfr.code == 2);
   CHECK(mpfr.err.find("mpfr_bits") != std::string::npos);
   CHECK(slurp(partial / "plan.json") == before);
   CHECK(fs::is_directory(partial));
   // Nothing to resume.
-  auto none = eccd::clitest::run_eccd("report --out nothing " + kTinyPlan + " --seed 9 --resume", 120, t.str());
+  auto none = eccd::clitest::run_eccd("report --out-dir nothing " + kTinyPlan + " --seed 9 --resume", 120, t.str());
   CHECK(none.code == 2);
   CHECK(none.err.find("nothing to resume") != std::string::npos);
   CHECK(!fs::exists(t.path / "nothing"));
   // Not with --merge.
-  CHECK(eccd::clitest::run_eccd("report --out m --merge r --resume", 60, t.str()).code == 2);
+  CHECK(eccd::clitest::run_eccd("report --out-dir m --merge r --resume", 60, t.str()).code == 2);
   // A plan file of another program (format) is refused too.
   eccd::clitest::spit(partial / "plan.json", "{\"format\": \"something-else/1\"}\n");
-  auto alien = eccd::clitest::run_eccd("report --out r " + kTinyPlan + " --seed 9 --resume", 120, t.str());
+  auto alien = eccd::clitest::run_eccd("report --out-dir r " + kTinyPlan + " --seed 9 --resume", 120, t.str());
   CHECK(alien.code == 2);
   CHECK(alien.err.find("format") != std::string::npos);
 }
@@ -306,7 +306,7 @@ TEST_CASE("eccd report --resume refuses another plan and a missing partial folde
 TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes one with nothing to resume", "[cli][report][interrupt]") {
   eccd::clitest::TempDir t;
   SECTION("some tasks finished: kept, with the command that resumes") {
-    pid_t pid = spawn_report(words(kTinyPlan + " --seed 9 --out k"), t.path, t.path / "err.txt");
+    pid_t pid = spawn_report(words(kTinyPlan + " --seed 9 --out-dir k"), t.path, t.path / "err.txt");
     REQUIRE(wait_for(pid, t.path / "k.partial", 2));
     kill(pid, SIGINT);
     CHECK(wait_code(pid) == 130);
@@ -319,7 +319,7 @@ TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes on
     CHECK(!fs::exists(t.path / "k"));
     // SIGTERM of the resumed run as soon as its workers start (their session-2 files): kept again, with the
     // tasks of the first run; the next --resume finishes.
-    pid = spawn_report(words(kTinyPlan + " --seed 9 --out k --resume"), t.path, t.path / "err2.txt");
+    pid = spawn_report(words(kTinyPlan + " --seed 9 --out-dir k --resume"), t.path, t.path / "err2.txt");
     bool started = false;
     for (int i = 0; i < 24000 && !started; ++i) {
       started = fs::exists(t.path / "k.partial" / "worker-2-0.txt");
@@ -329,14 +329,14 @@ TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes on
     kill(pid, SIGTERM);
     CHECK(wait_code(pid) == 130);
     CHECK(slurp(t.path / "err2.txt").find("interrupted by SIGTERM") != std::string::npos);
-    auto last = eccd::clitest::run_eccd("report --out k " + kTinyPlan + " --seed 9 --resume", 300, t.str());
+    auto last = eccd::clitest::run_eccd("report --out-dir k " + kTinyPlan + " --seed 9 --resume", 300, t.str());
     CHECK(last.code == 0);
     CHECK(fs::is_regular_file(t.path / "k" / "results.csv"));
   }
   SECTION("before any task finished: removed") {
     // One 3D scene of motion degree 6 (seconds of work): interrupted as soon as its plan file exists.
-    pid_t pid = spawn_report(words("--dims 3 --degrees 6 --families touch --motions euler --count 1 --mpfr 64 --budget 1 "
-                                   "--cases '' --no-map --no-figures --jobs 1 --out z"),
+    pid_t pid = spawn_report(words("--dims 3 --degrees 6 --families touch --motions euler --count 1 --mpfr-bits 64 --budget 1 "
+                                   "--cases '' --no-map --no-figures --jobs 1 --out-dir z"),
                              t.path, t.path / "err.txt");
     REQUIRE(wait_for(pid, t.path / "z.partial", 0));
     kill(pid, SIGINT);
@@ -355,7 +355,7 @@ TEST_CASE("eccd report without --name writes a new folder and leaves reports/def
   fs::create_directories(t.path / "reports" / "default");
   eccd::clitest::spit(t.path / "reports" / "default" / "report.md", "the checked-in example\n");
   eccd::clitest::spit(t.path / "reports" / "default" / ".eccd-report", "written by eccd report\n");
-  const std::string plan = "--dims 2 --degrees 2 --families touch --count 1 --mpfr 64 --cases '' --map-size 2 --no-figures --seed 3";
+  const std::string plan = "--dims 2 --degrees 2 --families touch --count 1 --mpfr-bits 64 --cases '' --map-size 2 --no-figures --seed 3";
   auto first = eccd::clitest::run_eccd("report " + plan, 120, t.str());
   REQUIRE(first.code == 0);
   auto second = eccd::clitest::run_eccd("report " + plan + " --quiet", 120, t.str());
@@ -412,8 +412,8 @@ TEST_CASE("eccd report --cases: animation files under the folder are left out, a
   fs::create_directories(t.path / "c" / "animations");
   fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "spheres" / "spheres-crossing.json", t.path / "c" / "crossing.json");
   fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "animations" / "swarm-2d.json", t.path / "c" / "animations" / "swarm-2d.json");
-  const std::string plan = "--dims 2 --degrees 2 --families touch --count 1 --mpfr 64 --map-size 2 --no-figures --seed 3 --jobs 1";
-  auto ok = eccd::clitest::run_eccd("report " + plan + " --cases c --out r", 300, t.str());
+  const std::string plan = "--dims 2 --degrees 2 --families touch --count 1 --mpfr-bits 64 --map-size 2 --no-figures --seed 3 --jobs 1";
+  auto ok = eccd::clitest::run_eccd("report " + plan + " --cases c --out-dir r", 300, t.str());
   INFO(ok.err);
   REQUIRE(ok.code == 0);
   const std::string csv = slurp(t.path / "r" / "results.csv");
@@ -422,7 +422,7 @@ TEST_CASE("eccd report --cases: animation files under the folder are left out, a
   CHECK(csv.find("swarm-2d") == std::string::npos);
   // A file that looks like a scene but has another format is an error naming it, before any work.
   eccd::clitest::spit(t.path / "c" / "bad.json", R"({"format": "ellipse-ccd-scene/9", "dim": 2, "a": {}, "b": {}})");
-  auto bad = eccd::clitest::run_eccd("report " + plan + " --cases c --out r2", 120, t.str());
+  auto bad = eccd::clitest::run_eccd("report " + plan + " --cases c --out-dir r2", 120, t.str());
   CHECK(bad.code == 2);
   CHECK(bad.err.find("bad.json") != std::string::npos);
   CHECK(!fs::exists(t.path / "r2" / "results.csv"));

@@ -38,7 +38,7 @@ std::vector<std::map<std::string, std::string>> read_results(const fs::path& p) 
 TEST_CASE("eccd report --external judges an engine's answer files against the exact answers", "[app][cli][report][external]") {
   TempDir t;
   const fs::path scenes = t.path / "scenes", answers = t.path / "answers", out = t.path / "out";
-  Run g = run_eccd("generate --out " + q(scenes.string()) + " --dims 2 --degrees 2 --families colliding,free,near-miss "
+  Run g = run_eccd("generate --out-dir " + q(scenes.string()) + " --dims 2 --degrees 2 --families colliding,free,near-miss "
                    "--separations 3 --count 2 --seed 41 --json");
   REQUIRE(g.code == 0);
   std::vector<std::string> names;
@@ -65,7 +65,7 @@ TEST_CASE("eccd report --external judges an engine's answer files against the ex
   spit(answers / (names[2] + ".json"), R"({"collides": "maybe"})");
   // names[3..]: no file.
 
-  Run r = run_eccd("report --scenes " + q(scenes.string()) + " --cases '' --no-map --mpfr 64 --input rounded --budget 2 "
+  Run r = run_eccd("report --scenes " + q(scenes.string()) + " --cases '' --no-map --mpfr-bits 64 --input rounded --budget 2 "
                    "--external " + q("mine=" + answers.string()) + " --out " + q(out.string()),
                    300);
   INFO(r.err);

@@ -63,7 +63,7 @@ std::vector<std::string> sorted_lines(const fs::path& file) {
 // A tiny plan: 2D degree 2, one touch and one free scene, MPFR 64, a 2 x 2 failure map, and the
 // scene of 003 example 2 renamed with a comma and quotes (a case), so that quoting goes through the merge.
 std::string tiny_plan(const fs::path& cases) {
-  return "--dims 2 --degrees 2 --families touch,free --count 1 --mpfr 64 --map-size 2 --seed 9 --budget 2 --no-figures --cases " +
+  return "--dims 2 --degrees 2 --families touch,free --count 1 --mpfr-bits 64 --map-size 2 --seed 9 --budget 2 --no-figures --cases " +
          q(cases.string());
 }
 
@@ -85,7 +85,7 @@ TEST_CASE("the GNU parallel recipe (2 shards, then --merge) gives the rows of on
   TempDir t;
   write_cases(t.path / "my cases");  // a space: the arguments must reach eccd as given
   const std::string plan = tiny_plan(t.path / "my cases");
-  Run whole = run_eccd("report --jobs 2 --out " + q((t.path / "whole").string()) + " " + plan, 600);
+  Run whole = run_eccd("report --jobs 2 --out-dir " + q((t.path / "whole").string()) + " " + plan, 600);
   INFO(whole.err);
   REQUIRE(whole.code == 0);
 
@@ -126,7 +126,7 @@ TEST_CASE("the Slurm job-array script parses, and its task and merge modes run a
   int rc = shell(env + script + " merge 2 " + dest + " " + plan, out);
   INFO(out);
   REQUIRE(rc == 0);
-  Run whole = run_eccd("report --jobs 2 --out " + q((t.path / "whole").string()) + " " + plan, 600);
+  Run whole = run_eccd("report --jobs 2 --out-dir " + q((t.path / "whole").string()) + " " + plan, 600);
   REQUIRE(whole.code == 0);
   CHECK(rows_without_time(t.path / "whole" / "results.csv") == rows_without_time(t.path / "slurm" / "results.csv"));
   // outside a Slurm task, task mode says so; submit without sbatch says so (exit 2)

@@ -259,7 +259,7 @@ TEST_CASE("eccd fcl | eccd judge: the verdict judge computes, and FCL misses a s
   REQUIRE((p.code == 0 || p.code == 1));
   nlohmann::json v = nlohmann::json::parse(p.out);
   CHECK(v["verdict"] == api.verdict);
-  CHECK(v["answer_taken"] == "a bare answer object");
+  CHECK(v["answer_taken"] == "the \"answer\" of an eccd-fcl-answer/1 object");
   CHECK(p.code == (api.agrees ? 0 : 1));
   CHECK(api.verdict != "wrong collides");  // a clear crossing: collides right, the sampled ends off
   CHECK(api.difference.endpoints_off == 2);
