@@ -219,6 +219,7 @@ Command add_certify_command(CLI::App& app) {
         } catch (const std::exception& e) {
           verdicts.push_back(failed_verdict(p.label, e.what()));
         }
+        verdicts.back().guard = p.guard;
       }
     }
     nlohmann::json vj = nlohmann::json::array();

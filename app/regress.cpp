@@ -224,6 +224,7 @@ Command add_regress_command(CLI::App& app) {
             } catch (const std::exception& e) {
               v = failed_verdict(p.label, e.what());
             }
+            v.guard = p.guard;
             if (!tally.count(p.label)) pipeline_order.push_back(p.label);
             PipelineTally& t = tally[p.label];
             ++t.scenes;
