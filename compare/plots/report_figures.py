@@ -2283,8 +2283,10 @@ def guarded_label(p):
 
 def pub_error(r):
     """How an as-published (or any) run is wrong against the exact answer: 'FP', 'FN', 'structure' (collides right,
-    intervals, contacts or ends not), or None (right, undecided or error)."""
-    if r["outcome"] == "false_positive":
+    intervals, contacts or ends not), or None (right, undecided or error). A run that claims a collision where none
+    happens is a false positive even beside undecided instants (its outcome is then `undecided`): the collision it
+    reports is decided, and wrong."""
+    if r["outcome"] == "false_positive" or (r["outcome"] == "undecided" and r["collides"] == 1 and r["exact_collides"] == 0):
         return "FP"
     if r["outcome"] == "false_negative":
         return "FN"
@@ -2338,7 +2340,7 @@ def section_published(data):
         return out + ["No as-published rows in results.csv (run `eccd report --guard none,bound`; older runs measured "
                       "the guarded face only).", ""]
     out += ["Each cell: runs whose answer is wrong / runs, with the kinds: FP (false positive: collision claimed, none "
-            "happens), FN (false negative), struct (collides right, but an interval, an end, the first contact or a "
+            "happens; also beside undecided instants), FN (false negative), struct (collides right, but an interval, an end, the first contact or a "
             "contact wrong). The pipelines run in plain double or MPFR with nothing added (label without its "
             "`/published` suffix; `@prepared`: the exactly prepared input, else the scene's numbers rounded). "
             "Undecided here means the algorithm itself gave up (a work bound, a value that is not finite, the time "
@@ -2364,16 +2366,16 @@ def guard_stats(pairs):
     (guarded wrong too), alarms (as published right, guarded undecided), undecided (guarded undecided or error)."""
     s = {"runs": len(pairs), "errors": 0, "caught": 0, "right": 0, "missed": 0, "alarms": 0, "undecided": 0}
     for p, g in pairs:
-        g_und = g["outcome"] in ("undecided", "error")
+        g_und = g["outcome"] in ("undecided", "error") and not pub_error(g)
         s["undecided"] += g_und
         if pub_error(p):
             s["errors"] += 1
-            if g_und:
-                s["caught"] += 1
-            elif is_right(g):
-                s["right"] += 1
-            else:
+            if pub_error(g):
                 s["missed"] += 1
+            elif g_und:
+                s["caught"] += 1
+            else:
+                s["right"] += 1
         elif is_right(p) and g_und:
             s["alarms"] += 1
     return s
@@ -2409,7 +2411,7 @@ def section_guard(data):
         for deg in sorted({p["degree"] for p, _ in dp}):
             body.append(guard_row(f"{dim}D degree {deg}", guard_stats([(p, g) for p, g in dp if p["degree"] == deg])))
     out += [md_table(head, body), ""]
-    missed = [(p, g) for p, g in pairs if pub_error(p) and not is_right(g) and g["outcome"] not in ("undecided", "error")]
+    missed = [(p, g) for p, g in pairs if pub_error(p) and pub_error(g)]
     if missed:
         out += [f"**Missed by the guard** ({len(missed)}): " + "; ".join(
             f"{p['scene']} {guarded_label(p['pipeline'])} ({g['outcome']})" for p, g in missed[:10])

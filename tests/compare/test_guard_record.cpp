@@ -3,9 +3,10 @@
 // SolveOptions::guard = Guard::none) must be flagged by the guarded face
 // (Guard::bound): where the as-published answer differs from the exact one,
 // the guarded answer is undecided (or right). A guarded answer that is
-// decided and differs from the exact answer is a miss of the guard: the test
-// fails and prints the scene, the pipeline, the input mode and the
-// differences (api/answer_difference.hpp).
+// decided and differs from the exact answer, or that claims a collision
+// where none happens (even beside undecided instants), is a miss of the
+// guard: the test fails and prints the scene, the pipeline, the input mode
+// and the differences (api/answer_difference.hpp).
 //
 // Families: realistic decimals and keyframes, near misses, overlaps, in 2D
 // (CD-DISC, power / Bernstein / scaled Bernstein) and 3D (the Bézier method,
@@ -70,9 +71,11 @@ void check_scene(const Scene& s, Tally& t) {
       ++t.runs;
       const AnswerDifference dp = answer_difference(pub.answer, exact.answer);
       const AnswerDifference dg = answer_difference(grd.answer, exact.answer);
-      const bool pub_wrong = !dp.agrees && dp.undecided == 0;  // decided, and not the exact answer
-      const bool grd_undecided = dg.undecided > 0;
-      const bool grd_wrong = !dg.agrees && !grd_undecided;
+      // Wrong: decided and not the exact answer, or a collision claimed where none happens (also beside
+      // undecided instants: the collision reported is decided, and false).
+      const bool pub_wrong = (!dp.agrees && dp.undecided == 0) || (pub.answer.collides && !exact.answer.collides);
+      const bool grd_wrong = (!dg.agrees && dg.undecided == 0) || (grd.answer.collides && !exact.answer.collides);
+      const bool grd_undecided = dg.undecided > 0 && !grd_wrong;
       const std::string where = s.name + " double/" + to_string(b) + " input " + to_string(m);
       if (pub_wrong) {
         ++t.published_errors;
@@ -134,16 +137,18 @@ TEST_CASE("the guard flags every as-published error on the generated families", 
     g.seed = scene_seed(seed, g, 0);
     specs.push_back(g);
   };
-  for (int deg : {2, 4}) {
-    add(2, deg, "decimal", "kinematic", 0, 15);
+  for (int deg : {2, 3, 4, 5, 6}) {
+    for (int digits : {6, 15}) add(2, deg, "decimal", "kinematic", 0, digits);
     add(2, deg, "keyframe", "kinematic", 0, 9);
-    for (int d : {6, 10, 14}) add(2, deg, "near-miss", "kinematic", d, 0);
+    for (int d : {4, 6, 8, 10, 12, 14}) add(2, deg, "near-miss", "kinematic", d, 0);
   }
-  add(2, 1, "overlap", "translation", 9, 0);
-  add(3, 2, "decimal", "euler", 0, 15);
-  add(3, 2, "keyframe", "euler", 0, 9);
-  for (int d : {6, 12}) add(3, 2, "near-miss", "euler", d, 0);
-  add(3, 1, "overlap", "translation", 9, 0);
+  for (int depth : {5, 9}) add(2, 1, "overlap", "translation", depth, 0);
+  for (int deg : {2, 3, 4}) {
+    add(3, deg, "decimal", "euler", 0, 15);
+    add(3, deg, "keyframe", "euler", 0, 9);
+    for (int d : {6, 10, 14}) add(3, deg, "near-miss", "euler", d, 0);
+  }
+  for (int depth : {5, 9}) add(3, 1, "overlap", "translation", depth, 0);
   Tally t;
   for (const auto& g : specs) {
     const GeneratedScene gs = generate_scene(g);
@@ -156,4 +161,15 @@ TEST_CASE("the guard flags every as-published error on the generated families", 
   int expected = 0;  // 2D: 3 bases, 3D: 2 bases; 2 input modes each
   for (const auto& g : specs) expected += (g.dim == 2 ? 3 : 2) * 2;
   CHECK(t.runs == expected);
+}
+
+// A known miss of the guard, kept as a reproducer until it is fixed (hidden: run it by its tag): the Bézier
+// method with f set up in power form, rounded input, decides "overlapping" at sample instants of a scene that
+// never collides (tests/data/float/guard-miss-bezier-power-keyframe.json, its note says how it was found).
+TEST_CASE("known guard miss: 3D keyframe scene, Bezier method with the power-form setup", "[.guard-miss]") {
+  Tally t;
+  check_scene(read_scene_file(std::string(ECCD_SOURCE_DIR) + "/tests/data/float/guard-miss-bezier-power-keyframe.json"), t);
+  report("tests/data/float/guard-miss-bezier-power-keyframe.json", t);
+  for (const auto& m : t.misses) UNSCOPED_INFO(m);
+  CHECK(t.misses.empty());
 }
