@@ -24,6 +24,7 @@
 #include <chrono>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 namespace eccd {
 
@@ -195,7 +196,14 @@ Solution run_floating_cycloidal(const Scene& scene, const SolveOptions& opt, con
 template <class T>
 Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
   if (scene.dim == 3) return run_floating_3d(scene, opt, like);
-  if (has_cycloidal_motion(scene)) return run_floating_cycloidal(scene, opt, like);
+  if (has_cycloidal_motion(scene)) {
+    // The cycloidal pipeline isolates the roots of a transcendental Δ by
+    // subdivision that reads T as an enclosure (number/enclosure.hpp): it
+    // exists in the guarded face only.
+    if constexpr (has_error_bound_v<T>) return run_floating_cycloidal(scene, opt, like);
+    else throw std::invalid_argument("--guard none: a cycloidal scene has no as-published floating pipeline "
+                                     "(its roots of Δ are isolated by validated subdivision): use --guard bound");
+  }
   Solution s = run_floating_2d(scene, opt, like);
   s.method = "cd-disc";
   return s;
@@ -305,13 +313,30 @@ Solution run_independent_exact(const Scene& scene) {
   return s;
 }
 
+// A floating run in the face opt.guard asks for: `run(like)` with like a 1 in
+// plain T (as published) or in Bounded<T> (guarded), T = double or Mpfr at
+// the arithmetic's precision. The Solution says which face ran.
+template <class Run>
+Solution in_face(const SolveOptions& opt, Run&& run) {
+  const bool bound = opt.guard == Guard::bound;
+  Solution s;
+  if (opt.arith.kind == Arithmetic::Double) {
+    s = bound ? run(Bounded<double>(1.0, 0)) : run(1.0);
+  } else {
+    const Mpfr one(mpq_class(1), opt.arith.mpfr_bits);
+    s = bound ? run(Bounded<Mpfr>(one, 0)) : run(one);
+  }
+  s.guard = to_string(opt.guard);
+  return s;
+}
+
 Solution solve_independent(const Scene& scene, const SolveOptions& opt) {
   if (scene.dim != 3)
     throw IndependentMotionsRefused("independent motions are solved in 3D only (paper 001, section 4); this scene is 2D");
   switch (opt.arith.kind) {
-    case Arithmetic::Double: return run_independent_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0));
+    case Arithmetic::Double:
     case Arithmetic::Mpfr:
-      return run_independent_floating<Bounded<Mpfr>>(scene, opt, Bounded<Mpfr>(Mpfr(mpq_class(1), opt.arith.mpfr_bits), 0));
+      return in_face(opt, [&](const auto& like) { return run_independent_floating<std::decay_t<decltype(like)>>(scene, opt, like); });
     case Arithmetic::Exact: return run_independent_exact(scene);
     case Arithmetic::Certified: return run_independent_proved(scene);
   }
@@ -337,9 +362,9 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
   }
   std::optional<PreparedPair<4>> prepared3;  // an exact or certified 3D run's pair, shared with its contact points
   switch (opt.arith.kind) {  // prepare_pair refuses cycloidal motions for exact arithmetic
-    case Arithmetic::Double: s = run_floating<Bounded<double>>(scene, opt, Bounded<double>(1.0, 0)); break;
+    case Arithmetic::Double:
     case Arithmetic::Mpfr:
-      s = run_floating<Bounded<Mpfr>>(scene, opt, Bounded<Mpfr>(Mpfr(mpq_class(1), opt.arith.mpfr_bits), 0));
+      s = in_face(opt, [&](const auto& like) { return run_floating<std::decay_t<decltype(like)>>(scene, opt, like); });
       break;
     case Arithmetic::Exact:
       if (scene.dim == 3) prepared3 = prepare_pair<4>(scene);

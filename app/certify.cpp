@@ -152,7 +152,7 @@ Command add_certify_command(CLI::App& app) {
   Command c;
   c.sub = app.add_subcommand("certify",
                              "Certify one scene: the exact answer (collision intervals, first contact, external contacts, each "
-                             "instant a proved rational bracket), a verdict for each double and MPFR pipeline against it, and a "
+                             "instant a proved rational bracket), a verdict for each double and MPFR pipeline (as published and guarded) against it, and a "
                              "certificate that `eccd check-certificate` re-checks without the solver. A cycloidal scene (not "
                              "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/1): proved root brackets "
                              "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon. An independent "
@@ -225,6 +225,7 @@ Command add_certify_command(CLI::App& app) {
         } catch (const std::exception& e) {
           verdicts.push_back(failed_verdict(p.label, e.what()));
         }
+        verdicts.back().guard = p.guard;
       }
     }
     nlohmann::json vj = nlohmann::json::array();

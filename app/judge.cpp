@@ -1,7 +1,8 @@
 // `eccd judge SCENE ANSWER`: any engine's answer (FCL's, the user's
 // simulator's, a floating pipeline's) compared with the scene's certified
 // answer (api/judge.hpp); prints the certified answer, the verdict and each
-// difference. Exit 0 agrees, 1 differs, 2 bad input, 3 refused, 5 budget.
+// difference, and for an `eccd solve --json` report the face it ran in
+// ("guard": as published or guarded). Exit 0 agrees, 1 differs, 2 bad input, 3 refused, 5 budget.
 #include "app/commands.hpp"
 #include "api/judge.hpp"
 #include "io/scene_reader.hpp"
@@ -9,6 +10,7 @@
 
 #include <sys/time.h>
 
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -59,6 +61,16 @@ nlohmann::ordered_json counts_json(const AnswerDifference& d) {
   return c;
 }
 
+// The face of a judged `eccd solve --json` report (its "guard": "none" as published, "bound" guarded) and its
+// arithmetic, "" for any other answer (and for standard input, which read_answer has consumed).
+std::pair<std::string, std::string> report_face(const std::string& path) {
+  if (path == "-") return {"", ""};
+  std::ifstream in(path, std::ios::binary);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object() || !j.contains("guard") || !j["guard"].is_string()) return {"", ""};
+  return {j["guard"].get<std::string>(), j.contains("arith") && j["arith"].is_string() ? j["arith"].get<std::string>() : ""};
+}
+
 }  // namespace
 
 Command add_judge_command(CLI::App& app) {
@@ -89,6 +101,7 @@ Command add_judge_command(CLI::App& app) {
     Scene scene = parse_scene(src.text, src.label);
     AnswerInput in = read_answer(args->answer);
     const std::string label = args->answer == "-" ? std::string("<stdin>") : args->answer;
+    const auto [face, face_arith] = report_face(args->answer);
     JudgeOptions o;
     o.tol = args->tol;
     o.name = args->name;
@@ -113,6 +126,7 @@ Command add_judge_command(CLI::App& app) {
                             {"scene_file", src.label},
                             {"answer_file", label},
                             {"answer_taken", in.taken},
+                            {"answer_guard", face.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(face)},
                             {"engine", args->name},
                             {"agrees", j.agrees},
                             {"verdict", j.verdict},
@@ -126,7 +140,9 @@ Command add_judge_command(CLI::App& app) {
       std::ostringstream o;
       o << "scene " << scene.name << " (" << scene.dim << "D): certified answer (" << j.certified_from << ")\n"
         << answer_text(j.certified.answer);
-      o << "judged: " << label << " (" << in.taken << "), engine " << args->name << ", tolerance " << args->tol << "\n";
+      o << "judged: " << label << " (" << in.taken
+        << (face == "none" ? ", " + face_arith + " as published, no guard" : face == "bound" ? ", " + face_arith + " guarded" : "")
+        << "), engine " << args->name << ", tolerance " << args->tol << "\n";
       o << "verdict: " << j.verdict << "\n";
       for (const auto& x : d.differences) o << "  - " << x << "\n";
       std::cout << o.str();

@@ -64,7 +64,7 @@ Command add_regress_command(CLI::App& app) {
                              "looks like a scene but does not read as one, e.g. a misspelled format, fails); exit 2 if DIR has no scene.");
   auto* s = c.sub;
   s->add_option("DIR", args->dir, "Folder searched recursively for scene files (*.json)")->capture_default_str();
-  s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline and tabulate how each fares against the stored answers");
+  s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline, as published (labels .../published) and guarded, and tabulate how each fares against the stored answers");
   s->add_option("--arith", args->arith,
                 "Certified arithmetic that recomputes the answers: exact, or certified (intervals of doubles, escalating to "
                 "MPFI intervals of 256 bits, then to exact; certified:B1,B2,... or certified:none choose the MPFI rungs; the "
@@ -229,6 +229,7 @@ Command add_regress_command(CLI::App& app) {
             } catch (const std::exception& e) {
               v = failed_verdict(p.label, e.what());
             }
+            v.guard = p.guard;
             if (!tally.count(p.label)) pipeline_order.push_back(p.label);
             PipelineTally& t = tally[p.label];
             ++t.scenes;

@@ -728,6 +728,7 @@ nlohmann::ordered_json report_plan(const ReportArgs& a, const std::vector<Task>&
   o["count_per_combination"] = a.plan.count;
   o["mpfr_bits"] = a.harness.mpfr_bits;
   o["inputs"] = a.harness.inputs;
+  o["guards"] = a.harness.guards;
   o["budget_seconds"] = a.harness.budget_s;
   o["exact_budget_seconds"] = a.harness.exact_budget_s;
   o["time_limit_seconds"] = run_budget().time_limit_s;
@@ -1076,6 +1077,7 @@ int run_report(const ReportArgs& a) {
   meta["overlap_depths"] = a.plan.depth_exponents;
   meta["digits"] = a.plan.digits;
   meta["inputs"] = a.harness.inputs;
+  meta["guards"] = a.harness.guards;
   meta["input_modes_in_solver"] = solver_has_input_modes();
   meta["budget_seconds"] = a.harness.budget_s;
   meta["exact_budget_seconds"] = a.harness.exact_budget_s;
@@ -1338,7 +1340,8 @@ Command add_report_command(CLI::App& app) {
       "--families cycloidal,independent adds issue 20's motions, against the certified resp. exact answer), "
       "add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
       "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and in "
-      "power form (double), the sampling and marching baselines), each floating one per input mode (--input) and under a "
+      "power form (double), the sampling and marching baselines), each floating one as published and guarded (--guard), "
+      "per input mode (--input) and under a "
       "time budget (--budget), against the exact pipeline, and write "
       "a new folder reports/run-YYYYMMDD-HHMMSS/ (or reports/NAME/ with --name, --out-dir PATH): report.md, results.csv, "
       "failure_map.csv, meta.json and PNG figures. Progress and time left go to stderr (--quiet: none); Ctrl-C keeps "
@@ -1364,6 +1367,11 @@ Command add_report_command(CLI::App& app) {
                 "the arithmetic) and prepared (coefficients prepared exactly, then rounded); a solver without input "
                 "modes runs prepared only")
       ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"rounded", "prepared"}));
+  s->add_option("--guard", a->harness.guards,
+                "Faces of the double and MPFR pipelines, each a row of its own: none (the algorithm as published, in plain "
+                "double or MPFR: its errors are the measurement; labels ending in /published) and bound (guarded by the "
+                "running error bound: an unsure sign is undecided); the report's guard record needs both")
+      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"none", "bound"}));
   s->add_option("--budget", a->harness.budget_s, "Time budget of one floating pipeline run in seconds (a run that hits it is undecided, reason time budget)")
       ->capture_default_str()->check(CLI::Range(0.001, 86400.0));
   s->add_option("--exact-budget", a->harness.exact_budget_s, "Time budget of the exact run of one scene in seconds (exhausted: the scene fails)")

@@ -26,10 +26,10 @@ namespace eccd {
 namespace {
 
 struct SolveArgs {
-  std::string scene_path, arith = "exact", basis = "bernstein", method = "bezier", input = "rounded";
+  std::string scene_path, arith = "exact", basis = "bernstein", method = "bezier", input = "rounded", guard = "bound";
   int variant = 0;
   bool json = false, first_contact = false, store = false;
-  CLI::Option *input_opt = nullptr, *basis_opt = nullptr, *method_opt = nullptr, *variant_opt = nullptr;
+  CLI::Option *input_opt = nullptr, *guard_opt = nullptr, *basis_opt = nullptr, *method_opt = nullptr, *variant_opt = nullptr;
 };
 
 // The options the combination of arithmetic, dimension and method does not
@@ -40,6 +40,8 @@ std::vector<std::string> ignored_options(const SolveArgs& a, const SolveOptions&
   const std::string arith = opt.arith.name();
   if (a.input_opt->count() && !floating)
     w.push_back("--input applies to double and mpfr only; " + arith + " starts from the exactly prepared scene");
+  if (a.guard_opt->count() && !floating)
+    w.push_back("--guard applies to double and mpfr only; " + arith + " has no floating face");
   if (a.basis_opt->count() && !floating)
     w.push_back("--basis applies to double and mpfr only; " + arith + " computes with exact coefficients");
   if (a.method_opt->count() && (!floating || dim == 2))
@@ -85,6 +87,11 @@ Command add_solve_command(CLI::App& app) {
   args->input_opt = c.sub->add_option("--input", args->input,
                     "Floating only: rounded (each number of the scene rounded to the arithmetic, everything after computed in it: "
                     "what a user's program does) or prepared (the scene prepared exactly, then rounded)")->capture_default_str();
+  args->guard_opt = c.sub->add_option("--guard", args->guard,
+                    "Floating only: bound (guarded: a running error bound on every value, a sign it cannot decide "
+                    "makes that place undecided) or none (the published algorithm in plain double or MPFR, nothing "
+                    "added: its answer can be wrong; undecided only where the algorithm gives up: a work bound, a "
+                    "value that is not finite, the time budget). Cycloidal scenes have the guarded face only")->capture_default_str();
   c.sub->add_flag("--write-answer", args->store, "Store the answer in the scene file under \"answer\" (exact arithmetic only)");
 
   c.run = [args]() -> int {
@@ -100,6 +107,7 @@ Command add_solve_command(CLI::App& app) {
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string("--input ") + e.what());
     }
+    opt.guard = parse_guard(args->guard);
     try {
       opt.basis = parse_basis(args->basis);
     } catch (const std::invalid_argument& e) {

@@ -1,5 +1,6 @@
 // `eccd table`: every scene of a folder in exact, double (power, Bernstein,
-// scaled Bernstein) and MPFR arithmetic, side by side; '!' marks a floating
+// scaled Bernstein) and MPFR arithmetic, side by side, each floating column
+// as published and guarded (--guard); '!' marks a floating
 // answer that differs from the exact one. Each scene's row is printed as soon
 // as the scene is done (--json: JSON Lines, one eccd-table-row/1 object per
 // scene); progress and the time left go to stderr (app/time_left.hpp).
@@ -48,7 +49,7 @@ std::string short_answer(const Solution& r) {
   return o.str();
 }
 
-int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool json) {
+int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const std::vector<std::string>& guards, bool json) {
   std::vector<fs::path> files;
   if (!fs::is_directory(dir)) throw std::invalid_argument(dir + ": not a directory");
   for (auto& e : fs::recursive_directory_iterator(dir)) {
@@ -61,17 +62,25 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
   std::sort(files.begin(), files.end());
   struct Col { std::string label; SolveOptions opt; };
   std::vector<Col> cols;
-  auto col = [](const std::string& arith, Basis basis) {
+  auto col = [](const std::string& arith, Basis basis, Guard guard = Guard::bound) {
     SolveOptions o;
     o.arith = parse_arithmetic(arith);
     o.basis = basis;
+    o.guard = guard;
     return o;
   };
   cols.push_back({"exact", col("exact", Basis::bernstein)});
-  cols.push_back({"double/power", col("double", Basis::power)});
-  cols.push_back({"double/bernstein", col("double", Basis::bernstein)});
-  cols.push_back({"double/scaled", col("double", Basis::scaled_bernstein)});
-  for (int b : mpfr_bits) cols.push_back({"mpfr:" + std::to_string(b), col("mpfr:" + std::to_string(b), Basis::bernstein)});
+  // Each floating column in each face asked for: as published (label ".../published") and guarded.
+  auto floating = [&](const std::string& label, const std::string& arith, Basis basis) {
+    for (const auto& g : guards) {
+      const Guard face = parse_guard(g);
+      cols.push_back({face == Guard::none ? label + "/published" : label, col(arith, basis, face)});
+    }
+  };
+  floating("double/power", "double", Basis::power);
+  floating("double/bernstein", "double", Basis::bernstein);
+  floating("double/scaled", "double", Basis::scaled_bernstein);
+  for (int b : mpfr_bits) floating("mpfr:" + std::to_string(b), "mpfr:" + std::to_string(b), Basis::bernstein);
   // Each scene's row goes to stdout as soon as it is finished (a line of the table, or with --json one JSON
   // object per line, JSON Lines); progress goes to stderr. Column widths are fixed up front so that rows
   // can be printed one by one: the longest file name, and each column at least as wide as its label.
@@ -150,7 +159,9 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
                "an interval missed, false, split or merged, an end, the first contact or a contact more than 1e-6 away);\n"
                "3D scenes: floating columns run 001's Bezier method with f built in power or Bernstein form\n"
                "(scaled Bernstein is a 2D discriminant construction: n/a); exact is the certified projection;\n"
-               "'?N' counts instants a floating pipeline could not classify; iv = collision intervals, t0 = first contact.\n";
+               "'?N' counts instants a floating pipeline could not classify; iv = collision intervals, t0 = first contact;\n"
+               "'/published': the algorithm as published (plain double or MPFR, no guard), the other floating columns are\n"
+               "guarded (an error bound makes every unsure sign undecided). A cycloidal scene has no as-published face (n/a).\n";
   return 0;
 }
 
@@ -160,16 +171,21 @@ Command add_table_command(CLI::App& app) {
   struct Args {
     std::string dir = "cases";
     std::vector<int> mpfr_bits{128};
+    std::vector<std::string> guards{"none", "bound"};
     bool json = false;
   };
   auto args = std::make_shared<Args>();
   Command c;
-  c.sub = app.add_subcommand("table", "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR arithmetic and print a side-by-side table.");
+  c.sub = app.add_subcommand("table", "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR arithmetic, each floating column as published and guarded, and print a side-by-side table.");
   c.sub->add_option("DIR", args->dir, "Folder of scene files")->capture_default_str();
   c.sub->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions in bits (repeatable, or a comma list: 64,128)")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   add_old_spelling(c.sub, "--mpfr", "--mpfr", "--mpfr-bits", args->mpfr_bits)->delimiter(',')->check(CLI::Range(53, 65536));
   c.sub->add_flag("--json", args->json, "JSON Lines instead of the table: one object per scene file, printed as soon as it is solved (format eccd-table-row/1: folder, file, and a solution per column, keyed by the column's label)");
-  c.run = [args]() { return run_table(args->dir, args->mpfr_bits, args->json); };
+  c.sub->add_option("--guard", args->guards,
+                    "Faces of the floating columns, a comma list: none (the algorithm as published, plain double or MPFR; "
+                    "columns .../published) and bound (guarded by an error bound)")
+      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"none", "bound"}));
+  c.run = [args]() { return run_table(args->dir, args->mpfr_bits, args->guards, args->json); };
   return c;
 }
 

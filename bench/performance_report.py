@@ -61,39 +61,62 @@ TARGETS = [
         steps=["static3d/Appendix A + Sturm"],
         also=[],
     ),
+    # Issue 30: the 2D degree-6 and paper 002 targets time eccd::solve from the scene (the product-* groups: what
+    # `eccd solve` runs, preparation and contact points included), named by face and input mode; the pipeline rows
+    # from the prepared pair (ccd2d-*, ccd3d-*) stay beside them as phases.
     dict(
-        name="2D, motion degree 6 (Δ of degree 144), all external contacts, double",
-        key="ccd2d-deg6-v3/double",
+        name="2D, motion degree 6 (Δ of degree 144), all external contacts, double guarded, rounded input (eccd::solve, the default of `eccd solve --arith double`)",
+        key="product-2d-deg6-v3/double guarded, rounded input",
         limit_ns=50e3,
         anchor="issue 21: at most 50 µs (issue 6: 0.5 ms); 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel); under 1 ms for Variant 1, 5 ms for Variant 2",
         phases="phases-2d-deg6-double-v3",
-        also=["ccd2d-deg6-v1/double", "ccd2d-deg6-v2/double", "ccd2d-deg6-free/double v3"],
+        also=["product-2d-deg6-v3/double as published, rounded input", "product-2d-deg6-v3/double guarded, prepared input",
+              "product-2d-deg6-v3/double as published, prepared input", "ccd2d-deg6-v3/double",
+              "ccd2d-deg6-v1/double", "ccd2d-deg6-v2/double", "ccd2d-deg6-free/double v3"],
     ),
     dict(
-        name="2D, motion degree 6, exact certified answer",
-        key="ccd2d-deg6-v0/exact",
+        name="2D, motion degree 6 (Δ of degree 144), all external contacts, double as published, rounded input (eccd::solve --guard none)",
+        key="product-2d-deg6-v3/double as published, rounded input",
+        limit_ns=50e3,
+        anchor="issue 21: at most 50 µs; 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel)",
+        phases="phases-2d-deg6-double-v3",
+        also=["product-2d-deg6-v3/double as published, prepared input"],
+    ),
+    dict(
+        name="2D, motion degree 6, exact certified answer (eccd::solve --arith exact, full answer)",
+        key="product-2d-deg6-v3/exact v0 (full answer)",
         limit_ns=5e6,
         anchor="issue 21: at most 5 ms (issue 6: 50 ms); no paper measures exact arithmetic; 003's double figure (7 ms) for scale",
         phases="phases-2d-deg6-exact-v0",
-        also=["ccd2d-deg6-v3/exact", "ccd2d-deg6-free/exact v0"],
+        also=["product-2d-deg6-v3/exact", "ccd2d-deg6-v0/exact", "ccd2d-deg6-v3/exact", "ccd2d-deg6-free/exact v0"],
     ),
     dict(
-        name="3D, paper 002's example, all collision intervals, double",
-        key="ccd3d-paper002/double bezier",
+        name="3D, paper 002's example, all collision intervals, double guarded, rounded input (eccd::solve, the default of `eccd solve --arith double`)",
+        key="product-paper002/double guarded, rounded input",
         limit_ns=0.3e6,
         anchor="issue 21: at most 0.3 ms (issue 6: 2 ms); 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV); 002: 4.7 s (Table I, degree 4, Pentium 4 2 GHz)",
         phases="phases-paper002-double-bezier",
-        also=["ccd3d-paper002/double bezier power", "ccd3d-paper002/double projection",
+        also=["product-paper002/double as published, rounded input", "product-paper002/double guarded, prepared input",
+              "product-paper002/double as published, prepared input", "product-paper002/certified",
+              "ccd3d-paper002/double bezier", "ccd3d-paper002/double bezier power", "ccd3d-paper002/double projection",
               "ccd3d-paper002/double sampling:64", "ccd3d-paper002/double marching:64",
               "ccd3d-paper002/double bezier first-contact", "ccd3d-paper002/certified"],
     ),
     dict(
-        name="3D, paper 002's example, exact certified answer",
-        key="ccd3d-paper002/exact",
+        name="3D, paper 002's example, all collision intervals, double as published, rounded input (eccd::solve --guard none)",
+        key="product-paper002/double as published, rounded input",
+        limit_ns=0.3e6,
+        anchor="issue 21: at most 0.3 ms; 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV)",
+        phases="phases-paper002-double-bezier",
+        also=["product-paper002/double as published, prepared input"],
+    ),
+    dict(
+        name="3D, paper 002's example, exact certified answer (eccd::solve --arith exact)",
+        key="product-paper002/exact",
         limit_ns=25e6,
         anchor="issue 21: at most 25 ms (issue 6: 1 s); 002: 4.7 s for a degree-4 pair in double (approximate zero set, no certificate)",
         phases="phases-paper002-exact",
-        also=[],
+        also=["ccd3d-paper002/exact"],
     ),
     dict(
         name="3D continuous query, both ellipsoids translating linearly (degree 1), double (issue 21)",
@@ -165,6 +188,18 @@ SET_TARGETS = [
 
 # Targets on the ratio of one row to another of the same group (medians, same process).
 RATIO_TARGETS = [
+    # Issue 30: the guard's cost, guarded over as published, both through eccd::solve from the scene (rounded input).
+    dict(name="The guard's cost on the 2D degree-6 scene (Variant 3): double guarded over double as published, rounded input",
+         key="product-2d-deg6-v3/double guarded, rounded input",
+         base="product-2d-deg6-v3/double as published, rounded input", limit_ratio=1.5,
+         anchor="issue 30: guarded / as published at most ×1.5 (median); today (2026-11-28, a --eccd_quick run of the "
+                "product rows on a loaded machine, CPU medians): 227 µs / 91 µs = ×2.5; issue 14 measured ×3.5–×20 "
+                "over plain double on the pipeline rows from the prepared pair"),
+    dict(name="The guard's cost on paper 002's example: double guarded over double as published, rounded input",
+         key="product-paper002/double guarded, rounded input",
+         base="product-paper002/double as published, rounded input", limit_ratio=1.5,
+         anchor="issue 30: guarded / as published at most ×1.5 (median); today (2026-11-28, a --eccd_quick run on a "
+                "loaded machine, CPU medians): 2.16 ms / 0.68 ms = ×3.2"),
     dict(name="Certified mode on paper 002's example against double (issue 21)",
          key="ccd3d-paper002/certified", base="ccd3d-paper002/double bezier", limit_ratio=3.0,
          anchor="issue 21: certified at most 3x double on paper 002's example (both from the prepared pair: "

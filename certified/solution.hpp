@@ -41,6 +41,10 @@ struct Solution {
   Variant variant = Variant::answer;
   bool certified = false;  // every instant carries a proved rational bracket
   bool sampled = false;    // a sampled baseline: nothing is claimed between its instants
+  // The face of a floating run (api/options.hpp Guard): "none" (the algorithm
+  // as published, in plain T) or "bound" (guarded, Bounded<T>); "" for exact
+  // and certified runs, which have no face.
+  std::string guard;
 
   Answer answer;
 

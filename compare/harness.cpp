@@ -173,11 +173,12 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
       p.input = arith == "exact" ? "prepared" : mode;
       p.arith = p.opt.arith.kind == Arithmetic::Exact ? "exact" : p.opt.arith.kind == Arithmetic::Mpfr ? "mpfr" : "double";
       p.bits = p.opt.arith.precision_bits();
-      if (arith != "exact") {
-        apply_input_mode(p.opt, mode);
-        if (both && mode == "prepared") p.label += "@prepared";
+      if (arith == "exact") { v.push_back(p); continue; }
+      apply_input_mode(p.opt, mode);
+      for (PipelineSpec& f : in_faces(p, o.guards)) {
+        if (both && mode == "prepared") f.label += "@prepared";
+        v.push_back(f);
       }
-      v.push_back(p);
     }
   };
   add("exact", "bernstein", "bezier", "");
@@ -227,6 +228,21 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
         p.input = "rounded";
         v.push_back(p);
       }
+  }
+  return v;
+}
+
+std::vector<PipelineSpec> in_faces(const PipelineSpec& p, const std::vector<std::string>& guards) {
+  std::vector<PipelineSpec> v;
+  for (const auto& g : guards) {
+    PipelineSpec f = p;
+    f.opt.guard = parse_guard(g);
+    f.guard = g;
+    if (f.opt.guard == Guard::none) {
+      const std::size_t at = f.label.find('@');
+      f.label.insert(at == std::string::npos ? f.label.size() : at, kPublishedSuffix);
+    }
+    if (std::none_of(v.begin(), v.end(), [&](const PipelineSpec& x) { return x.label == f.label; })) v.push_back(f);
   }
   return v;
 }
@@ -354,6 +370,7 @@ ResultRow pipeline_row(const SceneInfo& info, const PipelineSpec& ps) {
   row.basis = ps.basis;
   row.method = ps.method;
   row.input = ps.input;
+  row.guard = ps.guard;
   return row;
 }
 
@@ -479,7 +496,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
 std::string results_csv_header() {
   return "scene,source,dim,degree,family,motion,d,seed,pipeline,arith,bits,basis,method,coef_err,delta_err,outcome,"
          "collides,exact_collides,intervals,exact_intervals,missed_contacts,false_contacts,first_contact_err,"
-         "endpoint_err,time_us,structure_ok,input,digits,reason,coef_err_common";
+         "endpoint_err,time_us,structure_ok,input,digits,reason,coef_err_common,guard";
 }
 
 std::string results_csv_line(const ResultRow& r) {
@@ -494,7 +511,7 @@ std::string results_csv_line(const ResultRow& r) {
                    r.m.outcome == kNoGroundTruthOutcome ? "" : std::to_string(r.m.exact_intervals),
                    std::to_string(r.m.missed_contacts), std::to_string(r.m.false_contacts), opt(r.m.first_contact_err),
                    opt(r.m.endpoint_err), fmt(r.time_us, "%.1f"), r.m.structure_ok ? "1" : "0", r.input,
-                   s.digits ? std::to_string(s.digits) : "", csv_text(r.reason), opt(r.coef_err_common)});
+                   s.digits ? std::to_string(s.digits) : "", csv_text(r.reason), opt(r.coef_err_common), r.guard});
 }
 
 }  // namespace eccd

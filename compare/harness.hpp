@@ -53,6 +53,15 @@
 // and its structure_ok means collides and the first contact agree. A scene
 // whose motions FCL's translation motion cannot express gets no fcl/ccd row
 // (fcl_skipped counts them from the rows).
+// Faces (design.md "two faces"): every double and MPFR pipeline runs in each
+// face of HarnessOptions::guards, "none" (the algorithm as published, in plain
+// T: its errors are the measurement) and "bound" (guarded by the running error
+// bound: an unsure sign makes the place undecided). The row's `guard` says
+// which; the as-published row's label carries "/published" before any
+// "@prepared" ("double/bernstein/published@prepared"), the guarded row keeps
+// the plain label ("double/bernstein@prepared"). Exact, certified, FCL and
+// external rows have no face (guard empty). Cycloidal pipelines exist in the
+// guarded face only (api/solve.cpp).
 // Scenes of the motion families (a cycloidal motion, or "parameters":
 // "independent"; issue 20) have their own pipelines and ground truth:
 // compare/harness_families.hpp (run_scene hands them over).
@@ -90,6 +99,7 @@ struct PipelineSpec {
   SolveOptions opt;   // eccd's pipelines (engine solve)
   std::string basis, method;
   std::string input = "prepared";  // rounded | prepared (exact: prepared)
+  std::string guard;  // floating: none (as published) | bound (guarded); "" otherwise
   std::string arith;  // the CSV's arith: exact | double | mpfr | certified | fcl
   int bits = 0;       // the CSV's bits
   enum class Engine { solve, fcl_sample, fcl_ccd } engine = Engine::solve;
@@ -128,6 +138,7 @@ struct HarnessOptions {
   int grid = 64;               // N of the 3D sampling:N and marching:N baselines
   bool mpfr_power_3d = false;  // also run mpfr:B/bezier-power in 3D
   std::vector<std::string> inputs = default_input_modes();  // input modes of the floating pipelines
+  std::vector<std::string> guards{"none", "bound"};  // faces of the floating pipelines (as published, guarded)
   double budget_s = 10;         // time budget of one floating run (seconds; <= 0: none)
   double exact_budget_s = 600;  // time budget of the exact run (ground truth)
   bool isolate = true;          // each floating run in a child process killed at 2 x budget + 1 s (run_bounded)
@@ -138,6 +149,12 @@ struct HarnessOptions {
 };
 
 std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& opt);
+
+// The label suffix of an as-published row ("double/bernstein" + it).
+inline constexpr const char* kPublishedSuffix = "/published";
+// One floating spec in each face of `guards` ("none", "bound"; std::invalid_argument
+// otherwise): opt.guard set, guard named, the as-published label marked (see above).
+std::vector<PipelineSpec> in_faces(const PipelineSpec& p, const std::vector<std::string>& guards);
 
 struct ResultRow {
   SceneInfo scene;
@@ -150,6 +167,7 @@ struct ResultRow {
   std::string error;   // the pipeline's exception message, if any
   std::string input;   // rounded | prepared: where the floating run started
   std::string reason;  // undecided rows: why (time budget, the pipeline's undecided instants); error rows: the message
+  std::string guard;   // floating rows: none (as published) | bound (guarded); "" for the others
 };
 
 // The row of pipeline `ps` on the scene `info`, before its run: the scene's and the pipeline's columns.

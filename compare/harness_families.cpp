@@ -43,15 +43,21 @@ bool motion_family_scene(const Scene& s) { return s.independent || cycloidal_sce
 
 std::vector<PipelineSpec> motion_family_pipelines(const Scene& s, const HarnessOptions& o) {
   std::vector<PipelineSpec> v;
+  // Each floating pipeline in the faces asked for; a cycloidal one in the guarded face only (api/solve.cpp).
+  auto add = [&](const PipelineSpec& p, bool guarded_only) {
+    std::vector<std::string> faces = o.guards;
+    if (guarded_only) faces = {"bound"};
+    for (const PipelineSpec& f : in_faces(p, faces)) v.push_back(f);
+  };
   if (cycloidal_scene(s)) {
     v.push_back(spec("certified", "", "none", "ladder", "prepared"));
-    v.push_back(spec("double", "cycloidal", "pointwise", "cd-disc-cycloidal", "rounded"));
-    for (int b : o.mpfr_bits) v.push_back(spec("mpfr:" + std::to_string(b), "cycloidal", "pointwise", "cd-disc-cycloidal", "rounded"));
+    add(spec("double", "cycloidal", "pointwise", "cd-disc-cycloidal", "rounded"), true);
+    for (int b : o.mpfr_bits) add(spec("mpfr:" + std::to_string(b), "cycloidal", "pointwise", "cd-disc-cycloidal", "rounded"), true);
   } else {
     v.push_back(spec("exact", "", "exact", "balls-exact", "prepared"));
-    v.push_back(spec("double", "independent", "bernstein", "bezier-independent", "prepared"));
+    add(spec("double", "independent", "bernstein", "bezier-independent", "prepared"), false);
     for (int b : o.mpfr_bits)
-      v.push_back(spec("mpfr:" + std::to_string(b), "independent", "bernstein", "bezier-independent", "prepared"));
+      add(spec("mpfr:" + std::to_string(b), "independent", "bernstein", "bezier-independent", "prepared"), false);
   }
   return v;
 }

@@ -8,8 +8,9 @@
 // Statement. The comparison itself is api/answer_difference.hpp's (the one
 // comparison of answers: intervals matched by overlap widened by tol,
 // contacts one to one, continuous touching, undecided instants); a verdict
-// names the pipeline, keeps its time and its failure, and counts what the
-// tables count. "agrees" iff there is no difference. This is reporting, not
+// names the pipeline and its face (as published or guarded: the label of an
+// as-published pipeline ends in "/published", compare/harness.hpp), keeps its
+// time and its failure, and counts what the tables count. "agrees" iff there is no difference. This is reporting, not
 // deciding: doubles are fine here (design.md).
 #include "api/answer_difference.hpp"
 #include "kernel/answer.hpp"
@@ -27,6 +28,7 @@ namespace eccd {
 
 struct Verdict {
   std::string pipeline;
+  std::string guard;  // the face of the floating run: "none" (as published) | "bound" (guarded)
   bool agrees = false;
   std::string error;                      // the pipeline failed (exception message)
   std::vector<std::string> differences;   // empty iff agrees (and no error)
@@ -39,6 +41,7 @@ struct Verdict {
   nlohmann::json to_json() const {
     nlohmann::json j = {{"pipeline", pipeline}, {"agrees", agrees}, {"differences", differences}, {"time_ms", time_ms}};
     j["max_endpoint_error"] = max_endpoint_error ? nlohmann::json(*max_endpoint_error) : nlohmann::json(nullptr);
+    if (!guard.empty()) j["guard"] = guard;
     if (!error.empty()) j["error"] = error;
     return j;
   }

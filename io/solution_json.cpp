@@ -26,6 +26,8 @@ json solution_to_json(const Solution& s) {
   j["arith"] = s.arith.name();
   j["precision_bits"] = s.arith.precision_bits();
   j["input"] = to_string(s.input);
+  // The face of a floating run: "none" (as published) or "bound" (guarded); null for exact and certified runs.
+  j["guard"] = s.guard.empty() ? json(nullptr) : json(s.guard);
   j["variant"] = variant_name(s.variant);
   // 2D variants 1-3 (003 VI-C) do not compute what they do not report; 3D
   // first-contact mode (001 section 4) still reports the first interval and
@@ -183,6 +185,8 @@ Solution solution_from_json(const json& j, const std::string& label) {
   } catch (const std::invalid_argument& e) {
     fail("", e.what());
   }
+  s.guard = text("guard");
+  if (!s.guard.empty() && s.guard != "none" && s.guard != "bound") fail("/guard", "expected \"none\", \"bound\" or null, got \"" + s.guard + "\"");
   s.basis = text("basis");
   s.method = text("method");
   for (Variant v : {Variant::answer, Variant::collides, Variant::first_contact, Variant::all_contacts})
@@ -259,8 +263,11 @@ std::string summary_text(const Solution& s) {
   };
   if (s.answer.independent) {  // independent motions: A(s), B(t) (scene-format.md, "Independent motions")
     o << "scene " << s.scene << " (" << s.dim << "D, independent motions A(s), B(t)), arithmetic " << s.arith.name()
-      << (s.certified ? ", certified" : ", not certified") << ", method " << s.method << "\n";
-    o << "  collides: " << collides_text(s.answer) << "\n";
+      << (s.certified ? ", certified" : ", not certified") << ", method " << s.method
+      << (s.guard == "none" ? ", as published (no guard)" : s.guard == "bound" ? ", guarded" : "") << "
+";
+    o << "  collides: " << collides_text(s.answer) << "
+";
     for (const auto& [a, b] : s.answer.s_intervals) o << "  s-interval (A's path inside B's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& [a, b] : s.answer.t_intervals) o << "  t-interval (B's path inside A's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& u : s.answer.undecided) o << "  undecided near " << u.approx << "\n";
@@ -274,7 +281,8 @@ std::string summary_text(const Solution& s) {
   const bool two_d_partial = s.dim == 2 && s.variant != Variant::answer;  // intervals not computed
   o << "scene " << s.scene << " (" << s.dim << "D), arithmetic " << s.arith.name()
     << (s.certified ? ", certified" : ", not certified") << (s.basis != "exact" ? ", basis " + s.basis : std::string())
-    << (s.input == InputMode::rounded ? ", input rounded" : "") << "\n";
+    << (s.input == InputMode::rounded ? ", input rounded" : "")
+    << (s.guard == "none" ? ", as published (no guard)" : s.guard == "bound" ? ", guarded" : "") << "\n";
   // Say what the polynomial is: Δ, psc_k, or for the Bézier method F(u,t).
   std::string poly = s.projection == "bezier" ? "F(u,t) of degree " + std::to_string(s.projection_degree) + " in t"
                      : s.method == "cd-disc-cycloidal" ? s.projection + " (cycloidal: not a polynomial)"

@@ -87,11 +87,11 @@ TEST_CASE("eccd report: two shards joined by --merge give the table of one run",
   std::string whole = slurp(t.path / "whole" / "results.csv");
   CHECK(without_time(whole) == without_time(slurp(t.path / "joined" / "results.csv")));
   CHECK(slurp(t.path / "whole" / "failure_map.csv") == slurp(t.path / "joined" / "failure_map.csv"));
-  // 2D: 2 scenes x (exact + (3 double + 2 mpfr:64) x 2 input modes); 3D: 4 scenes (euler touch, euler free,
-  // affine touch, affine free) x (exact + (4 double + 1 mpfr) x 2 input modes), and on every scene the peers:
-  // certified, and with FCL built in fcl/sample:10,100,1000 (no fcl/ccd: none of these motions is a pure
-  // linear translation) -> header + 6 * (11 + 1 + 3) lines.
-  CHECK(std::count(whole.begin(), whole.end(), '\n') == 1 + 6 * (11 + 1 + (eccd::fcl_availability().available ? 3 : 0)));
+  // 2D: 2 scenes x (exact + (3 double + 2 mpfr:64) x 2 input modes x 2 faces); 3D: 4 scenes (euler touch, euler
+  // free, affine touch, affine free) x (exact + (4 double + 1 mpfr) x 2 input modes x 2 faces), and on every scene
+  // the peers: certified, and with FCL built in fcl/sample:10,100,1000 (no fcl/ccd: none of these motions is a pure
+  // linear translation) -> header + 6 * (21 + 1 + 3) lines.
+  CHECK(std::count(whole.begin(), whole.end(), '\n') == 1 + 6 * (21 + 1 + (eccd::fcl_availability().available ? 3 : 0)));
   auto meta = nlohmann::json::parse(slurp(t.path / "joined" / "meta.json"));
   CHECK(meta["shards"] == 2);
   CHECK(meta["seed"] == 9);

@@ -103,14 +103,22 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
   // The change of basis is exact and one to one: exact power coefficients iff exact Bernstein coefficients.
   for (const char* p : {"double/power", "mpfr:64/power", "mpfr:256/power"})
     CHECK((*by[p]->coef_err == 0) == (*by[p]->coef_err_common == 0));
-  // One CSV line per row, 30 fields each (coef_err_common last, issue 19).
+  // Both faces of every floating pipeline: the guarded row keeps the label, its as-published twin is marked.
+  for (const auto& r : rows) {
+    if (r.arith != "double" && r.arith != "mpfr") { CHECK(r.guard.empty()); continue; }
+    INFO(r.pipeline);
+    const bool published = r.pipeline.find("/published") != std::string::npos;
+    CHECK(r.guard == (published ? "none" : "bound"));
+    if (!published) CHECK(by.count(r.pipeline + "/published"));
+  }
+  // One CSV line per row, 31 fields each (coef_err_common, issue 19; guard last, issue 30).
   for (const auto& r : rows) {
     const std::string line = results_csv_line(r);
-    CHECK(std::count(line.begin(), line.end(), ',') == 29);
+    CHECK(std::count(line.begin(), line.end(), ',') == 30);
   }
   const std::string head = results_csv_header();
-  CHECK(std::count(head.begin(), head.end(), ',') == 29);
-  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common").size()) == ",reason,coef_err_common");
+  CHECK(std::count(head.begin(), head.end(), ',') == 30);
+  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common,guard").size()) == ",reason,coef_err_common,guard");
 }
 
 TEST_CASE("coefficient error in the common basis: power coefficients changed exactly to Bernstein form", "[metrics]") {
@@ -143,8 +151,13 @@ TEST_CASE("harness: both input modes are rows of their own where the solver has 
     (p.input == "prepared" ? prepared : rounded)++;
     if (solver_has_input_modes()) CHECK((p.input == "prepared") == (p.label.find("@prepared") != std::string::npos));
   }
-  CHECK(prepared == 5);  // double x 3 bases, mpfr:64 x 2
-  CHECK(rounded == (solver_has_input_modes() ? 5 : 0));
+  CHECK(prepared == 10);  // (double x 3 bases, mpfr:64 x 2) x 2 faces
+  CHECK(rounded == (solver_has_input_modes() ? 10 : 0));
+  // One face only: half the rows.
+  o.guards = {"bound"};
+  int guarded = 0;
+  for (const auto& p : harness_pipelines(2, o)) guarded += p.arith == "double" || p.arith == "mpfr";
+  CHECK(guarded == 10);
   SolveOptions so;
   CHECK_THROWS_AS(apply_input_mode(so, "rounding"), std::invalid_argument);
 }

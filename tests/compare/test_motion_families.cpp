@@ -123,8 +123,9 @@ TEST_CASE("harness rows of the motion families: ground truth certified / exact, 
   const GeneratedScene cyc = one_per_kind("cycloidal", 2, 4).at("colliding");
   const Scene cs = read(cyc);
   auto rows = run_motion_family_scene(cs, scene_info(cs, "generated"), o);
-  REQUIRE(rows.size() == 2);
+  REQUIRE(rows.size() == 2);  // a cycloidal pipeline has the guarded face only
   CHECK(rows[0].pipeline == "certified");
+  CHECK(rows[1].guard == "bound");
   CHECK(rows[0].reason.rfind("ground truth:", 0) == 0);
   CHECK(rows[1].pipeline == "double/cycloidal");
   CHECK(rows[1].input == "rounded");
@@ -142,15 +143,21 @@ TEST_CASE("harness rows of the motion families: ground truth certified / exact, 
   REQUIRE(kind_of(bg) == "balls-colliding");
   const Scene balls = read(bg);
   rows = run_motion_family_scene(balls, scene_info(balls, "generated"), o);
-  REQUIRE(rows.size() == 2);
+  REQUIRE(rows.size() == 3);  // exact, then double as published and guarded
   CHECK(rows[0].pipeline == "exact");
-  CHECK(rows[1].pipeline == "double/independent");
+  CHECK(rows[0].guard.empty());
+  CHECK(rows[1].pipeline == "double/independent/published");
+  CHECK(rows[1].guard == "none");
+  CHECK(rows[2].pipeline == "double/independent");
+  CHECK(rows[2].guard == "bound");
   CHECK(rows[0].m.exact_intervals == 2);  // one s-interval, one t-interval
-  INFO(rows[1].reason);
-  CHECK(rows[1].m.outcome == "correct");
-  CHECK(rows[1].m.structure_ok);  // ends within 1e-6 of the exact brackets
-  REQUIRE(rows[1].m.endpoint_err);
-  CHECK(*rows[1].m.endpoint_err < 1e-6);
+  for (std::size_t k : {std::size_t(1), std::size_t(2)}) {
+    INFO(rows[k].pipeline << ": " << rows[k].reason);
+    CHECK(rows[k].m.outcome == "correct");
+    CHECK(rows[k].m.structure_ok);  // ends within 1e-6 of the exact brackets
+    REQUIRE(rows[k].m.endpoint_err);
+    CHECK(*rows[k].m.endpoint_err < 1e-6);
+  }
 
   // Ellipsoids: exact refuses them today, so no ground truth: every row says so, nothing is guessed.
   Scene ell = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/independent/ellipsoids-cross.json");
@@ -163,7 +170,7 @@ TEST_CASE("harness rows of the motion families: ground truth certified / exact, 
   if (exact_refuses) {
     o.budget_s = 2;
     rows = run_motion_family_scene(ell, scene_info(ell, "cases"), o);
-    REQUIRE(rows.size() == 2);
+    REQUIRE(rows.size() == 3);
     std::vector<std::string> lines;
     for (const auto& r : rows) {
       INFO(r.pipeline);

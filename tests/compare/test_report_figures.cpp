@@ -199,16 +199,56 @@ std::string join_commas(const std::vector<std::string>& f) {
   return s;
 }
 
-// The verdict: the lines from "## Verdict" up to the next "## " heading.
-std::vector<std::string> verdict_of(const std::vector<std::string>& lines, std::size_t& start, std::size_t& end) {
+// The verdict: the lines from "## Verdict" (or another heading) up to the next "## " heading.
+std::vector<std::string> verdict_of(const std::vector<std::string>& lines, std::size_t& start, std::size_t& end,
+                                    const std::string& heading = "## Verdict") {
   start = end = lines.size();
   for (std::size_t i = 0; i < lines.size(); ++i)
-    if (lines[i] == "## Verdict") { start = i; break; }
+    if (lines[i] == heading) { start = i; break; }
   for (std::size_t i = start + 1; i < lines.size(); ++i)
     if (lines[i].rfind("## ", 0) == 0) { end = i; break; }
   std::vector<std::string> v;
   for (std::size_t i = start; i < end && i < lines.size(); ++i) v.push_back(lines[i]);
   return v;
+}
+
+// Words of some lines (whitespace-separated, the heading left out).
+int words_of(const std::vector<std::string>& lines) {
+  int n = 0;
+  for (const auto& l : lines) {
+    if (l.rfind("## ", 0) == 0) continue;
+    std::istringstream in(l);
+    std::string w;
+    while (in >> w) ++n;
+  }
+  return n;
+}
+
+// Rewrites the fixture with the optional columns (input, digits, reason, coef_err_common, guard): its double and
+// MPFR rows are the guarded face; and adds an as-published twin of each double/bernstein row
+// (double/bernstein/published, guard none), the same answer except on three scenes:
+//   s2-nm-1e-8  guarded undecided, as published a false positive       -> an error caught
+//   s4-col      guarded right, as published collides right, structure wrong -> an error, guarded right anyway
+//   s4-nm-1e-8  guarded a false positive, as published too             -> an error the guard missed
+// so the guard's record for 2D is: 10 runs, 3 errors, 1 caught, 1 right anyway, 1 missed, 0 false alarms.
+void add_published_rows(const fs::path& dir) {
+  auto lines = lines_of(slurp(dir / "results.csv"));
+  std::string out = lines[0] + ",input,digits,reason,coef_err_common,guard\n";
+  std::vector<std::string> extra;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    auto f = split_commas(lines[i]);
+    const bool floating = f[9] == "double" || f[9] == "mpfr";
+    out += lines[i] + ",prepared,,,," + (floating ? "bound" : "") + "\n";
+    if (f[8] != "double/bernstein") continue;
+    auto g = f;
+    g[8] = "double/bernstein/published";
+    if (f[0] == "s2-nm-1e-8") g[15] = "false_positive", g[16] = "1", g[18] = "1", g[20] = "0", g[21] = "1", g[25] = "0";
+    if (f[0] == "s4-col") g[25] = "0";
+    extra.push_back(join_commas(g) + ",prepared,,,,none");
+  }
+  for (const auto& e : extra) out += e + "\n";
+  std::ofstream(dir / "results.csv", std::ios::binary | std::ios::trunc) << out;
 }
 
 // Rewrites the fixture with the optional columns (input, digits, reason, coef_err_common) and adds, per scene, rows
@@ -265,7 +305,7 @@ int run_check_figures(const fs::path& dir, std::string& log) {
 
 }  // namespace
 
-TEST_CASE("report.md opens with a verdict: every aspect named, within 40 lines, each point backed by its table",
+TEST_CASE("report.md opens with a short verdict, then every aspect named, each point backed by its table",
           "[report-figures]") {
   FixtureCopy fx("verdict");
   std::string log;
@@ -274,10 +314,15 @@ TEST_CASE("report.md opens with a verdict: every aspect named, within 40 lines, 
   const std::string md = slurp(fx.dir / "report.md");
   const auto lines = lines_of(md);
   std::size_t start = 0, end = 0;
-  const auto verdict = verdict_of(lines, start, end);
-  REQUIRE(!verdict.empty());
+  const auto short_verdict = verdict_of(lines, start, end);
+  REQUIRE(!short_verdict.empty());
   CHECK(start < 5);   // right under the title
-  CHECK(end <= 40);   // the first screen
+  CHECK(end <= 20);   // the first screen
+  CHECK(words_of(short_verdict) <= 150);
+  // This fixture has no as-published rows (no guard column: an older run, the guarded face only).
+  CHECK(md.find("No as-published rows") != std::string::npos);
+  const auto verdict = verdict_of(lines, start, end, "## Verdict in detail: the guarded pipelines");
+  REQUIRE(!verdict.empty());
   std::string v;
   for (const auto& l : verdict) v += l + "\n";
   for (const char* aspect : {"**Confidently wrong**", "**Families**", "**Touch**", "**Separations**", "**Degrees**",
@@ -332,7 +377,7 @@ TEST_CASE("report_figures.py: certified, FCL and external rows in the trust tabl
   const std::string md = slurp(fx.dir / "report.md");
   const auto lines = lines_of(md);
   std::size_t start = 0, end = 0;
-  const auto verdict = verdict_of(lines, start, end);
+  const auto verdict = verdict_of(lines, start, end, "## Verdict in detail: the guarded pipelines");
   REQUIRE(verdict.size() > 4);
   // ext:mine is wrong on all 10 scenes (every answer flipped: 6 false positives, 4 false negatives): the most
   // wrong answers, so it leads the verdict's first point, before double/power (3 wrong).
@@ -414,4 +459,37 @@ TEST_CASE("report_figures.py figures: at most 8 series per panel, no two sharing
   CHECK(run_check_figures(fx.dir, clog) == 1);
   CHECK(clog.find("a.png / p: 9 series") != std::string::npos);
   CHECK(clog.find("b.png / q: 'y' and 'x' share colour and marker") != std::string::npos);
+}
+
+TEST_CASE("report_figures.py: both faces - the as-published table, the guard's record and the verdict", "[report-figures]") {
+  FixtureCopy fx("faces");
+  add_published_rows(fx.dir);
+  std::string log;
+  REQUIRE(run_script(fx.dir, log) == 0);
+  INFO(log);
+  const std::string md = slurp(fx.dir / "report.md");
+  const auto lines = lines_of(md);
+  std::size_t start = 0, end = 0;
+  const auto verdict = verdict_of(lines, start, end);
+  CHECK(words_of(verdict) <= 150);
+  std::string v;
+  for (const auto& l : verdict) v += l + "\n";
+  // 3 of the 10 as-published runs wrong (degrees 2 and 4, near misses from 1e-08); the guard flagged 2 of 3.
+  CHECK(v.find("**2D, as published:** double was wrong on 3/10 (30%) runs. Wrong at degree 2–4; near misses from d = "
+               "1e-08 down.") != std::string::npos);
+  CHECK(v.find("Guarded: it missed 1 of 3 errors (a bug of the guard). Undecided 1/10 (10%), of which 0 false alarms.") !=
+        std::string::npos);
+  // The as-published table: per degree 1 of 4 (an FP) and 2 of 6 (an FP, a wrong structure).
+  CHECK(md.find("## The published algorithms as published: misclassification") != std::string::npos);
+  CHECK(md.find("| 2D | double/bernstein | 1/4 (1 FP) | 2/6 (1 FP, 1 struct) | 3/10 (2 FP, 1 struct) |") != std::string::npos);
+  // The guard's record, 2D all: runs, errors, caught, right anyway, missed, flagged, false alarms, of undecided.
+  CHECK(md.find("| **2D, all** | 10 | 3 | 1 | 1 | 1 | 66.7% | 0 | 0/1 (0%) |") != std::string::npos);
+  CHECK(md.find("**Missed by the guard** (1): s4-nm-1e-8 double/bernstein (false_positive).") != std::string::npos);
+  // The claims: Bernstein wrong at d = 1e-08 as published (prepared input): 003's robustness to 1e-12 refuted.
+  CHECK(md.find("| 003 VI-C: Bernstein form robust to d = 1e-12 | 2D near-miss, double/bernstein as published; prepared: "
+                "wrong 2/5 (largest d wrong 1e-08) | refuted (run) |") != std::string::npos);
+  // The other sections still read the guarded face only: double/bernstein's row in the degree table is unchanged.
+  const auto degree_table = verdict_of(lines, start, end, "## Results per dimension and degree");
+  REQUIRE(!degree_table.empty());
+  for (const auto& l : degree_table) CHECK(l.find("/published") == std::string::npos);
 }

@@ -1,0 +1,175 @@
+// The guard's record (design.md "two faces"): on generated families and the
+// paper cases, every error of a floating pipeline as published (plain double,
+// SolveOptions::guard = Guard::none) must be flagged by the guarded face
+// (Guard::bound): where the as-published answer differs from the exact one,
+// the guarded answer is undecided (or right). A guarded answer that is
+// decided and differs from the exact answer, or that claims a collision
+// where none happens (even beside undecided instants), is a miss of the
+// guard: the test fails and prints the scene, the pipeline, the input mode
+// and the differences (api/answer_difference.hpp).
+//
+// Families: realistic decimals and keyframes, near misses, overlaps, in 2D
+// (CD-DISC, power / Bernstein / scaled Bernstein) and 3D (the Bézier method,
+// f set up in Bernstein and in power form), both input modes (rounded,
+// prepared); and cases/paper003, where as-published double is known to be
+// wrong (Example 2 perturbed: a false collision on [0.42496, 0.56538]), so
+// that the test is never vacuous. Work is bounded by the number of scenes and
+// by each run's deadline (kernel/budget.hpp), not timed.
+// ECCD_GUARD_SEED overrides the seed (printed).
+#include "api/answer_difference.hpp"
+#include "api/solve.hpp"
+#include "compare/scene_generator.hpp"
+#include "io/scene_reader.hpp"
+#include "kernel/budget.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+using namespace eccd;
+
+namespace {
+
+struct Tally {
+  int runs = 0, published_errors = 0, caught = 0, right_anyway = 0, false_alarms = 0;
+  std::vector<std::string> misses;
+};
+
+SolveOptions options(const std::string& arith, Basis basis, InputMode input, Guard guard) {
+  SolveOptions o;
+  o.arith = parse_arithmetic(arith);
+  o.basis = basis;
+  o.input = input;
+  o.guard = guard;
+  o.time_limit_s = 2;  // a run that hits it is undecided ("time budget"): a work bound, not a timing
+  return o;
+}
+
+std::string diff_text(const AnswerDifference& d) {
+  std::string s;
+  for (const auto& x : d.differences) s += (s.empty() ? "" : "; ") + x;
+  return s;
+}
+
+// Both faces of every pipeline of the scene's dimension against the exact answer.
+void check_scene(const Scene& s, Tally& t) {
+  SolveOptions ex;
+  ex.arith = Arithmetic::exact();
+  const Solution exact = solve(s, ex);
+  const std::vector<Basis> bases = s.dim == 2 ? std::vector<Basis>{Basis::power, Basis::bernstein, Basis::scaled_bernstein}
+                                              : std::vector<Basis>{Basis::bernstein, Basis::power};
+  for (Basis b : bases)
+    for (InputMode m : {InputMode::rounded, InputMode::prepared}) {
+      const Solution pub = solve(s, options("double", b, m, Guard::none));
+      const Solution grd = solve(s, options("double", b, m, Guard::bound));
+      REQUIRE(pub.guard == "none");
+      REQUIRE(grd.guard == "bound");
+      ++t.runs;
+      const AnswerDifference dp = answer_difference(pub.answer, exact.answer);
+      const AnswerDifference dg = answer_difference(grd.answer, exact.answer);
+      // Wrong: decided and not the exact answer, or a collision claimed where none happens (also beside
+      // undecided instants: the collision reported is decided, and false).
+      const bool pub_wrong = (!dp.agrees && dp.undecided == 0) || (pub.answer.collides && !exact.answer.collides);
+      const bool grd_wrong = (!dg.agrees && dg.undecided == 0) || (grd.answer.collides && !exact.answer.collides);
+      const bool grd_undecided = dg.undecided > 0 && !grd_wrong;
+      const std::string where = s.name + " double/" + to_string(b) + " input " + to_string(m);
+      if (pub_wrong) {
+        ++t.published_errors;
+        if (grd_undecided) ++t.caught;
+        else if (dg.agrees) ++t.right_anyway;
+      } else if (dp.agrees && grd_undecided) {
+        ++t.false_alarms;
+      }
+      // The guard is never confidently wrong, whatever the published face said.
+      if (grd_wrong) t.misses.push_back(where + ": guarded differs: " + diff_text(dg) + " (as published: " +
+                                        (dp.agrees ? "right" : diff_text(dp)) + ")");
+    }
+}
+
+std::uint64_t guard_seed() {
+  const char* env = std::getenv("ECCD_GUARD_SEED");
+  const std::uint64_t seed = env ? std::stoull(env) : 20261127;
+  std::cout << "[guard-record] seed " << seed << (env ? " (from ECCD_GUARD_SEED)" : " (default; set ECCD_GUARD_SEED to change)")
+            << std::endl;
+  return seed;
+}
+
+void report(const char* what, const Tally& t) {
+  std::cout << "[guard-record] " << what << ": " << t.runs << " pipeline runs per face, " << t.published_errors
+            << " as-published errors, " << t.caught << " caught (guarded undecided), " << t.right_anyway
+            << " guarded right anyway, " << t.misses.size() << " missed, " << t.false_alarms << " false alarms" << std::endl;
+}
+
+}  // namespace
+
+TEST_CASE("the guard flags every as-published error on the paper 003 cases", "[guard-record]") {
+  Tally t;
+  const std::string dir = std::string(ECCD_SOURCE_DIR) + "/cases/paper003";
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().extension() == ".json" && e.path().filename().string().rfind("example2", 0) == 0) files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  REQUIRE(files.size() >= 5);
+  for (const auto& f : files) check_scene(read_scene_file(f), t);
+  report("cases/paper003/example2*", t);
+  for (const auto& m : t.misses) UNSCOPED_INFO(m);
+  CHECK(t.misses.empty());
+  // Not vacuous: Example 2 perturbed away by 1e-3 is a false collision of as-published double (rounded input).
+  CHECK(t.published_errors > 0);
+  CHECK(t.caught > 0);
+}
+
+TEST_CASE("the guard flags every as-published error on the generated families", "[guard-record]") {
+  const std::uint64_t seed = guard_seed();
+  std::vector<GeneratorSpec> specs;
+  auto add = [&](int dim, int degree, const std::string& family, const std::string& motion, int d, int digits) {
+    GeneratorSpec g;
+    g.dim = dim;
+    g.degree = degree;
+    g.family = family;
+    g.motion = motion;
+    g.d_exponent = d;
+    g.digits = digits;
+    g.seed = scene_seed(seed, g, 0);
+    specs.push_back(g);
+  };
+  for (int deg : {2, 3, 4, 5, 6}) {
+    for (int digits : {6, 15}) add(2, deg, "decimal", "kinematic", 0, digits);
+    add(2, deg, "keyframe", "kinematic", 0, 9);
+    for (int d : {4, 6, 8, 10, 12, 14}) add(2, deg, "near-miss", "kinematic", d, 0);
+  }
+  for (int depth : {5, 9}) add(2, 1, "overlap", "translation", depth, 0);
+  for (int deg : {2, 3, 4}) {
+    add(3, deg, "decimal", "euler", 0, 15);
+    add(3, deg, "keyframe", "euler", 0, 9);
+    for (int d : {6, 10, 14}) add(3, deg, "near-miss", "euler", d, 0);
+  }
+  for (int depth : {5, 9}) add(3, 1, "overlap", "translation", depth, 0);
+  Tally t;
+  for (const auto& g : specs) {
+    const GeneratedScene gs = generate_scene(g);
+    INFO(gs.name);
+    check_scene(parse_scene(gs.doc.dump(), gs.name), t);
+  }
+  report("generated families", t);
+  for (const auto& m : t.misses) UNSCOPED_INFO(m);
+  CHECK(t.misses.empty());
+  int expected = 0;  // 2D: 3 bases, 3D: 2 bases; 2 input modes each
+  for (const auto& g : specs) expected += (g.dim == 2 ? 3 : 2) * 2;
+  CHECK(t.runs == expected);
+}
+
+// A known miss of the guard, kept as a reproducer until it is fixed (hidden: run it by its tag): the Bézier
+// method with f set up in power form, rounded input, decides "overlapping" at sample instants of a scene that
+// never collides (tests/data/float/guard-miss-bezier-power-keyframe.json, its note says how it was found).
+TEST_CASE("known guard miss: 3D keyframe scene, Bezier method with the power-form setup", "[.guard-miss]") {
+  Tally t;
+  check_scene(read_scene_file(std::string(ECCD_SOURCE_DIR) + "/tests/data/float/guard-miss-bezier-power-keyframe.json"), t);
+  report("tests/data/float/guard-miss-bezier-power-keyframe.json", t);
+  for (const auto& m : t.misses) UNSCOPED_INFO(m);
+  CHECK(t.misses.empty());
+}
