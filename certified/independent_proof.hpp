@@ -90,10 +90,13 @@
 // edge system's "F_t of one sign" is asked of F_t / t (or F_t / (1 - t)),
 // built exactly (edge_quotient): one sign of it on X's box means F_t != 0
 // there off the face, which is all that the uniqueness of C in X needs.
-// Cost (Release, one core): spheres-cross 0.9 s, spheres-end 0.6 s,
-// ellipsoids-apart 0.01 s, ellipsoids-cross 6-8 s, almost all of it the
-// localisation in intervals of doubles (the double pipeline, which also
-// bisects by point tests to 2^-34, takes 4-21 s on the same cases).
+// Cost (Release, CPU seconds of one core, a loaded machine): every scene of
+// cases/independent 0.01-0.55 s (ellipsoids-cross and -turning 0.5 s, most
+// of it the localisation in intervals of doubles), generated pairs of
+// ellipsoids turning by degree-2 Euler parameters 0.02-1.1 s. The
+// localisation's work is bounded in coefficient operations (box tests times
+// the net's size, IndependentProofOptions::localise_work), so a large net
+// stops early and says where, rather than running for minutes.
 // Requirements: the exact net TriBern<Rational>; intervals Interval and
 // MpfiInterval; double only for the Newton points and Y (any value is sound
 // there).

@@ -44,7 +44,10 @@
 // reported in `undecided` (values of s or of t) with where and why; nothing
 // there is guessed.
 // Requirements on T: scalar_traits<T> (from_rational, sign); intended for
-// Bounded<double> and Bounded<Mpfr>.
+// Bounded<double> and Bounded<Mpfr> (guarded), and plain double and Mpfr (as
+// published: signs taken at face value). Ellipses and ellipsoids alike (F's
+// sign convention is the same for H = 3 and 4). A net of degree 0 in s (that
+// body does not move) is one strip: its sub-strips are the same function.
 #include "kernel/answer.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/trivariate_bernstein.hpp"
