@@ -205,9 +205,9 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
 // section 4): F(u, s, t) (kernel/trivariate_bernstein.hpp, H = 3 for ellipses,
 // 4 for ellipsoids) from the exactly prepared pair rounded to T (the input
 // mode is always `prepared` here), then floating/independent_ccd.hpp. T is
-// plain double / Mpfr (as published) or Bounded<...> (guarded); the work
-// bound of MPFR is scaled to its cost per step so that a run ends within
-// about 20 times double's time (a box test costs 10-100x double's).
+// plain double / Mpfr (as published) or Bounded<...> (guarded); MPFR gets a
+// smaller work bound (a box test costs 10-100x double's), and both the
+// run's deadline (kernel/budget.hpp).
 template <class T, int H>
 IndependentResult independent_floating_result(const Scene& scene, const SolveOptions& opt, const T& like) {
   Scene shared = scene;
