@@ -13,8 +13,9 @@
 // curvature there lies on the other side). Exact, certified and double must
 // all give these answers: exact and certified with brackets that hold the
 // analytic ends (width <= 1e-9), double within 1e-8 of them.
-// Turning bodies (no closed form): double's ends within 1e-8 of the proved
-// brackets of certified (exact takes the same proved route there).
+// Turning bodies (no closed form) are scenes with stored exact answers in
+// cases/independent (ellipses-turning, ellipsoids-turning), which
+// `eccd regress` checks in exact and certified arithmetic.
 #include "api/solve.hpp"
 #include "kernel/polynomial.hpp"
 
