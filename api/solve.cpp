@@ -210,28 +210,40 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
 }
 
 // Independent motions ("parameters": "independent", scene-format.md; 001
-// section 4): F(u, s, t) from the exactly prepared pair rounded to T (the
-// input mode is always `prepared` here), then floating/independent_ccd.hpp.
-template <class T>
-Solution run_independent_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
+// section 4): F(u, s, t) (kernel/trivariate_bernstein.hpp, H = 3 for ellipses,
+// 4 for ellipsoids) from the exactly prepared pair rounded to T (the input
+// mode is always `prepared` here), then floating/independent_ccd.hpp. T is
+// plain double / Mpfr (as published) or Bounded<...> (guarded); MPFR gets a
+// smaller work bound (a box test costs 10-100x double's), and both the
+// run's deadline (kernel/budget.hpp).
+template <class T, int H>
+IndependentResult independent_floating_result(const Scene& scene, const SolveOptions& opt, const T& like) {
   Scene shared = scene;
   shared.independent = false;  // prepare_pair refuses independent scenes for the shared-parameter pipelines
-  const PreparedPair<4> p = prepare_pair<4>(shared);
+  const PreparedPair<H> p = prepare_pair<H>(shared);
   IndependentOptions io;
-  if (opt.arith.kind == Arithmetic::Mpfr) io.max_tests = 2000000;  // MPFR steps cost 10-100x double's
-  const auto start = std::chrono::steady_clock::now();
-  IndependentResult r;
+  if (opt.arith.kind == Arithmetic::Mpfr) io.max_tests = 2000000;
   try {
-    const TriBern<T> F = independent_ellipsoid_function<T, 4>(to_arithmetic_bernstein<T, 4>(p, like));
-    r = ccd_independent(F, like, io);
+    const TriBern<T> F = independent_ellipsoid_function<T, H>(to_arithmetic_bernstein<T, H>(p, like));
+    return ccd_independent(F, like, io);
   } catch (const BudgetExhausted& e) {
-    r = IndependentResult{};
+    IndependentResult r;
     r.answer.independent = true;
     r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
     r.undecided_reasons.push_back(std::string("s and t in [0, 1]: ") + e.what());
+    return r;
   }
+}
+
+template <class T>
+Solution run_independent_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
+  if (has_cycloidal_motion(scene))
+    throw IndependentMotionsRefused("independent motions with cycloidal (non-rational) motions are not solved: F(u, s, t) needs rational motions");
+  const auto start = std::chrono::steady_clock::now();
+  const IndependentResult r = scene.dim == 3 ? independent_floating_result<T, 4>(scene, opt, like)
+                                             : independent_floating_result<T, 3>(scene, opt, like);
   Solution s;
-  s.dim = 3;
+  s.dim = scene.dim;
   s.answer = r.answer;
   s.undecided_reasons = r.undecided_reasons;
   s.work = r.counters;
@@ -244,21 +256,28 @@ Solution run_independent_floating(const Scene& scene, const SolveOptions& opt, c
   return s;
 }
 
+// F's exact net of an independent scene, ellipses or ellipsoids.
+TriBern<Rational> independent_exact_net(const Scene& scene) {
+  if (has_cycloidal_motion(scene))
+    throw IndependentMotionsRefused("independent motions with cycloidal (non-rational) motions are not solved: F(u, s, t) needs rational motions");
+  Scene shared = scene;
+  shared.independent = false;
+  if (scene.dim == 3) return independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(shared), Rational(1)));
+  return independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(shared), Rational(1)));
+}
+
 // Proved answers for any rational motions (certified/independent_proof.hpp):
 // F's net built exactly, then interval proofs (strip signs; at each end
 // Krawczyk's test and the exclusion of other extreme points). The answer says
 // so: method "bezier-independent-proved", basis "interval+mpfi:BITS",
 // decided_in, and one line per proved end in `proofs`.
 Solution run_independent_proved(const Scene& scene) {
-  Scene shared = scene;
-  shared.independent = false;
   const auto start = std::chrono::steady_clock::now();
-  const PreparedPair<4> p = prepare_pair<4>(shared);
-  const TriBern<Rational> F = independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(p, Rational(1)));
+  const TriBern<Rational> F = independent_exact_net(scene);
   const IndependentProofOptions po;
   const IndependentProofResult r = prove_independent(F, po);
   Solution s;
-  s.dim = 3;
+  s.dim = scene.dim;
   s.answer = r.answer;
   s.undecided_reasons = r.undecided_reasons;
   s.work = r.counters;
@@ -273,9 +292,10 @@ Solution run_independent_proved(const Scene& scene) {
   return s;
 }
 
-// Exact: two balls on straight paths (exact/independent_balls.hpp), each cell
-// decided by the exact shared-parameter pipeline on the scene with one object
-// fixed at the cell's rational sample; any other pair by the proved route above.
+// Exact: two balls (discs in 2D) on straight paths (exact/independent_balls.hpp),
+// each cell decided by the exact shared-parameter pipeline on the scene with
+// one object fixed at the cell's rational sample; any other pair by the
+// proved route above.
 Solution run_independent_exact(const Scene& scene) {
   const auto a = ball_path(scene.a), b = ball_path(scene.b);
   if (!a || !b) return run_independent_proved(scene);
@@ -294,10 +314,11 @@ Solution run_independent_exact(const Scene& scene) {
     sh.answer.reset();
     (fix_a ? sh.a : sh.b) = fixed(fix_a ? scene.a : scene.b, x);
     ++runs;
-    return run_exact<4>(prepare_pair<4>(sh), Variant::answer, false).answer.collides;
+    return scene.dim == 3 ? run_exact<4>(prepare_pair<4>(sh), Variant::answer, false).answer.collides
+                          : run_exact<3>(prepare_pair<3>(sh), Variant::answer, false).answer.collides;
   };
   Solution s;
-  s.dim = 3;
+  s.dim = scene.dim;
   s.answer.independent = true;
   s.answer.s_intervals = ball_projection(*a, *b, [&](const Rational& x) { return meets(true, x); });
   s.answer.t_intervals = ball_projection(*b, *a, [&](const Rational& x) { return meets(false, x); });
@@ -331,8 +352,6 @@ Solution in_face(const SolveOptions& opt, Run&& run) {
 }
 
 Solution solve_independent(const Scene& scene, const SolveOptions& opt) {
-  if (scene.dim != 3)
-    throw IndependentMotionsRefused("independent motions are solved in 3D only (paper 001, section 4); this scene is 2D");
   switch (opt.arith.kind) {
     case Arithmetic::Double:
     case Arithmetic::Mpfr:

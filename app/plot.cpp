@@ -533,18 +533,21 @@ std::string find_python(std::string& tried) {
 // bound) on the shared-parameter scene with A fixed at A(s), and the exact static test where double's error
 // bound cannot decide (two balls: f always has a double root): 1 meets (touching or overlapping), 0 separate. The zero set of F(u, s, t) = det((u-1)A(s) - uB(t))
 // projected on (s, t) is the boundary of that region (F > 0 for some u iff separate).
+// The same in 2D (ellipses, H = 3) and 3D (H = 4): the object fixed at its position x of its path.
 constexpr int kStGrid = 64;
+template <int H>
+SceneObject fixed_at(const SceneObject& o, const Rational& x) {
+  SceneObject f = o;
+  auto M = motion_matrix<Rational, H>(o.motion, [](const Rational& q) { return q; });
+  MatrixMotion mm;
+  mm.m.assign(H, std::vector<RPoly>(H));
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) mm.m[i][j] = RPoly::constant(M[i][j](x));
+  f.motion = mm;
+  return f;
+}
 void add_st_grid(json& data, const Scene& s) {
-  auto fixed = [&](const SceneObject& o, const Rational& x) {
-    SceneObject f = o;
-    auto M = motion_matrix<Rational, 4>(o.motion, [](const Rational& q) { return q; });
-    MatrixMotion mm;
-    mm.m.assign(4, std::vector<RPoly>(4));
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) mm.m[i][j] = RPoly::constant(M[i][j](x));
-    f.motion = mm;
-    return f;
-  };
+  auto fixed = [&](const SceneObject& o, const Rational& x) { return s.dim == 3 ? fixed_at<4>(o, x) : fixed_at<3>(o, x); };
   std::vector<Rational> g;
   for (int k = 0; k < kStGrid; ++k) g.push_back(Rational(2 * k + 1, 2 * kStGrid));  // cell centres
   for (auto& x : g) x.canonicalize();

@@ -1,6 +1,6 @@
 #pragma once
 // Proved answers of independent motions for general rational motions of two
-// ellipsoids (issue 20 point 3, exact part): every cell of s (and of t) is
+// ellipsoids or two ellipses: every cell of s (and of t) is
 // decided by a proof about the exact F, and every end of an s- or t-interval
 // is a rational bracket that provably holds exactly one end.
 //
@@ -72,12 +72,31 @@
 // degenerate end: a touch, a cusp, two ends closer than the strips); those
 // ranges go to `undecided` with where and why. The ends of [0, 1] are exact.
 // Work is bounded (box tests of the localisation, exclusion boxes per end).
-// Ellipsoids only (H = 4): 2D independent scenes are refused by the caller
-// (api/solve.cpp), the sign conventions of F differ for ellipses.
-// Cost (Release, one core): spheres-cross 0.9 s, spheres-end 0.6 s,
-// ellipsoids-apart 0.01 s, ellipsoids-cross 6-8 s, almost all of it the
-// localisation in intervals of doubles (the double pipeline, which also
-// bisects by point tests to 2^-34, takes 4-21 s on the same cases).
+// Ellipses (H = 3) and ellipsoids (H = 4) alike: kernel/trivariate_bernstein.hpp
+// gives F the same sign convention in both, and the lemma's "at most two roots
+// in (0, 1)" holds for the cubic too (its negative roots).
+// Degenerate paths. A body that does not move as a set makes F = p G with p
+// of one sign along its parameter (TriBern::without_positive_factor, checked
+// exactly on the rational net); the proof runs on G, of degree 0 there. Its
+// projection is then all of [0, 1] or nothing, and the other projection's
+// ends are the lower-dimensional problem: F = F_u = 0 in (u, s) (system
+// "free"), proved by Krawczyk's test in (u, s) and the exclusion of other
+// zeros of (F, F_u) for u outside X's u-range and every t (no condition on
+// F_t, which is identically 0). Paths that run along each other in the same
+// lane only make P_s or P_t all of [0, 1] (no end to prove) or put the
+// extreme on t = 0 or 1 (the edge systems above). A path that leaves its
+// start (or reaches its end) sideways to the other body makes F_t vanish
+// identically on that face (the distance changes to second order); then the
+// edge system's "F_t of one sign" is asked of F_t / t (or F_t / (1 - t)),
+// built exactly (edge_quotient): one sign of it on X's box means F_t != 0
+// there off the face, which is all that the uniqueness of C in X needs.
+// Cost (Release, CPU seconds of one core, a loaded machine): every scene of
+// cases/independent 0.01-0.55 s (ellipsoids-cross and -turning 0.5 s, most
+// of it the localisation in intervals of doubles), generated pairs of
+// ellipsoids turning by degree-2 Euler parameters 0.02-1.1 s. The
+// localisation's work is bounded in coefficient operations (box tests times
+// the net's size, IndependentProofOptions::localise_work), so a large net
+// stops early and says where, rather than running for minutes.
 // Requirements: the exact net TriBern<Rational>; intervals Interval and
 // MpfiInterval; double only for the Newton points and Y (any value is sound
 // there).
@@ -112,9 +131,10 @@ struct IndependentProofOptions {
     IndependentOptions o;
     o.strip_depth = 16;          // strips down to 2^-16; Krawczyk gives the fine bracket
     o.s_depth = 0;               // no bisection by point tests: it proves single values, not the ranges between them
-    o.max_tests = 3000000;
+    o.max_tests = 1000000;
     return o;
   }();
+  double localise_work = 2e8;    // ... and at most this many coefficient operations (box tests times the net's size)
   bool localise_in_mpfi = false;  // localisation in intervals of doubles (number/interval.hpp: also enclosures) or in MPFI
   long max_boxes = 20000;        // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
   int max_box_depth = 36;
@@ -160,9 +180,38 @@ struct EndProof {
   long boxes = 0;
 };
 
+// F_t / t (edge 0) or F_t / (1 - t) (edge 1), exactly, when F_t vanishes
+// identically on that face of the net (t = 0: every d_0 = 0, with d_k the
+// Bernstein coefficients n (c_{k+1} - c_k) of F_t, degree m = n - 1); then
+// B^m_k(t) / t = (m / k) B^{m-1}_{k-1}(t) and B^m_k(t) / (1 - t) =
+// (m / (m - k)) B^{m-1}_k(t). A path that starts or stops moving "sideways"
+// (the distance to the other body changes only to second order there) gives
+// such a face: the edge system's condition "F_t of one sign" then cannot
+// hold, but "F_t / t of one sign" says the same for t != t_b.
+inline std::optional<TriBern<I>> edge_quotient(const TriBern<Rational>& F, int edge, int bits) {
+  const int n = F.n[2], m = n - 1;
+  if (m < 1) return std::nullopt;
+  const int k0 = edge == 0 ? 0 : m;
+  for (int i = 0; i <= F.n[0]; ++i)
+    for (int j = 0; j <= F.n[1]; ++j)
+      if (F.at(i, j, k0 + 1) != F.at(i, j, k0)) return std::nullopt;
+  TriBern<I> G;
+  G.n = {F.n[0], F.n[1], m - 1};
+  for (int i = 0; i <= F.n[0]; ++i)
+    for (int j = 0; j <= F.n[1]; ++j)
+      for (int k = 0; k < m; ++k) {
+        const int kd = edge == 0 ? k + 1 : k;  // the coefficient d_kd of F_t
+        const Rational d = Rational(n) * (F.at(i, j, kd + 1) - F.at(i, j, kd));
+        const Rational w = edge == 0 ? Rational(m, kd) : Rational(m, m - kd);
+        G.c.emplace_back(Rational(d * w), bits);
+      }
+  return G;
+}
+
 class EndProver {
  public:
-  EndProver(Nets& nets, const IndependentProofOptions& o) : nets_(nets), opt_(o) {}
+  EndProver(Nets& nets, const IndependentProofOptions& o, std::array<std::optional<TriBern<I>>, 2> quotients = {})
+      : nets_(nets), opt_(o), quotients_(std::move(quotients)) {}
   long boxes = 0, krawczyk_tests = 0;
 
   // [lo, hi]: a run of s between proved values of opposite status; var: "s" or "t" for the texts.
@@ -187,6 +236,10 @@ class EndProver {
       else if (g < best_g) { best_g = g; best_x = {ua, sm, t}; }
     }
     seeds.push_back({best_g, best_x});
+    // F does not depend on the other parameter (that body does not move, kernel/trivariate_bernstein.hpp,
+    // without_positive_factor): every t is alike, one seed on t = 0 and the system F = F_u = 0 in (u, s)
+    const bool free = !opt_.record && nets_.get({0, 0, 0}).n[2] == 0;  // a certificate cannot say "free" yet
+    if (free) seeds.erase(seeds.begin() + 1, seeds.end());
     const long start_boxes = boxes;
     std::sort(seeds.begin(), seeds.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [g, x0] : seeds) {
@@ -195,7 +248,8 @@ class EndProver {
       System sys;
       sys.eqs = {{0, 0, 0}, {1, 0, 0}};
       sys.vars = {0, 1};
-      if (edge) { sys.fixed_t = mpq_class(x0[2] == 0.0 ? 0 : 1); sys.kind = var == "s" ? "t" : "s"; sys.kind += std::string(" = ") + (x0[2] == 0.0 ? "0" : "1"); }
+      if (free) { sys.fixed_t = mpq_class(0); sys.kind = "free"; }
+      else if (edge) { sys.fixed_t = mpq_class(x0[2] == 0.0 ? 0 : 1); sys.kind = var == "s" ? "t" : "s"; sys.kind += std::string(" = ") + (x0[2] == 0.0 ? "0" : "1"); }
       else { sys.eqs.push_back({0, 0, 1}); sys.vars.push_back(2); sys.kind = "fold"; }
       if (boxes - start_boxes > 3 * opt_.max_boxes) {
         best.why += "; stopped after " + std::to_string(boxes - start_boxes) + " exclusion boxes for this end";
@@ -217,6 +271,7 @@ class EndProver {
  private:
   Nets& nets_;
   const IndependentProofOptions& opt_;
+  std::array<std::optional<TriBern<I>>, 2> quotients_;  // edge_quotient on t = 0 and t = 1, where F_t vanishes there
 
   EndProof prove_at(const System& sys, const std::array<double, 3>& x, const mpq_class& lo, const mpq_class& hi,
                     const std::string& var) {
@@ -226,7 +281,10 @@ class EndProver {
     const mpq_class s0 = exact_of(x[1]), u0 = exact_of(x[0]), t0 = exact_of(x[2]);
     const std::string other = var == "s" ? "t" : "s";
     r.why = "Krawczyk's test failed around the extreme point near " + var + " = " + decimal_string(s0, 12) + " (" +
-            (sys.kind == "fold" ? "a fold, " + other + " = " + decimal_string(t0, 8) : "on " + sys.kind) + ")";
+            (sys.kind == "fold" ? "a fold, " + other + " = " + decimal_string(t0, 8)
+             : sys.kind == "free" ? "F does not depend on " + other
+                                  : "on " + sys.kind) + ")";
+    std::string last_fail;  // the last failed condition, said once
     // the (u, t) half-width of X: the fold's branch of F = F_u = 0 spreads ~sqrt(w) in t across the strip, and
     // Krawczyk's test needs X small: a ladder from wide to narrow
     for (const int f : {1024, 256, 64, 16, 4, 1}) {
@@ -244,14 +302,20 @@ class EndProver {
       // the (u, t) box that the exclusion leaves to X, and the conditions that make C meet it in the zero only
       mpq_class xu0 = X.lo[0], xu1 = X.hi[0], xt0, xt1;
       std::array<I, 3> region{I(X.lo[0], X.hi[0], bits), I(lo, hi, bits), I(mpq_class(0), bits)};
-      if (sys.fixed_t) {
+      if (sys.kind == "free") {  // every t alike: X's (u, t) box is its u-range times [0, 1]
+        xt0 = 0;
+        xt1 = 1;
+        region[1] = I(std::min(lo, X.lo[1]), std::max(hi, X.hi[1]), bits);
+      } else if (sys.fixed_t) {
         const bool at0 = sgn(*sys.fixed_t) == 0;
         xt0 = at0 ? mpq_class(0) : mpq_class(1 - rho);
         xt1 = at0 ? rho : mpq_class(1);
         region[1] = I(std::min(lo, X.lo[1]), std::max(hi, X.hi[1]), bits);
         region[2] = I(xt0, xt1, bits);
-        if (!one_sign(nets_.eval({0, 0, 1}, region)) || !one_sign(nets_.eval({2, 0, 0}, region))) {
-          r.why += ": F_" + other + " or F_uu changes sign near that end of the path";
+        const auto& q = quotients_[at0 ? 0 : 1];
+        const bool ft = one_sign(nets_.eval({0, 0, 1}, region)) || (q && one_sign((*q)(region[0], region[1], region[2])));
+        if (!ft || !one_sign(nets_.eval({2, 0, 0}, region))) {
+          last_fail = ": F_" + other + " or F_uu changes sign near that end of the path";
           continue;
         }
       } else {
@@ -260,15 +324,15 @@ class EndProver {
         region[1] = I(X.lo[1], X.hi[1], bits);
         region[2] = I(xt0, xt1, bits);
         if (sgn(xt0) <= 0 || xt1 >= 1 || sign(nets_.eval({2, 0, 0}, region)) != Sign::negative) {
-          r.why += ": F_uu is not proved < 0 there (a degenerate touch?)";
+          last_fail = ": F_uu is not proved < 0 there (a degenerate touch?)";
           continue;
         }
       }
       std::string ex = exclude(lo, hi, xu0, xu1, xt0, xt1);
-      if (!ex.empty()) { r.why += ": " + ex; continue; }
+      if (!ex.empty()) { last_fail = ": " + ex; continue; }
       // tighten: X <- K(X) ∩ X keeps the unique zero
       Box Y = X;
-      r.system = sys.fixed_t ? sys.kind.substr(4) : sys.kind;  // "fold", "0", "1"
+      r.system = sys.kind == "free" || !sys.fixed_t ? sys.kind : sys.kind.substr(4);  // "fold", "free", "0", "1"
       r.chain_lo = {X.lo};
       r.chain_hi = {X.hi};
       for (int it = 0; it < 12; ++it) {
@@ -291,11 +355,13 @@ class EndProver {
       if (r.lo > r.hi) { r.why = "the proved extreme point lies outside the run (internal inconsistency)"; return r; }
       r.proved = true;
       r.how = var + " in [" + decimal_string(lo, 12) + ", " + decimal_string(hi, 12) + "]: one end, " +
-              (sys.kind == "fold" ? "a fold F = F_u = F_" + other + " = 0 (Krawczyk, F_uu < 0)"
-                                  : "F = F_u = 0 on " + sys.kind + " (Krawczyk, F_" + other + " and F_uu of one sign)") +
+              (sys.kind == "fold"   ? "a fold F = F_u = F_" + other + " = 0 (Krawczyk, F_uu < 0)"
+               : sys.kind == "free" ? "F = F_u = 0 in (u, " + var + "), F not depending on " + other + " (Krawczyk)"
+                                    : "F = F_u = 0 on " + sys.kind + " (Krawczyk, F_" + other + " and F_uu of one sign)") +
               ", the rest of the strip excluded in " + std::to_string(last_boxes_) + " boxes";
       return r;
     }
+    r.why += last_fail;
     return r;
   }
 
@@ -304,13 +370,18 @@ class EndProver {
 
  public:
   // For a checker: the conditions of step 3b (besides K(X) inside X) and the exclusion 3c for a claimed end:
-  // "" when they hold, else why not. system: "fold" or "0" / "1" (the other parameter fixed there); X in (u, s[, t]).
+  // "" when they hold, else why not. system: "fold", "0" / "1" (the other parameter fixed there) or "free" (F of
+  // degree 0 in it); X in (u, s[, t]).
   std::string check_end(const std::string& system, const Box& X, const mpq_class& lo, const mpq_class& hi) {
     const int bits = nets_.bits();
     budget_end_ = boxes + 3 * opt_.max_boxes;
     mpq_class xt0, xt1;
     std::array<I, 3> region{I(X.lo[0], X.hi[0], bits), I(X.lo[1], X.hi[1], bits), I(mpq_class(0), bits)};
-    if (system != "fold") {
+    if (system == "free") {  // F of degree 0 in t: every t alike, no condition on F_t
+      if (nets_.get({0, 0, 0}).n[2] != 0) return "system free needs F of degree 0 in the other parameter";
+      xt0 = 0;
+      xt1 = 1;
+    } else if (system != "fold") {
       const mpq_class rho = (X.hi[0] - X.lo[0]) / 2;
       const bool at0 = system == "0";
       xt0 = at0 ? mpq_class(0) : mpq_class(1 - rho);
@@ -318,8 +389,10 @@ class EndProver {
       if (rho <= 0 || rho > mpq_class(1, 16)) return "the box's half-width is not in (0, 1/16]";
       region[1] = I(std::min(lo, X.lo[1]), std::max(hi, X.hi[1]), bits);
       region[2] = I(xt0, xt1, bits);
-      if (!one_sign(nets_.eval({0, 0, 1}, region)) || !one_sign(nets_.eval({2, 0, 0}, region)))
-        return "F_t or F_uu is not proved of one sign near that end of the path";
+      const auto& q = quotients_[at0 ? 0 : 1];
+      const bool ft = one_sign(nets_.eval({0, 0, 1}, region)) || (q && one_sign((*q)(region[0], region[1], region[2])));
+      if (!ft || !one_sign(nets_.eval({2, 0, 0}, region)))
+        return "F_t (or F_t / t, F_t / (1 - t) where F_t vanishes on that face) or F_uu is not proved of one sign near that end of the path";
     } else {
       if (X.lo.size() != 3) return "a fold's box needs (u, s, t)";
       xt0 = X.lo[2];
@@ -366,7 +439,8 @@ class EndProver {
 // One projection (axis 1 of F) with proved ends; `var` is "s" or "t". The
 // localisation runs on FL (the same exact net enclosed in L: Interval or MpfiInterval).
 template <class L>
-std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<I>& F, const TriBern<L>& FL, const IndependentProofOptions& opt,
+std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rational>& exact, const TriBern<I>& F, const TriBern<L>& FL,
+                                                           const IndependentProofOptions& opt,
                                                            const char* var, IndependentProofResult& res, long& tests, long& boxes,
                                                            long& kz) {
   using independent_detail::Projector;
@@ -379,10 +453,15 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<I>& F, 
   // merge equal neighbours
   std::vector<Piece> m;
   for (auto& p : pieces)
-    if (!m.empty() && m.back().status == p.status) m.back().hi = p.hi;
-    else m.push_back(p);
+    if (!m.empty() && m.back().status == p.status) {
+      m.back().hi = p.hi;
+      m.back().examined = m.back().examined && p.examined;
+    } else {
+      m.push_back(p);
+    }
   Nets nets(F, opt.bits);
-  EndProver prover(nets, opt);
+  EndProver prover(nets, opt, opt.record ? std::array<std::optional<TriBern<I>>, 2>{}
+                                          : std::array<std::optional<TriBern<I>>, 2>{edge_quotient(exact, 0, opt.bits), edge_quotient(exact, 1, opt.bits)});
   const std::string v = var;
   const std::string why_stop = proj.stop_reason.empty() ? "" : " (" + proj.stop_reason + ")";
   auto range = [&](const mpq_class& a, const mpq_class& b) { return v + " in [" + decimal_string(a, 12) + ", " + decimal_string(b, 12) + "]"; };
@@ -405,9 +484,11 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<I>& F, 
     }
     const bool has_before = i > 0, has_after = i + 1 < m.size();
     const Strip before = has_before ? m[i - 1].status : Strip::out, after = has_after ? m[i + 1].status : Strip::out;
-    if (!has_before && !has_after) {
-      undecided(p.lo, p.hi, "nothing proved" + why_stop);
-      out.push_back({Strip::out, pending, exact_instant(p.hi)});
+    if (!p.examined || (!has_before && !has_after)) {
+      undecided(p.lo, p.hi, (p.examined ? "nothing proved" : "not examined, the run stopped") + why_stop);
+      const Instant hi_end = exact_instant(p.hi);
+      out.push_back({Strip::out, pending, hi_end});  // for the intervals only: the reason says it is not known
+      pending = hi_end;
       continue;
     }
     if (before == after || !has_before || !has_after) {
@@ -448,6 +529,36 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<I>& F, 
   return iv;
 }
 
+// The face u = index i of the exact net < 0 on [0, 1]^2: every control point of a sub-box < 0, by exact
+// halving (along s where the face depends on s, else along t) down to 2^-12; false when not proved.
+inline bool face_negative(const TriBern<Rational>& net, int i) {
+  TriBern<Rational> face;
+  face.n = {0, net.n[1], net.n[2]};
+  for (int j = 0; j <= net.n[1]; ++j)
+    for (int k = 0; k <= net.n[2]; ++k) face.c.push_back(net.at(i, j, k));
+  auto constant_along = [](const TriBern<Rational>& f, int axis) {
+    const std::size_t st = f.stride(axis), len = std::size_t(f.n[axis]) + 1;
+    for (std::size_t b = 0; b < f.c.size(); ++b)
+      if ((b / st) % len != 0 && f.c[b] != f.c[b - ((b / st) % len) * st]) return false;
+    return true;
+  };
+  const Rational half(1, 2);
+  std::vector<std::pair<TriBern<Rational>, int>> stack{{face, 0}};
+  long boxes = 0;
+  while (!stack.empty()) {
+    auto [f, d] = std::move(stack.back());
+    stack.pop_back();
+    if (f.strict_sign() == -1) continue;
+    if (f.strict_sign() == 1 || d >= 24 || ++boxes > 4096) return false;
+    const int axis = constant_along(f, 1) ? 2 : constant_along(f, 2) ? 1 : 1 + d % 2;
+    if (f.n[axis] == 0) return false;
+    auto halves = f.split_half(axis, half);
+    stack.emplace_back(std::move(halves.first), d + 1);
+    stack.emplace_back(std::move(halves.second), d + 1);
+  }
+  return true;
+}
+
 }  // namespace independent_proof_detail
 
 // The proved answer of an independent scene from F's exact net (kernel/trivariate_bernstein.hpp, T = Rational).
@@ -458,33 +569,45 @@ inline IndependentProofResult prove_independent(const TriBern<Rational>& exact, 
   r.answer.independent = true;
   r.degree_s = exact.n[1];
   r.degree_t = exact.n[2];
+  // a body that does not move (as a set): F = p G with p > 0 along its parameter, G of degree 0 there
+  // (not when recording a certificate: its checker, io/independent_certificate.hpp, knows neither the reduced
+  // net nor the system "free" nor the quotients F_t / t yet; those ends are then left undecided there)
+  TriBern<Rational> reduced = exact;
+  if (!opt.record)
+    for (int axis : {1, 2})
+      if (auto g = reduced.without_positive_factor(axis)) reduced = std::move(*g);
+  const TriBern<Rational>& net = reduced;
   TriBern<I> F;
-  F.n = exact.n;
-  F.c.reserve(exact.c.size());
-  for (const auto& q : exact.c) F.c.emplace_back(q, opt.bits);
-  // F < 0 on the faces u = 0 and u = 1 (exact signs of the net's faces: the hull there)
-  for (int j = 0; j <= exact.n[1]; ++j)
-    for (int k = 0; k <= exact.n[2]; ++k)
-      if (sgn(exact.at(0, j, k)) >= 0 || sgn(exact.at(exact.n[0], j, k)) >= 0)
+  F.n = net.n;
+  F.c.reserve(net.c.size());
+  for (const auto& q : net.c) F.c.emplace_back(q, opt.bits);
+  // F < 0 on the faces u = 0 and u = 1: exact signs of the faces' nets, subdivided exactly where the hull
+  // of the whole face does not show it (a turning body: det A(s) < 0 with Bernstein coefficients of both signs)
+  if (!face_negative(net, 0) || !face_negative(net, net.n[0]))
         throw std::invalid_argument(
             "independent motions: F(0, s, t) = det A(s) or F(1, s, t) = det B(t) is not proved < 0 on [0, 1]^2 (a degenerate "
             "motion matrix?): the proof of the interval ends needs it");
   long tests = 0, boxes = 0, kz = 0;
+  // the localisation's work bound in coefficient operations: a box test costs about the net's size
+  IndependentProofOptions o2 = opt;
+  o2.localise.max_tests = std::max(20000L, std::min(opt.localise.max_tests, long(opt.localise_work / double(net.c.size()))));
+  const IndependentProofOptions& opt_run = o2;
   if (opt.localise_in_mpfi) {
-    r.answer.s_intervals = proved_projection(F, F, opt, "s", r, tests, boxes, kz);
-    r.answer.t_intervals = proved_projection(F.swap_st(), F.swap_st(), opt, "t", r, tests, boxes, kz);
+    r.answer.s_intervals = proved_projection(net, F, F, opt_run, "s", r, tests, boxes, kz);
+    r.answer.t_intervals = proved_projection(net.swap_st(), F.swap_st(), F.swap_st(), opt_run, "t", r, tests, boxes, kz);
   } else {
     TriBern<Interval> FL;
-    FL.n = exact.n;
-    for (const auto& q : exact.c) FL.c.push_back(scalar_traits<Interval>::from_rational(q));
-    r.answer.s_intervals = proved_projection(F, FL, opt, "s", r, tests, boxes, kz);
-    r.answer.t_intervals = proved_projection(F.swap_st(), FL.swap_st(), opt, "t", r, tests, boxes, kz);
+    FL.n = net.n;
+    for (const auto& q : net.c) FL.c.push_back(scalar_traits<Interval>::from_rational(q));
+    r.answer.s_intervals = proved_projection(net, F, FL, opt_run, "s", r, tests, boxes, kz);
+    r.answer.t_intervals = proved_projection(net.swap_st(), F.swap_st(), FL.swap_st(), opt_run, "t", r, tests, boxes, kz);
   }
   r.answer.collides = !r.answer.s_intervals.empty() || !r.answer.t_intervals.empty();
   if (r.answer.s_intervals.empty() != r.answer.t_intervals.empty()) {
     r.undecided_reasons.push_back("one projection found a meeting and the other none (a meeting set thinner than the strips)");
     r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
   }
+  r.undecided_reasons = independent_detail::one_per_cause(r.undecided_reasons);
   r.counters = {{"box_tests", tests}, {"exclusion_boxes", boxes}, {"krawczyk_tests", kz}, {"proved_ends", long(r.proofs.size())}};
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -1,8 +1,10 @@
 #pragma once
-// Exact answers of independent motions (issue 20 point 3, paper 001 section
-// 4) in the case where the projection is cheap: two balls whose centres move
-// on straight lines (static or "matrix" motions whose linear block is a
-// constant multiple of the identity, with translations of degree <= 1).
+// Exact answers of independent motions (paper 001 section 4) in the case
+// where the projection is cheap: two balls (3D) or two discs (2D) whose
+// centres move on straight lines (static or "matrix" motions whose linear
+// block is a constant multiple of the identity, with translations of degree
+// <= 1). A disc's centre is a point of the plane z = 0 below; everything else
+// is the same.
 //
 // Statement. The s-intervals are the maximal intervals of
 //   P_s = { s in [0, 1] : A(s) meets B(t) for some t in [0, 1] }.
@@ -63,37 +65,41 @@ inline std::optional<Rational> rational_sqrt(const Rational& q) {
 }
 }  // namespace balls_detail
 
-// The ball and its straight path, if the object is one: a shape diag(k, k, k, -m)
-// with k, m > 0 and m/k a rational square, and a static motion or a matrix
-// motion [[c I, p(s)], [0, c]] with c a non-zero constant and p of degree <= 1.
+// The ball (disc) and its straight path, if the object is one: a shape
+// diag(k, .., k, -m) (dim + 1 entries) with k, m > 0 and m/k a rational square,
+// and a static motion or a matrix motion [[c I, p(s)], [0, c]] with c a
+// non-zero constant and p of degree <= 1.
 inline std::optional<BallPath> ball_path(const SceneObject& o) {
   const auto& Q = o.Q;
-  if (Q.size() != 4) return std::nullopt;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j)
+  if (Q.size() != 4 && Q.size() != 3) return std::nullopt;
+  const int D = int(Q.size()) - 1;
+  for (int i = 0; i <= D; ++i)
+    for (int j = 0; j <= D; ++j)
       if (i != j && sgn(Q[i][j]) != 0) return std::nullopt;
-  if (Q[0][0] != Q[1][1] || Q[1][1] != Q[2][2] || sgn(Q[0][0]) <= 0 || sgn(Q[3][3]) >= 0) return std::nullopt;
-  const auto r = balls_detail::rational_sqrt(Rational(-Q[3][3] / Q[0][0]));
+  for (int i = 1; i < D; ++i)
+    if (Q[i][i] != Q[0][0]) return std::nullopt;
+  if (sgn(Q[0][0]) <= 0 || sgn(Q[D][D]) >= 0) return std::nullopt;
+  const auto r = balls_detail::rational_sqrt(Rational(-Q[D][D] / Q[0][0]));
   if (!r) return std::nullopt;
   BallPath b;
   b.radius = *r;
   b.c0 = b.d = {Rational(0), Rational(0), Rational(0)};
   if (std::holds_alternative<StaticMotion>(o.motion)) return b;
   const auto* m = std::get_if<MatrixMotion>(&o.motion);
-  if (!m || m->m.size() != 4) return std::nullopt;
+  if (!m || int(m->m.size()) != D + 1) return std::nullopt;
   auto constant = [](const RPoly& p, Rational& v) {
     if (p.degree() > 0) return false;
     v = p.is_zero() ? Rational(0) : p.c[0];
     return true;
   };
   Rational c;
-  if (!constant(m->m[3][3], c) || sgn(c) == 0) return std::nullopt;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
+  if (!constant(m->m[D][D], c) || sgn(c) == 0) return std::nullopt;
+  for (int i = 0; i < D; ++i) {
+    for (int j = 0; j < D; ++j) {
       Rational v;
       if (!constant(m->m[i][j], v) || v != (i == j ? c : Rational(0))) return std::nullopt;
     }
-    const RPoly& p = m->m[i][3];
+    const RPoly& p = m->m[i][D];
     if (p.degree() > 1) return std::nullopt;
     b.c0[i] = p.is_zero() ? Rational(0) : Rational(p.c[0] / c);
     b.d[i] = p.degree() == 1 ? Rational(p.c[1] / c) : Rational(0);

@@ -44,7 +44,10 @@
 // reported in `undecided` (values of s or of t) with where and why; nothing
 // there is guessed.
 // Requirements on T: scalar_traits<T> (from_rational, sign); intended for
-// Bounded<double> and Bounded<Mpfr>.
+// Bounded<double> and Bounded<Mpfr> (guarded), and plain double and Mpfr (as
+// published: signs taken at face value). Ellipses and ellipsoids alike (F's
+// sign convention is the same for H = 3 and 4). A net of degree 0 in s (that
+// body does not move) is one strip: its sub-strips are the same function.
 #include "kernel/answer.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/trivariate_bernstein.hpp"
@@ -61,7 +64,7 @@ namespace eccd {
 struct IndependentOptions {
   int strip_depth = 18;      // strips (proofs for whole ranges of s) of width down to 2^-strip_depth
   int s_depth = 34;          // an end inside such a strip: bisection by point tests down to 2^-s_depth (the ends' tolerance)
-  int min_limit = 8;         // ... and at least this deep
+  int min_limit = 4;         // ... and at least this deep (wide strips fail fast and are split: cheaper than deep pieces)
   int extra_depth = 2;       // t- and u-pieces of a strip at depth d: at most d/2 + extra_depth deep
   long max_tests = 40000000;  // u-box sign tests for the whole run (both projections; ~3e6 per second in double)
 };
@@ -94,6 +97,7 @@ struct Piece {
   // Filled when the Projector records witnesses: "in": boxes with one t-range whose u-ranges cover [0, 1], each < 0;
   // "out": boxes each > 0 whose t-ranges cover [0, 1].
   std::vector<WitnessBox> witness = {};
+  bool examined = true;  // false: the run stopped (work bound, deadline) before this piece was looked at
 };
 
 template <class T>
@@ -113,12 +117,16 @@ class Projector {
     // a run of unresolved strips between a proved-in and a proved-out one holds an end: bisect it by point tests
     std::vector<Piece> runs;
     for (auto& p : out)
-      if (!runs.empty() && runs.back().status == Strip::unknown && p.status == Strip::unknown) runs.back().hi = p.hi;
-      else runs.push_back(p);
+      if (!runs.empty() && runs.back().status == Strip::unknown && p.status == Strip::unknown) {
+        runs.back().hi = p.hi;
+        runs.back().examined = runs.back().examined && p.examined;
+      } else {
+        runs.push_back(p);
+      }
     std::vector<Piece> refined;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Strip before = i > 0 ? runs[i - 1].status : Strip::out, after = i + 1 < runs.size() ? runs[i + 1].status : Strip::out;
-      if (runs[i].status != Strip::unknown || before == after) {
+      if (runs[i].status != Strip::unknown || before == after || !runs[i].examined) {
         refined.push_back(runs[i]);
         continue;
       }
@@ -140,6 +148,7 @@ class Projector {
       }
       if (lo != runs[i].lo) refined.push_back({runs[i].lo, lo, before});
       refined.push_back({lo, hi, Strip::unknown});
+      refined.back().examined = runs[i].examined;
       if (hi != runs[i].hi) refined.push_back({hi, runs[i].hi, after});
     }
     return refined;
@@ -211,7 +220,7 @@ class Projector {
         unknown = true;
         continue;
       }
-      auto halves = f.split_half(0, half_);
+      auto halves = std::move(f).split_half(0, half_);
       stack.emplace_back(std::move(halves.second), d + 1, 2 * ui + 1);
       stack.emplace_back(std::move(halves.first), d + 1, 2 * ui);
     }
@@ -240,7 +249,7 @@ class Projector {
         continue;
       }
       if (d >= limit) { unknown = true; continue; }
-      auto halves = f.split_half(2, half_);
+      auto halves = std::move(f).split_half(2, half_);
       stack.emplace_back(std::move(halves.second), d + 1, 2 * ti + 1);
       stack.emplace_back(std::move(halves.first), d + 1, 2 * ti);
     }
@@ -254,8 +263,10 @@ class Projector {
   void walk(const TriBern<T>& strip, const mpq_class& lo, const mpq_class& hi, int depth, std::vector<Piece>& out) {
     ++strips;
     const Strip r = stopped() ? Strip::unknown : classify_strip(strip, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth));
-    if (r != Strip::unknown || depth >= opt_.strip_depth || !stop_reason.empty()) {
+    // F of degree 0 in s (that body does not move): every sub-strip is this strip again, splitting decides nothing
+    if (r != Strip::unknown || depth >= opt_.strip_depth || !stop_reason.empty() || strip.n[1] == 0) {
       out.push_back({lo, hi, r});
+      out.back().examined = r != Strip::unknown || stop_reason.empty();  // unknown because the run stopped: not examined
       if (record && r != Strip::unknown) out.back().witness = witness_;
       return;
     }
@@ -265,6 +276,24 @@ class Projector {
     walk(halves.second, mid, hi, depth + 1, out);
   }
 };
+
+// Reasons "WHERE: CAUSE" with one entry per distinct cause: the places of one
+// cause are joined ("s in [a, b], t in [c, d]: CAUSE"), in the order the
+// causes first appear; a reason without "WHERE: " is kept once as it is.
+inline std::vector<std::string> one_per_cause(const std::vector<std::string>& reasons) {
+  std::vector<std::pair<std::string, std::string>> by_cause;  // cause, places
+  for (const auto& r : reasons) {
+    const auto cut = r.find(": ");
+    const bool placed = cut != std::string::npos && (r.rfind("s in [", 0) == 0 || r.rfind("t in [", 0) == 0);
+    const std::string cause = placed ? r.substr(cut + 2) : r, where = placed ? r.substr(0, cut) : "";
+    auto it = std::find_if(by_cause.begin(), by_cause.end(), [&](const auto& e) { return e.first == cause; });
+    if (it == by_cause.end()) by_cause.emplace_back(cause, where);
+    else if (!where.empty() && it->second.find(where) == std::string::npos) it->second += (it->second.empty() ? "" : ", ") + where;
+  }
+  std::vector<std::string> out;
+  for (const auto& [cause, where] : by_cause) out.push_back(where.empty() ? cause : where + ": " + cause);
+  return out;
+}
 
 // An end or a point known to within w (not certified: no bracket).
 inline Instant located(const mpq_class& x, const mpq_class& w) {
@@ -279,8 +308,12 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
   auto merge = [](std::vector<Piece>& v) {
     std::vector<Piece> m;
     for (auto& p : v)
-      if (!m.empty() && m.back().status == p.status) m.back().hi = p.hi;
-      else m.push_back(p);
+      if (!m.empty() && m.back().status == p.status) {
+        m.back().hi = p.hi;
+        m.back().examined = m.back().examined && p.examined;
+      } else {
+        m.push_back(p);
+      }
     v = std::move(m);
   };
   merge(pieces);
@@ -297,15 +330,16 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
     const Strip before = i > 0 ? pieces[i - 1].status : Strip::out;
     const Strip after = i + 1 < pieces.size() ? pieces[i + 1].status : Strip::out;
     const mpq_class mid = (p.lo + p.hi) / 2, w = p.hi - p.lo;
+    if (!p.examined) {  // the run stopped before looking here: nothing is said about it, in or out
+      undecided.push_back(located(mid, w / 2));
+      reasons.push_back(range(p) + ": not examined, the run stopped" + why);
+      p.status = Strip::out;  // for the intervals only: `collides` and the reasons say what is not known
+      resolved.push_back(p);
+      end_width.push_back(0);
+      continue;
+    }
     if (before == after) {  // in-unknown-in or out-unknown-out (the ends of [0, 1] count as out)
       undecided.push_back(located(mid, w / 2));
-      if (!stop_reason.empty() && before == Strip::out && i == 0 && i + 1 == pieces.size()) {
-        reasons.push_back(range(p) + ": left undecided" + why);  // the run stopped before deciding anything here
-        p.status = before;
-        resolved.push_back(p);
-        end_width.push_back(0);
-        continue;
-      }
       reasons.push_back(range(p) + ": " +
                         (before == Strip::in ? "inside the meeting set on both sides: a touching gap or none"
                                              : "separate on both sides: a touch, a near miss or a collision narrower than the strips") +
@@ -363,6 +397,7 @@ IndependentResult ccd_independent(const TriBern<T>& F, const T& like, const Inde
     r.undecided_reasons.push_back("one projection found a meeting and the other none (a meeting set thinner than the strips)");
     r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
   }
+  r.undecided_reasons = one_per_cause(r.undecided_reasons);
   r.counters = {{"box_tests", ps.tests + pt.tests}, {"strips", ps.strips + pt.strips}, {"point_tests", ps.points + pt.points}};
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

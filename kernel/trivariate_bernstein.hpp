@@ -1,17 +1,27 @@
 #pragma once
 // TriBern<T>: the ellipsoid function of independent motions,
-//   F(u, s, t) = det((u - 1) A(s) - u B(t)),
+//   F(u, s, t) = (-1)^H det((u - 1) A(s) - u B(t)) = det((1 - u) A(s) + u B(t)),
 // as a tensor-product polynomial in Bernstein form over [0, 1]^3, and the
-// subdivision it needs.
+// subdivision it needs. H = 4 (ellipsoids) or H = 3 (ellipses).
 //
 // Statement. Paper 001, section 4, "CCD for independent motions": A moves as
 // A(s), B as B(t) with s and t unrelated; A(s) and B(t) are separate iff
 // F(u, s, t) > 0 for some u in (0, 1) (for fixed s and t this is the static
-// test of kernel/ellipsoid_function.hpp, H = 4). F is built the way the
+// test of kernel/ellipsoid_function.hpp, H = 4). Ellipses (H = 3, paper 003
+// section III): f(λ) = det(λA - B) is a cubic with f(0) = -det B > 0 and
+// f -> +inf as λ -> -inf (det A < 0), separate iff two distinct negative
+// roots, between which f < 0; det((u - 1)A - uB) = u^3 f((u - 1)/u) then has
+// the sign of f, and the factor (-1)^H = -1 turns it into the ellipsoids'
+// convention: F(0) = det A < 0, F(1) = det B < 0, separate iff F > 0 for some
+// u in (0, 1), touching iff max F = 0 there, overlapping iff F < 0 on (0, 1),
+// and F(., s, t) has at most two roots in (0, 1) in both dimensions (the
+// negative roots of f). Everything built on F (floating/independent_ccd.hpp,
+// certified/independent_proof.hpp) is therefore the same for H = 3 and 4.
+// F is built the way the
 // shared-parameter F(u, t) is (kernel/ellipsoid_function.hpp): with
 // f(λ; s, t) = det(λA(s) - B(t)) = sum_k g_k(s, t) λ^k, F = sum_k g_k (u - 1)^k u^(H-k)
 // and (u - 1)^k u^(H-k) = (-1)^k B^H_{H-k}(u) / C(H, k), so F's Bernstein
-// coefficient of B^H_j(u) is (-1)^(H-j) g_{H-j} / C(H, j).
+// coefficient of B^H_j(u) is (-1)^(H-j) g_{H-j} / C(H, j), times (-1)^H.
 // g_k: det is multilinear in the columns (kernel/characteristic_polynomial.hpp),
 // g_k = (-1)^(H-k) sum_{|S| = k} det(C_S), C_S with the columns S from A(s) and
 // the others from B(t); by the Laplace expansion along the columns S,
@@ -36,6 +46,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -59,21 +70,36 @@ struct TriBern {
     return s0 == Sign::positive ? 1 : -1;
   }
 
-  // The two halves along `axis` (0 = u, 1 = s, 2 = t), by de Casteljau at 1/2.
-  std::pair<TriBern, TriBern> split_half(int axis, const T& half) const {
-    TriBern lo = *this, hi = *this;
-    const std::size_t st = stride(axis), len = std::size_t(n[axis]) + 1;
-    std::vector<T> line(len);
-    for (std::size_t base = 0; base < c.size(); ++base) {
+  // The two halves along `axis` (0 = u, 1 = s, 2 = t), by de Casteljau at 1/2,
+  // in place on the lines of the right half: round r of keep_right
+  // (kernel/bernstein.hpp) leaves the left half's coefficient r in the line's
+  // first place (the same operations as keep_left's, in the same order), so
+  // no line is copied (a copy of an MPFR number allocates).
+  std::pair<TriBern, TriBern> split_half(int axis, const T& half) const& {
+    TriBern copy = *this;
+    return std::move(copy).split_half(axis, half);
+  }
+  // The same, consuming this net: it becomes the right half (one copy fewer).
+  std::pair<TriBern, TriBern> split_half(int axis, const T& half) && {
+    TriBern lo = *this, hi = std::move(*this);
+    const std::size_t st = hi.stride(axis), len = std::size_t(hi.n[axis]) + 1;
+    if (len == 1) return {std::move(lo), std::move(hi)};
+    const T other = T(1) - half;
+    T x = half, y = half;
+    for (std::size_t base = 0; base < hi.c.size(); ++base) {
       // base is the first point of a line along axis iff its coordinate on the axis is 0
       if ((base / st) % len != 0) continue;
-      for (std::size_t m = 0; m < len; ++m) line[m] = c[base + m * st];
-      std::vector<T> l = line;
-      keep_left(std::span<T>(l), half);
-      keep_right(std::span<T>(line), half);
-      for (std::size_t m = 0; m < len; ++m) {
-        lo.c[base + m * st] = l[m];
-        hi.c[base + m * st] = line[m];
+      T* h = hi.c.data() + base;
+      for (std::size_t r = 1; r < len; ++r) {
+        for (std::size_t i = 0; i + r < len; ++i) {  // compound operations: no temporaries (an MPFR copy allocates)
+          x = h[i * st];
+          x *= other;
+          y = h[(i + 1) * st];
+          y *= half;
+          x += y;
+          h[i * st] = std::move(x);  // the number types' moves swap: x keeps a live value for the next copy
+        }
+        lo.c[base + r * st] = h[0];
       }
     }
     return {std::move(lo), std::move(hi)};
@@ -91,6 +117,54 @@ struct TriBern {
         r.c.push_back(bernstein_value(std::span<const T>(line), x));
       }
     return r;
+  }
+
+  // Degenerate paths: when F(u, s, t) = p(x) G(the other two) along `axis`
+  // (x = s or t; every line of the net along the axis a multiple of one line
+  // p, checked by exact cross-multiplication) and p has one strict sign on
+  // [0, 1] (all its Bernstein coefficients of one sign, convex hull), G
+  // (degree 0 along the axis, scaled so that sign G = sign F everywhere)
+  // has F's signs at every point: the body of that parameter does not move
+  // as a set (static, or turning about itself, or a path that only scales
+  // its matrix by a positive factor). The answer is then the lower-dimensional
+  // problem of G. Nothing is returned when F is not of that form, when p's
+  // sign is not proved, or when T is not exact (a rounded net's lines are
+  // proportional only approximately; its static bodies already have degree 0).
+  std::optional<TriBern> without_positive_factor(int axis) const {
+    if constexpr (!scalar_traits<T>::is_exact) {
+      (void)axis;
+      return std::nullopt;
+    } else {
+      if (n[axis] == 0) return std::nullopt;
+      const std::size_t st = stride(axis), len = std::size_t(n[axis]) + 1;
+      std::optional<std::size_t> ref;  // the first point of the line p
+      for (std::size_t base = 0; base < c.size() && !ref; ++base) {
+        if ((base / st) % len != 0) continue;
+        for (std::size_t m = 0; m < len; ++m)
+          if (sign(c[base + m * st]) != Sign::zero) { ref = base; break; }
+      }
+      if (!ref) return std::nullopt;
+      const Sign sp = sign(c[*ref]);
+      for (std::size_t m = 0; m < len; ++m)
+        if (sign(c[*ref + m * st]) != sp || sp == Sign::zero) return std::nullopt;
+      TriBern r;
+      r.n = n;
+      r.n[axis] = 0;
+      r.c.reserve(c.size() / len);
+      const T& p0 = c[*ref];
+      for (std::size_t base = 0; base < c.size(); ++base) {
+        if ((base / st) % len != 0) continue;
+        // the line is lam * p with lam = line[0] / p[0]; check line[m] p[0] == line[0] p[m]
+        for (std::size_t m = 1; m < len; ++m) {
+          const T lhs = c[base + m * st] * p0, rhs = c[base] * c[*ref + m * st];
+          if (!(lhs == rhs)) return std::nullopt;
+        }
+        T g = c[base] / p0;
+        if (sp == Sign::negative) g = -g;
+        r.c.push_back(g);
+      }
+      return r;
+    }
   }
 
   // s and t exchanged: the same function with the roles of A and B's parameters swapped.
@@ -120,7 +194,8 @@ struct TriBern {
 };
 
 // F(u, s, t) of a pair whose N_A, N_B are in Bernstein form (the first factor's
-// parameter is s, the second's t); H = 4 (ellipsoids, paper 001).
+// parameter is s, the second's t); H = 4 (ellipsoids, paper 001) or 3 (ellipses).
+// A body that does not move gives degree 0 in its parameter.
 template <class T, int H>
 TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p) {
   const T zero_s = scalar_traits<T>::from_rational(mpq_class(0), p.qa[0][0]);
@@ -178,7 +253,7 @@ TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p) {
   F.c.assign(std::size_t(H + 1) * (ds + 1) * (dt + 1), zero_s);
   auto choose = [](int n, int r) { long v = 1; for (int i = 1; i <= r; ++i) v = v * (n - r + i) / i; return v; };
   for (int j = 0; j <= H; ++j) {
-    const T w = scalar_traits<T>::from_rational(mpq_class((H - j) % 2 ? -1 : 1, choose(H, j)), zero_s);
+    const T w = scalar_traits<T>::from_rational(mpq_class(j % 2 ? -1 : 1, choose(H, j)), zero_s);  // (-1)^(H-j) (-1)^H
     for (int p = 0; p <= ds; ++p)
       for (int q = 0; q <= dt; ++q) F.at(j, p, q) = w * g[H - j][std::size_t(p) * (dt + 1) + q];
   }

@@ -142,3 +142,60 @@ write("ellipsoids-turning",
       "(3, 0, 0) while turning about z by the rational rotation (1 - t^2, 2t)/(1 + t^2), which now changes it. "
       "No closed form: the stored answer is the proved one (eccd solve --arith exact --write-answer, "
       "certified/independent_proof.hpp); double's ends (floating/independent_ccd.hpp) lie within 3e-11 of its brackets.")
+
+
+# --- 2D (ellipses: F is built with H = 3, kernel/trivariate_bernstein.hpp) and bodies that do not move
+def write2(name, a, b, note, dim=2):
+    doc = {"format": "ellipse-ccd-scene/1", "name": name, "dim": dim, "parameters": "independent",
+           "a": a, "b": b, "note": note}
+    with open(os.path.join(HERE, name + ".json"), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+
+
+def translation2(c0, c1):
+    """2D matrix motion M(t) = [[I, c0 + t c1], [0, 1]]"""
+    m = [[s(1 if i == j else 0) for j in range(2)] for i in range(2)]
+    for i in range(2):
+        m[i].append([s(c0[i]), s(c1[i])] if c1[i] != 0 else s(c0[i]))
+    m.append(["0", "0", "1"])
+    return {"type": "matrix", "m": m}
+
+
+def turning2():
+    """2D: the rational rotation [[1 - t^2, -2t], [2t, 1 - t^2]] / (1 + t^2) about the origin (0 to 90 degrees)."""
+    w = ["1", "0", "1"]
+    return {"type": "matrix", "m": [[["1", "0", "-1"], ["0", "-2"], "0"], [["0", "2"], ["1", "0", "-1"], "0"], ["0", "0", w]]}
+
+
+# discs-end: c_A(s) = (3s, 0), c_B(t) = (7/2, 3t), R = 1: 7/2 - 3s <= 1 iff s >= 5/6;
+# (1/2)^2 + (3t)^2 <= 1 iff 12 t^2 <= 1, t <= sqrt(3)/6
+for x in [Fr(k, 100) for k in range(101)]:
+    assert ((Fr(1, 2)) ** 2 + (3 * x) ** 2 - 1) * 4 == 3 * (12 * x * x - 1)
+write2("discs-end", {"shape": {"semi_axes": ["1/2", "1/2"]}, "motion": translation2((0, 0), (3, 0))},
+       {"shape": {"semi_axes": ["1/2", "1/2"]}, "motion": translation2((Fr(7, 2), 0), (0, 3))},
+       "Independent motions in 2D, two discs on segments (cases/independent/make_independent.py). r_A = r_B = 1/2; "
+       "c_A(s) = (3s, 0), c_B(t) = (7/2, 3t): they meet only near the end of A's path and the start of B's. "
+       "s-intervals [5/6, 1]; t-intervals [0, sqrt(3)/6] = [0, 0.28867513459481289] (12 t^2 - 1 = 0).")
+# ellipse-static: a disc (r = 1/2) along the minor axis of a static ellipse (2, 1): |9s - 5| <= 3/2
+assert 9 * Fr(7, 18) - 5 == Fr(-3, 2) and 9 * Fr(13, 18) - 5 == Fr(3, 2)
+write2("ellipse-static", {"shape": {"semi_axes": ["1/2", "1/2"]}, "motion": translation2((0, -5), (0, 9))},
+       {"shape": {"semi_axes": ["2", "1"]}, "motion": {"type": "static"}},
+       "Independent motions in 2D: a disc (r = 1/2) with centre (0, -5 + 9s) crosses a static ellipse (semi-axes 2, 1) "
+       "along its minor axis; the vertex (0, +-1) is the nearest point of the ellipse to the centre (the centre of "
+       "curvature there is on the other side). B does not move: t-intervals [0, 1]; s-intervals [7/18, 13/18] "
+       "(|9s - 5| <= 3/2). Proved on the lower-dimensional problem F = F_u = 0 in (u, s) "
+       "(certified/independent_proof.hpp, system free).")
+write2("ellipses-turning", {"shape": {"semi_axes": ["2", "1/2"]}, "motion": turning2()},
+       {"shape": {"semi_axes": ["1/4", "1/4"]}, "motion": translation2((1, -1), (0, 2))},
+       "Independent motions in 2D: A (semi-axes 2, 1/2) turns about its centre, the origin, by the rational rotation "
+       "(1 - s^2, 2s)/(1 + s^2) (0 to 90 degrees); a disc B (r = 1/4) moves from (1, -1) to (1, 1). No closed form: "
+       "the stored answer is the proved one (eccd solve --arith exact --write-answer).")
+# ellipsoid-static: A (1, 1/2, 1/2) with centre (0, -5 + 9s, 0) crosses a static ellipsoid B (2, 1, 1) along y;
+# the planes y = +-1 touch B at its vertices and A's lowest (highest) point is its vertex: they meet iff |9s - 5| <= 3/2
+write2("ellipsoid-static", {"shape": {"semi_axes": ["1", "1/2", "1/2"]}, "motion": translation((0, -5, 0), (0, 9, 0))},
+       {"shape": {"semi_axes": ["2", "1", "1"]}, "motion": {"type": "static"}},
+       "Independent motions: A (semi-axes 1, 1/2, 1/2) with centre (0, -5 + 9s, 0) crosses a static ellipsoid B "
+       "(semi-axes 2, 1, 1) along its y-axis; the plane y = 1 (y = -1) is tangent to B at its vertex and to A at A's "
+       "when they touch, so they meet iff |9s - 5| <= 3/2: s-intervals [7/18, 13/18]; B does not move: t-intervals "
+       "[0, 1]. Proved on the lower-dimensional problem F = F_u = 0 in (u, s) (system free).", dim=3)

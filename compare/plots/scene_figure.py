@@ -331,7 +331,7 @@ def main(argv):
     if data.get("kind") == "independent":
         fig = plt.figure(figsize=(9, 8), dpi=100, layout="constrained")
         draw_st(fig.subplots(1, 1), data)
-        fig.suptitle(f"{data['scene']} (3D, independent motions A(s), B(t)): {independent_text(rep)}\n"
+        fig.suptitle(f"{data['scene']} ({data['dim']}D, independent motions A(s), B(t)): {independent_text(rep)}\n"
                      f"answer in {data['arith']}" + (f" ({data['arith_note']})" if data.get("arith_note") else ""), fontsize=11)
         fig.savefig(argv[2], format="png")
         return 0
