@@ -110,7 +110,7 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, bool js
     stamp_format(j, "eccd-table/1");
     j["folder"] = dir;
     j["scenes"] = all;
-    std::cout << j.dump(2) << "\n";
+    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
   std::vector<std::string> head{"scene"};
