@@ -26,7 +26,7 @@ namespace {
 
 struct AnimateArgs {
   std::string path, arith = "exact", shard, out;
-  bool json = false, all_intervals = false, quiet = false, no_planes = false;
+  bool json = false, all_intervals = false, quiet = false, no_planes = false, force = false;
   int threads = 2;
 };
 
@@ -88,7 +88,10 @@ Command add_animate_command(CLI::App& app) {
   c.sub->add_option("--threads", args->threads, "Threads running pair-frames (the output does not depend on it)")
       ->capture_default_str();
   c.sub->add_option("--shard", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
-  c.sub->add_option("--out", args->out, "Write the output to this file (atomically) instead of standard output");
+  c.sub->add_option("--out", args->out,
+                    "Write the output to this file (atomically) instead of standard output: a new name, or with --force an "
+                    "existing regular file that is not the animation (a directory, device, FIFO, socket or symbolic link: exit 2)");
+  c.sub->add_flag("--force", args->force, "Replace an existing --out file");
 
   c.run = [args]() -> int {
     AnimateOptions o;
@@ -113,7 +116,10 @@ Command add_animate_command(CLI::App& app) {
       }
       if (!ok) throw std::invalid_argument("--shard " + s + ": expected i/n with 0 <= i < n");
     }
-    if (!args->out.empty()) check_output_path("--out", args->out);
+    if (!args->out.empty()) {
+      check_output_path("--out", args->out);
+      check_output_file("--out", args->out, args->force, {args->path});
+    }
     const Animation anim = read_animation(args->path);
     const auto start = std::chrono::steady_clock::now();
     auto last = start;
@@ -140,7 +146,7 @@ Command add_animate_command(CLI::App& app) {
     if (args->json) {
       nlohmann::ordered_json j = animation_result_to_json(r);
       stamp_format(j, kAnimationAnswerFormat);
-      text = j.dump(2) + "\n";
+      text = j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
     } else {
       text = summary_text(r);
     }
