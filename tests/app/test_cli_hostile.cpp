@@ -183,7 +183,7 @@ TEST_CASE("a FIFO or a device as an input is refused at once, never waited on", 
   REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
   for (const std::string cmd : {"solve " + q(fifo.string()), "judge " + q(kScene) + " " + q(fifo.string()),
                                 "animate " + q(fifo.string()), "check-certificate " + q(kScene) + " " + q(fifo.string()),
-                                "solve /dev/zero"}) {
+                                std::string("solve /dev/zero")}) {
     INFO(cmd);
     Run r = run_eccd(cmd, 240);
     INFO("stderr: " << r.err << "\nprocessor " << r.cpu_seconds << " s");
