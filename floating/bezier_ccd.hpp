@@ -327,7 +327,8 @@ class BezierZeroSet {
         Sign s = sign(p.value);
         if (s == Sign::positive) return Status::separate;
         long pieces = 0;
-        return classify_on_u(f, 0, pieces);
+        T witness = zero_;
+        return classify_on_u(f, 0, pieces, zero_, one_, witness);
       }
       // A peak within rounding noise of 0 (relative to F(., t0)'s coefficients) is a touch as far
       // as this arithmetic can tell.
@@ -367,9 +368,12 @@ class BezierZeroSet {
   // 2^-33 of u = 0; only the pieces around it are split).
   static constexpr int kUDepth = 64;
   static constexpr long kUPieces = 1024;
-  Status classify_on_u(const Bern<T>& f, int depth, long& pieces) const {
+  // f is F(., t0) on [u0, u1] (dyadic ends); `witness` receives the u of a
+  // surely positive end control point when the answer is separate.
+  Status classify_on_u(const Bern<T>& f, int depth, long& pieces, const T& u0, const T& u1, T& witness) const {
     ++pieces;
-    if (sign(f.b.front()) == Sign::positive || sign(f.b.back()) == Sign::positive) return Status::separate;
+    if (sign(f.b.front()) == Sign::positive) { witness = u0; return Status::separate; }
+    if (sign(f.b.back()) == Sign::positive) { witness = u1; return Status::separate; }
     bool all = true;
     for (const auto& x : f.b) all = all && sign(x) == Sign::negative;
     if (all) return Status::overlapping;
@@ -377,11 +381,31 @@ class BezierZeroSet {
     Bern<T> lo = f, hi = f;
     keep_left(std::span<T>(lo.b), half_);
     keep_right(std::span<T>(hi.b), half_);
-    const Status a = classify_on_u(lo, depth + 1, pieces);
+    const T um = point_of(T(half_ * (u0 + u1)));
+    const Status a = classify_on_u(lo, depth + 1, pieces, u0, um, witness);
     if (a == Status::separate) return a;
-    const Status b = classify_on_u(hi, depth + 1, pieces);
+    const Status b = classify_on_u(hi, depth + 1, pieces, um, u1, witness);
     if (b == Status::separate) return b;
     return a == Status::overlapping && b == Status::overlapping ? Status::overlapping : Status::uncertain;
+  }
+
+  // The peak of F(., t0), or under a running bound, when its value is not
+  // surely positive, a witness u the control points of F(., t0) find (a
+  // narrow positive window the peak search missed); the value at it.
+  Peak shot_peak(const T& t0) const {
+    Peak p = peak(t0);
+    if constexpr (has_error_bound_v<T>) {
+      if (sign(p.value) != Sign::positive) {
+        long pieces = 0;
+        T w = zero_;
+        Bern<T> f = ellipsoid_function_at(F_, t0);
+        if (classify_on_u(f, 0, pieces, zero_, one_, w) == Status::separate) {
+          T v = f(w);
+          if (sign(v) == Sign::positive) return {w, v};
+        }
+      }
+    }
+    return p;
   }
 
   // Iterative Bézier shooting from the separate instant `from` towards `to` (either direction).
@@ -391,7 +415,7 @@ class BezierZeroSet {
     for (int it = 0; it < opt_.max_shots; ++it) {
       if (out_of_time()) return {ShotKind::inconclusive, t};
       ++shot_iterations;
-      Peak p = peak(t);
+      Peak p = shot_peak(t);
       if (!(p.value > zero_)) return {ShotKind::converged, t};
       bool forward = to > t;
       Bern<T> G = restrict_to(ellipsoid_function_along(F_, p.u), forward ? t : to, forward ? to : t, one_);
