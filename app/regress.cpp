@@ -150,7 +150,9 @@ Command add_regress_command(CLI::App& app) {
     std::size_t done = 0;
     for (const auto& f : files) {
       ++done;
-      std::string name = fs::relative(f, args->dir).string();
+      // lexically: a symbolic link loop or a dangling link is named, not followed
+      std::string name = f.lexically_relative(args->dir).string();
+      if (name.empty() || name.rfind("..", 0) == 0) name = f.string();
       nlohmann::json row = {{"scene", name}};
       std::string line;
       try {

@@ -165,10 +165,16 @@ TEST_CASE("--write-answer refuses to write a scene the reader would refuse", "[c
   const std::string text = slurp(src("cases/spheres/spheres-free.json"));
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(text);
   doc.erase("answer");
-  const std::string bare = doc.dump(1) + "\n";
+  const std::string bare = doc.dump() + "\n";
+  // the size of the file with its answer, as --write-answer writes it (on a copy, no limit)
+  const fs::path copy = w.path / "copy.json";
+  spit(copy, bare);
+  REQUIRE(run_eccd("solve " + q(copy.string()) + " --write-answer", 240).code == 0);
+  const std::size_t answered = slurp(copy).size();
+  REQUIRE(bare.size() < answered);
   spit(scene, bare);
-  // the limit just above the file without its answer: the file with its answer would be refused
-  const std::string limit = std::to_string(bare.size() + 8);
+  // a limit the scene meets and the scene with its answer does not
+  const std::string limit = std::to_string(answered - 1);
   Run r = run_eccd("solve " + q(scene.string()) + " --write-answer --max-file-bytes " + limit, 240);
   INFO("stderr: " << r.err);
   CHECK(r.code == 2);
