@@ -105,6 +105,7 @@ Command add_judge_command(CLI::App& app);              // app/judge.cpp
 Command add_fcl_command(CLI::App& app);                // app/fcl.cpp
 Command add_separate_command(CLI::App& app);           // app/separate.cpp
 Command add_animate_command(CLI::App& app);            // app/animate.cpp
+Command add_import_poses_command(CLI::App& app);       // app/import_poses.cpp
 
 // The generator options shared by `generate` and `report` (--dims, --degrees,
 // --families, --motions, --separations); app/generate.cpp.

@@ -199,6 +199,7 @@ int run_main(int argc, char** argv) {
                                add_fcl_command(app),
                                add_animate_command(app)};
   commands.push_back(add_separate_command(app));  // app/separate.cpp (issue 17)
+  commands.push_back(add_import_poses_command(app));  // app/import_poses.cpp
 
   // Under --json a failure is also one JSON object on stdout (README "Exit codes").
   bool json_mode = false;

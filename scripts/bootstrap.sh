@@ -3,7 +3,7 @@
 # and builds into ./build. Used by both README commands and by .ci/run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libflint-dev libeigen3-dev libfcl-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 python3-matplotlib python3-dev pybind11-dev python3-pybind11 python3-pytest ccache parallel"
+PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libflint-dev libeigen3-dev libfcl-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 python3-matplotlib python3-dev pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-venv python3-pip python3-setuptools python3-wheel ccache parallel"
 missing=""
 for p in $PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

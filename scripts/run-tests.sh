@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Builds everything and runs the whole test suite (Catch2 tests through CTest).
+# Builds everything and runs the whole test suite (Catch2 tests through CTest),
+# then the Python tests against a pip install (scripts/test-python-install.sh).
 # The suite includes `eccd regress cases/ --certify` over the whole corpus and
 # the metamorphic tests over generated scenes; their seeds are printed at the end.
 # The tests labelled `budget` (Catch2 tag [budget]: runs under a time budget)
-# run last, with four busy processes beside them: their bounds are processor
+# run last, after the Python tests, with four busy processes beside them: their bounds are processor
 # time or work counts, so a busy machine must not fail them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +14,8 @@ ctest --test-dir build --output-on-failure -j"$(nproc)" -LE budget || status=$?
 log=build/Testing/Temporary/LastTest.log
 saved=build/Testing/Temporary/LastTest-unbudgeted.log
 if [ -f "$log" ]; then cp "$log" "$saved"; fi
+# The Python package installed by pip into a fresh venv, its tests against that install.
+bash scripts/test-python-install.sh || status=$?
 busy=()
 stop_busy() {
   for p in "${busy[@]}"; do kill "$p" 2>/dev/null || true; done

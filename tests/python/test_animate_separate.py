@@ -3,9 +3,9 @@
 The oracle is the program itself: `eccd animate FILE --json` and `eccd separate
 SCENE --at T --json` on the shipped animations (cases/animations/*.json) and
 shipped scenes; the module must give the same objects (the program's
-"version" and the run's own times aside). The program is found next to the
-module's build directory (<build>/eccd, the module being <build>/python/eccd*.so),
-or at ECCD_EXE.
+"version" and the run's own times aside). The program is eccd.program():
+the one installed with the package, the build tree's (<build>/eccd beside
+<build>/python/eccd/), or ECCD_EXE.
 """
 import copy
 import glob
@@ -19,7 +19,7 @@ import pytest
 import eccd
 
 SOURCE = os.environ.get("ECCD_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-EXE = os.environ.get("ECCD_EXE") or os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(eccd.__file__))), "eccd")
+EXE = eccd.program()
 ANIMATIONS = sorted(glob.glob(os.path.join(SOURCE, "cases", "animations", "*.json")))
 
 
@@ -73,7 +73,7 @@ def test_animate_errors():
     with pytest.raises(eccd.SceneError) as e:
         eccd.animate(os.path.join(SOURCE, "cases", "paper002", "example.json"))  # a scene, not an animation
     assert "example.json" in str(e.value)
-    with pytest.raises(eccd.SceneError):
+    with pytest.raises(FileNotFoundError):
         eccd.animate("/nonexistent/animation.json")
     with pytest.raises(ValueError):
         eccd.animate(ANIMATIONS[0], threads=0)
@@ -127,5 +127,5 @@ def test_separate_errors():
             eccd.separate(SCENE, bad)
     with pytest.raises(TypeError):
         eccd.separate(42, "0")
-    with pytest.raises(eccd.SceneError):
+    with pytest.raises(FileNotFoundError):
         eccd.separate("/nonexistent/scene.json", "0")

@@ -124,7 +124,7 @@ def test_bad_file_raises_with_the_file_name(tmp_path):
     assert "/dim" in str(e.value)
     assert issubclass(eccd.SceneError, ValueError)
     missing = tmp_path / "no-such-scene.json"
-    with pytest.raises(eccd.SceneError, match="no-such-scene.json"):
+    with pytest.raises(FileNotFoundError, match="no-such-scene.json"):
         eccd.read_scene(str(missing))
     with pytest.raises(eccd.SceneError, match="<dict>"):
         eccd.scene_from_dict(d)
