@@ -122,6 +122,13 @@ Answer to_global(const Answer& a, const Rational& t0, const Rational& dt, int di
   return g;
 }
 
+// First-contact mode: the first collision interval, as the 3D pipeline's
+// first_contact gives it (kernel/ccd_projection.hpp); the contacts and
+// undecided instants stay (each is true of the frame).
+void first_interval_only(Answer& a) {
+  if (a.intervals.size() > 1) a.intervals.resize(1);
+}
+
 struct PairTask {
   std::size_t a = 0, b = 0, pair = 0;  // bodies and the position in Animation::pairs
 };
@@ -197,8 +204,8 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
     so.first_contact = false;
     so.variant = Variant::answer;
   } else {
-    so.first_contact = anim.dim == 3;
-    so.variant = anim.dim == 2 ? Variant::first_contact : Variant::answer;
+    so.first_contact = anim.dim == 3;  // 2D: cut to the first interval below (first_interval_only)
+    so.variant = Variant::answer;
   }
   const int float_digits = opt.solve.arith.kind == Arithmetic::Mpfr ? precision_digits(opt.solve.arith.mpfr_bits) : 17;
 
@@ -297,6 +304,7 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
 #endif
             try {
               r.solution = solve(scene, so);
+              if (!opt.all_intervals) first_interval_only(r.solution.answer);
               r.solved = true;
             } catch (const BudgetExhausted& e) {
               r.budget_why = std::string("resource budget exhausted: ") + e.what();

@@ -22,8 +22,10 @@
 //     nothing and AnimationResult::plane_stage_built is false. A plane is
 //     trusted for the frame it was checked on, never beyond.
 //  3. the continuous test: eccd::solve (api/solve.hpp) on the pair-frame's
-//     scene in the run's arithmetic; first contact by default (3D
-//     SolveOptions::first_contact, 2D Variant::first_contact), the whole answer
+//     scene in the run's arithmetic; first contact by default (the first
+//     collision interval: 3D SolveOptions::first_contact; 2D the whole answer,
+//     Variant::answer, cut to its first interval, since 003's Variant 2 gives
+//     the first root of Δ, a candidate, and no interval), the whole answer
 //     with all_intervals. A pair-frame with a non-empty collision set is an
 //     event; one whose answer has undecided instants (floating: the error
 //     bound cannot decide; exact: a budget ran out) goes to `undecided` with

@@ -36,6 +36,38 @@ Judgement judge(const Scene& scene, const Answer& theirs, const JudgeOptions& op
   return j;
 }
 
+namespace {
+// Every instant's numbers as the scene reader takes them: approx a decimal
+// number (no NaN, infinity or hexadecimal float: io/scene_reader.hpp
+// parse_rational), approx, lo and hi in [0, 1] (the time of a scene).
+void check_instants(const Answer& a, const std::string& label, const std::string& base) {
+  auto check = [&](const Instant& i, const std::string& place) {
+    auto bad = [&](const std::string& what) { throw SceneError(label + ": " + base + place + ": " + what); };
+    Rational v;
+    try {
+      v = parse_rational(i.approx);
+    } catch (const std::invalid_argument& e) {
+      bad("approx \"" + (i.approx.size() > 40 ? i.approx.substr(0, 40) + "..." : i.approx) + "\" is not a decimal number: " + e.what());
+    }
+    if (v < 0 || v > 1) bad("approx " + i.approx + " is outside [0, 1], the time of a scene");
+    if (i.lo && *i.lo < 0) bad("lo " + i.lo->get_str() + " is below 0");
+    if (i.hi && *i.hi > 1) bad("hi " + i.hi->get_str() + " is above 1");
+  };
+  auto pairs = [&](const std::vector<std::pair<Instant, Instant>>& v, const std::string& key) {
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      check(v[k].first, "/" + key + "/" + std::to_string(k) + "/0");
+      check(v[k].second, "/" + key + "/" + std::to_string(k) + "/1");
+    }
+  };
+  pairs(a.intervals, "intervals");
+  pairs(a.contact_intervals, "contact_intervals");
+  pairs(a.s_intervals, "s_intervals");
+  pairs(a.t_intervals, "t_intervals");
+  if (a.first_contact) check(*a.first_contact, "/first_contact");
+  for (std::size_t k = 0; k < a.contacts.size(); ++k) check(a.contacts[k], "/contacts/" + std::to_string(k));
+}
+}  // namespace
+
 AnswerInput answer_from_text(const std::string& json_text, const std::string& label) {
   const nlohmann::json doc = parse_json_document(json_text, label);
   if (!doc.is_object())
@@ -58,6 +90,7 @@ AnswerInput answer_from_text(const std::string& json_text, const std::string& la
                      ": top level: neither an answer (no \"collides\" key) nor a scene file with an \"answer\" key; "
                      "expected {\"collides\": ..., \"intervals\": [...], \"first_contact\": ..., \"contacts\": [...]}");
   }
+  check_instants(in.answer, label, doc.contains("answer") ? "/answer" : "");
   return in;
 }
 

@@ -54,7 +54,9 @@ struct AnswerInput {
   Answer answer;
   std::string taken;  // "a bare answer object" | "the \"answer\" of a scene file" | "the answer of an `eccd solve --json` report"
 };
-// Throws SceneError "LABEL: PLACE: what is wrong".
+// Throws SceneError "LABEL: PLACE: what is wrong"; the instants' numbers are
+// checked as the scene reader checks numbers (a decimal approx, no NaN or
+// hexadecimal float, everything in [0, 1]).
 AnswerInput answer_from_text(const std::string& json_text, const std::string& label);
 // The same from a file; "-" reads standard input (named "<stdin>" in errors).
 AnswerInput read_answer(const std::string& path);

@@ -31,7 +31,7 @@ namespace {
 
 struct AnimateArgs {
   std::string path, arith = "exact", shard, out;
-  bool json = false, all_intervals = false, quiet = false, no_planes = false;
+  bool json = false, all_intervals = false, quiet = false, no_planes = false, force = false;
   int threads = 2;
 };
 
@@ -96,7 +96,10 @@ Command add_animate_command(CLI::App& app) {
   // report --shard takes every n-th task; a block of frames is another partition, so it has its own name.
   c.sub->add_option("--frame-block", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
   add_old_spelling(c.sub, "--shard", "--shard", "--frame-block", args->shard);
-  c.sub->add_option("--out", args->out, "Write the output to this file (atomically) instead of standard output");
+  c.sub->add_option("--out", args->out,
+                    "Write the output to this file (atomically) instead of standard output: a new name, or with --force an "
+                    "existing regular file that is not the animation (a directory, device, FIFO, socket or symbolic link: exit 2)");
+  c.sub->add_flag("--force", args->force, "Replace an existing --out file");
 
   c.run = [args]() -> int {
     AnimateOptions o;
@@ -121,7 +124,10 @@ Command add_animate_command(CLI::App& app) {
       }
       if (!ok) throw std::invalid_argument("--frame-block " + s + ": expected i/n with 0 <= i < n");
     }
-    if (!args->out.empty()) check_output_path("--out", args->out);
+    if (!args->out.empty()) {
+      check_output_path("--out", args->out);
+      check_output_file("--out", args->out, args->force, {args->path});
+    }
     const Animation anim = read_animation(args->path);
     const auto start = std::chrono::steady_clock::now();
     std::optional<ProgressCadence> cadence;  // redrawn on a terminal, a line per 5 % in a log (app/time_left.hpp)
@@ -145,7 +151,7 @@ Command add_animate_command(CLI::App& app) {
     if (args->json) {
       nlohmann::ordered_json j = animation_result_to_json(r);
       stamp_format(j, kAnimationAnswerFormat);
-      text = j.dump(2) + "\n";
+      text = j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
     } else {
       text = summary_text(r);
     }

@@ -6,7 +6,19 @@
 //    sibling PATH.tmp-XXXXXX (created exclusively, so a user's file of that
 //    name is never touched), which is renamed onto PATH only when complete; on
 //    any failure the temporary is removed and OutputError names PATH and the
-//    operating system's reason. PATH must not be a directory.
+//    operating system's reason. PATH must be a new name or a regular file
+//    (never a directory, device, FIFO, socket or symbolic link: those are
+//    refused, never replaced). While the temporary exists, SIGXFSZ (a file
+//    size limit) is ignored, so the write fails with EFBIG and is cleaned up
+//    like any other failure, and SIGINT, SIGTERM, SIGHUP and SIGQUIT remove it
+//    before the process ends (a handler of the program's own, e.g. report's,
+//    is called instead, and the write then ends normally);
+//    remove_pending_output() does the same for other signal handlers (the
+//    time limit's backstop).
+//  - check_output_file(OPTION, PATH, force, inputs): before any work, what a
+//    command's output file may be: a new name, or (with --force) an existing
+//    regular file that is none of the command's inputs (the same device and
+//    inode); everything else is refused with OutputError saying what it is.
 //  - check_output_name(NAME): a name that becomes one folder inside a chosen
 //    folder (`report --name`): not empty, no path separator, not "." or "..",
 //    no leading '.', printable characters only.
@@ -24,12 +36,14 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace eccd {
 
@@ -41,14 +55,111 @@ class OutputError : public std::runtime_error {
 
 inline std::string errno_text(int e) { return std::strerror(e); }
 
+// What a file system entry is, in words ("a directory", "a FIFO", ...).
+inline std::string file_type_text(mode_t m) {
+  if (S_ISDIR(m)) return "a directory";
+  if (S_ISCHR(m)) return "a character device";
+  if (S_ISBLK(m)) return "a block device";
+  if (S_ISFIFO(m)) return "a FIFO (named pipe)";
+  if (S_ISSOCK(m)) return "a socket";
+  if (S_ISLNK(m)) return "a symbolic link";
+  if (S_ISREG(m)) return "a regular file";
+  return "not a regular file";
+}
+
+// "" if PATH is missing or a regular file (not a symbolic link); else why it may not be an output.
+inline std::string not_a_plain_output(const std::filesystem::path& path) {
+  struct stat ls {};
+  if (::lstat(path.c_str(), &ls) != 0) return "";
+  if (S_ISREG(ls.st_mode)) return "";
+  if (S_ISLNK(ls.st_mode)) {
+    struct stat ts {};
+    std::string to = ::stat(path.c_str(), &ts) == 0 ? " to " + file_type_text(ts.st_mode) : " (dangling)";
+    return "it is a symbolic link" + to + "; an output is written only to a new name or a regular file (give the target's own path)";
+  }
+  return "it is " + file_type_text(ls.st_mode) + ", not a regular file";
+}
+
+inline void check_output_file(const std::string& option, const std::filesystem::path& path, bool force,
+                              const std::vector<std::string>& inputs = {}) {
+  const std::string shown = (option.empty() ? "" : option + " ") + path.string();
+  if (path.empty()) throw OutputError(option + ": an empty path");
+  if (std::string why = not_a_plain_output(path); !why.empty()) throw OutputError(shown + ": refusing to write there: " + why);
+  struct stat os {};
+  if (::stat(path.c_str(), &os) != 0) return;  // a new name
+  for (const auto& in : inputs) {
+    struct stat is {};
+    if (in.empty() || in == "-" || ::stat(in.c_str(), &is) != 0) continue;
+    if (is.st_dev == os.st_dev && is.st_ino == os.st_ino)
+      throw OutputError(shown + ": refusing to write there: it is the input " + in + " of this command");
+  }
+  if (!force) throw OutputError(shown + ": exists; refusing to replace it (give --force to replace it)");
+}
+
+namespace detail {
+// The temporary being written, for the signal handlers (async-signal-safe: a fixed buffer).
+inline char g_pending_tmp[4096];
+inline volatile sig_atomic_t g_pending = 0;
+inline struct sigaction g_old_actions[65];
+inline constexpr int kCleanSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+inline void on_signal_while_writing(int sig) {
+  const struct sigaction& old = g_old_actions[sig];
+  if (old.sa_handler != SIG_DFL && old.sa_handler != SIG_IGN) {  // the program's own handler decides
+    if (old.sa_flags & SA_SIGINFO) return;
+    old.sa_handler(sig);
+    return;
+  }
+  if (old.sa_handler == SIG_IGN) return;
+  if (g_pending) ::unlink(g_pending_tmp);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+// Registers `tmp` and the handlers for the lifetime of the guard.
+class PendingOutput {
+ public:
+  explicit PendingOutput(const std::string& tmp) {
+    if (tmp.size() >= sizeof g_pending_tmp) return;
+    std::memcpy(g_pending_tmp, tmp.c_str(), tmp.size() + 1);
+    g_pending = 1;
+    struct sigaction sa {};
+    sa.sa_handler = on_signal_while_writing;
+    sigemptyset(&sa.sa_mask);
+    for (int sig : kCleanSignals) ::sigaction(sig, &sa, &g_old_actions[sig]);
+    struct sigaction ign {};
+    ign.sa_handler = SIG_IGN;
+    sigemptyset(&ign.sa_mask);
+    ::sigaction(SIGXFSZ, &ign, &old_xfsz_);
+    active_ = true;
+  }
+  ~PendingOutput() {
+    if (!active_) return;
+    for (int sig : kCleanSignals) ::sigaction(sig, &g_old_actions[sig], nullptr);
+    ::sigaction(SIGXFSZ, &old_xfsz_, nullptr);
+    g_pending = 0;
+  }
+  PendingOutput(const PendingOutput&) = delete;
+  PendingOutput& operator=(const PendingOutput&) = delete;
+
+ private:
+  struct sigaction old_xfsz_ {};
+  bool active_ = false;
+};
+}  // namespace detail
+
+// Removes the temporary of a write in progress (async-signal-safe; for handlers that end the process).
+inline void remove_pending_output() {
+  if (detail::g_pending) ::unlink(detail::g_pending_tmp);
+}
+
 inline void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
   namespace fs = std::filesystem;
   if (path.empty()) throw OutputError("empty output path");
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw OutputError(path.string() + ": cannot write the file: it is a directory");
+  if (std::string why = not_a_plain_output(path); !why.empty())
+    throw OutputError(path.string() + ": cannot write the file: " + why);
   std::string tmpl = path.string() + ".tmp-XXXXXX";
   int fd = mkstemp(tmpl.data());
   if (fd < 0) throw OutputError(path.string() + ": cannot write the file: " + errno_text(errno));
+  detail::PendingOutput pending(tmpl);
   auto fail = [&](int e) {
     ::close(fd);
     ::unlink(tmpl.c_str());

@@ -32,7 +32,7 @@ struct CertifyArgs {
   std::string scene, out;
   std::vector<int> mpfr_bits{128, 256};
   double tol = 1e-6;
-  bool json = false, no_floating = false;
+  bool json = false, no_floating = false, force = false;
   std::string arith = "exact";
 };
 
@@ -163,7 +163,10 @@ Command add_certify_command(CLI::App& app) {
                              "certificate they get with --arith exact; the route taken is printed (JSON key \"route\").");
   auto* s = c.sub;
   s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
-  s->add_option("--out", args->out, "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder)");
+  s->add_option("--out", args->out,
+                "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder): a new name, "
+                "or with --force an existing regular file that is not the scene (a directory, device, FIFO, socket or symbolic link: exit 2)");
+  s->add_flag("--force", args->force, "Replace an existing certificate file");
   s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions of the floating pipelines judged")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--tol", args->tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")->capture_default_str()->check(CLI::PositiveNumber);
   s->add_option("--arith", args->arith,
@@ -179,6 +182,7 @@ Command add_certify_command(CLI::App& app) {
     const nlohmann::json& doc = sb.doc;
     if (args->out.empty() && args->scene == "-") throw std::invalid_argument("certify -: name the certificate file with --out (the scene comes from standard input)");
     fs::path out = args->out.empty() ? fs::path(fs::path(args->scene).stem().string() + ".cert.json") : fs::path(args->out);
+    check_output_file(args->out.empty() ? "" : "--out", out, args->force, {args->scene});  // before any work
     const std::string label = scene.path;
     // Say which prover runs: a cycloidal scene has no exact pipeline (MPFI enclosures prove it), an
     // independent one is proved by interval subdivision and Krawczyk's test.
@@ -239,7 +243,7 @@ Command add_certify_command(CLI::App& app) {
                           {"certify_seconds", cert["seconds"]}, {"complete", cert.value("complete", true)}, {"route", route}};
       if (!route_why.empty()) j["route_reason"] = route_why;
       stamp_format(j, "eccd-certify/1");
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       return 0;
     }
     std::cout << certified_text(cert);
@@ -296,7 +300,7 @@ Command add_check_certificate_command(CLI::App& app) {
       j["failed_claim"] = r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.failed_claim);
       j["reason"] = r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.reason);
       stamp_format(j, "eccd-certificate-check/1");
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else {
       for (const auto& line : r.checked) std::cout << "  ok  " << line << "\n";
       if (r.valid) std::cout << "VALID: every claim of " << args->cert << " holds for " << args->scene << "\n";

@@ -83,7 +83,7 @@ Command add_fcl_command(CLI::App& app) {
       out["tolerances"] = fcl_tolerances(fo);
       out["gjk_tolerance"] = fcl_gjk_tolerance(fo);
       out["answer"] = ans;
-      std::cout << out.dump(2) << "\n";
+      std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
     return 0;
   };

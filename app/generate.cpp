@@ -166,7 +166,7 @@ Command add_generate_command(CLI::App& app) {
       j["seed"] = args->plan.seed;
       j["folder"] = args->out;
       j["files"] = list;
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
     else std::cout << "wrote " << files.size() << " scene(s) to " << args->out << " (seed " << args->plan.seed << ")\n";
     return 0;

@@ -135,7 +135,7 @@ Command add_judge_command(CLI::App& app) {
                             {"certified_from", j.certified_from},
                             {"certified_answer", nlohmann::ordered_json::parse(answer_to_json(j.certified.answer).dump())},
                             {"tolerance", args->tol}};
-      std::cout << out.dump(2) << "\n";
+      std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else {
       std::ostringstream o;
       o << "scene " << scene.name << " (" << scene.dim << "D): certified answer (" << j.certified_from << ")\n"

@@ -5,8 +5,10 @@
 //   eccd generate / report / plot                 app/generate.cpp, app/report.cpp, app/plot.cpp
 //   eccd certify / check-certificate              app/certify.cpp
 //   eccd regress [DIR]                            app/regress.cpp
-// Exit status (README "Exit codes"): 0 success; 1 an internal error (a bug),
-// a rejected certificate (check-certificate) or a regression (regress); 2 bad
+// Exit status (README "Exit codes", docs/exit-codes.md): 0 success; 1 a
+// rejected certificate (check-certificate), a regression (regress) or an answer
+// that differs (judge); 70 an internal error (a bug: any exception nobody
+// expected, caught here or by the terminate handler, never an abort); 2 bad
 // input or a bad option, including input beyond the input limits and output
 // paths that cannot be written; 3 a request the pipeline refuses (e.g. a
 // cycloidal motion in exact arithmetic, also by certify); 4 a scene the
@@ -14,7 +16,9 @@
 // solving; 130 report interrupted (SIGINT/SIGTERM). Nothing is written to
 // stdout unless the command succeeds, except under --json: a failing command
 // then prints one object {"format": "eccd-error/1", "error", "exit_code"} on
-// stdout (the message is on stderr too).
+// stdout (the message is on stderr too). Every message is made valid UTF-8
+// first (io/utf8_text.hpp: a file name or a quoted byte that is not UTF-8 is
+// shown as \xNN, and the message says so), on stderr and in the JSON alike.
 //
 // eccd --version prints the version and the git revision of the source tree
 // at configure time; --quiet (of eccd and every sub-command) keeps progress
@@ -29,6 +33,7 @@
 #include "app/commands.hpp"
 #include "kernel/budget.hpp"
 #include "io/scene_reader.hpp"
+#include "io/utf8_text.hpp"
 
 #include <signal.h>
 #include <sys/resource.h>
@@ -39,6 +44,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <cstring>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -54,6 +61,7 @@ namespace {
 // (kernel/budget.hpp), SIGALRM at 1.5 x the limit + 2 s ends the process with
 // exit 5 (nothing on stdout; output files are only ever renamed into place).
 void on_backstop(int) {
+  remove_pending_output();  // a temporary output file being written (app/atomic_write.hpp)
   static const char msg[] =
       "eccd: resource budget exhausted: the time limit passed (--time-limit) and the run did not stop by itself; ended\n";
   ssize_t n = write(2, msg, sizeof msg - 1);
@@ -110,9 +118,57 @@ namespace {
 // A message for stderr: at most 2000 characters (a user's 10 MB key is not echoed whole).
 std::string cut_message(const std::string& m) { return m.size() > 2000 ? m.substr(0, 2000) + "... (cut)" : m; }
 
+// Exit 70 for what nobody caught (an exception thrown from a thread or a
+// noexcept function, an exception while one is in flight): the message of the
+// exception if there is one, never an abort. Only async-signal-safe calls
+// after the message is formed (the process may be in any state).
+bool g_json_mode = false;
+[[noreturn]] void on_terminate() {
+  std::string m = "internal error: terminated";
+  if (std::exception_ptr p = std::current_exception()) {
+    try {
+      std::rethrow_exception(p);
+    } catch (const std::exception& e) {
+      m = std::string("internal error: ") + e.what();
+    } catch (...) {
+      m = "internal error: an exception of unknown type";
+    }
+  }
+  m = utf8_for_json(cut_message(m));
+  std::string line = "eccd: " + m + "\n";
+  ssize_t n = write(2, line.data(), line.size());
+  if (g_json_mode) {
+    nlohmann::json j = {{"format", "eccd-error/1"}, {"version", program_version()}, {"error", m}, {"exit_code", 70}};
+    std::string t = j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    std::fflush(stdout);
+    n = write(1, t.data(), t.size());
+  }
+  (void)n;
+  _exit(70);
+}
+
 }  // namespace
 
+namespace {
+int run_main(int argc, char** argv);
+}
+
 int main(int argc, char** argv) {
+  std::set_terminate(on_terminate);
+  try {
+    return run_main(argc, argv);
+  } catch (const std::exception& e) {  // thrown while setting up the options, or by the error path itself
+    std::string m = utf8_for_json(cut_message(std::string("internal error: ") + e.what()));
+    std::cerr << "eccd: " << m << "\n";
+    return 70;
+  } catch (...) {
+    std::cerr << "eccd: internal error: an exception of unknown type\n";
+    return 70;
+  }
+}
+
+namespace {
+int run_main(int argc, char** argv) {
   CLI::App app{"eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and ellipsoids"};
   app.require_subcommand(1);
   // Parser errors (an unknown option, a bad value) start with "eccd: " like every other error.
@@ -150,11 +206,12 @@ int main(int argc, char** argv) {
   // Under --json a failure is also one JSON object on stdout (README "Exit codes").
   bool json_mode = false;
   for (int i = 1; i < argc; ++i) json_mode = json_mode || std::string(argv[i]) == "--json";
-  auto fail = [&json_mode](int code, const std::string& message) {
+  auto fail = [&json_mode](int code, const std::string& raw) {
+    const std::string message = utf8_for_json(raw);
     std::cerr << "eccd: " << message << "\n";
     if (json_mode) {
       nlohmann::json j = {{"format", "eccd-error/1"}, {"version", program_version()}, {"error", message}, {"exit_code", code}};
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
     return code;
   };
@@ -169,6 +226,7 @@ int main(int argc, char** argv) {
   for (auto& c : commands)
     if (*c.sub)
       if (const CLI::Option* o = c.sub->get_option_no_throw("--json")) json_mode = o->count() > 0;
+  g_json_mode = json_mode;
   if (run_budget().memory_limit_mb > 0) {
     rlimit rl{};
     rl.rlim_cur = rl.rlim_max = rlim_t(run_budget().memory_limit_mb) << 20;
@@ -177,6 +235,17 @@ int main(int argc, char** argv) {
     setrlimit(RLIMIT_AS, &rl);
   }
 
+  // The input file of the command that runs (SCENE or ANIMATION), for messages that do not name it (exit 5).
+  auto input_of_command = [&commands]() -> std::string {
+    for (auto& c : commands)
+      if (*c.sub)
+        for (const char* n : {"SCENE", "ANIMATION"})
+          if (const CLI::Option* o = c.sub->get_option_no_throw(n); o && o->count() > 0) {
+            const std::string v = o->as<std::string>();
+            return v == "-" ? "<stdin>" : v;
+          }
+    return "";
+  };
   std::ostringstream hint;
   hint << " (--time-limit " << run_budget().time_limit_s << " s, --memory-limit " << run_budget().memory_limit_mb << " MiB)";
   const std::string budget_hint = hint.str();
@@ -215,11 +284,17 @@ int main(int argc, char** argv) {
   } catch (const nlohmann::json::parse_error& e) {
     return fail(2, "malformed JSON: " + cut_message(e.what()));
   } catch (const BudgetExhausted& e) {
-    return fail(5, "resource budget exhausted: " + cut_message(e.what()) + budget_hint);
+    std::string m = e.what();
+    if (const std::string in = input_of_command(); !in.empty() && m.find(in) == std::string::npos) m = in + ": " + m;
+    return fail(5, "resource budget exhausted: " + cut_message(m) + budget_hint);
   } catch (const std::bad_alloc&) {
-    return fail(5, "resource budget exhausted: out of memory" + budget_hint);
+    const std::string in = input_of_command();
+    return fail(5, "resource budget exhausted: " + (in.empty() ? std::string() : in + ": ") + "out of memory" + budget_hint);
   } catch (const std::exception& e) {
-    return fail(1, "internal error: " + cut_message(e.what()));
+    return fail(70, "internal error: " + cut_message(e.what()));
+  } catch (...) {
+    return fail(70, "internal error: an exception of unknown type");
   }
   return 0;
 }
+}  // namespace

@@ -600,6 +600,9 @@ int run_plot(const PlotOptions& o) {
     if (!dir.empty() && !fs::is_directory(dir, ec))
       throw OutputError(f + ": folder " + dir.string() + " does not exist");
     if (fs::is_directory(f, ec)) throw OutputError(f + ": cannot write the file: it is a directory");
+    // an existing regular file is replaced (a drawing is made again by design); anything else, or the scene, never
+    if (std::string why = not_a_plain_output(f); !why.empty()) throw OutputError(opt_name + " " + f + ": refusing to write there: " + why);
+    check_output_file(opt_name, f, true, {o.scene});
   }
   bool cyclo = std::holds_alternative<CycloidalMotion>(s.a.motion) || std::holds_alternative<CycloidalMotion>(s.b.motion);
   std::string arith_text = o.arith, arith_note;
@@ -678,7 +681,7 @@ int run_plot(const PlotOptions& o) {
   };
   {
     std::ofstream f(tmp_data);
-    f << data.dump() << "\n";
+    f << data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     if (!f) {
       int e = errno;
       cleanup();
@@ -735,7 +738,8 @@ Command add_plot_command(CLI::App& app) {
   c.sub->add_option("--out", o->out,
                     "PNG to write (default: the scene file's name with .png, in the current directory; for -, the "
                     "scene's name); "
-                    "replaced only when drawing succeeded");
+                    "an existing regular file is replaced, only when drawing succeeded (a directory, device, FIFO, "
+                    "socket, symbolic link or the scene: exit 2)");
   c.sub->add_option("--instants", o->instants,
                     "Number of evenly spaced instants drawn on the left, 0 to 50 (1 = t = 0 only); every contact "
                     "instant and the first contact are drawn too")
@@ -746,7 +750,8 @@ Command add_plot_command(CLI::App& app) {
                                    "(certified), double or mpfr:BITS. A scene with a cycloidal motion defaults to "
                                    "double (Delta(t) drawn from MPFI enclosures; --arith certified or mpfr:BITS also solve it)")
                      ->capture_default_str();
-  c.sub->add_option("--data", o->data, "Also write the data the drawing script read (JSON, eccd-plot-data/1: the solve report, samples, outlines) to this file");
+  c.sub->add_option("--data", o->data, "Also write the data the drawing script read (JSON, eccd-plot-data/1: the solve report, samples, outlines) to this file "
+                                       "(an existing regular file is replaced; a directory, device, FIFO, socket, symbolic link or the scene: exit 2)");
   c.run = [o] { return run_plot(*o); };
   return c;
 }

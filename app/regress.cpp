@@ -18,6 +18,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -88,15 +90,51 @@ Command add_regress_command(CLI::App& app) {
     std::vector<fs::path> files;
     std::map<fs::path, std::string> broken;  // files that may be scenes but cannot be read as such
     std::map<fs::path, std::string> texts;   // each scene's bytes, read once
-    for (auto& e : fs::recursive_directory_iterator(args->dir)) {
-      if (!e.is_regular_file() || e.path().extension() != ".json") continue;
-      std::string why, text;
-      FileKind k = classify_file(e.path(), text, why);
-      if (k == FileKind::NotScene) continue;
-      if (k == FileKind::Broken) broken[e.path()] = why;
-      else texts[e.path()] = std::move(text);
-      files.push_back(e.path());
+    // The walk never stops at one entry: a *.json that is a symbolic link loop,
+    // a dangling link or not a regular file (a FIFO, a device) is a scene that
+    // fails, with what it is; a name that looks like JSON in another case
+    // (*.JSON) is skipped with a warning; folder links are not followed.
+    std::vector<std::string> skipped_names;
+    {
+      std::error_code ec;
+      fs::recursive_directory_iterator it(args->dir, fs::directory_options::skip_permission_denied, ec), end;
+      if (ec) throw std::invalid_argument(args->dir + ": cannot read the folder: " + ec.message());
+      for (; it != end; it.increment(ec)) {
+        const fs::path p = it->path();
+        std::string ext = p.extension().string();
+        std::string lower = ext;
+        for (auto& ch : lower) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        std::error_code sec;
+        const fs::file_status ls = it->symlink_status(sec);
+        if (lower != ".json" || fs::is_directory(ls)) continue;
+        if (ext != ".json") {
+          skipped_names.push_back(p.string());
+          continue;
+        }
+        const fs::file_status st = fs::status(p, sec);
+        if (sec || !fs::is_regular_file(st)) {
+          std::string why;
+          if (sec.value() == ELOOP) why = "a symbolic link loop: cannot read it";
+          else if (fs::is_symlink(ls) && !fs::exists(st)) why = "a dangling symbolic link (its target does not exist)";
+          else if (sec) why = "cannot read it: " + sec.message();
+          else if (fs::is_directory(st)) continue;  // a link to a folder named *.json: not followed
+          else why = "not a regular file (a FIFO, device or socket): not read";
+          broken[p] = why;
+          files.push_back(p);
+          continue;
+        }
+        std::string why, text;
+        FileKind k = classify_file(p, text, why);
+        if (k == FileKind::NotScene) continue;
+        if (k == FileKind::Broken) broken[p] = why;
+        else texts[p] = std::move(text);
+        files.push_back(p);
+      }
+      if (ec) warn("regress", args->dir + ": the folder walk stopped early: " + ec.message() + " (the scenes found so far are checked)");
     }
+    std::sort(skipped_names.begin(), skipped_names.end());
+    for (const auto& n : skipped_names)
+      warn("regress", n + ": skipped: only files named *.json (lower case) are read; rename it to check it");
     std::sort(files.begin(), files.end());
     if (files.empty())
       throw std::invalid_argument(args->dir + ": no scene found (no *.json file with \"format\": \"ellipse-ccd-scene/1\")");
@@ -113,7 +151,9 @@ Command add_regress_command(CLI::App& app) {
     std::size_t done = 0;
     for (const auto& f : files) {
       ++done;
-      std::string name = fs::relative(f, args->dir).string();
+      // lexically: a symbolic link loop or a dangling link is named, not followed
+      std::string name = f.lexically_relative(args->dir).string();
+      if (name.empty() || name.rfind("..", 0) == 0) name = f.string();
       nlohmann::json row = {{"scene", name}};
       std::string line;
       try {
@@ -279,7 +319,7 @@ Command add_regress_command(CLI::App& app) {
       }
       if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
       stamp_format(j, "eccd-regress/1");
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       return bad ? 1 : 0;
     }
     if (args->floating && !table.empty()) {

@@ -175,7 +175,12 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
 
 // ---- helpers -----------------------------------------------------------------
 
-// SIGINT / SIGTERM (InterruptGuard below): the parent stops its workers, keeps
+// The largest file report reads back of its own (a part's meta.json and CSVs,
+// a worker file, the plan): a bound on memory against a file replaced by
+// something else; the real ones are kilobytes to a few megabytes.
+constexpr std::size_t kMaxReportFileBytes = std::size_t(256) << 20;
+
+// SIGINT / SIGTERM / SIGHUP (InterruptGuard below): the parent stops its workers, keeps
 // NAME.partial if it can be resumed (a plan file and finished tasks; it prints
 // the command that resumes) or removes it, and exits 130.
 volatile sig_atomic_t g_interrupted = 0;
@@ -333,8 +338,12 @@ WorkerFiles read_worker_files(const fs::path& work, long tasks) {
   }
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    std::ifstream in(f, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), {});
+    std::string text;
+    try {  // a regular file of bounded size only: never a FIFO (blocks), /dev/zero (balloons) or a folder
+      text = read_bounded_file(f.string(), kMaxReportFileBytes, "the limit of a report's own file");
+    } catch (const SceneError& e) {
+      throw std::invalid_argument(std::string("--resume: ") + e.what() + "; run without --resume to start afresh");
+    }
     long cur = -1;
     TaskOutput pending;
     std::size_t start = 0;
@@ -383,11 +392,12 @@ std::pair<std::string, double> task_kind(const Task& t, int dim, int degree) {
   return {std::to_string(dim) + "D deg " + std::to_string(degree), prior};
 }
 
-// SIGINT / SIGTERM from the moment the output folder exists: the handler only
-// notes the signal; the parent stops its workers (run_tasks), then keeps or
-// removes NAME.partial (run_report) and exits 130.
+// SIGINT / SIGTERM / SIGHUP (a closed terminal) from the moment the output
+// folder exists: the handler only notes the signal; the parent stops its
+// workers (run_tasks), then keeps or removes NAME.partial (run_report) and
+// exits 130.
 struct InterruptGuard {
-  struct sigaction old_int {}, old_term {};
+  struct sigaction old_int {}, old_term {}, old_hup {};
   InterruptGuard() {
     g_interrupted = 0;
     struct sigaction sa {};
@@ -395,13 +405,15 @@ struct InterruptGuard {
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
+    sigaction(SIGHUP, &sa, &old_hup);
   }
   ~InterruptGuard() {
     sigaction(SIGINT, &old_int, nullptr);
     sigaction(SIGTERM, &old_term, nullptr);
+    sigaction(SIGHUP, &old_hup, nullptr);
   }
 };
-std::string signal_name() { return g_interrupted == SIGINT ? "SIGINT" : "SIGTERM"; }
+std::string signal_name() { return g_interrupted == SIGINT ? "SIGINT" : g_interrupted == SIGHUP ? "SIGHUP" : "SIGTERM"; }
 
 std::int64_t now_ns() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -454,6 +466,7 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
     if (pid == 0) {
       signal(SIGINT, SIG_DFL);
       signal(SIGTERM, SIG_DFL);
+      signal(SIGHUP, SIG_DFL);
       prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the parent
       if (getppid() == 1) _exit(1);
       if (g_lock_fd >= 0) ::close(g_lock_fd);
@@ -798,7 +811,8 @@ WorkerFiles check_resume(const fs::path& partial, const nlohmann::ordered_json& 
                                 " (written by --merge or by an eccd without --resume); run without --resume to start afresh");
   nlohmann::ordered_json old;
   try {
-    old = nlohmann::ordered_json::parse(read_file_bytes((partial / kPlanFile).string()));
+    old = parse_json_document(read_bounded_file((partial / kPlanFile).string(), kMaxReportFileBytes, "the limit of a report's own file"),
+                              (partial / kPlanFile).string());
   } catch (const std::exception& e) {
     throw std::invalid_argument("--resume: " + (partial / kPlanFile).string() + ": unreadable (" + e.what() + "); run without --resume to start afresh");
   }
@@ -994,7 +1008,7 @@ int run_report(const ReportArgs& a) {
         std::fprintf(stderr, "eccd report: removing the interrupted %s (%zu task(s) finished; --resume would have reused them)\n",
                      partial.string().c_str(), left);
     start_partial(partial, out);
-    write_text_atomically(partial / kPlanFile, plan.dump(2) + "\n");
+    write_text_atomically(partial / kPlanFile, plan.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     if (!lock.take(partial)) refuse_busy(partial);
   }
   // Interrupted: keep the folder if a later --resume can use it, else remove it.
@@ -1120,7 +1134,7 @@ int run_report(const ReportArgs& a) {
   } else {
     meta["failure_map"] = nullptr;
   }
-  write_file(partial / "meta.json", meta.dump(2) + "\n");
+  write_file(partial / "meta.json", meta.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   if (shard_n == 1) write_scene_files(partial, out, tasks, map ? &*map : nullptr);
   if (g_interrupted) interrupted();
   if (shard_n == 1 && !a.no_figures) {
@@ -1152,11 +1166,11 @@ std::string read_part_file(const fs::path& p, bool required) {
     if (!required) return {};
     throw std::invalid_argument(p.string() + ": missing (not an `eccd report --shard` part)");
   }
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::invalid_argument(p.string() + ": cannot read the file: " + errno_text(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  try {  // a regular file of bounded size only: never a FIFO (blocks), /dev/zero (balloons)
+    return read_bounded_file(p.string(), kMaxReportFileBytes, "the limit of a report's own file");
+  } catch (const SceneError& e) {
+    throw std::invalid_argument(e.what());
+  }
 }
 
 // Strict "i/n": digits only, 0 <= i < n <= 100000.
@@ -1204,6 +1218,13 @@ int run_merge(const ReportArgs& a) {
   partial += ".partial";
   check_replaceable(out, kMarker, looks_like_old_report);
   check_replaceable(partial, kMarker);
+  for (const auto& dir : a.merge) {  // the output replaces OUT: never one of the parts it reads
+    std::error_code ec;
+    for (const fs::path& o : {out, partial})
+      if (fs::exists(o, ec) && fs::equivalent(o, fs::path(dir), ec))
+        throw OutputError(o.string() + ": refusing to write the merged report there: it is the part " + dir +
+                          " given to --merge (choose another --name or --out)");
+  }
   std::vector<std::string> rows, cells;
   nlohmann::json meta;
   std::vector<std::string> seen;  // part folder per shard index
@@ -1217,10 +1238,10 @@ int run_merge(const ReportArgs& a) {
     if (!fs::is_directory(d, ec)) throw std::invalid_argument(dir + ": not a folder (an `eccd report --shard` part)");
     std::string mtext = read_part_file(mp, true);
     nlohmann::json m;
-    try {
-      m = nlohmann::json::parse(mtext);
-    } catch (const nlohmann::json::exception& e) {
-      throw std::invalid_argument(mp.string() + ": malformed JSON (truncated?): " + std::string(e.what()));
+    try {  // nesting bounded (io/scene_reader.hpp): 100 000 '[' are refused at the 65th
+      m = parse_json_document(mtext, mp.string());
+    } catch (const SceneError& e) {
+      throw std::invalid_argument(std::string(e.what()) + " (a report's meta.json; truncated?)");
     }
     if (!m.is_object()) throw std::invalid_argument(mp.string() + ": not a report's meta.json (expected a JSON object)");
     const nlohmann::json& shards = m["shards"];
@@ -1305,7 +1326,7 @@ int run_merge(const ReportArgs& a) {
     meta["fcl"]["skipped"] = nlohmann::json::object();
     for (const auto& [label, n] : fcl_skipped(meta["pipelines"].get<std::vector<std::string>>(), rows)) meta["fcl"]["skipped"][label] = n;
   }
-  write_file(partial / "meta.json", meta.dump(2) + "\n");
+  write_file(partial / "meta.json", meta.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   if (!a.no_figures) {
     try {
       run_figures(partial);
@@ -1372,7 +1393,7 @@ Command add_report_command(CLI::App& app) {
                 "double or MPFR: its errors are the measurement; labels ending in /published) and bound (guarded by the "
                 "running error bound: an unsure sign is undecided); the report's guard record needs both")
       ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"none", "bound"}));
-  s->add_option("--budget", a->harness.budget_s, "Time budget of one floating pipeline run in seconds (a run that hits it is undecided, reason time budget)")
+  s->add_option("--budget", a->harness.budget_s, "Time budget of one floating pipeline run in seconds of its processor time (a run that hits it is undecided, reason time budget; processor time, so a busy machine does not change the report)")
       ->capture_default_str()->check(CLI::Range(0.001, 86400.0));
   s->add_option("--exact-budget", a->harness.exact_budget_s, "Time budget of the exact run of one scene in seconds (exhausted: the scene fails)")
       ->capture_default_str()->check(CLI::Range(0.001, 864000.0));

@@ -72,7 +72,7 @@ Command add_separate_command(CLI::App& app) {
       stamp_format(j, kSeparateFormat);
       const nlohmann::ordered_json body = separation_to_json(scene, src.label, t, opt.arith, sep);  // api/separate_json.hpp
       for (const auto& it : body.items()) j[it.key()] = it.value();
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       return 0;
     }
     std::ostringstream o;

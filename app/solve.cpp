@@ -56,16 +56,26 @@ std::vector<std::string> ignored_options(const SolveArgs& a, const SolveOptions&
 
 // Stores the spec's answer (the four keys) into the scene file: written to a
 // temporary file first and renamed, so a failure leaves the file untouched.
+// The scene file is replaced by design (it is the input). What would be
+// written is read back first by the scene reader, under the same limits: a
+// file eccd would then refuse (over --max-file-bytes, --max-digits) is not
+// written, and the message says why.
 void write_answer(const std::string& path, const Solution& report) {
-  std::ifstream in(path, std::ios::binary);
+  const std::string bytes = read_file_bytes(path);  // bounded, and only a regular file
   nlohmann::ordered_json doc;
   try {
-    doc = nlohmann::ordered_json::parse(in);
+    doc = nlohmann::ordered_json::parse(bytes);
   } catch (const nlohmann::json::exception& e) {
     throw SceneError(path + ": the file changed while it was solved (" + e.what() + "): the answer is not written");
   }
   doc["answer"] = stored_answer_of(report);
-  write_text_atomically(path, compact_json(doc) + "\n");
+  const std::string text = compact_json(doc) + "\n";
+  try {
+    (void)parse_scene(text, path);
+  } catch (const SceneError& e) {
+    throw SceneError(std::string(e.what()) + " (in the scene with its answer, as --write-answer would write it: the file is left unchanged)");
+  }
+  write_text_atomically(path, text);
 }
 
 }  // namespace
@@ -92,7 +102,8 @@ Command add_solve_command(CLI::App& app) {
                     "makes that place undecided) or none (the published algorithm in plain double or MPFR, nothing "
                     "added: its answer can be wrong; undecided only where the algorithm gives up: a work bound, a "
                     "value that is not finite, the time budget). Cycloidal scenes have the guarded face only")->capture_default_str();
-  c.sub->add_flag("--write-answer", args->store, "Store the answer in the scene file under \"answer\" (exact arithmetic only)");
+  c.sub->add_flag("--write-answer", args->store, "Store the answer in the scene file under \"answer\" (exact arithmetic only; the scene file is replaced by design, and "
+                "left unchanged if the scene reader would refuse the result, e.g. beyond --max-file-bytes)");
 
   c.run = [args]() -> int {
     // Every option value is checked before the scene is read: a bad one is exit 2.
@@ -138,7 +149,7 @@ Command add_solve_command(CLI::App& app) {
     if (args->json) {
       nlohmann::json j = solution_to_json(r);
       stamp_format(j, kSolutionFormat);
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else {
       std::cout << summary_text(r);
     }

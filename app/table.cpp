@@ -141,7 +141,7 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const s
     }
     ++done;
     if (!quiet() && tty) std::fprintf(stderr, "\r\x1b[K");  // the row replaces the progress line on a shared terminal
-    if (json) std::cout << js.dump() << std::endl;
+    if (json) std::cout << js.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
     else line(row);
     const double el = seconds();
     if (!quiet() && cadence.due(long(done), el)) {

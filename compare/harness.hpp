@@ -116,10 +116,15 @@ std::vector<std::string> default_input_modes();
 // otherwise); a no-op for a solver without input modes.
 void apply_input_mode(SolveOptions& opt, const std::string& mode);
 
-// One floating run under a time budget. With `isolate` the run happens in a
-// forked child process that is killed at 2 x budget + 1 s, so that a pipeline
-// which does not ask the deadline (or is stuck in a library call) still
-// cannot hold up the caller; without it the budget is the ScopedDeadline alone.
+// One floating run under a time budget of processor seconds (a ScopedDeadline
+// on DeadlineClock::thread_cpu, kernel/budget.hpp: which runs are undecided
+// does not depend on what else the machine runs, and report workers running
+// side by side do not eat each other's budgets). With `isolate` the run
+// happens in a forked child process that is killed once it has used
+// 2 x budget + 1 s of processor time (or, as a backstop, after minutes of
+// wall-clock time), so that a pipeline which does not ask the deadline (or is
+// stuck in a library call) still cannot hold up the caller; without it the
+// budget is the ScopedDeadline alone.
 // `timed_out`: the run hit its budget (BudgetExhausted), came back after it,
 // or was killed; `reason` says which. `error`: the exception message of a run
 // that failed otherwise (then `got` is empty). The child sends its Solution
@@ -130,6 +135,7 @@ struct BoundedRun {
   bool killed = false;     // the run did not stop by itself within 2 x budget + 1 s and was killed
   std::string error, reason;
   double wall_s = 0;
+  double cpu_s = 0;        // processor time of the run (the child's user + system time when isolated)
 };
 BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s, bool isolate);
 
@@ -139,7 +145,7 @@ struct HarnessOptions {
   bool mpfr_power_3d = false;  // also run mpfr:B/bezier-power in 3D
   std::vector<std::string> inputs = default_input_modes();  // input modes of the floating pipelines
   std::vector<std::string> guards{"none", "bound"};  // faces of the floating pipelines (as published, guarded)
-  double budget_s = 10;         // time budget of one floating run (seconds; <= 0: none)
+  double budget_s = 10;         // time budget of one floating run (processor seconds, run_bounded; <= 0: none)
   double exact_budget_s = 600;  // time budget of the exact run (ground truth)
   bool isolate = true;          // each floating run in a child process killed at 2 x budget + 1 s (run_bounded)
   std::vector<ExternalEngine> externals;  // report --external: a row "ext:NAME" per scene with an answer file

@@ -58,13 +58,9 @@ AK& kernel() {
   return ak;
 }
 
-// The deadline read from the clock now (not after 256 calls as deadline_passed
-// does): for the coarse steps (each isolation, gcd, sign), which are few.
-void check_deadline_now(const char* where) {
-  auto& s = detail::deadline_state();
-  if (!s.passed && s.at != Clock::time_point::max()) s.passed = Clock::now() >= s.at;
-  check_deadline(where);
-}
+// The deadline read from the clock now: for the coarse steps (each isolation,
+// gcd, sign), which are few.
+void check_deadline_now(const char* where) { check_deadline(where); }
 
 // Largest coefficient (bits) of a polynomial handed to CGAL's modular gcd:
 // well inside what its 2000 primes (~52 000 bits) can reconstruct. FLINT's

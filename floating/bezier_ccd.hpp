@@ -46,9 +46,15 @@
 // deadline is hit, every gap not yet resolved is an undecided cell (never a
 // guess), and shots stop at the deadline. With a running error bound
 // (T = Bounded<U>, number/running_error.hpp) static tests decide by signs
-// sure under the bound (else uncertain), misses of a shot are proofs, and a
-// touch found by two shots meeting is reported uncertain (a tangency cannot
-// be told from a near-miss in rounded arithmetic).
+// sure under the bound (else uncertain): separate by a witness u with F(u, t0)
+// surely positive, overlapping only by control points of F(., t0) that are all
+// surely negative (split in u where needed), never by a negative value at the
+// peak found (a peak located in rounded arithmetic can miss a narrow positive
+// window: with a needle of semi-axes (1, 1e20, 1) a thousandth away that
+// would read "collides"); misses of a shot are proofs; a pair of overlapping ends that no
+// control net certifies is undecided (plain T accepts it below overlap_depth);
+// and a touch found by two shots meeting is reported uncertain (a tangency
+// cannot be told from a near-miss in rounded arithmetic).
 // Requirements on T: an ordered field with scalar_traits<T>. Shooting and the
 // Gaussian test need rounded T (the test's cross-product signs are taken of the
 // gradients' control points rounded to double).
@@ -309,12 +315,20 @@ class BezierZeroSet {
         // With a running error bound the sign of the peak decides, or nothing does.
         // A peak value that is not certainly positive may still hide a separating u
         // elsewhere, so try the control points: all certainly negative = overlap.
+        // A surely negative value at the peak found is no proof: the peak is
+        // located in plain arithmetic, and a narrow positive window of F(., t0)
+        // (a needle: semi-axes (1, 1e20, 1) a thousandth away, where F > 0 only
+        // within ~1e-20 of u = 0) is missed by a witness that is off by more
+        // than the window, which would read "overlapping" on an interval where
+        // the solids never meet. Only the control points of F(., t0), split in
+        // u where needed, prove overlap.
+        // The split also finds such a window: an end control point of a piece
+        // is F's value at that u, so a surely positive one is a witness.
         Sign s = sign(p.value);
         if (s == Sign::positive) return Status::separate;
-        bool all_negative = true;
-        for (const auto& x : f.b) all_negative = all_negative && sign(x) == Sign::negative;
-        if (all_negative || s == Sign::negative) return Status::overlapping;
-        return Status::uncertain;
+        long pieces = 0;
+        T witness = zero_;
+        return classify_on_u(f, 0, pieces, zero_, one_, witness);
       }
       // A peak within rounding noise of 0 (relative to F(., t0)'s coefficients) is a touch as far
       // as this arithmetic can tell.
@@ -344,6 +358,56 @@ class BezierZeroSet {
     return negative_in_u(lo, depth - 1) && negative_in_u(hi, depth - 1);
   }
 
+  // One instant's F(., t0) (f, on a piece of [0, 1] in u) decided by its
+  // control points alone: overlapping if every piece's control points are
+  // surely negative (F < 0 on the piece, convex hull); separate if an end
+  // control point of a piece (F's value at that u) is surely positive;
+  // uncertain otherwise. Pieces are halved where neither holds, at most
+  // kUDepth deep and kUPieces in all (a narrow positive window, as the
+  // pencil's balancing by a power of two makes for a needle, sits within
+  // 2^-33 of u = 0; only the pieces around it are split).
+  static constexpr int kUDepth = 64;
+  static constexpr long kUPieces = 1024;
+  // f is F(., t0) on [u0, u1] (dyadic ends); `witness` receives the u of a
+  // surely positive end control point when the answer is separate.
+  Status classify_on_u(const Bern<T>& f, int depth, long& pieces, const T& u0, const T& u1, T& witness) const {
+    ++pieces;
+    if (sign(f.b.front()) == Sign::positive) { witness = u0; return Status::separate; }
+    if (sign(f.b.back()) == Sign::positive) { witness = u1; return Status::separate; }
+    bool all = true;
+    for (const auto& x : f.b) all = all && sign(x) == Sign::negative;
+    if (all) return Status::overlapping;
+    if (depth >= kUDepth || pieces >= kUPieces) return Status::uncertain;
+    Bern<T> lo = f, hi = f;
+    keep_left(std::span<T>(lo.b), half_);
+    keep_right(std::span<T>(hi.b), half_);
+    const T um = point_of(T(half_ * (u0 + u1)));
+    const Status a = classify_on_u(lo, depth + 1, pieces, u0, um, witness);
+    if (a == Status::separate) return a;
+    const Status b = classify_on_u(hi, depth + 1, pieces, um, u1, witness);
+    if (b == Status::separate) return b;
+    return a == Status::overlapping && b == Status::overlapping ? Status::overlapping : Status::uncertain;
+  }
+
+  // The peak of F(., t0), or under a running bound, when its value is not
+  // surely positive, a witness u the control points of F(., t0) find (a
+  // narrow positive window the peak search missed); the value at it.
+  Peak shot_peak(const T& t0) const {
+    Peak p = peak(t0);
+    if constexpr (has_error_bound_v<T>) {
+      if (sign(p.value) != Sign::positive) {
+        long pieces = 0;
+        T w = zero_;
+        Bern<T> f = ellipsoid_function_at(F_, t0);
+        if (classify_on_u(f, 0, pieces, zero_, one_, w) == Status::separate) {
+          T v = f(w);
+          if (sign(v) == Sign::positive) return {w, v};
+        }
+      }
+    }
+    return p;
+  }
+
   // Iterative Bézier shooting from the separate instant `from` towards `to` (either direction).
   Shot shoot(const T& from, const T& to) {
     ++shots;
@@ -351,7 +415,7 @@ class BezierZeroSet {
     for (int it = 0; it < opt_.max_shots; ++it) {
       if (out_of_time()) return {ShotKind::inconclusive, t};
       ++shot_iterations;
-      Peak p = peak(t);
+      Peak p = shot_peak(t);
       if (!(p.value > zero_)) return {ShotKind::converged, t};
       bool forward = to > t;
       Bern<T> G = restrict_to(ellipsoid_function_along(F_, p.u), forward ? t : to, forward ? to : t, one_);
@@ -641,7 +705,12 @@ class BezierZeroSet {
       if (overlap_on(a, b)) { ++overlap_certificates; push_cell(a, b, Status::overlapping); return; }
       // Below 2^-overlap_depth of a sample interval an uncertified overlapping
       // pair of ends is accepted (a separate pocket that short is missed).
-      if (at_limit || depth >= opt_.overlap_depth) { ++overlap_unverified; push_cell(a, b, Status::overlapping); return; }
+      // With a running error bound that would be a guess: the cell is undecided.
+      if (at_limit || depth >= opt_.overlap_depth) {
+        ++overlap_unverified;
+        push_cell(a, b, has_error_bound_v<T> ? Status::uncertain : Status::overlapping);
+        return;
+      }
       split_at(a, sa, mid(a, b), b, sb, depth);
     }
   }

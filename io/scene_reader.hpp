@@ -102,10 +102,18 @@ InputLimits& input_limits();
 Scene read_scene_file(const std::string& path);
 Scene parse_scene(const std::string& json_text, const std::string& file_label);
 // The bytes of a file, read once and at most max_file_bytes of them (a
-// directory, an unreadable or too large file throws SceneError "FILE: ..."). Callers that need both the
+// directory, an unreadable or too large file throws SceneError "FILE: ...").
+// Opened without blocking and read only if it is a regular file: a FIFO, a
+// device or a socket throws SceneError saying what it is; "/dev/stdin" (what a
+// command's `-` reads) is the one stream read, blocking. Callers that need both the
 // Scene and its JSON (certify, check-certificate) parse these same bytes twice
 // instead of opening the file twice.
 std::string read_file_bytes(const std::string& path);
+// The same with another bound: larger than `limit` bytes throws SceneError
+// "PATH: larger than LIMIT_TEXT of N bytes (OPTION)" (the files a command
+// writes for itself and reads back, e.g. report's parts and worker files).
+std::string read_bounded_file(const std::string& path, std::size_t limit, const std::string& limit_text,
+                              const std::string& option = "");
 // A JSON document read with the checks of choice 6 (duplicate keys, nesting
 // depth); throws SceneError "LABEL: line L, column C: malformed JSON: ..." for a
 // syntax error. A duplicate key or over-deep nesting throws SceneError too,

@@ -3,25 +3,40 @@
 //
 // Statement. Every pipeline run terminates (issues 14 and 15): each method has
 // its own work bounds (subdivision depth, shots, pieces), and on top of them
-// each run has a wall-clock deadline. The deadline is set once, by whoever
-// starts the run (eccd::solve, the harness, certify, regress, report), with a
+// each run has a deadline. The deadline is set once, by whoever starts the run
+// (eccd::solve, the harness, certify, regress, report), with a
 // `ScopedDeadline` on the running thread; the loops of the pipelines ask
-// `deadline_passed()` (one steady-clock read, tens of nanoseconds: an
-// iteration of an MPFR loop can take milliseconds, so no call is skipped) and
+// `deadline_passed()` (one clock read: an iteration of an MPFR loop can take
+// milliseconds, so no call is skipped) and
 //   - a floating pipeline stops refining and reports the part of [0, 1] it has
 //     not resolved as undecided, with the reason "time budget" (never a guess);
 //   - the exact pipeline, which has nothing honest to say about a part it has
 //     not decided, throws BudgetExhausted, which the command line turns into
 //     its own exit code (5, README "Exit codes").
+// Two clocks. A deadline is measured on one of
+//   - DeadlineClock::wall, the steady clock: what a user's `--time-limit` of
+//     seconds means (the time they wait), the command line's choice;
+//   - DeadlineClock::thread_cpu, the processor time of the running thread
+//     (CLOCK_THREAD_CPUTIME_ID): the work the run did, whatever else the
+//     machine runs. The harness (compare/harness.hpp run_bounded) and the tests
+//     bound runs this way, so that which runs are undecided, and whether a run
+//     stops in time, do not depend on how busy the machine is. Reading it is a
+//     system call (a few hundred nanoseconds), paid only by runs that set one.
+// Both may be set at once (a harness budget inside solve's default limit);
+// the run stops at the first that passes. Nested scopes keep, per clock, the
+// earlier deadline and restore the outer ones on exit.
 // No paper section: this is the workbench's own contract with its users.
 // Requirements on T: none (not templated).
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <time.h>
 
 namespace eccd {
 
 using Clock = std::chrono::steady_clock;
+
+enum class DeadlineClock { wall, thread_cpu };
 
 // A resource budget ran out while solving (time, memory or a work bound that
 // the exact pipeline cannot turn into "undecided").
@@ -30,30 +45,49 @@ class BudgetExhausted : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Processor time of the running thread, in seconds.
+inline double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 namespace detail {
 struct DeadlineState {
-  Clock::time_point at = Clock::time_point::max();
-  double seconds = 0;  // the budget as given, for messages
+  Clock::time_point at = Clock::time_point::max();  // wall deadline
+  double cpu_at = -1;                                // thread-CPU deadline in seconds (< 0: none)
+  double seconds = 0;      // the budget as given, for messages
+  bool cpu = false;        // the message's budget is processor time
   bool passed = false;
 };
 inline DeadlineState& deadline_state() {
   thread_local DeadlineState s;
   return s;
 }
+inline bool deadline_reached(DeadlineState& s) {
+  if (s.at != Clock::time_point::max() && Clock::now() >= s.at) return true;
+  if (s.cpu_at >= 0 && thread_cpu_seconds() >= s.cpu_at) return true;
+  return false;
+}
 }  // namespace detail
 
-// Sets the running thread's deadline to now + seconds (seconds <= 0: none) for
-// its lifetime; nested scopes keep the earlier of the two deadlines and
-// restore the outer one on exit.
+// Sets the running thread's deadline to now + seconds on `clock` (seconds <= 0:
+// none) for its lifetime; nested scopes keep the earlier deadline of each clock
+// and restore the outer ones on exit.
 class ScopedDeadline {
  public:
-  explicit ScopedDeadline(double seconds) : saved_(detail::deadline_state()) {
+  explicit ScopedDeadline(double seconds, DeadlineClock clock = DeadlineClock::wall) : saved_(detail::deadline_state()) {
     auto& s = detail::deadline_state();
     if (seconds > 0) {
-      auto at = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-      if (at < s.at) { s.at = at; s.seconds = seconds; }
+      if (clock == DeadlineClock::wall) {
+        auto at = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+        if (at < s.at) { s.at = at; s.seconds = seconds; s.cpu = false; }
+      } else {
+        double at = thread_cpu_seconds() + seconds;
+        if (s.cpu_at < 0 || at < s.cpu_at) { s.cpu_at = at; s.seconds = seconds; s.cpu = true; }
+      }
     }
-    s.passed = Clock::now() >= s.at;
+    s.passed = s.passed || detail::deadline_reached(s);
   }
   ~ScopedDeadline() { detail::deadline_state() = saved_; }
   ScopedDeadline(const ScopedDeadline&) = delete;
@@ -67,14 +101,16 @@ class ScopedDeadline {
 inline bool deadline_passed() {
   auto& s = detail::deadline_state();
   if (s.passed) return true;
-  if (s.at == Clock::time_point::max()) return false;
-  s.passed = Clock::now() >= s.at;
+  if (s.at == Clock::time_point::max() && s.cpu_at < 0) return false;
+  s.passed = detail::deadline_reached(s);
   return s.passed;
 }
 
 // The budget in words, for "undecided" reasons and error messages.
 inline std::string deadline_reason() {
-  return "time budget of " + std::to_string(detail::deadline_state().seconds).substr(0, 6) + " s exhausted";
+  const auto& s = detail::deadline_state();
+  return "time budget of " + std::to_string(s.seconds).substr(0, 6) + " s" + (s.cpu ? " of processor time" : "") +
+         " exhausted";
 }
 
 // For code that cannot report "undecided" (the exact pipeline): throws once the deadline passed.

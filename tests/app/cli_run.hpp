@@ -1,10 +1,13 @@
 #pragma once
 // Test support: the built `eccd` run through the shell under `timeout`, with
-// stdout, stderr, the exit status and the wall time (issue 15's tests: exit
-// code, clear message, bounded time). ECCD_EXE and ECCD_SOURCE_DIR come from CMake.
+// stdout, stderr, the exit status, the wall time and the processor time
+// (issue 15's tests: exit code, clear message, bounded time). A test bounds
+// `cpu_seconds`, the work the run did, and never `seconds`, which grows with
+// whatever else the machine runs. ECCD_EXE and ECCD_SOURCE_DIR come from CMake.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <chrono>
@@ -44,8 +47,16 @@ struct Run {
   bool timed_out = false;
   std::string out, err;   // stderr cut at 1 MB (a flood would be seen by its size)
   std::size_t err_bytes = 0;
-  double seconds = 0;
+  double seconds = 0;      // wall-clock: for messages only
+  double cpu_seconds = 0;  // user + system time of the shell, `timeout` and eccd (all waited for)
 };
+
+// User + system time of the waited-for children of this process so far.
+inline double children_cpu_seconds() {
+  rusage ru{};
+  getrusage(RUSAGE_CHILDREN, &ru);
+  return double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+}
 
 // Runs `args` (after the eccd binary) in folder `cwd` under `timeout SECONDS`.
 inline Run run_eccd(const std::string& args, double seconds = 60, const std::string& cwd = "") {
@@ -55,6 +66,7 @@ inline Run run_eccd(const std::string& args, double seconds = 60, const std::str
   std::string cmd = (cwd.empty() ? "" : "cd " + q(cwd) + " && ") + "timeout -k 5 " + std::to_string(int(seconds)) + " " + exe() +
                     " " + args + " 2>" + q(tmp.string());
   auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = children_cpu_seconds();
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p != nullptr);
   char buf[4096];
@@ -62,6 +74,7 @@ inline Run run_eccd(const std::string& args, double seconds = 60, const std::str
   while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
   int st = pclose(p);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.cpu_seconds = children_cpu_seconds() - cpu0;
   std::error_code ec;
   r.err_bytes = std::size_t(std::filesystem::file_size(tmp, ec));
   {

@@ -121,27 +121,29 @@ TEST_CASE("a time limit ends a long exact run with exit 5", "[cli][reliability][
   CHECK(r.out.empty());
 }
 
-TEST_CASE("every single run ends within its time limit, whatever the arithmetic", "[cli][reliability][item2]") {
-  // issue 15: double spun in bernstein_roots on a shape entry "-1e-300" and on a 12-digit semi-axis
+TEST_CASE("every single run ends within its time limit, whatever the arithmetic", "[cli][reliability][item2][budget]") {
+  // issue 15: double spun in bernstein_roots on a shape entry "-1e-300" and on a 12-digit semi-axis.
+  // The time limit is wall-clock, so on a busy machine the run stops with less work done: bound its
+  // processor time by 30 s and its wall time only by `timeout`'s minutes.
   for (const std::string f : {"tiny_shape_entry.json", "twelve_digit_axis.json"})
     for (const std::string arith : {"double", "mpfr:128", "certified", "exact"}) {
       INFO(f << " " << arith);
-      Run r = run_eccd("solve " + q(bad(f)) + " --arith " + arith + " --time-limit 3", 40);
-      INFO("stderr: " << r.err);
+      Run r = run_eccd("solve " + q(bad(f)) + " --arith " + arith + " --time-limit 3", 240);
+      INFO("stderr: " << r.err << "\nprocessor " << r.cpu_seconds << " s, wall " << r.seconds << " s");
       CHECK(!r.timed_out);
       CHECK((r.code == 0 || r.code == 5));  // an answer (perhaps with undecided parts) or the budget
-      CHECK(r.seconds < 30);
+      CHECK(r.cpu_seconds < 30);
       CHECK(r.err_bytes < 4096);
     }
 }
 
-TEST_CASE("/dev/zero and a degree-1000 motion are refused quickly", "[cli][reliability][item3]") {
-  Run z = run_eccd("solve /dev/zero --arith exact", 30);
-  INFO("stderr: " << z.err);
+TEST_CASE("/dev/zero and a degree-1000 motion are refused quickly", "[cli][reliability][item3][budget]") {
+  Run z = run_eccd("solve /dev/zero --arith exact", 240);
+  INFO("stderr: " << z.err << "\nprocessor " << z.cpu_seconds << " s");
   CHECK(z.code == 2);
   CHECK(contains(z.err, "/dev/zero"));
-  CHECK(contains(z.err, "--max-file-bytes"));
-  CHECK(z.seconds < 25);
+  CHECK(contains(z.err, "not a regular file"));  // a device is refused before a byte is read
+  CHECK(z.cpu_seconds < 25);
   const std::string f = bad("degree_1000.json");
   for (const std::string arith : {"certified", "exact", "double"}) {
     Run r = run_eccd("solve " + q(f) + " --arith " + arith, 30);
@@ -390,7 +392,7 @@ TEST_CASE("generate validates its arguments before any work", "[cli][reliability
   CHECK(rs.code == 2);
 }
 
-TEST_CASE("SIGINT stops report's workers and keeps its unfinished output only for --resume", "[cli][reliability][item8]") {
+TEST_CASE("SIGINT stops report's workers and keeps its unfinished output only for --resume", "[cli][reliability][item8][budget]") {
   TempDir w;
   // a run long enough to interrupt: the failure map
   std::string cmd = "cd " + q(w.str()) + " && (" + exe() + " report --name big --count 2 --cases '' --map-size 16 --no-figures --jobs 2 " +
@@ -406,7 +408,7 @@ TEST_CASE("SIGINT stops report's workers and keeps its unfinished output only fo
   int st = pclose(p);
   double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   (void)st;
-  CHECK(s < 5);
+  CHECK(s < 120);  // it stops (the workers are stopped, not waited for): minutes of margin for a busy machine
   // no worker left behind: nobody writes into the partial folder any more; it is kept only if it can be
   // resumed (its plan file and finished tasks; issue 19, tests/app/test_cli_report.cpp), else removed
   usleep(500000);

@@ -162,9 +162,10 @@ TEST_CASE("harness: both input modes are rows of their own where the solver has 
   CHECK_THROWS_AS(apply_input_mode(so, "rounding"), std::invalid_argument);
 }
 
-TEST_CASE("harness: a run that does not stop is killed and recorded as a time-out", "[metrics][harness]") {
+TEST_CASE("harness: a run that does not stop is killed and recorded as a time-out", "[metrics][harness][budget]") {
   // A 2D decimal scene whose double run took minutes before issue 14 (or, after it, ends well within the budget):
-  // either way run_bounded returns within 2 x budget + 1 s.
+  // either way run_bounded returns within 2 x budget + 1 s of the run's processor time (the budget is processor
+  // time: kernel/budget.hpp); its wall time only within the minutes of run_bounded's backstop.
   GeneratorSpec sp;
   sp.dim = 2;
   sp.degree = 2;
@@ -176,7 +177,9 @@ TEST_CASE("harness: a run that does not stop is killed and recorded as a time-ou
   SolveOptions opt;
   opt.arith = parse_arithmetic("double");
   BoundedRun r = run_bounded(s, opt, 0.2, true);
-  CHECK(r.wall_s < 2 * 0.2 + 1 + 0.5);
+  INFO("processor " << r.cpu_s << " s, wall " << r.wall_s << " s, " << r.reason);
+  CHECK(r.cpu_s < 2 * 0.2 + 1 + 0.1);
+  CHECK(r.wall_s < 10 * (2 * 0.2 + 1) + 120);
   if (r.timed_out) CHECK(r.reason.rfind("time budget", 0) == 0);
   else CHECK(r.got.has_value());
 }

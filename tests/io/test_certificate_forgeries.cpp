@@ -15,6 +15,8 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+
+#include "kernel/budget.hpp"
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -63,9 +65,9 @@ TEST_CASE("Every certificate forgery of tests/data/cert is rejected in bounded t
     INFO(file << " (" << f["what"].get<std::string>() << ")");
     SceneAndDoc sd = scene_of(f["scene"]);
     const std::string text = read_file_bytes(data + file);
-    auto t0 = std::chrono::steady_clock::now();
+    const double t0 = eccd::thread_cpu_seconds();  // processor time: a busy machine does not make an input slow
     CertificateCheck r = check_certificate_text(sd.s, sd.doc, text, file);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double seconds = eccd::thread_cpu_seconds() - t0;
     INFO(r.failed_claim << ": " << r.reason);
     CHECK_FALSE(r.valid);
     CHECK(r.failed_claim.rfind(claim, 0) == 0);
