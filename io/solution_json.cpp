@@ -264,10 +264,8 @@ std::string summary_text(const Solution& s) {
   if (s.answer.independent) {  // independent motions: A(s), B(t) (scene-format.md, "Independent motions")
     o << "scene " << s.scene << " (" << s.dim << "D, independent motions A(s), B(t)), arithmetic " << s.arith.name()
       << (s.certified ? ", certified" : ", not certified") << ", method " << s.method
-      << (s.guard == "none" ? ", as published (no guard)" : s.guard == "bound" ? ", guarded" : "") << "
-";
-    o << "  collides: " << collides_text(s.answer) << "
-";
+      << (s.guard == "none" ? ", as published (no guard)" : s.guard == "bound" ? ", guarded" : "") << "\n";
+    o << "  collides: " << collides_text(s.answer) << "\n";
     for (const auto& [a, b] : s.answer.s_intervals) o << "  s-interval (A's path inside B's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& [a, b] : s.answer.t_intervals) o << "  t-interval (B's path inside A's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& u : s.answer.undecided) o << "  undecided near " << u.approx << "\n";
