@@ -263,16 +263,55 @@ struct Checker {
                       std::to_string(D + 1) + " points)");
   }
 
-  // The named candidate's value at t: "discriminant" (2D: of the cubic; 3D: psc_0) or psc_k.
-  mpq_class candidate_at(int k, const mpq_class& t) const {
-    const std::vector<mpq_class> v = g_at(t);
+  // g scaled by one positive integer L to integer coefficients (after the f claim): values at integers in mpz.
+  std::vector<std::vector<mpz_class>> G;
+  void make_integer_g() {
+    mpz_class L = 1;
+    for (const auto& x : g) L = denominator_lcm(x, L);
+    for (const auto& x : g) G.push_back(integer_multiple(x, L));
+  }
+  std::vector<mpz_class> G_at(const mpz_class& t) const {
+    std::vector<mpz_class> v;
+    for (const auto& x : G) v.push_back(value_at(x, t));
+    return v;
+  }
+  // The named candidate's value at t for L·g (a fixed positive multiple of
+  // its value for g): "discriminant" (2D: of the cubic; 3D: psc_0 = Res(f, f')) or psc_k.
+  mpz_class candidate_at(int k, const mpz_class& t) const {
+    const std::vector<mpz_class> v = G_at(t);
     if (H == 3) return cubic_discriminant_at(v);
     return subresultant_at(v, k, k);
   }
-  int candidate_bound(int k) const { return H == 3 ? 4 * g_degree() : (2 * H - 1 - 2 * k) * g_degree(); }
+  // A bound on the degree in t of Σ over monomials Π g_{k_i} (`factors` of
+  // them, Σ k_i = weight): the discriminant of a degree-n polynomial is
+  // homogeneous of degree 2n - 2 and isobaric of weight n(n - 1) in its
+  // coefficients, Res(f, f') of degree 2n - 1 and weight n²; so its degree
+  // is at most the best Σ deg g_{k_i} (dynamic programming). -1: every
+  // monomial has a zero factor.
+  int isobaric_bound(int factors, int weight) const {
+    std::vector<int> best(std::size_t(weight) + 1, -1);
+    best[0] = 0;
+    for (int f = 0; f < factors; ++f) {
+      std::vector<int> next(std::size_t(weight) + 1, -1);
+      for (int w = 0; w <= weight; ++w) {
+        if (best[std::size_t(w)] < 0) continue;
+        for (int k = 0; k <= H && w + k <= weight; ++k)
+          if (!g[std::size_t(k)].zero()) next[std::size_t(w + k)] = std::max(next[std::size_t(w + k)], best[std::size_t(w)] + g[std::size_t(k)].degree());
+      }
+      best = next;
+    }
+    return best[std::size_t(weight)];
+  }
+  int candidate_bound(int k) const {
+    if (H == 3) return isobaric_bound(4, 6);
+    if (k == 0) return isobaric_bound(7, 16);
+    return (2 * H - 1 - 2 * k) * g_degree();
+  }
+  static mpz_class point(int j, int count) { return mpz_class(j - count / 2); }  // symmetric about 0: smaller values
 
   // Returns false when the 2D discriminant vanishes identically.
   bool projection_claim() {
+    make_integer_g();
     const json& p = at(cert, "projection", "certificate");
     const json& nm = at(p, "name", "projection");
     const json& vanishing = at(p, "vanishing", "projection");
@@ -286,9 +325,10 @@ struct Checker {
     if (vanishing.size() != std::size_t(k)) reject("projection", "projection.vanishing must list the " + std::to_string(k) + " candidate(s) before " + names[std::size_t(k)]);
     for (int i = 0; i < k; ++i) {
       if (vanishing[std::size_t(i)] != names[std::size_t(i)]) reject("projection", "projection.vanishing must list the candidates in order");
-      for (int j = 0; j <= candidate_bound(i); ++j)
-        if (sgn(candidate_at(i, mpq_class(j))) != 0)
-          reject("projection", names[std::size_t(i)] + " does not vanish identically (it is non-zero at t = " + std::to_string(j) + ")");
+      const int count = candidate_bound(i) + 1;
+      for (int j = 0; j < count; ++j)
+        if (sgn(candidate_at(i, point(j, count))) != 0)
+          reject("projection", names[std::size_t(i)] + " does not vanish identically (it is non-zero at t = " + point(j, count).get_str() + ")");
     }
     projection_k = k;
     const bool zero = at(p, "identically_zero", "projection") == true;
@@ -297,27 +337,33 @@ struct Checker {
     if (zero) {
       if (H != 3) reject("projection", "a 3D certificate names a projection that vanishes identically");
       for (int j = 0; j <= bound; ++j)
-        if (sgn(candidate_at(k, mpq_class(j))) != 0) reject("projection", "the discriminant does not vanish identically (non-zero at t = " + std::to_string(j) + ")");
-      checked.push_back("projection: the discriminant vanishes identically (values at " + std::to_string(bound + 1) + " points)");
+        if (sgn(candidate_at(k, point(j, bound + 1))) != 0)
+          reject("projection", "the discriminant does not vanish identically (non-zero at t = " + point(j, bound + 1).get_str() + ")");
+      checked.push_back("projection: the discriminant vanishes identically (values at " + std::to_string(std::max(bound, -1) + 1) + " points)");
       return false;
     }
+    // P's degree: at most the candidate's (3D k = 0: disc f = psc_0 / ±g_4, of degree at most the isobaric bound (6, 12)).
+    const int p_bound = H == 4 && k == 0 ? isobaric_bound(6, 12) : bound;
     const json& cj = at(p, "coefficients", "projection");
-    if (!cj.is_array() || cj.empty() || int(cj.size()) > bound + 1)
-      reject("projection", "expected at most " + std::to_string(bound + 1) + " coefficients (the degree the scene allows)");
+    if (!cj.is_array() || cj.empty() || int(cj.size()) > p_bound + 1)
+      reject("projection", "expected at most " + std::to_string(p_bound + 1) + " coefficients (the degree the scene allows)");
     std::vector<mpq_class> c;
     for (std::size_t i = 0; i < cj.size(); ++i) c.push_back(rational(cj[i], "projection.coefficients[" + std::to_string(i) + "]", 1u << 20));
     P = QPoly(std::move(c));
     if (P.zero()) reject("projection", "the projection's coefficients are all zero but identically_zero is false");
     if (whole(at(p, "degree", "projection"), "projection.degree", 0, 1 << 30) != P.degree())
       reject("projection", "projection.degree differs from the degree of its coefficients");
+    const std::vector<mpz_class> PZ = integer_multiple(P, denominator_lcm(P));
     std::optional<mpq_class> ratio;
-    const int points = bound + (H == 4 && k == 0 ? g_degree() : 0) + 1;  // both sides have degree < points
+    // 3D k = 0: psc_0 = Res(f, f') = ±g_4 · disc f, so P · g_4 is compared with psc_0. Both sides have degree < points.
+    const bool times_g4 = H == 4 && k == 0;
+    const int points = std::max(bound, P.degree() + (times_g4 ? g[4].degree() : 0)) + 1;
     for (int j = 0; j < points; ++j) {
-      // 3D k = 0: psc_0 = Res(f, f') = ±g_4 · disc f, so P · g_4 is compared with psc_0.
-      const mpq_class t(j), want = candidate_at(k, t), got = H == 4 && k == 0 ? mpq_class(P(t) * g[4](t)) : P(t);
-      if (!ratio && sgn(want) != 0) ratio = got / want;
-      if (ratio ? got != *ratio * want : sgn(got) != 0)
-        reject("projection", "P is not a constant multiple of the " + names[std::size_t(k)] + " of f (they disagree at t = " + std::to_string(j) + ")");
+      const mpz_class t = point(j, points), want = candidate_at(k, t);
+      const mpz_class got = times_g4 ? mpz_class(value_at(PZ, t) * value_at(G[4], t)) : value_at(PZ, t);
+      if (!ratio && sgn(want) != 0) ratio = mpq_class(got) / mpq_class(want);
+      if (ratio ? mpq_class(got) != *ratio * mpq_class(want) : sgn(got) != 0)
+        reject("projection", "P is not a constant multiple of the " + names[std::size_t(k)] + " of f (they disagree at t = " + t.get_str() + ")");
     }
     if (!ratio) reject("projection", names[std::size_t(k)] + " vanishes identically, but the certificate says it does not");
     degree = std::size_t(P.degree());
@@ -344,15 +390,19 @@ struct Checker {
     }
     if (total != (long long)degree) reject("factors", "the factors' degrees times multiplicities add up to " + std::to_string(total) + ", not " + std::to_string(degree));
     std::optional<mpq_class> r2;
+    std::vector<std::vector<mpz_class>> FZ;
+    for (const auto& fm : F) FZ.push_back(integer_multiple(fm.first, denominator_lcm(fm.first)));
     for (std::size_t j = 0; j <= degree; ++j) {
-      const mpq_class t = mpq_class(static_cast<long>(j));
-      mpq_class prod = 1;
-      for (const auto& [fi, m] : F)
-        for (int e = 0; e < m; ++e) prod *= fi(t);
-      const mpq_class pv = P(t);
-      if (!r2 && sgn(pv) != 0) r2 = prod / pv;
-      if (r2 ? prod != *r2 * pv : sgn(prod) != 0)
-        reject("factors", "the product of the factors is not a constant multiple of the projection (they disagree at t = " + std::to_string(j) + ")");
+      const mpz_class t = point(int(j), int(degree) + 1);
+      mpz_class prod = 1;
+      for (std::size_t i = 0; i < F.size(); ++i) {
+        const mpz_class v = value_at(FZ[i], t);
+        for (int e = 0; e < F[i].second; ++e) prod *= v;
+      }
+      const mpz_class pv = value_at(PZ, t);
+      if (!r2 && sgn(pv) != 0) r2 = mpq_class(prod) / mpq_class(pv);
+      if (r2 ? mpq_class(prod) != *r2 * mpq_class(pv) : sgn(prod) != 0)
+        reject("factors", "the product of the factors is not a constant multiple of the projection (they disagree at t = " + t.get_str() + ")");
     }
     checked.push_back("factors: the product of " + std::to_string(F.size()) + " factor(s) is the projection up to a constant (values at " +
                       std::to_string(degree + 1) + " points)");
@@ -379,7 +429,7 @@ struct Checker {
       auto s = [&](int j, int i) {
         const int bound = (2 * H - 1 - 2 * j) * g_degree();
         std::vector<mpq_class> v;
-        for (int k = 0; k <= bound; ++k) v.push_back(subresultant_at(g_at(mpq_class(k)), j, i));
+        for (int k = 0; k <= bound; ++k) v.push_back(mpq_class(subresultant_at(G_at(mpz_class(k)), j, i)));  // L^rows times s(j,i): a positive constant
         return interpolate_at_integers(v);
       };
       int j = -1, i = -1;

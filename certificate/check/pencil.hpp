@@ -47,6 +47,30 @@ inline mpq_class determinant(QMatrix m) {
   return det;
 }
 
+// The determinant of an integer matrix (Bareiss: every division exact).
+inline mpz_class determinant(std::vector<std::vector<mpz_class>> m) {
+  const std::size_t n = m.size();
+  if (n == 0) return 1;
+  mpz_class prev = 1;
+  int sign = 1;
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (m[k][k] == 0) {
+      std::size_t p = k + 1;
+      while (p < n && m[p][k] == 0) ++p;
+      if (p == n) return 0;
+      std::swap(m[p], m[k]);
+      sign = -sign;
+    }
+    for (std::size_t i = k + 1; i < n; ++i)
+      for (std::size_t j = k + 1; j < n; ++j) {
+        m[i][j] = m[i][j] * m[k][k] - m[i][k] * m[k][j];
+        mpz_divexact(m[i][j].get_mpz_t(), m[i][j].get_mpz_t(), prev.get_mpz_t());
+      }
+    prev = m[k][k];
+  }
+  return sign * m[n - 1][n - 1];
+}
+
 inline QMatrix at_point(const PolyMatrix& m, const mpq_class& t) {
   QMatrix r(m.size(), std::vector<mpq_class>(m.size()));
   for (std::size_t i = 0; i < m.size(); ++i)
@@ -136,6 +160,31 @@ inline std::vector<mpq_class> pencil_coefficients(const QMatrix& A, const QMatri
   std::vector<mpq_class> c = p.c;
   c.resize(H + 1);
   return c;
+}
+
+// The same for integer coefficients (Bareiss): the value for c scaled by L is L^(2n-1-2j) times the one for c.
+inline mpz_class subresultant_at(const std::vector<mpz_class>& c, int j, int i) {
+  const int n = int(c.size()) - 1, m = n - 1;
+  std::vector<mpz_class> d;
+  for (int k = 1; k <= n; ++k) d.push_back(k * c[std::size_t(k)]);
+  const int rows = n + m - 2 * j, top = n + m - j - 1;
+  std::vector<std::vector<mpz_class>> sq(static_cast<std::size_t>(rows), std::vector<mpz_class>(static_cast<std::size_t>(rows)));
+  for (int r = 0; r < rows; ++r) {
+    const bool is_f = r < m - j;
+    const std::vector<mpz_class>& p = is_f ? c : d;
+    const int shift = is_f ? (m - j - 1 - r) : (n - j - 1 - (r - (m - j)));
+    auto coeff = [&](int power) {
+      const int k = power - shift;
+      return (k >= 0 && k < int(p.size())) ? p[std::size_t(k)] : mpz_class(0);
+    };
+    for (int col = 0; col + 1 < rows; ++col) sq[std::size_t(r)][std::size_t(col)] = coeff(top - col);
+    sq[std::size_t(r)][std::size_t(rows - 1)] = coeff(i);
+  }
+  return determinant(sq);
+}
+inline mpz_class cubic_discriminant_at(const std::vector<mpz_class>& g) {
+  const mpz_class &a = g[3], &b = g[2], &c = g[1], &d = g[0];
+  return 18 * a * b * c * d - 4 * b * b * b * d + b * b * c * c - 4 * a * c * c * c - 27 * a * a * d * d;
 }
 
 // The subresultant coefficient s(j, i) of S_j(f, f') for f = Σ c_k λ^k of

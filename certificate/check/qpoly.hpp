@@ -133,6 +133,23 @@ inline QPoly interpolate_at_integers(std::vector<mpq_class> d) {
   return p;
 }
 
+// A positive integer multiple of p (times the lcm of its denominators), lowest degree first.
+inline std::vector<mpz_class> integer_multiple(const QPoly& p, const mpz_class& l) {
+  std::vector<mpz_class> z;
+  for (const auto& x : p.c) z.push_back(x.get_num() * (l / x.get_den()));
+  return z;
+}
+inline mpz_class denominator_lcm(const QPoly& p, mpz_class l = 1) {
+  for (const auto& x : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
+  return l;
+}
+// The value of an integer polynomial at an integer (Horner).
+inline mpz_class value_at(const std::vector<mpz_class>& z, const mpz_class& t) {
+  mpz_class v = 0;
+  for (std::size_t i = z.size(); i-- > 0;) v = v * t + z[i];
+  return v;
+}
+
 namespace qpoly_impl {
 inline void taylor_shift(std::vector<mpz_class>& a, const mpz_class& s) {  // a(x) -> a(x + s)
   const std::size_t n = a.size();
