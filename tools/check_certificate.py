@@ -463,26 +463,43 @@ def check(scene_doc, cert, label):
         reject("projection", f"unknown projection {json.dumps(name)[:40]}")
     k = names.index(name)
     cand = lambda kk, t: cubic_disc(g_at(t)) if H == 3 else subresultant(g_at(t), kk, kk)
-    bound = lambda kk: 4 * gdeg if H == 3 else (2 * H - 1 - 2 * kk) * gdeg
+
+    def isobaric_bound(factors, weight):
+        best = [-1] * (weight + 1)
+        best[0] = 0
+        for _ in range(factors):
+            nxt = [-1] * (weight + 1)
+            for w in range(weight + 1):
+                if best[w] < 0:
+                    continue
+                for k in range(H + 1):
+                    if w + k <= weight and g[k]:
+                        nxt[w + k] = max(nxt[w + k], best[w] + len(g[k]) - 1)
+            best = nxt
+        return best[weight]
+
+    bound = lambda kk: isobaric_bound(4, 6) if H == 3 else isobaric_bound(7, 16) if kk == 0 else (2 * H - 1 - 2 * kk) * gdeg
     if at(p, "vanishing", "projection") != names[:k]:
         reject("projection", f"projection.vanishing must list {names[:k]}")
     for i in range(k):
-        if any(cand(i, Q(j)) != 0 for j in range(bound(i) + 1)):
+        if any(cand(i, Q(j - (bound(i) + 1) // 2)) != 0 for j in range(bound(i) + 1)):
             reject("projection", f"{names[i]} does not vanish identically")
     zero = at(p, "identically_zero", "projection")
     if zero is True:
-        if H != 3 or any(cand(k, Q(j)) != 0 for j in range(bound(k) + 1)):
+        if H != 3 or any(cand(k, Q(j - (bound(k) + 1) // 2)) != 0 for j in range(bound(k) + 1)):
             reject("projection", "the projection does not vanish identically")
         return out + continuous_touching(cert, g, g_at, H)
     cj = at(p, "coefficients", "projection")
-    if not isinstance(cj, list) or not cj or len(cj) > bound(k) + 1:
-        reject("projection", f"expected at most {bound(k) + 1} coefficients")
+    p_bound = isobaric_bound(6, 12) if H == 4 and k == 0 else bound(k)
+    if not isinstance(cj, list) or not cj or len(cj) > p_bound + 1:
+        reject("projection", f"expected at most {p_bound + 1} coefficients")
     P = trim([rational(c, f"projection.coefficients[{i}]", 1 << 20) for i, c in enumerate(cj)])
     if not P or whole(at(p, "degree", "projection"), "projection.degree", 0, 1 << 30) != len(P) - 1:
         reject("projection", "projection.degree differs from the degree of its coefficients")
     ratio = None
-    for j in range(bound(k) + (gdeg if H == 4 and k == 0 else 0) + 1):
-        t = Q(j)
+    points = max(bound(k), len(P) - 1 + (len(g[4]) - 1 if H == 4 and k == 0 else 0)) + 1
+    for j in range(points):
+        t = Q(j - points // 2)
         want, got = cand(k, t), ev(P, t) * (ev(g[4], t) if H == 4 and k == 0 else 1)
         if ratio is None and want != 0:
             ratio = got / want
