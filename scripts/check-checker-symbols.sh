@@ -12,7 +12,7 @@ syms=$(nm -C "$exe")
 [ -n "$syms" ] || { echo "check-checker-symbols: nm printed no symbols for $exe (stripped?)"; exit 2; }
 bad=$(sed 's/eccd::check:://g' <<<"$syms" | grep -E 'CGAL|eccd::|flint|fmpz' || true)
 if [ -n "$bad" ]; then
-  echo "$bad" | head -20
+  head -20 <<<"$bad"
   echo "check-checker-symbols: $exe names $(wc -l <<<"$bad") symbol(s) of CGAL, FLINT or eccd outside eccd::check (see above)"
   exit 1
 fi
