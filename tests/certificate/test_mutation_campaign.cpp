@@ -8,7 +8,7 @@
 // No mutation that changes the answer (or the scene, or duplicates a key) may
 // be VALID in either checker; a VALID mutant must leave the answer as it was
 // (e.g. a gap point moved inside its gap). [mutation]: 500 per kind per run;
-// [.long]: 10^5 per kind (hidden, run by hand). ECCD_MUTATION_SEED fixes the
+// [.long][mutation-long]: 10^5 per kind (hidden, run by hand). ECCD_MUTATION_SEED fixes the
 // seed.
 #include "certificate/check/verdict.hpp"
 #include "io/certificate.hpp"
@@ -274,4 +274,4 @@ TEST_CASE("Mutation campaign: no answer-changing mutation of an eccd-certificate
   campaign(500);
 }
 
-TEST_CASE("Mutation campaign, long: 10^5 mutations per kind", "[.long][mutation]") { campaign(100000); }
+TEST_CASE("Mutation campaign, long: 10^5 mutations per kind", "[.long][mutation-long]") { campaign(100000); }
