@@ -74,7 +74,7 @@ std::string cycloidal_text(const nlohmann::json& cert) {
         << "); nothing is claimed there\n";
   }
   o << "  Delta: " << roots << " simple root(s) in [0, 1], each in a bracket proved by opposite signs of Delta at its ends and Delta' != 0 on it\n";
-  o << "  collides: " << (a["collides"].get<bool>() ? "yes" : "no") << (cert["complete"].get<bool>() ? "" : " (outside the undecided stretches)") << "\n";
+  o << "  collides: " << (a["collides"].is_null() ? "unknown (no collision proved; a stretch is left undecided)" : a["collides"].get<bool>() ? "yes" : "no") << "\n";
   for (const auto& iv : a["intervals"]) o << "  collision interval: [" << instant_text(iv[0]) << ", " << instant_text(iv[1]) << "]\n";
   if (!a["first_contact"].is_null()) o << "  first contact: " << instant_text(a["first_contact"]) << "\n";
   for (const auto& c : a["contacts"]) o << "  external contact: " << instant_text(c) << "\n";
@@ -215,6 +215,7 @@ Command add_certify_command(CLI::App& app) {
     if (!args->no_floating && !scene.independent) {  // independent scenes: the harness pipelines are shared-parameter methods
       nlohmann::json plain = cert["answer"];
       plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches (io/cycloidal_certificate.hpp)
+      if (plain.contains("collides") && plain["collides"].is_null()) plain["collides"] = false;  // unknown: no collision proved, some stretch undecided
       Answer certified = answer_from_json(plain, "the certificate", "/answer");
       if (cert["answer"].contains("undecided"))
         for (const auto& u : cert["answer"]["undecided"]) certified.undecided.push_back(instant_from_json(u, "the certificate", "/answer/undecided"));

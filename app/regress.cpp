@@ -2,6 +2,7 @@
 // recomputed exactly and compared with it (compare/regress.hpp); with
 // --floating, every floating pipeline is also judged against the stored
 // answers (compare/verdict.hpp) and tabulated.
+#include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "app/scene_files.hpp"
 #include "api/solve.hpp"
@@ -35,6 +36,7 @@ struct RegressArgs {
   std::string dir = "cases";
   bool floating = false, json = false, certify = false;
   std::string arith = "exact";
+  std::string keep_certificates;  // --certify: also write the certificates into this folder
   std::vector<int> mpfr_bits{128};
   double tol = 1e-6;
 };
@@ -46,6 +48,18 @@ std::string answer_summary(const Answer& a) {
   if (a.collides) s += ", " + std::to_string(a.intervals.size()) + " interval(s)";
   s += ", " + std::to_string(a.contacts.size()) + " contact(s)";
   return s;
+}
+
+// --certify: what writing and checking the certificates of one kind cost.
+struct CertificateCost {
+  int count = 0;
+  double prove_s = 0, check_s = 0, worst_ratio = 0;
+};
+// The kind of a certificate: its format, and for eccd-certificate/2 the dimension.
+std::string certificate_kind(const nlohmann::json& cert, int dim) {
+  std::string f = cert.is_object() && cert.contains("format") && cert["format"].is_string() ? cert["format"].get<std::string>() : "unknown";
+  if (f == "eccd-certificate/2") f += dim == 2 ? " 2D" : " 3D";
+  return f;
 }
 
 struct PipelineTally {
@@ -82,6 +96,10 @@ Command add_regress_command(CLI::App& app) {
               "that cannot be made or fails its check fails the scene; with --arith certified a 3D scene's certificate is "
               "the interval Bezier proof's (eccd-bezier-certificate/1) when that proof decides it, else the exact one "
               "(the route is reported per scene)");
+  s->add_option("--keep-certificates", args->keep_certificates,
+                "With --certify: also write each certificate into this folder (created if missing; file name: the scene's path "
+                "under DIR with / replaced by __, then .cert.json) and an index.json listing scene, certificate and format, so "
+                "that other checkers (eccd-check, tools/check_certificate.py --index) can re-check them");
   s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions for --floating")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
   s->add_option("--tol", args->tol, "--floating: tolerance on instants (an interval end further off counts as off)")->capture_default_str()->check(CLI::PositiveNumber);
   s->add_flag("--json", args->json, "Print one JSON object (per-scene results, summary, floating table) instead of text");
@@ -145,6 +163,8 @@ Command add_regress_command(CLI::App& app) {
     std::map<std::string, long> local_decisions;  // certified mode: decisions made locally, by kind (summed over scenes)
     int local_scenes = 0;                        // certified mode: scenes decided with at least one local decision
     int exact_only = 0;                          // certified mode: scenes run exactly (independent motions), in decided_in too
+    std::map<std::string, CertificateCost> certificate_cost;  // --certify: proving and checking time per certificate kind
+    nlohmann::json kept = nlohmann::json::array();             // --keep-certificates: the index
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::string> pipeline_order;
     std::map<std::string, PipelineTally> tally;
@@ -230,10 +250,26 @@ Command add_regress_command(CLI::App& app) {
             row["certificate"] = {{"valid", nullptr}, {"reason", e.what()}};
             line += ", no certificate (the proof leaves a range undecided)";
           }
+          if (!cert.is_null() && !args->keep_certificates.empty()) {
+            std::string file;
+            for (char ch : name) file += ch == '/' || ch == '\\' ? std::string("__") : std::string(1, ch);
+            file = file.substr(0, file.size() - (file.size() > 5 && file.compare(file.size() - 5, 5, ".json") == 0 ? 5 : 0)) + ".cert.json";
+            fs::create_directories(args->keep_certificates);
+            write_text_atomically(fs::path(args->keep_certificates) / file, cert.dump(1) + "\n");
+            kept.push_back({{"scene", fs::absolute(f).string()}, {"certificate", file}, {"format", cert.value("format", "")}});
+          }
           if (!cert.is_null()) {
+          const auto c1 = std::chrono::steady_clock::now();
           CertificateCheck chk = check_certificate(sc, doc, cert);
-          double cs = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
-          row["certificate"] = {{"valid", chk.valid}, {"seconds", cs}};
+          const auto c2 = std::chrono::steady_clock::now();
+          double cs = std::chrono::duration<double>(c2 - c0).count();
+          const double prove_s = std::chrono::duration<double>(c1 - c0).count(), check_s = std::chrono::duration<double>(c2 - c1).count();
+          CertificateCost& cost = certificate_cost[certificate_kind(cert, sc.dim)];
+          ++cost.count;
+          cost.prove_s += prove_s;
+          cost.check_s += check_s;
+          cost.worst_ratio = std::max(cost.worst_ratio, check_s / std::max(prove_s, 1e-9));
+          row["certificate"] = {{"valid", chk.valid}, {"seconds", cs}, {"prove_seconds", prove_s}, {"check_seconds", check_s}};
           if (certified_mode) row["certificate"]["route"] = route;
           char buf[80];
           std::snprintf(buf, sizeof buf, ", certificate%s%s checked (%.2f s)", route.empty() ? "" : " ", route.c_str(), cs);
@@ -297,6 +333,10 @@ Command add_regress_command(CLI::App& app) {
       else if (!quiet()) std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), name.c_str());
     }
     if (args->json && !quiet()) std::fprintf(stderr, "\n");
+    if (!args->keep_certificates.empty() && args->certify) {
+      fs::create_directories(args->keep_certificates);
+      write_text_atomically(fs::path(args->keep_certificates) / "index.json", nlohmann::json{{"certificates", kept}}.dump(1) + "\n");
+    }
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     nlohmann::json table = nlohmann::json::array();
     for (const auto& label : pipeline_order) {
@@ -318,6 +358,13 @@ Command add_regress_command(CLI::App& app) {
         j["local_scenes"] = local_scenes;
       }
       if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
+      if (args->certify) {
+        nlohmann::json cj = nlohmann::json::array();
+        for (const auto& [kind, c] : certificate_cost)
+          cj.push_back({{"kind", kind}, {"certificates", c.count}, {"prove_seconds", c.prove_s}, {"check_seconds", c.check_s},
+                        {"check_over_prove", c.check_s / std::max(c.prove_s, 1e-9)}, {"worst_check_over_prove", c.worst_ratio}});
+        j["certificate_cost"] = cj;
+      }
       stamp_format(j, "eccd-regress/1");
       std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       return bad ? 1 : 0;
@@ -332,6 +379,13 @@ Command add_regress_command(CLI::App& app) {
                     r["endpoints_off"].get<int>(), r["undecided"].get<int>(), r["errors"].get<int>(), r["max_endpoint_error"].get<double>(),
                     r["median_ms"].get<double>());
       std::cout << "  (wrongC: wrong `collides`; missed / false: collision intervals or contacts missed or invented; endOff: interval ends off by more than the tolerance)\n";
+    }
+    if (args->certify && !certificate_cost.empty()) {
+      std::printf("\ncertificate cost (checking / proving time, per kind; proving = writing the certificate, its exact or interval run included):\n");
+      std::printf("  %-28s %6s %11s %11s %12s %12s\n", "kind", "certs", "prove s", "check s", "check/prove", "worst ratio");
+      for (const auto& [kind, c] : certificate_cost)
+        std::printf("  %-28s %6d %11.2f %11.2f %12.3f %12.3f\n", kind.c_str(), c.count, c.prove_s, c.check_s, c.check_s / std::max(c.prove_s, 1e-9),
+                    c.worst_ratio);
     }
     std::printf("\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n", args->dir.c_str(),
                 agree + differ + failed, agree, differ, failed, skipped, secs);

@@ -73,7 +73,7 @@ void clear_gap(const Rational& a, const Rational& b, const std::vector<std::pair
 }
 
 template <int N>
-PipelineResult<Rational> run_exact(const Scene& s, std::vector<Isolation>& record) {
+PipelineResult<Rational> run_exact_recording_isolation(const Scene& s, std::vector<Isolation>& record) {
   ExactPolicy pol;
   pol.record = &record;
   return projection_pipeline(to_arithmetic<Rational, N>(prepare_pair<N>(s), Rational(1)), pol);
@@ -86,7 +86,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
   if (independent_certificate_scene(s)) return make_independent_certificate(s, scene_doc, solved);  // io/independent_certificate.hpp
   auto start = std::chrono::steady_clock::now();
   std::vector<Isolation> record;
-  PipelineResult<Rational> res = s.dim == 2 ? run_exact<3>(s, record) : run_exact<4>(s, record);
+  PipelineResult<Rational> res = s.dim == 2 ? run_exact_recording_isolation<3>(s, record) : run_exact_recording_isolation<4>(s, record);
   const CertificateAlgebra alg = certificate_algebra(s);
   if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
 

@@ -12,6 +12,7 @@
 #include "exact/descartes.hpp"
 #include "kernel/collision_timeline.hpp"
 #include "io/scene_reader.hpp"
+#include "certificate/check/verdict.hpp"
 
 #include <map>
 #include <optional>
@@ -506,12 +507,28 @@ struct Checker {
 
 }  // namespace
 
+CertificateCheck check_certificate_with_prover_algebra(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
+  Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
+  return run_checker([&] { c.run(); }, c.checked);
+}
+
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
   if (cycloidal_certificate_scene(s)) return check_cycloidal_certificate(s, scene_doc, cert);  // io/cycloidal_certificate.hpp
   if (independent_certificate_scene(s)) return check_independent_certificate(s, scene_doc, cert);  // io/independent_certificate.hpp
   if (cert.is_object() && cert.contains("format") && cert["format"] == kBezierCertificateFormat) return check_bezier_certificate(s, scene_doc, cert);  // io/bezier_certificate.hpp
-  Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
-  return run_checker([&] { c.run(); }, c.checked);
+  // eccd-certificate/2 (and anything else a rational shared-parameter scene is
+  // given): the independent checker, eccd-check's library (certificate/check/),
+  // on the scene's own text and the certificate.
+  const std::string scene_text = s.source_text.empty() ? scene_doc.dump() : s.source_text;
+  const check::Verdict v = check::check_certificate_text(scene_text, s.path.empty() ? std::string("scene") : s.path, cert.dump(), "certificate");
+  CertificateCheck out;
+  out.valid = v.outcome == check::Outcome::valid;
+  out.checked = v.checked;
+  if (!out.valid) {
+    out.failed_claim = v.outcome == check::Outcome::unreadable && v.claim == "input" ? "certificate format" : v.claim;
+    out.reason = v.reason;
+  }
+  return out;
 }
 
 CertificateCheck check_certificate_text(const Scene& s, const nlohmann::json& scene_doc, const std::string& cert_text,

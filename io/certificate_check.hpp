@@ -1,6 +1,7 @@
 #pragma once
-// The certificate checker: re-checks a certificate (io/certificate.hpp)
-// against its scene without calling the solver.
+// The certificate checkers' entry point, and the prover-algebra checker of
+// eccd-certificate/2: re-checks a certificate (io/certificate.hpp) against
+// its scene without calling the solver.
 //
 // Statement. It trusts only the scene reader and the exact algebra of
 // exact/certificate_algebra.hpp (f, the projection polynomial, the evidence
@@ -53,7 +54,17 @@
 
 namespace eccd {
 
+// Checks a certificate of any kind. An eccd-certificate/2 goes to the
+// independent checker (certificate/check/verdict.hpp, the library of
+// eccd-check), which shares no code with the prover; the other kinds
+// (cycloidal, independent, Bézier) still go to their checkers in io/, which
+// use some of the prover's code (docs/checking.md says which).
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
+// The checker of eccd-certificate/2 described above, on the prover's algebra
+// (exact/certificate_algebra.hpp): kept as a second opinion for the mutation
+// campaign (tests/certificate/test_mutation_campaign.cpp), not called by the
+// commands.
+CertificateCheck check_certificate_with_prover_algebra(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
 // The same from the certificate's bytes (read once by the caller): a duplicate
 // key or over-deep nesting is REJECTED naming its JSON place; malformed JSON
 // throws SceneError "LABEL: line L, column C: ..." (an unreadable file).

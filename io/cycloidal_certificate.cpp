@@ -55,9 +55,9 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
   // The timeline's instants: 0, the stretches, 1 (a stretch reaching 0 or 1 replaces that end).
   struct Inst { mpq_class lo, hi; std::string kind; Status status = Status::uncertain; json evidence; };
   std::vector<Inst> inst;
-  if (crit.empty() || crit.front().lo != 0) inst.push_back({0, 0, "end"});
-  for (const auto& c : crit) inst.push_back({c.lo, c.hi, c.simple ? "simple_root" : "undecided"});
-  if (crit.empty() || crit.back().hi != 1) inst.push_back({1, 1, "end"});
+  if (crit.empty() || crit.front().lo != 0) inst.push_back({0, 0, "end", Status::uncertain, json()});
+  for (const auto& c : crit) inst.push_back({c.lo, c.hi, c.simple ? "simple_root" : "undecided", Status::uncertain, json()});
+  if (crit.empty() || crit.back().hi != 1) inst.push_back({1, 1, "end", Status::uncertain, json()});
   // Gap covers first: every gap between consecutive instants cut into proved root-free pieces. An undecided
   // stretch at 0 or 1 comes from the certified run as the end point itself ([0, 0] or [1, 1]); its extent is
   // found here: the pieces next to it that no enclosure proves root-free (down to 2^-64) join the stretch.
@@ -135,6 +135,9 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
   Answer ans;
   assemble_answer(seq, ans, [](std::size_t) {});
   json answer = answer_to_json(ans);
+  // Undecided stretches and no proved collision: collides is unknown (null), never false.
+  const std::optional<bool> claim = collides_claim(ans);
+  answer["collides"] = claim ? json(*claim) : json(nullptr);
   answer["undecided"] = json::array();
   for (const auto& u : ans.undecided) answer["undecided"].push_back(instant_json(u));
   json cert;

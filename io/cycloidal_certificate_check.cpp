@@ -102,8 +102,21 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
   checked.push_back("timeline: " + std::to_string(nodes.size() / 2 + 1) + " instants and " + std::to_string(nodes.size() / 2) +
                     " cells in order, brackets disjoint");
 
+  // An incomplete certificate claims no more than it proves: with a stretch
+  // undecided, "collides": false would claim that no collision hides there.
+  {
+    std::size_t undecided = 0;
+    for (const auto& n : nodes) undecided += n.kind == "undecided";
+    const json& aj = at(cert, "answer", "certificate");
+    if (undecided && aj.is_object() && aj.contains("collides") && aj["collides"] == false)
+      reject("answer", "answer.collides is false but " + std::to_string(undecided) +
+                           " stretch(es) of the timeline are undecided: an incomplete certificate may claim a collision where one "
+                           "is proved (true), otherwise only null (unknown), never false");
+  }
+
   // Instants.
   int roots = 0, stretches = 0;
+  std::optional<mpq_class> whole_bound;
   for (std::size_t k = 0; k < nodes.size(); k += 2) {
     Node& n = nodes[k];
     if (n.kind == "end") {
@@ -124,6 +137,13 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
       ++stretches;
       const mpq_class eps = rat(at(n.entry, "epsilon", n.place), n.place + ".epsilon");
       if (eps < 0) reject(n.name, "epsilon must not be negative");
+      // A stretch is where Δ comes close to 0 (a possible double root), not a
+      // place to hide a part of [0, 1]: epsilon at most 2^-10 of an upper bound
+      // of |Δ| on all of [0, 1], so "|Δ| <= epsilon" says Δ is small there.
+      if (!whole_bound) whole_bound = enc.magnitude_upper(mpq_class(0), mpq_class(1));
+      if (eps * 1024 > *whole_bound)
+        reject(n.name, "epsilon = " + decimal_string(eps, 6) + " is not small: more than 2^-10 of the bound " + decimal_string(*whole_bound, 6) +
+                           " of |Delta| on [0, 1]; an undecided stretch claims Delta near 0");
       if (enc.magnitude_upper(n.lo, n.hi) > eps)
         reject(n.name, "|Delta| <= epsilon = " + eps.get_str() + " on the stretch is not proved (an enclosure bounds it by " +
                            decimal_string(enc.magnitude_upper(n.lo, n.hi), 6) + ")");
@@ -173,6 +193,19 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
   Answer want;
   json plain = aj;
   if (plain.is_object()) plain.erase("undecided");
+  // collides: true iff a collision is proved; with a stretch undecided and
+  // none proved, null (unknown): an incomplete certificate never claims false.
+  const std::optional<bool> proved = collides_claim(got);
+  const json claimed = plain.is_object() && plain.contains("collides") ? plain["collides"] : json();
+  if (claimed.is_boolean() || claimed.is_null()) {
+    if (claimed != (proved ? json(*proved) : json(nullptr)))
+      reject("answer", "answer.collides is " + claimed.dump() + " but the checked timeline proves " +
+                           (!proved ? std::string("neither: no collision is proved and ") + std::to_string(got.undecided.size()) +
+                                          " stretch(es) are undecided, so collides must be null (unknown), never false"
+                                    : *proved ? std::string("a collision (collides must be true)")
+                                              : std::string("that there is none (collides must be false)")));
+    if (claimed.is_null()) plain["collides"] = false;  // the typed answer: no proved interval
+  }
   try {
     want = answer_from_json(plain, "certificate", "answer");
   } catch (const std::exception& e) {

@@ -11,6 +11,13 @@ namespace eccd {
 using nlohmann::json;
 
 namespace {
+// "yes", "no", or "unknown" when nothing is proved and something is undecided (collides_claim).
+// The text of the `collides` claim (collides_claim: unknown while anything is undecided and no collision is proved).
+std::string claim_text(const Answer& a) {
+  const std::optional<bool> c = collides_claim(a);
+  if (c) return *c ? "yes" : "no";
+  return "unknown (no collision proved; " + std::to_string(a.undecided.size()) + " instant(s) undecided, below)";
+}
 json pair_list(const std::vector<std::pair<Instant, Instant>>& v) {
   json a = json::array();
   for (const auto& [s, e] : v) a.push_back({instant_to_json(s), instant_to_json(e)});
@@ -20,6 +27,10 @@ json pair_list(const std::vector<std::pair<Instant, Instant>>& v) {
 
 json solution_to_json(const Solution& s) {
   json j = answer_to_json(s.answer);
+  // An answer with undecided stretches claims a collision only where one is
+  // proved: otherwise collides is null (unknown), never false (kernel/answer.hpp).
+  const std::optional<bool> claim = collides_claim(s.answer);
+  j["collides"] = claim ? json(*claim) : json(nullptr);
   j["scene"] = s.scene;
   j["file"] = s.file;
   j["dim"] = s.dim;
@@ -143,6 +154,12 @@ Solution solution_from_json(const json& j, const std::string& label) {
   // The answer: the spec's keys (null lists of the 2D variants read as empty), then the extras.
   json ans = json::object();
   ans["collides"] = j.contains("collides") ? j["collides"] : json(nullptr);
+  // collides null: unknown, which only an answer with undecided stretches may
+  // say (solution_to_json); the typed answer then holds false (no interval).
+  if (ans["collides"].is_null() && j.contains("collides")) {
+    if (list("undecided").empty()) fail("/collides", "collides is null (unknown) but nothing is undecided: a complete answer says true or false");
+    ans["collides"] = false;
+  }
   if (j.contains("s_intervals")) {  // independent motions
     // A run left undecided may have proved one side's intervals and none of
     // the other's: an empty list next to collides = true is then not the
@@ -241,16 +258,6 @@ Solution solution_from_json(const json& j, const std::string& label) {
   return s;
 }
 
-namespace {
-// "yes" when a collision is proved; "no" only when no instant is left undecided: an undecided
-// instant may hide a touch, so then no collision is claimed either way.
-std::string collides_text(const Answer& a) {
-  if (a.collides) return "yes";
-  if (a.undecided.empty()) return "no";
-  return "unknown (no collision proved; " + std::to_string(a.undecided.size()) + " instant(s) undecided, below)";
-}
-}  // namespace
-
 std::string summary_text(const Solution& s) {
   std::ostringstream o;
   auto inst = [](const Instant& i) {
@@ -265,7 +272,7 @@ std::string summary_text(const Solution& s) {
     o << "scene " << s.scene << " (" << s.dim << "D, independent motions A(s), B(t)), arithmetic " << s.arith.name()
       << (s.certified ? ", certified" : ", not certified") << ", method " << s.method
       << (s.guard == "none" ? ", as published (no guard)" : s.guard == "bound" ? ", guarded" : "") << "\n";
-    o << "  collides: " << collides_text(s.answer) << "\n";
+    o << "  collides: " << claim_text(s.answer) << "\n";
     for (const auto& [a, b] : s.answer.s_intervals) o << "  s-interval (A's path inside B's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& [a, b] : s.answer.t_intervals) o << "  t-interval (B's path inside A's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& u : s.answer.undecided) o << "  undecided near " << u.approx << "\n";
@@ -292,7 +299,7 @@ std::string summary_text(const Solution& s) {
                                               : " (identically zero)")
     << ", " << s.critical.size() << (s.projection_degree < 0 && s.projection != "bezier" && s.method != "cd-disc-cycloidal"
                                          ? " change(s) of status between samples\n" : " root(s) in [0, 1]\n");
-  o << "  collides: " << collides_text(s.answer) << "\n";
+  o << "  collides: " << claim_text(s.answer) << "\n";
   if (!two_d_partial)
     for (const auto& [a, b] : s.answer.intervals) {
       const bool touch = instant_to_json(a) == instant_to_json(b);

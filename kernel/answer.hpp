@@ -68,6 +68,19 @@ struct Answer {
   std::vector<std::pair<Instant, Instant>> s_intervals, t_intervals;
 };
 
+// What an answer claims about `collides`. An answer that leaves a stretch
+// undecided (Answer::undecided non-empty) has not proved that the objects
+// never meet there, so it may claim a collision only where one is proved
+// (an interval: true) and otherwise nothing: nullopt, written `null` in
+// JSON ("unknown"). Only a complete answer (nothing undecided) claims false.
+// Answer::collides stays a bool (the intervals' summary); every writer of a
+// claim (solution JSON, certificates, their checkers) goes through this.
+inline std::optional<bool> collides_claim(const Answer& a) {
+  if (a.collides) return true;
+  if (!a.undecided.empty()) return std::nullopt;
+  return false;
+}
+
 // A decimal approximation of an exact rational with `digits` significant
 // digits, for display (rounded by MPFR at 256 bits; never used to decide).
 inline std::string decimal_string(const mpq_class& q, int digits = 20) {

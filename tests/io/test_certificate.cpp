@@ -132,7 +132,7 @@ TEST_CASE("A tampered 2D certificate is rejected and the failing claim is named"
     CertificateCheck r = check_certificate(c.s, c.doc, t);
     CHECK_FALSE(r.valid);
     CHECK(r.failed_claim == "projection");
-    CHECK(r.reason.find("coefficient 3") != std::string::npos);
+    CHECK(r.reason.find("not a constant multiple") != std::string::npos);  // compared by values at integers (certificate/check/)
   }
   SECTION("an evidence sign flipped") {
     json t = c.cert;

@@ -147,5 +147,12 @@ TEST_CASE("cycloidal certificate: a touch at t = 0 makes the first instant an un
   CHECK(first["instant"]["lo"] == "0");
   CHECK(parse_rational(first["instant"]["hi"].get<std::string>()) > 0);
   CHECK(cert["complete"] == false);
-  CHECK(cert["answer"]["collides"] == false);  // outside the stretch: separate, proved
+  // Separate outside the stretch, proved; a touch at t = 0 is not excluded, so
+  // the certificate claims no collision only as unknown (null), never false.
+  CHECK(cert["answer"]["collides"].is_null());
+  json forged = cert;
+  forged["answer"]["collides"] = false;
+  CertificateCheck r = check(s, forged);
+  CHECK_FALSE(r.valid);
+  CHECK(r.failed_claim == "answer");
 }

@@ -1,0 +1,835 @@
+// The independent check of "eccd-certificate/2" (docs/certificate-format.md,
+// docs/checking.md): every claim re-proved with the checker's own algebra.
+// Claims, in order (the names the old checker uses):
+//   certificate format, scene (the scene's dim, a, b; det M(t) ≠ 0 on [0, 1]),
+//   f (g_k = α^k β^(H-k) h_k, α, β > 0: certificate/check/pencil.hpp),
+//   projection (the candidates named vanish identically, P ∝ the named one,
+//   by values at deg + 1 integers), factors (Π F_i^m_i ∝ P, by values),
+//   timeline, instant K (brackets: Descartes on the bracket, the checker's
+//   own), gaps, cell K (static test: negative roots of f by Sturm), status of
+//   each instant (evidence signs proved on the bracket), answer (assembled by
+//   the checker from the checked timeline).
+#include "certificate/check/verdict.hpp"
+
+#include "certificate/check/pencil.hpp"
+#include "certificate/check/qpoly.hpp"
+#include "certificate/check/scene.hpp"
+#include "certificate/check/strict_json.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace eccd::check {
+
+namespace {
+
+using json = nlohmann::json;
+
+struct Rejected {
+  std::string claim, reason;
+};
+[[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Rejected{claim, reason}; }
+
+const json& at(const json& j, const char* key, const std::string& place) {
+  if (!j.is_object()) reject("certificate format", place + ": expected an object");
+  if (!j.contains(key)) reject("certificate format", place + ": missing key \"" + key + "\"");
+  return j.at(key);
+}
+
+std::string shown(const json& j) {
+  std::string s = j.dump();
+  return s.size() > 40 ? s.substr(0, 40) + "..." : s;
+}
+
+// A certificate rational "[-]digits" or "[-]digits/digits" of at most max_bits bits (checked on the text first).
+mpq_class rational(const json& j, const std::string& place, std::size_t max_bits) {
+  if (!j.is_string()) reject("certificate format", place + ": expected a rational \"p/q\", got " + shown(j));
+  const std::string& s = j.get_ref<const std::string&>();
+  const std::size_t max_chars = 2 * (max_bits * 30103 / 100000 + 2) + 2;
+  if (s.size() > max_chars) reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) + " bits");
+  std::size_t i = s.size() && s[0] == '-' ? 1 : 0;
+  const std::size_t slash = s.find('/');
+  auto digits = [&](std::size_t a, std::size_t b) {
+    if (a >= b) return false;
+    for (std::size_t k = a; k < b; ++k)
+      if (!std::isdigit(static_cast<unsigned char>(s[k]))) return false;
+    return true;
+  };
+  const bool ok = slash == std::string::npos ? digits(i, s.size()) : digits(i, slash) && digits(slash + 1, s.size());
+  if (!ok) reject("certificate format", place + ": expected a rational \"p/q\", got " + shown(j));
+  mpq_class q;
+  if (slash == std::string::npos) {
+    q = mpq_class(mpz_class(s, 10));
+  } else {
+    mpz_class n(s.substr(0, slash), 10), d(s.substr(slash + 1), 10);
+    if (d == 0) reject("certificate format", place + ": zero denominator");
+    q = mpq_class(n, d);
+    q.canonicalize();
+  }
+  if (mpz_sizeinbase(q.get_num_mpz_t(), 2) > max_bits || mpz_sizeinbase(q.get_den_mpz_t(), 2) > max_bits)
+    reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) + " bits");
+  return q;
+}
+
+long long whole(const json& j, const std::string& place, long long lo, long long hi) {
+  long long v = 0;
+  bool ok = j.is_number_integer();
+  if (ok && j.is_number_unsigned()) ok = j.get<std::uint64_t>() <= std::uint64_t(std::max(hi, 0LL)), v = ok ? (long long)j.get<std::uint64_t>() : 0;
+  else if (ok) v = j.get<std::int64_t>();
+  if (!ok || v < lo || v > hi)
+    reject("certificate format", place + ": expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + shown(j));
+  return v;
+}
+
+enum class St { separate, touching, overlapping };
+const char* name(St s) { return s == St::separate ? "separate" : s == St::touching ? "touching" : "overlapping"; }
+St status_named(const json& j, const std::string& place) {
+  for (St s : {St::separate, St::touching, St::overlapping})
+    if (j.is_string() && j.get<std::string>() == name(s)) return s;
+  reject("certificate format", place + ": expected \"separate\", \"touching\" or \"overlapping\", got " + shown(j));
+}
+int sign_named(const json& j, const std::string& place) {
+  if (j == "negative") return -1;
+  if (j == "zero") return 0;
+  if (j == "positive") return 1;
+  reject("certificate format", place + ": expected \"negative\", \"zero\" or \"positive\", got " + shown(j));
+}
+
+std::string bracket_text(const mpq_class& lo, const mpq_class& hi) {
+  return lo == hi ? "[" + lo.get_str() + "]" : "[" + lo.get_str() + ", " + hi.get_str() + "]";
+}
+
+// A plain decimal "[-]digits[.digits][e[-]digits]": its value and the unit of its last digit.
+bool read_decimal(const std::string& s, std::size_t max_chars, mpq_class& value, mpq_class& unit) {
+  if (s.empty() || s.size() > max_chars) return false;
+  std::size_t i = 0;
+  bool neg = false;
+  if (s[0] == '-' || s[0] == '+') neg = s[i++] == '-';
+  std::string digits;
+  long places = 0;
+  bool dot = false;
+  for (; i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || (s[i] == '.' && !dot)); ++i) {
+    if (s[i] == '.') { dot = true; continue; }
+    digits += s[i];
+    if (dot) ++places;
+  }
+  if (digits.empty()) return false;
+  long ex = 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    bool eneg = false;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) eneg = s[i++] == '-';
+    const std::size_t start = i;
+    for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
+      if (ex <= 100000) ex = ex * 10 + (s[i] - '0');
+    if (i == start || ex > 100000) return false;
+    if (eneg) ex = -ex;
+  }
+  if (i != s.size()) return false;
+  const long e = ex - places;
+  mpz_class p10, m(digits, 10);
+  mpz_ui_pow_ui(p10.get_mpz_t(), 10, (unsigned long)(e < 0 ? -e : e));
+  if (neg) m = -m;
+  value = e < 0 ? mpq_class(m, p10) : mpq_class(m * p10);
+  unit = e < 0 ? mpq_class(mpz_class(1), p10) : mpq_class(p10);
+  value.canonicalize();
+  unit.canonicalize();
+  return true;
+}
+
+// An approx lies in its bracket; for a point [r, r], r rounded to its own last digit.
+void check_approx(const json& a, const mpq_class& lo, const mpq_class& hi, const std::string& claim, const std::string& place, std::size_t max_chars) {
+  mpq_class v, u;
+  if (!a.is_string() || !read_decimal(a.get<std::string>(), max_chars, v, u))
+    reject(claim, place + ": approx must be a decimal string, got " + shown(a));
+  const bool ok = lo == hi ? abs(mpq_class(v - lo)) * 2 <= u : (lo <= v && v <= hi);
+  if (!ok) reject(claim, place + ": approx " + shown(a) + " lies outside its bracket " + bracket_text(lo, hi));
+}
+
+std::size_t primitive_bits(const QPoly& p) {  // τ: bits of the primitive integer multiple
+  mpz_class l = 1, g = 0;
+  for (const auto& x : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
+  std::vector<mpz_class> z;
+  for (const auto& x : p.c) {
+    z.push_back(x.get_num() * (l / x.get_den()));
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), z.back().get_mpz_t());
+  }
+  std::size_t b = 0;
+  for (auto& x : z) {
+    if (g != 0) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+    b = std::max<std::size_t>(b, mpz_sizeinbase(x.get_mpz_t(), 2));
+  }
+  return b;
+}
+
+struct Node {
+  mpq_class lo, hi;
+  bool cell = false;
+  St status = St::overlapping;
+  std::optional<int> factor;
+  json evidence = json::array();
+  std::string name, place;
+};
+
+struct Checker {
+  const CheckScene& sc;
+  const json& cert;
+  std::vector<std::string>& checked;
+  Checker(const CheckScene& s, const json& c, std::vector<std::string>& out) : sc(s), cert(c), checked(out) {}
+  int H = 3;
+  std::vector<QPoly> g;  // the certificate's f, once proved
+  QPoly P;               // the projection, once proved
+  int projection_k = 0;  // 3D: psc_k
+  std::vector<std::pair<QPoly, int>> F;
+  std::vector<Node> nodes;
+  std::size_t max_bits = 256, factor_bits = 256, approx_chars = 200, degree = 0;
+  std::map<std::string, QPoly> evidence_cache;
+
+  int g_degree() const {
+    int d = 0;
+    for (const auto& x : g) d = std::max(d, x.degree());
+    return d;
+  }
+  std::vector<mpq_class> g_at(const mpq_class& t) const {
+    std::vector<mpq_class> v;
+    for (const auto& x : g) v.push_back(x(t));
+    return v;
+  }
+
+  void scene_claim() {
+    const json& s = at(cert, "scene", "certificate");
+    for (const char* k : {"dim", "a", "b"})
+      if (at(s, k, "scene") != sc.doc.at(k))
+        reject("scene", std::string("the certificate's \"") + k + "\" differs from the scene file's: it is a certificate for another scene");
+    if (sc.cycloidal) reject("certificate format", "the scene has a cycloidal motion: its certificate is an eccd-cycloidal-certificate/1");
+    if (sc.independent) reject("certificate format", "the scene has independent motions: its certificate is an eccd-independent-certificate/1");
+    for (const CheckObject* o : {&sc.a, &sc.b}) {
+      const QPoly d = motion_determinant(o->M);
+      if (d.zero() || sgn(d(0)) == 0 || sgn(d(1)) == 0 || roots_between(d, 0, 1) != 0)
+        reject("scene", std::string("det M(t) of object ") + (o == &sc.a ? "a" : "b") + " vanishes in [0, 1]: the motion is not invertible there");
+    }
+    checked.push_back("scene: dim, a and b are the scene file's; det M(t) has no root in [0, 1] for either object (Sturm)");
+  }
+
+  void f_claim() {
+    const json& gj = at(at(cert, "f", "certificate"), "g", "f");
+    if (!gj.is_array() || int(gj.size()) != H + 1)
+      reject("f", "expected " + std::to_string(H + 1) + " coefficient polynomials g_0 .. g_" + std::to_string(H));
+    const PolyMatrix Na = primitive_inverse(sc.a.M), Nb = primitive_inverse(sc.b.M);
+    const int D = 2 * H * std::max(matrix_degree(Na), matrix_degree(Nb));
+    for (int k = 0; k <= H; ++k) {
+      const std::string place = "f.g[" + std::to_string(k) + "]";
+      if (!gj[std::size_t(k)].is_array() || int(gj[std::size_t(k)].size()) > D + 1)
+        reject("f", place + ": expected an array of at most " + std::to_string(D + 1) + " coefficients (the degree the scene allows)");
+      std::vector<mpq_class> c;
+      for (std::size_t i = 0; i < gj[std::size_t(k)].size(); ++i) c.push_back(rational(gj[std::size_t(k)][i], place + "[" + std::to_string(i) + "]", 1u << 16));
+      g.push_back(QPoly(std::move(c)));
+    }
+    // g_k(t_j) = ρ_k h_k(t_j) at D + 1 points, one constant ρ_k per k.
+    std::vector<std::optional<mpq_class>> rho(std::size_t(H) + 1);
+    std::vector<bool> h_zero(std::size_t(H) + 1, true);
+    for (int j = 0; j <= D; ++j) {
+      const mpq_class t(j);
+      const std::vector<mpq_class> h = pencil_coefficients(moving_quadric(sc.a.Q, Na, t), moving_quadric(sc.b.Q, Nb, t));
+      for (int k = 0; k <= H; ++k) {
+        const mpq_class gv = g[std::size_t(k)](t);
+        const mpq_class& hv = h[std::size_t(k)];
+        if (sgn(hv) != 0) h_zero[std::size_t(k)] = false;
+        if (!rho[std::size_t(k)] && sgn(hv) != 0) rho[std::size_t(k)] = gv / hv;
+        if (rho[std::size_t(k)] ? gv != *rho[std::size_t(k)] * hv : sgn(gv) != 0)
+          reject("f", "g_" + std::to_string(k) + " is not a constant multiple of the coefficient of lambda^" + std::to_string(k) +
+                          " of det(lambda A(t) - B(t)) computed from the scene (they disagree at t = " + std::to_string(j) + ")");
+      }
+    }
+    if (h_zero[0] || h_zero[std::size_t(H)]) reject("f", "det A(t) or det B(t) vanishes identically: a degenerate scene");
+    const mpq_class rH = *rho[std::size_t(H)], r0 = *rho[0];
+    if (sgn(rH) <= 0 || sgn(r0) <= 0) reject("f", "g_0 or g_" + std::to_string(H) + " has the wrong sign: the roots lambda would change sign");
+    for (int k = 1; k < H; ++k) {
+      if (h_zero[std::size_t(k)]) continue;
+      const mpq_class r = *rho[std::size_t(k)];
+      mpq_class lhs = 1, rhs = 1;
+      for (int i = 0; i < H; ++i) lhs *= r;
+      for (int i = 0; i < k; ++i) rhs *= rH;
+      for (int i = 0; i < H - k; ++i) rhs *= r0;
+      if (sgn(r) <= 0 || lhs != rhs)
+        reject("f", "g_" + std::to_string(k) + " is scaled differently from g_0 and g_" + std::to_string(H) +
+                        ": not f(lambda) up to positive factors on A and B (the roots lambda would move)");
+    }
+    checked.push_back("f: g_0 .. g_" + std::to_string(H) + " equal det(lambda A(t) - B(t)) from the scene up to positive factors on A and B (" +
+                      std::to_string(D + 1) + " points)");
+  }
+
+  // g scaled by one positive integer L to integer coefficients (after the f claim): values at integers in mpz.
+  std::vector<std::vector<mpz_class>> G;
+  void make_integer_g() {
+    mpz_class L = 1;
+    for (const auto& x : g) L = denominator_lcm(x, L);
+    for (const auto& x : g) G.push_back(integer_multiple(x, L));
+  }
+  std::vector<mpz_class> G_at(const mpz_class& t) const {
+    std::vector<mpz_class> v;
+    for (const auto& x : G) v.push_back(value_at(x, t));
+    return v;
+  }
+  // The named candidate's value at t for L·g (a fixed positive multiple of
+  // its value for g): "discriminant" (2D: of the cubic; 3D: psc_0 = Res(f, f')) or psc_k.
+  mpz_class candidate_at(int k, const mpz_class& t) const {
+    const std::vector<mpz_class> v = G_at(t);
+    if (H == 3) return cubic_discriminant_at(v);
+    return subresultant_at(v, k, k);
+  }
+  // A bound on the degree in t of Σ over monomials Π g_{k_i} (`factors` of
+  // them, Σ k_i = weight): the discriminant of a degree-n polynomial is
+  // homogeneous of degree 2n - 2 and isobaric of weight n(n - 1) in its
+  // coefficients, Res(f, f') of degree 2n - 1 and weight n²; so its degree
+  // is at most the best Σ deg g_{k_i} (dynamic programming). -1: every
+  // monomial has a zero factor.
+  int isobaric_bound(int factors, int weight) const {
+    std::vector<int> best(std::size_t(weight) + 1, -1);
+    best[0] = 0;
+    for (int f = 0; f < factors; ++f) {
+      std::vector<int> next(std::size_t(weight) + 1, -1);
+      for (int w = 0; w <= weight; ++w) {
+        if (best[std::size_t(w)] < 0) continue;
+        for (int k = 0; k <= H && w + k <= weight; ++k)
+          if (!g[std::size_t(k)].zero()) next[std::size_t(w + k)] = std::max(next[std::size_t(w + k)], best[std::size_t(w)] + g[std::size_t(k)].degree());
+      }
+      best = next;
+    }
+    return best[std::size_t(weight)];
+  }
+  int candidate_bound(int k) const {
+    if (H == 3) return isobaric_bound(4, 6);
+    if (k == 0) return isobaric_bound(7, 16);
+    return (2 * H - 1 - 2 * k) * g_degree();
+  }
+  static mpz_class point(int j, int count) { return mpz_class(j - count / 2); }  // symmetric about 0: smaller values
+
+  // Returns false when the 2D discriminant vanishes identically.
+  bool projection_claim() {
+    make_integer_g();
+    const json& p = at(cert, "projection", "certificate");
+    const json& nm = at(p, "name", "projection");
+    const json& vanishing = at(p, "vanishing", "projection");
+    if (!vanishing.is_array() || vanishing.size() > 3) reject("certificate format", "projection.vanishing: expected an array of names");
+    std::vector<std::string> names{"discriminant"};
+    if (H == 4) names = {"discriminant", "psc_1", "psc_2", "psc_3"};
+    int k = -1;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (nm == names[i]) k = int(i);
+    if (k < 0) reject("projection", "the certificate names " + shown(nm) + ", not a projection this checker knows");
+    if (vanishing.size() != std::size_t(k)) reject("projection", "projection.vanishing must list the " + std::to_string(k) + " candidate(s) before " + names[std::size_t(k)]);
+    for (int i = 0; i < k; ++i) {
+      if (vanishing[std::size_t(i)] != names[std::size_t(i)]) reject("projection", "projection.vanishing must list the candidates in order");
+      const int count = candidate_bound(i) + 1;
+      for (int j = 0; j < count; ++j)
+        if (sgn(candidate_at(i, point(j, count))) != 0)
+          reject("projection", names[std::size_t(i)] + " does not vanish identically (it is non-zero at t = " + point(j, count).get_str() + ")");
+    }
+    projection_k = k;
+    const bool zero = at(p, "identically_zero", "projection") == true;
+    if (!at(p, "identically_zero", "projection").is_boolean()) reject("certificate format", "projection.identically_zero: expected true or false");
+    const int bound = candidate_bound(k);
+    if (zero) {
+      if (H != 3) reject("projection", "a 3D certificate names a projection that vanishes identically");
+      for (int j = 0; j <= bound; ++j)
+        if (sgn(candidate_at(k, point(j, bound + 1))) != 0)
+          reject("projection", "the discriminant does not vanish identically (non-zero at t = " + point(j, bound + 1).get_str() + ")");
+      checked.push_back("projection: the discriminant vanishes identically (values at " + std::to_string(std::max(bound, -1) + 1) + " points)");
+      return false;
+    }
+    // P's degree: at most the candidate's (3D k = 0: disc f = psc_0 / ±g_4, of degree at most the isobaric bound (6, 12)).
+    const int p_bound = H == 4 && k == 0 ? isobaric_bound(6, 12) : bound;
+    const json& cj = at(p, "coefficients", "projection");
+    if (!cj.is_array() || cj.empty() || int(cj.size()) > p_bound + 1)
+      reject("projection", "expected at most " + std::to_string(p_bound + 1) + " coefficients (the degree the scene allows)");
+    std::vector<mpq_class> c;
+    for (std::size_t i = 0; i < cj.size(); ++i) c.push_back(rational(cj[i], "projection.coefficients[" + std::to_string(i) + "]", 1u << 20));
+    P = QPoly(std::move(c));
+    if (P.zero()) reject("projection", "the projection's coefficients are all zero but identically_zero is false");
+    if (whole(at(p, "degree", "projection"), "projection.degree", 0, 1 << 30) != P.degree())
+      reject("projection", "projection.degree differs from the degree of its coefficients");
+    const std::vector<mpz_class> PZ = integer_multiple(P, denominator_lcm(P));
+    std::optional<mpq_class> ratio;
+    // 3D k = 0: psc_0 = Res(f, f') = ±g_4 · disc f, so P · g_4 is compared with psc_0. Both sides have degree < points.
+    const bool times_g4 = H == 4 && k == 0;
+    const int points = std::max(bound, P.degree() + (times_g4 ? g[4].degree() : 0)) + 1;
+    for (int j = 0; j < points; ++j) {
+      const mpz_class t = point(j, points), want = candidate_at(k, t);
+      const mpz_class got = times_g4 ? mpz_class(value_at(PZ, t) * value_at(G[4], t)) : value_at(PZ, t);
+      if (!ratio && sgn(want) != 0) ratio = mpq_class(got) / mpq_class(want);
+      if (ratio ? mpq_class(got) != *ratio * mpq_class(want) : sgn(got) != 0)
+        reject("projection", "P is not a constant multiple of the " + names[std::size_t(k)] + " of f (they disagree at t = " + t.get_str() + ")");
+    }
+    if (!ratio) reject("projection", names[std::size_t(k)] + " vanishes identically, but the certificate says it does not");
+    degree = std::size_t(P.degree());
+    const std::size_t tau = primitive_bits(P);
+    max_bits = std::min<std::size_t>(4 * tau + 1024, std::max<std::size_t>(256, (std::size_t(1) << 24) / std::max<std::size_t>(degree * degree, 1)));
+    factor_bits = tau + 2 * degree + 64;
+    approx_chars = max_bits * 30103 / 100000 + 64;
+    checked.push_back("projection: " + names[std::size_t(k)] + " of degree " + std::to_string(degree) + ", a constant multiple of the one of f (values at " +
+                      std::to_string(points) + " points)" + (k ? ", the candidates before it vanish identically" : ""));
+    const json& fj = at(p, "square_free_factors", "projection");
+    if (!fj.is_array() || fj.empty() || fj.size() > degree) reject("factors", "expected a non-empty list of at most " + std::to_string(degree) + " factors");
+    long long total = 0;
+    for (std::size_t i = 0; i < fj.size(); ++i) {
+      const std::string place = "projection.square_free_factors[" + std::to_string(i) + "]";
+      const json& co = at(fj[i], "coefficients", place);
+      if (!co.is_array() || co.size() > degree + 1) reject("certificate format", place + ".coefficients: expected at most " + std::to_string(degree + 1) + " coefficients");
+      std::vector<mpq_class> c2;
+      for (std::size_t k2 = 0; k2 < co.size(); ++k2) c2.push_back(rational(co[k2], place + ".coefficients[" + std::to_string(k2) + "]", factor_bits));
+      QPoly fi(std::move(c2));
+      const int m = int(whole(at(fj[i], "multiplicity", place), place + ".multiplicity", 1, (long long)degree));
+      if (fi.degree() < 1) reject("factors", "factor " + std::to_string(i) + " is constant");
+      total += (long long)m * fi.degree();
+      F.push_back({fi, m});
+    }
+    if (total != (long long)degree) reject("factors", "the factors' degrees times multiplicities add up to " + std::to_string(total) + ", not " + std::to_string(degree));
+    std::optional<mpq_class> r2;
+    std::vector<std::vector<mpz_class>> FZ;
+    for (const auto& fm : F) FZ.push_back(integer_multiple(fm.first, denominator_lcm(fm.first)));
+    for (std::size_t j = 0; j <= degree; ++j) {
+      const mpz_class t = point(int(j), int(degree) + 1);
+      mpz_class prod = 1;
+      for (std::size_t i = 0; i < F.size(); ++i) {
+        const mpz_class v = value_at(FZ[i], t);
+        for (int e = 0; e < F[i].second; ++e) prod *= v;
+      }
+      const mpz_class pv = value_at(PZ, t);
+      if (!r2 && sgn(pv) != 0) r2 = mpq_class(prod) / mpq_class(pv);
+      if (r2 ? mpq_class(prod) != *r2 * mpq_class(pv) : sgn(prod) != 0)
+        reject("factors", "the product of the factors is not a constant multiple of the projection (they disagree at t = " + t.get_str() + ")");
+    }
+    checked.push_back("factors: the product of " + std::to_string(F.size()) + " factor(s) is the projection up to a constant (values at " +
+                      std::to_string(degree + 1) + " points)");
+    return true;
+  }
+
+  // The static test at a rational instant: negative roots of f(λ; t) by Sturm.
+  St static_status(const mpq_class& t) const {
+    const QPoly f(g_at(t));
+    if (f.zero() || sgn(f.c[0]) == 0 || f.degree() < H) reject("scene", "f(lambda; " + t.get_str() + ") is degenerate (det A or det B vanishes)");
+    if (negative_roots(f) >= 2) return St::separate;
+    const QPoly h = gcd(f, derivative(f));
+    if (h.degree() >= 1 && negative_roots(h) >= 1) return St::touching;
+    return St::overlapping;
+  }
+
+  QPoly evidence(const std::string& nm) {
+    if (auto it = evidence_cache.find(nm); it != evidence_cache.end()) return it->second;
+    QPoly q;
+    const mpq_class nine = 9, three = 3, four = 4;
+    if (H == 3 && nm == "P") q = nine * (g[3] * g[0]) - g[2] * g[1];
+    else if (H == 3 && nm == "D") q = g[2] * g[2] - three * (g[3] * g[1]);
+    else if (H == 4) {
+      auto s = [&](int j, int i) {
+        const int bound = (2 * H - 1 - 2 * j) * g_degree();
+        std::vector<mpq_class> v;
+        for (int k = 0; k <= bound; ++k) v.push_back(mpq_class(subresultant_at(G_at(mpz_class(k)), j, i)));  // L^rows times s(j,i): a positive constant
+        return interpolate_at_integers(v);
+      };
+      int j = -1, i = -1;
+      char tail = 0;
+      if (nm == "disc(S_2)") {
+        const QPoly a = s(2, 2), b = s(2, 1), c = s(2, 0);
+        q = b * b - four * (a * c);
+      } else if (std::sscanf(nm.c_str(), "s(%d,%d%c", &j, &i, &tail) == 3 && tail == ')' && i >= 0 && i <= j && j <= 3 &&
+                 "s(" + std::to_string(j) + "," + std::to_string(i) + ")" == nm) {
+        q = s(j, i);
+      } else {
+        reject("certificate format", "unknown evidence polynomial \"" + nm + "\"");
+      }
+    } else {
+      reject("certificate format", "unknown evidence polynomial \"" + nm + "\"");
+    }
+    evidence_cache[nm] = q;
+    return q;
+  }
+
+  int continuous_claim() {  // 2D, Δ ≡ 0; returns the status on [0, 1]
+    const json& ct = at(cert, "continuous_touching", "certificate");
+    const QPoly PD = evidence("P") * evidence("D");
+    const bool zero = PD.zero();
+    const QPoly sized = zero ? g[0] : PD;
+    degree = std::size_t(std::max(sized.degree(), 0));
+    const std::size_t tau = primitive_bits(sized);
+    max_bits = std::min<std::size_t>(4 * tau + 1024, std::max<std::size_t>(256, (std::size_t(1) << 24) / std::max<std::size_t>(degree * degree, 1)));
+    approx_chars = max_bits * 30103 / 100000 + 64;
+    if (at(ct, "identically_zero", "continuous_touching") != json(zero))
+      reject("continuous touching", zero ? "P·D vanishes identically, the certificate says it does not" : "P·D does not vanish identically, the certificate says it does");
+    const mpq_class sample = rational(at(ct, "sample", "continuous_touching"), "continuous_touching.sample", max_bits);
+    if (!(0 < sample && sample < 1)) reject("continuous touching", "continuous_touching.sample must lie in (0, 1)");
+    const St claimed = status_named(at(ct, "status", "continuous_touching"), "continuous_touching.status");
+    const St st = static_status(sample);
+    if (st != claimed) reject("continuous touching", std::string("the static test at the sample gives ") + name(st) + ", not " + name(claimed));
+    if (st == St::separate) reject("continuous touching", "separate at the sample although the discriminant vanishes identically");
+    const json& gp = at(ct, "gap_points", "continuous_touching");
+    if (!gp.is_array() || gp.size() > 8 * degree + 64) reject("certificate format", "continuous_touching.gap_points: too many points");
+    if (zero) {
+      if (!gp.empty()) reject("certificate format", "continuous_touching.gap_points: expected [] when P·D vanishes identically");
+      if (st != St::overlapping) reject("continuous touching", "P·D ≡ 0: a triple or zero double root, overlapping, not touching");
+    } else {
+      if (sgn(PD(0)) == 0 || sgn(PD(1)) == 0) reject("continuous touching", "P·D vanishes at t = 0 or t = 1");
+      std::vector<mpq_class> cut{mpq_class(0)};
+      for (std::size_t i = 0; i < gp.size(); ++i) {
+        const mpq_class x = rational(gp[i], "continuous_touching.gap_points[" + std::to_string(i) + "]", max_bits);
+        if (!(cut.back() < x && x < 1)) reject("continuous touching", "continuous_touching.gap_points are not increasing inside (0, 1)");
+        if (sgn(PD(x)) == 0) reject("continuous touching", "P·D vanishes at gap point " + x.get_str());
+        cut.push_back(x);
+      }
+      cut.push_back(mpq_class(1));
+      for (std::size_t i = 0; i + 1 < cut.size(); ++i)
+        if (descartes(PD, cut[i], cut[i + 1]) != 0)
+          reject("continuous touching", "P·D may have a root in (" + cut[i].get_str() + ", " + cut[i + 1].get_str() + "): the status may change inside [0, 1]");
+    }
+    checked.push_back(std::string("continuous touching: ") + (zero ? "P·D vanishes identically, overlapping on [0, 1]" : std::string("P·D has no root in [0, 1], ") + name(st) + " on all of [0, 1]"));
+    return int(st);
+  }
+
+  void timeline_claim() {
+    const json& tl = at(cert, "timeline", "certificate");
+    if (!tl.is_array() || tl.size() < 3 || tl.size() % 2 == 0 || tl.size() > 2 * degree + 3)
+      reject("timeline", "expected instant, cell, ..., instant (an odd number >= 3 of entries, at most " + std::to_string(2 * degree + 3) + ")");
+    for (std::size_t k = 0; k < tl.size(); ++k) {
+      const std::string place = "timeline[" + std::to_string(k) + "]";
+      Node n;
+      n.cell = k % 2 == 1;
+      n.place = place;
+      if (n.cell) {
+        n.lo = n.hi = rational(at(tl[k], "cell_sample", place), place + ".cell_sample", max_bits);
+        n.name = "cell " + std::to_string(k / 2) + " (sample " + n.lo.get_str() + ")";
+      } else {
+        const json& in = at(tl[k], "instant", place);
+        n.lo = rational(at(in, "lo", place + ".instant"), place + ".instant.lo", max_bits);
+        n.hi = rational(at(in, "hi", place + ".instant"), place + ".instant.hi", max_bits);
+        n.name = "instant " + std::to_string(k / 2) + " " + bracket_text(n.lo, n.hi);
+        if (n.lo > n.hi) reject(n.name, place + ".instant: lo > hi");
+        check_approx(at(in, "approx", place + ".instant"), n.lo, n.hi, n.name, place + ".instant.approx", approx_chars);
+        const json& f = at(tl[k], "root_of_factor", place);
+        if (!f.is_null()) n.factor = int(whole(f, place + ".root_of_factor", 0, (long long)F.size() - 1));
+        if (tl[k].contains("evidence")) n.evidence = tl[k]["evidence"];
+        if (!n.evidence.is_array() || n.evidence.size() > 16) reject("certificate format", place + ".evidence: expected an array of at most 16 objects");
+        for (std::size_t i = 0; i < n.evidence.size(); ++i)
+          if (!n.evidence[i].is_object())
+            reject("certificate format", place + ".evidence[" + std::to_string(i) + "]: expected an object {\"poly\", \"sign\"}, got " + shown(n.evidence[i]));
+      }
+      n.status = status_named(at(tl[k], "status", place), place + ".status");
+      nodes.push_back(n);
+    }
+    if (!(nodes.front().lo == 0 && nodes.front().hi == 0)) reject("timeline", "the first instant must be [0, 0]");
+    if (!(nodes.back().lo == 1 && nodes.back().hi == 1)) reject("timeline", "the last instant must be [1, 1]");
+    for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
+      if (!(nodes[k].hi < nodes[k + 1].lo))
+        reject(nodes[k].cell ? nodes[k].name : nodes[k + 1].name, "each cell sample must lie strictly between its two brackets, and brackets must be disjoint");
+    checked.push_back("timeline: " + std::to_string(nodes.size() / 2 + 1) + " instants and " + std::to_string(nodes.size() / 2) + " cells in order");
+  }
+
+  void isolation_claim() {
+    int roots = 0;
+    for (std::size_t k = 0; k < nodes.size(); k += 2) {
+      const Node& n = nodes[k];
+      const bool end = k == 0 || k + 1 == nodes.size();
+      if (!n.factor) {
+        if (!end) reject(n.name, "an interior instant must be a root of the projection (root_of_factor is null)");
+        if (sgn(P(n.lo)) == 0) reject(n.name, "claimed not to be a root, but the projection vanishes there");
+        continue;
+      }
+      ++roots;
+      const QPoly& Fi = F[std::size_t(*n.factor)].first;
+      if (n.lo == n.hi) {
+        if (sgn(Fi(n.lo)) != 0) reject(n.name, "claimed to be a root of factor " + std::to_string(*n.factor) + ", which does not vanish there");
+        continue;
+      }
+      if (sgn(P(n.lo)) == 0 || sgn(P(n.hi)) == 0) reject(n.name, "the projection vanishes at an end of the bracket");
+      for (std::size_t j = 0; j < F.size(); ++j) {
+        const int v = descartes(F[j].first, n.lo, n.hi);
+        if (int(j) == *n.factor && v != 1) reject(n.name, "does not provably hold exactly one root: factor " + std::to_string(j) + " has " + std::to_string(v) + " sign variation(s) on the bracket");
+        if (int(j) != *n.factor && v != 0) reject(n.name, "another factor (" + std::to_string(j) + ") may have a root in the bracket (" + std::to_string(v) + " sign variations)");
+      }
+    }
+    checked.push_back("brackets: each of the " + std::to_string(roots) + " root bracket(s) holds exactly one root of the projection (Descartes)");
+    const json& gp = at(cert, "gap_points", "certificate");
+    if (!gp.is_array() || gp.size() > 8 * degree + 64) reject("certificate format", "gap_points: expected an array of at most " + std::to_string(8 * degree + 64) + " points");
+    std::vector<mpq_class> pts;
+    for (std::size_t i = 0; i < gp.size(); ++i) pts.push_back(rational(gp[i], "gap_points[" + std::to_string(i) + "]", max_bits));
+    std::size_t used = 0;
+    int pieces = 0;
+    for (std::size_t k = 0; k + 2 < nodes.size(); k += 2) {
+      const mpq_class a = nodes[k].hi, b = nodes[k + 2].lo;
+      std::vector<mpq_class> cut{a};
+      while (used < pts.size() && pts[used] < b) {
+        if (!(cut.back() < pts[used])) reject("gaps", "gap point " + pts[used].get_str() + " is not strictly inside a gap, or the points are not increasing");
+        if (sgn(P(pts[used])) == 0) reject("gaps", "the projection vanishes at gap point " + pts[used].get_str());
+        cut.push_back(pts[used++]);
+      }
+      cut.push_back(b);
+      for (std::size_t i = 0; i + 1 < cut.size(); ++i, ++pieces)
+        for (std::size_t j = 0; j < F.size(); ++j)
+          if (descartes(F[j].first, cut[i], cut[i + 1]) != 0)
+            reject("gaps", "the projection may have a root in (" + cut[i].get_str() + ", " + cut[i + 1].get_str() + ") outside every bracket (factor " + std::to_string(j) + ")");
+    }
+    if (used != pts.size()) reject("gaps", "gap point " + pts[used].get_str() + " is not strictly inside a gap");
+    checked.push_back("gaps: no other root of the projection in [0, 1] (" + std::to_string(pieces) + " piece(s), Descartes 0 on each)");
+  }
+
+  int evidence_sign(const Node& n, const std::string& want) {
+    for (std::size_t i = 0; i < n.evidence.size(); ++i) {
+      const json& e = n.evidence[i];
+      const std::string place = n.place + ".evidence[" + std::to_string(i) + "]";
+      if (at(e, "poly", place) != want) continue;
+      const QPoly q = evidence(want);
+      const int claimed = sign_named(at(e, "sign", place), place + ".sign");
+      if (claimed != 0) {
+        if (sgn(q(n.lo)) == 0 || descartes(q, n.lo, n.hi) != 0) reject(n.name, "the sign of " + want + " at the root is not proved: it may vanish on the bracket");
+        if (sgn(q(n.lo)) != claimed) reject(n.name, want + " has the other sign on the bracket than claimed");
+        return claimed;
+      }
+      const json& hj = at(e, "common_factor", place);
+      if (!hj.is_array() || hj.size() > degree + 1) reject("certificate format", place + ".common_factor: expected at most " + std::to_string(degree + 1) + " coefficients");
+      std::vector<mpq_class> c;
+      for (std::size_t k = 0; k < hj.size(); ++k) c.push_back(rational(hj[k], place + ".common_factor[" + std::to_string(k) + "]", factor_bits));
+      const QPoly h(std::move(c));
+      if (h.degree() < 1) reject(n.name, "the common factor offered for " + want + " = 0 is constant");
+      QPoly quo, rem;
+      divmod(q, h, quo, rem);
+      if (!rem.zero()) reject(n.name, "the common factor offered for " + want + " = 0 does not divide " + want);
+      divmod(F[std::size_t(*n.factor)].first, h, quo, rem);
+      if (!rem.zero()) reject(n.name, "the common factor offered for " + want + " = 0 does not divide the root's factor");
+      if (sgn(h(n.lo)) == 0 || sgn(h(n.hi)) == 0 || descartes(h, n.lo, n.hi) != 1) reject(n.name, "the common factor offered for " + want + " = 0 has no proved root in the bracket");
+      return 0;
+    }
+    reject(n.name, "the evidence for the sign of " + want + " at the root is missing");
+  }
+
+  void status_claims() {
+    for (std::size_t k = 1; k < nodes.size(); k += 2) {
+      const St st = static_status(nodes[k].lo);
+      if (st != nodes[k].status) reject(nodes[k].name, std::string("the static test gives ") + name(st) + ", not " + name(nodes[k].status));
+    }
+    checked.push_back("cells: the static test (negative roots of f by Sturm) at each of the " + std::to_string(nodes.size() / 2) + " sample(s) gives the claimed status");
+    int rational_count = 0, irrational = 0;
+    for (std::size_t k = 0; k < nodes.size(); k += 2) {
+      Node& n = nodes[k];
+      St st;
+      if (n.lo == n.hi) {
+        st = static_status(n.lo);
+        ++rational_count;
+      } else if (!n.factor) {
+        reject(n.name, "an end instant that is not a root must be a point");
+      } else {
+        ++irrational;
+        if (H == 3) {
+          // 003 Theorem 6: at a double root of f, it is -P/(... ) with the sign of P·D: touching iff P·D < 0; D = 0: a triple root, overlapping.
+          const int sp = evidence_sign(n, "P"), sd = evidence_sign(n, "D");
+          st = sd == 0 ? St::overlapping : sp * sd < 0 ? St::touching : St::overlapping;
+        } else {
+          const int touch = negative_multiple_root(n);
+          if (touch > 0) {
+            st = St::touching;
+          } else {
+            st = nodes[k - 1].status;
+            if (nodes[k + 1].status != st) reject(n.name, "no negative multiple root, yet the neighbouring cells have different statuses");
+          }
+        }
+      }
+      if (st != n.status) reject(n.name, std::string("the evidence gives ") + name(st) + ", not " + name(n.status));
+    }
+    checked.push_back("instants: " + std::to_string(rational_count) + " rational instant(s) by the static test, " + std::to_string(irrational) +
+                      " root(s) by proved signs of the evidence polynomials");
+  }
+
+  // 3D: does f have a negative multiple root at the root of node n (gcd(f, f') = S_j, j the least > k with s(j,j) ≠ 0)?
+  int negative_multiple_root(const Node& n) {
+    auto sg = [&](int j, int i) { return evidence_sign(n, i < 0 ? std::string("disc(S_2)") : "s(" + std::to_string(j) + "," + std::to_string(i) + ")"); };
+    for (int j = projection_k + 1; j <= 3; ++j) {
+      const int lead = sg(j, j);
+      if (lead == 0) continue;
+      if (j == 1 || j == 3) return sg(j, j - 1) * lead > 0 ? 1 : 0;  // the root -s(j,j-1)/(j' s(j,j)) is negative
+      const int b = sg(2, 1), c = sg(2, 0), d = sg(2, -1);
+      if (d < 0) return 0;  // a complex pair
+      const bool neg = lead * c < 0 || (lead * c > 0 && lead * b > 0) || (c == 0 && lead * b > 0);
+      return neg ? 1 : 0;
+    }
+    reject(n.name, "every subresultant coefficient s(j,j), j > k, vanishes at the root: impossible for a quartic");
+  }
+
+  void answer_claim(const std::vector<Node>& seq) {
+    // Assemble: runs of nodes in collision (touching, overlapping), contacts, contact intervals.
+    auto in_c = [&](std::size_t k) { return seq[k].status != St::separate; };
+    auto touching_cell = [&](std::size_t k) { return k < seq.size() && seq[k].cell && seq[k].status == St::touching; };
+    for (std::size_t k = 1; k < seq.size(); k += 2)
+      if (in_c(k) && (!in_c(k - 1) || !in_c(k + 1)))
+        reject("timeline", seq[k].name + " is in collision but a neighbouring instant is separate: the collision set would not be closed");
+    using Br = std::pair<mpq_class, mpq_class>;
+    std::vector<std::pair<Br, Br>> intervals, contact_intervals;
+    std::vector<Br> contacts;
+    for (std::size_t k = 0; k < seq.size(); ++k) {
+      if (!touching_cell(k)) continue;
+      std::size_t e = k;
+      while (touching_cell(e + 2) && seq[e + 1].status == St::touching) e += 2;
+      contact_intervals.push_back({{seq[k - 1].lo, seq[k - 1].hi}, {seq[e + 1].lo, seq[e + 1].hi}});
+      k = e;
+    }
+    for (std::size_t k = 0; k < seq.size(); k += 2)
+      if (seq[k].status == St::touching && !touching_cell(k + 1) && !(k > 0 && touching_cell(k - 1))) contacts.push_back({seq[k].lo, seq[k].hi});
+    for (std::size_t k = 0; k < seq.size(); ++k) {
+      if (!in_c(k)) continue;
+      std::size_t e = k;
+      while (e + 1 < seq.size() && in_c(e + 1)) ++e;
+      intervals.push_back({{seq[k].lo, seq[k].hi}, {seq[e].lo, seq[e].hi}});
+      k = e;
+    }
+    compare_answer(intervals, contacts, contact_intervals);
+  }
+
+  void compare_answer(const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& intervals,
+                      const std::vector<std::pair<mpq_class, mpq_class>>& contacts,
+                      const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& contact_intervals) {
+    const json& a = at(cert, "answer", "certificate");
+    if (!a.is_object()) reject("certificate format", "answer: expected an object");
+    for (auto it = a.begin(); it != a.end(); ++it)
+      if (it.key() != "collides" && it.key() != "intervals" && it.key() != "first_contact" && it.key() != "contacts" && it.key() != "contact_intervals")
+        reject("certificate format", "answer." + it.key() + ": not a key of the answer");
+    const std::size_t chars = approx_chars;
+    auto inst = [&](const json& j, const std::string& place, const std::pair<mpq_class, mpq_class>& want) {
+      const mpq_class lo = rational(at(j, "lo", place), place + ".lo", max_bits), hi = rational(at(j, "hi", place), place + ".hi", max_bits);
+      if (lo != want.first || hi != want.second)
+        reject("answer", place + ": the instant " + bracket_text(lo, hi) + " differs from the checked timeline's " + bracket_text(want.first, want.second));
+      check_approx(at(j, "approx", place), lo, hi, "answer", place + ".approx", chars);
+    };
+    const json& col = at(a, "collides", "answer");
+    const bool collides = !intervals.empty();
+    if (col != json(collides)) reject("answer", std::string("answer.collides is ") + shown(col) + " but the checked timeline proves " + (collides ? "a collision" : "there is none"));
+    auto pairs = [&](const char* key, const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& want, bool optional) {
+      const std::string place = std::string("answer.") + key;
+      if (optional && !a.contains(key)) {
+        if (!want.empty())
+          reject("answer", place + " is missing but the checked timeline has " + std::to_string(want.size()) +
+                               " (continuous touching): it would pass a continuous touch off as an overlap");
+        return;
+      }
+      const json& l = at(a, key, "answer");
+      if (!l.is_array()) reject("certificate format", place + ": expected an array");
+      if (l.size() != want.size())
+        reject("answer", "the checked timeline gives " + std::to_string(want.size()) + " " + key + ", the certificate " + std::to_string(l.size()) +
+                             (std::string(key) == "contact_intervals" && l.size() < want.size() ? ": it would pass a continuous touch off as an overlap" : ""));
+      for (std::size_t i = 0; i < l.size(); ++i) {
+        const std::string p = place + "[" + std::to_string(i) + "]";
+        if (!l[i].is_array() || l[i].size() != 2) reject("certificate format", p + ": expected [start, end]");
+        inst(l[i][0], p + "[0]", want[i].first);
+        inst(l[i][1], p + "[1]", want[i].second);
+      }
+    };
+    pairs("intervals", intervals, false);
+    pairs("contact_intervals", contact_intervals, true);
+    const json& fc = at(a, "first_contact", "answer");
+    if (intervals.empty() != fc.is_null()) reject("answer", "first_contact must be " + std::string(intervals.empty() ? "null" : "the start of the first interval"));
+    if (!intervals.empty()) inst(fc, "answer.first_contact", intervals.front().first);
+    const json& cs = at(a, "contacts", "answer");
+    if (!cs.is_array()) reject("certificate format", "answer.contacts: expected an array");
+    if (cs.size() != contacts.size()) reject("answer", "the checked timeline gives " + std::to_string(contacts.size()) + " contact(s), the certificate " + std::to_string(cs.size()));
+    for (std::size_t i = 0; i < cs.size(); ++i) inst(cs[i], "answer.contacts[" + std::to_string(i) + "]", contacts[i]);
+    checked.push_back("answer: assembled by the checker from the checked timeline, equal to the certificate's");
+  }
+
+  void run() {
+    const json& fmt = at(cert, "format", "certificate");
+    if (fmt != "eccd-certificate/2")
+      reject("certificate format", "format: expected \"eccd-certificate/2\", got " + shown(fmt) +
+                                       (fmt == "eccd-certificate/1" ? " (format 1 is no longer accepted: run eccd certify again)" : ""));
+    checked.push_back("certificate format: eccd-certificate/2");
+    H = sc.dim + 1;
+    scene_claim();
+    f_claim();
+    if (!projection_claim()) {
+      const St st = St(continuous_claim());
+      using Br = std::pair<mpq_class, mpq_class>;
+      const Br z{0, 0}, o{1, 1};
+      std::vector<std::pair<Br, Br>> iv{{z, o}}, ci;
+      if (st == St::touching) ci.push_back({z, o});
+      compare_answer(iv, {}, ci);
+      return;
+    }
+    timeline_claim();
+    isolation_claim();
+    status_claims();
+    if (H == 3)
+      for (std::size_t k = 2; k + 2 < nodes.size(); k += 2)
+        if (nodes[k].status == St::overlapping && nodes[k - 1].status == St::separate && nodes[k + 1].status == St::separate)
+          reject("timeline", "the statuses contradict 003 Theorem 6: an overlapping instant between two separate cells");
+    answer_claim(nodes);
+  }
+};
+
+std::string read_file(const std::string& path, bool& ok) {
+  std::ifstream in(path, std::ios::binary);
+  ok = bool(in);
+  std::ostringstream o;
+  if (ok) o << in.rdbuf();
+  return o.str();
+}
+
+}  // namespace
+
+bool covers_format(const std::string& format) { return format == "eccd-certificate/2"; }
+
+Verdict check_certificate_text(const std::string& scene_text, const std::string& scene_label, const std::string& cert_text, const std::string& cert_label) {
+  Verdict v;
+  CheckScene sc;
+  StrictDocument cert;
+  try {
+    StrictDocument sd = parse_strict(scene_text, scene_label);
+    if (!sd.structure_problem.empty()) throw SceneReadError(scene_label + ": " + sd.structure_problem);
+    sc = read_check_scene(sd.value, scene_label);
+    cert = parse_strict(cert_text, cert_label);
+  } catch (const std::exception& e) {
+    v.outcome = Outcome::unreadable;
+    v.claim = "input";
+    v.reason = e.what();
+    return v;
+  }
+  try {
+    if (!cert.structure_problem.empty()) reject("certificate format", cert.structure_problem);
+    if (!cert.value.is_object()) reject("certificate format", "top level: expected an object");
+    const json& fmt = at(cert.value, "format", "certificate");
+    if (!fmt.is_string() || (!covers_format(fmt.get<std::string>()) && fmt != "eccd-certificate/1")) {
+      v.outcome = Outcome::unreadable;
+      v.claim = "certificate format";
+      v.reason = "format " + shown(fmt) + " is not covered by this checker (it covers eccd-certificate/2; `eccd check-certificate` checks the others)";
+      return v;
+    }
+    Checker c(sc, cert.value, v.checked);
+    c.run();
+    v.outcome = Outcome::valid;
+  } catch (const Rejected& r) {
+    v.outcome = Outcome::rejected;
+    v.claim = r.claim;
+    v.reason = r.reason;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {  // arithmetic refused (a division by zero in a forged input): rejected, not a crash
+    v.outcome = Outcome::rejected;
+    v.claim = "certificate format";
+    v.reason = std::string("the certificate cannot be checked: ") + e.what();
+  }
+  return v;
+}
+
+Verdict check_certificate_files(const std::string& scene_path, const std::string& cert_path) {
+  bool ok1 = false, ok2 = false;
+  const std::string s = read_file(scene_path, ok1), c = read_file(cert_path, ok2);
+  if (!ok1 || !ok2) {
+    Verdict v;
+    v.outcome = Outcome::unreadable;
+    v.claim = "input";
+    v.reason = (!ok1 ? scene_path : cert_path) + ": cannot be read";
+    return v;
+  }
+  return check_certificate_text(s, scene_path, c, cert_path);
+}
+
+}  // namespace eccd::check
