@@ -234,7 +234,8 @@ std::string pairs_repr(const std::vector<std::pair<eccd::Instant, eccd::Instant>
 }
 
 std::string answer_repr(const std::string& head, const eccd::Answer& a) {
-  std::string r = head + "collides=" + (a.collides ? "True" : "False");
+  const std::optional<bool> claim = eccd::collides_claim(a);
+  std::string r = head + "collides=" + (!claim ? "None" : *claim ? "True" : "False");
   if (a.independent) {
     r += ", s_intervals=" + pairs_repr(a.s_intervals) + ", t_intervals=" + pairs_repr(a.t_intervals);
   } else {
@@ -254,7 +255,9 @@ py::tuple floats_of(const std::vector<std::string>& v) {
 
 template <class C, class Get>
 void answer_properties(py::class_<C>& c, Get get) {
-  c.def_property_readonly("collides", [get](const C& x) { return get(x).collides; })
+  c.def_property_readonly("collides", [get](const C& x) { return eccd::collides_claim(get(x)); },
+                           "True where a collision is proved, False only for a complete answer without one, None (unknown) "
+                           "while a stretch is undecided and no collision is proved: the JSON's collides")
       .def_property_readonly("intervals", [get](const C& x) { return instant_pairs(get(x).intervals); },
                              "the maximal collision intervals: a list of (Instant, Instant) ([] for independent motions)")
       .def_property_readonly("first_contact", [get](const C& x) { return get(x).first_contact; }, "an Instant or None")

@@ -50,6 +50,8 @@ def short(x):
 
 
 def answer_text(rep):
+    if rep["collides"] is None:
+        return "unknown: no collision proved, a stretch is undecided"
     if not rep["collides"]:
         return "collision-free on [0, 1]"
     parts = []
@@ -313,6 +315,8 @@ def draw_st(ax, data):
 
 
 def independent_text(rep):
+    if rep.get("collides") is None:
+        return "unknown: no collision proved, a piece is undecided"
     if not rep.get("collides"):
         return "free: the swept volumes do not meet"
     return f"collides: {len(rep.get('s_intervals', []))} s-interval(s), {len(rep.get('t_intervals', []))} t-interval(s)"
