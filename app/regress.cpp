@@ -248,7 +248,7 @@ Command add_regress_command(CLI::App& app) {
             if (!sc.independent) throw;
             cert = nullptr;
             row["certificate"] = {{"valid", nullptr}, {"reason", e.what()}};
-            line += ", no certificate (the proof leaves a range undecided)";
+            line += std::string(", no certificate (") + e.what() + ")";
           }
           if (!cert.is_null() && !args->keep_certificates.empty()) {
             std::string file;

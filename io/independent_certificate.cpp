@@ -3,6 +3,7 @@
 
 #include "certified/independent_proof.hpp"
 #include "io/certificate_json.hpp"
+#include "io/certificate_result.hpp"
 #include "io/krawczyk_claims.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/prepared_scene.hpp"
@@ -25,7 +26,8 @@ using I = MpfiInterval;
 const int kBits = 160;
 
 TriBern<Rational> exact_net(const Scene& scene) {
-  if (scene.dim != 3) throw std::invalid_argument("independent motions: only 3D scenes (ellipsoids) are supported");
+  if (scene.dim != 3)  // the 2D net exists (independent_ellipsoid_function<Rational, 3>); its checker does not yet
+    throw CertificationError("independent motions in 2D have no certificate format yet (eccd solve --arith exact or certified proves them)");
   Scene shared = scene;
   shared.independent = false;
   const PreparedPair<4> p = prepare_pair<4>(shared);

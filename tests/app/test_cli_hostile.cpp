@@ -159,7 +159,7 @@ TEST_CASE("a file size limit (SIGXFSZ) leaves no temporary file and exits 2", "[
   CHECK(!fs::exists(w.path / "c.json"));
 }
 
-TEST_CASE("--write-answer refuses to write a scene the reader would refuse", "[cli][hostile][outputs]") {
+TEST_CASE("solve --write-answer refuses to write a scene the reader would refuse", "[cli][hostile][outputs]") {
   TempDir w;
   const fs::path scene = w.path / "s.json";
   const std::string text = slurp(src("cases/spheres/spheres-free.json"));

@@ -63,7 +63,7 @@ TEST_CASE("table: --mpfr-bits, and --mpfr as an alias that warns", "[cli][names]
   CHECK_FALSE(has(quiet.err, "warning"));
 }
 
-TEST_CASE("--help lists the current names only", "[cli][names]") {
+TEST_CASE("each command's --help lists the current names only", "[cli][names]") {
   struct Want {
     std::string command;
     std::vector<std::string> listed, hidden;
@@ -99,7 +99,7 @@ TEST_CASE("generate: --out-dir, and --out as an alias that warns", "[cli][names]
   CHECK(has(none.err, "eccd: generate: --out-dir DIR is required"));
 }
 
-TEST_CASE("animate: --jobs and --frame-block, --threads and --shard as aliases that warn; arith as in solve", "[cli][names]") {
+TEST_CASE("animate: --jobs and --frame-block, --threads and --shard as aliases that warn, and arith as in solve", "[cli][names]") {
   const std::string swarm = q(src("cases/animations/swarm-2d.json"));
   Run now = run_eccd("animate " + swarm + " --arith double --json --jobs 1 --frame-block 0/2", 120);
   Run old = run_eccd("animate " + swarm + " --arith double --json --threads 1 --shard 0/2", 120);
@@ -146,7 +146,7 @@ TEST_CASE("eccd fcl prints format and version with or without --json", "[cli][na
   CHECK(nlohmann::json::parse(json.out) == j);
 }
 
-TEST_CASE("solve's words: undecided is not 'collides: no'; a sampled method has no polynomial", "[cli][names]") {
+TEST_CASE("solve's words: undecided is not collides no, and a sampled method has no polynomial", "[cli][names]") {
   Run d = run_eccd("solve " + q(kScene2d) + " --arith double");  // double cannot prove the touch at t = 1/2
   REQUIRE(d.code == 0);
   CHECK(has(d.out, "undecided near"));

@@ -96,9 +96,9 @@ TEST_CASE("the GNU parallel recipe (2 shards, then --merge) gives the rows of on
   CHECK(fs::exists(t.path / "joined.parts" / "shard-0" / "results.csv"));
   CHECK(fs::exists(t.path / "joined.parts" / "shard-1" / "results.csv"));
   auto rows = rows_without_time(t.path / "whole" / "results.csv");
-  // 3 scenes x (exact + (3 double + 2 mpfr:64) x 2 input modes + certified + fcl/sample:10,100,1000 where FCL is
-  // built in; no fcl/ccd row: these scenes rotate, compare/fcl_engine.hpp)
-  CHECK(rows.size() == std::size_t(3 * (11 + 1 + (eccd::fcl_availability().available ? 3 : 0))));
+  // 3 scenes x (exact + (3 double + 2 mpfr:64) x 2 input modes x 2 faces (as published, guarded) + certified +
+  // fcl/sample:10,100,1000 where FCL is built in; no fcl/ccd row: these scenes rotate, compare/fcl_engine.hpp)
+  CHECK(rows.size() == std::size_t(3 * (1 + 5 * 2 * 2 + 1 + (eccd::fcl_availability().available ? 3 : 0))));
   CHECK(rows == rows_without_time(t.path / "joined" / "results.csv"));
   CHECK(sorted_lines(t.path / "whole" / "failure_map.csv") == sorted_lines(t.path / "joined" / "failure_map.csv"));
   CHECK(nlohmann::json::parse(slurp(t.path / "joined" / "meta.json"))["shards"] == 2);

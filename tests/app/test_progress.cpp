@@ -59,7 +59,7 @@ TEST_CASE("time left: unknown until a task has finished, then from the measured 
   CHECK(*est.wall_by_rate({0, 1}, {1}, 1.0) == Approx(15.0));
 }
 
-TEST_CASE("eccd table prints each row when its scene is done; progress on stderr, one line per scene in a log", "[progress][cli]") {
+TEST_CASE("eccd table prints each row when its scene is done, with progress on stderr, one line per scene in a log", "[progress][cli]") {
   TempDir t;
   for (const char* f : {"example2.json", "example2-away-1e-3.json", "example2-towards-1e-3.json"})
     fs::copy_file(src(std::string("cases/paper003/") + f), t.path / f);

@@ -51,7 +51,7 @@ TEST_CASE("eccd-check: VALID (exit 0) on genuine certificates, 2D, 3D and contin
   }
 }
 
-TEST_CASE("eccd-check: REJECTED (exit 1) names the claim; every shipped forgery of eccd-certificate/2 is rejected", "[eccd-check][certificate][forgery]") {
+TEST_CASE("eccd-check: REJECTED (exit 1) names the claim, and every shipped forgery of eccd-certificate/2 is rejected", "[eccd-check][certificate][forgery]") {
   const json manifest = json::parse(read_file_bytes(data + "forgeries.json"));
   for (const auto& f : manifest["forgeries"]) {
     const std::string scene = src + "/cases/" + f["scene"].get<std::string>(), cert = data + f["file"].get<std::string>();
