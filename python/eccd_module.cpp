@@ -306,15 +306,10 @@ eccd::SolveOptions solve_options(const std::string& arith, const std::string& gu
 }
 
 // The object `eccd solve --json` prints ("format", "version" the package's).
-// The run's face ("guard") is written from the options where the writer has no such key.
-nlohmann::json solution_dict_json(const eccd::Solution& s, const py::handle& self) {
+nlohmann::json solution_dict_json(const eccd::Solution& s) {
   nlohmann::json j = eccd::solution_to_json(s);
   j["format"] = eccd::kSolutionFormat;
   j["version"] = ECCD_VERSION;
-  if (!j.contains("guard") && s.arith.floating() && py::hasattr(self, "__dict__")) {
-    py::dict d = self.attr("__dict__");
-    if (d.contains("_guard")) j["guard"] = d["_guard"].cast<std::string>();
-  }
   return j;
 }
 
@@ -574,6 +569,9 @@ PYBIND11_MODULE(_eccd, m) {
       .def_readonly("dim", &eccd::Solution::dim)
       .def_readonly("basis", &eccd::Solution::basis)
       .def_readonly("method", &eccd::Solution::method)
+      .def_property_readonly("guard", [](const eccd::Solution& s) -> py::object {
+            return s.guard.empty() ? py::object(py::none()) : py::object(py::str(s.guard));
+          }, "floating runs: 'none' (as published) or 'bound' (guarded); None for exact and certified runs")
       .def_property_readonly("status_at_0", [](const eccd::Solution& s) { return status_obj(s.status_at_0); })
       .def_readonly("projection", &eccd::Solution::projection)
       .def_readonly("projection_degree", &eccd::Solution::projection_degree)
@@ -597,7 +595,7 @@ PYBIND11_MODULE(_eccd, m) {
             return out;
           }, "certified runs: (rung, why it gave up) for each lower rung")
       .def("to_dict", [](const py::object& self) {
-            return json_loads(dump_text(solution_dict_json(self.cast<const eccd::Solution&>(), self)));
+            return json_loads(dump_text(solution_dict_json(self.cast<const eccd::Solution&>())));
           }, "the object `eccd solve --json` prints (format eccd-solution/1; \"version\" is the package's), JSON-serialisable")
       .def(py::pickle(
           [](const py::object& self) {
@@ -946,9 +944,7 @@ PYBIND11_MODULE(_eccd, m) {
           eccd::ScopedDeadline deadline(limit);  // the command line's --time-limit (kernel/budget.hpp)
           s = eccd::solve(scene, o);
         }
-        py::object r = py::cast(std::move(s));
-        if (o.arith.floating()) r.attr("_guard") = eccd::to_string(o.guard);
-        return r;
+        return py::cast(std::move(s));
       }, py::arg("scene"), py::arg("arith") = "exact", py::arg("guard") = "bound", py::arg("basis") = "bernstein",
       py::arg("variant") = 0, py::arg("method") = "bezier", py::arg("first_contact") = false, py::arg("input") = "rounded",
       py::arg("time_limit") = 300.0,

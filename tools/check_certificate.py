@@ -736,6 +736,8 @@ def check(scene_doc, cert, label):
         reject("certificate format", "answer: unknown keys")
 
     def inst(j, place, want):
+        if not isinstance(j, dict) or set(j) - {"approx", "lo", "hi"}:
+            reject("certificate format", f"{place}: an instant has the keys approx, lo, hi only")
         lo, hi = rational(at(j, "lo", place), place + ".lo", max_bits), rational(at(j, "hi", place), place + ".hi", max_bits)
         if (lo, hi) != want:
             reject("answer", f"{place}: the instant differs from the checked timeline's")

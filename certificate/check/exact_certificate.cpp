@@ -696,6 +696,10 @@ struct Checker {
         reject("certificate format", "answer." + it.key() + ": not a key of the answer");
     const std::size_t chars = approx_chars;
     auto inst = [&](const json& j, const std::string& place, const std::pair<mpq_class, mpq_class>& want) {
+      if (!j.is_object()) reject("certificate format", place + ": expected an instant {approx, lo, hi}");
+      for (auto it = j.begin(); it != j.end(); ++it)  // the answer is read back as an answer: nothing else may ride along
+        if (it.key() != "approx" && it.key() != "lo" && it.key() != "hi")
+          reject("certificate format", place + "." + it.key() + ": not a key of an instant (approx, lo, hi)");
       const mpq_class lo = rational(at(j, "lo", place), place + ".lo", max_bits), hi = rational(at(j, "hi", place), place + ".hi", max_bits);
       if (lo != want.first || hi != want.second)
         reject("answer", place + ": the instant " + bracket_text(lo, hi) + " differs from the checked timeline's " + bracket_text(want.first, want.second));

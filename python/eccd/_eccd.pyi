@@ -96,6 +96,7 @@ class Solution(_AnswerProperties):
     dim: int
     basis: str
     method: str
+    guard: Optional[str]
     projection: str
     projection_degree: int
     undecided_reasons: List[str]
