@@ -115,4 +115,9 @@ void add_plan_options(CLI::App* sub, GeneratePlan& plan);
 // set, otherwise the source tree's folder compiled in at build time.
 std::string plots_dir();
 
+// Draws the scene file SCENE into the PNG file PNG as `eccd plot SCENE --out PNG` does (defaults, exact
+// arithmetic), printing nothing on stdout; returns plot's exit status (0 written, else nothing written:
+// the reason is on stderr). app/plot.cpp; `eccd report` draws the failure map's scene with it.
+int draw_scene_picture(const std::string& scene, const std::string& png);
+
 }  // namespace eccd

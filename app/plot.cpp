@@ -92,7 +92,8 @@ constexpr int kPath = 241;           // points per centre path
 struct PlotOptions {
   std::string scene, out, arith = "exact", data;
   int instants = 5;
-  CLI::Option* arith_opt = nullptr;
+  CLI::Option* arith_opt = nullptr;  // null: --arith not given (draw_scene_picture)
+  bool announce = true;              // the "wrote ..." line on stdout
 };
 
 // Short decimal for the data file (7 significant digits; the drawing needs no more).
@@ -606,7 +607,7 @@ int run_plot(const PlotOptions& o) {
   }
   bool cyclo = std::holds_alternative<CycloidalMotion>(s.a.motion) || std::holds_alternative<CycloidalMotion>(s.b.motion);
   std::string arith_text = o.arith, arith_note;
-  if (cyclo && o.arith_opt->count() == 0) {
+  if (cyclo && (!o.arith_opt || o.arith_opt->count() == 0)) {
     arith_text = "double";
     arith_note = "cycloidal motion: not rational, so double arithmetic (exact cannot represent it; certified also solves it)";
     warn("plot", src.label + ": " + arith_note);
@@ -616,7 +617,7 @@ int run_plot(const PlotOptions& o) {
   Solution rep;
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
-    if (s.independent && o.arith_opt->count() == 0) {  // exact where it answers (two balls), else double
+    if (s.independent && (!o.arith_opt || o.arith_opt->count() == 0)) {  // exact where it answers (two balls), else double
       try {
         rep = solve(s, opt);
       } catch (const std::invalid_argument& e) {
@@ -709,6 +710,7 @@ int run_plot(const PlotOptions& o) {
     throw OutputError(o.data + ": cannot write the file: " + errno_text(e));
   }
   else fs::remove(tmp_data, ec);
+  if (!o.announce) return 0;
   std::cout << "wrote " << out.string() << ": scene " << s.name << " (" << s.dim << "D), " << answer_words(rep)
             << " [" << opt.arith.name() << (rep.certified ? ", certified" : ", not certified") << "]";
   if (!o.data.empty()) std::cout << "; data " << o.data;
@@ -759,6 +761,14 @@ Command add_plot_command(CLI::App& app) {
 }  // namespace eccd
 
 namespace eccd {
+int draw_scene_picture(const std::string& scene, const std::string& png) {
+  PlotOptions o;
+  o.scene = scene;
+  o.out = png;
+  o.announce = false;
+  return run_plot(o);
+}
+
 std::string plots_dir() {
   if (const char* e = std::getenv("ECCD_PLOTS_DIR")) return e;
   return ECCD_PLOTS_DIR;

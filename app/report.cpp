@@ -580,7 +580,7 @@ void write_scene_files(const fs::path& partial, const fs::path& out, const std::
                                                                                                 : fs::path(t.label).stem().string();
       index[name] = fs::absolute(t.label).lexically_normal().lexically_relative(out_abs).generic_string();
     } else if (t.label.find('/') == std::string::npos && t.label.find("..") == std::string::npos) {
-      own_file(t.label, nlohmann::json::parse(t.text).dump(1));
+      own_file(t.label, nlohmann::ordered_json::parse(t.text).dump(1));  // the scene format's key order, as written
     }
   }
   if (map && !index.contains(map->scene)) own_file(map->scene, map->doc.dump(1));
@@ -588,6 +588,81 @@ void write_scene_files(const fs::path& partial, const fs::path& out, const std::
   stamp_format(j, "eccd-report-scenes/1");
   j["scenes"] = index;
   write_file(dir / "index.json", j.dump(1) + "\n");
+}
+
+// A part's scenes/index.json (eccd-report-scenes/1), or an empty object when the part has none (a part
+// written before shards wrote their scenes: the merged report then links fewer scenes, nothing fails).
+nlohmann::ordered_json read_scene_index(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return nlohmann::ordered_json::object();
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(text.str(), nullptr, false);
+  if (!j.is_object() || j.value("format", "") != "eccd-report-scenes/1" || !j.contains("scenes") || !j["scenes"].is_object())
+    throw std::invalid_argument(file.string() + ": not an eccd-report-scenes/1 index (expected an object with \"format\" and \"scenes\")");
+  for (const auto& [name, rel] : j["scenes"].items())
+    if (!rel.is_string()) throw std::invalid_argument(file.string() + ": /scenes/" + name + ": expected a file name");
+  return j["scenes"];
+}
+
+// --merge: the parts' scene files into the merged report's scenes/ and one index. `parts`: each part's
+// folder and its index (read_scene_index, read while the parts are checked, before anything is written).
+// A part's own file (scenes/NAME.json) is copied; a link to a file given by --cases or --scenes is made
+// relative to the merged report `out` (the part's link was relative to the part).
+void merge_scene_files(const fs::path& partial, const fs::path& out, const std::vector<std::pair<fs::path, nlohmann::ordered_json>>& parts) {
+  const fs::path dir = partial / "scenes";
+  fs::create_directories(dir);
+  const fs::path out_abs = fs::absolute(out).lexically_normal();
+  nlohmann::ordered_json index = nlohmann::ordered_json::object();
+  for (const auto& [d, scenes] : parts) {
+    for (const auto& [name, rel_json] : scenes.items()) {
+      if (index.contains(name)) continue;  // the map's scene is in every part
+      const std::string rel = rel_json.get<std::string>();
+      const fs::path own = fs::path(rel).lexically_normal();
+      std::error_code ec;
+      if (own.parent_path() == "scenes" && own.extension() == ".json") {
+        if (!fs::is_regular_file(d / own, ec)) {
+          warn("report", (d / own).string() + ": missing (listed in the part's scenes/index.json): the merged report does not link scene " + name);
+          continue;
+        }
+        fs::copy_file(d / own, partial / own, fs::copy_options::overwrite_existing);
+        index[name] = own.generic_string();
+      } else {
+        index[name] = fs::absolute(d / rel).lexically_normal().lexically_relative(out_abs).generic_string();
+      }
+    }
+  }
+  nlohmann::ordered_json j;
+  stamp_format(j, "eccd-report-scenes/1");
+  j["scenes"] = index;
+  write_file(dir / "index.json", j.dump(1) + "\n");
+}
+
+// The failure map's scene as a picture (as `eccd plot` draws it: the two ellipses along the motion and
+// Δ(t)): scenes/NAME.png, listed in scenes/index.json under "pictures" so that report.html links each map
+// cell to it (a cell is that scene with two inputs moved by a few ulps). One picture per report, about a
+// second. When it cannot be drawn the report says so on stderr and the cells link to the scene file.
+void write_map_picture(const fs::path& partial, const std::string& scene) {
+  const fs::path file = partial / "scenes" / "index.json";
+  nlohmann::ordered_json j;
+  j["scenes"] = read_scene_index(file);
+  if (scene.empty() || scene.find('/') != std::string::npos || scene.find("..") != std::string::npos || !j["scenes"].contains(scene)) return;
+  j = nlohmann::ordered_json::parse(std::ifstream(file, std::ios::binary));  // as written, its keys in order
+  const fs::path png = partial / "scenes" / (scene + ".png");
+  std::string why;
+  try {
+    if (int rc = draw_scene_picture((partial / j["scenes"][scene].get<std::string>()).string(), png.string()); rc != 0)
+      why = "eccd plot exit status " + std::to_string(rc);
+  } catch (const std::exception& e) {
+    why = e.what();
+  }
+  if (!why.empty()) {
+    warn("report", "the failure map's scene " + scene + " could not be drawn (" + why + "): its cells link to the scene file");
+    return;
+  }
+  j["pictures"] = {{scene, "scenes/" + scene + ".png"}};
+  write_file(file, j.dump(1) + "\n");
 }
 
 // Runs report_figures.py on DIR. Its stderr is passed on and kept: on failure
@@ -1135,10 +1210,11 @@ int run_report(const ReportArgs& a) {
     meta["failure_map"] = nullptr;
   }
   write_file(partial / "meta.json", meta.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
-  if (shard_n == 1) write_scene_files(partial, out, tasks, map ? &*map : nullptr);
+  write_scene_files(partial, out, mine, map ? &*map : nullptr);  // a shard: its own scenes, joined by --merge
   if (g_interrupted) interrupted();
   if (shard_n == 1 && !a.no_figures) {
     try {
+      if (map) write_map_picture(partial, map->scene);
       run_figures(partial);
     } catch (const std::exception& e) {
       if (g_interrupted) interrupted();  // Ctrl-C reaches the script too
@@ -1228,6 +1304,7 @@ int run_merge(const ReportArgs& a) {
   std::vector<std::string> rows, cells;
   nlohmann::json meta;
   std::vector<std::string> seen;  // part folder per shard index
+  std::vector<std::pair<fs::path, nlohmann::ordered_json>> scene_indexes;  // each part's scenes/index.json
   double wall = 0;
   std::string header = results_csv_header();
   const std::string map_header = "pipeline,ix,iy,dx_ulps,dy_ulps,answer,exact";
@@ -1274,6 +1351,7 @@ int run_merge(const ReportArgs& a) {
       throw std::invalid_argument(rp.string() + ": " + std::to_string(r.size()) + " row(s), but " + mp.string() + " says " +
                                   m["result_rows"].dump() + " (truncated?)");
     rows.insert(rows.end(), r.begin(), r.end());
+    scene_indexes.emplace_back(d, read_scene_index(d / "scenes" / "index.json"));
     const fs::path fp = d / "failure_map.csv";
     std::string ftext = read_part_file(fp, !m["failure_map"].is_null());
     if (!ftext.empty() || !m["failure_map"].is_null()) {
@@ -1327,8 +1405,11 @@ int run_merge(const ReportArgs& a) {
     for (const auto& [label, n] : fcl_skipped(meta["pipelines"].get<std::vector<std::string>>(), rows)) meta["fcl"]["skipped"][label] = n;
   }
   write_file(partial / "meta.json", meta.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  merge_scene_files(partial, out, scene_indexes);
   if (!a.no_figures) {
     try {
+      if (meta["failure_map"].is_object() && meta["failure_map"]["scene"].is_string())
+        write_map_picture(partial, meta["failure_map"]["scene"].get<std::string>());
       run_figures(partial);
     } catch (const std::exception&) {
       if (g_interrupted) interrupted();

@@ -2484,7 +2484,7 @@ def claim_near_miss(data, dim, basis, d_max):
 
 def section_claims(data):
     out = [f"## {T_CLAIMS}", "",
-           "Each claim of the papers (docs/papers), how this workbench reproduces it and the verdict: *confirmed*, "
+           "Each claim of the papers (docs/references.md), how this workbench reproduces it and the verdict: *confirmed*, "
            "*refuted*, or *holds only for prepared input* (true when the scene's coefficients are prepared exactly, "
            "false for the scene's numbers held as doubles, as a user's program holds them). Verdicts marked (run) are "
            "computed from this run's results.csv; the others cite where they are measured.", ""]

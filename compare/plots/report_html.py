@@ -4,9 +4,11 @@
 Usage:  python3 compare/plots/report_html.py DIR
 
 Reads   DIR/report.md          the report (written by report_figures.py): rendered as it is, the verdict first
-        DIR/results.csv        one row per (scene, pipeline): the table of scenes and the chart you can hover
+        DIR/results.csv        one row per (scene, pipeline): the table of scenes and the charts you can hover
+                               (time per run; near-miss runs per separation)
         DIR/failure_map.csv    optional: the failure map as a grid of cells you can hover
-        DIR/scenes/index.json  optional (eccd report writes it): each scene's file, relative to DIR
+        DIR/scenes/index.json  optional (eccd report writes it): each scene's file, relative to DIR, and under
+                               "pictures" the failure map's scene drawn as `eccd plot` draws it (scenes/NAME.png)
         DIR/*.png              the figures report.md shows, inlined as data: URIs
 Writes  DIR/report.html        (atomically: a temporary file renamed into place)
 
@@ -147,15 +149,20 @@ def read_rows(path):
     return rows
 
 
-def scene_links(out_dir):
+def scene_index(out_dir):
+    """scenes/index.json as (scene name -> its file, scene name -> its picture), both relative to out_dir; a
+    picture is listed only when its file is there."""
     path = os.path.join(out_dir, "scenes", "index.json")
     if not os.path.exists(path):
-        return {}
+        return {}, {}
     try:
         with open(path, encoding="utf-8") as fh:
             j = json.load(fh)
-        return {k: v for k, v in j["scenes"].items() if isinstance(v, str)}
-    except (ValueError, KeyError, TypeError) as e:
+        files = {k: v for k, v in j["scenes"].items() if isinstance(v, str)}
+        pictures = {k: v for k, v in (j.get("pictures") or {}).items()
+                    if isinstance(v, str) and os.path.isfile(os.path.join(out_dir, v))}
+        return files, pictures
+    except (ValueError, KeyError, TypeError, AttributeError) as e:
         raise InputError(f"{path}: not an eccd-report-scenes/1 index: {e}")
 
 
@@ -253,13 +260,70 @@ def time_chart(rows, links):
             "scene file.</figcaption></figure>")
 
 
+def near_miss_chart(rows, links):
+    """Inline SVG per dimension: each near-miss run of the floating pipelines as published (guard none; rounded
+    input when the run has it), one row per pipeline, one column per separation d (largest left), coloured by
+    outcome (5 series); a point names its scene, pipeline, outcome and d, and links to the scene file. The
+    per-scene view of misclassification_vs_d.png, whose points are counts."""
+    flo = [r for r in rows if r["family"] == "near-miss" and r.get("d") and r["arith"] in ("double", "mpfr")
+           and r["outcome"] in OUTCOME_COLOURS]
+    if any(r.get("guard") == "none" for r in flo):
+        flo = [r for r in flo if r.get("guard") == "none"]
+    mode = "rounded" if any(r.get("input") == "rounded" for r in flo) else "prepared"
+    flo = [r for r in flo if r.get("input", mode) in (mode, "")]
+    if not flo:
+        return ""
+    panels = []
+    for dim in sorted({r["dim"] for r in flo}):
+        dp = [r for r in flo if r["dim"] == dim]
+        pipes = list(dict.fromkeys(r["pipeline"] for r in dp))
+        try:
+            ds = sorted({r["d"] for r in dp}, key=lambda d: -float(d))
+        except ValueError:
+            ds = sorted({r["d"] for r in dp})
+        L, R, T, B, rh = 200, 12, 26, 40, 18
+        W = max(420, L + R + 46 * len(ds))
+        H = T + B + rh * len(pipes)
+        cw = (W - L - R) / len(ds)
+        parts = [f'<svg class="chart" viewBox="0 0 {W} {H}" width="{W}" height="{H}" role="img" '
+                 f'aria-label="{dim}D: near-miss runs as published, per pipeline and separation">',
+                 f'<text x="{W / 2}" y="16" text-anchor="middle" class="ttl">{dim}D: near-miss runs as published '
+                 f'(input {mode})</text>',
+                 f'<rect x="{L}" y="{T}" width="{W - L - R}" height="{H - T - B}" class="frame"/>']
+        for k, p in enumerate(pipes):
+            y = T + rh * (k + 0.5)
+            parts.append(f'<line x1="{L}" x2="{W - R}" y1="{y:.1f}" y2="{y:.1f}" class="grid"/>'
+                         f'<text x="{L - 6}" y="{y + 4:.1f}" text-anchor="end">{html.escape(p)}</text>')
+        for k, d in enumerate(ds):
+            parts.append(f'<text x="{L + cw * (k + 0.5):.1f}" y="{H - B + 16}" text-anchor="middle">{html.escape(d)}</text>')
+        parts.append(f'<text x="{(L + W - R) / 2}" y="{H - 6}" text-anchor="middle">separation d at the closest '
+                     f'approach</text>')
+        for r in sorted(dp, key=lambda r: (r["outcome"] != "correct", r["scene"], r["pipeline"])):  # wrong on top
+            jitter = ((zlib.crc32(r["scene"].encode()) % 1000) / 1000.0 - 0.5) * 0.7  # a scene: one x per column
+            x = L + cw * (ds.index(r["d"]) + 0.5 + jitter)
+            y = T + rh * (pipes.index(r["pipeline"]) + 0.5)
+            tip = f'{r["scene"]} · {r["pipeline"]} · {r["outcome"].replace("_", " ")} · d = {r["d"]}'
+            dot = (f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3.2" fill="{OUTCOME_COLOURS[r["outcome"]]}" '
+                   f'data-scene="{html.escape(r["scene"])}"><title>{html.escape(tip)}</title></circle>')
+            if r["scene"] in links:
+                dot = f'<a href="{html.escape(links[r["scene"]])}">{dot}</a>'
+            parts.append(dot)
+        parts.append("</svg>")
+        panels.append("".join(parts))
+    legend = " ".join(f'<span class="key"><span class="sw" style="background:{c}"></span>{o.replace("_", " ")}</span>'
+                      for o, c in OUTCOME_COLOURS.items())
+    return ('<figure class="hover"><div class="panels">' + "".join(panels) + "</div><figcaption>" + legend +
+            "<br>Each point is one near-miss run of a floating pipeline as published; hover a point for its scene, "
+            "pipeline, outcome and d; a click opens the scene file.</figcaption></figure>")
+
+
 FM_COLOURS = {"separate": "#9ecae1", "touching": "#fdd835", "colliding": "#e53935", "undecided": "#9e9e9e",
               "error": "#212121"}
 
 
-def failure_map_svg(out_dir, meta, links):
+def failure_map_svg(out_dir, meta, links, pictures):
     """Inline SVG: the failure map's cells per pipeline; a cell names its perturbation and answers, and links to
-    the map's scene file."""
+    the picture of the map's scene (scenes/NAME.png; its scene file when there is no picture)."""
     path = os.path.join(out_dir, "failure_map.csv")
     if not os.path.exists(path):
         return ""
@@ -269,7 +333,7 @@ def failure_map_svg(out_dir, meta, links):
         return ""
     fm = (meta or {}).get("failure_map") or {}
     scene = fm.get("scene", "")
-    href = links.get(scene)
+    href = pictures.get(scene) or links.get(scene)
     nx = max(int(c["ix"]) for c in cells) + 1
     ny = max(int(c["iy"]) for c in cells) + 1
     size = max(6, min(18, 220 // max(nx, ny)))
@@ -285,7 +349,8 @@ def failure_map_svg(out_dir, meta, links):
             x, y = 1 + ix * size, 20 + (ny - 1 - iy) * size
             differs = c["answer"] != c["exact"]
             tip = (f'{p}: x {int(float(c["dx_ulps"])):+d} ulps, y {int(float(c["dy_ulps"])):+d} ulps: {c["answer"]}'
-                   f' (exact: {c["exact"]})' + (" — differs" if differs else "") + (f"; scene {scene}" if scene else ""))
+                   f' (exact: {c["exact"]})' + (" — differs" if differs else "") + (f"; scene {scene}" if scene else "")
+                   + ("; a click opens its picture" if scene in pictures else ""))
             rect = (f'<rect x="{x}" y="{y}" width="{size - 1}" height="{size - 1}" '
                     f'fill="{FM_COLOURS.get(c["answer"], "#ffffff")}"' + (' class="differs"' if differs else "") +
                     f'><title>{html.escape(tip)}</title></rect>')
@@ -297,7 +362,9 @@ def failure_map_svg(out_dir, meta, links):
                       for a, c in FM_COLOURS.items())
     return ('<figure class="hover"><div class="panels">' + "".join(out) + "</div><figcaption>" + legend +
             " (outlined: differs from exact). Hover a cell for its perturbation and answers"
-            + ("; a click opens the map's scene file" if href else "") + ".</figcaption></figure>")
+            + ("; a click opens the picture of the map's scene (each cell is that scene with its two inputs moved by "
+               "the cell's ulps)" if scene in pictures else "; a click opens the map's scene file" if href else "")
+            + ".</figcaption></figure>")
 
 
 def data_uri(out_dir, src):
@@ -446,7 +513,7 @@ def build_page(out_dir):
     if os.path.exists(os.path.join(out_dir, "meta.json")):
         with open(os.path.join(out_dir, "meta.json"), encoding="utf-8") as fh:
             meta = json.load(fh)
-    links = scene_links(out_dir)
+    links, pictures = scene_index(out_dir)
     blocks = verdict_first(markdown_blocks(md))
     title = next((b[2] for b in blocks if b[0] == "h" and b[1] == 1), "Robustness report")
     body, toc, section_open = [], [], False
@@ -465,7 +532,9 @@ def build_page(out_dir):
                 toc.append(f'<a href="#{sid}">{inline(text)}</a>')
             body.append(f'<h{level} id="{sid}">{inline(text)}</h{level}>')
             if level == 2 and sid == "failure-map":
-                body.append(failure_map_svg(out_dir, meta, links))
+                body.append(failure_map_svg(out_dir, meta, links, pictures))
+            if level == 2 and sid == "near-miss-scenes":
+                body.append(near_miss_chart(rows, links))
             if level == 2 and sid == "time":
                 body.append(time_chart(rows, links))
         elif kind == "p":

@@ -12,10 +12,16 @@ Runs a small `eccd report` into a temporary folder, then checks its report.html:
     that column in descending order (the first table by a number column, the scenes table, written in
     ascending order of names, by its names);
   - each scene row links to a scene file that exists (relative to the report folder);
-  - hover: the time chart's points and the failure map's cells carry a <title> naming their scene.
+  - hover: every point of the time chart and of the near-miss chart carries a <title> that begins with its
+    scene's name (a scene of results.csv); the failure map's cells carry a title naming the map's scene;
+  - a failure-map cell links to the picture of the map's scene: a PNG file under the report folder;
+  - --merge: the same report run as two shards and joined writes report.html too, whose scene links and
+    failure-map link resolve inside the merged folder, and chromium loads it with no script error.
 Exit 0 pass, 1 fail (each failure printed), 77 skipped (chromium missing: CTest SKIP_RETURN_CODE).
 """
+import csv
 import html
+import json
 import os
 import re
 import shutil
@@ -57,6 +63,32 @@ def md_verdict_text(md):
     t = sec.group(1) if sec else ""
     t = re.sub(r"\[([^\]]+)\]\([^)]*\)", r"\1", t)  # links: their text only (targets are not shown)
     return t
+
+
+def check_hover(page, scene_names, where):
+    """Every point of the hoverable charts names a scene of results.csv, first thing in its title."""
+    dots = re.findall(r'<circle[^>]*data-scene="([^"]+)"[^>]*><title>([^<]*)</title>', page)
+    bare = len(re.findall(r"<circle", page)) - len(dots)
+    bad = [(s, t) for s, t in dots if html.unescape(s) not in scene_names or not html.unescape(t).startswith(html.unescape(s) + " ")]
+    check(dots and not bad and bare == 0,
+          f"{where}: every chart point carries a title beginning with its scene's name ({len(dots)} points)",
+          f"{bare} without a title; first bad: {bad[:1]}")
+
+
+def check_map_links(page, out, where):
+    """A failure-map cell links to the picture of the map's scene: a PNG under the report folder."""
+    fmap = "".join(re.findall(r'<svg class="fmap".*?</svg>', page, flags=re.S))
+    cells = len(re.findall(r"<rect", fmap))
+    hrefs = set(re.findall(r'<a href="([^"]+)"><rect', fmap))
+    check(cells > 0 and len(re.findall(r'<a href="[^"]+"><rect', fmap)) == cells,
+          f"{where}: each failure-map cell is a link ({cells} cells)")
+    for h in sorted(hrefs):
+        path = os.path.join(out, html.unescape(h))
+        inside = os.path.realpath(path).startswith(os.path.realpath(out) + os.sep)
+        is_png = os.path.isfile(path) and open(path, "rb").read(8) == b"\x89PNG\r\n\x1a\n"
+        check(h.endswith(".png") and inside and is_png,
+              f"{where}: a failure-map cell links to the map scene's picture, a PNG in the report folder ({h})")
+    check(bool(hrefs), f"{where}: the failure map links somewhere")
 
 
 def main(argv):
@@ -139,12 +171,58 @@ def main(argv):
         check(rows > 0 and len(hrefs) == rows, f"each scene row links to its scene file ({len(hrefs)} links, {rows} rows)")
         missing = [h for h in hrefs if not os.path.exists(os.path.join(out, html.unescape(h)))]
         check(not missing, "every scene link resolves to a file" + (f" (missing: {missing[:3]})" if missing else ""))
+        # the scene files the report writes keep the scene format's key order (docs/scene-format.md), not sorted keys
+        order = ["format", "name", "dim", "parameters", "a", "b", "note", "answer"]
+        own = [h for h in hrefs if html.unescape(h).startswith("scenes/")]
+        unordered = []
+        for h in own:
+            keys = [k for k in json.load(open(os.path.join(out, html.unescape(h)), encoding="utf-8")) if k in order]
+            if keys != sorted(keys, key=order.index) or keys[:1] != ["format"]:
+                unordered.append((h, keys))
+        check(own and not unordered, f"the report's own scene files keep the scene format's key order ({len(own)} files)",
+              f"first: {unordered[:1]}")
 
         # figures you can hover
-        check(re.search(r"<circle[^>]*data-scene=\"[^\"]+\"[^>]*><title>[^<]+</title>", page) is not None,
-              "the time chart's points carry a title naming their scene")
+        with open(os.path.join(out, "results.csv"), newline="", encoding="utf-8") as fh:
+            scene_names = {r["scene"] for r in csv.DictReader(fh)}
+        check_hover(page, scene_names, "the report")
+        for label in ("time per query", "near-miss runs"):
+            fig = re.search(r'<svg class="chart"[^>]*aria-label="[^"]*' + label + r'.*?</svg>', page, flags=re.S)
+            n = len(re.findall(r"<circle", fig.group(0))) if fig else 0
+            check(n > 0, f"the chart of {label} has points you can hover ({n})")
         check(re.search(r"<rect[^>]*><title>[^<]*scene [^<]+</title>", page) is not None,
               "the failure map's cells carry a title naming the map's scene")
+        check_map_links(page, out, "the report")
+
+        # --merge writes report.html too (the same small run as two shards, joined)
+        parts = []
+        for i in range(2):
+            part = os.path.join(work, f"part{i}")
+            r = subprocess.run(cmd[:3] + [part, "--shard", f"{i}/2"] + cmd[4:], capture_output=True, text=True, timeout=900)
+            check(r.returncode == 0, f"eccd report --shard {i}/2 exits 0", f"exit {r.returncode}; stderr: {r.stderr[-400:]}")
+            parts.append(part)
+        merged = os.path.join(work, "merged")
+        r = subprocess.run([exe, "report", "--out-dir", merged, "--merge"] + parts + ["--quiet"],
+                           capture_output=True, text=True, timeout=900)
+        check(r.returncode == 0, "eccd report --merge exits 0", f"exit {r.returncode}; stderr: {r.stderr[-400:]}")
+        mpath = os.path.join(merged, "report.html")
+        check(os.path.exists(mpath), "--merge writes report.html beside report.md")
+        if os.path.exists(mpath):
+            mpage = open(mpath, encoding="utf-8").read()
+            scenes = re.search(r'<table class="data" id="scenes-table".*?</table>', mpage, flags=re.S)
+            hrefs = re.findall(r'<a href="([^"]+)"', scenes.group(0)) if scenes else []
+            rows = len(re.findall(r"<tr>", scenes.group(0))) - 1 if scenes else 0
+            missing = [h for h in hrefs if not os.path.isfile(os.path.join(merged, html.unescape(h)))]
+            check(rows > 0 and len(hrefs) == rows and not missing,
+                  f"merged: each scene row links to a file that exists ({len(hrefs)} links, {rows} rows)",
+                  f"missing: {missing[:3]}")
+            check(rows == len(names), f"merged: as many scenes as the unsharded run ({rows} and {len(names)})")
+            check_hover(mpage, scene_names, "merged")
+            check_map_links(mpage, merged, "merged")
+            rc, dom, log = dump_dom(browser, "file://" + mpath, work)
+            body = re.search(r"<body([^>]*)>", dom)
+            check(rc == 0 and body is not None and 'data-js-errors="0"' in body.group(1) and 'data-ready="1"' in body.group(1),
+                  "merged: chromium loads report.html with no script error")
         return 1 if FAILS else 0
     finally:
         shutil.rmtree(work, ignore_errors=True)
