@@ -1,0 +1,479 @@
+// The per-pose mode (see api/pose_check.hpp for the statement).
+#include "api/pose_check.hpp"
+
+#include "api/static_test.hpp"
+#include "api/sweep_and_prune.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/keyframe_motion.hpp"
+#include "kernel/plane_frame_check.hpp"
+#include "kernel/quartic_status.hpp"
+#include "kernel/separating_plane.hpp"
+#include "number/interval.hpp"
+#include "number/rational_traits.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <unordered_map>
+
+namespace eccd {
+
+namespace {
+
+template <class T>
+T enter(const Rational& r) {
+  if constexpr (std::is_same_v<T, Interval>) return interval_of(r);
+  else return r;
+}
+
+// The world quadric A and its dual C of one body at one key pose (statement: M', A, C).
+template <class T, int H>
+struct BodyAtPose {
+  Matrix<T, H> A, C;
+};
+
+// W·R (d x d) and W for the orientation q (3D [w, x, y, z], 2D [w, z]): kernel/keyframe_motion.hpp's keyframe_rotation at one τ.
+template <class T, int H>
+BodyAtPose<T, H> body_at_pose(const Matrix<T, H>& Q, const Matrix<T, H>& adjQ, const KeyPose& p) {
+  constexpr int d = H - 1;
+  const T zero = enter<T>(Rational(0));
+  std::array<std::array<T, d>, d> wr;
+  T W;
+  if constexpr (d == 3) {
+    const T w = enter<T>(p.orientation[0]), x = enter<T>(p.orientation[1]), y = enter<T>(p.orientation[2]),
+            z = enter<T>(p.orientation[3]);
+    const T ww = w * w, xx = x * x, yy = y * y, zz = z * z, two = enter<T>(Rational(2));
+    wr[0] = {ww + xx - yy - zz, two * (x * y - w * z), two * (x * z + w * y)};
+    wr[1] = {two * (x * y + w * z), ww - xx + yy - zz, two * (y * z - w * x)};
+    wr[2] = {two * (x * z - w * y), two * (y * z + w * x), ww - xx - yy + zz};
+    W = ww + xx + yy + zz;
+  } else {
+    const T w = enter<T>(p.orientation[0]), z = enter<T>(p.orientation[1]), two = enter<T>(Rational(2));
+    wr[0] = {w * w - z * z, zero - two * w * z};
+    wr[1] = {two * w * z, w * w - z * z};
+    W = w * w + z * z;
+  }
+  Matrix<T, H> m;  // M' = [[W R D, W c], [0, W]]
+  for (int i = 0; i < d; ++i) {
+    for (int j = 0; j < d; ++j) {
+      if (!p.deformation) { m[i][j] = wr[i][j]; continue; }
+      T s = zero;
+      for (int k = 0; k < d; ++k) s = s + wr[i][k] * enter<T>((*p.deformation)[k][j]);
+      m[i][j] = s;
+    }
+    m[i][d] = W * enter<T>(p.position[i]);
+    m[d][i] = zero;
+  }
+  m[d][d] = W;
+  // adj(M') = [[W adj(L), -adj(L) t], [0, det L]] for M' = [[L, t], [0, W]].
+  std::array<std::array<T, d>, d> adjL;
+  T detL;
+  if constexpr (d == 3) {
+    auto c = [&](int r0, int r1, int c0, int c1) -> T { return m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]; };
+    adjL[0] = {c(1, 2, 1, 2), zero - c(0, 2, 1, 2), c(0, 1, 1, 2)};
+    adjL[1] = {zero - c(1, 2, 0, 2), c(0, 2, 0, 2), zero - c(0, 1, 0, 2)};
+    adjL[2] = {c(1, 2, 0, 1), zero - c(0, 2, 0, 1), c(0, 1, 0, 1)};
+    detL = m[0][0] * adjL[0][0] + m[0][1] * adjL[1][0] + m[0][2] * adjL[2][0];
+  } else {
+    adjL[0] = {m[1][1], zero - m[0][1]};
+    adjL[1] = {zero - m[1][0], m[0][0]};
+    detL = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+  }
+  Matrix<T, H> n;
+  for (int i = 0; i < d; ++i) {
+    T s = zero;
+    for (int j = 0; j < d; ++j) {
+      n[i][j] = W * adjL[i][j];
+      s = s - adjL[i][j] * m[j][d];
+    }
+    n[i][d] = s;
+    n[d][i] = zero;
+  }
+  n[d][d] = detL;
+  auto product = [&](const Matrix<T, H>& x, const Matrix<T, H>& y, bool transpose_x, bool transpose_y) {
+    Matrix<T, H> r;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) {
+        T s = zero;
+        for (int k = 0; k < H; ++k) s = s + (transpose_x ? x[k][i] : x[i][k]) * (transpose_y ? y[j][k] : y[k][j]);
+        r[i][j] = s;
+      }
+    return r;
+  };
+  BodyAtPose<T, H> out;
+  out.A = product(product(n, Q, true, false), n, false, false);     // adj(M')ᵀ Q adj(M')
+  out.C = product(product(m, adjQ, false, false), m, false, true);  // M' adj(Q) M'ᵀ
+  return out;
+}
+
+// Does p separate a (negative side) and b (positive side)? Statement, stage 2.
+template <class T, int H>
+bool plane_separates(const std::array<double, H>& p, const Matrix<T, H>& ca, const Matrix<T, H>& cb) {
+  const T zero = enter<T>(Rational(0));
+  std::array<T, H> pt;
+  for (int i = 0; i < H; ++i) pt[i] = enter<T>(Rational(p[i]));
+  auto test = [&](const Matrix<T, H>& c, Sign side) {
+    std::array<T, H> v;
+    for (int i = 0; i < H; ++i) {
+      T s = zero;
+      for (int j = 0; j < H; ++j) s = s + c[i][j] * pt[j];
+      v[i] = s;
+    }
+    if (sign(v[H - 1]) != side) return false;
+    T q = zero;
+    for (int i = 0; i < H; ++i) q = q + pt[i] * v[i];
+    return sign(q) == Sign::positive;
+  };
+  return test(ca, Sign::negative) && test(cb, Sign::positive);
+}
+
+template <class T, int H>
+Status generic_status(const Matrix<T, H>& a, const Matrix<T, H>& b) {
+  const T zero = enter<T>(Rational(0));
+  std::vector<T> g = characteristic_coefficients_in<T, H>(a, b, zero);
+  if constexpr (H == 3) return cubic_contact_status(g[3], g[2], g[1], g[0]);
+  else return quartic_contact_status(g);
+}
+
+template <int H>
+Matrix<double, H> midpoints(const Matrix<Interval, H>& m) {
+  Matrix<double, H> r;
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) r[i][j] = m[i][j].mid();
+  return r;
+}
+template <int H>
+Matrix<double, H> midpoints(const Matrix<Rational, H>& m) {
+  Matrix<double, H> r;
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) r[i][j] = m[i][j].get_d();
+  return r;
+}
+
+// 000 section 3 in double; the plane as the array (n, o), or nothing.
+template <int H>
+std::optional<std::array<double, H>> build_plane(const Matrix<double, H>& a, const Matrix<double, H>& b) {
+  PlaneConstruction<double, H> pc = separating_plane<double, H>(a, b);
+  if (!pc.ok) return std::nullopt;
+  std::array<double, H> p;
+  for (int i = 0; i < H; ++i) {
+    p[i] = pc.p(i);
+    if (!std::isfinite(p[i])) return std::nullopt;
+  }
+  return p;
+}
+
+// Runs f(i) for i in [0, n) on up to `threads` threads (inline for one thread or little work).
+template <class F>
+void parallel_for(std::size_t n, int threads, std::size_t grain, F&& f) {
+  if (threads <= 1 || n < 2 * grain) {
+    for (std::size_t i = 0; i < n; ++i) f(i);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  std::mutex m;
+  auto work = [&] {
+    for (std::size_t start = next.fetch_add(grain); start < n && !failed; start = next.fetch_add(grain)) {
+      try {
+        for (std::size_t i = start; i < std::min(n, start + grain); ++i) f(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(m);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+}
+
+// Semi-axes of a shape XᵀQX <= 0 that is diagonal (axis-aligned, centred): Q = s·diag(1/a², .., -1), s > 0.
+template <int H>
+std::optional<std::array<double, H - 1>> diagonal_axes(const std::vector<std::vector<Rational>>& Q) {
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j)
+      if (i != j && sgn(Q[i][j]) != 0) return std::nullopt;
+  if (sgn(Q[H - 1][H - 1]) >= 0) return std::nullopt;
+  std::array<double, H - 1> ax;
+  for (int i = 0; i < H - 1; ++i) {
+    if (sgn(Q[i][i]) <= 0) return std::nullopt;
+    ax[i] = std::sqrt(Rational(-Q[H - 1][H - 1] / Q[i][i]).get_d());
+  }
+  return ax;
+}
+
+struct PairOutcome {
+  Status status = Status::uncertain;
+  bool by_plane = false, checked_plane = false, built = false, build_failed = false;
+  std::optional<std::array<double, 4>> plane;  // the plane kept for the next pose (H entries used)
+};
+
+template <int H>
+PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
+  constexpr int d = H - 1;
+  using SteadyClock = std::chrono::steady_clock;
+  const auto t_start = SteadyClock::now();
+  const Arithmetic::Kind kind = opt.solve.arith.kind;
+  PosesResult res;
+  res.animation = anim.name;
+  res.file = anim.path;
+  res.arithmetic = opt.solve.arith.name();
+  res.dim = anim.dim;
+  res.frames = anim.frames();
+  res.poses = anim.times.size();
+  res.pairs_per_pose = anim.pairs.size();
+  res.times = anim.times;
+  res.planes_disabled = !opt.planes;
+  for (const auto& b : anim.bodies) res.body_names.push_back(b.name);
+
+  const std::size_t n = anim.bodies.size();
+  // Per body: Q, adj(Q) (exact and in intervals), the shape radius, the semi-axes when diagonal.
+  std::vector<Matrix<Rational, H>> Qr(n), adjQr(n);
+  std::vector<Matrix<Interval, H>> Qi(n), adjQi(n);
+  std::vector<std::optional<std::array<double, H - 1>>> axes(n);
+  std::vector<Rational> radius(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) Qr[b][i][j] = anim.bodies[b].Q[i][j];
+    adjQr[b] = adjugate_of<Rational, H>(Qr[b], Rational(0));
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) {
+        Qi[b][i][j] = interval_of(Qr[b][i][j]);
+        adjQi[b][i][j] = interval_of(adjQr[b][i][j]);
+      }
+    axes[b] = diagonal_axes<H>(anim.bodies[b].Q);
+    radius[b] = body_shape_radius(anim, b);
+  }
+
+  std::unordered_map<std::size_t, std::array<double, 4>> kept;  // pair position -> plane kept from the pose before
+  for (std::size_t k = 0; k < anim.times.size(); ++k) {
+    const auto t_pose = SteadyClock::now();
+    PoseSummary ps;
+    ps.pose = k;
+    ps.pairs = anim.pairs.size();
+    // Stage 1: bounding spheres in intervals enclosing the exact centre and radius, sweep on x, sphere test.
+    std::vector<std::array<Interval, 3>> centre(n);
+    std::vector<Interval> rad(n);
+    std::vector<SweepInterval> box(n);
+    parallel_for(n, opt.threads, 256, [&](std::size_t b) {
+      const KeyPose& p = anim.bodies[b].poses[k];
+      for (int i = 0; i < d; ++i) centre[b][i] = interval_of(p.position[i]);
+      rad[b] = interval_of(keyframe_is_identity(p, d) ? radius[b] : Rational(radius[b] * key_deformation_bound(p, d)));
+      box[b] = {(centre[b][0] - rad[b]).lo, (centre[b][0] + rad[b]).hi};
+    });
+    std::size_t examined = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> swept = sweep_and_prune(box, examined);
+    ps.sweep_examined = examined;
+    struct Task {
+      std::size_t a, b, pair;
+    };
+    std::vector<Task> tasks;
+    for (const auto& [a, b] : swept) {
+      auto it = std::lower_bound(anim.pairs.begin(), anim.pairs.end(), std::make_pair(a, b));
+      if (it == anim.pairs.end() || *it != std::make_pair(a, b)) continue;  // not a checked pair
+      Interval d2(0), r = rad[a] + rad[b];
+      for (int i = 0; i < d; ++i) {
+        Interval x = centre[a][i] - centre[b][i];
+        d2 = d2 + x * x;
+      }
+      if (d2 > r * r) continue;  // proved apart at this pose
+      tasks.push_back({a, b, std::size_t(it - anim.pairs.begin())});
+    }
+    ps.bounding_volumes = anim.pairs.size() - tasks.size();
+    // The bodies the tasks need, at this pose, in the run's arithmetic.
+    std::vector<char> needed(n, 0);
+    for (const Task& t : tasks) needed[t.a] = needed[t.b] = 1;
+    std::vector<std::size_t> used;
+    for (std::size_t b = 0; b < n; ++b)
+      if (needed[b]) used.push_back(b);
+    const bool exact = kind == Arithmetic::Exact;
+    std::vector<BodyAtPose<Interval, H>> bi(exact ? 0 : n);
+    std::vector<BodyAtPose<Rational, H>> br(exact ? n : 0);
+    std::vector<Ellipsoid> e3(kind == Arithmetic::Double && d == 3 ? n : 0);
+    std::vector<Ellipse> e2(kind == Arithmetic::Double && d == 2 ? n : 0);
+    parallel_for(used.size(), opt.threads, 16, [&](std::size_t u) {
+      const std::size_t b = used[u];
+      const KeyPose& p = anim.bodies[b].poses[k];
+      if (exact) {
+        br[b] = body_at_pose<Rational, H>(Qr[b], adjQr[b], p);
+        return;
+      }
+      bi[b] = body_at_pose<Interval, H>(Qi[b], adjQi[b], p);
+      if (kind == Arithmetic::Double && axes[b]) {  // the pose rounded to doubles, for api/static_test.hpp
+        // M = M'/W: W R D and W c over W, each rounded once from intervals around the exact values.
+        const Interval W = [&] {
+          Interval s(0);
+          for (const Rational& q : p.orientation) s = s + interval_of(q) * interval_of(q);
+          return s;
+        }();
+        std::array<std::array<double, H>, H> pose{};
+        const auto& q = p.orientation;
+        std::array<std::array<Interval, d>, d> wr;
+        if constexpr (d == 3) {
+          const Interval w = interval_of(q[0]), x = interval_of(q[1]), y = interval_of(q[2]), z = interval_of(q[3]);
+          const Interval two(2);
+          wr[0] = {w * w + x * x - y * y - z * z, two * (x * y - w * z), two * (x * z + w * y)};
+          wr[1] = {two * (x * y + w * z), w * w - x * x + y * y - z * z, two * (y * z - w * x)};
+          wr[2] = {two * (x * z - w * y), two * (y * z + w * x), w * w - x * x - y * y + z * z};
+        } else {
+          const Interval w = interval_of(q[0]), z = interval_of(q[1]), two(2);
+          wr[0] = {w * w - z * z, Interval(0) - two * w * z};
+          wr[1] = {two * w * z, w * w - z * z};
+        }
+        for (int i = 0; i < d; ++i) {
+          for (int j = 0; j < d; ++j) {
+            Interval s(0);
+            for (int l = 0; l < d; ++l) s = s + wr[i][l] * (p.deformation ? interval_of((*p.deformation)[l][j]) : Interval(l == j ? 1 : 0));
+            pose[i][j] = (s / W).mid();
+          }
+          pose[i][d] = interval_of(p.position[i]).mid();
+        }
+        pose[d][d] = 1;
+        if constexpr (d == 3) e3[b] = Ellipsoid{*axes[b], pose};
+        else e2[b] = Ellipse{*axes[b], pose};
+      }
+    });
+    // Stages 2 and 3, pair by pair.
+    std::vector<PairOutcome> outcome(tasks.size());
+    parallel_for(tasks.size(), opt.threads, 32, [&](std::size_t t) {
+      const Task& task = tasks[t];
+      PairOutcome& o = outcome[t];
+      if (opt.planes) {
+        auto it = kept.find(task.pair);
+        if (it != kept.end()) {
+          std::array<double, H> p;
+          for (int i = 0; i < H; ++i) p[i] = it->second[i];
+          o.checked_plane = true;
+          const bool hit = exact ? plane_separates<Rational, H>(p, br[task.a].C, br[task.b].C)
+                                 : plane_separates<Interval, H>(p, bi[task.a].C, bi[task.b].C);
+          if (hit) {
+            o.status = Status::separate;
+            o.by_plane = true;
+            o.plane = it->second;
+            return;
+          }
+        }
+      }
+      if (exact) {
+        o.status = generic_status<Rational, H>(br[task.a].A, br[task.b].A);
+      } else if (kind == Arithmetic::Double && axes[task.a] && axes[task.b]) {
+        if constexpr (d == 3) o.status = static_status(e3[task.a], e3[task.b], opt.solve.arith);
+        else o.status = static_status(e2[task.a], e2[task.b], opt.solve.arith);
+      } else {
+        o.status = generic_status<Interval, H>(bi[task.a].A, bi[task.b].A);
+        if (o.status == Status::uncertain && kind == Arithmetic::Certified) {
+          const auto& pa = anim.bodies[task.a].poses[k];
+          const auto& pb = anim.bodies[task.b].poses[k];
+          o.status = generic_status<Rational, H>(body_at_pose<Rational, H>(Qr[task.a], adjQr[task.a], pa).A,
+                                                 body_at_pose<Rational, H>(Qr[task.b], adjQr[task.b], pb).A);
+        }
+      }
+      if (opt.planes && o.status == Status::separate) {
+        const auto plane = exact ? build_plane<H>(midpoints<H>(br[task.a].A), midpoints<H>(br[task.b].A))
+                                 : build_plane<H>(midpoints<H>(bi[task.a].A), midpoints<H>(bi[task.b].A));
+        if (plane) {
+          std::array<double, 4> p{};
+          for (int i = 0; i < H; ++i) p[i] = (*plane)[i];
+          o.plane = p;
+          o.built = true;
+        } else {
+          o.build_failed = true;
+        }
+      }
+    });
+    // Results in the order of pairs; the planes kept for the next pose.
+    std::unordered_map<std::size_t, std::array<double, 4>> next_kept;
+    for (std::size_t t = 0; t < tasks.size(); ++t) {
+      const Task& task = tasks[t];
+      const PairOutcome& o = outcome[t];
+      if (o.plane) next_kept.emplace(task.pair, *o.plane);
+      res.plane_checks += o.checked_plane;
+      res.planes_built += o.built;
+      ps.planes_built += o.built;
+      res.plane_build_failed += o.build_failed;
+      if (o.by_plane) ++ps.separating_plane;
+      else ++ps.static_test;
+      PairPoseStatus st{k, task.a, task.b, o.status, o.by_plane};
+      if (opt.keep_tested) res.tested.push_back(st);
+      if (o.status == Status::uncertain) {
+        res.undecided.push_back({k, task.a, task.b,
+                                 "the static test's error bound cannot decide the status at this pose (arithmetic " +
+                                     res.arithmetic + ")"});
+        ++ps.undecided;
+      } else if (in_collision(o.status)) {
+        res.events.push_back(st);
+        ++ps.events;
+      }
+    }
+    kept = std::move(next_kept);
+    ps.seconds = std::chrono::duration<double>(SteadyClock::now() - t_pose).count();
+    res.bounding_volumes += ps.bounding_volumes;
+    res.separating_plane += ps.separating_plane;
+    res.static_test += ps.static_test;
+    res.sweep_examined += ps.sweep_examined;
+    res.per_pose.push_back(ps);
+  }
+  res.seconds = std::chrono::duration<double>(SteadyClock::now() - t_start).count();
+  return res;
+}
+
+}  // namespace
+
+PosesResult animate_poses(const Animation& anim, const AnimateOptions& opt) {
+  if (opt.threads < 1) throw std::invalid_argument("--jobs " + std::to_string(opt.threads) + ": expected at least 1");
+  const Arithmetic::Kind kind = opt.solve.arith.kind;
+  if (kind != Arithmetic::Double && kind != Arithmetic::Exact && kind != Arithmetic::Certified)
+    throw std::invalid_argument("--poses: arithmetic " + opt.solve.arith.name() + " is not supported (double, exact or certified)");
+  if (opt.shard_count != 1) throw std::invalid_argument("--poses: --frame-block is not supported (poses run in one block)");
+  if (opt.all_intervals) throw std::invalid_argument("--poses: --all-intervals has no meaning at a pose (a status, not intervals)");
+  if (anim.dim == 2) return run_poses<3>(anim, opt);
+  if (anim.dim == 3) return run_poses<4>(anim, opt);
+  throw std::invalid_argument("--poses: dim must be 2 or 3");
+}
+
+nlohmann::ordered_json poses_result_to_json(const PosesResult& r) {
+  nlohmann::ordered_json j;
+  j["format"] = kAnimationAnswerFormat;
+  j["animation"] = r.animation;
+  j["arith"] = r.arithmetic;
+  j["arithmetic"] = r.arithmetic;
+  j["frames"] = r.frames;
+  j["poses"] = r.poses;
+  j["pairs_per_frame"] = r.pairs_per_pose;
+  j["mode"] = "poses";
+  auto pair = [&](std::size_t a, std::size_t b) { return nlohmann::ordered_json::array({r.body_names[a], r.body_names[b]}); };
+  j["events"] = nlohmann::ordered_json::array();
+  for (const auto& e : r.events)
+    j["events"].push_back({{"pose", e.pose}, {"t", r.times[e.pose].get_str()}, {"pair", pair(e.body_a, e.body_b)},
+                           {"status", to_string(e.status)}});
+  j["undecided"] = nlohmann::ordered_json::array();
+  for (const auto& u : r.undecided)
+    j["undecided"].push_back({{"pose", u.pose}, {"t", r.times[u.pose].get_str()}, {"pair", pair(u.body_a, u.body_b)}, {"why", u.why}});
+  j["stages"] = {{"bounding_volumes", r.bounding_volumes}, {"separating_plane", r.separating_plane}, {"static_test", r.static_test}};
+  j["separating_plane_stage"] = r.planes_disabled ? "off" : "built";
+  j["planes"] = {{"checked", r.plane_checks}, {"kept", r.separating_plane}, {"built", r.planes_built},
+                 {"build_failed", r.plane_build_failed}};
+  j["sweep_examined"] = r.sweep_examined;
+  nlohmann::ordered_json pp = nlohmann::ordered_json::array();
+  for (const auto& p : r.per_pose)
+    pp.push_back({{"pose", p.pose}, {"bounding_volumes", p.bounding_volumes}, {"separating_plane", p.separating_plane},
+                  {"static_test", p.static_test}, {"planes_built", p.planes_built}, {"events", p.events},
+                  {"undecided", p.undecided}, {"ms", p.seconds * 1e3}});
+  j["per_pose"] = pp;
+  j["seconds"] = r.seconds;
+  return j;
+}
+
+}  // namespace eccd
