@@ -257,6 +257,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     radius[b] = body_shape_radius(anim, b);
   }
 
+  const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;  // then anim.pairs lists every pair in order
   std::unordered_map<std::size_t, std::array<double, 4>> kept;  // pair position -> plane kept from the pose before
   for (std::size_t k = 0; k < anim.times.size(); ++k) {
     const auto t_pose = SteadyClock::now();
@@ -281,16 +282,23 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     };
     std::vector<Task> tasks;
     for (const auto& [a, b] : swept) {
-      auto it = std::lower_bound(anim.pairs.begin(), anim.pairs.end(), std::make_pair(a, b));
-      if (it == anim.pairs.end() || *it != std::make_pair(a, b)) continue;  // not a checked pair
       Interval d2(0), r = rad[a] + rad[b];
       for (int i = 0; i < d; ++i) {
         Interval x = centre[a][i] - centre[b][i];
         d2 = d2 + x * x;
       }
       if (d2 > r * r) continue;  // proved apart at this pose
-      tasks.push_back({a, b, std::size_t(it - anim.pairs.begin())});
+      std::size_t pos;
+      if (all_pairs) {
+        pos = a * (2 * n - a - 1) / 2 + (b - a - 1);  // "all": the pairs in the order of bodies
+      } else {
+        auto it = std::lower_bound(anim.pairs.begin(), anim.pairs.end(), std::make_pair(a, b));
+        if (it == anim.pairs.end() || *it != std::make_pair(a, b)) continue;  // not a checked pair
+        pos = std::size_t(it - anim.pairs.begin());
+      }
+      tasks.push_back({a, b, pos});
     }
+    std::sort(tasks.begin(), tasks.end(), [](const Task& x, const Task& y) { return x.pair < y.pair; });
     ps.bounding_volumes = anim.pairs.size() - tasks.size();
     // The bodies the tasks need, at this pose, in the run's arithmetic.
     std::vector<char> needed(n, 0);

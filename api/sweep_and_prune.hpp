@@ -10,7 +10,8 @@
 // intervals intersect is one of them, and each is looked at once. The number
 // of pairs looked at is returned in `examined` (the work count the tests
 // assert on: issue 36 point 3), and equals the number of overlapping pairs.
-// Output: the pairs (i, j), i < j, in increasing (i, j) order.
+// Output: the pairs (i, j), i < j, in the sweep's order (a function of the
+// intervals only; callers sort what survives their own tests).
 // Requirements: finite doubles (callers round outwards, so an interval that
 // encloses an exact one keeps every exact overlap).
 #include <algorithm>
@@ -42,7 +43,6 @@ inline std::vector<std::pair<std::size_t, std::size_t>> sweep_and_prune(const st
       out.emplace_back(std::min(x, y), std::max(x, y));
     }
   }
-  std::sort(out.begin(), out.end());
   return out;
 }
 
