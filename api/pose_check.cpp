@@ -33,15 +33,10 @@ T enter(const Rational& r) {
   else return r;
 }
 
-// The world quadric A and its dual C of one body at one key pose (statement: M', A, C).
+// M' = [[W R D, W c], [0, W]] of one key pose (statement), W·R by kernel/keyframe_motion.hpp's keyframe_rotation
+// rule at one τ (3D the quaternion's matrix, 2D [[w² - z², -2wz], [2wz, w² - z²]]).
 template <class T, int H>
-struct BodyAtPose {
-  Matrix<T, H> A, C;
-};
-
-// W·R (d x d) and W for the orientation q (3D [w, x, y, z], 2D [w, z]): kernel/keyframe_motion.hpp's keyframe_rotation at one τ.
-template <class T, int H>
-BodyAtPose<T, H> body_at_pose(const Matrix<T, H>& Q, const Matrix<T, H>& adjQ, const KeyPose& p) {
+Matrix<T, H> pose_matrix(const KeyPose& p) {
   constexpr int d = H - 1;
   const T zero = enter<T>(Rational(0));
   std::array<std::array<T, d>, d> wr;
@@ -60,7 +55,7 @@ BodyAtPose<T, H> body_at_pose(const Matrix<T, H>& Q, const Matrix<T, H>& adjQ, c
     wr[1] = {two * w * z, w * w - z * z};
     W = w * w + z * z;
   }
-  Matrix<T, H> m;  // M' = [[W R D, W c], [0, W]]
+  Matrix<T, H> m;
   for (int i = 0; i < d; ++i) {
     for (int j = 0; j < d; ++j) {
       if (!p.deformation) { m[i][j] = wr[i][j]; continue; }
@@ -72,7 +67,52 @@ BodyAtPose<T, H> body_at_pose(const Matrix<T, H>& Q, const Matrix<T, H>& adjQ, c
     m[d][i] = zero;
   }
   m[d][d] = W;
-  // adj(M') = [[W adj(L), -adj(L) t], [0, det L]] for M' = [[L, t], [0, W]].
+  return m;
+}
+
+// x·diag(q)·yᵀ (q diagonal) or x·q·yᵀ: the symmetric product both quadrics need.
+template <class T, int H>
+Matrix<T, H> sandwich(const Matrix<T, H>& x, const Matrix<T, H>& q, bool diagonal) {
+  const T zero = enter<T>(Rational(0));
+  Matrix<T, H> r;
+  if (diagonal) {
+    for (int i = 0; i < H; ++i)
+      for (int j = i; j < H; ++j) {
+        T s = zero;
+        for (int k = 0; k < H; ++k) s = s + x[i][k] * q[k][k] * x[j][k];
+        r[i][j] = s;
+        r[j][i] = s;
+      }
+    return r;
+  }
+  Matrix<T, H> xq;
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) {
+      T s = zero;
+      for (int k = 0; k < H; ++k) s = s + x[i][k] * q[k][j];
+      xq[i][j] = s;
+    }
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) {
+      T s = zero;
+      for (int k = 0; k < H; ++k) s = s + xq[i][k] * x[j][k];
+      r[i][j] = s;
+    }
+  return r;
+}
+
+// The dual C = M' adj(Q) M'ᵀ.
+template <class T, int H>
+Matrix<T, H> dual_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& adjQ, bool diagonal) {
+  return sandwich<T, H>(m, adjQ, diagonal);
+}
+
+// The world quadric A = adj(M')ᵀ Q adj(M'), adj(M') = [[W adj(L), -adj(L) t], [0, det L]] for M' = [[L, t], [0, W]].
+template <class T, int H>
+Matrix<T, H> world_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& Q, bool diagonal) {
+  constexpr int d = H - 1;
+  const T zero = enter<T>(Rational(0));
+  const T& W = m[d][d];
   std::array<std::array<T, d>, d> adjL;
   T detL;
   if constexpr (d == 3) {
@@ -86,31 +126,18 @@ BodyAtPose<T, H> body_at_pose(const Matrix<T, H>& Q, const Matrix<T, H>& adjQ, c
     adjL[1] = {zero - m[1][0], m[0][0]};
     detL = m[0][0] * m[1][1] - m[0][1] * m[1][0];
   }
-  Matrix<T, H> n;
+  Matrix<T, H> nt;  // adj(M')ᵀ
   for (int i = 0; i < d; ++i) {
     T s = zero;
     for (int j = 0; j < d; ++j) {
-      n[i][j] = W * adjL[i][j];
+      nt[j][i] = W * adjL[i][j];
       s = s - adjL[i][j] * m[j][d];
     }
-    n[i][d] = s;
-    n[d][i] = zero;
+    nt[d][i] = s;
+    nt[i][d] = zero;
   }
-  n[d][d] = detL;
-  auto product = [&](const Matrix<T, H>& x, const Matrix<T, H>& y, bool transpose_x, bool transpose_y) {
-    Matrix<T, H> r;
-    for (int i = 0; i < H; ++i)
-      for (int j = 0; j < H; ++j) {
-        T s = zero;
-        for (int k = 0; k < H; ++k) s = s + (transpose_x ? x[k][i] : x[i][k]) * (transpose_y ? y[j][k] : y[k][j]);
-        r[i][j] = s;
-      }
-    return r;
-  };
-  BodyAtPose<T, H> out;
-  out.A = product(product(n, Q, true, false), n, false, false);     // adj(M')ᵀ Q adj(M')
-  out.C = product(product(m, adjQ, false, false), m, false, true);  // M' adj(Q) M'ᵀ
-  return out;
+  nt[d][d] = detL;
+  return sandwich<T, H>(nt, Q, diagonal);
 }
 
 // Does p separate a (negative side) and b (positive side)? Statement, stage 2.
@@ -214,6 +241,17 @@ std::optional<std::array<double, H - 1>> diagonal_axes(const std::vector<std::ve
   return ax;
 }
 
+// What one body has at the current pose (have: 1 M', 2 C, 4 A, 8 the rounded pose), valid while stamp matches.
+template <int H>
+struct BodyCache {
+  std::size_t stamp = 0;
+  int have = 0;
+  bool queued = false;
+  Matrix<Interval, H> mi, ci, ai;
+  Matrix<Rational, H> mr, cr, ar;
+  std::array<std::array<double, H>, H> pose{};
+};
+
 struct PairOutcome {
   Status status = Status::uncertain;
   bool by_plane = false, checked_plane = false, built = false, build_failed = false;
@@ -257,6 +295,15 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     radius[b] = body_shape_radius(anim, b);
   }
 
+  std::vector<char> diag(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    bool dg = true;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) dg = dg && (i == j || sgn(Qr[b][i][j]) == 0);
+    diag[b] = dg;  // then adj(Q) is diagonal too
+  }
+  std::vector<BodyCache<H>> cache(n);
+  std::size_t stamp = 0;
   const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;  // then anim.pairs lists every pair in order
   std::unordered_map<std::size_t, std::array<double, 4>> kept;  // pair position -> plane kept from the pose before
   for (std::size_t k = 0; k < anim.times.size(); ++k) {
@@ -300,97 +347,115 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     }
     std::sort(tasks.begin(), tasks.end(), [](const Task& x, const Task& y) { return x.pair < y.pair; });
     ps.bounding_volumes = anim.pairs.size() - tasks.size();
-    // The bodies the tasks need, at this pose, in the run's arithmetic.
-    std::vector<char> needed(n, 0);
-    for (const Task& t : tasks) needed[t.a] = needed[t.b] = 1;
-    std::vector<std::size_t> used;
-    for (std::size_t b = 0; b < n; ++b)
-      if (needed[b]) used.push_back(b);
+    // Stages 2 and 3 in three passes, each computing first (in the run's arithmetic, once per body and pose) only
+    // what its pairs need: M' and C for the kept planes' checks, then A or the rounded pose for the static tests,
+    // then A for the new planes.
     const bool exact = kind == Arithmetic::Exact;
-    std::vector<BodyAtPose<Interval, H>> bi(exact ? 0 : n);
-    std::vector<BodyAtPose<Rational, H>> br(exact ? n : 0);
-    std::vector<Ellipsoid> e3(kind == Arithmetic::Double && d == 3 ? n : 0);
-    std::vector<Ellipse> e2(kind == Arithmetic::Double && d == 2 ? n : 0);
-    parallel_for(used.size(), opt.threads, 16, [&](std::size_t u) {
-      const std::size_t b = used[u];
-      const KeyPose& p = anim.bodies[b].poses[k];
-      if (exact) {
-        br[b] = body_at_pose<Rational, H>(Qr[b], adjQr[b], p);
-        return;
+    std::vector<PairOutcome> outcome(tasks.size());
+    std::vector<const std::array<double, 4>*> plane_of(tasks.size(), nullptr);
+    if (opt.planes)
+      for (std::size_t t = 0; t < tasks.size(); ++t) {
+        auto it = kept.find(tasks[t].pair);
+        if (it != kept.end()) plane_of[t] = &it->second;
       }
-      bi[b] = body_at_pose<Interval, H>(Qi[b], adjQi[b], p);
-      if (kind == Arithmetic::Double && axes[b]) {  // the pose rounded to doubles, for api/static_test.hpp
-        // M = M'/W: W R D and W c over W, each rounded once from intervals around the exact values.
-        const Interval W = [&] {
-          Interval s(0);
-          for (const Rational& q : p.orientation) s = s + interval_of(q) * interval_of(q);
-          return s;
-        }();
-        std::array<std::array<double, H>, H> pose{};
-        const auto& q = p.orientation;
-        std::array<std::array<Interval, d>, d> wr;
-        if constexpr (d == 3) {
-          const Interval w = interval_of(q[0]), x = interval_of(q[1]), y = interval_of(q[2]), z = interval_of(q[3]);
-          const Interval two(2);
-          wr[0] = {w * w + x * x - y * y - z * z, two * (x * y - w * z), two * (x * z + w * y)};
-          wr[1] = {two * (x * y + w * z), w * w - x * x + y * y - z * z, two * (y * z - w * x)};
-          wr[2] = {two * (x * z - w * y), two * (y * z + w * x), w * w - x * x - y * y + z * z};
-        } else {
-          const Interval w = interval_of(q[0]), z = interval_of(q[1]), two(2);
-          wr[0] = {w * w - z * z, Interval(0) - two * w * z};
-          wr[1] = {two * w * z, w * w - z * z};
+    stamp += 1;
+    auto prepare = [&](const std::vector<std::size_t>& which, int what) {  // what: 1 M', 2 C, 4 A, 8 rounded pose
+      std::vector<std::size_t> todo;
+      for (std::size_t t : which)
+        for (std::size_t b : {tasks[t].a, tasks[t].b}) {
+          if (cache[b].stamp != stamp) { cache[b].stamp = stamp; cache[b].have = 0; }
+          if ((cache[b].have & what) != what && !(cache[b].queued)) { cache[b].queued = true; todo.push_back(b); }
         }
-        for (int i = 0; i < d; ++i) {
-          for (int j = 0; j < d; ++j) {
-            Interval s(0);
-            for (int l = 0; l < d; ++l) s = s + wr[i][l] * (p.deformation ? interval_of((*p.deformation)[l][j]) : Interval(l == j ? 1 : 0));
-            pose[i][j] = (s / W).mid();
-          }
-          pose[i][d] = interval_of(p.position[i]).mid();
+      parallel_for(todo.size(), opt.threads, 16, [&](std::size_t u) {
+        BodyCache<H>& c = cache[todo[u]];
+        const KeyPose& p = anim.bodies[todo[u]].poses[k];
+        const std::size_t b = todo[u];
+        if (!(c.have & 1)) {
+          if (exact) c.mr = pose_matrix<Rational, H>(p);
+          else c.mi = pose_matrix<Interval, H>(p);
+          c.have |= 1;
         }
-        pose[d][d] = 1;
-        if constexpr (d == 3) e3[b] = Ellipsoid{*axes[b], pose};
-        else e2[b] = Ellipse{*axes[b], pose};
+        if ((what & 2) && !(c.have & 2)) {
+          if (exact) c.cr = dual_at_pose<Rational, H>(c.mr, adjQr[b], diag[b]);
+          else c.ci = dual_at_pose<Interval, H>(c.mi, adjQi[b], diag[b]);
+          c.have |= 2;
+        }
+        if ((what & 4) && !(c.have & 4)) {
+          if (exact) c.ar = world_at_pose<Rational, H>(c.mr, Qr[b], diag[b]);
+          else c.ai = world_at_pose<Interval, H>(c.mi, Qi[b], diag[b]);
+          c.have |= 4;
+        }
+        if ((what & 8) && !(c.have & 8)) {  // M = M'/W rounded to doubles, for api/static_test.hpp
+          c.pose = {};
+          for (int i = 0; i < d; ++i)
+            for (int j = 0; j <= d; ++j) c.pose[i][j] = (c.mi[i][j] / c.mi[d][d]).mid();
+          c.pose[d][d] = 1;
+          c.have |= 8;
+        }
+      });
+      for (std::size_t b : todo) cache[b].queued = false;
+    };
+    // Pass 1: the kept planes (000 section 4: checked first).
+    std::vector<std::size_t> with_plane, rest, separate;
+    for (std::size_t t = 0; t < tasks.size(); ++t) (plane_of[t] ? with_plane : rest).push_back(t);
+    prepare(with_plane, 1 | 2);
+    parallel_for(with_plane.size(), opt.threads, 64, [&](std::size_t u) {
+      const std::size_t t = with_plane[u];
+      std::array<double, H> p;
+      for (int i = 0; i < H; ++i) p[i] = (*plane_of[t])[i];
+      const BodyCache<H>& ca = cache[tasks[t].a];
+      const BodyCache<H>& cb = cache[tasks[t].b];
+      PairOutcome& o = outcome[t];
+      o.checked_plane = true;
+      if (exact ? plane_separates<Rational, H>(p, ca.cr, cb.cr) : plane_separates<Interval, H>(p, ca.ci, cb.ci)) {
+        o.status = Status::separate;
+        o.by_plane = true;
+        o.plane = *plane_of[t];
       }
     });
-    // Stages 2 and 3, pair by pair.
-    std::vector<PairOutcome> outcome(tasks.size());
-    parallel_for(tasks.size(), opt.threads, 32, [&](std::size_t t) {
+    for (std::size_t t : with_plane)
+      if (!outcome[t].by_plane) rest.push_back(t);
+    // Pass 2: the static test.
+    const bool fast_double = kind == Arithmetic::Double;
+    {
+      std::vector<std::size_t> fast, general;
+      for (std::size_t t : rest) (fast_double && axes[tasks[t].a] && axes[tasks[t].b] ? fast : general).push_back(t);
+      prepare(fast, 1 | 8);
+      prepare(general, 1 | 4);
+    }
+    parallel_for(rest.size(), opt.threads, 32, [&](std::size_t u) {
+      const std::size_t t = rest[u];
       const Task& task = tasks[t];
       PairOutcome& o = outcome[t];
-      if (opt.planes) {
-        auto it = kept.find(task.pair);
-        if (it != kept.end()) {
-          std::array<double, H> p;
-          for (int i = 0; i < H; ++i) p[i] = it->second[i];
-          o.checked_plane = true;
-          const bool hit = exact ? plane_separates<Rational, H>(p, br[task.a].C, br[task.b].C)
-                                 : plane_separates<Interval, H>(p, bi[task.a].C, bi[task.b].C);
-          if (hit) {
-            o.status = Status::separate;
-            o.by_plane = true;
-            o.plane = it->second;
-            return;
-          }
-        }
-      }
+      const BodyCache<H>& ca = cache[task.a];
+      const BodyCache<H>& cb = cache[task.b];
       if (exact) {
-        o.status = generic_status<Rational, H>(br[task.a].A, br[task.b].A);
-      } else if (kind == Arithmetic::Double && axes[task.a] && axes[task.b]) {
-        if constexpr (d == 3) o.status = static_status(e3[task.a], e3[task.b], opt.solve.arith);
-        else o.status = static_status(e2[task.a], e2[task.b], opt.solve.arith);
+        o.status = generic_status<Rational, H>(ca.ar, cb.ar);
+      } else if (fast_double && axes[task.a] && axes[task.b]) {
+        if constexpr (d == 3) o.status = static_status(Ellipsoid{*axes[task.a], ca.pose}, Ellipsoid{*axes[task.b], cb.pose}, opt.solve.arith);
+        else o.status = static_status(Ellipse{*axes[task.a], ca.pose}, Ellipse{*axes[task.b], cb.pose}, opt.solve.arith);
       } else {
-        o.status = generic_status<Interval, H>(bi[task.a].A, bi[task.b].A);
-        if (o.status == Status::uncertain && kind == Arithmetic::Certified) {
+        o.status = generic_status<Interval, H>(ca.ai, cb.ai);
+        if (o.status == Status::uncertain && kind == Arithmetic::Certified) {  // the exact status
           const auto& pa = anim.bodies[task.a].poses[k];
           const auto& pb = anim.bodies[task.b].poses[k];
-          o.status = generic_status<Rational, H>(body_at_pose<Rational, H>(Qr[task.a], adjQr[task.a], pa).A,
-                                                 body_at_pose<Rational, H>(Qr[task.b], adjQr[task.b], pb).A);
+          o.status = generic_status<Rational, H>(world_at_pose<Rational, H>(pose_matrix<Rational, H>(pa), Qr[task.a], diag[task.a]),
+                                                 world_at_pose<Rational, H>(pose_matrix<Rational, H>(pb), Qr[task.b], diag[task.b]));
         }
       }
-      if (opt.planes && o.status == Status::separate) {
-        const auto plane = exact ? build_plane<H>(midpoints<H>(br[task.a].A), midpoints<H>(br[task.b].A))
-                                 : build_plane<H>(midpoints<H>(bi[task.a].A), midpoints<H>(bi[task.b].A));
+    });
+    // Pass 3: a new plane for each pair found separate (000 section 3), kept for the next pose.
+    if (opt.planes) {
+      for (std::size_t t : rest)
+        if (outcome[t].status == Status::separate) separate.push_back(t);
+      prepare(separate, 1 | 4);
+      parallel_for(separate.size(), opt.threads, 8, [&](std::size_t u) {
+        const std::size_t t = separate[u];
+        PairOutcome& o = outcome[t];
+        const BodyCache<H>& ca = cache[tasks[t].a];
+        const BodyCache<H>& cb = cache[tasks[t].b];
+        const auto plane = exact ? build_plane<H>(midpoints<H>(ca.ar), midpoints<H>(cb.ar))
+                                 : build_plane<H>(midpoints<H>(ca.ai), midpoints<H>(cb.ai));
         if (plane) {
           std::array<double, 4> p{};
           for (int i = 0; i < H; ++i) p[i] = (*plane)[i];
@@ -399,8 +464,8 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
         } else {
           o.build_failed = true;
         }
-      }
-    });
+      });
+    }
     // Results in the order of pairs; the planes kept for the next pose.
     std::unordered_map<std::size_t, std::array<double, 4>> next_kept;
     for (std::size_t t = 0; t < tasks.size(); ++t) {
