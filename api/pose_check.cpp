@@ -306,28 +306,32 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
   std::size_t stamp = 0;
   const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;  // then anim.pairs lists every pair in order
   std::unordered_map<std::size_t, std::array<double, 4>> kept;  // pair position -> plane kept from the pose before
-  for (std::size_t k = 0; k < anim.times.size(); ++k) {
-    const auto t_pose = SteadyClock::now();
-    PoseSummary ps;
+  // Stage 1 for every pose first (poses are independent here: the poses on the threads, each pose on one):
+  // bounding spheres in intervals enclosing the exact centre and radius, sweep on x, the sphere test.
+  struct Task {
+    std::size_t a, b, pair;
+  };
+  const std::size_t P = anim.times.size();
+  std::vector<std::vector<Task>> pose_tasks(P);
+  std::vector<PoseSummary> summaries(P);
+  parallel_for(P, opt.threads, 1, [&](std::size_t k) {
+    const auto t1 = SteadyClock::now();
+    PoseSummary& ps = summaries[k];
     ps.pose = k;
     ps.pairs = anim.pairs.size();
-    // Stage 1: bounding spheres in intervals enclosing the exact centre and radius, sweep on x, sphere test.
     std::vector<std::array<Interval, 3>> centre(n);
     std::vector<Interval> rad(n);
     std::vector<SweepInterval> box(n);
-    parallel_for(n, opt.threads, 256, [&](std::size_t b) {
+    for (std::size_t b = 0; b < n; ++b) {
       const KeyPose& p = anim.bodies[b].poses[k];
       for (int i = 0; i < d; ++i) centre[b][i] = interval_of(p.position[i]);
       rad[b] = interval_of(keyframe_is_identity(p, d) ? radius[b] : Rational(radius[b] * key_deformation_bound(p, d)));
       box[b] = {(centre[b][0] - rad[b]).lo, (centre[b][0] + rad[b]).hi};
-    });
+    }
     std::size_t examined = 0;
     std::vector<std::pair<std::size_t, std::size_t>> swept = sweep_and_prune(box, examined);
     ps.sweep_examined = examined;
-    struct Task {
-      std::size_t a, b, pair;
-    };
-    std::vector<Task> tasks;
+    std::vector<Task>& tasks = pose_tasks[k];
     for (const auto& [a, b] : swept) {
       Interval d2(0), r = rad[a] + rad[b];
       for (int i = 0; i < d; ++i) {
@@ -347,6 +351,12 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     }
     std::sort(tasks.begin(), tasks.end(), [](const Task& x, const Task& y) { return x.pair < y.pair; });
     ps.bounding_volumes = anim.pairs.size() - tasks.size();
+    ps.seconds = std::chrono::duration<double>(SteadyClock::now() - t1).count();
+  });
+  for (std::size_t k = 0; k < P; ++k) {
+    const auto t_pose = SteadyClock::now();
+    PoseSummary& ps = summaries[k];
+    const std::vector<Task>& tasks = pose_tasks[k];
     // Stages 2 and 3 in three passes, each computing first (in the run's arithmetic, once per body and pose) only
     // what its pairs need: M' and C for the kept planes' checks, then A or the rounded pose for the static tests,
     // then A for the new planes.
@@ -491,7 +501,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       }
     }
     kept = std::move(next_kept);
-    ps.seconds = std::chrono::duration<double>(SteadyClock::now() - t_pose).count();
+    ps.seconds += std::chrono::duration<double>(SteadyClock::now() - t_pose).count();
     res.bounding_volumes += ps.bounding_volumes;
     res.separating_plane += ps.separating_plane;
     res.static_test += ps.static_test;

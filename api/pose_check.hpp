@@ -38,9 +38,11 @@
 //     kept for the next pose, unchecked until then (the check is the proof).
 // A pair not checked at a pose (dropped by stage 1) forgets its plane. A
 // pair-pose that is touching or overlapping is an event; one the double test
-// cannot decide goes to `undecided`, never to the events. Poses run in order;
-// each pose's bodies (A_k, C_k) and then its pairs are shared among `threads`
-// threads; results are stored by position, so nothing depends on the schedule.
+// cannot decide goes to `undecided`, never to the events. Stage 1 runs for all
+// poses first, the poses shared among `threads` threads; then stages 2-3 run
+// pose by pose in order, each pose's bodies (M'_k, C_k, A_k, computed only
+// where a pair needs them) and then its pairs shared among the threads;
+// results are stored by position, so nothing depends on the schedule.
 // Requirements: the animation is exact (rationals); arithmetic double, exact
 // or certified (std::invalid_argument otherwise, and for shards or
 // all_intervals, which have no meaning here).
@@ -64,7 +66,7 @@ struct PoseSummary {
   std::size_t planes_built = 0;      // new planes built at this pose
   std::size_t sweep_examined = 0;    // pairs the sweep looked at (x intervals overlap)
   std::size_t events = 0, undecided = 0;
-  double seconds = 0;                // wall time of the pose (all its stages)
+  double seconds = 0;                // stage 1's time on its thread plus stages 2-3's wall time
 };
 struct PairPoseStatus {
   std::size_t pose = 0, body_a = 0, body_b = 0;  // body_a < body_b
