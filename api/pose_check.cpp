@@ -305,7 +305,12 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
   std::vector<BodyCache<H>> cache(n);
   std::size_t stamp = 0;
   const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;  // then anim.pairs lists every pair in order
-  std::unordered_map<std::size_t, std::array<double, 4>> kept;  // pair position -> plane kept from the pose before
+  using KeptPlane = std::pair<std::size_t, std::array<double, 4>>;  // pair position, plane (sorted by position)
+  std::vector<KeptPlane> kept, next_kept;  // the planes kept from the pose before, and for the next
+  // Scratch reused from pose to pose (no allocation per pose once warm).
+  std::vector<PairOutcome> outcome;
+  std::vector<const std::array<double, 4>*> plane_of;
+  std::vector<std::size_t> todo, with_plane, rest, separate, fast, general;
   // Stage 1 for every pose first (poses are independent here: the poses on the threads, each pose on one):
   // bounding spheres in intervals enclosing the exact centre and radius, sweep on x, the sphere test.
   struct Task {
@@ -361,16 +366,18 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     // what its pairs need: M' and C for the kept planes' checks, then A or the rounded pose for the static tests,
     // then A for the new planes.
     const bool exact = kind == Arithmetic::Exact;
-    std::vector<PairOutcome> outcome(tasks.size());
-    std::vector<const std::array<double, 4>*> plane_of(tasks.size(), nullptr);
-    if (opt.planes)
+    outcome.assign(tasks.size(), PairOutcome{});
+    plane_of.assign(tasks.size(), nullptr);
+    if (opt.planes && !kept.empty()) {  // both sorted by pair position: one merge
+      auto it = kept.begin();
       for (std::size_t t = 0; t < tasks.size(); ++t) {
-        auto it = kept.find(tasks[t].pair);
-        if (it != kept.end()) plane_of[t] = &it->second;
+        while (it != kept.end() && it->first < tasks[t].pair) ++it;
+        if (it != kept.end() && it->first == tasks[t].pair) plane_of[t] = &it->second;
       }
+    }
     stamp += 1;
     auto prepare = [&](const std::vector<std::size_t>& which, int what) {  // what: 1 M', 2 C, 4 A, 8 rounded pose
-      std::vector<std::size_t> todo;
+      todo.clear();
       for (std::size_t t : which)
         for (std::size_t b : {tasks[t].a, tasks[t].b}) {
           if (cache[b].stamp != stamp) { cache[b].stamp = stamp; cache[b].have = 0; }
@@ -406,7 +413,9 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       for (std::size_t b : todo) cache[b].queued = false;
     };
     // Pass 1: the kept planes (000 section 4: checked first).
-    std::vector<std::size_t> with_plane, rest, separate;
+    with_plane.clear();
+    rest.clear();
+    separate.clear();
     for (std::size_t t = 0; t < tasks.size(); ++t) (plane_of[t] ? with_plane : rest).push_back(t);
     prepare(with_plane, 1 | 2);
     parallel_for(with_plane.size(), opt.threads, 64, [&](std::size_t u) {
@@ -428,7 +437,8 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     // Pass 2: the static test.
     const bool fast_double = kind == Arithmetic::Double;
     {
-      std::vector<std::size_t> fast, general;
+      fast.clear();
+      general.clear();
       for (std::size_t t : rest) (fast_double && axes[tasks[t].a] && axes[tasks[t].b] ? fast : general).push_back(t);
       prepare(fast, 1 | 8);
       prepare(general, 1 | 4);
@@ -477,11 +487,11 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       });
     }
     // Results in the order of pairs; the planes kept for the next pose.
-    std::unordered_map<std::size_t, std::array<double, 4>> next_kept;
+    next_kept.clear();
     for (std::size_t t = 0; t < tasks.size(); ++t) {
       const Task& task = tasks[t];
       const PairOutcome& o = outcome[t];
-      if (o.plane) next_kept.emplace(task.pair, *o.plane);
+      if (o.plane) next_kept.emplace_back(task.pair, *o.plane);
       res.plane_checks += o.checked_plane;
       res.planes_built += o.built;
       ps.planes_built += o.built;
@@ -500,7 +510,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
         ++ps.events;
       }
     }
-    kept = std::move(next_kept);
+    std::swap(kept, next_kept);
     ps.seconds += std::chrono::duration<double>(SteadyClock::now() - t_pose).count();
     res.bounding_volumes += ps.bounding_volumes;
     res.separating_plane += ps.separating_plane;
