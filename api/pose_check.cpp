@@ -38,19 +38,19 @@ T enter(const Rational& r) {
 template <class T, int H>
 Matrix<T, H> pose_matrix(const KeyPose& p) {
   constexpr int d = H - 1;
-  const T zero = enter<T>(Rational(0));
+  const T zero = T(0);
   std::array<std::array<T, d>, d> wr;
   T W;
   if constexpr (d == 3) {
     const T w = enter<T>(p.orientation[0]), x = enter<T>(p.orientation[1]), y = enter<T>(p.orientation[2]),
             z = enter<T>(p.orientation[3]);
-    const T ww = w * w, xx = x * x, yy = y * y, zz = z * z, two = enter<T>(Rational(2));
+    const T ww = w * w, xx = x * x, yy = y * y, zz = z * z, two = T(2);
     wr[0] = {ww + xx - yy - zz, two * (x * y - w * z), two * (x * z + w * y)};
     wr[1] = {two * (x * y + w * z), ww - xx + yy - zz, two * (y * z - w * x)};
     wr[2] = {two * (x * z - w * y), two * (y * z + w * x), ww - xx - yy + zz};
     W = ww + xx + yy + zz;
   } else {
-    const T w = enter<T>(p.orientation[0]), z = enter<T>(p.orientation[1]), two = enter<T>(Rational(2));
+    const T w = enter<T>(p.orientation[0]), z = enter<T>(p.orientation[1]), two = T(2);
     wr[0] = {w * w - z * z, zero - two * w * z};
     wr[1] = {two * w * z, w * w - z * z};
     W = w * w + z * z;
@@ -73,7 +73,7 @@ Matrix<T, H> pose_matrix(const KeyPose& p) {
 // x·diag(q)·yᵀ (q diagonal) or x·q·yᵀ: the symmetric product both quadrics need.
 template <class T, int H>
 Matrix<T, H> sandwich(const Matrix<T, H>& x, const Matrix<T, H>& q, bool diagonal) {
-  const T zero = enter<T>(Rational(0));
+  const T zero = T(0);
   Matrix<T, H> r;
   if (diagonal) {
     for (int i = 0; i < H; ++i)
@@ -111,7 +111,7 @@ Matrix<T, H> dual_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& adjQ, bool 
 template <class T, int H>
 Matrix<T, H> world_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& Q, bool diagonal) {
   constexpr int d = H - 1;
-  const T zero = enter<T>(Rational(0));
+  const T zero = T(0);
   const T& W = m[d][d];
   std::array<std::array<T, d>, d> adjL;
   T detL;
@@ -143,9 +143,12 @@ Matrix<T, H> world_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& Q, bool di
 // Does p separate a (negative side) and b (positive side)? Statement, stage 2.
 template <class T, int H>
 bool plane_separates(const std::array<double, H>& p, const Matrix<T, H>& ca, const Matrix<T, H>& cb) {
-  const T zero = enter<T>(Rational(0));
+  const T zero = T(0);
   std::array<T, H> pt;
-  for (int i = 0; i < H; ++i) pt[i] = enter<T>(Rational(p[i]));
+  for (int i = 0; i < H; ++i) {  // a double is exact in both
+    if constexpr (std::is_same_v<T, Interval>) pt[i] = Interval(p[i], p[i]);
+    else pt[i] = Rational(p[i]);
+  }
   auto test = [&](const Matrix<T, H>& c, Sign side) {
     std::array<T, H> v;
     for (int i = 0; i < H; ++i) {
@@ -163,7 +166,7 @@ bool plane_separates(const std::array<double, H>& p, const Matrix<T, H>& ca, con
 
 template <class T, int H>
 Status generic_status(const Matrix<T, H>& a, const Matrix<T, H>& b) {
-  const T zero = enter<T>(Rational(0));
+  const T zero = T(0);
   std::vector<T> g = characteristic_coefficients_in<T, H>(a, b, zero);
   if constexpr (H == 3) return cubic_contact_status(g[3], g[2], g[1], g[0]);
   else return quartic_contact_status(g);
