@@ -200,7 +200,9 @@ std::optional<std::array<double, H>> build_plane(const Matrix<double, H>& a, con
   return p;
 }
 
-// Runs f(i) for i in [0, n) on up to `threads` threads (inline for one thread or little work).
+// Runs f(i) for i in [0, n) on up to `threads` threads (inline for one thread or little work: below 2 grains,
+// where starting the threads would cost more than the work; the grains below are set for that, measured on the
+// 1,000-body crowd of scripts/measure-scale.py).
 template <class F>
 void parallel_for(std::size_t n, int threads, std::size_t grain, F&& f) {
   if (threads <= 1 || n < 2 * grain) {
@@ -386,7 +388,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
           if (cache[b].stamp != stamp) { cache[b].stamp = stamp; cache[b].have = 0; }
           if ((cache[b].have & what) != what && !(cache[b].queued)) { cache[b].queued = true; todo.push_back(b); }
         }
-      parallel_for(todo.size(), opt.threads, 16, [&](std::size_t u) {
+      parallel_for(todo.size(), opt.threads, 64, [&](std::size_t u) {
         BodyCache<H>& c = cache[todo[u]];
         const KeyPose& p = anim.bodies[todo[u]].poses[k];
         const std::size_t b = todo[u];
@@ -421,7 +423,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
     separate.clear();
     for (std::size_t t = 0; t < tasks.size(); ++t) (plane_of[t] ? with_plane : rest).push_back(t);
     prepare(with_plane, 1 | 2);
-    parallel_for(with_plane.size(), opt.threads, 64, [&](std::size_t u) {
+    parallel_for(with_plane.size(), opt.threads, 256, [&](std::size_t u) {
       const std::size_t t = with_plane[u];
       std::array<double, H> p;
       for (int i = 0; i < H; ++i) p[i] = (*plane_of[t])[i];
@@ -446,7 +448,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       prepare(fast, 1 | 8);
       prepare(general, 1 | 4);
     }
-    parallel_for(rest.size(), opt.threads, 32, [&](std::size_t u) {
+    parallel_for(rest.size(), opt.threads, 128, [&](std::size_t u) {
       const std::size_t t = rest[u];
       const Task& task = tasks[t];
       PairOutcome& o = outcome[t];
@@ -472,7 +474,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       for (std::size_t t : rest)
         if (outcome[t].status == Status::separate) separate.push_back(t);
       prepare(separate, 1 | 4);
-      parallel_for(separate.size(), opt.threads, 8, [&](std::size_t u) {
+      parallel_for(separate.size(), opt.threads, 16, [&](std::size_t u) {
         const std::size_t t = separate[u];
         PairOutcome& o = outcome[t];
         const BodyCache<H>& ca = cache[tasks[t].a];
