@@ -176,6 +176,9 @@ BoundingSphere swept_bounding_sphere(const Animation& anim, std::size_t body, st
   return s;
 }
 
+Rational body_shape_radius(const Animation& anim, std::size_t body) { return shape_radius(anim.bodies.at(body).Q, anim.dim); }
+Rational key_deformation_bound(const KeyPose& pose, int dim) { return deformation_bound(pose, dim); }
+
 AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
   if (opt.threads < 1) throw std::invalid_argument("--threads " + std::to_string(opt.threads) + ": expected at least 1");
   if (opt.shard_count < 1 || opt.shard_index >= opt.shard_count)

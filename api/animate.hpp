@@ -128,4 +128,11 @@ struct BoundingSphere {
 };
 BoundingSphere swept_bounding_sphere(const Animation& anim, std::size_t body, std::size_t frame);
 
+// The two bounds stage 1 uses, for the per-pose mode (api/pose_check.hpp): a
+// rational r >= |x| over body b's solid in its own frame, and a rational
+// >= ‖D‖₂ of a key pose's deformation (1 without one). At pose k the body lies
+// in the ball of centre c_k and radius r·key_deformation_bound(pose k).
+Rational body_shape_radius(const Animation& anim, std::size_t body);
+Rational key_deformation_bound(const KeyPose& pose, int dim);
+
 }  // namespace eccd

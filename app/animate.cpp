@@ -12,6 +12,7 @@
 #include "app/option_names.hpp"
 #include "app/time_left.hpp"
 #include "api/animate.hpp"
+#include "api/pose_check.hpp"
 #include "io/animation_reader.hpp"
 #include "io/scene_reader.hpp"
 
@@ -31,7 +32,7 @@ namespace {
 
 struct AnimateArgs {
   std::string path, arith = "exact", shard, out;
-  bool json = false, all_intervals = false, quiet = false, no_planes = false, force = false;
+  bool json = false, all_intervals = false, quiet = false, no_planes = false, force = false, poses = false;
   int threads = 2;
 };
 
@@ -75,6 +76,38 @@ std::string summary_text(const AnimationResult& r) {
   return o.str();
 }
 
+// --poses: the per-pose table (api/pose_check.hpp).
+std::string poses_summary_text(const PosesResult& r) {
+  std::ostringstream o;
+  o << "animation " << r.animation << " (" << r.file << "), " << r.dim << "D, arithmetic " << r.arithmetic
+    << ", per pose (static test at each key pose)\n";
+  o << "poses " << r.poses << ", pairs per pose " << r.pairs_per_pose << ", separating-plane stage "
+    << (r.planes_disabled ? "off" : "built") << "\n\n";
+  o << " pose   pairs  bounding  plane  static  built  events  undecided       ms\n";
+  for (const auto& p : r.per_pose) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%5zu  %6zu  %8zu  %5zu  %6zu  %5zu  %6zu  %9zu  %7.3f\n", p.pose, p.pairs, p.bounding_volumes,
+                  p.separating_plane, p.static_test, p.planes_built, p.events, p.undecided, p.seconds * 1e3);
+    o << line;
+  }
+  const double total = double(r.bounding_volumes + r.separating_plane + r.static_test);
+  auto pct = [&](std::size_t x) { return total > 0 ? fixed(100.0 * double(x) / total, 1) + " %" : std::string("-"); };
+  o << "\nstages: bounding volumes " << r.bounding_volumes << " (" << pct(r.bounding_volumes) << "), separating plane "
+    << r.separating_plane << " (" << pct(r.separating_plane) << "), static test " << r.static_test << " (" << pct(r.static_test)
+    << ")\nplanes: " << r.plane_checks << " kept planes checked, " << r.separating_plane << " held, " << r.planes_built
+    << " built, " << r.plane_build_failed << " constructions failed; sweep looked at " << r.sweep_examined << " pairs\n";
+  o << "events " << r.events.size() << ", undecided " << r.undecided.size() << ", " << fixed(r.seconds, 3) << " s ("
+    << (r.per_pose.empty() ? std::string("-") : fixed(r.seconds * 1e3 / double(r.per_pose.size()), 3)) << " ms per pose)\n";
+  if (!r.events.empty()) o << "\nevents:\n";
+  for (const auto& e : r.events)
+    o << "  pose " << e.pose << " (t = " << r.times[e.pose].get_str() << ")  " << r.body_names[e.body_a] << " -- "
+      << r.body_names[e.body_b] << "  " << to_string(e.status) << "\n";
+  if (!r.undecided.empty()) o << "\nundecided:\n";
+  for (const auto& u : r.undecided)
+    o << "  pose " << u.pose << "  " << r.body_names[u.body_a] << " -- " << r.body_names[u.body_b] << ": " << u.why << "\n";
+  return o.str();
+}
+
 }  // namespace
 
 Command add_animate_command(CLI::App& app) {
@@ -90,6 +123,9 @@ Command add_animate_command(CLI::App& app) {
   c.sub->add_flag("--all-intervals", args->all_intervals, "Every collision interval of each pair-frame (default: the first contact)");
   c.sub->add_flag("--no-planes", args->no_planes,
                   "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
+  c.sub->add_flag("--poses", args->poses,
+                  "Per-pose mode (papers 000 and 001): the static test of each pair at each key pose, keeping the separating "
+                  "plane from pose to pose (000 section 4); arithmetic double, exact or certified; answer \"mode\": \"poses\"");
   c.sub->add_option("--jobs", args->threads, "Threads running pair-frames (the output does not depend on it)")
       ->capture_default_str();
   add_old_spelling(c.sub, "--threads", "--threads", "--jobs", args->threads);
@@ -128,6 +164,12 @@ Command add_animate_command(CLI::App& app) {
       check_output_path("--out", args->out);
       check_output_file("--out", args->out, args->force, {args->path});
     }
+    if (args->poses) {  // options first (exit 2), before the file is read
+      if (args->all_intervals) throw std::invalid_argument("--poses with --all-intervals: a pose has a status, not intervals");
+      if (!args->shard.empty()) throw std::invalid_argument("--poses with --frame-block: poses run in one block");
+      if (o.solve.arith.kind == Arithmetic::Mpfr)
+        throw std::invalid_argument("--poses with --arith " + args->arith + ": expected double, exact or certified");
+    }
     const Animation anim = read_animation(args->path);
     const auto start = std::chrono::steady_clock::now();
     std::optional<ProgressCadence> cadence;  // redrawn on a terminal, a line per 5 % in a log (app/time_left.hpp)
@@ -141,6 +183,25 @@ Command add_animate_command(CLI::App& app) {
       std::cerr << cadence->begin() << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, "
                 << fixed(el, 1) << " s, " << (done == total ? std::string("done") : time_left_text(left)) << cadence->end(done == total);
     };
+    if (args->poses) {
+      PosesResult pr;
+      try {
+        pr = animate_poses(anim, o);
+      } catch (const std::invalid_argument& e) {
+        throw ExitError(3, "animate: " + args->path + ": " + cli_message(e));
+      }
+      std::string text;
+      if (args->json) {
+        nlohmann::ordered_json j = poses_result_to_json(pr);
+        stamp_format(j, kAnimationAnswerFormat);
+        text = j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+      } else {
+        text = poses_summary_text(pr);
+      }
+      if (!args->out.empty()) write_text_atomically(args->out, text);
+      else std::cout << text;
+      return 0;
+    }
     AnimationResult r;
     try {
       r = animate(anim, o);

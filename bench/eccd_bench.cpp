@@ -98,6 +98,7 @@
 #include "io/solution_json.hpp"
 #include "bench/isolation.hpp"
 #include "bench/fcl_side.hpp"
+#include "bench/poses.hpp"
 #include "compare/fcl_engine.hpp"
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -2133,6 +2134,9 @@ int main(int argc, char** argv) {
   register_animation();  // 001 section 5 in spirit: the boxers per frame, double and certified (issue 17)
   register_fcl_static();  // issue 21: FCL's static ellipsoid test on the static3d pairs
   register_fcl_table2();  // issue 21: per frame of 000 Table 2, eccd and FCL, misclassified frames
+  eccd_bench::register_poses({group, [](const std::string& g, const std::string& l, bool b, const std::string& n,
+                                        std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
+                              [](const std::string& k, const json& j) { g_results[k] = j; }, ECCD_SOURCE_DIR});  // issue 36
 
   SummaryReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

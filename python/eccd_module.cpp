@@ -22,6 +22,7 @@
 // its time_limit TimeoutError.
 #include "eccd/eccd.hpp"
 #include "api/animate.hpp"          // eccd.animate (issue 17 point 4)
+#include "api/pose_check.hpp"       // eccd.animate(poses=True) (issue 36)
 #include "api/separate_json.hpp"    // eccd.separate's dict: the same builder as `eccd separate --json`
 #include "compare/fcl_engine.hpp"   // eccd.fcl: FCL as a peer engine, as `eccd fcl` runs it
 #include "io/animation_reader.hpp"
@@ -856,7 +857,7 @@ PYBIND11_MODULE(_eccd, m) {
       "not built in; ValueError for a motion FCL cannot be given.");
 
   m.def("animate", [](const py::object& source, const std::string& arith, int threads, bool all_intervals, bool planes,
-                      double time_limit) {
+                      double time_limit, bool poses) {
         eccd::AnimateOptions o;
         o.solve.arith = eccd::parse_arithmetic(arith);
         if (threads < 1 || threads > 256) throw std::invalid_argument("threads=" + std::to_string(threads) + ": expected 1 to 256");
@@ -880,20 +881,23 @@ PYBIND11_MODULE(_eccd, m) {
           const eccd::Animation anim = eccd::animation_from_text(text, label);
           nlohmann::ordered_json j;
           j["format"] = eccd::kAnimationAnswerFormat;
-          const nlohmann::ordered_json body = eccd::animation_result_to_json(eccd::animate(anim, o));
+          const nlohmann::ordered_json body = poses ? eccd::poses_result_to_json(eccd::animate_poses(anim, o))
+                                                    : eccd::animation_result_to_json(eccd::animate(anim, o));
           for (const auto& it : body.items()) j[it.key()] = it.value();
           text = dump_text(j);
         }
         return json_loads(text);
       }, py::arg("animation"), py::arg("arith") = "double", py::arg("threads") = 2, py::arg("all_intervals") = false,
-      py::arg("planes") = true, py::arg("time_limit") = 0.0,
+      py::arg("planes") = true, py::arg("time_limit") = 0.0, py::arg("poses") = false,
       "Every checked pair of the animation (a file's path or an eccd.Animation) in every frame (docs/animation-format.md; "
       "api/animate.hpp): bounding spheres, the separating plane kept from the previous frame, then the continuous test in "
       "`arith` ('double', 'mpfr:BITS', 'exact', 'certified'); first contact only unless all_intervals. Returns the answer "
       "object of `eccd animate FILE --json` as a dict (format ellipse-ccd-animation-answer/1, without the program's "
       "\"version\"; its times are this run's). threads: pair-frames in parallel (the answer does not depend on it); "
       "planes=False is --no-planes; time_limit: seconds per pair-frame's solve (0: the pipelines' default), beyond it the "
-      "pair-frame is undecided. A missing file raises FileNotFoundError, a bad one SceneError naming the file and the JSON "
+      "pair-frame is undecided. poses=True is --poses (api/pose_check.hpp): the static test of each pair at each key pose, "
+      "the plane kept from pose to pose (000 section 4), arith 'double', 'exact' or 'certified', \"mode\": \"poses\". "
+      "A missing file raises FileNotFoundError, a bad one SceneError naming the file and the JSON "
       "place; a refused request ValueError.");
   m.def("separate", [](const py::object& scene_arg, const py::object& t, const std::string& arith) {
         static py::object Fraction = py::module_::import("fractions").attr("Fraction");

@@ -35,7 +35,7 @@ def without_times(answer):
     a = copy.deepcopy(answer)
     a.pop("version", None)
     a.pop("seconds", None)
-    for f in a.get("per_frame", []):
+    for f in a.get("per_frame", []) + a.get("per_pose", []):
         f.pop("ms", None)
     return a
 
@@ -67,6 +67,18 @@ def test_animate_options_reach_the_pipeline():
     assert got["stages"]["separating_plane"] == 0
     with_planes = eccd.animate(path, arith="double")
     assert with_planes["separating_plane_stage"] != "off"
+
+
+@pytest.mark.parametrize("arith", ["double", "certified"])
+def test_animate_poses_equals_the_command_line(arith):
+    path = os.path.join(SOURCE, "cases", "animations", "two-rows-3d.json")
+    got = eccd.animate(path, arith=arith, poses=True)
+    want = cli("animate", path, "--poses", "--arith", arith, "--json", "--quiet")
+    assert got["mode"] == "poses" and got["poses"] == got["frames"] + 1
+    assert without_times(got) == without_times(want)
+    assert all(e["status"] in ("touching", "overlapping") for e in got["events"])
+    with pytest.raises(ValueError):
+        eccd.animate(path, arith="mpfr:100", poses=True)
 
 
 def test_animate_errors():
