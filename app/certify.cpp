@@ -154,11 +154,11 @@ Command add_certify_command(CLI::App& app) {
                              "Certify one scene: the exact answer (collision intervals, first contact, external contacts, each "
                              "instant a proved rational bracket), a verdict for each double and MPFR pipeline (as published and guarded) against it, and a "
                              "certificate that `eccd check-certificate` re-checks without the solver. A cycloidal scene (not "
-                             "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/1): proved root brackets "
+                             "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/2): proved root brackets "
                              "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon. An independent "
                              "scene (3D) gets eccd-independent-certificate/1: its s- and t-intervals with the strip and Krawczyk "
                              "proofs about the exact F(u, s, t); exit 4 if the proof leaves a range undecided. --arith certified: a 3D scene with "
-                             "shared parameters gets eccd-bezier-certificate/1 (the interval Bezier proof's pieces and Krawczyk ends) "
+                             "shared parameters gets eccd-bezier-certificate/2 (the interval Bezier proof's pieces and Krawczyk ends) "
                              "when that proof decides it, else the exact certificate; 2D scenes (and independent ones) get the "
                              "certificate they get with --arith exact; the route taken is printed (JSON key \"route\").");
   auto* s = c.sub;
@@ -171,7 +171,7 @@ Command add_certify_command(CLI::App& app) {
   s->add_option("--tol", args->tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")->capture_default_str()->check(CLI::PositiveNumber);
   s->add_option("--arith", args->arith,
                 "exact: the exact pipeline's certificate; certified: 3D scenes try the interval Bezier proof first "
-                "(eccd-bezier-certificate/1) and fall back to the exact certificate; 2D and independent scenes: the certificate --arith exact writes")
+                "(eccd-bezier-certificate/2) and fall back to the exact certificate; 2D and independent scenes: the certificate --arith exact writes")
       ->capture_default_str()
       ->check(CLI::IsMember({"exact", "certified"}));
   s->add_flag("--no-floating", args->no_floating, "Certify only; do not run the floating pipelines");

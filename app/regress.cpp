@@ -94,7 +94,7 @@ Command add_regress_command(CLI::App& app) {
   s->add_flag("--certify", args->certify,
               "Also write each scene's certificate (in memory) and re-check it with the certificate checker; a certificate "
               "that cannot be made or fails its check fails the scene; with --arith certified a 3D scene's certificate is "
-              "the interval Bezier proof's (eccd-bezier-certificate/1) when that proof decides it, else the exact one "
+              "the interval Bezier proof's (eccd-bezier-certificate/2) when that proof decides it, else the exact one "
               "(the route is reported per scene)");
   s->add_option("--keep-certificates", args->keep_certificates,
                 "With --certify: also write each certificate into this folder (created if missing; file name: the scene's path "

@@ -513,12 +513,19 @@ CertificateCheck check_certificate_with_prover_algebra(const Scene& s, const nlo
 }
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
-  if (cycloidal_certificate_scene(s)) return check_cycloidal_certificate(s, scene_doc, cert);  // io/cycloidal_certificate.hpp
   if (independent_certificate_scene(s)) return check_independent_certificate(s, scene_doc, cert);  // io/independent_certificate.hpp
-  if (cert.is_object() && cert.contains("format") && cert["format"] == kBezierCertificateFormat) return check_bezier_certificate(s, scene_doc, cert);  // io/bezier_certificate.hpp
-  // eccd-certificate/2 (and anything else a rational shared-parameter scene is
-  // given): the independent checker, eccd-check's library (certificate/check/),
+  // eccd-certificate/2, eccd-bezier-certificate/2, eccd-cycloidal-certificate/2
+  // (and anything else a shared-parameter scene is given): the independent checker, eccd-check's library (certificate/check/),
   // on the scene's own text and the certificate.
+  if (cycloidal_certificate_scene(s)) {  // a cycloidal scene has one kind of certificate: say which when given another
+    const json fmt = cert.is_object() && cert.contains("format") ? cert["format"] : json();
+    if (fmt != kCycloidalCertificateFormat && fmt != "eccd-cycloidal-certificate/1") {
+      CertificateCheck out;
+      out.failed_claim = "certificate format";
+      out.reason = std::string("format: expected \"") + kCycloidalCertificateFormat + "\" for a cycloidal scene, got " + fmt.dump();
+      return out;
+    }
+  }
   const std::string scene_text = s.source_text.empty() ? scene_doc.dump() : s.source_text;
   const check::Verdict v = check::check_certificate_text(scene_text, s.path.empty() ? std::string("scene") : s.path, cert.dump(), "certificate");
   CertificateCheck out;

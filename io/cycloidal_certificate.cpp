@@ -94,7 +94,7 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
       if (left.hi < c && c < right.lo) kept.push_back(c);
     cuts = kept;
   }
-  json timeline = json::array(), gaps = json::array();
+  json timeline = json::array(), gaps = json::array(), proofs = json::array();
   std::vector<TimelineNode> seq;
   bool complete = true;
   for (std::size_t k = 0; k < inst.size(); ++k) {
@@ -111,7 +111,8 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
                        {"delta_prime", to_string(enc.derivative_sign_over(n.lo, n.hi))}};
     } else {
       complete = false;
-      e["epsilon"] = upper_decimal(enc.magnitude_upper(n.lo, n.hi));
+      // twice the writer's bound: the checker's own enclosures (certificate/check/cycloidal_certificate.cpp) are not the same
+      e["epsilon"] = upper_decimal(mpq_class(2 * enc.magnitude_upper(n.lo, n.hi)));
       e["claim"] = "touch or near miss within epsilon: |Delta(t)| <= epsilon on [lo, hi]; nothing else is claimed there";
     }
     Instant it = n.lo == n.hi ? bracketed_instant(n.lo, n.lo, n.hi) : bracketed_instant(mpq_class((n.lo + n.hi) / 2), n.lo, n.hi);
@@ -130,6 +131,15 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
     timeline.push_back({{"cell_sample", sample.get_str()}, {"status", to_string(cs)}});
     seq.push_back({bracketed_instant(sample, sample, sample), cs, true});
     for (const auto& c : gap_cuts[k]) gaps.push_back(c.get_str());
+    // the proof of each gap piece, named (the checker runs only that one)
+    std::vector<mpq_class> cut{a};
+    cut.insert(cut.end(), gap_cuts[k].begin(), gap_cuts[k].end());
+    cut.push_back(b);
+    for (std::size_t i = 0; i + 1 < cut.size(); ++i) {
+      const char* how = enc.root_free_by(cut[i], cut[i + 1]);
+      if (!how) throw CertificationError("the gap piece [" + cut[i].get_str() + ", " + cut[i + 1].get_str() + "] is not proved root-free");
+      proofs.push_back(how);
+    }
   }
   if (gaps.size() > kCycloidalMaxGapPoints) throw CertificationError("more gap points than the checker accepts");
   Answer ans;
@@ -146,6 +156,7 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
   cert["delta"] = {{"convention", kConvention}, {"precision_bits", bits}};
   cert["timeline"] = timeline;
   cert["gap_points"] = gaps;
+  cert["gap_proofs"] = proofs;
   cert["complete"] = complete;
   cert["answer"] = answer;
   cert["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -45,7 +45,7 @@
 
 namespace eccd {
 
-inline constexpr const char* kCycloidalCertificateFormat = "eccd-cycloidal-certificate/1";
+inline constexpr const char* kCycloidalCertificateFormat = "eccd-cycloidal-certificate/2";
 
 // A 2D scene with a cycloidal motion (and shared parameters): the scenes this certificate is for.
 bool cycloidal_certificate_scene(const Scene& s);

@@ -48,6 +48,16 @@ class CycloidalEnclosures {
     Sign sa = delta_sign_at(a), sb = delta_sign_at(b);
     return proved_nonzero(sa) && sa == sb;
   }
+  // The proof of root_free(a, b) a cycloidal certificate names (format 2's gap_proofs): "natural",
+  // "mean_value" or "monotone", or nullptr when none holds.
+  const char* root_free_by(const mpq_class& a, const mpq_class& b) const {
+    Sign s = sign(cycloidal_delta<MpfiInterval>(pair_, range(a, b)));
+    if (proved_nonzero(s)) return "natural";
+    if (proved_nonzero(sign(mean_value(a, b)))) return "mean_value";
+    if (!proved_nonzero(derivative_sign_over(a, b))) return nullptr;
+    Sign sa = delta_sign_at(a), sb = delta_sign_at(b);
+    return proved_nonzero(sa) && sa == sb ? "monotone" : nullptr;
+  }
   bool simple_root(const mpq_class& a, const mpq_class& b) const {
     Sign sa = delta_sign_at(a), sb = delta_sign_at(b);
     return proved_nonzero(sa) && proved_nonzero(sb) && sa != sb && proved_nonzero(derivative_sign_over(a, b));

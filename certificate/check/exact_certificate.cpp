@@ -11,6 +11,9 @@
 //   the checker from the checked timeline).
 #include "certificate/check/verdict.hpp"
 
+#include "certificate/check/claims.hpp"
+#include "certificate/check/kinds.hpp"
+
 #include "certificate/check/pencil.hpp"
 #include "certificate/check/qpoly.hpp"
 #include "certificate/check/scene.hpp"
@@ -28,127 +31,6 @@ namespace eccd::check {
 namespace {
 
 using json = nlohmann::json;
-
-struct Rejected {
-  std::string claim, reason;
-};
-[[noreturn]] void reject(const std::string& claim, const std::string& reason) { throw Rejected{claim, reason}; }
-
-const json& at(const json& j, const char* key, const std::string& place) {
-  if (!j.is_object()) reject("certificate format", place + ": expected an object");
-  if (!j.contains(key)) reject("certificate format", place + ": missing key \"" + key + "\"");
-  return j.at(key);
-}
-
-std::string shown(const json& j) {
-  std::string s = j.dump();
-  return s.size() > 40 ? s.substr(0, 40) + "..." : s;
-}
-
-// A certificate rational "[-]digits" or "[-]digits/digits" of at most max_bits bits (checked on the text first).
-mpq_class rational(const json& j, const std::string& place, std::size_t max_bits) {
-  if (!j.is_string()) reject("certificate format", place + ": expected a rational \"p/q\", got " + shown(j));
-  const std::string& s = j.get_ref<const std::string&>();
-  const std::size_t max_chars = 2 * (max_bits * 30103 / 100000 + 2) + 2;
-  if (s.size() > max_chars) reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) + " bits");
-  std::size_t i = s.size() && s[0] == '-' ? 1 : 0;
-  const std::size_t slash = s.find('/');
-  auto digits = [&](std::size_t a, std::size_t b) {
-    if (a >= b) return false;
-    for (std::size_t k = a; k < b; ++k)
-      if (!std::isdigit(static_cast<unsigned char>(s[k]))) return false;
-    return true;
-  };
-  const bool ok = slash == std::string::npos ? digits(i, s.size()) : digits(i, slash) && digits(slash + 1, s.size());
-  if (!ok) reject("certificate format", place + ": expected a rational \"p/q\", got " + shown(j));
-  mpq_class q;
-  if (slash == std::string::npos) {
-    q = mpq_class(mpz_class(s, 10));
-  } else {
-    mpz_class n(s.substr(0, slash), 10), d(s.substr(slash + 1), 10);
-    if (d == 0) reject("certificate format", place + ": zero denominator");
-    q = mpq_class(n, d);
-    q.canonicalize();
-  }
-  if (mpz_sizeinbase(q.get_num_mpz_t(), 2) > max_bits || mpz_sizeinbase(q.get_den_mpz_t(), 2) > max_bits)
-    reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) + " bits");
-  return q;
-}
-
-long long whole(const json& j, const std::string& place, long long lo, long long hi) {
-  long long v = 0;
-  bool ok = j.is_number_integer();
-  if (ok && j.is_number_unsigned()) ok = j.get<std::uint64_t>() <= std::uint64_t(std::max(hi, 0LL)), v = ok ? (long long)j.get<std::uint64_t>() : 0;
-  else if (ok) v = j.get<std::int64_t>();
-  if (!ok || v < lo || v > hi)
-    reject("certificate format", place + ": expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + shown(j));
-  return v;
-}
-
-enum class St { separate, touching, overlapping };
-const char* name(St s) { return s == St::separate ? "separate" : s == St::touching ? "touching" : "overlapping"; }
-St status_named(const json& j, const std::string& place) {
-  for (St s : {St::separate, St::touching, St::overlapping})
-    if (j.is_string() && j.get<std::string>() == name(s)) return s;
-  reject("certificate format", place + ": expected \"separate\", \"touching\" or \"overlapping\", got " + shown(j));
-}
-int sign_named(const json& j, const std::string& place) {
-  if (j == "negative") return -1;
-  if (j == "zero") return 0;
-  if (j == "positive") return 1;
-  reject("certificate format", place + ": expected \"negative\", \"zero\" or \"positive\", got " + shown(j));
-}
-
-std::string bracket_text(const mpq_class& lo, const mpq_class& hi) {
-  return lo == hi ? "[" + lo.get_str() + "]" : "[" + lo.get_str() + ", " + hi.get_str() + "]";
-}
-
-// A plain decimal "[-]digits[.digits][e[-]digits]": its value and the unit of its last digit.
-bool read_decimal(const std::string& s, std::size_t max_chars, mpq_class& value, mpq_class& unit) {
-  if (s.empty() || s.size() > max_chars) return false;
-  std::size_t i = 0;
-  bool neg = false;
-  if (s[0] == '-' || s[0] == '+') neg = s[i++] == '-';
-  std::string digits;
-  long places = 0;
-  bool dot = false;
-  for (; i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || (s[i] == '.' && !dot)); ++i) {
-    if (s[i] == '.') { dot = true; continue; }
-    digits += s[i];
-    if (dot) ++places;
-  }
-  if (digits.empty()) return false;
-  long ex = 0;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    bool eneg = false;
-    if (i < s.size() && (s[i] == '-' || s[i] == '+')) eneg = s[i++] == '-';
-    const std::size_t start = i;
-    for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
-      if (ex <= 100000) ex = ex * 10 + (s[i] - '0');
-    if (i == start || ex > 100000) return false;
-    if (eneg) ex = -ex;
-  }
-  if (i != s.size()) return false;
-  const long e = ex - places;
-  mpz_class p10, m(digits, 10);
-  mpz_ui_pow_ui(p10.get_mpz_t(), 10, (unsigned long)(e < 0 ? -e : e));
-  if (neg) m = -m;
-  value = e < 0 ? mpq_class(m, p10) : mpq_class(m * p10);
-  unit = e < 0 ? mpq_class(mpz_class(1), p10) : mpq_class(p10);
-  value.canonicalize();
-  unit.canonicalize();
-  return true;
-}
-
-// An approx lies in its bracket; for a point [r, r], r rounded to its own last digit.
-void check_approx(const json& a, const mpq_class& lo, const mpq_class& hi, const std::string& claim, const std::string& place, std::size_t max_chars) {
-  mpq_class v, u;
-  if (!a.is_string() || !read_decimal(a.get<std::string>(), max_chars, v, u))
-    reject(claim, place + ": approx must be a decimal string, got " + shown(a));
-  const bool ok = lo == hi ? abs(mpq_class(v - lo)) * 2 <= u : (lo <= v && v <= hi);
-  if (!ok) reject(claim, place + ": approx " + shown(a) + " lies outside its bracket " + bracket_text(lo, hi));
-}
 
 std::size_t primitive_bits(const QPoly& p) {  // τ: bits of the primitive integer multiple
   mpz_class l = 1, g = 0;
@@ -205,7 +87,7 @@ struct Checker {
     for (const char* k : {"dim", "a", "b"})
       if (at(s, k, "scene") != sc.doc.at(k))
         reject("scene", std::string("the certificate's \"") + k + "\" differs from the scene file's: it is a certificate for another scene");
-    if (sc.cycloidal) reject("certificate format", "the scene has a cycloidal motion: its certificate is an eccd-cycloidal-certificate/1");
+    if (sc.cycloidal) reject("certificate format", "the scene has a cycloidal motion: its certificate is an eccd-cycloidal-certificate/2");
     if (sc.independent) reject("certificate format", "the scene has independent motions: its certificate is an eccd-independent-certificate/1");
     for (const CheckObject* o : {&sc.a, &sc.b}) {
       const QPoly d = motion_determinant(o->M);
@@ -657,89 +539,6 @@ struct Checker {
     reject(n.name, "every subresultant coefficient s(j,j), j > k, vanishes at the root: impossible for a quartic");
   }
 
-  void answer_claim(const std::vector<Node>& seq) {
-    // Assemble: runs of nodes in collision (touching, overlapping), contacts, contact intervals.
-    auto in_c = [&](std::size_t k) { return seq[k].status != St::separate; };
-    auto touching_cell = [&](std::size_t k) { return k < seq.size() && seq[k].cell && seq[k].status == St::touching; };
-    for (std::size_t k = 1; k < seq.size(); k += 2)
-      if (in_c(k) && (!in_c(k - 1) || !in_c(k + 1)))
-        reject("timeline", seq[k].name + " is in collision but a neighbouring instant is separate: the collision set would not be closed");
-    using Br = std::pair<mpq_class, mpq_class>;
-    std::vector<std::pair<Br, Br>> intervals, contact_intervals;
-    std::vector<Br> contacts;
-    for (std::size_t k = 0; k < seq.size(); ++k) {
-      if (!touching_cell(k)) continue;
-      std::size_t e = k;
-      while (touching_cell(e + 2) && seq[e + 1].status == St::touching) e += 2;
-      contact_intervals.push_back({{seq[k - 1].lo, seq[k - 1].hi}, {seq[e + 1].lo, seq[e + 1].hi}});
-      k = e;
-    }
-    for (std::size_t k = 0; k < seq.size(); k += 2)
-      if (seq[k].status == St::touching && !touching_cell(k + 1) && !(k > 0 && touching_cell(k - 1))) contacts.push_back({seq[k].lo, seq[k].hi});
-    for (std::size_t k = 0; k < seq.size(); ++k) {
-      if (!in_c(k)) continue;
-      std::size_t e = k;
-      while (e + 1 < seq.size() && in_c(e + 1)) ++e;
-      intervals.push_back({{seq[k].lo, seq[k].hi}, {seq[e].lo, seq[e].hi}});
-      k = e;
-    }
-    compare_answer(intervals, contacts, contact_intervals);
-  }
-
-  void compare_answer(const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& intervals,
-                      const std::vector<std::pair<mpq_class, mpq_class>>& contacts,
-                      const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& contact_intervals) {
-    const json& a = at(cert, "answer", "certificate");
-    if (!a.is_object()) reject("certificate format", "answer: expected an object");
-    for (auto it = a.begin(); it != a.end(); ++it)
-      if (it.key() != "collides" && it.key() != "intervals" && it.key() != "first_contact" && it.key() != "contacts" && it.key() != "contact_intervals")
-        reject("certificate format", "answer." + it.key() + ": not a key of the answer");
-    const std::size_t chars = approx_chars;
-    auto inst = [&](const json& j, const std::string& place, const std::pair<mpq_class, mpq_class>& want) {
-      if (!j.is_object()) reject("certificate format", place + ": expected an instant {approx, lo, hi}");
-      for (auto it = j.begin(); it != j.end(); ++it)  // the answer is read back as an answer: nothing else may ride along
-        if (it.key() != "approx" && it.key() != "lo" && it.key() != "hi")
-          reject("certificate format", place + "." + it.key() + ": not a key of an instant (approx, lo, hi)");
-      const mpq_class lo = rational(at(j, "lo", place), place + ".lo", max_bits), hi = rational(at(j, "hi", place), place + ".hi", max_bits);
-      if (lo != want.first || hi != want.second)
-        reject("answer", place + ": the instant " + bracket_text(lo, hi) + " differs from the checked timeline's " + bracket_text(want.first, want.second));
-      check_approx(at(j, "approx", place), lo, hi, "answer", place + ".approx", chars);
-    };
-    const json& col = at(a, "collides", "answer");
-    const bool collides = !intervals.empty();
-    if (col != json(collides)) reject("answer", std::string("answer.collides is ") + shown(col) + " but the checked timeline proves " + (collides ? "a collision" : "there is none"));
-    auto pairs = [&](const char* key, const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& want, bool optional) {
-      const std::string place = std::string("answer.") + key;
-      if (optional && !a.contains(key)) {
-        if (!want.empty())
-          reject("answer", place + " is missing but the checked timeline has " + std::to_string(want.size()) +
-                               " (continuous touching): it would pass a continuous touch off as an overlap");
-        return;
-      }
-      const json& l = at(a, key, "answer");
-      if (!l.is_array()) reject("certificate format", place + ": expected an array");
-      if (l.size() != want.size())
-        reject("answer", "the checked timeline gives " + std::to_string(want.size()) + " " + key + ", the certificate " + std::to_string(l.size()) +
-                             (std::string(key) == "contact_intervals" && l.size() < want.size() ? ": it would pass a continuous touch off as an overlap" : ""));
-      for (std::size_t i = 0; i < l.size(); ++i) {
-        const std::string p = place + "[" + std::to_string(i) + "]";
-        if (!l[i].is_array() || l[i].size() != 2) reject("certificate format", p + ": expected [start, end]");
-        inst(l[i][0], p + "[0]", want[i].first);
-        inst(l[i][1], p + "[1]", want[i].second);
-      }
-    };
-    pairs("intervals", intervals, false);
-    pairs("contact_intervals", contact_intervals, true);
-    const json& fc = at(a, "first_contact", "answer");
-    if (intervals.empty() != fc.is_null()) reject("answer", "first_contact must be " + std::string(intervals.empty() ? "null" : "the start of the first interval"));
-    if (!intervals.empty()) inst(fc, "answer.first_contact", intervals.front().first);
-    const json& cs = at(a, "contacts", "answer");
-    if (!cs.is_array()) reject("certificate format", "answer.contacts: expected an array");
-    if (cs.size() != contacts.size()) reject("answer", "the checked timeline gives " + std::to_string(contacts.size()) + " contact(s), the certificate " + std::to_string(cs.size()));
-    for (std::size_t i = 0; i < cs.size(); ++i) inst(cs[i], "answer.contacts[" + std::to_string(i) + "]", contacts[i]);
-    checked.push_back("answer: assembled by the checker from the checked timeline, equal to the certificate's");
-  }
-
   void run() {
     const json& fmt = at(cert, "format", "certificate");
     if (fmt != "eccd-certificate/2")
@@ -755,7 +554,7 @@ struct Checker {
       const Br z{0, 0}, o{1, 1};
       std::vector<std::pair<Br, Br>> iv{{z, o}}, ci;
       if (st == St::touching) ci.push_back({z, o});
-      compare_answer(iv, {}, ci);
+      compare_answer(cert, iv, {}, ci, max_bits, approx_chars, checked);
       return;
     }
     timeline_claim();
@@ -765,75 +564,15 @@ struct Checker {
       for (std::size_t k = 2; k + 2 < nodes.size(); k += 2)
         if (nodes[k].status == St::overlapping && nodes[k - 1].status == St::separate && nodes[k + 1].status == St::separate)
           reject("timeline", "the statuses contradict 003 Theorem 6: an overlapping instant between two separate cells");
-    answer_claim(nodes);
+    answer_claim(cert, nodes, max_bits, approx_chars, checked);
   }
 };
 
-std::string read_file(const std::string& path, bool& ok) {
-  std::ifstream in(path, std::ios::binary);
-  ok = bool(in);
-  std::ostringstream o;
-  if (ok) o << in.rdbuf();
-  return o.str();
-}
-
 }  // namespace
 
-bool covers_format(const std::string& format) { return format == "eccd-certificate/2"; }
-
-Verdict check_certificate_text(const std::string& scene_text, const std::string& scene_label, const std::string& cert_text, const std::string& cert_label) {
-  Verdict v;
-  CheckScene sc;
-  StrictDocument cert;
-  try {
-    StrictDocument sd = parse_strict(scene_text, scene_label);
-    if (!sd.structure_problem.empty()) throw SceneReadError(scene_label + ": " + sd.structure_problem);
-    sc = read_check_scene(sd.value, scene_label);
-    cert = parse_strict(cert_text, cert_label);
-  } catch (const std::exception& e) {
-    v.outcome = Outcome::unreadable;
-    v.claim = "input";
-    v.reason = e.what();
-    return v;
-  }
-  try {
-    if (!cert.structure_problem.empty()) reject("certificate format", cert.structure_problem);
-    if (!cert.value.is_object()) reject("certificate format", "top level: expected an object");
-    const json& fmt = at(cert.value, "format", "certificate");
-    if (!fmt.is_string() || (!covers_format(fmt.get<std::string>()) && fmt != "eccd-certificate/1")) {
-      v.outcome = Outcome::unreadable;
-      v.claim = "certificate format";
-      v.reason = "format " + shown(fmt) + " is not covered by this checker (it covers eccd-certificate/2; `eccd check-certificate` checks the others)";
-      return v;
-    }
-    Checker c(sc, cert.value, v.checked);
-    c.run();
-    v.outcome = Outcome::valid;
-  } catch (const Rejected& r) {
-    v.outcome = Outcome::rejected;
-    v.claim = r.claim;
-    v.reason = r.reason;
-  } catch (const std::bad_alloc&) {
-    throw;
-  } catch (const std::exception& e) {  // arithmetic refused (a division by zero in a forged input): rejected, not a crash
-    v.outcome = Outcome::rejected;
-    v.claim = "certificate format";
-    v.reason = std::string("the certificate cannot be checked: ") + e.what();
-  }
-  return v;
-}
-
-Verdict check_certificate_files(const std::string& scene_path, const std::string& cert_path) {
-  bool ok1 = false, ok2 = false;
-  const std::string s = read_file(scene_path, ok1), c = read_file(cert_path, ok2);
-  if (!ok1 || !ok2) {
-    Verdict v;
-    v.outcome = Outcome::unreadable;
-    v.claim = "input";
-    v.reason = (!ok1 ? scene_path : cert_path) + ": cannot be read";
-    return v;
-  }
-  return check_certificate_text(s, scene_path, c, cert_path);
+void check_exact_certificate(const CheckScene& sc, const json& cert, std::vector<std::string>& checked) {
+  Checker c(sc, cert, checked);
+  c.run();
 }
 
 }  // namespace eccd::check

@@ -195,6 +195,15 @@ void motion_of(const json& j, int H, CheckObject& o, bool& cycloidal, const std:
     o.M[3][3] = E * v3;
   } else if (o.motion_type == "cycloidal") {
     cycloidal = true;
+    if (H != 3) fail(label, place, "a cycloidal motion is 2D only");
+    const json& a = member(j, "angle_over_pi", label, place);
+    const json& tr = member(j, "translation", label, place);
+    if (!a.is_array() || a.size() != 2) fail(label, place + "/angle_over_pi", "expected [theta0, theta1]");
+    if (!tr.is_array() || tr.size() != 2 || !tr[0].is_array() || tr[0].size() != 2 || !tr[1].is_array() || tr[1].size() != 2)
+      fail(label, place + "/translation", "expected [[x0, x1], [y0, y1]]");
+    o.cycloid = {scene_number(a[0], label, place + "/angle_over_pi/0"), scene_number(a[1], label, place + "/angle_over_pi/1"),
+                 scene_number(tr[0][0], label, place + "/translation/0/0"), scene_number(tr[0][1], label, place + "/translation/0/1"),
+                 scene_number(tr[1][0], label, place + "/translation/1/0"), scene_number(tr[1][1], label, place + "/translation/1/1")};
   } else {
     fail(label, place + "/type", "unknown motion type \"" + o.motion_type + "\"");
   }

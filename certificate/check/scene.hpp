@@ -7,7 +7,8 @@
 // depend on it. This reader takes the scene's JSON (certificate/check/
 // strict_json.hpp) and gives, in exact rationals:
 //   - dim (2 or 3), whether the motions are independent, and whether a
-//     motion is cycloidal (not rational: no exact certificate applies);
+//     motion is cycloidal (not rational: no exact certificate applies), with
+//     its parameters θ0, θ1, x0, x1, y0, y1 (scene-format.md);
 //   - each object's shape matrix Q (H = dim + 1; X^T Q X <= 0 the solid):
 //     semi_axes a_i give diag(1/a_i², ..., -1), semi_axes_squared s_i give
 //     diag(1/s_i, ..., -1), matrix is taken as written;
@@ -46,6 +47,7 @@ struct CheckObject {
   QMatrix Q;
   PolyMatrix M;            // empty for a cycloidal motion
   std::string motion_type;  // static, matrix, kinematic, euler, cycloidal
+  std::vector<mpq_class> cycloid;  // cycloidal: θ0, θ1, x0, x1, y0, y1 (angle π(θ0 + θ1 t), translation (x0 + x1 t, y0 + y1 t))
 };
 
 struct CheckScene {

@@ -262,7 +262,7 @@ TEST_CASE("long keys are cut, NUL bytes named, unreadable files named", "[cli][r
   Run c = run_eccd("check-certificate " + q(bad("cycloidal_exact.json")) + " " + q(bad("cycloidal_exact.json")), 30);
   INFO("stderr: " << c.err << " stdout: " << c.out);
   CHECK(c.code == 1);
-  CHECK(contains(c.out, "eccd-cycloidal-certificate/1"));
+  CHECK(contains(c.out, "eccd-cycloidal-certificate/2"));
 }
 
 // ---- item 8: long commands -------------------------------------------------------

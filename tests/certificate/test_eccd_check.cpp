@@ -103,15 +103,19 @@ TEST_CASE("eccd-check: exit 2 for an unreadable file, malformed JSON, bad argume
   const fs::path d = temp_dir("eccd-check");
   const std::string scene = src + "/cases/paper003/example2-towards-1e-9.json";
   std::ofstream(d / "broken.json") << "{\"format\": ";
-  std::ofstream(d / "cycloidal.json") << "{\"format\": \"eccd-cycloidal-certificate/1\"}";
+  std::ofstream(d / "cycloidal.json") << "{\"format\": \"eccd-unknown-certificate/1\"}";
+  std::ofstream(d / "cycloidal-1.json") << "{\"format\": \"eccd-cycloidal-certificate/1\"}";
   std::string out;
   CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "missing.json").string()), out) == 2);
   CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "broken.json").string()), out) == 2);
   CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "cycloidal.json").string()), out) == 2);
+  CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "cycloidal-1.json").string()), out) == 1);  // an older version: refused, saying so
+  CHECK(out.find("older version") != std::string::npos);
   CHECK(run(q(checker) + " " + q(scene), out) == 2);
   CHECK(run(q(checker) + " --bogus " + q(scene) + " " + q(data + "valid-2d.cert.json"), out) == 2);
   CHECK(check::covers_format("eccd-certificate/2"));
   CHECK_FALSE(check::covers_format("eccd-bezier-certificate/1"));
+  CHECK(check::covers_format("eccd-bezier-certificate/2"));
   fs::remove_all(d);
 }
 

@@ -163,7 +163,7 @@ TEST_CASE("bezier certificate: every kind of tampering is rejected naming the cl
   {  // an oversized number (denial of service): refused before it is parsed
     json t = cert;
     t["pieces"][out]["lo"] = "1/" + std::string(3000, '7');
-    rejected(c, t, "certificate format", "at most 1024 bits");
+    rejected(c, t, "certificate format", "1024 bits");
   }
   {  // too many chain boxes
     json t = cert;
@@ -175,6 +175,40 @@ TEST_CASE("bezier certificate: every kind of tampering is rejected naming the cl
     json t = cert;
     t["scene"]["b"]["shape"]["semi_axes"][0] = "3";
     rejected(c, t, "scene");
+  }
+  {  // format 2's own claims (eccd-check: certificate/check/bezier_certificate.cpp): the net changed by one in one coefficient
+    json t = cert;
+    json& x = t["net"]["coefficients"][2][0];
+    x = mpq_class(rq(x) + 1).get_str();
+    rejected(c, t, "net", "differs");
+  }
+  {  // a stated shape that is not a positive multiple of the scene's
+    json t = cert;
+    for (auto& row : t["net"]["shape_a"])
+      for (auto& x : row) x = mpq_class(-rq(x)).get_str();
+    rejected(c, t, "net", "positive multiple");
+  }
+  {  // a stated inverse motion that is not one
+    json t = cert;
+    json& p = t["net"]["inverse_b"][0][0];
+    p = json::array({"1", "1"});
+    rejected(c, t, "net");
+  }
+  {  // the exclusion tree cut short, and its root claimed a leaf (the whole strip is not of one sign)
+    json t = cert;
+    std::string tree = t["pieces"][end]["exclusion"].get<std::string>();
+    REQUIRE(tree.size() > 1);
+    t["pieces"][end]["exclusion"] = tree.substr(0, tree.size() - 1);
+    rejected(c, t, "piece " + std::to_string(end + 1) + " (end", "ends early");
+    t["pieces"][end]["exclusion"] = "0";
+    rejected(c, t, "piece " + std::to_string(end + 1) + " (end", "not excluded");
+    t["pieces"][end]["exclusion"] = tree + "0";
+    rejected(c, t, "certificate format", "after the end of the tree");
+  }
+  {  // the old format is refused, saying so
+    json t = cert;
+    t["format"] = "eccd-bezier-certificate/1";
+    rejected(c, t, "certificate format", "older version");
   }
 }
 
