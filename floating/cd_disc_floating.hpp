@@ -40,9 +40,10 @@ struct FloatingPolicy {
   Basis basis = Basis::bernstein;
   int bits = 53;
   T like;
-  // Δ in the Hessian form (kernel/cd_disc.hpp, discriminant_of; issue 21): plain double and MPFR. With a
-  // running error bound the classic formula stays (its bounds, and so the certified ladder's escalations, as before).
-  static constexpr bool delta_from_hessian = !has_error_bound_v<T>;
+  // Δ in the Hessian form (kernel/cd_disc.hpp, discriminant_of; issue 21), in every face: with a running
+  // error bound too (issue 30 point 5: fewer and shorter products for the guard, and its values are then
+  // bit for bit the as-published ones, so where the guard decides it gives the published answer).
+  static constexpr bool delta_from_hessian = true;
   long max_pieces = 20000;               // root isolation work bound (per polynomial)
   mutable std::string trouble;           // "" or why nothing can be decided (a non-finite value)
   mutable std::vector<std::string> notes;  // why parts were left undecided (work bound, deadline)

@@ -28,6 +28,7 @@
 #include "kernel/binomial.hpp"
 #include "kernel/polynomial.hpp"
 #include "kernel/sign_variations.hpp"
+#include "number/running_error_loops.hpp"
 
 #include <algorithm>
 #include <span>
@@ -42,6 +43,10 @@ namespace eccd {
 template <class T>
 void de_casteljau_in_place(std::span<T> w, const T& t) {
   T s = T(1) - t;
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+    running_error_loops::de_casteljau(w, s, t, nullptr);
+    return;
+  }
   for (int r = 1; r < int(w.size()); ++r)
     for (int i = 0; i + r < int(w.size()); ++i) { T x = s * w[i]; T y = t * w[i + 1]; w[i] = x + y; }
 }
@@ -72,6 +77,10 @@ template <class T>
 void keep_right(std::span<T> c, const T& tau) {
   const int n = int(c.size()) - 1;
   T s = T(1) - tau;
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+    running_error_loops::de_casteljau(c, s, tau, nullptr);
+    return;
+  }
   for (int r = 1; r <= n; ++r)
     for (int i = 0; i + r <= n; ++i) { T x = s * c[i]; T y = tau * c[i + 1]; c[i] = x + y; }
 }
@@ -79,6 +88,13 @@ template <class T>
 void keep_left(std::span<T> c, const T& tau) {
   const int n = int(c.size()) - 1;
   T s = T(1) - tau;
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30): split's left piece
+    thread_local std::vector<T> left;
+    left.resize(c.size());
+    running_error_loops::de_casteljau(c, s, tau, left.data());
+    std::copy(left.begin(), left.end(), c.begin());
+    return;
+  }
   // round r computes the same values as split()'s, stored one place to the right (c[i + r] for its w[i])
   for (int r = 1; r <= n; ++r)
     for (int i = n; i >= r; --i) { T x = s * c[i - 1]; T y = tau * c[i]; c[i] = x + y; }
@@ -111,6 +127,10 @@ Bern<T> to_bernstein(const Poly<T>& p, int n) {  // n >= degree(p)
   const std::vector<T>& cn = binomial_row(n, like);
   for (int k = 0; k <= n; ++k) {
     const std::vector<T>& ck = binomial_row(k, like);
+    if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+      r.b[k] = running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1);
+      continue;
+    }
     T acc = T(0);
     for (int i = 0; i <= k && i <= p.degree(); ++i) { T term = ck[i] * p.c[i] / cn[i]; acc = acc + term; }
     r.b[k] = acc;
@@ -202,8 +222,11 @@ Bern<T> operator*(const Bern<T>& x, const Bern<T>& y) {
   for (int j = 0; j <= n; ++j) ys[j] = cn[j] * y.b[j];
   Bern<T> r;
   r.b.assign(m + n + 1, T(0));
-  for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= n; ++j) { T p = xs[i] * ys[j]; r.b[i + j] = r.b[i + j] + p; }
+  if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass (issue 30)
+    running_error_loops::convolve(std::span<const T>(xs), std::span<const T>(ys), std::span<T>(r.b));
+  else
+    for (int i = 0; i <= m; ++i)
+      for (int j = 0; j <= n; ++j) { T p = xs[i] * ys[j]; r.b[i + j] = r.b[i + j] + p; }
   for (int k = 0; k <= m + n; ++k) r.b[k] = r.b[k] / cmn[k];
   return r;
 }
@@ -235,6 +258,10 @@ std::pair<Bern<T>, Bern<T>> split(const Bern<T>& q, const T& tau) {
   left.b.resize(n + 1);
   left.b[0] = w[0];
   T s = T(1) - tau;
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+    running_error_loops::de_casteljau(std::span<T>(w), s, tau, left.b.data());
+    return {std::move(left), std::move(right)};
+  }
   for (int r = 1; r <= n; ++r) {
     for (int i = 0; i + r <= n; ++i) { T x = s * w[i]; T y = tau * w[i + 1]; w[i] = x + y; }
     left.b[r] = w[0];

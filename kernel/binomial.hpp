@@ -14,6 +14,11 @@
 // calls for different degrees and precisions may interleave freely, and
 // threads share nothing. The values are those of the uncached Pascal rule.
 // Requirements on T: +, construction from int. Rounded for n > 56 in double.
+// Bounded<double> (the guard, number/running_error.hpp): an entry of at most
+// 2^53 whose two parents are exact is exact (a sum of integers below 2^53),
+// so it carries the bound 0 instead of the generic sum's u|C(n, k)| (issue
+// 30 point 5: the guard's bounds as tight as the arithmetic allows).
+#include "number/running_error.hpp"
 #include "number/scalar_traits.hpp"
 
 #include <deque>
@@ -34,7 +39,11 @@ const std::vector<T>& binomial_row(int n, const T& like) {
     const std::vector<T>& row = rows.back();
     const int m = int(row.size());
     std::vector<T> next(m + 1, row[0]);  // row[0] is the run's one
-    for (int k = 1; k < m; ++k) next[k] = row[k - 1] + row[k];
+    for (int k = 1; k < m; ++k) {
+      next[k] = row[k - 1] + row[k];
+      if constexpr (std::is_same_v<T, Bounded<double>>)
+        if (row[k - 1].bound() == 0 && row[k].bound() == 0 && next[k].value() <= 0x1p53) next[k] = T(next[k].value(), 0);
+    }
     rows.push_back(std::move(next));
   }
   return rows[n];

@@ -31,6 +31,7 @@
 #include "kernel/pipeline_result.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
+#include "number/mpfr_real.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,14 +41,48 @@
 
 namespace eccd {
 
+// Why a rounded run left an instant undecided when its policy gave no note.
+// Only an enclosing arithmetic (an error bound, an interval) knows that a sign
+// is "too close to zero"; plain double or MPFR (the as-published face, issue
+// 30 point 4) has no bound, and leaves an instant undecided for one of two
+// reasons the pipeline can tell apart (cd_disc below):
+//   own_sign   the values computed there give no status: f's coefficients
+//              read with 1 or 3 sign changes (impossible for two ellipses in
+//              exact arithmetic, contact_status.hpp), or a NaN;
+//   isolated   a root of Δ the rounded computation placed between two
+//              separate cells where P and D did not read as a touch
+//              (collision_timeline.hpp: a spurious root, or a touch the
+//              rounded values could not place).
+enum class PlainUndecided { none = 0, own_sign = 1, isolated = 2 };
+inline PlainUndecided operator|(PlainUndecided a, PlainUndecided b) { return PlainUndecided(int(a) | int(b)); }
+inline bool has(PlainUndecided a, PlainUndecided b) { return (int(a) & int(b)) != 0; }
+
+template <class T>
+constexpr bool plain_rounded() {  // plain T: no bound of its own (double, Mpfr)
+  return !scalar_traits<T>::is_exact && (std::is_same_v<T, double> || std::is_same_v<T, Mpfr>);
+}
+
 // The reasons a floating policy gave, once each, if anything is undecided.
 template <class T, PipelinePolicy<T> Policy>
-void collect_reasons(PipelineResult<T>& res, const Policy& pol) {
+void collect_reasons(PipelineResult<T>& res, const Policy& pol, PlainUndecided plain = PlainUndecided::none) {
   if (res.answer.undecided.empty()) return;
   for (const auto& n : policy_hooks::notes(pol))
     if (std::find(res.undecided_reasons.begin(), res.undecided_reasons.end(), n) == res.undecided_reasons.end())
       res.undecided_reasons.push_back(n);
-  if (res.undecided_reasons.empty()) res.undecided_reasons.push_back("a sign too close to zero to decide in this arithmetic");
+  if (!res.undecided_reasons.empty()) return;
+  if constexpr (plain_rounded<T>()) {
+    if (has(plain, PlainUndecided::isolated))
+      res.undecided_reasons.push_back("a root of Δ the rounded computation placed between two separate cells, where P and D did "
+                                      "not read as a touch (a spurious root, or a touch it could not place): no status there");
+    if (has(plain, PlainUndecided::own_sign))
+      res.undecided_reasons.push_back("the rounded values of f's coefficients at an instant give no status (a sign pattern "
+                                      "impossible for two ellipses, or a NaN): no status there");
+    if (plain == PlainUndecided::none)  // a pipeline that does not tell (ccd_projection.hpp)
+      res.undecided_reasons.push_back("the rounded values at an instant give no status (signs that match no configuration, "
+                                      "or a NaN): no status there");
+  } else {
+    res.undecided_reasons.push_back("a sign too close to zero to decide in this arithmetic");
+  }
 }
 
 // The contact point of Lemma 5: the null vector of λ0 A(t) - B(t), λ0 = P / (2D).
@@ -96,8 +131,9 @@ std::pair<T, T> start_run(PipelineResult<T>& res, const Policy& pol, const T& li
   return {scalar_traits<T>::from_rational(mpq_class(0), like), scalar_traits<T>::from_rational(mpq_class(1), like)};
 }
 template <class T, PipelinePolicy<T> Policy>
-PipelineResult<T> finish_run(PipelineResult<T>& res, const Policy& pol, std::chrono::steady_clock::time_point start) {
-  collect_reasons(res, pol);
+PipelineResult<T> finish_run(PipelineResult<T>& res, const Policy& pol, std::chrono::steady_clock::time_point start,
+                             PlainUndecided plain = PlainUndecided::none) {
+  collect_reasons(res, pol, plain);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }
@@ -156,7 +192,8 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
   const std::pair<T, T> ends = start_run(res, pol, pair.qa[0][0]);
   const T &zero = ends.first, &one = ends.second;
   const auto& g = res.g;
-  auto finish = [&]() { return finish_run(res, pol, start); };
+  PlainUndecided plain = PlainUndecided::none;  // why plain T left instants undecided (collect_reasons)
+  auto finish = [&]() { return finish_run(res, pol, start, plain); };
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
 
   auto status_at = [&](const T& t) { return policy_hooks::settle_status(pol, t, cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t))); };
@@ -253,7 +290,15 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
     if (r) push({pol.instant(*r), root_status(*r), false}, r);
   }
   push({i1, endpoint_status(one, root1), false}, root1);
-  check_isolated_instants(seq, scalar_traits<T>::is_exact);
+  for (const auto& n : seq)
+    if (n.status == Status::uncertain) plain = plain | PlainUndecided::own_sign;
+  {
+    std::size_t before = 0, after = 0;
+    for (const auto& n : seq) before += n.status == Status::uncertain;
+    check_isolated_instants(seq, scalar_traits<T>::is_exact);
+    for (const auto& n : seq) after += n.status == Status::uncertain;
+    if (after > before) plain = plain | PlainUndecided::isolated;
+  }
   res.timeline = seq;
   for (std::size_t k = 0; k < seq.size(); ++k)
     if (!seq[k].is_cell && node_root[k]) res.critical.push_back({seq[k].t, seq[k].status, pol.multiplicity(*node_root[k])});

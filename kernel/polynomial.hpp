@@ -15,6 +15,7 @@
 #include "number/integer_poly_product.hpp"
 #include "number/rational_convolution.hpp"
 #include "number/rational_poly_eval.hpp"
+#include "number/running_error_loops.hpp"
 #include "number/scalar_traits.hpp"
 
 #include <algorithm>
@@ -47,6 +48,8 @@ struct Poly {
     if (c.empty()) return U(0);
     if constexpr (std::is_same_v<T, mpq_class> && std::is_same_v<U, mpq_class>)  // exact: integer Horner (number/rational_poly_eval.hpp)
       return rational_poly_eval(c, t);
+    if constexpr (std::is_same_v<T, Bounded<double>> && std::is_same_v<U, Bounded<double>>)  // the bound in the same pass (issue 30)
+      return running_error_loops::horner(std::span<const T>(c), t);
     U r = U(c.back());
     for (int i = int(c.size()) - 2; i >= 0; --i) { r = r * t; r = r + U(c[i]); }
     return r;
@@ -86,8 +89,11 @@ struct Poly {
       }
     }
     r.c.assign(a.c.size() + b.c.size() - 1, T(0));
-    for (std::size_t i = 0; i < a.c.size(); ++i)
-      for (std::size_t j = 0; j < b.c.size(); ++j) { T p = a.c[i] * b.c[j]; r.c[i + j] = r.c[i + j] + p; }
+    if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass (issue 30)
+      running_error_loops::convolve(std::span<const T>(a.c), std::span<const T>(b.c), std::span<T>(r.c));
+    else
+      for (std::size_t i = 0; i < a.c.size(); ++i)
+        for (std::size_t j = 0; j < b.c.size(); ++j) { T p = a.c[i] * b.c[j]; r.c[i + j] = r.c[i + j] + p; }
     r.trim();
     return r;
   }

@@ -35,7 +35,7 @@ Definitions used throughout (they are repeated in report.md):
                            (an isolated contact: a double root no finite precision splits) are not
                            counted there but shown in rows of their own (MPFR bits per family, all
                            bases pooled); what keeps a precision up is classified by `reason`
-                           (REASON_CLASSES: wrong, error bound, Bézier unresolved, work bound,
+                           (REASON_CLASSES: wrong, error bound, no status, Bézier unresolved, work bound,
                            overflow, time-out).
   time                     medians of time_us over rows whose outcome is not `error` (an error row
                            has no measured time; the harness writes 0 there).
@@ -1354,6 +1354,9 @@ def d_span(rows):
 REASON_CLASSES = (
     ("wrong", "a false positive or negative: the precision was too low and the pipeline did not notice"),
     ("error bound", "a sign too close to zero to decide in this arithmetic (CD-DISC's error bound): more bits help"),
+    ("no status", "as published (no error bound): the rounded values gave no status at an instant (f's signs in a "
+                  "pattern impossible for two ellipses, a NaN, or a root of Δ between separate cells that did not read "
+                  "as a touch): more bits help"),
     ("Bézier unresolved", "a status or contact the Bézier method could not resolve in this arithmetic: its error "
                           "bound, or two shots meeting within its touch tolerance 2^-(bits/2) at a tangency, which "
                           "more bits do not split"),
@@ -1385,6 +1388,8 @@ def reason_class(r):
         return "Bézier unresolved"
     if "too close to zero" in why:
         return "error bound"
+    if "no status there" in why:  # kernel/cd_disc.hpp collect_reasons, plain T (issue 30 point 4)
+        return "no status"
     return "undecided"
 
 

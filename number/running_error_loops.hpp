@@ -1,0 +1,159 @@
+#pragma once
+// The guard's inner loops in one pass: a convolution and a de Casteljau
+// triangle of Bounded<double> values (number/running_error.hpp) whose error
+// bounds are accumulated beside the plain-double values in the same loop,
+// with the rounding of the bound's own arithmetic covered once per output
+// instead of once per operation (issue 30 point 5: the guard's cost).
+//
+// Statement (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd
+// ed., sections 2.2, 3.1 and 5.1: the running error bound of Horner's rule,
+// here of the two loops that build and subdivide Δ). The values are computed
+// by exactly the plain-double operations of the generic loops they replace,
+// in the same order (no FMA: the project builds without -mfma), so they are
+// bit for bit those of Bounded<double>'s operators and of plain double. The
+// bounds are those of Bounded<double>'s operators, summed per output:
+//   product p = fl(a b):  |ab - exact| <= |a| eb + |b| ea + ea eb, plus the
+//       rounding u|p| (|fl(x) - x| <= u|fl(x)|, round to nearest) and, if it
+//       underflows, at most 2^-1075;
+//   sum r = fl(r' + p):   the rounding u|r| (sums of doubles that underflow
+//       are exact);
+//   so the convolution c_k = sum_{i+j=k} x_i y_j carries
+//       E_k = sum (|x_i| ey_j + ex_i (|y_j| + ey_j)) + u sum (|p| + |r|),
+//   and one step of de Casteljau, w_i <- s w_i + t w_{i+1}, carries
+//       |s| e_i + es (|w_i| + e_i) + |t| e_{i+1} + et (|w_{i+1}| + e_{i+1})
+//       + u (|x| + |y| + |w_i new|).
+// Rounding of the bound's arithmetic: every bound quantity is a sum or a
+// product of non-negative doubles rounded to nearest, so each rounding makes
+// it at least (1 - u) times its exact value; a quantity reached through at
+// most k roundings is at least (1 - u)^k times the exact bound expression,
+// and (1 - u)^-k <= 1 + 2ku for ku <= 1/2. A convolution output of `terms`
+// terms is at most 2 terms + 8 roundings deep, a de Casteljau output after L
+// levels at most 8 L + 8: each output is multiplied once by
+// 1 + (terms + 8) 2^-50, resp. 1 + (8 L + 8) 2^-51, which is at least
+// 1 + 2ku. Underflow of a product of the bound (values are normalised, so
+// this is theoretical) loses at most 2^-1075 each: 2^-1072 per term or step
+// covers the value's and the bound's products together.
+// The per-operation enlargement 2^-50 of Bounded<double> is replaced by these
+// factors, so the bounds differ from the operator-by-operation ones only in
+// the last bits (both are upper bounds of the same error).
+// The conversion's terms a c / d (sum_of_ratios) add the quotient's
+// rounding u|q| and the division bound of Bounded's operator/.
+// Requirements: Bounded<double> only (the double guard); Bounded<Mpfr> keeps
+// the generic loops.
+#include "number/running_error.hpp"
+
+#include <cmath>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace eccd::running_error_loops {
+
+using BD = Bounded<double>;
+inline constexpr double kU = 0x1p-53;
+inline constexpr double kTiny = 0x1p-1072;  // per term or step: value and bound products that underflow
+
+// out[k] = sum_{i+j=k} x[i] * y[j], accumulated i outer, j inner from 0 (the
+// generic loop's order); out.size() == x.size() + y.size() - 1.
+inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD> out) {
+  const std::size_t m1 = x.size(), n1 = y.size(), K = out.size();
+  thread_local std::vector<double> yv, ya, ye, yae, rv, mu, E;
+  yv.resize(n1); ya.resize(n1); ye.resize(n1); yae.resize(n1);
+  for (std::size_t j = 0; j < n1; ++j) {
+    yv[j] = y[j].value();
+    ya[j] = std::fabs(yv[j]);
+    ye[j] = y[j].bound();
+    yae[j] = ya[j] + ye[j];
+  }
+  rv.assign(K, 0.0);
+  mu.assign(K, 0.0);
+  E.assign(K, 0.0);
+  for (std::size_t i = 0; i < m1; ++i) {
+    const double xv = x[i].value(), xa = std::fabs(xv), xe = x[i].bound();
+    double* r = rv.data() + i;
+    double* m = mu.data() + i;
+    double* e = E.data() + i;
+    for (std::size_t j = 0; j < n1; ++j) {
+      const double p = xv * yv[j];
+      const double s = r[j] + p;
+      r[j] = s;
+      m[j] += std::fabs(p) + std::fabs(s);
+      e[j] += xa * ye[j] + xe * yae[j];
+    }
+  }
+  for (std::size_t k = 0; k < K; ++k) {
+    const std::size_t lo = k + 1 > n1 ? k + 1 - n1 : 0, hi = std::min(k, m1 - 1);
+    const double terms = hi >= lo ? double(hi - lo + 1) : 0.0;
+    const double b = (E[k] + kU * mu[k] + terms * kTiny) * (1.0 + (terms + 8.0) * 0x1p-50);
+    out[k] = BD(rv[k], b);
+  }
+}
+
+// The de Casteljau triangle at t in place on w (s = 1 - t, both with their
+// bounds, as the generic loop computes them). If left is non-null, left[r]
+// receives w[0] after round r (r = 0..n): split()'s left piece; w ends as
+// the right piece (its entry i after round n - i), or w[0] as the value at t.
+inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
+  const int n = int(w.size()) - 1;
+  thread_local std::vector<double> v, e;
+  v.resize(w.size());
+  e.resize(w.size());
+  for (int i = 0; i <= n; ++i) { v[i] = w[i].value(); e[i] = w[i].bound(); }
+  const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
+  const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
+  // The factor for an output reached after L levels; applied when it is final.
+  auto fin = [](double val, double bound, int levels) { return BD(val, bound * (1.0 + (8.0 * levels + 8.0) * 0x1p-51)); };
+  if (left) left[0] = w[0];
+  for (int r = 1; r <= n; ++r) {
+    for (int i = 0; i + r <= n; ++i) {
+      const double a = v[i], b = v[i + 1];
+      const double x = sv * a, y = tv * b, nw = x + y;
+      e[i] = sa * e[i] + se * (std::fabs(a) + e[i]) + ta * e[i + 1] + te * (std::fabs(b) + e[i + 1]) +
+             (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
+      v[i] = nw;
+    }
+    if (left) left[r] = fin(v[0], e[0], r);
+    w[n - r] = fin(v[n - r], e[n - r], r);  // final from this round on (split's right piece; w[0]: the value at t)
+  }
+}
+
+// Horner's rule r <- r t + c_i from the leading coefficient (Higham section
+// 5.1's running error bound, with errors in t and in the c_i): one step
+// carries |r| et + |t| er + er et + e_ci + u (|r t| + |r t + c_i|), at most
+// 8 roundings deep per step like a de Casteljau level.
+inline BD horner(std::span<const BD> c, const BD& t) {
+  const int n = int(c.size()) - 1;
+  if (n < 0) return BD(0);
+  const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
+  double r = c[n].value(), e = c[n].bound();
+  for (int i = n - 1; i >= 0; --i) {
+    const double p = r * tv, s = p + c[i].value();
+    e = std::fabs(r) * te + ta * e + e * te + c[i].bound() + (kU * (std::fabs(p) + std::fabs(s)) + kTiny);
+    r = s;
+  }
+  return BD(r, e * (1.0 + (8.0 * n + 8.0) * 0x1p-51));
+}
+
+// sum_{i=0..terms-1} (a[i] * c[i]) / d[i], accumulated from 0 in order (the
+// power-to-Bernstein conversion's inner loop, kernel/bernstein.hpp). The
+// quotient's bound is Bounded's: (|p| ed + |d| ep) / (|d| (|d| - ed)) + u|q|,
+// infinite where |d| <= ed; a rounding of the denominator makes it at most
+// (1 + u) times larger, so its quotient at least (1 - u) times smaller: the
+// same count of roundings as above, at most 14 + terms deep.
+inline BD sum_of_ratios(const BD* a, const BD* c, const BD* d, int terms) {
+  double acc = 0, E = 0, mu = 0;
+  for (int i = 0; i < terms; ++i) {
+    const double av = a[i].value(), cv = c[i].value(), dv = d[i].value();
+    const double ae = a[i].bound(), ce = c[i].bound(), de = d[i].bound();
+    const double p = av * cv, q = p / dv;
+    acc = acc + q;
+    const double pa = std::fabs(p), da = std::fabs(dv);
+    const double ep = std::fabs(av) * ce + std::fabs(cv) * ae + ae * ce + (kU * pa + kTiny);
+    if (!(da > de)) E = std::numeric_limits<double>::infinity();
+    else E += (pa * de + da * ep) / (da * (da - de));
+    mu += std::fabs(q) + std::fabs(acc);
+  }
+  return BD(acc, (E + kU * mu + double(terms) * 2.0 * kTiny) * (1.0 + (double(terms) + 16.0) * 0x1p-50));
+}
+
+}  // namespace eccd::running_error_loops

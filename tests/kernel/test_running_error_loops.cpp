@@ -1,0 +1,203 @@
+// The guard's one-pass loops (number/running_error_loops.hpp, issue 30 point
+// 5): products in Bernstein and power form, de Casteljau evaluation and
+// subdivision, Horner and the power-to-Bernstein conversion, in
+// Bounded<double>. Each result must (a) hold the plain-double value bit for
+// bit (the guard decides with the as-published numbers) and (b) have a bound
+// that contains the exact result computed in rationals from exact inputs
+// anywhere within the inputs' own bounds (the inputs are perturbed to the
+// ends of their bounds and inside). Degrees up to 90, past 56, where the
+// binomial coefficients of double are rounded; and the binomial rows of
+// Bounded<double> are exact (bound 0) up to 2^53 and contain C(n, k) above.
+#include "kernel/bernstein.hpp"
+#include "kernel/binomial.hpp"
+#include "kernel/polynomial.hpp"
+#include "number/rational_traits.hpp"
+#include "number/running_error.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace eccd;
+
+namespace {
+
+using BD = Bounded<double>;
+
+struct Input {
+  std::vector<BD> b;
+  std::vector<mpq_class> exact;  // within the bounds of b
+  std::vector<double> plain;
+};
+
+// n + 1 values of mixed signs and magnitudes; every other one with an error bound, its exact value at
+// -e, +e or a fraction of e from the double.
+Input random_input(std::mt19937_64& rng, int n, bool with_errors) {
+  std::uniform_real_distribution<double> val(-1.0, 1.0);
+  std::uniform_int_distribution<int> scale(-6, 2), pick(-4, 4);
+  Input in;
+  for (int i = 0; i <= n; ++i) {
+    double v = std::ldexp(val(rng), scale(rng));
+    double e = (with_errors && i % 2 == 0) ? std::fabs(v) * 0x1p-50 + 0x1p-70 : 0.0;
+    in.b.emplace_back(v, e);
+    in.plain.push_back(v);
+    in.exact.push_back(mpq_class(v) + mpq_class(e) * mpq_class(pick(rng), 4));
+  }
+  return in;
+}
+
+void check_contains(const std::vector<BD>& got, const std::vector<mpq_class>& exact, const std::vector<double>& plain) {
+  REQUIRE(got.size() == exact.size());
+  REQUIRE(got.size() == plain.size());
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    INFO("k = " << k);
+    CHECK(got[k].value() == plain[k]);  // bit for bit: == on doubles is meant
+    REQUIRE(std::isfinite(got[k].bound()));
+    mpq_class err = abs(mpq_class(got[k].value()) - exact[k]);
+    CHECK(err <= mpq_class(got[k].bound()));
+  }
+}
+
+// The same loops with Bounded<double>'s operators, one by one (the generic code of kernel/bernstein.hpp):
+// the one-pass bounds must equal these to rounding (a term left out would make them smaller).
+std::vector<BD> generic_convolution(const std::vector<BD>& x, const std::vector<BD>& y) {
+  std::vector<BD> r(x.size() + y.size() - 1, BD(0));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (std::size_t j = 0; j < y.size(); ++j) { BD p = x[i] * y[j]; r[i + j] = r[i + j] + p; }
+  return r;
+}
+std::vector<BD> generic_right_piece(std::vector<BD> w, const BD& t) {
+  BD s = BD(1) - t;
+  const int n = int(w.size()) - 1;
+  for (int r = 1; r <= n; ++r)
+    for (int i = 0; i + r <= n; ++i) { BD x = s * w[i]; BD y = t * w[i + 1]; w[i] = x + y; }
+  return w;
+}
+void check_same_bounds(const std::vector<BD>& fused, const std::vector<BD>& generic) {
+  REQUIRE(fused.size() == generic.size());
+  for (std::size_t k = 0; k < fused.size(); ++k) {
+    INFO("k = " << k << ": one pass " << fused[k].bound() << ", by operators " << generic[k].bound());
+    CHECK(fused[k].value() == generic[k].value());
+    CHECK(fused[k].bound() <= generic[k].bound() * (1 + 0x1p-30));
+    CHECK(fused[k].bound() >= generic[k].bound() * (1 - 0x1p-30));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("running_error_loops: the one-pass bounds are those of Bounded's operators, to rounding", "[running-error-loops]") {
+  std::mt19937_64 rng(34);
+  for (int m : {0, 4, 36, 72})
+    for (int n : {0, 9, 36}) {
+      INFO("degrees " << m << " x " << n);
+      Input x = random_input(rng, m, true), y = random_input(rng, n, false);
+      const Poly<BD> r = Poly<BD>(x.b) * Poly<BD>(y.b);
+      check_same_bounds(r.c, generic_convolution(x.b, y.b));
+    }
+  for (int n : {1, 24, 144}) {
+    INFO("degree " << n);
+    Input x = random_input(rng, n, true);
+    for (double tau : {0.5, 0.375}) {
+      const BD t(tau, 0);
+      check_same_bounds(split(Bern<BD>(x.b), t).second.b, generic_right_piece(x.b, t));
+    }
+  }
+}
+
+TEST_CASE("running_error_loops: Bernstein products hold the plain values and their bounds contain the exact product", "[running-error-loops]") {
+  std::mt19937_64 rng(30);
+  for (int m : {0, 1, 5, 24, 36, 60})
+    for (int n : {0, 3, 24, 36, 50}) {
+      INFO("degrees " << m << " x " << n);
+      Input x = random_input(rng, m, true), y = random_input(rng, n, true);
+      const Bern<BD> r = Bern<BD>(x.b) * Bern<BD>(y.b);
+      const Bern<mpq_class> ex = Bern<mpq_class>(x.exact) * Bern<mpq_class>(y.exact);
+      const Bern<double> pl = Bern<double>(x.plain) * Bern<double>(y.plain);
+      check_contains(r.b, ex.b, pl.b);
+    }
+}
+
+TEST_CASE("running_error_loops: power-form products and Horner contain the exact results", "[running-error-loops]") {
+  std::mt19937_64 rng(31);
+  for (int m : {1, 7, 24, 72})
+    for (int n : {0, 12, 36}) {
+      INFO("degrees " << m << " x " << n);
+      Input x = random_input(rng, m, true), y = random_input(rng, n, true);
+      // Leading coefficients non-zero (Poly trims zeros): the inputs are non-zero almost surely.
+      const Poly<BD> r = Poly<BD>(x.b) * Poly<BD>(y.b);
+      const Poly<mpq_class> ex = Poly<mpq_class>(x.exact) * Poly<mpq_class>(y.exact);
+      const Poly<double> pl = Poly<double>(x.plain) * Poly<double>(y.plain);
+      check_contains(r.c, ex.c, pl.c);
+      for (double tv : {0.0, 0.3, 0.5, 0.999, 1.0, -0.7}) {
+        INFO("t = " << tv);
+        const BD t(tv, tv == 0.5 ? 0.0 : 0x1p-60);  // with and without an error of its own
+        const BD h = r(t);
+        const double hp = pl(tv);
+        CHECK(h.value() == hp);
+        for (int side : {-1, 1}) {
+          const mpq_class te = mpq_class(tv) + side * mpq_class(t.bound());
+          // Horner of the computed coefficients' exact counterparts: r's coefficients are within their own
+          // bounds of ex's, and h's bound covers those, t's and the rounding.
+          mpq_class v = 0;
+          for (int i = ex.degree(); i >= 0; --i) v = v * te + ex.c[i];
+          CHECK(abs(mpq_class(h.value()) - v) <= mpq_class(h.bound()));
+        }
+      }
+    }
+}
+
+TEST_CASE("running_error_loops: de Casteljau values and subdivision contain the exact ones", "[running-error-loops]") {
+  std::mt19937_64 rng(32);
+  for (int n : {0, 1, 8, 30, 63, 64, 90, 144}) {
+    Input x = random_input(rng, n, true);
+    for (double tau : {0.5, 0.25, 0.8125, 0.1}) {
+      INFO("degree " << n << ", tau " << tau);
+      const BD t(tau, 0);
+      auto [l, r] = split(Bern<BD>(x.b), t);
+      auto [le, re] = split(Bern<mpq_class>(x.exact), mpq_class(tau));
+      auto [lp, rp] = split(Bern<double>(x.plain), tau);
+      check_contains(l.b, le.b, lp.b);
+      check_contains(r.b, re.b, rp.b);
+      std::vector<BD> kl = x.b, kr = x.b;  // the in-place pieces: the same as split's
+      keep_left(std::span<BD>(kl), t);
+      keep_right(std::span<BD>(kr), t);
+      check_contains(kl, le.b, lp.b);
+      check_contains(kr, re.b, rp.b);
+      const BD v = Bern<BD>(x.b)(t);
+      CHECK(v.value() == Bern<double>(x.plain)(tau));
+      CHECK(abs(mpq_class(v.value()) - Bern<mpq_class>(x.exact)(mpq_class(tau))) <= mpq_class(v.bound()));
+    }
+  }
+}
+
+TEST_CASE("running_error_loops: the power-to-Bernstein conversion contains the exact coefficients", "[running-error-loops]") {
+  std::mt19937_64 rng(33);
+  for (int n : {0, 1, 12, 36, 56, 57, 80}) {
+    INFO("degree " << n);
+    Input x = random_input(rng, n, true);
+    const Bern<BD> b = to_bernstein(Poly<BD>(x.b), n);
+    const Bern<mpq_class> be = to_bernstein(Poly<mpq_class>(x.exact), n);
+    const Bern<double> bp = to_bernstein(Poly<double>(x.plain), n);
+    check_contains(b.b, be.b, bp.b);
+  }
+}
+
+TEST_CASE("running_error_loops: binomial rows of Bounded<double> are exact below 2^53 and contain C(n, k) above", "[running-error-loops]") {
+  const BD like(1.0, 0);
+  for (int n : {10, 56, 57, 100, 200}) {
+    const std::vector<BD>& row = binomial_row(n, like);
+    mpz_class c = 1;
+    for (int k = 0; k <= n; ++k) {
+      INFO("C(" << n << ", " << k << ")");
+      if (c <= mpz_class(9007199254740992.0)) {
+        CHECK(row[k].bound() == 0);
+        CHECK(mpq_class(row[k].value()) == mpq_class(c));
+      } else {
+        CHECK(abs(mpq_class(row[k].value()) - mpq_class(c)) <= mpq_class(row[k].bound()));
+      }
+      c = c * (n - k) / (k + 1);
+    }
+  }
+}
