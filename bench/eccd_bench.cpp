@@ -98,6 +98,7 @@
 #include "io/solution_json.hpp"
 #include "bench/isolation.hpp"
 #include "bench/fcl_side.hpp"
+#include "bench/speed_targets.hpp"
 #include "compare/fcl_engine.hpp"
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -2085,6 +2086,17 @@ void print_ratios(const json& s) {
 
 }  // namespace
 
+// The hooks of bench/speed_targets.hpp (issue 36's rows).
+void eccd_bench::add_group(const std::string& id, const std::string& title, const std::string& description, const std::string& anchor) {
+  group(id, title, description, anchor);
+}
+void eccd_bench::add_row(const std::string& grp, const std::string& label, bool baseline, int cost, const std::string& note,
+                         std::function<void(benchmark::State&)> fn, bool process_cpu) {
+  row(grp, label, baseline, Cost(cost), note, std::move(fn), process_cpu);
+}
+void eccd_bench::record_result(const std::string& key, const nlohmann::json& summary) { g_results[key] = summary; }
+std::string eccd_bench::source_path(const std::string& rel) { return src(rel); }
+
 int main(int argc, char** argv) {
   std::string started = now_iso();
   std::string summary_path;
@@ -2133,6 +2145,7 @@ int main(int argc, char** argv) {
   register_animation();  // 001 section 5 in spirit: the boxers per frame, double and certified (issue 17)
   register_fcl_static();  // issue 21: FCL's static ellipsoid test on the static3d pairs
   register_fcl_table2();  // issue 21: per frame of 000 Table 2, eccd and FCL, misclassified frames
+  eccd_bench::register_speed_targets();  // issue 36: the targets on the product path (bench/speed_targets.cpp)
 
   SummaryReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
