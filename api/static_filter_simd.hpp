@@ -18,12 +18,27 @@
 // ValueMagnitude is the double run, lane 1 the Magnitude run), so the batch
 // decides exactly the pairs static_status decides (contraction would keep the
 // bounds, number/static_bound.hpp, but could move a pair at a bound's edge).
+// Issue 36: the same lanes compiled for AVX2 + FMA (no AVX-512) in
+// api/static_filter_avx2.cpp, written with explicit 4-lane vectors
+// (number/lane_vector.hpp) since GCC's vectoriser does not take this loop under
+// AVX2; same flags otherwise (-ffp-contract=off: each lane rounds as the one
+// pair does). The batch picks the widest instruction set the CPU runs
+// (static_batch_isa); a lower limit can be set for benchmarks and tests.
 // Inputs: in[k][l] is input k of lane l as numbered by kernel/static_filter3d.hpp (static_axis_a, ...).
 // Results: a status code, 0 uncertain, 1 separate, 2 overlapping.
 namespace eccd::simd {
 
 inline constexpr int kSimdLanes = 8;
 bool has_avx512();  // the CPU runs this unit's code (defined in api/static_test.cpp, compiled for any CPU)
+bool has_avx2();    // the CPU runs api/static_filter_avx2.cpp's code (AVX2 and FMA)
 void static_filter3d_lanes_avx512(const double (&in)[30][kSimdLanes], double (&code)[kSimdLanes]);
+void static_filter3d_lanes_avx2(const double (&in)[30][kSimdLanes], double (&code)[kSimdLanes]);
+
+// The instruction sets of the batched static test, narrowest first; none: pair by pair.
+enum class Isa { none, avx2, avx512 };
+const char* to_string(Isa isa);
+Isa cpu_isa();                   // the widest this CPU runs
+Isa static_batch_isa();          // what static_status_batch uses: min(cpu_isa(), the limit)
+void set_static_batch_isa_limit(Isa limit);  // for benchmarks and tests (default: avx512); not thread-safe
 
 }  // namespace eccd::simd

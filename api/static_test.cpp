@@ -43,6 +43,27 @@ bool simd::has_avx512() {
 #endif
 }
 
+bool simd::has_avx2() {
+#if defined(__x86_64__) || defined(__i386__)
+  static const bool ok = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  }();
+  return ok;
+#else
+  return false;
+#endif
+}
+
+namespace {
+simd::Isa g_isa_limit = simd::Isa::avx512;
+}  // namespace
+
+const char* simd::to_string(Isa isa) { return isa == Isa::avx512 ? "avx512" : isa == Isa::avx2 ? "avx2" : "none (pair by pair)"; }
+simd::Isa simd::cpu_isa() { return has_avx512() ? Isa::avx512 : has_avx2() ? Isa::avx2 : Isa::none; }
+simd::Isa simd::static_batch_isa() { return std::min(cpu_isa(), g_isa_limit); }
+void simd::set_static_batch_isa_limit(Isa limit) { g_isa_limit = limit; }
+
 namespace {
 
 template <class T, int N>
@@ -392,8 +413,9 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
   };
   const std::size_t n = a.size();
   if constexpr (N == 4) {
-    if ((arith.kind == Arithmetic::Double || arith.kind == Arithmetic::Certified) && simd::has_avx512()) {
-      // Blocks of lanes in structure of arrays, vectorised (AVX-512). A status from the filter implies valid input
+    const simd::Isa isa = simd::static_batch_isa();
+    if ((arith.kind == Arithmetic::Double || arith.kind == Arithmetic::Certified) && isa != simd::Isa::none) {
+      // Blocks of lanes in structure of arrays, vectorised (AVX-512, or AVX2: issue 36). A status from the filter implies valid input
       // (kernel/static_filter3d.hpp; the last rows are checked here), so only the pairs it leaves uncertain are
       // validated in full; the codes wait in `codes` until every pair is known valid (nothing written before).
       constexpr int SL = simd::kSimdLanes;
@@ -416,7 +438,8 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
           affine[l] = (sa.pose[3][0] == 0) & (sa.pose[3][1] == 0) & (sa.pose[3][2] == 0) & (sa.pose[3][3] == 1) &
                       (sb.pose[3][0] == 0) & (sb.pose[3][1] == 0) & (sb.pose[3][2] == 0) & (sb.pose[3][3] == 1);
         }
-        simd::static_filter3d_lanes_avx512(in, code);
+        if (isa == simd::Isa::avx512) simd::static_filter3d_lanes_avx512(in, code);
+        else simd::static_filter3d_lanes_avx2(in, code);
         for (int l = 0; l < lanes; ++l) {
           codes[base + l] = affine[l] ? code[l] : 0.0;
           if (codes[base + l] == 0.0) validate(base + l);
@@ -436,7 +459,7 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
   }
   constexpr int L = kStaticBatchLanes;
   if constexpr (N == 4) {
-    for (std::size_t i = 0; i < n; ++i) {  // pair by pair: without AVX the lanes do not vectorise
+    for (std::size_t i = 0; i < n; ++i) {  // pair by pair: without AVX2 the lanes do not vectorise
       Status s = fast_status3(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose);
       out[i] = s != Status::uncertain ? s : after_fast<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
     }

@@ -99,6 +99,7 @@
 #include "bench/isolation.hpp"
 #include "bench/fcl_side.hpp"
 #include "bench/poses.hpp"
+#include "bench/speed_targets.hpp"
 #include "compare/fcl_engine.hpp"
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -2086,6 +2087,17 @@ void print_ratios(const json& s) {
 
 }  // namespace
 
+// The hooks of bench/speed_targets.hpp (issue 36's rows).
+void eccd_bench::add_group(const std::string& id, const std::string& title, const std::string& description, const std::string& anchor) {
+  group(id, title, description, anchor);
+}
+void eccd_bench::add_row(const std::string& grp, const std::string& label, bool baseline, int cost, const std::string& note,
+                         std::function<void(benchmark::State&)> fn, bool process_cpu) {
+  row(grp, label, baseline, Cost(cost), note, std::move(fn), process_cpu);
+}
+void eccd_bench::record_result(const std::string& key, const nlohmann::json& summary) { g_results[key] = summary; }
+std::string eccd_bench::source_path(const std::string& rel) { return src(rel); }
+
 int main(int argc, char** argv) {
   std::string started = now_iso();
   std::string summary_path;
@@ -2137,6 +2149,7 @@ int main(int argc, char** argv) {
   eccd_bench::register_poses({group, [](const std::string& g, const std::string& l, bool b, const std::string& n,
                                         std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
                               [](const std::string& k, const json& j) { g_results[k] = j; }, ECCD_SOURCE_DIR});  // issue 36
+  eccd_bench::register_speed_targets();  // issue 36: the targets on the product path (bench/speed_targets.cpp)
 
   SummaryReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

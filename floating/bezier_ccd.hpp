@@ -328,7 +328,7 @@ class BezierZeroSet {
         if (s == Sign::positive) return Status::separate;
         long pieces = 0;
         T witness = zero_;
-        return classify_on_u(f, 0, pieces, zero_, one_, witness);
+        return classify_on_u(std::span<const T>(f.b), 0, pieces, zero_, one_, witness);
       }
       // A peak within rounding noise of 0 (relative to F(., t0)'s coefficients) is a touch as far
       // as this arithmetic can tell.
@@ -370,23 +370,34 @@ class BezierZeroSet {
   static constexpr long kUPieces = 1024;
   // f is F(., t0) on [u0, u1] (dyadic ends); `witness` receives the u of a
   // surely positive end control point when the answer is separate.
-  Status classify_on_u(const Bern<T>& f, int depth, long& pieces, const T& u0, const T& u1, T& witness) const {
+  // Issue 36: both halves from one de Casteljau triangle (split_into, bit for bit keep_left / keep_right's),
+  // on the stack for the small degrees of F in u (no allocation per level of a deep descent to a needle).
+  Status classify_on_u(std::span<const T> f, int depth, long& pieces, const T& u0, const T& u1, T& witness) const {
     ++pieces;
-    if (sign(f.b.front()) == Sign::positive) { witness = u0; return Status::separate; }
-    if (sign(f.b.back()) == Sign::positive) { witness = u1; return Status::separate; }
+    if (sign(f.front()) == Sign::positive) { witness = u0; return Status::separate; }
+    if (sign(f.back()) == Sign::positive) { witness = u1; return Status::separate; }
     bool all = true;
-    for (const auto& x : f.b) all = all && sign(x) == Sign::negative;
+    for (const auto& x : f) all = all && sign(x) == Sign::negative;
     if (all) return Status::overlapping;
     if (depth >= kUDepth || pieces >= kUPieces) return Status::uncertain;
-    Bern<T> lo = f, hi = f;
-    keep_left(std::span<T>(lo.b), half_);
-    keep_right(std::span<T>(hi.b), half_);
-    const T um = point_of(T(half_ * (u0 + u1)));
-    const Status a = classify_on_u(lo, depth + 1, pieces, u0, um, witness);
-    if (a == Status::separate) return a;
-    const Status b = classify_on_u(hi, depth + 1, pieces, um, u1, witness);
-    if (b == Status::separate) return b;
-    return a == Status::overlapping && b == Status::overlapping ? Status::overlapping : Status::uncertain;
+    auto halves = [&](std::span<T> lo, std::span<T> hi) {
+      split_into(f, half_, lo, hi);
+      const T um = point_of(T(half_ * (u0 + u1)));
+      const Status a = classify_on_u(lo, depth + 1, pieces, u0, um, witness);
+      if (a == Status::separate) return a;
+      const Status b = classify_on_u(hi, depth + 1, pieces, um, u1, witness);
+      if (b == Status::separate) return b;
+      return a == Status::overlapping && b == Status::overlapping ? Status::overlapping : Status::uncertain;
+    };
+    constexpr std::size_t kStack = 12;
+    if constexpr (std::is_trivially_copyable_v<T>) {
+      if (f.size() <= kStack) {
+        T lo[kStack], hi[kStack];
+        return halves(std::span<T>(lo, f.size()), std::span<T>(hi, f.size()));
+      }
+    }
+    std::vector<T> lo(f.begin(), f.end()), hi(f.begin(), f.end());
+    return halves(std::span<T>(lo), std::span<T>(hi));
   }
 
   // The peak of F(., t0), or under a running bound, when its value is not
@@ -399,7 +410,7 @@ class BezierZeroSet {
         long pieces = 0;
         T w = zero_;
         Bern<T> f = ellipsoid_function_at(F_, t0);
-        if (classify_on_u(f, 0, pieces, zero_, one_, w) == Status::separate) {
+        if (classify_on_u(std::span<const T>(f.b), 0, pieces, zero_, one_, w) == Status::separate) {
           T v = f(w);
           if (sign(v) == Sign::positive) return {w, v};
         }

@@ -100,6 +100,23 @@ void keep_left(std::span<T> c, const T& tau) {
     for (int i = n; i >= r; --i) { T x = s * c[i - 1]; T y = tau * c[i]; c[i] = x + y; }
 }
 
+// Both pieces at once (issue 36: one de Casteljau triangle instead of two):
+// lo and hi (c.size() entries each) receive what keep_left and keep_right
+// would leave in a copy of c, with the same products and sums in the same
+// order (keep_right on hi, whose first entry after round r is lo's entry r),
+// so bit for bit the same values in any arithmetic.
+template <class T>
+void split_into(std::span<const T> c, const T& tau, std::span<T> lo, std::span<T> hi) {
+  const int n = int(c.size()) - 1;
+  std::copy(c.begin(), c.end(), hi.begin());
+  T s = T(1) - tau;
+  lo[0] = hi[0];
+  for (int r = 1; r <= n; ++r) {
+    for (int i = 0; i + r <= n; ++i) { T x = s * hi[i]; T y = tau * hi[i + 1]; hi[i] = x + y; }
+    lo[r] = hi[0];
+  }
+}
+
 template <class T>
 struct Bern {
   std::vector<T> b;  // b.size() == degree + 1; empty only when default-made

@@ -57,6 +57,7 @@
 #include "kernel/contact_status.hpp"
 #include "kernel/discriminant.hpp"
 #include "kernel/fast_quartic.hpp"
+#include "number/lane_vector.hpp"
 #include "number/static_bound.hpp"
 
 #include <array>
@@ -141,6 +142,17 @@ inline constexpr int kDeltaDepth = 13;
 inline constexpr double kU = 0x1p-53, kTau = 0x1p-430, kMaxEntry = 0x1p12, kMinAxis = 0x1p-12;
 
 
+// The magnitude run's type for a lane type: Magnitude for double (one lane, or the compiler's vectoriser),
+// LaneMagnitude<W> for W lanes in one vector register (number/lane_vector.hpp).
+template <class D>
+struct LaneOf {
+  using Magnitude = eccd::Magnitude;
+};
+template <int W>
+struct LaneOf<LaneDouble<W>> {
+  using Magnitude = LaneMagnitude<W>;
+};
+
 // Flags are doubles 1 / 0 and "and" is a product: a lane of the vectorised loop holds doubles only (bools there
 // are masks that GCC 12 cannot convert or mix with doubles).
 [[gnu::always_inline]] inline double flag(bool c) { return c ? 1.0 : 0.0; }
@@ -148,65 +160,70 @@ inline constexpr double kU = 0x1p-53, kTau = 0x1p-430, kMaxEntry = 0x1p12, kMinA
 // The status from ĝ and e (and Δ with its bound), as a code 0 uncertain, 1 separate, 2 overlapping; branch-free
 // so that it vectorises in the lane loop (kLanes); one pair returns early and skips Δ where it can.
 // ok: 1 when the inputs' ranges held, else 0.
-template <bool kLanes>
-[[gnu::always_inline]] inline double decide(double ok, const std::array<double, 5>& g, const std::array<double, 5>& e) {
-  double certain = ok, in_range = 1;
+template <bool kLanes, class D = double>
+[[gnu::always_inline]] inline D decide(D ok, const std::array<D, 5>& g, const std::array<D, 5>& e) {
+  D certain = ok, in_range = D(1);
 #pragma GCC unroll 5
   for (int k = 0; k < 5; ++k) {
-    const double a = std::fabs(g[k]);
-    certain *= flag(a > e[k]);
-    in_range *= flag(a >= 0x1p-150) * flag(a <= 0x1p150);
+    const D a = lane_abs(g[k]);
+    certain = certain * lane_gt(a, e[k]);
+    in_range = in_range * (lane_ge(a, D(0x1p-150)) * lane_le(a, D(0x1p150)));
   }
   // Sign changes of g4, -g3, g2, -g1, g0 (all non-zero when certain).
-  const double s4 = flag(g[4] > 0), s3 = flag(!(g[3] > 0)), s2 = flag(g[2] > 0), s1 = flag(!(g[1] > 0)), s0 = flag(g[0] > 0);
-  const double changes = (s4 - s3) * (s4 - s3) + (s3 - s2) * (s3 - s2) + (s2 - s1) * (s2 - s1) + (s1 - s0) * (s1 - s0);
+  const D zero(0);
+  const D s4 = lane_gt(g[4], zero), s3 = lane_not_gt(g[3], zero), s2 = lane_gt(g[2], zero), s1 = lane_not_gt(g[1], zero),
+          s0 = lane_gt(g[0], zero);
+  const D changes = (s4 - s3) * (s4 - s3) + (s3 - s2) * (s3 - s2) + (s2 - s1) * (s2 - s1) + (s1 - s0) * (s1 - s0);
   if constexpr (!kLanes) {
     if (certain == 0) return 0.0;
     if (changes == 0) return 2.0;
   }
   // ρ: the sum of the e_k / |ĝ_k| (>= their maximum; a sum needs no select). Δ on fresh leaves ĝ.
-  double rho = 0;
+  D rho(0);
 #pragma GCC unroll 5
-  for (int k = 0; k < 5; ++k) rho += e[k] / std::fabs(g[k]);
-  double dv, dm;
+  for (int k = 0; k < 5; ++k) rho = rho + e[k] / lane_abs(g[k]);
+  D dv, dm;
   if constexpr (kLanes) {
+    using Mag = typename LaneOf<D>::Magnitude;
     dv = quartic_discriminant(g[4], g[3], g[2], g[1], g[0]);
-    dm = quartic_discriminant(Magnitude::leaf(g[4]), Magnitude::leaf(g[3]), Magnitude::leaf(g[2]), Magnitude::leaf(g[1]),
-                              Magnitude::leaf(g[0])).value();
+    dm = quartic_discriminant(Mag::leaf(g[4]), Mag::leaf(g[3]), Mag::leaf(g[2]), Mag::leaf(g[1]), Mag::leaf(g[0])).value();
   } else {
     const ValueMagnitude d = quartic_discriminant(ValueMagnitude::leaf(g[4]), ValueMagnitude::leaf(g[3]), ValueMagnitude::leaf(g[2]),
                                                   ValueMagnitude::leaf(g[1]), ValueMagnitude::leaf(g[0]));
     dv = d.value();
     dm = d.magnitude();
   }
-  const double derr = dm * (2 * kDeltaDepth * kU + 7 * rho);
-  const double delta_ok = in_range * flag(rho <= 0x1p-20) * flag(dm <= 0x1p1000);
-  const double delta_pos = delta_ok * flag(dv > derr), delta_neg = delta_ok * flag(-dv > derr);
-  const double zero_changes = flag(changes == 0);
+  const D derr = dm * (D(2 * kDeltaDepth * kU) + D(7) * rho);
+  const D delta_ok = in_range * lane_le(rho, D(0x1p-20)) * lane_le(dm, D(0x1p1000));
+  const D delta_pos = delta_ok * lane_gt(dv, derr), delta_neg = delta_ok * lane_gt(-dv, derr);
+  const D zero_changes = lane_eq(changes, zero);
   // exclusive: 2 overlapping, 1 separate, 0 uncertain
-  const double overlapping = certain * (zero_changes + (1 - zero_changes) * delta_neg);
-  const double separate = certain * flag(changes == 2) * delta_pos;
-  return 2.0 * overlapping + separate;
+  const D overlapping = certain * (zero_changes + (D(1) - zero_changes) * delta_neg);
+  const D separate = certain * lane_eq(changes, D(2)) * delta_pos;
+  return D(2) * overlapping + separate;
 }
 
 inline Status status_of_code(double c) { return c == 1.0 ? Status::separate : c == 2.0 ? Status::overlapping : Status::uncertain; }
 
-// f's coefficients ĝ_k with their bounds e_k (|ĝ_k - g_k| <= e_k when ok = 1: the ranges held).
+// f's coefficients ĝ_k with their bounds e_k (|ĝ_k - g_k| <= e_k when ok = 1: the ranges held); D is double or
+// a lane vector (number/lane_vector.hpp).
+template <class D = double>
 struct Bounds {
-  std::array<double, 5> g, e;
-  double ok;
+  std::array<D, 5> g, e;
+  D ok;
 };
-template <bool kLanes, class Leaf>
-[[gnu::always_inline]] inline Bounds bounds(Leaf leaf) {
-  double ok = 1;  // the ranges
+template <bool kLanes, class D = double, class Leaf>
+[[gnu::always_inline]] inline Bounds<D> bounds(Leaf leaf) {
+  D ok(1);  // the ranges
   if constexpr (kLanes) {  // compares and products only (0 for NaN too)
+    const D min_axis(kMinAxis), max_entry(kMaxEntry);
 #pragma GCC unroll 3
     for (int j = 0; j < 3; ++j) {
-      ok *= flag(leaf(static_axis_a(j)) >= kMinAxis) * flag(leaf(static_axis_a(j)) <= kMaxEntry);
-      ok *= flag(leaf(static_axis_b(j)) >= kMinAxis) * flag(leaf(static_axis_b(j)) <= kMaxEntry);
+      ok = ok * (lane_ge(leaf(static_axis_a(j)), min_axis) * lane_le(leaf(static_axis_a(j)), max_entry));
+      ok = ok * (lane_ge(leaf(static_axis_b(j)), min_axis) * lane_le(leaf(static_axis_b(j)), max_entry));
 #pragma GCC unroll 4
       for (int c = 0; c < 4; ++c)
-        ok *= flag(std::fabs(leaf(static_pose_a(j, c))) <= kMaxEntry) * flag(std::fabs(leaf(static_pose_b(j, c))) <= kMaxEntry);
+        ok = ok * (lane_le(lane_abs(leaf(static_pose_a(j, c))), max_entry) * lane_le(lane_abs(leaf(static_pose_b(j, c))), max_entry));
     }
   } else {  // max / min instructions (x > m ? x : m); a NaN input is passed over here, but it makes some
             // coefficient NaN (every input is a factor of some monomial), and then no sign is certain
@@ -227,14 +244,15 @@ template <bool kLanes, class Leaf>
     }
     ok = flag(big <= kMaxEntry) * flag(small >= kMinAxis);
   }
-  Bounds r;
+  Bounds<D> r;
   r.ok = ok;
-  std::array<double, 5>&g = r.g, &e = r.e;
+  std::array<D, 5>&g = r.g, &e = r.e;
   if constexpr (kLanes) {  // separate runs: each lane of the vectorised loop holds one double
-    g = unit_ball_coefficients<double>(leaf);
-    const std::array<Magnitude, 5> m = unit_ball_coefficients<Magnitude>([&](int k) { return Magnitude::leaf(leaf(k)); });
+    using Mag = typename LaneOf<D>::Magnitude;
+    g = unit_ball_coefficients<D>(leaf);
+    const std::array<Mag, 5> m = unit_ball_coefficients<Mag>([&](int k) { return Mag::leaf(leaf(k)); });
 #pragma GCC unroll 5
-    for (int k = 0; k < 5; ++k) e[k] = 2 * kDepth[k] * kU * m[k].value() + kTau;
+    for (int k = 0; k < 5; ++k) e[k] = D(2 * kDepth[k] * kU) * m[k].value() + D(kTau);
   } else {  // one pair: value and magnitude side by side (ValueMagnitude)
     const std::array<ValueMagnitude, 5> vm =
         unit_ball_coefficients<ValueMagnitude>([&](int k) { return ValueMagnitude::leaf(leaf(k)); });
@@ -247,10 +265,10 @@ template <bool kLanes, class Leaf>
   return r;
 }
 
-template <bool kLanes, class Leaf>
-[[gnu::always_inline]] inline double pair_code(Leaf leaf) {
-  const Bounds r = bounds<kLanes>(leaf);
-  return decide<kLanes>(r.ok, r.g, r.e);
+template <bool kLanes, class D = double, class Leaf>
+[[gnu::always_inline]] inline D pair_code(Leaf leaf) {
+  const Bounds<D> r = bounds<kLanes, D>(leaf);
+  return decide<kLanes, D>(r.ok, r.g, r.e);
 }
 
 }  // namespace static_filter_detail
@@ -280,6 +298,18 @@ template <int L>
 [[gnu::always_inline]] inline void static_filter3d_lanes(const double (&in)[kStaticInputs][L], double (&code)[L]) {
 #pragma GCC ivdep
   for (int l = 0; l < L; ++l) code[l] = static_filter_detail::pair_code<true>([&](int k) { return in[k][l]; });
+}
+
+// W lanes in one vector register (number/lane_vector.hpp: the same program lane by lane, no vectoriser needed):
+// L pairs as L / W vectors; in and code as above.
+template <int W, int L>
+[[gnu::always_inline]] inline void static_filter3d_vector_lanes(const double (&in)[kStaticInputs][L], double (&code)[L]) {
+  static_assert(L % W == 0);
+  using D = LaneDouble<W>;
+  for (int base = 0; base < L; base += W) {
+    const D c = static_filter_detail::pair_code<true, D>([&](int k) { return D::load(&in[k][base]); });
+    c.store(&code[base]);
+  }
 }
 
 }  // namespace eccd

@@ -5,6 +5,7 @@
 // and axis-aligned ellipsoids at distance r1 + r2, where it must say
 // uncertain) and on near-touching ones. Never timed (bench/eccd_bench.cpp).
 #include "api/static_test.hpp"
+#include "api/static_filter_simd.hpp"
 #include "kernel/discriminant.hpp"
 #include "kernel/fast_quartic.hpp"
 #include "kernel/quartic_sign_status.hpp"
@@ -174,8 +175,15 @@ TEST_CASE("static_status_batch gives static_status pair by pair (double and cert
     a2.push_back(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))});
     b2.push_back(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))});
   }
+  // Every instruction set this CPU runs (issue 36: AVX2 beside AVX-512, and pair by pair), each giving the single pairs' answers.
+  std::vector<simd::Isa> isas{simd::Isa::none};
+  if (simd::has_avx2()) isas.push_back(simd::Isa::avx2);
+  if (simd::has_avx512()) isas.push_back(simd::Isa::avx512);
+  for (simd::Isa isa : isas)
   for (const Arithmetic& arith : {Arithmetic::double_precision(), Arithmetic::certified()}) {
-    INFO(arith.name());
+    INFO(arith.name() << " " << simd::to_string(isa));
+    simd::set_static_batch_isa_limit(isa);
+    CHECK(simd::static_batch_isa() == isa);
     std::vector<Status> o3(n), o2(n);
     static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3), std::span<Status>(o3), arith);
     static_status_batch(std::span<const Ellipse>(a2), std::span<const Ellipse>(b2), std::span<Status>(o2), arith);
@@ -189,6 +197,8 @@ TEST_CASE("static_status_batch gives static_status pair by pair (double and cert
       }
     }
   }
+  simd::set_static_batch_isa_limit(simd::Isa::avx512);
+  CHECK(simd::static_batch_isa() == simd::cpu_isa());
   // Bad input: sizes, and a bad pair named by its index, nothing written.
   std::vector<Status> out(n, Status::separate);
   CHECK_THROWS_AS(static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3).first(5), std::span<Status>(out)),
