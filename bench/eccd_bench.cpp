@@ -114,6 +114,7 @@
 #include "kernel/quartic_status.hpp"
 #include "io/scene_reader.hpp"
 #include "compare/scene_generator.hpp"
+#include "independent.hpp"  // issue 33
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -2133,6 +2134,9 @@ int main(int argc, char** argv) {
   register_animation();  // 001 section 5 in spirit: the boxers per frame, double and certified (issue 17)
   register_fcl_static();  // issue 21: FCL's static ellipsoid test on the static3d pairs
   register_fcl_table2();  // issue 21: per frame of 000 Table 2, eccd and FCL, misclassified frames
+  eccd_bench::register_independent({group,  // issue 33: cases/independent in four arithmetics (bench/independent.cpp)
+                                    [](auto& g, auto& l, bool b, bool heavy, auto& n, auto fn) { row(g, l, b, heavy ? Cost::heavy : Cost::slow, n, fn); },
+                                    [](const std::string& k, const json& j) { g_results[k] = j; }});
 
   SummaryReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
