@@ -86,7 +86,7 @@ std::string cycloidal_text(const nlohmann::json& cert) {
 std::string independent_text(const nlohmann::json& cert) {
   std::ostringstream o;
   const auto& a = cert["answer"];
-  o << "scene " << cert["scene"]["name"].get<std::string>() << " (3D, independent motions): proved by interval proofs about the exact F "
+  o << "scene " << cert["scene"]["name"].get<std::string>() << " (" << cert["scene"]["dim"].get<int>() << "D, independent motions): proved by interval proofs about the exact F "
     << "(MPFI " << cert["precision_bits"].get<int>() << " bits; " << cert["s_proof"].size() << " s-items, " << cert["t_proof"].size()
     << " t-items)\n";
   o << "  " << (a["collides"].get<bool>() ? "the paths meet" : "the paths do not meet") << "\n";
@@ -156,7 +156,7 @@ Command add_certify_command(CLI::App& app) {
                              "certificate that `eccd check-certificate` re-checks without the solver. A cycloidal scene (not "
                              "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/2): proved root brackets "
                              "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon. An independent "
-                             "scene (3D) gets eccd-independent-certificate/1: its s- and t-intervals with the strip and Krawczyk "
+                             "scene (2D or 3D) gets eccd-independent-certificate/2: its s- and t-intervals with the strip and Krawczyk "
                              "proofs about the exact F(u, s, t); exit 4 if the proof leaves a range undecided. --arith certified: a 3D scene with "
                              "shared parameters gets eccd-bezier-certificate/2 (the interval Bezier proof's pieces and Krawczyk ends) "
                              "when that proof decides it, else the exact certificate; 2D scenes (and independent ones) get the "

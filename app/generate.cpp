@@ -65,7 +65,7 @@ void add_plan_options(CLI::App* s, GeneratePlan& plan) {
                 "Families: colliding, free, touch, near-miss; overlap (linear translations that just overlap, depth "
                 "10^-e, degree 1), graze (linear translations with an isolated touch, degree 1); decimal (a generic "
                 "scene with every number rounded to --digits significant digits), keyframe (keyframed rigid motions "
-                "with decimal key poses, degrees 2-6); cycloidal (2D, 003 section V) and independent (3D, \"parameters\": "
+                "with decimal key poses, degrees 2-6); cycloidal (2D, 003 section V) and independent (2D, 3D, \"parameters\": "
                 "\"independent\", straight paths A(s), B(t)), not in the default list (compare/motion_families.hpp)")
       ->delimiter(',')->capture_default_str()
       ->check(CLI::IsMember({"colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe", "cycloidal", "independent"}));

@@ -197,7 +197,7 @@ Command add_regress_command(CLI::App& app) {
           row["arith"] = "certified";
           row["arith_reason"] = "cycloidal motion: no exact answer, the ground truth is the certified one";
         }
-        // independent motions (issue 20): exact is their only certified pipeline, and they have no certificate format yet
+        // independent motions (issue 20): exact is their certified pipeline (certificate: io/independent_certificate.hpp)
         if (sc.independent) opt.arith = Arithmetic::exact();
         const Solution sol = solve(sc, opt);
         std::string how;

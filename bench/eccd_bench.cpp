@@ -116,6 +116,7 @@
 #include "kernel/quartic_status.hpp"
 #include "io/scene_reader.hpp"
 #include "compare/scene_generator.hpp"
+#include "independent.hpp"  // issue 33
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -2150,6 +2151,9 @@ int main(int argc, char** argv) {
                                         std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
                               [](const std::string& k, const json& j) { g_results[k] = j; }, ECCD_SOURCE_DIR});  // issue 36
   eccd_bench::register_speed_targets();  // issue 36: the targets on the product path (bench/speed_targets.cpp)
+  eccd_bench::register_independent({group,  // issue 33: cases/independent in four arithmetics (bench/independent.cpp)
+                                    [](auto& g, auto& l, bool b, bool heavy, auto& n, auto fn) { row(g, l, b, heavy ? Cost::heavy : Cost::slow, n, fn); },
+                                    [](const std::string& k, const json& j) { g_results[k] = j; }});
 
   SummaryReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

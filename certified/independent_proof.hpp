@@ -238,7 +238,7 @@ class EndProver {
     seeds.push_back({best_g, best_x});
     // F does not depend on the other parameter (that body does not move, kernel/trivariate_bernstein.hpp,
     // without_positive_factor): every t is alike, one seed on t = 0 and the system F = F_u = 0 in (u, s)
-    const bool free = !opt_.record && nets_.get({0, 0, 0}).n[2] == 0;  // a certificate cannot say "free" yet
+    const bool free = nets_.get({0, 0, 0}).n[2] == 0;
     if (free) seeds.erase(seeds.begin() + 1, seeds.end());
     const long start_boxes = boxes;
     std::sort(seeds.begin(), seeds.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -460,8 +460,7 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
       m.push_back(p);
     }
   Nets nets(F, opt.bits);
-  EndProver prover(nets, opt, opt.record ? std::array<std::optional<TriBern<I>>, 2>{}
-                                          : std::array<std::optional<TriBern<I>>, 2>{edge_quotient(exact, 0, opt.bits), edge_quotient(exact, 1, opt.bits)});
+  EndProver prover(nets, opt, {edge_quotient(exact, 0, opt.bits), edge_quotient(exact, 1, opt.bits)});
   const std::string v = var;
   const std::string why_stop = proj.stop_reason.empty() ? "" : " (" + proj.stop_reason + ")";
   auto range = [&](const mpq_class& a, const mpq_class& b) { return v + " in [" + decimal_string(a, 12) + ", " + decimal_string(b, 12) + "]"; };
@@ -529,6 +528,15 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
   return iv;
 }
 
+// F = p G with p of one sign along s or t (a body that does not move as a set): G, of degree 0 there
+// (TriBern::without_positive_factor, exact); else F. Axis s first, then t.
+inline TriBern<Rational> independent_net_reduced(const TriBern<Rational>& exact) {
+  TriBern<Rational> reduced = exact;
+  for (int axis : {1, 2})
+    if (auto g = reduced.without_positive_factor(axis)) reduced = std::move(*g);
+  return reduced;
+}
+
 // The face u = index i of the exact net < 0 on [0, 1]^2: every control point of a sub-box < 0, by exact
 // halving (along s where the face depends on s, else along t) down to 2^-12; false when not proved.
 inline bool face_negative(const TriBern<Rational>& net, int i) {
@@ -570,12 +578,8 @@ inline IndependentProofResult prove_independent(const TriBern<Rational>& exact, 
   r.degree_s = exact.n[1];
   r.degree_t = exact.n[2];
   // a body that does not move (as a set): F = p G with p > 0 along its parameter, G of degree 0 there
-  // (not when recording a certificate: its checker, io/independent_certificate.hpp, knows neither the reduced
-  // net nor the system "free" nor the quotients F_t / t yet; those ends are then left undecided there)
-  TriBern<Rational> reduced = exact;
-  if (!opt.record)
-    for (int axis : {1, 2})
-      if (auto g = reduced.without_positive_factor(axis)) reduced = std::move(*g);
+  // (independent_net_reduced: the certificate's checker makes the same exact reduction)
+  const TriBern<Rational> reduced = independent_net_reduced(exact);
   const TriBern<Rational>& net = reduced;
   TriBern<I> F;
   F.n = net.n;

@@ -3,6 +3,7 @@
 
 #include "compare/seeded_rng.hpp"
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 #include <stdexcept>
@@ -280,13 +281,109 @@ GeneratedScene build_independent(const GeneratorSpec& s) {
   return g;
 }
 
+// 2D: two discs or two ellipses on straight lines (a constant rational rotation, a linear translation).
+struct Path2 {
+  V2 axes;
+  V2 e;          // the rotation's unit vector (cos, sin): (1, 0) for a disc
+  V2 c0, d;      // centre c0 + s d
+};
+json path2_json(const Path2& p) {
+  json m;
+  m["type"] = "matrix";
+  m["m"] = json::array({json::array({q(p.e[0]), q(-p.e[1]), lin(p.c0[0], p.d[0])}), json::array({q(p.e[1]), q(p.e[0]), lin(p.c0[1], p.d[1])}),
+                        json::array({"0", "0", "1"})});
+  return m;
+}
+
+GeneratedScene build_independent2(const GeneratorSpec& s) {
+  Rng r{s.seed};
+  static const char* kinds[] = {"discs-colliding", "discs-free", "discs-touch", "discs-near-miss", "ellipses-colliding", "ellipses-free"};
+  const std::string kind = kinds[r.uniform(0, 5)];
+  const bool discs = kind.rfind("discs", 0) == 0;
+  Path2 A, B;
+  for (Path2* p : {&A, &B}) {
+    if (discs) {
+      const Rational rr = r.frac(2, 8, 4);
+      p->axes = {rr, rr};
+      p->e = {Rational(1), Rational(0)};
+    } else {
+      p->axes = {r.frac(2, 8, 4), r.frac(2, 8, 4)};
+      p->e = unit2(r);
+    }
+  }
+  auto box = [&](long lo, long hi) { return r.frac(lo * 4, hi * 4, 4); };
+  auto nonzero_dir = [&]() {
+    while (true) {
+      V2 d{box(-4, 4), box(-4, 4)};
+      if (d[0] != 0 || d[1] != 0) return d;
+    }
+  };
+  std::ostringstream facts;
+  if (kind.find("colliding") != std::string::npos) {
+    const Rational s1 = r.frac(1, 15, 16), t1 = r.frac(1, 15, 16);
+    const V2 X{box(-3, 3), box(-3, 3)};
+    A.d = nonzero_dir();
+    B.d = nonzero_dir();
+    for (int i = 0; i < 2; ++i) {
+      A.c0[i] = X[i] - s1 * A.d[i];
+      B.c0[i] = X[i] - t1 * B.d[i];
+    }
+    facts << " s1=" << q(s1) << " t1=" << q(t1) << ". The centres coincide at A(s1) and B(t1) (constructed): the swept areas meet.";
+  } else if (kind.find("free") != std::string::npos) {
+    const Rational gap = r.frac(1, 10, 10);
+    auto path = [&](Path2& p, const Rational& xlo, const Rational& xhi) {
+      const V2 e0{xlo + (xhi - xlo) * r.frac(0, 16, 16), box(-4, 4)}, e1{xlo + (xhi - xlo) * r.frac(0, 16, 16), box(-4, 4)};
+      p.c0 = e0;
+      p.d = {e1[0] - e0[0], e1[1] - e0[1]};
+    };
+    const Rational xa = -(std::max(A.axes[0], A.axes[1]) + gap), xb = std::max(B.axes[0], B.axes[1]) + gap;
+    path(A, xa - 6, xa);
+    path(B, xb, xb + 6);
+    facts << ". A's centre keeps x <= " << q(xa) << " and B's x >= " << q(xb) << ": the line x = 0 separates the swept areas (constructed).";
+  } else {
+    // In the plane two segments that do not cross are nearest at an end of one: A's path ends at P = A(1), at
+    // distance r_A + r_B (+ d) from B's line on the side away from which A came; B passes P's foot at t*.
+    const bool near = kind == "discs-near-miss";
+    const Rational d = near ? Rational(1, 1000000) : Rational(0);
+    const Rational ts = r.frac(2, 14, 16);
+    const V2 u = unit2(r);               // B's direction (unit, rational)
+    const V2 n{-u[1], u[0]};             // its normal
+    const Rational len = r.frac(8, 24, 4), back = r.frac(4, 16, 4), slide = box(-2, 2);
+    const V2 X{box(-2, 2), box(-2, 2)};  // B's centre at t*
+    B.d = {u[0] * len, u[1] * len};
+    B.c0 = {X[0] - ts * B.d[0], X[1] - ts * B.d[1]};
+    const Rational h = A.axes[0] + B.axes[0] + d;
+    const V2 P{X[0] + h * n[0], X[1] + h * n[1]};
+    A.d = {-(back * n[0]) + slide * u[0], -(back * n[1]) + slide * u[1]};  // distance to B's line h + back (1 - s): least at s = 1
+    A.c0 = {P[0] - A.d[0], P[1] - A.d[1]};
+    facts << " s*=1 t*=" << q(ts) << (near ? " d=1e-6" : "") << ". A's centre path ends at distance r_A + r_B" << (near ? " + d" : "")
+          << " from B's line, coming from the far side, where B's centre passes at t* (constructed): "
+          << (near ? "the swept areas miss each other by d" : "they touch there only: s_intervals [1, 1], t_intervals [t*, t*]") << ".";
+  }
+  GeneratedScene g;
+  g.spec = s;
+  g.name = "2d-independent-" + kind + "-" + std::to_string(s.seed);
+  json& doc = g.doc;
+  doc["format"] = "ellipse-ccd-scene/1";
+  doc["name"] = g.name;
+  doc["dim"] = 2;
+  doc["parameters"] = "independent";
+  doc["a"]["shape"]["semi_axes"] = json::array({q(A.axes[0]), q(A.axes[1])});
+  doc["a"]["motion"] = path2_json(A);
+  doc["b"]["shape"]["semi_axes"] = json::array({q(B.axes[0]), q(B.axes[1])});
+  doc["b"]["motion"] = path2_json(B);
+  doc["note"] = note_head(s, kind) + " seed=" + std::to_string(s.seed) + facts.str() +
+                " Independent motions (001 section 4): A(s) and B(t) on straight lines, s and t unrelated.";
+  return g;
+}
+
 }  // namespace
 
 bool motion_family(const std::string& family) { return family == "cycloidal" || family == "independent"; }
 
 std::vector<int> motion_family_dims(const std::string& family) {
   if (family == "cycloidal") return {2};
-  if (family == "independent") return {3};
+  if (family == "independent") return {2, 3};
   return {};
 }
 
@@ -295,12 +392,12 @@ std::string motion_family_motion(const std::string& family) { return family == "
 std::optional<GeneratedScene> generate_motion_family(const GeneratorSpec& spec) {
   if (!motion_family(spec.family)) return std::nullopt;
   const std::vector<int> dims = motion_family_dims(spec.family);
-  if (spec.dim != dims.front())
-    throw std::invalid_argument(spec.family + " scenes are " + std::to_string(dims.front()) + "D" +
-                                (spec.family == "independent" ? " (the independent pipelines solve 3D scenes only)" : " (003 section V)"));
+  if (std::find(dims.begin(), dims.end(), spec.dim) == dims.end())
+    throw std::invalid_argument(spec.family + " scenes are " + (spec.family == "independent" ? "2D or 3D" : "2D (003 section V)"));
   if (spec.motion != motion_family_motion(spec.family) || spec.degree != 1)
     throw std::invalid_argument(spec.family + " scenes have motion '" + motion_family_motion(spec.family) + "' and degree 1");
-  return spec.family == "cycloidal" ? build_cycloidal(spec) : build_independent(spec);
+  if (spec.family == "cycloidal") return build_cycloidal(spec);
+  return spec.dim == 2 ? build_independent2(spec) : build_independent(spec);
 }
 
 }  // namespace eccd

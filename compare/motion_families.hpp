@@ -30,7 +30,7 @@
 //                            certified pipeline says "touch or near miss within ε");
 //                 near-miss  the same at distance r_A + r_B + d, d = 10^-e,
 //                            e in {2, 4, 6}: never colliding.
-//   independent (3D, "parameters": "independent", 001 section 4; motion
+//   independent (2D and 3D, "parameters": "independent", 001 section 4; motion
 //               "translation", degree 1) A(s) and B(t) move on straight lines
 //               (matrix motions: a constant rational rotation, a linear
 //               translation). The seed picks the kind:
@@ -49,6 +49,17 @@
 //                                    branch indepx extends it; until then the
 //                                    report marks them "no ground truth").
 //               Exact arithmetic answers the ball kinds (exact/independent_balls.hpp).
+//               In 2D (named 2d-independent-KIND-SEED) the same for discs and
+//               ellipses (a constant rational rotation of the plane):
+//               discs-colliding, discs-free (the line x = 0 separates the
+//               swept areas), ellipses-colliding, ellipses-free, and
+//                 discs-touch        two segments of the plane that do not
+//                                    cross are nearest at an end of one: A's
+//                                    path ends (s = 1) at distance r_A + r_B
+//                                    from B's line, coming from the far side,
+//                                    where B's centre passes at interior t*:
+//                                    s_intervals [[1, 1]], t_intervals [[t*, t*]];
+//                 discs-near-miss    the same at distance r_A + r_B + 10^-6.
 // Requirements: exact rationals only (a kind is a construction, not a float test).
 #include "compare/scene_generator.hpp"
 
@@ -60,7 +71,7 @@ namespace eccd {
 
 // Is `family` one of these (cycloidal, independent)?
 bool motion_family(const std::string& family);
-// The dimensions a motion family is generated in (cycloidal: 2; independent: 3)
+// The dimensions a motion family is generated in (cycloidal: 2; independent: 2 and 3)
 // and the motion name of its scenes.
 std::vector<int> motion_family_dims(const std::string& family);
 std::string motion_family_motion(const std::string& family);

@@ -865,7 +865,7 @@ std::vector<GeneratorSpec> plan_scenes(const GeneratePlan& plan) {
         }
   };
   for (int dim : plan.dims) {
-    for (const auto& fam : plan.families)  // cycloidal (2D), independent (3D): degree 1, once per dimension
+    for (const auto& fam : plan.families)  // cycloidal (2D), independent (2D, 3D): degree 1, once per dimension
       for (int d : motion_family_dims(fam)) if (d == dim) emit(dim, 1, fam, motion_family_motion(fam));
     for (int deg : plan.degrees)
       for (const auto& fam : plan.families) {

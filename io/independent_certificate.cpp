@@ -25,13 +25,20 @@ using I = MpfiInterval;
 
 const int kBits = 160;
 
+// F's exact net (H = 4 for ellipsoids, 3 for ellipses, the factor (-1)^H included), before the reduction.
 TriBern<Rational> exact_net(const Scene& scene) {
-  if (scene.dim != 3)  // the 2D net exists (independent_ellipsoid_function<Rational, 3>); its checker does not yet
-    throw CertificationError("independent motions in 2D have no certificate format yet (eccd solve --arith exact or certified proves them)");
   Scene shared = scene;
   shared.independent = false;
-  const PreparedPair<4> p = prepare_pair<4>(shared);
-  return independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(p, Rational(1)));
+  if (scene.dim == 3) return independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(shared), Rational(1)));
+  return independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(shared), Rational(1)));
+}
+
+// The parameters along which F was divided by a factor of one sign (the net's degree there drops to 0).
+json reduced_axes(const TriBern<Rational>& full, const TriBern<Rational>& reduced) {
+  json r = json::array();
+  if (full.n[1] != reduced.n[1]) r.push_back("s");
+  if (full.n[2] != reduced.n[2]) r.push_back("t");
+  return r;
 }
 
 mpq_class dy_lo(const independent_detail::Dyadic& d) { return mpq_class(mpz_class(std::to_string(d.i)), mpz_class(1) << d.d); }
@@ -75,8 +82,8 @@ mpq_class rat(const json& j, const std::string& place) { return read_short_ratio
 std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& place) { return read_short_rationals(j, n, place, kIndependentMaxRationalBits); }
 
 // The checked intervals of one projection (var "s" on F, "t" on F with s and t exchanged).
-std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, const json& items, const std::string& var, int bits,
-                                                          std::vector<std::string>& checked) {
+std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<Rational>& exact, const TriBern<I>& F, const json& items,
+                                                          const std::string& var, int bits, std::vector<std::string>& checked) {
   using namespace independent_proof_detail;
   const std::string P = var + "_proof";
   if (!items.is_array() || items.empty() || items.size() > kIndependentMaxStrips)
@@ -84,7 +91,7 @@ std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, c
   IndependentProofOptions opt;
   opt.bits = bits;
   Nets nets(F, bits);
-  EndProver prover(nets, opt);
+  EndProver prover(nets, opt, {edge_quotient(exact, 0, bits), edge_quotient(exact, 1, bits)});
   mpq_class cursor = 0;
   std::size_t nboxes = 0, n_in = 0, n_out = 0, n_end = 0;
   struct Item { std::string kind; mpq_class lo, hi, blo, bhi; };
@@ -106,7 +113,8 @@ std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, c
       sys.vars = {0, 1};
       if (sysn == "fold") { sys.eqs.push_back({0, 0, 1}); sys.vars.push_back(2); sys.kind = "fold"; }
       else if (sysn == "0" || sysn == "1") { sys.fixed_t = mpq_class(sysn == "0" ? 0 : 1); sys.kind = sysn; }
-      else reject("certificate format", name + ": system must be \"fold\", \"0\" or \"1\"");
+      else if (sysn == "free") { sys.fixed_t = mpq_class(0); sys.kind = sysn; }  // F of degree 0 in the other parameter
+      else reject("certificate format", name + ": system must be \"fold\", \"0\", \"1\" or \"free\"");
       const std::size_t m = sys.vars.size();
       const json& chain = at(it, "chain", name);
       if (!chain.is_array() || chain.empty() || chain.size() > kIndependentMaxChain)
@@ -168,16 +176,16 @@ std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, c
                     " boxes, signs proved) and " + std::to_string(n_end) + " ends (Krawczyk, side conditions, exclusion) cover [0, 1]");
   // the answer: maximal runs of in-strips, bounded by ends' brackets or exact strip ends
   std::vector<std::pair<Instant, Instant>> iv;
-  auto exact = [](const mpq_class& x) { return bracketed_instant(x, x, x); };
+  auto exact_end = [](const mpq_class& x) { return bracketed_instant(x, x, x); };
   for (std::size_t k = 0; k < seq.size(); ++k) {
     if (seq[k].kind != "in") continue;
     std::size_t j = k;
     while (j + 1 < seq.size() && seq[j + 1].kind == "in") ++j;
     const Instant a = k > 0 && seq[k - 1].kind == "end" ? bracketed_instant((seq[k - 1].blo + seq[k - 1].bhi) / 2, seq[k - 1].blo, seq[k - 1].bhi)
-                                                        : exact(seq[k].lo);
+                                                        : exact_end(seq[k].lo);
     const Instant b = j + 1 < seq.size() && seq[j + 1].kind == "end"
                           ? bracketed_instant((seq[j + 1].blo + seq[j + 1].bhi) / 2, seq[j + 1].blo, seq[j + 1].bhi)
-                          : exact(seq[j].hi);
+                          : exact_end(seq[j].hi);
     iv.emplace_back(a, b);
     k = j;
   }
@@ -185,6 +193,9 @@ std::vector<std::pair<Instant, Instant>> check_projection(const TriBern<I>& F, c
 }
 
 void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<std::string>& checked) {
+  if (at(cert, "format", "certificate") == "eccd-independent-certificate/1")
+    reject("certificate format", std::string("eccd-independent-certificate/1 is an old format (3D only, F's net never reduced): "
+                                             "it is no longer accepted; write a new certificate (\"") + kIndependentCertificateFormat + "\") with eccd certify");
   if (at(cert, "format", "certificate") != kIndependentCertificateFormat)
     reject("certificate format", std::string("format: expected \"") + kIndependentCertificateFormat + "\" for an independent scene");
   const json& sc = at(cert, "scene", "certificate");
@@ -196,23 +207,29 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
   if (!pb.is_number_integer() || pb.get<long>() < kIndependentMinBits || pb.get<long>() > kIndependentMaxBits)
     reject("certificate format", "precision_bits must be an integer in [64, 1024]");
   const int bits = pb.get<int>();
-  TriBern<Rational> exact;
+  TriBern<Rational> full, exact;
   try {
-    exact = exact_net(s);
+    full = exact_net(s);
   } catch (const std::exception& e) {
     reject("scene", e.what());
   }
-  for (int j = 0; j <= exact.n[1]; ++j)
-    for (int k = 0; k <= exact.n[2]; ++k)
-      if (sgn(exact.at(0, j, k)) >= 0 || sgn(exact.at(exact.n[0], j, k)) >= 0)
-        reject("faces", "a control point of F on the face u = 0 or u = 1 is not < 0: det A(s) or det B(t) is not proved negative");
-  checked.push_back("faces: F(0, s, t) < 0 and F(1, s, t) < 0 (exact control points; net degrees u " + std::to_string(exact.n[0]) + ", s " +
-                    std::to_string(exact.n[1]) + ", t " + std::to_string(exact.n[2]) + ")");
+  exact = independent_proof_detail::independent_net_reduced(full);
+  const json red = reduced_axes(full, exact);
+  if (at(cert, "reduced", "certificate") != red)
+    reject("reduced", "the certificate's \"reduced\" is " + cert["reduced"].dump() + "; F's exact net has a factor of one sign along " +
+                          (red.empty() ? std::string("no parameter") : red.dump()));
+  checked.push_back("reduced: F = p G with p of one sign along " + (red.empty() ? std::string("no parameter (G = F)") : red.dump()) +
+                    " (exact cross-multiplication on the net)");
+  if (!independent_proof_detail::face_negative(exact, 0) || !independent_proof_detail::face_negative(exact, exact.n[0]))
+    reject("faces", "F on the face u = 0 or u = 1 is not proved < 0 (exact control points, halved down to 2^-12): det A(s) or det B(t) "
+                    "is not proved negative");
+  checked.push_back("faces: F(0, s, t) < 0 and F(1, s, t) < 0 (exact control points of sub-nets; net degrees u " + std::to_string(exact.n[0]) +
+                    ", s " + std::to_string(exact.n[1]) + ", t " + std::to_string(exact.n[2]) + ")");
   TriBern<I> F;
   F.n = exact.n;
   for (const auto& x : exact.c) F.c.emplace_back(x, bits);
-  const auto s_iv = check_projection(F, at(cert, "s_proof", "certificate"), "s", bits, checked);
-  const auto t_iv = check_projection(F.swap_st(), at(cert, "t_proof", "certificate"), "t", bits, checked);
+  const auto s_iv = check_projection(exact, F, at(cert, "s_proof", "certificate"), "s", bits, checked);
+  const auto t_iv = check_projection(exact.swap_st(), F.swap_st(), at(cert, "t_proof", "certificate"), "t", bits, checked);
   if (s_iv.empty() != t_iv.empty()) reject("answer", "the s-proof and the t-proof disagree on whether the paths meet");
   Answer want;
   try {
@@ -231,7 +248,8 @@ void check(const Scene& s, const json& scene_doc, const json& cert, std::vector<
 
 json make_independent_certificate(const Scene& s, const json& scene_doc, Solution* solved) {
   const auto start = std::chrono::steady_clock::now();
-  const TriBern<Rational> F = exact_net(s);
+  const TriBern<Rational> full = exact_net(s);
+  const TriBern<Rational> F = independent_proof_detail::independent_net_reduced(full);
   IndependentProofOptions po;
   po.bits = kBits;
   po.record = true;
@@ -245,9 +263,12 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
   c["format"] = kIndependentCertificateFormat;
   c["scene"] = {{"path", s.path}, {"name", s.name}, {"dim", scene_doc.at("dim")}, {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")},
                 {"parameters", scene_doc.at("parameters")}};
-  c["convention"] = "F(u, s, t) = det((u - 1) A(s) - u B(t)) in tensor Bernstein form on [0, 1]^3 (degree 4 in u), built exactly "
-                    "from the scene; boxes are [u0, u1, t0, t1] (for t_proof: [u0, u1, s0, s1]); chain boxes list (u, s, t) or "
-                    "(u, s) (the proof's own parameter second); every sign is proved by MPFI at precision_bits";
+  c["convention"] = "F(u, s, t) = (-1)^H det((1 - u) A(s) + u B(t)) in tensor Bernstein form on [0, 1]^3 (degree H in u: 4 for "
+                    "ellipsoids, 3 for ellipses), built exactly from the scene, then divided by a factor of one sign along each "
+                    "parameter listed in reduced (a body that does not move: the net's degree there is 0); boxes are [u0, u1, t0, t1] "
+                    "(for t_proof: [u0, u1, s0, s1]); chain boxes list (u, s, t) or (u, s) (the proof's own parameter second); "
+                    "every sign is proved by MPFI at precision_bits";
+  c["reduced"] = reduced_axes(full, F);
   c["precision_bits"] = kBits;
   c["answer"] = answer_to_json(r.answer);
   c["s_proof"] = projection_json(r.s_record);

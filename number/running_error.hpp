@@ -26,7 +26,9 @@
 // value computed at x is bounded against the exact value at that same x.
 // For Mpfr, |x| enters the bound as its leading 53 bits rounded away from 0
 // (mpfr_get_d_2exp: cheaper than a long double conversion, and >= |x|).
-// Requirements on T: double or Mpfr. Cost: see the report of issue 14.
+// Requirements on T: double or Mpfr. Cost: see the report of issue 14; powers of
+// two of a long double come from a table (pow2): std::ldexp of a long double was
+// a third of an MPFR independent run (issue 33, docs/independent-motions.md).
 #include "number/double_traits.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/pow2_scaling.hpp"
@@ -35,6 +37,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 namespace eccd {
 
@@ -58,7 +61,37 @@ class Bounded {
       if (!mpfr_number_p(x.get())) return std::numeric_limits<E>::infinity();
       long ex = 0;
       double d = mpfr_get_d_2exp(&ex, x.get(), MPFR_RNDA);
-      return std::ldexp(E(std::fabs(d)), int(std::clamp<long>(ex, -20000, 20000)));
+      return E(std::fabs(d)) * pow2(ex);
+    }
+  }
+  // unit(x) * mag(x) in one scaling: the rounding error allowed for a result x (the same number: both factors
+  // are powers of two times |d|, exact unless the product leaves long double's range).
+  static E unit_mag(const T& x) {
+    if constexpr (std::is_same_v<T, double>) return unit(x) * mag(x);
+    else {
+      if (mpfr_zero_p(x.get())) return E(0);
+      if (!mpfr_number_p(x.get())) return std::numeric_limits<E>::infinity();
+      long ex = 0;
+      double d = mpfr_get_d_2exp(&ex, x.get(), MPFR_RNDA);
+      const int p = x.precision() > 0 ? x.precision() : int(Mpfr::kConstBits);
+      return E(std::fabs(d)) * pow2(ex - p);
+    }
+  }
+  // 2^k as E, k clamped to [-20000, 20000] (as std::ldexp(E(1), k), which it replaces in the hot path: ldexp of a
+  // long double is a software routine, and was a third of an MPFR independent run's time). A table over
+  // long double's exponent range (normal and subnormal), ldexp outside it.
+  static E pow2(long k) {
+    if constexpr (std::is_same_v<E, double>) return std::ldexp(1.0, int(std::clamp<long>(k, -20000, 20000)));
+    else {
+      constexpr long lo = std::numeric_limits<E>::min_exponent - std::numeric_limits<E>::digits - 1,
+                     hi = std::numeric_limits<E>::max_exponent;
+      static const std::vector<E> table = [] {
+        std::vector<E> t(std::size_t(hi - lo + 1));
+        for (long i = lo; i <= hi; ++i) t[std::size_t(i - lo)] = std::ldexp(E(1), int(i));
+        return t;
+      }();
+      if (k < lo || k > hi) return std::ldexp(E(1), int(std::clamp<long>(k, -20000, 20000)));
+      return table[std::size_t(k - lo)];
     }
   }
   // The unit roundoff of a result of x's precision.
@@ -75,20 +108,20 @@ class Bounded {
     else return E(0);
   }
 
-  Bounded& operator+=(const Bounded& o) { v_ += o.v_; e_ = grow(e_ + o.e_ + unit(v_) * mag(v_)); return *this; }
-  Bounded& operator-=(const Bounded& o) { v_ -= o.v_; e_ = grow(e_ + o.e_ + unit(v_) * mag(v_)); return *this; }
+  Bounded& operator+=(const Bounded& o) { v_ += o.v_; e_ = grow(e_ + o.e_ + unit_mag(v_)); return *this; }
+  Bounded& operator-=(const Bounded& o) { v_ -= o.v_; e_ = grow(e_ + o.e_ + unit_mag(v_)); return *this; }
   Bounded& operator*=(const Bounded& o) {
     E a = mag(v_), b = mag(o.v_);
     E e = a * o.e_ + b * e_ + e_ * o.e_;
     v_ *= o.v_;
-    e_ = grow(e + unit(v_) * mag(v_) + tiny());
+    e_ = grow(e + unit_mag(v_) + tiny());
     return *this;
   }
   Bounded& operator/=(const Bounded& o) {
     E a = mag(v_), b = mag(o.v_);
     v_ /= o.v_;
     if (!(b > o.e_)) e_ = std::numeric_limits<E>::infinity();
-    else e_ = grow((a * o.e_ + b * e_) / (b * (b - o.e_)) + unit(v_) * mag(v_) + tiny());
+    else e_ = grow((a * o.e_ + b * e_) / (b * (b - o.e_)) + unit_mag(v_) + tiny());
     return *this;
   }
   Bounded operator-() const { return Bounded(-v_, e_); }
@@ -139,7 +172,7 @@ struct scalar_traits<Bounded<T>> {
     bool exact;
     if constexpr (std::is_same_v<T, double>) exact = std::isfinite(v) && mpq_class(v) == q;
     else exact = mpfr_number_p(v.get()) && mpfr_cmp_q(v.get(), q.get_mpq_t()) == 0;
-    typename B::E e = exact ? 0 : B::grow(B::unit(v) * B::mag(v) + B::tiny());
+    typename B::E e = exact ? 0 : B::grow(B::unit_mag(v) + B::tiny());
     return B(std::move(v), e);
   }
   static B abs(const B& x) { return B(scalar_traits<T>::abs(x.value()), x.bound()); }

@@ -12,17 +12,17 @@
 
 using namespace eccd::clitest;
 
-TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 3D independent scenes", "[cli][cycloidal][independent]") {
+TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 2D and 3D independent scenes", "[cli][cycloidal][independent]") {
   TempDir d;
   Run r = run_eccd("generate --out-dir " + q((d.path / "g").string()) + " --families cycloidal,independent --count 3 --json");
   INFO(r.err);
   REQUIRE(r.code == 0);
-  int cyc = 0, indep = 0;
+  int cyc = 0, indep2 = 0, indep3 = 0;
   for (const auto& e : std::filesystem::directory_iterator(d.path / "g")) {
     eccd::Scene s = eccd::read_scene_file(e.path().string());
     if (s.independent) {
-      ++indep;
-      CHECK(s.dim == 3);
+      ++(s.dim == 2 ? indep2 : indep3);
+      CHECK((s.dim == 2 || s.dim == 3));
       CHECK(s.note.find("family=independent") != std::string::npos);
     } else {
       ++cyc;
@@ -32,7 +32,8 @@ TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 3D 
     }
   }
   CHECK(cyc == 3);
-  CHECK(indep == 3);
+  CHECK(indep2 == 3);  // --count 3 per dimension (the default --dims 2,3)
+  CHECK(indep3 == 3);
   // a dimension without either family: nothing to generate (exit 2)
   Run none = run_eccd("generate --out-dir " + q((d.path / "h").string()) + " --families cycloidal --dims 3");
   CHECK(none.code == 2);

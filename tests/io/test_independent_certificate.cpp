@@ -140,3 +140,69 @@ TEST_CASE("independent certificate: ellipsoids-apart (no meeting) round trip", "
     rejected(s, t, "scene");
   }
 }
+
+TEST_CASE("independent certificate: 2D scenes (discs-end, ellipse-static) round trip, the free system and the format", "[independent][certificate]") {
+  // discs-end: two discs on lines whose meeting ends where B's path stops (edge systems "0", "1");
+  // ellipse-static: B does not move, so the ends of P_s are proved on F = F_u = 0 in (u, s) (system "free").
+  for (const char* name : {"discs-end", "ellipse-static"}) {
+    INFO(name);
+    const Scene s = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json");
+    REQUIRE(s.dim == 2);
+    const Certificate c = certify(s);
+    const json cert = json::parse(c.text);
+    REQUIRE(cert["format"] == kIndependentCertificateFormat);
+    const CertificateCheck ok = check(s, cert);
+    INFO(ok.failed_claim << ": " << ok.reason);
+    REQUIRE(ok.valid);
+    CHECK(cert["reduced"] == json::array());
+    // the certified brackets hold the stored answer's ends (the case's note gives them analytically)
+    REQUIRE(s.answer);
+    REQUIRE(cert["answer"]["collides"] == true);
+    for (const char* k : {"s_intervals", "t_intervals"}) {
+      const auto& stored = std::string(k) == "s_intervals" ? s.answer->s_intervals : s.answer->t_intervals;
+      REQUIRE(cert["answer"][k].size() == stored.size());
+      for (std::size_t i = 0; i < stored.size(); ++i)
+        for (int e = 0; e < 2; ++e) {
+          const json& got = cert["answer"][k][i][e];
+          const mpq_class lo = parse_rational(got["lo"].get<std::string>()), hi = parse_rational(got["hi"].get<std::string>());
+          CHECK(lo <= hi);
+          CHECK(hi - lo < mpq_class(1, 1000000));
+          CHECK(std::abs((e ? stored[i].second : stored[i].first).value - lo.get_d()) < 1e-6);
+        }
+    }
+    std::size_t end = 0;
+    const json& items = cert["s_proof"];
+    while (end < items.size() && items[end]["kind"] != "end") ++end;
+    REQUIRE(end < items.size());
+    const std::string sys = items[end]["system"].get<std::string>();
+    CHECK(sys == (std::string(name) == "ellipse-static" ? "free" : "0"));
+    {  // the end's system changed: its chain has the wrong unknowns or its conditions fail
+      json t = cert;
+      t["s_proof"][end]["system"] = sys == "free" ? "fold" : "free";
+      const CertificateCheck r = check(s, t);
+      INFO(r.failed_claim << ": " << r.reason);
+      CHECK_FALSE(r.valid);
+      CHECK((r.failed_claim + ": " + r.reason).find("s_proof item " + std::to_string(end + 1)) != std::string::npos);
+    }
+    {  // a claimed reduction that F's net does not have
+      json t = cert;
+      t["reduced"] = {"s"};
+      rejected(s, t, "reduced");
+    }
+    {  // the old format is refused by name
+      json t = cert;
+      t["format"] = "eccd-independent-certificate/1";
+      const CertificateCheck r = check(s, t);
+      CHECK_FALSE(r.valid);
+      CHECK(r.reason.find("old format") != std::string::npos);
+    }
+    {  // a flipped out-strip
+      json t = cert;
+      std::size_t out = 0;
+      while (out < items.size() && items[out]["kind"] != "out") ++out;
+      REQUIRE(out < items.size());
+      t["s_proof"][out]["kind"] = "in";
+      rejected(s, t, "s_proof item " + std::to_string(out + 1) + " (");
+    }
+  }
+}
