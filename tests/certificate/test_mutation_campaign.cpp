@@ -14,6 +14,7 @@
 #include "io/certificate.hpp"
 #include "io/certificate_check.hpp"
 #include "io/scene_reader.hpp"
+#include "tests/support/certificate_mutation.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -47,26 +48,9 @@ Base base(const std::string& name, const std::string& rel, const std::string& ot
   return b;
 }
 
-// Every path (JSON pointer) to a value for which pick(value) holds.
-void collect(const json& j, const json::json_pointer& at, const std::function<bool(const json&)>& pick, std::vector<json::json_pointer>& out) {
-  if (pick(j)) out.push_back(at);
-  if (j.is_object())
-    for (auto it = j.begin(); it != j.end(); ++it) collect(it.value(), at / it.key(), pick, out);
-  else if (j.is_array())
-    for (std::size_t i = 0; i < j.size(); ++i) collect(j[i], at / i, pick, out);
-}
+using eccd::test::collect;
 
-bool is_rational_text(const json& j) {
-  if (!j.is_string()) return false;
-  const std::string& s = j.get_ref<const std::string&>();
-  if (s.empty() || s.size() > 4000) return false;
-  std::size_t slash = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s[i] == '/') { if (slash || i == 0) return false; slash = i; continue; }
-    if (!(std::isdigit(static_cast<unsigned char>(s[i])) || (i == 0 && s[i] == '-'))) return false;
-  }
-  return true;
-}
+using eccd::test::is_rational_text;
 
 std::string plus_one(const std::string& s, int d) {
   const std::size_t slash = s.find('/');
@@ -75,10 +59,7 @@ std::string plus_one(const std::string& s, int d) {
   return n.get_str() + (slash == std::string::npos ? "" : s.substr(slash));
 }
 
-struct Mutant {
-  std::string what, text, scene_text;
-  bool may_stay_valid = false;  // the answer and scene are unchanged: a VALID verdict is allowed
-};
+using eccd::test::Mutant;
 
 Mutant mutate(const Base& b, std::mt19937_64& rng) {
   auto pick = [&](std::size_t n) { return std::size_t(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)); };

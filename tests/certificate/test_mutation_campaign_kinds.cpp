@@ -17,6 +17,7 @@
 #include "io/bezier_certificate.hpp"
 #include "io/cycloidal_certificate.hpp"
 #include "io/scene_reader.hpp"
+#include "tests/support/certificate_mutation.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -68,25 +69,9 @@ Base cycloidal_base(const std::string& text, const std::string& other_text) {
   return b;
 }
 
-void collect(const json& j, const json::json_pointer& at, const std::function<bool(const json&)>& pick, std::vector<json::json_pointer>& out) {
-  if (pick(j)) out.push_back(at);
-  if (j.is_object())
-    for (auto it = j.begin(); it != j.end(); ++it) collect(it.value(), at / it.key(), pick, out);
-  else if (j.is_array())
-    for (std::size_t i = 0; i < j.size(); ++i) collect(j[i], at / i, pick, out);
-}
+using eccd::test::collect;
 
-bool is_rational_text(const json& j) {
-  if (!j.is_string()) return false;
-  const std::string& s = j.get_ref<const std::string&>();
-  if (s.empty() || s.size() > 4000) return false;
-  std::size_t slash = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s[i] == '/') { if (slash || i == 0) return false; slash = i; continue; }
-    if (!(std::isdigit(static_cast<unsigned char>(s[i])) || (i == 0 && s[i] == '-'))) return false;
-  }
-  return true;
-}
+using eccd::test::is_rational_text;
 
 mpq_class rq(const json& j) {
   mpq_class q(j.get<std::string>());
@@ -94,10 +79,7 @@ mpq_class rq(const json& j) {
   return q;
 }
 
-struct Mutant {
-  std::string what, text, scene_text;
-  bool may_stay_valid = false;
-};
+using eccd::test::Mutant;
 
 // Where a changed number may leave a true claim (the answer unchanged): boxes, gap points, timeline brackets, samples.
 bool harmless_place(const std::string& p) {
