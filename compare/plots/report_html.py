@@ -246,18 +246,11 @@ def time_chart(rows, links):
             y = sy(math.log10(float(r["time_us"])))
             tip = (f'{r["scene"]} · {r["pipeline"]} · {r["outcome"].replace("_", " ")} · '
                    f'{float(r["time_us"]):.4g} µs')
-            dot = (f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3.2" fill="{OUTCOME_COLOURS[r["outcome"]]}" '
-                   f'data-scene="{html.escape(r["scene"])}"><title>{html.escape(tip)}</title></circle>')
-            if r["scene"] in links:
-                dot = f'<a href="{html.escape(links[r["scene"]])}">{dot}</a>'
-            parts.append(dot)
+            parts.append(_hover_dot(x, y, r, tip, links))
         parts.append("</svg>")
         panels.append("".join(parts))
-    legend = " ".join(f'<span class="key"><span class="sw" style="background:{c}"></span>{o.replace("_", " ")}</span>'
-                      for o, c in OUTCOME_COLOURS.items())
-    return ('<figure class="hover"><div class="panels">' + "".join(panels) + "</div><figcaption>" + legend +
-            "<br>Each point is one run; hover a point for its scene, pipeline, outcome and time; a click opens the "
-            "scene file.</figcaption></figure>")
+    return _hover_figure(panels, "Each point is one run; hover a point for its scene, pipeline, outcome and time; "
+                                 "a click opens the scene file.")
 
 
 def near_miss_chart(rows, links):
@@ -303,18 +296,29 @@ def near_miss_chart(rows, links):
             x = L + cw * (ds.index(r["d"]) + 0.5 + jitter)
             y = T + rh * (pipes.index(r["pipeline"]) + 0.5)
             tip = f'{r["scene"]} · {r["pipeline"]} · {r["outcome"].replace("_", " ")} · d = {r["d"]}'
-            dot = (f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3.2" fill="{OUTCOME_COLOURS[r["outcome"]]}" '
-                   f'data-scene="{html.escape(r["scene"])}"><title>{html.escape(tip)}</title></circle>')
-            if r["scene"] in links:
-                dot = f'<a href="{html.escape(links[r["scene"]])}">{dot}</a>'
-            parts.append(dot)
+            parts.append(_hover_dot(x, y, r, tip, links))
         parts.append("</svg>")
         panels.append("".join(parts))
+    return _hover_figure(panels, "Each point is one near-miss run of a floating pipeline as published; hover a "
+                                 "point for its scene, pipeline, outcome and d; a click opens the scene file.")
+
+
+def _hover_dot(x, y, r, tip, links):
+    """One point of a hover chart: a circle coloured by the run's outcome, its tooltip naming the scene,
+    wrapped in a link to the scene file when the report has one."""
+    dot = (f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3.2" fill="{OUTCOME_COLOURS[r["outcome"]]}" '
+           f'data-scene="{html.escape(r["scene"])}"><title>{html.escape(tip)}</title></circle>')
+    if r["scene"] in links:
+        dot = f'<a href="{html.escape(links[r["scene"]])}">{dot}</a>'
+    return dot
+
+
+def _hover_figure(panels, caption):
+    """A hover chart's panels with the outcome legend and a caption (plain text, escaped by the caller)."""
     legend = " ".join(f'<span class="key"><span class="sw" style="background:{c}"></span>{o.replace("_", " ")}</span>'
                       for o, c in OUTCOME_COLOURS.items())
     return ('<figure class="hover"><div class="panels">' + "".join(panels) + "</div><figcaption>" + legend +
-            "<br>Each point is one near-miss run of a floating pipeline as published; hover a point for its scene, "
-            "pipeline, outcome and d; a click opens the scene file.</figcaption></figure>")
+            "<br>" + caption + "</figcaption></figure>")
 
 
 FM_COLOURS = {"separate": "#9ecae1", "touching": "#fdd835", "colliding": "#e53935", "undecided": "#9e9e9e",
