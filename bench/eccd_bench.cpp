@@ -100,6 +100,7 @@
 #include "bench/fcl_side.hpp"
 #include "bench/poses.hpp"
 #include "bench/speed_targets.hpp"
+#include "bench/table1_frames.hpp"
 #include "compare/fcl_engine.hpp"
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -2150,6 +2151,7 @@ int main(int argc, char** argv) {
   eccd_bench::register_poses({group, [](const std::string& g, const std::string& l, bool b, const std::string& n,
                                         std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
                               [](const std::string& k, const json& j) { g_results[k] = j; }, ECCD_SOURCE_DIR});  // issue 36
+  eccd_bench::register_table1_frames();  // 000 Table 1 as an animation, per frame (bench/table1_frames.cpp)
   eccd_bench::register_speed_targets();  // issue 36: the targets on the product path (bench/speed_targets.cpp)
   eccd_bench::register_independent({group,  // issue 33: cases/independent in four arithmetics (bench/independent.cpp)
                                     [](auto& g, auto& l, bool b, bool heavy, auto& n, auto fn) { row(g, l, b, heavy ? Cost::heavy : Cost::slow, n, fn); },

@@ -43,23 +43,34 @@ import time
 HAND = "Call-graph profile by hand (`perf record --call-graph dwarf` of the row alone, 2026-11-26, revision 8b13203, after this stop's issue-21 branches were merged; inclusive shares): "
 
 TARGETS = [
+    # The static test from two poses through the API (eccd::static_status, static_status_batch), FCL beside
+    # (group speed-static); the pipeline-internal rows of static3d stay as phases.
     dict(
-        name="3D static separation test in double",
-        key="static3d/Appendix A + Sturm",
+        name="3D static test in double from two poses, one pair (eccd::static_status)",
+        key="speed-static/static_status one pair (baseline)",
         limit_ns=40.0,
-        anchor="001: the whole static procedure (motion matrices of degree 4 included) under 1 µs on a 3 GHz Pentium IV; issue 21: at most 40 ns (physical limit of the 150-flop test 15-40 ns); FCL side by side: see below",
+        anchor="at most 40 ns (the physical limit of the 150-flop test is 15-40 ns); 001: the whole static procedure under 1 µs on a 3 GHz Pentium IV; FCL's fcl::collide on the same pairs: `speed-static/FCL collide one pair`",
         phases="static3d",
         steps=["static3d/Appendix A, coefficients only", "static3d/Sturm status only"],
-        also=["static3d/generic det + Sturm"],
+        also=["speed-static/FCL collide one pair", "static3d/Appendix A + Sturm", "static3d/generic det + Sturm"],
     ),
     dict(
-        name="3D static test in double, batched (64 pairs per iteration: 15 ns per pair = 960 ns)",
-        key="static3d/static_status_batch (API, 64 pairs per iteration)",
+        name="3D static test in double, batched with AVX-512 (64 pairs per iteration: 15 ns per pair = 960 ns)",
+        key="speed-static/static_status_batch, 64 pairs, avx512",
         limit_ns=960.0,
-        anchor="issue 21: at most 15 ns per pair for the batched, vectorised static test (the physical limit of the 150-flop test)",
+        anchor="at most 15 ns per pair for the batched, vectorised static test; not measured on a CPU without AVX-512",
         phases="static3d",
         steps=["static3d/Appendix A + Sturm"],
-        also=[],
+        also=["speed-static/static_status_batch, 64 pairs, avx2", "speed-static/static_status_batch, 64 pairs, none"],
+    ),
+    dict(
+        name="3D static test in double, batched with AVX2 (64 pairs per iteration: 15 ns per pair = 960 ns)",
+        key="speed-static/static_status_batch, 64 pairs, avx2",
+        limit_ns=960.0,
+        anchor="at most 15 ns per pair on any x86-64 machine (an AVX2 path for CPUs without AVX-512)",
+        phases="static3d",
+        steps=["static3d/Appendix A + Sturm"],
+        also=["speed-static/static_status_batch, 64 pairs, none"],
     ),
     # Issue 30: the 2D degree-6 and paper 002 targets time eccd::solve from the scene (the product-* groups: what
     # `eccd solve` runs, preparation and contact points included), named by face and input mode; the pipeline rows
@@ -91,12 +102,12 @@ TARGETS = [
         also=["product-2d-deg6-v3/exact", "ccd2d-deg6-v0/exact", "ccd2d-deg6-v3/exact", "ccd2d-deg6-free/exact v0"],
     ),
     dict(
-        name="3D, paper 002's example, all collision intervals, double guarded, rounded input (eccd::solve, the default of `eccd solve --arith double`)",
-        key="product-paper002/double guarded, rounded input",
-        limit_ns=0.3e6,
-        anchor="issue 21: at most 0.3 ms (issue 6: 2 ms); 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV); 002: 4.7 s (Table I, degree 4, Pentium 4 2 GHz)",
+        name="3D, paper 002's example, all collision intervals, double guarded, rounded input (eccd::solve from the scene file, the default of `eccd solve --arith double`)",
+        key="speed-paper002/eccd::solve double guarded (baseline)",
+        limit_ns=0.5e6,
+        anchor="at most 0.5 ms guarded (it was about 4 ms by `eccd solve --json`'s time_ms); 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV); 002: 4.7 s (Table I, degree 4, Pentium 4 2 GHz)",
         phases="phases-paper002-double-bezier",
-        also=["product-paper002/double as published, rounded input", "product-paper002/double guarded, prepared input",
+        also=["product-paper002/double guarded, rounded input", "product-paper002/double as published, rounded input", "product-paper002/double guarded, prepared input",
               "product-paper002/double as published, prepared input", "product-paper002/certified",
               "ccd3d-paper002/double bezier", "ccd3d-paper002/double bezier power", "ccd3d-paper002/double projection",
               "ccd3d-paper002/double sampling:64", "ccd3d-paper002/double marching:64",
@@ -111,21 +122,21 @@ TARGETS = [
         also=["product-paper002/double as published, prepared input"],
     ),
     dict(
-        name="3D, paper 002's example, exact certified answer (eccd::solve --arith exact)",
-        key="product-paper002/exact",
-        limit_ns=25e6,
-        anchor="issue 21: at most 25 ms (issue 6: 1 s); 002: 4.7 s for a degree-4 pair in double (approximate zero set, no certificate)",
+        name="3D, paper 002's example, exact certified answer (eccd::solve --arith exact from the scene file)",
+        key="speed-paper002/eccd::solve exact",
+        limit_ns=20e6,
+        anchor="at most 20 ms from the scene file (it was about 39 ms by `eccd solve --json`'s time_ms; issue 21 asked 25 ms); 002: 4.7 s for a degree-4 pair in double (approximate zero set, no certificate)",
         phases="phases-paper002-exact",
-        also=["ccd3d-paper002/exact"],
+        also=["product-paper002/exact", "ccd3d-paper002/exact"],
     ),
     dict(
-        name="3D continuous query, both ellipsoids translating linearly (degree 1), double (issue 21)",
-        key="ccd3d-deg1-translation/double solve (API)",
-        limit_ns=50e3,
-        anchor="issue 21: at most 50 µs; FCL's continuous test of such a pair (1000 samples) 0.39 ms (this run: see the FCL section)",
+        name="3D continuous query, both ellipsoids translating linearly (degree 1), double guarded (eccd::solve from the scene)",
+        key="speed-deg1/eccd::solve double guarded (baseline)",
+        limit_ns=30e3,
+        anchor="at most 30 µs: ×3.4 faster than FCL's continuous test of the same pair with 1000 samples (`speed-deg1/FCL continuous, 1000 samples`, same run), and exact to the guard's bound",
         phases="ccd3d-deg1-translation",
         steps=["ccd3d-deg1-translation/double pipeline only"],
-        also=["ccd3d-deg1-translation/double pipeline only", "ccd3d-deg1-translation/FCL continuous, 1000 samples (fcl_ccd)"],
+        also=["speed-deg1/FCL continuous, 1000 samples", "speed-deg1/eccd::solve certified", "ccd3d-deg1-translation/double solve (API)"],
     ),
     dict(
         name="3D continuous query, both ellipsoids translating linearly (degree 1), certified (issue 21)",
@@ -142,31 +153,54 @@ TARGETS = [
     ),
     dict(
         name="001-style animation frame (the boxers, 576 pairs, after the bounding spheres and the kept planes), double, per frame",
-        key="animate-boxers/double, 10 frames (baseline)",
-        per="frames",
-        limit_ns=0.3e6,
-        anchor="issue 21: at most 0.3 ms per frame; 001 section 5: 3.4 ms per frame (3 GHz Pentium IV, double)",
+        key="speed-frame/boxers, 10 frames, eccd::animate double",
+        per=10,
+        limit_ns=1e6,
+        anchor="at most 1 ms per frame in double; 001 section 5: 3.4 ms per frame (3 GHz Pentium IV, double)",
         phases=None,
-        also=["animate-boxers/double without planes, 10 frames"],
-        note=HAND + "the continuous test `eccd::solve` 71 % (BezierZeroSet::run 47 %, of it F(·, t0) evaluated by "
-             "de Casteljau in `Bounded<double>` (`bernstein_value` 32 %: degree below 16, where the O(n) evaluation "
-             "of kernel/bernstein_horner.hpp is not used); characteristic_bernstein 17 %), building the next kept "
-             "plane (`separate_at` in double) 20 %; the row 'double without planes' in the animation section shows "
-             "what the kept planes save.",
+        also=["animate-boxers/double, 10 frames (baseline)", "animate-boxers/double without planes, 10 frames"],
     ),
     dict(
-        name="001-style animation frame (the boxers, 576 pairs, after the bounding spheres and the kept planes), certified, per frame",
-        key="animate-boxers/certified, 10 frames",
-        per="frames",
-        limit_ns=1e6,
-        anchor="issue 21: at most 1 ms per frame in certified mode; 001 section 5: 3.4 ms per frame in double (no certificate)",
+        name="001-style animation frame (the boxers, 576 pairs), certified, per frame",
+        key="speed-frame/boxers, 10 frames, eccd::animate certified",
+        per=10,
+        limit_ns=2e6,
+        anchor="at most 2 ms per frame certified; 001 section 5: 3.4 ms per frame in double (no certificate)",
         phases=None,
-        note=HAND + "the certified continuous test `eccd::solve` 64 % (`prove_bezier` 42 %, of it the interval net "
-             "`characteristic_bernstein<Interval>` 21 %; `prepare_pair` 13 %; contact points 9 %), building the next kept "
-             "plane (`separate_at`, now the double construction proved by its error-bounded checks) 20 %. "
-             "Before this stop the exact plane (`separate_exact`) was 63 %.",
-        also=[],
+        also=["animate-boxers/certified, 10 frames"],
     ),
+    dict(
+        name="Paper 000 Table 1's pair as an animation (0.1 rad per frame, kept planes), double, per frame",
+        key="speed-table1-frames/eccd::animate double (baseline)",
+        per="frames",
+        limit_ns=25e3,
+        anchor="at most 25 µs per frame in double (it was 242 µs); 000 Table 1: 2.47 µs per frame for a static pose per frame (the per-pose rows below are that mode)",
+        phases=None,
+        also=["speed-table1-frames/eccd::animate certified"],
+    ),
+    dict(
+        name="The kept plane's check over one frame of 000 Table 1's pair, double, per pair-frame",
+        key="speed-frame/Table 1 pair-frame, kept-plane check double",
+        limit_ns=2e3,
+        anchor="at most 2 µs per pair-frame (000 section 4: a few dot products per frame; it was 20 µs in the animation, 88 µs through plane_separates_on_frame)",
+        phases=None,
+        also=["speed-frame/Table 1 pair-frame, eccd::solve double (baseline)", "plane-check/continuous test, double (baseline)"],
+    ),
+] + [
+    # The per-pose mode (eccd animate --poses): per pair-pose, every stage included.
+    dict(
+        name=f"Per-pose mode, {what}, {arith}, per pair-pose",
+        key=f"poses/{label}, {arith}",
+        per="pair_poses",
+        limit_ns=500.0 if arith == "double" else 1000.0,
+        anchor=("at most 0.5 µs per pair-pose in double" if arith == "double" else "at most 1 µs per pair-pose certified")
+        + "; 000 Tables 1-2: 2.1-5 µs per frame (one pair, static pose per frame, Pentium 4)",
+        phases=None,
+        also=[f"poses/{label}, double, no planes"] if label.startswith("table1 0.1") and arith == "double" else [],
+    )
+    for label, what in (("table1 0.1 rad", "000 Table 1 at 0.1 rad"), ("table2 main orbit", "000 Table 2's main orbit"),
+                        ("boxers", "the boxers (576 pairs)"))
+    for arith in ("double", "certified")
 ]
 
 # Targets on a ratio over a set of scenes: per scene, the row `SCENE certified`
@@ -218,6 +252,36 @@ RATIO_TARGETS = [
          base="static-certified-3d/double static_status (API, two poses)", limit_ratio=1.5,
          anchor="issue 18: the certified static test costs at most 1.5x the double static test on random pairs"),
 ]
+
+
+# The batch against single pairs: never slower (64 pairs per iteration against one pair per iteration).
+RATIO_TARGETS += [
+    dict(name=f"The batched static test never slower than single pairs ({isa}): 64 pairs against 64 × one pair",
+         key=f"speed-static/static_status_batch, 64 pairs, {isa}", base="speed-static/static_status one pair (baseline)",
+         limit_ratio=64.0,
+         anchor="the batch never slower than single pairs on any x86-64 machine (it was 171 ns per pair against 138 ns "
+                "on an EPYC without AVX-512 before the AVX2 path); not measured where the CPU lacks the instruction set")
+    for isa in ("avx512", "avx2")
+]
+
+
+def independent_targets(summ):
+    """Per scene of cases/independent (groups independent-NAME of bench/independent.cpp): exact and certified at most
+    5 s (TARGETS entries), MPFR at most ×20 double (RATIO_TARGETS entries)."""
+    times, ratios = [], []
+    for g in summ["groups"]:
+        if not g["id"].startswith("independent-"):
+            continue
+        name = g["id"][len("independent-"):]
+        for a in ("exact", "certified"):
+            times.append(dict(name=f"Independent motions, cases/independent/{name}.json, {a}",
+                              key=f"{g['id']}/{a}", limit_ns=5e9, phases=None,
+                              anchor="at most 5 s per scene of cases/independent for exact and certified (paper 001 section 4; "
+                                     "one scene ran more than 120 s before)"))
+        ratios.append(dict(name=f"Independent motions, cases/independent/{name}.json: mpfr:128 over double (both guarded)",
+                           key=f"{g['id']}/mpfr:128", base=f"{g['id']}/double", limit_ratio=20.0,
+                           anchor="MPFR within ×20 of double's time on the same scene"))
+    return times, ratios
 
 
 # Issue 17's benchmarks (animations), each a ratio to its group's baseline in
@@ -277,6 +341,11 @@ def write_animation_section(w, summ):
             w(f"| {what} | {label} | {fmt_time(r['median_cpu_ns'])} | {per} | {fmt_ratio(r.get('ratio'))} | "
               f"{md_escape(text)} | {anchor} |")
     w("")
+
+
+def per_unit(t):
+    """What a target's "per" counts: the result field's name, or per_what (default "frames") for a fixed number."""
+    return t["per"] if isinstance(t.get("per"), str) else t.get("per_what", "frames")
 
 
 def per_divisor(t, r):
@@ -720,9 +789,14 @@ def main():
     ap.add_argument("--out", default="reports/performance.md")
     ap.add_argument("--work", default="build-bench/bench-results")
     ap.add_argument("--quick", action="store_true", help="3 repetitions, short minimum times (development only)")
+    ap.add_argument("--filter", default=None, help="only the rows matching this regular expression (development only: "
+                                                  "the report then lacks the other rows)")
     ap.add_argument("--profile-seconds", type=float, default=2.0)
     ap.add_argument("--no-perf", action="store_true")
     ap.add_argument("--started", type=float, default=None, help="time.time() when the whole script started")
+    ap.add_argument("--eccd", default=None,
+                    help="the eccd program, for the certificates' cost (`eccd regress cases/ --arith certified --certify`); "
+                         "default: eccd beside the benchmark's build folder; 'none' leaves the section out")
     args = ap.parse_args()
 
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -738,6 +812,8 @@ def main():
    ]
     if args.quick:
         cmd.append("--eccd_quick")
+    if args.filter:
+        cmd.append("--benchmark_filter=" + args.filter)
     print("running: " + " ".join(cmd), file=sys.stderr)
     t0 = time.time()
     with open(log_path, "w") as log:
@@ -760,8 +836,11 @@ def main():
             rows[r["key"]] = (g, r)
 
     # Targets.
+    indep_times, indep_ratios = independent_targets(summ)
+    targets = TARGETS + indep_times
+    RATIO_TARGETS.extend(indep_ratios)
     verdicts = []
-    for t in TARGETS:
+    for t in targets:
         g, r = rows.get(t["key"], (None, None))
         v = dict(t)
         if r is None or "median_cpu_ns" not in r:
@@ -788,6 +867,7 @@ def main():
     # main run (the verdict is the main run's; this shows how much a verdict
     # depends on what else ran, and on the load at the time).
     alone_path = os.path.join(args.work, "targets-alone.json")
+    # (the per-scene independent rows are seconds each: not re-run)
     regex = "^(" + "|".join(ere_escape(t["key"]) for t in TARGETS) + ")(/|$)"
     cmd2 = [args.bench, "--benchmark_filter=" + regex, "--eccd_summary=" + alone_path] + (["--eccd_quick"] if args.quick else [])
     print("re-running the target rows alone", file=sys.stderr)
@@ -844,9 +924,55 @@ def main():
             v["perf_error"] = why_not
     info["ratio_targets"] = ratios
 
+    info["certificate_cost"] = certificate_cost(args, root)
+
     total_seconds = time.time() - started
     write_report(args.out, summ, info, verdicts, rows, bench_seconds, total_seconds, args)
     print(f"wrote {args.out} (benchmark {bench_seconds:.0f} s, whole run {total_seconds:.0f} s)", file=sys.stderr)
+
+
+CHECK_OVER_PROVE_LIMIT = 0.5
+
+
+def certificate_cost(args, root):
+    """Checking against proving, per certificate kind, over cases/: the figures `eccd regress --certify --json` prints
+    (prove = writing the certificate, its exact or interval run included; check = eccd-check's library on it)."""
+    if args.eccd == "none":
+        return {"error": "left out (--eccd none)"}
+    eccd = args.eccd or os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(args.bench))), "eccd")
+    if not os.path.isfile(eccd):
+        return {"error": f"no eccd program at {eccd}"}
+    cmd = [eccd, "-q", "regress", "cases/", "--arith", "certified", "--certify", "--json"]
+    print("running: " + " ".join(cmd), file=sys.stderr)
+    p = run(cmd, cwd=root)
+    try:
+        j = json.loads(p.stdout)
+    except ValueError:
+        return {"error": f"`{' '.join(cmd[1:])}` exited {p.returncode} without JSON: {p.stderr.strip()[-300:]}"}
+    return {"command": "eccd " + " ".join(cmd[1:]), "agree": j.get("agree"), "differ": j.get("differ"),
+            "errors": j.get("errors"), "kinds": j.get("certificate_cost", []), "load": loadavg()}
+
+
+def write_certificate_cost(w, cost):
+    w("## Certificates: checking against proving")
+    w("")
+    if not cost or cost.get("error"):
+        w(f"Not measured: {cost.get('error') if cost else 'not run'}.")
+        w("")
+        return
+    w(f"`{cost['command']}` in the same run (wall time of each step in one process, load {cost['load']}): proving is "
+      "writing the certificate (its exact or interval run included), checking is `eccd-check`'s library on it, which "
+      "shares no code with the prover. Target: checking at most half of proving, per kind, over the scenes of "
+      f"`cases/`. The regression itself: {cost['agree']} agree, {cost['differ']} differ, {cost['errors']} errors.")
+    w("")
+    w("| kind | certificates | prove | check | check / prove | worst scene | limit | verdict |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for k in cost["kinds"]:
+        r = k["check_over_prove"]
+        verdict = "**met**" if r <= CHECK_OVER_PROVE_LIMIT else f"**missed** by ×{r / CHECK_OVER_PROVE_LIMIT:.2f}"
+        w(f"| `{k['kind']}` | {k['certificates']} | {k['prove_seconds']:.2f} s | {k['check_seconds']:.2f} s | {r:.2f} | "
+          f"{k['worst_check_over_prove']:.2f} | {CHECK_OVER_PROVE_LIMIT} | {verdict} |")
+    w("")
 
 
 def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, args):
@@ -923,7 +1049,7 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
             alone_txt = fmt_time(v["alone_ns"]) + (" (met)" if v["alone_met"] else " (missed)")
             if v["alone_met"] != v["met"]:
                 alone_txt += ": **the verdict differs**"
-        per_txt = f" (median / {v['div']:g} {v['per']})" if v.get("per") else ""
+        per_txt = f" (median / {v['div']:g} {per_unit(v)})" if v.get("per") else ""
         w(f"| {v['name']} (`{v['key']}`{per_txt}) | {v['anchor']} | {fmt_time(v['limit_ns'])} | {fmt_time(v['ns'])} | "
           f"{fmt_time(v['real_ns'])} | {fmt_time(lo)} – {fmt_time(hi)} | {verdict} | {alone_txt} |")
     w("")
@@ -941,12 +1067,14 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
             continue
         def fig(k):
             d = per_divisor(v, rows[k][1]) if v.get("per") else 1.0
-            return fmt_time(rows[k][1]["median_cpu_ns"] / d) + (f" per {v['per'][:-1] if v['per'].endswith('s') else v['per']}" if v.get("per") and d else "")
+            unit = per_unit(v)
+            return fmt_time(rows[k][1]["median_cpu_ns"] / d) + (f" per {unit[:-1] if unit.endswith('s') else unit}" if v.get("per") and d else "")
         w(f"- {v['name']}: " + "; ".join(f"`{k}` {fig(k)}" for k in rel) + ".")
     w("")
 
     write_set_targets(w, info.get("set_targets", []))
     write_ratio_targets(w, info.get("ratio_targets", []))
+    write_certificate_cost(w, info.get("certificate_cost"))
     write_animation_section(w, summ)
     write_fcl_section(w, summ)
 
