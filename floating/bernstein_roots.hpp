@@ -40,7 +40,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eccd {
@@ -67,7 +69,7 @@ struct BernsteinRootOptions {
 // Where the control polygon of b (one sign change, b.front() of sign sa) crosses zero,
 // in [0, 1]: an evaluation point only (its error does not matter); 1/2 if it cannot be formed.
 template <class T>
-T control_polygon_zero(const std::vector<T>& b, Sign sa, const T& half) {
+T control_polygon_zero(std::span<const T> b, Sign sa, const T& half) {
   const int n = int(b.size()) - 1;
   int i = 0;  // the last coefficient of sign sa before the change
   for (int k = 1; k <= n; ++k) {
@@ -79,6 +81,58 @@ T control_polygon_zero(const std::vector<T>& b, Sign sa, const T& half) {
     return x > T(0) && x < T(1) ? x : half;
   }
   return half;
+}
+
+// Modified regula falsi (Anderson-Björck) on a piece b with exactly one simple
+// root and end signs sa, -sa: [lo, hi] ⊂ [0, 1] around the root, narrower than
+// `width` unless a value's sign is unknown or zero, `max_iter` steps, or the
+// deadline (out_of_time). Only the values' signs are read (value_sign).
+template <class V>
+std::pair<V, V> refine_simple_root(std::span<const V> b, Sign sa, int max_iter, const V& width, const V& zero,
+                                   const V& one, const V& half, bool low_degree, bool& out_of_time) {
+  V lo = zero, hi = one, flo = b.front(), fhi = b.back();
+  int side = 0;
+  // The piece's values in O(n) each from degree 16 on (kernel/bernstein_horner.hpp:
+  // the same order of error as de Casteljau's triangle, which it falls back to).
+  const BernsteinHorner<V> piece_value{b};
+  // With the O(n) values (degree >= 16; below, the steps are Illinois' from the
+  // ends on de Casteljau values): the first point is where the control polygon
+  // crosses zero (close to the curve once one sign change is left; from the end
+  // values alone the secant crept towards a root near an end by doubling steps,
+  // ~8 of ~16 evaluations at n = 144), and the damping is Anderson-Björck's (below).
+  const bool fast = piece_value.linear();
+  const V x_first = fast ? point_of(control_polygon_zero(b, sa, half)) : half;
+  for (int it = 0; it < max_iter && hi - lo > width; ++it) {
+    // Each step evaluates the piece; at degree ~100 in MPFR the up to 4p steps
+    // took seconds past the deadline: ask it every step, except below degree 8,
+    // where eight steps cost less than the clock read they would each add.
+    if ((low_degree ? it % 8 == 0 : true) && deadline_passed()) { out_of_time = true; break; }
+    V den = fhi - flo;
+    V x = it == 0 && fast ? x_first : point_of(V((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
+    if (!(x > lo && x < hi)) x = point_of(V(half * (lo + hi)));
+    V fx = piece_value(x);
+    Sign sx = value_sign(fx);
+    if (sx == Sign::uncertain) break;
+    if (sx == Sign::zero) { lo = x; hi = x; break; }
+    // An end kept twice has its value scaled: Illinois by 1/2; Anderson-Björck
+    // (fast) by m = 1 - f(x)/f(replaced end), 1/2 if that is not in (0, 1):
+    // with Illinois' fixed 1/2 the last steps crawled by halvings.
+    auto damp = [&](const V& f_new, const V& f_old) {
+      if (!fast) return half;
+      V m = one - f_new / f_old;
+      return m > zero && m < one ? m : half;
+    };
+    if (sx == sa) {
+      if (side == -1) fhi = damp(fx, flo) * fhi;
+      lo = x; flo = fx;
+      side = -1;
+    } else {
+      if (side == 1) flo = damp(fx, fhi) * flo;
+      hi = x; fhi = fx;
+      side = 1;
+    }
+  }
+  return {lo, hi};
 }
 
 template <class T>
@@ -160,53 +214,24 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
     // running error bound) leaves the count unknown, and the piece is split.
     if (sign_variations(pc.q.b).is(1) && sa != Sign::zero && sb != Sign::zero && sa != sb) {
       // exactly one simple root: modified regula falsi (Anderson-Björck), which
-      // converges superlinearly, down to the working precision
-      T lo = zero, hi = one, flo = pc.q.b.front(), fhi = pc.q.b.back();
-      int side = 0;
-      // The piece's values in O(n) each from degree 16 on (kernel/bernstein_horner.hpp:
-      // the same order of error as de Casteljau's triangle, which it falls back to).
-      const BernsteinHorner<T> piece_value{std::span<const T>(pc.q.b)};
-      // With the O(n) values (degree >= 16; below, the steps are Illinois' as before
-      // issue 21, bit for bit): the first point is where the control polygon crosses
-      // zero (close to the curve once one sign change is left; from the end values
-      // alone the secant crept towards a root near an end by doubling steps, ~8 of
-      // ~16 evaluations at n = 144), and the damping is Anderson-Björck's (below).
-      const bool fast = piece_value.linear();
-      const T x_first = fast ? point_of(control_polygon_zero(pc.q.b, sa, half)) : half;
-      bool out_of_time = false;
-      for (int it = 0; it < 4 * opt.precision_bits && hi - lo > simple_width; ++it) {
-        // Each step evaluates the piece (O(n^2) before issue 21); at degree ~100 in MPFR the
-        // up to 4p steps took seconds past the deadline: ask it every step,
-        // except below degree 8, where eight steps cost less than the clock
-        // read they would each add (issue 21: 5 % of a 3D query in double).
-        if ((low_degree ? it % 8 == 0 : true) && deadline_passed()) { out_of_time = true; break; }
-        T den = fhi - flo;
-        T x = it == 0 && fast ? x_first : point_of(T((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
-        if (!(x > lo && x < hi)) x = point_of(T(half * (lo + hi)));
-        T fx = piece_value(x);
-        // The root is proved to be in the piece; where the bound leaves fx's sign
-        // uncertain, its location is refined by the value's sign (best effort, as plain T).
-        Sign sx = value_sign(fx);
-        if (sx == Sign::uncertain) break;
-        if (sx == Sign::zero) { lo = x; hi = x; break; }
-        // An end kept twice has its value scaled: Illinois by 1/2; Anderson-Björck
-        // (fast) by m = 1 - f(x)/f(replaced end), 1/2 if that is not in (0, 1):
-        // with Illinois' fixed 1/2 the last steps crawled by halvings.
-        auto damp = [&](const T& f_new, const T& f_old) {
-          if (!fast) return half;
-          T m = one - f_new / f_old;
-          return m > zero && m < one ? m : half;
-        };
-        if (sx == sa) {
-          if (side == -1) fhi = damp(fx, flo) * fhi;
-          lo = x; flo = fx;
-          side = -1;
-        } else {
-          if (side == 1) flo = damp(fx, fhi) * flo;
-          hi = x; fhi = fx;
-          side = 1;
-        }
+      // converges superlinearly, down to the working precision. The root is proved
+      // to be in the piece; only its location is refined, by the values' signs, so
+      // under a running bound this runs in the plain arithmetic (the same values).
+      using P = PlainOf<T>;
+      using V = typename P::type;
+      std::span<const V> values;
+      if constexpr (has_error_bound_v<T>) {
+        thread_local std::vector<V> plain;
+        plain.clear();
+        for (const auto& x : pc.q.b) plain.push_back(P::of(x));
+        values = std::span<const V>(plain);
+      } else {
+        values = std::span<const V>(pc.q.b);
       }
+      bool out_of_time = false;
+      auto [lo_v, hi_v] = refine_simple_root<V>(values, sa, 4 * opt.precision_bits, P::of(simple_width),
+                                                P::of(zero), P::of(one), P::of(half), low_degree, out_of_time);
+      const T lo = P::lift(lo_v), hi = P::lift(hi_v);
       T rlo = point_of(T(pc.a + w * lo)), rhi = point_of(T(pc.a + w * hi));
       if (out_of_time) {  // a root is in [rlo, rhi], but not located to the working precision: unresolved
         opt.stopped = deadline_reason();

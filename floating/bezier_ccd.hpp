@@ -148,25 +148,10 @@ BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
 template <class U>
 struct Peak { U u, value; };
 
-namespace bezier_detail {
-template <class U>
-struct Plain {  // the arithmetic a witness is located in
-  using type = U;
-  static const U& of(const U& x) { return x; }
-  static U lift(const U& x) { return x; }
-};
-template <class V>
-struct Plain<Bounded<V>> {
-  using type = V;
-  static const V& of(const Bounded<V>& x) { return x.value(); }
-  static Bounded<V> lift(const V& x) { return Bounded<V>(x, 0); }  // an evaluation point (point_of)
-};
-}  // namespace bezier_detail
-
 // u0, u1: 0 and 1 at the precision of f's coefficients.
 template <class U>
 Peak<U> bern_argmax(const Bern<U>& f, int bits, const U& u0, const U& u1) {
-  using P = bezier_detail::Plain<U>;
+  using P = PlainOf<U>;
   using V = typename P::type;
   Peak<U> best{u0, f(u0)};
   U v1 = f(u1);
@@ -575,10 +560,13 @@ class BezierZeroSet {
     const std::size_t base = pts.size();
     pts.resize(base + std::size_t(m + 1) * std::size_t(n + 1));
     auto at = [&](int i, int j) -> std::pair<double, double>& { return pts[base + std::size_t(i) * std::size_t(n + 1) + j]; };
+    // Directions only (no sign is read from them): in the plain arithmetic under a running bound, the same values.
+    using P = PlainOf<T>;
+    using V = typename P::type;
     auto elevated_derivative = [&](auto c, int k, int deg) {
-      T e = zero_;
-      if (k > 0) { T d = c(k) - c(k - 1); e = small_int(k) * d; }
-      if (k < deg) { T d = c(k + 1) - c(k); T term = small_int(deg - k) * d; e = k > 0 ? T(e + term) : term; }
+      V e = P::of(zero_);
+      if (k > 0) { V d = P::of(c(k)) - P::of(c(k - 1)); e = P::of(small_int(k)) * d; }
+      if (k < deg) { V d = P::of(c(k + 1)) - P::of(c(k)); V term = P::of(small_int(deg - k)) * d; e = k > 0 ? V(e + term) : term; }
       return e;
     };
     for (int j = 0; j <= n; ++j)

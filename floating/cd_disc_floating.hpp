@@ -87,11 +87,17 @@ struct FloatingPolicy {
   // place where Δ's sign is unknown: there may be a double root (a touch),
   // two close roots or none, so nothing is claimed there.
   // The value at the root in O(n) (kernel/bernstein_horner.hpp, issue 21: the same order of
-  // error as de Casteljau's); with a running error bound the triangle's smaller bound is kept.
+  // error as de Casteljau's). With a running error bound that value's bound decides where it
+  // can (the as-published value, bit for bit), and only where it cannot, de Casteljau's
+  // triangle, whose bound is smaller, is asked (O(n^2)): both bound the exact value at the
+  // same point, so either decision is that value's sign.
   Sign sign_at(const Bern<T>& q, const Root& r) const {
     if (unknown_inside(r)) return Sign::uncertain;
-    if constexpr (has_error_bound_v<T>) return eccd::sign(q(r.value));
-    else return eccd::sign(BernsteinHorner<T>(std::span<const T>(q.b))(r.value));
+    const BernsteinHorner<T> horner{std::span<const T>(q.b)};
+    const Sign s = eccd::sign(horner(r.value));
+    if constexpr (has_error_bound_v<T>)
+      if (s == Sign::uncertain && horner.linear()) return eccd::sign(q(r.value));
+    return s;
   }
   Sign sign_at_value(const Bern<T>& q, const T& t) const { return eccd::sign(q(t)); }
   T sample_between(const Root* l, const Root* r) const {

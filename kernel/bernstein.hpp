@@ -110,6 +110,10 @@ void split_into(std::span<const T> c, const T& tau, std::span<T> lo, std::span<T
   const int n = int(c.size()) - 1;
   std::copy(c.begin(), c.end(), hi.begin());
   T s = T(1) - tau;
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass: split's two pieces
+    running_error_loops::de_casteljau(hi, s, tau, lo.data());
+    return;
+  }
   lo[0] = hi[0];
   for (int r = 1; r <= n; ++r) {
     for (int i = 0; i + r <= n; ++i) { T x = s * hi[i]; T y = tau * hi[i + 1]; hi[i] = x + y; }
@@ -142,10 +146,15 @@ Bern<T> to_bernstein(const Poly<T>& p, int n) {  // n >= degree(p)
   if (p.is_zero()) return r;
   const T& like = p.c.front();
   const std::vector<T>& cn = binomial_row(n, like);
+  [[maybe_unused]] const double* inv = nullptr;  // 1 / C(n, i) for the guard's bounds, when the row is exact
+  if constexpr (std::is_same_v<T, Bounded<double>>) {
+    thread_local std::vector<double> inv_row;
+    if (running_error_loops::inverse_magnitudes(std::span<const T>(cn), inv_row)) inv = inv_row.data();
+  }
   for (int k = 0; k <= n; ++k) {
     const std::vector<T>& ck = binomial_row(k, like);
     if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
-      r.b[k] = running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1);
+      r.b[k] = running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1, inv);
       continue;
     }
     T acc = T(0);

@@ -14,6 +14,7 @@
 #include "kernel/bernstein.hpp"
 
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -78,6 +79,10 @@ template <class T>
 void keep_u_right(BiBern<T>& f, const T& tau) {
   const int m = f.degree_u(), n = f.degree_t();
   T s = T(1) - tau;
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass, all columns at once
+    running_error_loops::de_casteljau_rows(f.b, s, tau, false);
+    return;
+  }
   for (int r = 1; r <= m; ++r)
     for (int i = 0; i + r <= m; ++i)
       for (int j = 0; j <= n; ++j) { T x = s * f.b[i][j]; T y = tau * f.b[i + 1][j]; f.b[i][j] = x + y; }
@@ -86,6 +91,10 @@ template <class T>
 void keep_u_left(BiBern<T>& f, const T& tau) {
   const int m = f.degree_u(), n = f.degree_t();
   T s = T(1) - tau;
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass, all columns at once
+    running_error_loops::de_casteljau_rows(f.b, s, tau, true);
+    return;
+  }
   for (int r = 1; r <= m; ++r)
     for (int i = m; i >= r; --i)
       for (int j = 0; j <= n; ++j) { T x = s * f.b[i - 1][j]; T y = tau * f.b[i][j]; f.b[i][j] = x + y; }

@@ -24,8 +24,10 @@
 // shot) are points chosen by the pipeline, not approximations of an exact
 // quantity whose error matters: point_of(x) drops their bound, so that a
 // value computed at x is bounded against the exact value at that same x.
-// For Mpfr, |x| enters the bound as its leading 53 bits rounded away from 0
-// (mpfr_get_d_2exp: cheaper than a long double conversion, and >= |x|).
+// For Mpfr, |x| enters the bound as the top 53 bits of its significand plus
+// one unit, read from the leading limb (>= |x|, no conversion call), and the
+// rounding of a result x as half a unit in x's last place, from x's exponent
+// alone (<= u|x|: the bound is both cheaper and no larger than with u|x|).
 // Requirements on T: double or Mpfr. Cost: see the report of issue 14; powers of
 // two of a long double come from a table (pow2): std::ldexp of a long double was
 // a third of an MPFR independent run (issue 33, docs/independent-motions.md).
@@ -56,26 +58,31 @@ class Bounded {
 
   static E mag(const T& x) {
     if constexpr (std::is_same_v<T, double>) return std::fabs(x);
-    else {  // the leading 53 bits rounded away from 0, then scaled: >= |x|, at any exponent
-      if (mpfr_zero_p(x.get())) return E(0);
-      if (!mpfr_number_p(x.get())) return std::numeric_limits<E>::infinity();
-      long ex = 0;
-      double d = mpfr_get_d_2exp(&ex, x.get(), MPFR_RNDA);
-      return E(std::fabs(d)) * pow2(ex);
+    else {  // the leading 53 bits of the significand plus one unit in their last place, scaled: >= |x|
+      mpfr_srcptr p = x.get();
+      if (!mpfr_regular_p(p)) return mpfr_zero_p(p) ? E(0) : std::numeric_limits<E>::infinity();
+      return E(leading53_up(p)) * pow2(long(mpfr_get_exp(p)) - 53);
     }
   }
-  // unit(x) * mag(x) in one scaling: the rounding error allowed for a result x (the same number: both factors
-  // are powers of two times |d|, exact unless the product leaves long double's range).
+  // unit(x) * mag(x), the rounding error allowed for a result x of x's precision p: for double u|x|; for Mpfr
+  // half a unit in the last place of x, 2^(EXP - p - 1) with 2^(EXP-1) <= |x| < 2^EXP, which is <= u|x| and
+  // bounds the error of rounding to nearest (the exact result lies in x's binade or, when x = 2^(EXP-1), in
+  // the one below, whose half unit is smaller). It needs only x's exponent.
   static E unit_mag(const T& x) {
     if constexpr (std::is_same_v<T, double>) return unit(x) * mag(x);
     else {
-      if (mpfr_zero_p(x.get())) return E(0);
-      if (!mpfr_number_p(x.get())) return std::numeric_limits<E>::infinity();
-      long ex = 0;
-      double d = mpfr_get_d_2exp(&ex, x.get(), MPFR_RNDA);
-      const int p = x.precision() > 0 ? x.precision() : int(Mpfr::kConstBits);
-      return E(std::fabs(d)) * pow2(ex - p);
+      mpfr_srcptr p = x.get();
+      if (!mpfr_regular_p(p)) return mpfr_zero_p(p) ? E(0) : std::numeric_limits<E>::infinity();
+      const long prec = x.precision() > 0 ? long(x.precision()) : long(Mpfr::kConstBits);
+      return pow2(long(mpfr_get_exp(p)) - prec - 1);
     }
+  }
+  // The top 53 bits of a regular MPFR number's significand (read from its leading limb, whose highest bit
+  // is set), plus 1: an integer in [2^52, 2^53], exact as a double, with |x| < it * 2^(EXP - 53).
+  static double leading53_up(mpfr_srcptr p) {
+    static_assert(GMP_NUMB_BITS == 64, "the leading limb holds 64 bits");
+    const mp_limb_t top = p->_mpfr_d[(mpfr_get_prec(p) - 1) / GMP_NUMB_BITS];
+    return double((top >> (GMP_NUMB_BITS - 53)) + 1);
   }
   // 2^k as E, k clamped to [-20000, 20000] (as std::ldexp(E(1), k), which it replaces in the hot path: ldexp of a
   // long double is a software routine, and was a third of an MPFR independent run's time). A table over
@@ -111,8 +118,11 @@ class Bounded {
   Bounded& operator+=(const Bounded& o) { v_ += o.v_; e_ = grow(e_ + o.e_ + unit_mag(v_)); return *this; }
   Bounded& operator-=(const Bounded& o) { v_ -= o.v_; e_ = grow(e_ + o.e_ + unit_mag(v_)); return *this; }
   Bounded& operator*=(const Bounded& o) {
-    E a = mag(v_), b = mag(o.v_);
-    E e = a * o.e_ + b * e_ + e_ * o.e_;
+    E e;
+    if constexpr (std::is_same_v<T, double>) e = mag(v_) * o.e_ + mag(o.v_) * e_ + e_ * o.e_;
+    else  // a term whose error factor is 0 is 0 (skipped: each mag reads an MPFR number; a non-finite
+          // factor makes the product's unit_mag infinite below anyway)
+      e = (o.e_ != 0 ? mag(v_) * o.e_ : E(0)) + (e_ != 0 ? mag(o.v_) * e_ + e_ * o.e_ : E(0));
     v_ *= o.v_;
     e_ = grow(e + unit_mag(v_) + tiny());
     return *this;
@@ -149,6 +159,24 @@ template <class T> inline constexpr bool has_error_bound_v = is_bounded<T>::valu
 // An evaluation point: the same value, error bound 0 (see the header prose).
 template <class T> inline T point_of(const T& x) { return x; }
 template <class T> inline Bounded<T> point_of(const Bounded<T>& x) { return Bounded<T>(x.value(), 0); }
+
+// The plain arithmetic under a running bound, for work whose result is a
+// point or a location and not a sign (a root's refinement, a witness's search,
+// a picture's directions): PlainOf<Bounded<V>>::type is V, of(x) the value
+// (bit for bit the plain-V result of the same operations), lift(v) an
+// evaluation point (bound 0, as point_of); PlainOf<T> is T itself otherwise.
+template <class T>
+struct PlainOf {
+  using type = T;
+  static const T& of(const T& x) { return x; }
+  static T lift(const T& x) { return x; }
+};
+template <class V>
+struct PlainOf<Bounded<V>> {
+  using type = V;
+  static const V& of(const Bounded<V>& x) { return x.value(); }
+  static Bounded<V> lift(const V& x) { return Bounded<V>(x, 0); }
+};
 
 // The sign of the value held, ignoring the bound (for best-effort refinement
 // of something already proved, e.g. a simple root's location).

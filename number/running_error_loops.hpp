@@ -68,17 +68,21 @@ inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD>
   rv.assign(K, 0.0);
   mu.assign(K, 0.0);
   E.assign(K, 0.0);
+  // The buffers do not overlap (__restrict: the compiler may then run the inner loop on vectors).
+  const double* __restrict yvp = yv.data();
+  const double* __restrict yep = ye.data();
+  const double* __restrict yaep = yae.data();
   for (std::size_t i = 0; i < m1; ++i) {
     const double xv = x[i].value(), xa = std::fabs(xv), xe = x[i].bound();
-    double* r = rv.data() + i;
-    double* m = mu.data() + i;
-    double* e = E.data() + i;
+    double* __restrict r = rv.data() + i;
+    double* __restrict m = mu.data() + i;
+    double* __restrict e = E.data() + i;
     for (std::size_t j = 0; j < n1; ++j) {
-      const double p = xv * yv[j];
+      const double p = xv * yvp[j];
       const double s = r[j] + p;
       r[j] = s;
       m[j] += std::fabs(p) + std::fabs(s);
-      e[j] += xa * ye[j] + xe * yae[j];
+      e[j] += xa * yep[j] + xe * yaep[j];
     }
   }
   for (std::size_t k = 0; k < K; ++k) {
@@ -95,26 +99,77 @@ inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD>
 // the right piece (its entry i after round n - i), or w[0] as the value at t.
 inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
   const int n = int(w.size()) - 1;
-  thread_local std::vector<double> v, e;
-  v.resize(w.size());
-  e.resize(w.size());
+  // Working rows on the stack up to degree 63 (the 3D method's many low-degree calls), else per thread.
+  double vs[64], es[64];
+  thread_local std::vector<double> vh, eh;
+  double* v = vs;
+  double* e = es;
+  if (w.size() > 64) {
+    vh.resize(w.size());
+    eh.resize(w.size());
+    v = vh.data();
+    e = eh.data();
+  }
   for (int i = 0; i <= n; ++i) { v[i] = w[i].value(); e[i] = w[i].bound(); }
   const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
   const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
   // The factor for an output reached after L levels; applied when it is final.
   auto fin = [](double val, double bound, int levels) { return BD(val, bound * (1.0 + (8.0 * levels + 8.0) * 0x1p-51)); };
   if (left) left[0] = w[0];
+  double* __restrict vp = v;  // values and bounds in separate buffers (vectorisable rounds)
+  double* __restrict ep = e;
   for (int r = 1; r <= n; ++r) {
     for (int i = 0; i + r <= n; ++i) {
-      const double a = v[i], b = v[i + 1];
+      const double a = vp[i], b = vp[i + 1];
       const double x = sv * a, y = tv * b, nw = x + y;
-      e[i] = sa * e[i] + se * (std::fabs(a) + e[i]) + ta * e[i + 1] + te * (std::fabs(b) + e[i + 1]) +
-             (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
-      v[i] = nw;
+      ep[i] = sa * ep[i] + se * (std::fabs(a) + ep[i]) + ta * ep[i + 1] + te * (std::fabs(b) + ep[i + 1]) +
+              (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
+      vp[i] = nw;
     }
     if (left) left[r] = fin(v[0], e[0], r);
     w[n - r] = fin(v[n - r], e[n - r], r);  // final from this round on (split's right piece; w[0]: the value at t)
   }
+}
+
+// The de Casteljau rounds of a tensor-product net along its first index, on
+// every column at once (a BiBern's keep_u_right / keep_u_left): rows f[0..m]
+// of equal length; right: round r sets f[i] <- s f[i] + t f[i + 1] for
+// i = 0..m - r (f ends as the piece on [t, 1]); left: f[i] <- s f[i - 1] + t f[i]
+// for i = m down to r (the piece on [0, t]). The same products and sums per
+// column as de_casteljau above, so the same bound per step; every entry is at
+// most m levels deep, and all of them take the factor of m levels at the end.
+inline void de_casteljau_rows(std::vector<std::vector<BD>>& f, const BD& s, const BD& t, bool left) {
+  const int m = int(f.size()) - 1;
+  if (m <= 0) return;
+  const std::size_t cols = f[0].size();
+  thread_local std::vector<double> v, e;
+  v.resize(std::size_t(m + 1) * cols);
+  e.resize(v.size());
+  for (int i = 0; i <= m; ++i)
+    for (std::size_t j = 0; j < cols; ++j) { v[i * cols + j] = f[i][j].value(); e[i * cols + j] = f[i][j].bound(); }
+  const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
+  const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
+  // Row d <- s row a + t row b, column by column (d is a or b: each column reads before it writes).
+  auto step = [&](int d, int a, int b) {
+    double *vd = v.data() + d * cols, *ed = e.data() + d * cols;
+    const double *va = v.data() + a * cols, *ea = e.data() + a * cols, *vb = v.data() + b * cols, *eb = e.data() + b * cols;
+    for (std::size_t j = 0; j < cols; ++j) {
+      const double x = sv * va[j], y = tv * vb[j], nw = x + y;
+      const double ne = sa * ea[j] + se * (std::fabs(va[j]) + ea[j]) + ta * eb[j] + te * (std::fabs(vb[j]) + eb[j]) +
+                        (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
+      vd[j] = nw;
+      ed[j] = ne;
+    }
+  };
+  for (int r = 1; r <= m; ++r) {
+    if (left)
+      for (int i = m; i >= r; --i) step(i, i - 1, i);
+    else
+      for (int i = 0; i + r <= m; ++i) step(i, i, i + 1);
+  }
+  const double factor = 1.0 + (8.0 * m + 8.0) * 0x1p-51;
+  for (int i = 0; i <= m; ++i)
+    for (std::size_t j = 0; j < cols; ++j) f[i][j] = BD(v[i * cols + j], e[i * cols + j] * factor);
 }
 
 // Horner's rule r <- r t + c_i from the leading coefficient (Higham section
@@ -140,7 +195,12 @@ inline BD horner(std::span<const BD> c, const BD& t) {
 // infinite where |d| <= ed; a rounding of the denominator makes it at most
 // (1 + u) times larger, so its quotient at least (1 - u) times smaller: the
 // same count of roundings as above, at most 14 + terms deep.
-inline BD sum_of_ratios(const BD* a, const BD* c, const BD* d, int terms) {
+// inv_abs_d, if given, holds fl(1 / |d[i]|) for divisors without error
+// (every ed = 0, as the binomials below 2^53): the bound ep / |d| is then
+// formed as ep * inv_abs_d[i] (two roundings instead of five, each making it
+// at least (1 - u) times smaller: inside the same count), so that a term
+// costs the plain division of its value and no second one.
+inline BD sum_of_ratios(const BD* a, const BD* c, const BD* d, int terms, const double* inv_abs_d = nullptr) {
   double acc = 0, E = 0, mu = 0;
   for (int i = 0; i < terms; ++i) {
     const double av = a[i].value(), cv = c[i].value(), dv = d[i].value();
@@ -149,11 +209,23 @@ inline BD sum_of_ratios(const BD* a, const BD* c, const BD* d, int terms) {
     acc = acc + q;
     const double pa = std::fabs(p), da = std::fabs(dv);
     const double ep = std::fabs(av) * ce + std::fabs(cv) * ae + ae * ce + (kU * pa + kTiny);
-    if (!(da > de)) E = std::numeric_limits<double>::infinity();
+    if (inv_abs_d) E += ep * inv_abs_d[i];
+    else if (!(da > de)) E = std::numeric_limits<double>::infinity();
     else E += (pa * de + da * ep) / (da * (da - de));
     mu += std::fabs(q) + std::fabs(acc);
   }
   return BD(acc, (E + kU * mu + double(terms) * 2.0 * kTiny) * (1.0 + (double(terms) + 16.0) * 0x1p-50));
+}
+
+// fl(1 / |d[i]|) for i < size into out, if every d[i] is a non-zero value without error (else false: the
+// divisors' bounds enter each quotient's, and sum_of_ratios takes the general route).
+inline bool inverse_magnitudes(std::span<const BD> d, std::vector<double>& out) {
+  out.resize(d.size());
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (d[i].bound() != 0 || !(std::fabs(d[i].value()) > 0) || !std::isfinite(d[i].value())) return false;
+    out[i] = 1.0 / std::fabs(d[i].value());
+  }
+  return true;
 }
 
 }  // namespace eccd::running_error_loops
