@@ -251,6 +251,29 @@ bool hold_still(std::array<std::array<Bern<T>, H>, H>& m) {
   }
 }
 
+// The same on a prepared pair (exact motions, before any conversion to an
+// inexact T): a body that does not move as a set gets the constant N(0) in
+// place of N(x), so every arithmetic builds the held net. Returns which of A
+// and B was held.
+template <int H>
+std::array<bool, 2> hold_still_pair(PreparedPair<H>& p) {
+  std::array<bool, 2> held{};
+  Bern<Rational> zero;
+  zero.b.push_back(Rational(0));
+  for (int k = 0; k < 2; ++k) {
+    PolyMatrix<Rational, H>& n = k ? p.nb : p.na;
+    std::array<std::array<Bern<Rational>, H>, H> nb;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) nb[i][j] = n[i][j].is_zero() ? zero : to_bernstein(n[i][j]);
+    auto a = moving_quadric_in<Bern<Rational>, Rational, H>(k ? p.qb : p.qa, nb, zero);
+    if (!hold_still<Rational, H>(a)) continue;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) n[i][j] = Poly<Rational>::constant(n[i][j].is_zero() ? Rational(0) : n[i][j].c[0]);
+    held[k] = true;
+  }
+  return held;
+}
+
 // F(u, s, t) of a pair whose N_A, N_B are in Bernstein form (the first factor's
 // parameter is s, the second's t); H = 4 (ellipsoids, paper 001) or 3 (ellipses).
 // A body that does not move as a set gives degree 0 in its parameter: a static

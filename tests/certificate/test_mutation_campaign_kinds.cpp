@@ -431,7 +431,7 @@ bool valid(const Mutant& m) {
 void campaign(std::size_t per_kind) {
   std::uint64_t seed = std::random_device{}();
   if (const char* s = std::getenv("ECCD_MUTATION_SEED")) seed = std::strtoull(s, nullptr, 10);
-  std::cout << "mutation campaign (Bezier, cycloidal): seed " << seed << " (ECCD_MUTATION_SEED=" << seed << " repeats it), " << per_kind
+  std::cout << "mutation campaign (Bezier, independent, cycloidal): seed " << seed << " (ECCD_MUTATION_SEED=" << seed << " repeats it), " << per_kind
             << " mutations per kind\n";
   std::mt19937_64 rng(seed);
   const std::vector<Base> kinds = {bezier_base("spheres/spheres-crossing.json", "paper002/example.json"),
