@@ -220,7 +220,8 @@ template <class T, int H>
 IndependentResult independent_floating_result(const Scene& scene, const SolveOptions& opt, const T& like) {
   Scene shared = scene;
   shared.independent = false;  // prepare_pair refuses independent scenes for the shared-parameter pipelines
-  const PreparedPair<H> p = prepare_pair<H>(shared);
+  PreparedPair<H> p = prepare_pair<H>(shared);
+  hold_still_pair(p);  // a body that does not move as a set: held at 0, decided exactly before any rounding
   IndependentOptions io;
   if (opt.arith.kind == Arithmetic::Mpfr) io.max_tests = 2000000;
   try {

@@ -156,7 +156,7 @@ Command add_certify_command(CLI::App& app) {
                              "certificate that `eccd check-certificate` re-checks without the solver. A cycloidal scene (not "
                              "rational) is certified in MPFI instead (format eccd-cycloidal-certificate/2): proved root brackets "
                              "of Delta, and each stretch it cannot prove stated as a touch or near miss within epsilon. An independent "
-                             "scene (2D or 3D) gets eccd-independent-certificate/2: its s- and t-intervals with the strip and Krawczyk "
+                             "scene (2D or 3D) gets eccd-independent-certificate/3: its s- and t-intervals with the strip and Krawczyk "
                              "proofs about the exact F(u, s, t); exit 4 if the proof leaves a range undecided. --arith certified: a 3D scene with "
                              "shared parameters gets eccd-bezier-certificate/2 (the interval Bezier proof's pieces and Krawczyk ends) "
                              "when that proof decides it, else the exact certificate; 2D scenes (and independent ones) get the "

@@ -22,6 +22,8 @@ struct IndependentHooks {
   std::function<void(const std::string&, const nlohmann::json&)> result;
 };
 
+// Groups independent-SCENE (every scene of cases/independent) and independent-rotating (generated pairs of
+// ellipsoids turning by degree-2 Euler parameters, exact and certified per scene).
 void register_independent(const IndependentHooks& h);
 
 }  // namespace eccd_bench

@@ -1,8 +1,7 @@
 #pragma once
-// The exclusion step of an end's proof, shared by the proof of independent
-// ends (certified/independent_proof.hpp, EndProver) and the checkers of the
-// certificates that re-run it (io/independent_certificate.cpp,
-// io/bezier_certificate.cpp): a bounded subdivision of a region of two axes
+// The exclusion step of an end's proof of independent motions
+// (certified/independent_proof.hpp, EndProver; the certificate records it as
+// a tree that eccd-check replays): a bounded subdivision of a region of two axes
 // of F's tensor net until every box either lies in the box kept for the
 // Krawczyk zero or is excluded by a sign condition on the restricted nets.
 //

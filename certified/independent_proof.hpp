@@ -75,9 +75,12 @@
 // Ellipses (H = 3) and ellipsoids (H = 4) alike: kernel/trivariate_bernstein.hpp
 // gives F the same sign convention in both, and the lemma's "at most two roots
 // in (0, 1)" holds for the cubic too (its negative roots).
-// Degenerate paths. A body that does not move as a set makes F = p G with p
-// of one sign along its parameter (TriBern::without_positive_factor, checked
-// exactly on the rational net); the proof runs on G, of degree 0 there. Its
+// Degenerate paths. A body that does not move as a set (static, or turning
+// in place: A(s) = c(s) A(0), c > 0) is held at s = 0 when F's net is built
+// (kernel/trivariate_bernstein.hpp, hold_still: the meeting sets are the
+// same), and a net of nominal degree > 0 that does not depend on a parameter
+// is F = p G with p of one sign along it (TriBern::without_positive_factor,
+// checked exactly); either way the proof runs on a net of degree 0 there. Its
 // projection is then all of [0, 1] or nothing, and the other projection's
 // ends are the lower-dimensional problem: F = F_u = 0 in (u, s) (system
 // "free"), proved by Krawczyk's test in (u, s) and the exclusion of other
@@ -368,44 +371,6 @@ class EndProver {
   long last_boxes_ = 0;
   long budget_end_ = 0;  // exclusion boxes allowed up to here for the current end
 
- public:
-  // For a checker: the conditions of step 3b (besides K(X) inside X) and the exclusion 3c for a claimed end:
-  // "" when they hold, else why not. system: "fold", "0" / "1" (the other parameter fixed there) or "free" (F of
-  // degree 0 in it); X in (u, s[, t]).
-  std::string check_end(const std::string& system, const Box& X, const mpq_class& lo, const mpq_class& hi) {
-    const int bits = nets_.bits();
-    budget_end_ = boxes + 3 * opt_.max_boxes;
-    mpq_class xt0, xt1;
-    std::array<I, 3> region{I(X.lo[0], X.hi[0], bits), I(X.lo[1], X.hi[1], bits), I(mpq_class(0), bits)};
-    if (system == "free") {  // F of degree 0 in t: every t alike, no condition on F_t
-      if (nets_.get({0, 0, 0}).n[2] != 0) return "system free needs F of degree 0 in the other parameter";
-      xt0 = 0;
-      xt1 = 1;
-    } else if (system != "fold") {
-      const mpq_class rho = (X.hi[0] - X.lo[0]) / 2;
-      const bool at0 = system == "0";
-      xt0 = at0 ? mpq_class(0) : mpq_class(1 - rho);
-      xt1 = at0 ? rho : mpq_class(1);
-      if (rho <= 0 || rho > mpq_class(1, 16)) return "the box's half-width is not in (0, 1/16]";
-      region[1] = I(std::min(lo, X.lo[1]), std::max(hi, X.hi[1]), bits);
-      region[2] = I(xt0, xt1, bits);
-      const auto& q = quotients_[at0 ? 0 : 1];
-      const bool ft = one_sign(nets_.eval({0, 0, 1}, region)) || (q && one_sign((*q)(region[0], region[1], region[2])));
-      if (!ft || !one_sign(nets_.eval({2, 0, 0}, region)))
-        return "F_t (or F_t / t, F_t / (1 - t) where F_t vanishes on that face) or F_uu is not proved of one sign near that end of the path";
-    } else {
-      if (X.lo.size() != 3) return "a fold's box needs (u, s, t)";
-      xt0 = X.lo[2];
-      xt1 = X.hi[2];
-      region[2] = I(xt0, xt1, bits);
-      if (sgn(xt0) <= 0 || xt1 >= 1 || sign(nets_.eval({2, 0, 0}, region)) != Sign::negative)
-        return "F_uu is not proved < 0 on the box, or its t-range is not inside (0, 1)";
-    }
-    return exclude(lo, hi, X.lo[0], X.hi[0], xt0, xt1);
-  }
-
- private:
-
   static bool one_sign(const I& x) {
     const Sign s = sign(x);
     return s == Sign::positive || s == Sign::negative;
@@ -577,8 +542,8 @@ inline IndependentProofResult prove_independent(const TriBern<Rational>& exact, 
   r.answer.independent = true;
   r.degree_s = exact.n[1];
   r.degree_t = exact.n[2];
-  // a body that does not move (as a set): F = p G with p > 0 along its parameter, G of degree 0 there
-  // (independent_net_reduced: the certificate's checker makes the same exact reduction)
+  // a net that does not depend on a parameter: F = p G with p > 0 along it, G of degree 0 there
+  // (independent_net_reduced; the certificate's writer refuses a net this changes)
   const TriBern<Rational> reduced = independent_net_reduced(exact);
   const TriBern<Rational>& net = reduced;
   TriBern<I> F;

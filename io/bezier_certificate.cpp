@@ -189,7 +189,7 @@ json make_certified_mode_certificate(const Scene& s, const json& scene_doc, std:
     }
   } else {
     why = s.dim == 2 ? "a 2D scene: the Bézier route is 3D only; the exact (or cycloidal) certificate"
-                     : "independent motions: their own certificate (eccd-independent-certificate/1)";
+                     : "independent motions: their own certificate (eccd-independent-certificate/3)";
   }
   route = cycloidal_certificate_scene(s) ? "cycloidal" : independent_certificate_scene(s) ? "independent" : "exact";
   return make_certificate(s, scene_doc, solved);

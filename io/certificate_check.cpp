@@ -513,8 +513,7 @@ CertificateCheck check_certificate_with_prover_algebra(const Scene& s, const nlo
 }
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
-  if (independent_certificate_scene(s)) return check_independent_certificate(s, scene_doc, cert);  // io/independent_certificate.hpp
-  // eccd-certificate/2, eccd-bezier-certificate/2, eccd-cycloidal-certificate/2
+  // eccd-certificate/2, eccd-bezier-certificate/2, eccd-cycloidal-certificate/2, eccd-independent-certificate/3
   // (and anything else a shared-parameter scene is given): the independent checker, eccd-check's library (certificate/check/),
   // on the scene's own text and the certificate.
   if (cycloidal_certificate_scene(s)) {  // a cycloidal scene has one kind of certificate: say which when given another

@@ -124,9 +124,11 @@ struct TriBern {
   // p, checked by exact cross-multiplication) and p has one strict sign on
   // [0, 1] (all its Bernstein coefficients of one sign, convex hull), G
   // (degree 0 along the axis, scaled so that sign G = sign F everywhere)
-  // has F's signs at every point: the body of that parameter does not move
-  // as a set (static, or turning about itself, or a path that only scales
-  // its matrix by a positive factor). The answer is then the lower-dimensional
+  // has F's signs at every point. F's face u = 1 is det B(t), free of s, so
+  // along s such a p is a constant: this catches a net of nominal degree > 0
+  // that does not depend on the parameter. A body turning in place makes F
+  // depend on its parameter through u (no such factor): hold_still below
+  // reduces that one, when F is built. The answer is then the lower-dimensional
   // problem of G. Nothing is returned when F is not of that form, when p's
   // sign is not proved, or when T is not exact (a rounded net's lines are
   // proportional only approximately; its static bodies already have degree 0).
@@ -193,19 +195,102 @@ struct TriBern {
   }
 };
 
+// A body that does not move as a set: its moving solid A(x) = N(x)^T Q N(x)
+// (Bernstein entries) is c(x) A(0) with c > 0 on [0, 1] (a static body whose
+// matrix only scales, or a ball or a body of revolution turning about its
+// centre and axis). Then (1 - u) c A(0) + u B = k ((1 - u') A(0) + u' B) with
+// k = (1 - u) c + u > 0 and u' = u / k, an increasing map of [0, 1] onto
+// itself for each x: F(u, x, .) has the sign of F(u', 0, .), so the pair meets
+// at (x, y) iff it meets at (0, y), and every proof about F holds for the net
+// built from the constant A(0) (degree 0 in x: the lower-dimensional problem).
+// Checked exactly (T exact only): every entry e satisfies e(x) r(0) = r(x) e(0)
+// as polynomials (coefficients of one degree, cross-multiplied) for an entry r
+// with r(0) != 0, and c = r / r(0) has all Bernstein coefficients > 0 on the
+// pieces of an exact halving (at most 2^6 of them). On success `m` becomes
+// the constant A(0) and true is returned; false leaves `m` as it was (also
+// for a body already of degree 0, and for every inexact T).
+template <class T, int H>
+bool hold_still(std::array<std::array<Bern<T>, H>, H>& m) {
+  if constexpr (!scalar_traits<T>::is_exact) {
+    (void)m;
+    return false;
+  } else {
+    int D = 0;
+    for (const auto& row : m)
+      for (const auto& e : row) D = std::max(D, e.degree());
+    if (D == 0) return false;
+    std::array<std::array<Bern<T>, H>, H> e{};
+    const Bern<T>* ref = nullptr;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) {
+        e[i][j] = elevate(m[i][j], D - m[i][j].degree());
+        if (!ref && sign(e[i][j].b[0]) != Sign::zero) ref = &e[i][j];
+      }
+    if (!ref) return false;
+    const T& r0 = ref->b[0];
+    for (const auto& row : e)
+      for (const auto& x : row)
+        for (int k = 1; k <= D; ++k)
+          if (!(x.b[k] * r0 == ref->b[k] * x.b[0])) return false;
+    std::vector<std::pair<std::vector<T>, int>> pieces{{ref->b, 0}};
+    const T half = scalar_traits<T>::from_rational(mpq_class(1, 2), r0);
+    while (!pieces.empty()) {
+      auto [c, d] = std::move(pieces.back());
+      pieces.pop_back();
+      if (std::all_of(c.begin(), c.end(), [&](const T& x) { return sign(x) == sign(r0); })) continue;
+      if (d >= 6) return false;
+      std::vector<T> lo = c, hi = c;
+      keep_left(std::span<T>(lo), half);
+      keep_right(std::span<T>(hi), half);
+      pieces.push_back({std::move(lo), d + 1});
+      pieces.push_back({std::move(hi), d + 1});
+    }
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) m[i][j] = Bern<T>(std::vector<T>{e[i][j].b[0]});
+    return true;
+  }
+}
+
+// The same on a prepared pair (exact motions, before any conversion to an
+// inexact T): a body that does not move as a set gets the constant N(0) in
+// place of N(x), so every arithmetic builds the held net. Returns which of A
+// and B was held.
+template <int H>
+std::array<bool, 2> hold_still_pair(PreparedPair<H>& p) {
+  std::array<bool, 2> held{};
+  Bern<Rational> zero;
+  zero.b.push_back(Rational(0));
+  for (int k = 0; k < 2; ++k) {
+    PolyMatrix<Rational, H>& n = k ? p.nb : p.na;
+    std::array<std::array<Bern<Rational>, H>, H> nb;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) nb[i][j] = n[i][j].is_zero() ? zero : to_bernstein(n[i][j]);
+    auto a = moving_quadric_in<Bern<Rational>, Rational, H>(k ? p.qb : p.qa, nb, zero);
+    if (!hold_still<Rational, H>(a)) continue;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) n[i][j] = Poly<Rational>::constant(n[i][j].is_zero() ? Rational(0) : n[i][j].c[0]);
+    held[k] = true;
+  }
+  return held;
+}
+
 // F(u, s, t) of a pair whose N_A, N_B are in Bernstein form (the first factor's
 // parameter is s, the second's t); H = 4 (ellipsoids, paper 001) or 3 (ellipses).
-// A body that does not move gives degree 0 in its parameter.
+// A body that does not move as a set gives degree 0 in its parameter: a static
+// one by its motion, one that turns in place by hold_still (exact T only; the
+// flags `still` say which of A and B was so reduced).
 template <class T, int H>
-TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p) {
+TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p, std::array<bool, 2>* still = nullptr) {
   const T zero_s = scalar_traits<T>::from_rational(mpq_class(0), p.qa[0][0]);
   const T one_s = scalar_traits<T>::from_rational(mpq_class(1), p.qa[0][0]);
   Bern<T> zero;
   zero.b.push_back(zero_s);
   Bern<T> one;
   one.b.push_back(one_s);
-  const auto a = moving_quadric_in<Bern<T>, T, H>(p.qa, p.na, zero);
-  const auto b = moving_quadric_in<Bern<T>, T, H>(p.qb, p.nb, zero);
+  auto a = moving_quadric_in<Bern<T>, T, H>(p.qa, p.na, zero);
+  auto b = moving_quadric_in<Bern<T>, T, H>(p.qb, p.nb, zero);
+  const bool still_a = hold_still<T, H>(a), still_b = hold_still<T, H>(b);
+  if (still) *still = {still_a, still_b};
   // minor of m on rows R, columns S (bit masks); the empty minor is 1
   auto minor = [&](const std::array<std::array<Bern<T>, H>, H>& m, unsigned rows, unsigned cols) {
     if (rows == 0) return one;

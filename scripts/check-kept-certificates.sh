@@ -3,7 +3,7 @@
 # checkers (docs/checking.md): writes them with --keep-certificates into a
 # temporary folder, then runs eccd-check on every certificate of the index in
 # a format it covers (eccd-certificate/2, eccd-bezier-certificate/2,
-# eccd-cycloidal-certificate/2; the Bezier ones from a second run with
+# eccd-cycloidal-certificate/2, eccd-independent-certificate/3; the Bezier ones from a second run with
 # --arith certified) and tools/check_certificate.py --index on the first run's.
 # Exit 0 only if every one is VALID.
 # Usage: check-kept-certificates.sh PATH/TO/eccd PATH/TO/eccd-check [CASES_DIR]
@@ -24,8 +24,8 @@ for sub in "" certified; do
     if ! "$checker" "$scene" "$d/$cert" >"$dir/out.txt" 2>&1; then
       bad=$((bad + 1)); echo "eccd-check: NOT VALID: $cert"; tail -1 "$dir/out.txt"
     fi
-  done < <(python3 -c 'import json,sys; [print(e["scene"] + "\t" + e["certificate"]) for e in json.load(open(sys.argv[1]))["certificates"] if e["format"] in ("eccd-certificate/2", "eccd-bezier-certificate/2", "eccd-cycloidal-certificate/2")]' "$d/index.json")
+  done < <(python3 -c 'import json,sys; [print(e["scene"] + "\t" + e["certificate"]) for e in json.load(open(sys.argv[1]))["certificates"] if e["format"] in ("eccd-certificate/2", "eccd-bezier-certificate/2", "eccd-cycloidal-certificate/2", "eccd-independent-certificate/3")]' "$d/index.json")
 done
-echo "eccd-check: $((n - bad)) of $n certificate(s) VALID (eccd-certificate/2, eccd-bezier-certificate/2, eccd-cycloidal-certificate/2; both runs)"
+echo "eccd-check: $((n - bad)) of $n certificate(s) VALID (eccd-certificate/2, eccd-bezier-certificate/2, eccd-cycloidal-certificate/2, eccd-independent-certificate/3; both runs)"
 python3 "$src/tools/check_certificate.py" --index "$dir/index.json"
 [ "$bad" -eq 0 ] && [ "$n" -gt 0 ]

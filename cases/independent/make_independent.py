@@ -199,3 +199,35 @@ write2("ellipsoid-static", {"shape": {"semi_axes": ["1", "1/2", "1/2"]}, "motion
        "(semi-axes 2, 1, 1) along its y-axis; the plane y = 1 (y = -1) is tangent to B at its vertex and to A at A's "
        "when they touch, so they meet iff |9s - 5| <= 3/2: s-intervals [7/18, 13/18]; B does not move: t-intervals "
        "[0, 1]. Proved on the lower-dimensional problem F = F_u = 0 in (u, s) (system free).", dim=3)
+
+
+# --- a body turning in place (it does not move as a set: A(s) = c(s) A(0), kernel/trivariate_bernstein.hpp
+# hold_still): the answer is the lower-dimensional problem of the static body, P_s all of [0, 1] or nothing.
+# ball-turning: A a ball (r = 1) turning about x through its centre (1/2, 0, 0) by the quaternion (1, s, 0, 0)
+# (0 to 90 degrees); B a ball (r = 1/2) with centre (-3 + 6t, 1, 0): (6t - 7/2)^2 + 1 <= 9/4 iff
+# 36 t^2 - 42 t + 11 <= 0, t in [(7 - sqrt(5))/12, (7 + sqrt(5))/12].
+for x in [Fr(k, 100) for k in range(101)]:
+    assert ((6 * x - Fr(7, 2)) ** 2 + 1 - R2) == 36 * x * x - 42 * x + 11
+    assert ((6 * x - 3) ** 2 + 1 - R2) * 4 == 144 * x * x - 144 * x + 31
+
+
+def turning_scenes():
+    write2("ball-turning",
+           {"shape": {"semi_axes": ["1", "1", "1"]},
+            "motion": {"type": "euler", "e": ["1", ["0", "1"], "0", "0"], "translation": ["1/2", "0", "0"]}},
+           ball(Fr(1, 2), (-3, 1, 0), (6, 0, 0)),
+           "Independent motions, a body turning in place (cases/independent/make_independent.py): A, a ball (r = 1), "
+           "turns about the x-axis through its fixed centre (1/2, 0, 0) by the quaternion (1, s, 0, 0) (0 to 90 degrees); "
+           "B, a ball (r = 1/2), moves from (-3, 1, 0) to (3, 1, 0). A does not move as a set, so s-intervals [0, 1]; "
+           "(6t - 7/2)^2 + 1 <= 9/4: t-intervals [(7 - sqrt(5))/12, (7 + sqrt(5))/12] = [0.39699, 0.77001] "
+           "(36 t^2 - 42 t + 11 = 0). Proved on the lower-dimensional problem (A held at s = 0, system free).", dim=3)
+    write2("disc-turning", {"shape": {"semi_axes": ["1", "1"]}, "motion": turning2()},
+           {"shape": {"semi_axes": ["1/2", "1/2"]}, "motion": translation2((-3, 1), (6, 0))},
+           "Independent motions in 2D, a body turning in place (cases/independent/make_independent.py): A, a disc "
+           "(r = 1), turns about its centre, the origin, by the rational rotation (1 - s^2, 2s)/(1 + s^2) (0 to 90 "
+           "degrees); B, a disc (r = 1/2), moves from (-3, 1) to (3, 1). A does not move as a set, so s-intervals "
+           "[0, 1]; (6t - 3)^2 + 1 <= 9/4: t-intervals [1/2 - sqrt(5)/12, 1/2 + sqrt(5)/12] = [0.31366, 0.68634] "
+           "(144 t^2 - 144 t + 31 = 0). Proved on the lower-dimensional problem (A held at s = 0, system free).")
+
+
+turning_scenes()

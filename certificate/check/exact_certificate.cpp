@@ -88,7 +88,7 @@ struct Checker {
       if (at(s, k, "scene") != sc.doc.at(k))
         reject("scene", std::string("the certificate's \"") + k + "\" differs from the scene file's: it is a certificate for another scene");
     if (sc.cycloidal) reject("certificate format", "the scene has a cycloidal motion: its certificate is an eccd-cycloidal-certificate/2");
-    if (sc.independent) reject("certificate format", "the scene has independent motions: its certificate is an eccd-independent-certificate/1");
+    if (sc.independent) reject("certificate format", "the scene has independent motions: its certificate is an eccd-independent-certificate/3");
     for (const CheckObject* o : {&sc.a, &sc.b}) {
       const QPoly d = motion_determinant(o->M);
       if (d.zero() || sgn(d(0)) == 0 || sgn(d(1)) == 0 || roots_between(d, 0, 1) != 0)

@@ -26,5 +26,7 @@ void check_exact_certificate(const CheckScene& scene, const nlohmann::json& cert
 void check_bezier_certificate(const CheckScene& scene, const nlohmann::json& cert, std::vector<std::string>& checked);
 // "eccd-cycloidal-certificate/2": 2D, static and cycloidal motions, MPFI enclosures (certificate/check/cycloidal_certificate.cpp).
 void check_cycloidal_certificate(const CheckScene& scene, const nlohmann::json& cert, std::vector<std::string>& checked);
+// "eccd-independent-certificate/3": 2D and 3D, independent parameters (certificate/check/independent_certificate.cpp).
+void check_independent_certificate(const CheckScene& scene, const nlohmann::json& cert, std::vector<std::string>& checked);
 
 }  // namespace eccd::check

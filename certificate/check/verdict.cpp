@@ -26,6 +26,7 @@ const Kind kKinds[] = {
     {"eccd-certificate/2", "eccd-certificate/1", check_exact_certificate},
     {"eccd-bezier-certificate/2", "eccd-bezier-certificate/1", check_bezier_certificate},
     {"eccd-cycloidal-certificate/2", "eccd-cycloidal-certificate/1", check_cycloidal_certificate},
+    {"eccd-independent-certificate/3", "eccd-independent-certificate/2", check_independent_certificate},
 };
 
 std::string read_file(const std::string& path, bool& ok) {

@@ -173,6 +173,31 @@ TEST_CASE("exact: the sphere cases' brackets contain the analytic ends", "[indep
   }
 }
 
+TEST_CASE("exact and certified: a body turning in place (ball-turning, disc-turning) is answered on the static body's problem", "[independent]") {
+  // A turns about its own fixed centre (an euler motion in 3D, a rational rotation in 2D): it does not move as a
+  // set, so every s meets B alike (s-intervals [0, 1]) and the t-ends are the static ball's:
+  // ball-turning 36 t^2 - 42 t + 11 = 0 ((7 -+ sqrt(5)) / 12), disc-turning 144 t^2 - 144 t + 31 = 0 (1/2 -+ sqrt(5)/12)
+  const std::pair<const char*, RPoly> cases[] = {{"ball-turning", RPoly(std::vector<Rational>{11, -42, 36})},
+                                                 {"disc-turning", RPoly(std::vector<Rational>{31, -144, 144})}};
+  for (const auto& [name, p] : cases)
+    for (const char* arith : {"exact", "certified"}) {
+      INFO(name << ", " << arith);
+      SolveOptions o;
+      o.arith = parse_arithmetic(arith);
+      const Solution s = solve(read_scene(indep(name)), o);
+      for (const auto& r : s.undecided_reasons) UNSCOPED_INFO("reason: " << r);
+      CHECK(s.certified);
+      CHECK(s.answer.undecided.empty());
+      CHECK(s.answer.collides);
+      REQUIRE(s.answer.s_intervals.size() == 1);
+      REQUIRE(s.answer.t_intervals.size() == 1);
+      check_exact(s.answer.s_intervals[0].first, Rational(0));
+      check_exact(s.answer.s_intervals[0].second, Rational(1));
+      check_bracket(s.answer.t_intervals[0].first, p, Rational(1, 4), Rational(1, 2));
+      check_bracket(s.answer.t_intervals[0].second, p, Rational(1, 2), Rational(1));
+    }
+}
+
 TEST_CASE("double and MPFR: ellipsoids on parallel paths never meet", "[independent]") {
   for (const char* arith : {"double", "mpfr:128"}) {
     SolveOptions o;
@@ -188,7 +213,7 @@ TEST_CASE("independent scenes: certify and plot take them, the shared-parameter 
   using namespace eccd::clitest;
   const std::string f = q(indep("spheres-end"));
   // (exact and certified solve them: tests/certified/test_independent_proof.cpp)
-  // certify writes eccd-independent-certificate/2 (io/independent_certificate.hpp; tests/io/test_independent_certificate.cpp)
+  // certify writes eccd-independent-certificate/3 (io/independent_certificate.hpp; tests/io/test_independent_certificate.cpp)
   TempDir w;  // (an output is never a device: certify refuses --out /dev/null)
   Run cert = run_eccd("certify " + f + " --out " + q((w.path / "c.json").string()));
   CHECK(cert.code == 0);

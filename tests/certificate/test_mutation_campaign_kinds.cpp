@@ -1,6 +1,8 @@
 // The mutation campaign (docs/checking.md) for the kinds eccd-check covers
 // beside eccd-certificate/2: eccd-bezier-certificate/2 (3D, the interval
-// Bézier proof) and eccd-cycloidal-certificate/2 (2D cycloidal, MPFI; an
+// Bézier proof), eccd-independent-certificate/3 (independent motions: strips,
+// ends with Krawczyk chains and exclusion trees; mutate_independent) and
+// eccd-cycloidal-certificate/2 (2D cycloidal, MPFI; an
 // incomplete certificate with an undecided stretch, so that issue 32's point
 // 5 is exercised: collides is null there, never false). Genuine certificates
 // are mutated at random (seed printed; ECCD_MUTATION_SEED repeats it) and
@@ -16,6 +18,7 @@
 #include "certificate/check/verdict.hpp"
 #include "io/bezier_certificate.hpp"
 #include "io/cycloidal_certificate.hpp"
+#include "io/independent_certificate.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/certificate_mutation.hpp"
 
@@ -45,7 +48,7 @@ const char* kCycloidalCross = R"({"format": "ellipse-ccd-scene/1", "name": "cyc-
 struct Base {
   std::string name, scene_text, other_scene_text;
   json cert;
-  bool bezier = false;
+  bool bezier = false, independent = false;
 };
 
 Base bezier_base(const std::string& rel, const std::string& other_rel) {
@@ -56,6 +59,17 @@ Base bezier_base(const std::string& rel, const std::string& other_rel) {
   b.other_scene_text = read_file_bytes(src + "/cases/" + other_rel);
   const Scene s = parse_scene(b.scene_text, rel);
   b.cert = make_bezier_certificate(s, parse_json_document(b.scene_text, rel));
+  return b;
+}
+
+Base independent_base(const std::string& rel, const std::string& other_rel) {
+  Base b;
+  b.name = "eccd-independent-certificate/3 (" + rel + ")";
+  b.independent = true;
+  b.scene_text = read_file_bytes(src + "/cases/" + rel);
+  b.other_scene_text = read_file_bytes(src + "/cases/" + other_rel);
+  const Scene s = parse_scene(b.scene_text, rel);
+  b.cert = make_independent_certificate(s, parse_json_document(b.scene_text, rel));
   return b;
 }
 
@@ -265,6 +279,151 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
   return m;
 }
 
+// The same mutations on an independent-motion certificate: its items (s_proof, t_proof) take the pieces' place.
+Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
+  auto pick = [&](std::size_t n) { return std::size_t(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)); };
+  json c = b.cert;
+  Mutant m;
+  m.scene_text = b.scene_text;
+  const char* proof = pick(2) ? "s_proof" : "t_proof";
+  json& seq = c[proof];
+  json& ans = c["answer"];
+  const char* list = pick(2) ? "s_intervals" : "t_intervals";
+  switch (pick(11)) {
+    case 0:
+      ans["collides"] = pick(3) == 0 ? json(nullptr) : json(!ans["collides"].get<bool>());
+      m.what = "collides flipped";
+      break;
+    case 1: {  // an end moved: an item's, an answer instant's or a bracket's
+      std::vector<json::json_pointer> ends;
+      collect(c, json::json_pointer(), [](const json& j) { return j.is_object() && j.contains("lo") && j.contains("hi") && j["lo"].is_string(); }, ends);
+      const auto p = ends[pick(ends.size())];
+      json& in = c[p];
+      const char* key = pick(2) ? "lo" : "hi";
+      const mpq_class lo = rq(in["lo"]), hi = rq(in["hi"]);
+      const mpq_class w = hi > lo ? mpq_class(hi - lo) : mpq_class(1, 1 << 20);
+      const mpq_class shift[] = {w / 2, -w / 2, w * 2, -w * 2, mpq_class(1, 1000), mpq_class(-1, 1000)};
+      in[key] = mpq_class((key[0] == 'l' ? lo : hi) + shift[pick(6)]).get_str();
+      m.what = std::string("end moved: ") + p.to_string() + "/" + key;
+      break;
+    }
+    case 2: {
+      json& iv = ans[list];
+      if (!iv.empty() && pick(2)) {
+        iv.erase(iv.begin() + long(pick(iv.size())));
+        m.what = std::string(list) + ": interval dropped";
+      } else {
+        iv.push_back(json::array({{{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}, {{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}}));
+        m.what = std::string(list) + ": interval added";
+      }
+      break;
+    }
+    case 3: {  // an item duplicated or an end dropped
+      std::vector<std::size_t> ends;
+      for (std::size_t k = 0; k < seq.size(); ++k)
+        if (seq[k]["kind"] == "end") ends.push_back(k);
+      if (ends.empty() || pick(2)) {
+        const std::size_t k = pick(seq.size());
+        seq.insert(seq.begin() + long(k), seq[k]);
+        m.what = std::string(proof) + ": item duplicated";
+      } else {
+        seq.erase(seq.begin() + long(ends[pick(ends.size())]));
+        m.what = std::string(proof) + ": end dropped";
+      }
+      break;
+    }
+    case 4: {  // an integer changed by one
+      std::vector<json::json_pointer> nums;
+      collect(c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
+      const auto p = nums[pick(nums.size())];
+      const int d = pick(2) ? 1 : -1;
+      if (c[p].is_number_integer()) c[p] = c[p].get<long long>() + d;
+      else {
+        const std::string t = c[p].get<std::string>();
+        const std::size_t slash = t.find('/');
+        mpz_class n(slash == std::string::npos ? t : t.substr(0, slash), 10);
+        n += d;
+        c[p] = n.get_str() + (slash == std::string::npos ? "" : t.substr(slash));
+      }
+      m.what = "integer changed by one at " + p.to_string();
+      m.may_stay_valid = p.to_string().find("/boxes/") != std::string::npos || p.to_string().find("/chain/") != std::string::npos ||
+                         p.to_string() == "/precision_bits";
+      break;
+    }
+    case 5:
+      m.what = "scene swapped";
+      m.scene_text = b.other_scene_text;
+      break;
+    case 6: {
+      std::string t = c.dump();
+      std::vector<std::size_t> at;
+      for (std::size_t i = t.find("\":"); i != std::string::npos; i = t.find("\":", i + 1)) at.push_back(i);
+      const std::size_t i = at[pick(at.size())];
+      const std::size_t start = t.rfind('"', i - 1);
+      const std::string key = t.substr(start, i + 2 - start);
+      t.insert(start, key + "\"forged\",");
+      m.what = "key duplicated: " + key;
+      m.text = t;
+      return m;
+    }
+    case 7: {  // an item widened past its neighbour
+      const std::size_t k = pick(seq.size());
+      if (k + 1 < seq.size()) seq[k]["hi"] = mpq_class(rq(seq[k + 1]["hi"]) + mpq_class(1, 1 << 30)).get_str();
+      else if (k > 0) seq[k]["lo"] = mpq_class(rq(seq[k - 1]["lo"]) - mpq_class(1, 1 << 30)).get_str();
+      else seq[k]["hi"] = "2";
+      m.what = std::string(proof) + " item " + std::to_string(k) + " widened past its neighbour";
+      break;
+    }
+    case 8: {  // an item's kind flipped
+      const std::size_t k = pick(seq.size());
+      const std::string old = seq[k]["kind"];
+      seq[k]["kind"] = old == "in" ? "out" : old == "out" ? "in" : (pick(2) ? "in" : "out");
+      m.what = std::string(proof) + " item " + std::to_string(k) + " kind flipped";
+      break;
+    }
+    case 9: {  // the net, or the bodies held still
+      if (pick(4) == 0) {
+        json& r = c["reduced"];
+        if (r.empty()) r.push_back(pick(2) ? "s" : "t");
+        else r.erase(r.begin());
+        m.what = "reduced changed";
+      } else {
+        json& co = c["net"]["coefficients"];
+        json& x = co[pick(co.size())];
+        x = mpq_class(rq(x) * 2 + 1).get_str();
+        m.what = "net coefficient changed";
+      }
+      break;
+    }
+    default: {  // an exclusion tree's node flipped, or an end's system renamed
+      std::vector<std::size_t> ends;
+      for (std::size_t k = 0; k < seq.size(); ++k)
+        if (seq[k]["kind"] == "end") ends.push_back(k);
+      if (ends.empty()) { ans[list] = json::array(); m.what = std::string(list) + " emptied"; break; }
+      json& e = seq[ends[pick(ends.size())]];
+      if (pick(3) == 0) {
+        const std::string names[] = {"fold", "0", "1", "free"};
+        std::string now = e["system"];
+        while (now == e["system"]) now = names[pick(4)];
+        e["system"] = now;
+        m.what = "end system renamed";
+        break;
+      }
+      std::string t = e["exclusion"].get<std::string>();
+      const std::size_t i = pick(t.size());
+      t[i] = t[i] == '0' ? '1' : '0';
+      e["exclusion"] = t;
+      m.what = "exclusion node flipped";
+      m.may_stay_valid = true;  // a finer tree may still exclude
+      break;
+    }
+  }
+  m.text = c.dump();
+  if (c["answer"] != b.cert["answer"] || m.scene_text != b.scene_text || c["net"] != b.cert["net"] || c["reduced"] != b.cert["reduced"])
+    m.may_stay_valid = false;
+  return m;
+}
+
 bool valid(const Mutant& m) {
   return check::check_certificate_text(m.scene_text, "scene", m.text, "mutant").outcome == check::Outcome::valid;
 }
@@ -272,21 +431,22 @@ bool valid(const Mutant& m) {
 void campaign(std::size_t per_kind) {
   std::uint64_t seed = std::random_device{}();
   if (const char* s = std::getenv("ECCD_MUTATION_SEED")) seed = std::strtoull(s, nullptr, 10);
-  std::cout << "mutation campaign (Bezier, cycloidal): seed " << seed << " (ECCD_MUTATION_SEED=" << seed << " repeats it), " << per_kind
+  std::cout << "mutation campaign (Bezier, independent, cycloidal): seed " << seed << " (ECCD_MUTATION_SEED=" << seed << " repeats it), " << per_kind
             << " mutations per kind\n";
   std::mt19937_64 rng(seed);
   const std::vector<Base> kinds = {bezier_base("spheres/spheres-crossing.json", "paper002/example.json"),
+                                   independent_base("independent/discs-end.json", "independent/disc-turning.json"),
                                    cycloidal_base(kCycloidalTouch, kCycloidalCross)};
   for (const Base& b : kinds) {
     INFO(b.name << " (seed " << seed << ")");
     REQUIRE(valid(Mutant{"none", b.cert.dump(), b.scene_text, true}));
-    if (!b.bezier) {
+    if (!b.bezier && !b.independent) {
       REQUIRE(b.cert["complete"] == false);
       REQUIRE(b.cert["answer"]["collides"].is_null());
     }
     std::size_t rejected = 0, neutral_valid = 0;
     for (std::size_t i = 0; i < per_kind; ++i) {
-      const Mutant m = mutate(b, rng);
+      const Mutant m = b.independent ? mutate_independent(b, rng) : mutate(b, rng);
       const bool v = valid(m);
       INFO("mutation " << i << ": " << m.what);
       if (!m.may_stay_valid) CHECK_FALSE(v);
@@ -300,8 +460,8 @@ void campaign(std::size_t per_kind) {
 
 }  // namespace
 
-TEST_CASE("Mutation campaign: no answer-changing mutation of a Bezier or cycloidal certificate is VALID", "[mutation][certificate]") {
+TEST_CASE("Mutation campaign: no answer-changing mutation of a Bezier, independent or cycloidal certificate is VALID", "[mutation][certificate]") {
   campaign(500);
 }
 
-TEST_CASE("Mutation campaign, Bezier and cycloidal, long: 10^5 mutations per kind", "[.long][mutation-long]") { campaign(100000); }
+TEST_CASE("Mutation campaign, Bezier, independent and cycloidal, long: 10^5 mutations per kind", "[.long][mutation-long]") { campaign(100000); }

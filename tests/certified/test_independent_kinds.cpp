@@ -13,6 +13,8 @@
 // curvature there lies on the other side). Exact, certified and double must
 // all give these answers: exact and certified with brackets that hold the
 // analytic ends (width <= 1e-9), double within 1e-8 of them.
+// A disc (ball) turning about its own centre does not move as a set: its
+// s-set is all of [0, 1] (or nothing) and the t-set that of the static disc.
 // Turning bodies (no closed form) are scenes with stored exact answers in
 // cases/independent (ellipses-turning, ellipsoids-turning), which
 // `eccd regress` checks in exact and certified arithmetic.
@@ -129,6 +131,15 @@ struct Maker {
   int dim;
   std::string disc(const std::string& r, std::vector<std::string> c0, std::vector<std::string> d) const { return object(dim, {r, r}, c0, d); }
   std::string ellipse(std::vector<std::string> ax, std::vector<std::string> c0, std::vector<std::string> d) const { return object(dim, ax, c0, d); }
+  // a disc (ball) of radius r at the origin turning about z by the rational rotation (1 - x^2, 2x) / (1 + x^2), 0 to 90 degrees
+  std::string turning_disc(const std::string& r) const {
+    const std::string w = R"(["1", "0", "1"])", a = R"(["1", "0", "-1"])";
+    const std::string m = dim == 2 ? "[[" + a + R"(, ["0", "-2"], "0"], [["0", "2"], )" + a + R"(, "0"], ["0", "0", )" + w + "]]"
+                                   : "[[" + a + R"(, ["0", "-2"], "0", "0"], [["0", "2"], )" + a + R"(, "0", "0"], ["0", "0", )" + w +
+                                         R"(, "0"], ["0", "0", "0", )" + w + "]]";
+    std::string axes = "[\"" + r + "\", \"" + r + "\"" + (dim == 3 ? ", \"" + r + "\"" : std::string("")) + "]";
+    return R"({"shape": {"semi_axes": )" + axes + R"(}, "motion": {"type": "matrix", "m": )" + m + "}}";
+  }
 };
 
 std::vector<Kind> kinds(const Maker& m) {
@@ -167,6 +178,11 @@ std::vector<Kind> kinds(const Maker& m) {
       {"a static ellipse", m.disc("1/2", {"0", "-5"}, {"0", "9"}), m.ellipse({"2", "1"}, {"0", "0"}, {"0", "0"}),
        {{at(Rational(7, 18)), at(Rational(13, 18))}},
        {{at(Rational(0)), at(one)}}},
+      // a body turning in place (it does not move as a set): a disc r = 1 turning about its centre, the origin;
+      // c_B(t) = (6t - 3, 1), R = 3/2: (6t - 3)^2 + 1 <= 9/4, 144 t^2 - 144 t + 31 <= 0; every s alike
+      {"a body turning in place", m.turning_disc("1"), m.disc("1/2", {"-3", "1"}, {"6", "0"}),
+       {{at(Rational(0)), at(one)}},
+       {{root({31, -144, 144}, Rational(1, 4), Rational(1, 2)), root({31, -144, 144}, Rational(1, 2), Rational(3, 4))}}},
   };
 }
 
@@ -181,6 +197,7 @@ TEST_CASE("independent kinds in 3D: exact, certified and double against the anal
 }
 
 #include "floating/independent_ccd.hpp"
+#include "io/scene_reader.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/trivariate_bernstein.hpp"
 #include "number/double_traits.hpp"
@@ -219,4 +236,43 @@ TEST_CASE("F(u, s, t) of ellipses has the ellipsoids' sign convention: F(0) = de
   CHECK(sgn(F(o, h, h)) < 0);
   CHECK(sgn(F(h, z, z)) > 0);  // separate: F > 0 at some u (here u = 1/2, equal discs)
   for (int k = 1; k < 8; ++k) CHECK(sgn(F(Rational(k, 8), h, h)) < 0);  // the same disc twice: overlap, F < 0 on (0, 1)
+}
+
+TEST_CASE("hold_still: a disc or ball turning about its centre is held at s = 0; a moving or turning ellipse is not", "[independent][kinds]") {
+  for (const int dim : {2, 3}) {
+    INFO(dim << "D");
+    const Maker m{dim};
+    auto net = [&](const std::string& a, std::array<bool, 2>& still) {
+      Scene sc = scene_from_text(scene(dim, a, m.disc("1/2", {"-3", "1"}, {"6", "0"})), "still");
+      sc.independent = false;
+      if (dim == 2) return independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)), &still);
+      return independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(sc), Rational(1)), &still);
+    };
+    std::array<bool, 2> still{};
+    // turning in place: degree 0 in s, and F held at s = 0 equals the static disc's F exactly
+    const TriBern<Rational> turning = net(m.turning_disc("1"), still);
+    CHECK(still[0]);
+    CHECK_FALSE(still[1]);
+    CHECK(turning.n[1] == 0);
+    std::array<bool, 2> still0{};
+    const TriBern<Rational> fixed = net(m.disc("1", {"0", "0"}, {"0", "0"}), still0);
+    CHECK_FALSE(still0[0]);  // already of degree 0: nothing to hold
+    // A(0) = k Q with k > 0: each u-layer j of the net is the static one's times k^(H - j)
+    REQUIRE(fixed.n == turning.n);
+    for (int j = 0; j <= fixed.n[0]; ++j)
+      for (int l = 0; l <= fixed.n[2]; ++l) {
+        CHECK(fixed.at(j, 0, l) * turning.at(j, 0, 0) == turning.at(j, 0, l) * fixed.at(j, 0, 0));
+        CHECK(sgn(fixed.at(j, 0, l)) * sgn(turning.at(j, 0, l)) >= 0);
+      }
+    // a translating disc moves as a set
+    CHECK(net(m.disc("1", {"0", "0"}, {"1", "0"}), still).n[1] > 0);
+    CHECK_FALSE(still[0]);
+  }
+  // an ellipse turning about its centre changes as a set (ellipses-turning's A): not held
+  std::array<bool, 2> still{};
+  Scene sc = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/independent/ellipses-turning.json");
+  sc.independent = false;
+  const TriBern<Rational> F = independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)), &still);
+  CHECK_FALSE(still[0]);
+  CHECK(F.n[1] > 0);
 }

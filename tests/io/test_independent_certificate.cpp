@@ -1,7 +1,9 @@
-// The independent-motion certificate (io/independent_certificate.hpp): two
-// cheap cases certified, their certificates VALID, and tampered copies
-// (a moved bracket, a flipped strip, a dropped strip, a changed scene
-// number) REJECTED naming the claim.
+// The independent-motion certificate (io/independent_certificate.hpp, checked
+// by eccd-check: certificate/check/independent_certificate.cpp): cases
+// certified in 2D and 3D (bodies that stop, stand still or turn in place),
+// their certificates VALID, and tampered copies (a moved bracket, a flipped
+// strip, a dropped strip, a changed scene number, a forged reduction, an
+// exclusion tree cut short) REJECTED naming the claim.
 #include "api/certify.hpp"
 #include "api/solve.hpp"
 #include "io/independent_certificate.hpp"
@@ -189,12 +191,12 @@ TEST_CASE("independent certificate: 2D scenes (discs-end, ellipse-static) round 
       t["reduced"] = {"s"};
       rejected(s, t, "reduced");
     }
-    {  // the old format is refused by name
+    {  // the older format is refused by name
       json t = cert;
-      t["format"] = "eccd-independent-certificate/1";
+      t["format"] = "eccd-independent-certificate/2";
       const CertificateCheck r = check(s, t);
       CHECK_FALSE(r.valid);
-      CHECK(r.reason.find("old format") != std::string::npos);
+      CHECK(r.reason.find("an older version, no longer accepted") != std::string::npos);
     }
     {  // a flipped out-strip
       json t = cert;
@@ -203,6 +205,52 @@ TEST_CASE("independent certificate: 2D scenes (discs-end, ellipse-static) round 
       REQUIRE(out < items.size());
       t["s_proof"][out]["kind"] = "in";
       rejected(s, t, "s_proof item " + std::to_string(out + 1) + " (");
+    }
+  }
+}
+
+TEST_CASE("independent certificate: a body turning in place (disc-turning 2D, ball-turning 3D) round trip", "[independent][certificate]") {
+  // A turns about its fixed centre: A(s) = c(s) A(0), so the net holds A at s = 0 (reduced ["s"]), P_s = [0, 1] and
+  // the ends of P_t are proved on F = F_u = 0 in (u, t) (system "free" in the t-proof); analytic t-ends:
+  // disc-turning 144 t^2 - 144 t + 31 = 0, ball-turning 36 t^2 - 42 t + 11 = 0
+  const std::pair<const char*, std::vector<int>> cases[] = {{"disc-turning", {31, -144, 144}}, {"ball-turning", {11, -42, 36}}};
+  for (const auto& [name, p] : cases) {
+    INFO(name);
+    const Scene s = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json");
+    const Certificate c = certify(s);
+    const json cert = json::parse(c.text);
+    REQUIRE(cert["format"] == kIndependentCertificateFormat);
+    const CertificateCheck ok = check(s, cert);
+    INFO(ok.failed_claim << ": " << ok.reason);
+    REQUIRE(ok.valid);
+    CHECK(cert["reduced"] == json::array({"s"}));
+    CHECK(cert["net"]["degrees"][1] == 0);
+    REQUIRE(cert["answer"]["s_intervals"].size() == 1);
+    CHECK(cert["answer"]["s_intervals"][0][0]["lo"] == "0");
+    CHECK(cert["answer"]["s_intervals"][0][1]["hi"] == "1");
+    REQUIRE(cert["answer"]["t_intervals"].size() == 1);
+    for (int e = 0; e < 2; ++e) {  // each bracket holds a sign change of the quadratic
+      const json& got = cert["answer"]["t_intervals"][0][e];
+      const mpq_class lo = parse_rational(got["lo"].get<std::string>()), hi = parse_rational(got["hi"].get<std::string>());
+      auto f = [&](const mpq_class& x) { return sgn(mpq_class(p[0] + p[1] * x + p[2] * x * x)); };
+      CHECK(f(lo) * f(hi) <= 0);
+      CHECK(hi - lo < mpq_class(1, 1000000));
+    }
+    bool free_end = false;
+    for (const auto& it : cert["t_proof"]) free_end = free_end || (it["kind"] == "end" && it["system"] == "free");
+    CHECK(free_end);
+    {  // the reduction dropped: the net (degree 0 in s) is not F of the turning body
+      json t = cert;
+      t["reduced"] = json::array();
+      rejected(s, t, "net");
+    }
+    {  // an exclusion tree cut short
+      json t = cert;
+      for (auto& it : t["t_proof"])
+        if (it["kind"] == "end") { it["exclusion"] = "1"; break; }
+      const CertificateCheck r = check(s, t);
+      CHECK_FALSE(r.valid);
+      CHECK(r.reason.find("exclusion tree ends early") != std::string::npos);
     }
   }
 }
