@@ -44,6 +44,8 @@
 // runs the general Bézier method (floating/bezier_ccd.hpp) instead.
 // Requirements on T: double or Bounded<double> (the search runs on the plain
 // values, which are the same in both faces; the proofs use T).
+// The contact points of the answer (display only) are the contact function's
+// points at the ends found, with A's outward normal along G(λ)^-1 d.
 // Cost: a few hundred floating operations for the set-up (one 3x3 adjugate
 // per body and of the pencil), a grid of 24 closed-form roots, about five
 // Newton steps per end, and two or three proofs; no allocation after the
@@ -419,6 +421,28 @@ bool overlap_at(const TranslatingPair<T>& P, double t) {
   return contains(P.a, x, t) && contains(P.b, x, t);
 }
 
+// The contact point at a contact (λ, t) (display only): the contact function's point x = c_a + (1 − λ)Σ_a y,
+// y = G(λ)^-1 d, and A's unit outward normal there, along y.
+template <class T>
+ContactPoint touching_point(const TranslatingPair<T>& P, double lam, double t) {
+  double d[3], ca[3];
+  for (int i = 0; i < 3; ++i) {
+    ca[i] = plain(P.a.c0[i]) + t * plain(P.a.c1[i]);
+    d[i] = plain(P.b.c0[i]) + t * plain(P.b.c1[i]) - ca[i];
+  }
+  const ContactPoint3 c = contact_point(P, d, lam);
+  const double len = std::sqrt(c.y[0] * c.y[0] + c.y[1] * c.y[1] + c.y[2] * c.y[2]);
+  ContactPoint out;
+  auto text = [](double v) { return v == 0 ? std::string("0") : scalar_traits<double>::to_string(v); };
+  for (int i = 0; i < 3; ++i) {
+    double x = ca[i];
+    for (int j = 0; j < 3; ++j) x += (1 - lam) * plain(P.a.sigma[i][j]) * c.y[j];
+    out.x.push_back(text(x));
+    out.normal.push_back(text(len > 0 ? c.y[i] / len : 0.0));
+  }
+  return out;
+}
+
 // The λ maximising min_t H(λ, t) near a grid point (golden section on [lo, hi]).
 inline double best_line_witness(const std::array<std::array<double, 5>, 3>& h, double lo, double hi) {
   const double g = 0.6180339887498949;
@@ -492,8 +516,14 @@ std::optional<TranslationResult> translation_ccd(const TranslatingPair<T>& P) {
     r.answer.collides = true;
     r.answer.intervals.push_back({s, e});
     r.answer.first_contact = s;
-    if (tin > 0) r.answer.contacts.push_back(s);  // entering and leaving are external tangencies
-    if (tout < 1) r.answer.contacts.push_back(e);
+    if (tin > 0) {  // entering and leaving are external tangencies
+      r.answer.contacts.push_back(s);
+      r.answer.contact_points.push_back(touching_point(P, lin, tin));
+    }
+    if (tout < 1) {
+      r.answer.contacts.push_back(e);
+      r.answer.contact_points.push_back(touching_point(P, lout, tout));
+    }
     return r;
   }
   return std::nullopt;
