@@ -176,6 +176,62 @@ BoundingSphere swept_bounding_sphere(const Animation& anim, std::size_t body, st
   return s;
 }
 
+KeptPlaneCheck::KeptPlaneCheck(const Animation& anim) {
+  if (anim.dim != 3) return;
+  const B like(1.0, 0);
+  auto conv = [&](const Rational& q) { return scalar_traits<B>::from_rational(q, like); };
+  for (const AnimationBody& body : anim.bodies) {
+    Matrix<Rational, 4> q;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) q[i][j] = body.Q.at(i).at(j);
+    const Matrix<Rational, 4> adj = adjugate_of<Rational, 4>(q, Rational(0));  // exact, then rounded once
+    std::array<std::array<B, 4>, 4> a;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) a[i][j] = conv(adj[i][j]);
+    adj_.push_back(a);
+    bool rigid = true;
+    std::vector<Key> keys;
+    for (std::size_t n = 0; n < body.poses.size(); ++n) {
+      const KeyPose& p = body.poses[n];
+      rigid = rigid && keyframe_is_identity(p, 3);
+      Key k;
+      for (int i = 0; i < 4; ++i) k.q[i] = conv(p.orientation[i]);
+      for (int i = 0; i < 3; ++i) k.c[i] = conv(p.position[i]);
+      if (n + 1 < body.poses.size()) {  // keyframe_motion's q1 for the frame from this key
+        const std::vector<Rational> o = shorter_way(p.orientation, body.poses[n + 1].orientation);
+        for (int i = 0; i < 4; ++i) k.q_next[i] = conv(o[i]);
+      }
+      keys.push_back(k);
+    }
+    keys_.push_back(std::move(keys));
+    rigid_.push_back(rigid);
+  }
+  ok_ = true;
+}
+
+KeptPlaneCheck::Plane KeptPlaneCheck::prepare(const std::vector<Rational>& normal, const Rational& offset) const {
+  const B like(1.0, 0);
+  Plane p;
+  for (int i = 0; i < 3; ++i) p[i] = i < int(normal.size()) ? scalar_traits<B>::from_rational(normal[i], like) : B(0);
+  p[3] = scalar_traits<B>::from_rational(offset, like);
+  return p;
+}
+
+FrameSides KeptPlaneCheck::check(const Plane& plane, std::size_t i, std::size_t j, std::size_t k) const {
+  if (!ok_ || !rigid_.at(i) || !rigid_.at(j)) return FrameSides::unknown;
+  auto body = [&](std::size_t b) {
+    KeyframeBody3<B> kb;
+    kb.adj = &adj_[b];
+    const Key &k0 = keys_[b].at(k), &k1 = keys_[b].at(k + 1);
+    kb.q0 = k0.q;
+    kb.q1 = k0.q_next;
+    kb.c0 = k0.c;
+    kb.c1 = k1.c;
+    return kb;
+  };
+  return keyframe_plane_check(plane, body(i), body(j));
+}
+
 Rational body_shape_radius(const Animation& anim, std::size_t body) { return shape_radius(anim.bodies.at(body).Q, anim.dim); }
 Rational key_deformation_bound(const KeyPose& pose, int dim) { return deformation_bound(pose, dim); }
 
@@ -282,12 +338,20 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
     out[f].resize(frame_tasks[f].size());
     task_seconds[f].resize(frame_tasks[f].size());
   }
+#ifdef ECCD_ANIMATE_PLANES
+  // Stage 2's interval check from prepared numbers: double and certified runs (a proof in intervals is one
+  // there); exact and MPFR runs check in their own arithmetic only.
+  std::optional<KeptPlaneCheck> fast_planes;
+  if (opt.planes && anim.dim == 3 && (so.arith.kind == Arithmetic::Double || so.arith.kind == Arithmetic::Certified))
+    fast_planes.emplace(anim);
+#endif
   std::atomic<std::size_t> next{0}, done{0};
   std::atomic<bool> failed{false};
   auto work = [&]() {
     for (std::size_t w = next++; w < work_pairs.size() && !failed; w = next++) {
 #ifdef ECCD_ANIMATE_PLANES
       std::optional<SeparatingPlane> kept;
+      KeptPlaneCheck::Plane kept_prepared{};
       std::size_t kept_frame = 0;  // the frame position after which `kept` may be checked
 #endif
       for (const Slot& slot : by_pair[work_pairs[w]]) {
@@ -296,15 +360,25 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
         const std::size_t k = first + slot.frame_pos;
         const auto t0 = SteadyClock::now();
         try {
-          const Scene scene = pair_frame_scene(anim, task.a, task.b, k);
+          std::optional<Scene> built;  // the pair-frame's scene, built when a stage needs it
+          auto scene_of = [&]() -> const Scene& {
+            if (!built) built = pair_frame_scene(anim, task.a, task.b, k);
+            return *built;
+          };
 #ifdef ECCD_ANIMATE_PLANES
           // Only a plane from the frame just before (a frame dropped by stage 1 in between forgets it).
-          if (opt.planes && kept && kept_frame + 1 == slot.frame_pos && plane_separates_on_frame(scene, *kept, so) == PlaneCheck::separates) {
+          auto kept_separates = [&]() {
+            const FrameSides f = fast_planes ? fast_planes->check(kept_prepared, task.a, task.b, k) : FrameSides::unknown;
+            if (f != FrameSides::unknown) return f == FrameSides::separates;
+            return plane_separates_on_frame(scene_of(), *kept, so) == PlaneCheck::separates;
+          };
+          if (opt.planes && kept && kept_frame + 1 == slot.frame_pos && kept_separates()) {
             r.plane_settled = true;
             kept_frame = slot.frame_pos;  // checked on this frame; the next frame checks it again
           } else {
             kept.reset();
 #endif
+            const Scene& scene = scene_of();
             try {
               r.solution = solve(scene, so);
               if (!opt.all_intervals) first_interval_only(r.solution.answer);
@@ -317,6 +391,7 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
               Separation sep = separate_at(scene, Rational(1), so);
               if (sep.status == "separate" && sep.plane) {
                 kept = sep.plane;
+                if (fast_planes) kept_prepared = fast_planes->prepare(kept->normal, kept->offset);
                 kept_frame = slot.frame_pos;
               }
             }

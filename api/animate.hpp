@@ -17,7 +17,9 @@
 //     from sweep-and-prune over the bodies (intervals on the x axis, sorted).
 //  2. the separating plane kept from the previous frame (paper 000 section 4:
 //     frame coherence), checked over the whole frame by api/separate.hpp's
-//     plane_separates_on_frame in the run's arithmetic; compiled only when that
+//     plane_separates_on_frame in the run's arithmetic, after a first check in
+//     intervals from prepared numbers (KeptPlaneCheck below; double and
+//     certified runs of 3D animations); compiled only when that
 //     header exists (the contract of session 25), otherwise this stage settles
 //     nothing and AnimationResult::plane_stage_built is false. A plane is
 //     trusted for the frame it was checked on, never beyond.
@@ -45,10 +47,13 @@
 #include "api/options.hpp"
 #include "io/animation_reader.hpp"
 #include "kernel/answer.hpp"
+#include "kernel/plane_frame_check.hpp"
 #include "kernel/scene.hpp"
+#include "number/running_error.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -104,6 +109,35 @@ struct AnimationResult {
   bool planes_disabled = false;     // AnimateOptions::planes was false ("separating_plane_stage": "off")
   bool all_intervals = false;
   double seconds = 0;
+};
+
+// Stage 2's first check, from numbers prepared once per animation: each
+// body's adj(Q) and each key pose's orientation (taken the shorter way round
+// from the key before) and centre, rounded to Bounded<double> with their error
+// bounds; a kept plane is prepared once when it is kept. check() proves in
+// those intervals, without allocation, that the plane separates bodies i and j
+// over frame k (kernel/plane_frame_check.hpp, keyframe_plane_check), proves it
+// fails (a centre on the wrong side), or says unknown (including for 2D
+// animations and bodies with a deformation at either key); animate() then runs
+// the general check (api/separate.hpp plane_separates_on_frame) on the
+// pair-frame's scene, which is built only then.
+class KeptPlaneCheck {
+ public:
+  using B = Bounded<double>;
+  using Plane = std::array<B, 4>;
+  explicit KeptPlaneCheck(const Animation& anim);
+  Plane prepare(const std::vector<Rational>& normal, const Rational& offset) const;
+  FrameSides check(const Plane& plane, std::size_t body_i, std::size_t body_j, std::size_t frame) const;
+
+ private:
+  struct Key {
+    std::array<B, 4> q, q_next;  // the orientation, and the next key's taken the shorter way round from it
+    std::array<B, 3> c;
+  };
+  bool ok_ = false;
+  std::vector<std::array<std::array<B, 4>, 4>> adj_;
+  std::vector<std::vector<Key>> keys_;
+  std::vector<bool> rigid_;  // no deformation at any key
 };
 
 // The scene of bodies i and j (i != j) in frame k, in local time τ.

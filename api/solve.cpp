@@ -12,6 +12,7 @@
 #include "floating/cd_disc_floating.hpp"
 #include "floating/independent_ccd.hpp"
 #include "floating/rounded_input.hpp"
+#include "floating/translation_ccd.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/ccd_projection.hpp"
@@ -153,8 +154,36 @@ Solution run_floating_3d_stages(const Scene& scene, const SolveOptions& opt, con
   return s;
 }
 
+// The Bézier method's shortcut for a pair in straight-line relative
+// translation (floating/translation_ccd.hpp), in double from the scene's
+// numbers rounded: its answer when every claim is proved (plain double: taken
+// plainly), else nothing and the Bézier method runs.
+template <class T>
+std::optional<Solution> translation_shortcut(const Scene& scene, const SolveOptions& opt, const T& like) {
+  if constexpr (!std::is_same_v<T, double> && !std::is_same_v<T, Bounded<double>>) return std::nullopt;
+  else {
+    if (opt.method != Method::bezier || opt.input != InputMode::rounded || opt.basis == Basis::scaled_bernstein) return std::nullopt;
+    const auto start = std::chrono::steady_clock::now();
+    const auto pair = translating_pair<T>(scene, like);
+    if (!pair) return std::nullopt;
+    const auto r = translation_ccd(*pair);
+    if (!r) return std::nullopt;
+    Solution s;
+    s.dim = 3;
+    s.answer = r->answer;
+    s.projection = "contact-function";
+    s.projection_degree = 2;
+    s.work = {{"newton_steps", r->newton_steps}, {"proofs", r->proofs}};
+    s.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+    s.basis = to_string(opt.basis);
+    s.method = "translation";
+    return s;
+  }
+}
+
 template <class T>
 Solution run_floating_3d(const Scene& scene, const SolveOptions& opt, const T& like) {
+  if (auto s = translation_shortcut(scene, opt, like)) return *s;
   if (opt.basis == Basis::scaled_bernstein && opt.method != Method::projection)
     throw std::invalid_argument("--basis scaled-bernstein applies to --method projection only in 3D");
   if ((opt.method == Method::sampling || opt.method == Method::marching) && (opt.grid < 1 || opt.grid > 999999))

@@ -17,7 +17,11 @@
 //                   guarded double (baseline; target 0.5 ms) and exact (20 ms).
 //   speed-frame     per pair-frame of 000 Table 1's pair (rotations of 0.05
 //                   rad per frame): the kept-plane check in double (target
-//                   2 µs) against the continuous test (baseline); and the
+//                   2 µs) from the scene (plane_separates_on_frame) and as
+//                   animate's stage 2 runs it first (KeptPlaneCheck, from
+//                   numbers prepared once per animation, on the Table 1
+//                   animation at 0.1 rad), against the continuous test
+//                   (baseline); and the
 //                   boxers (576 pairs): eccd::animate double (1 ms per frame)
 //                   and certified (2 ms), ten frames per iteration.
 #include "bench/speed_targets.hpp"
@@ -269,6 +273,42 @@ void register_frames() {
             SolveOptions o;
             timed(st, grp + "/Table 1 pair-frame, kept-plane check double", [&] { return int(plane_separates_on_frame(table1, *sep.plane, o)); },
                   [](int r) { return json{{"result", to_string(PlaneCheck(r))}}; });
+          });
+  add_row(grp, "Table 1 pair-frame, kept-plane check from prepared poses", false, 1,
+          "eccd::KeptPlaneCheck::check (animate's stage 2, intervals from numbers prepared once per animation)",
+          [grp](benchmark::State& st) {
+            struct Case {
+              KeptPlaneCheck::Plane plane;
+              std::size_t frame;
+            };
+            static const Animation anim = read_animation(source_path("bench/data/table1-0.1-1000.anim.json"));
+            static const KeptPlaneCheck check(anim);
+            static const std::vector<Case> cases = [] {
+              std::vector<Case> v;  // the plane animate keeps: separate_at(frame k - 1, τ = 1), checked on frame k
+              SolveOptions ex;
+              ex.arith = Arithmetic::exact();
+              for (std::size_t k = 1; v.size() < 64 && k < anim.frames(); ++k) {
+                const Separation sep = separate_at(pair_frame_scene(anim, 0, 1, k - 1), 1, ex);
+                if (sep.plane) v.push_back({check.prepare(sep.plane->normal, sep.plane->offset), k});
+              }
+              return v;
+            }();
+            if (cases.empty()) { st.SkipWithError("no separate frame end in the Table 1 animation"); return; }
+            std::size_t i = 0;
+            timed(st, grp + "/Table 1 pair-frame, kept-plane check from prepared poses",
+                  [&] {
+                    i = (i + 1) % cases.size();
+                    return int(check.check(cases[i].plane, 0, 1, cases[i].frame));
+                  },
+                  [&](int) {
+                    json j = json::object();
+                    for (const Case& c : cases) {
+                      const FrameSides f = check.check(c.plane, 0, 1, c.frame);
+                      const char* name = f == FrameSides::separates ? "separates" : f == FrameSides::fails ? "fails" : "unknown";
+                      j[name] = j.value(name, 0) + 1;
+                    }
+                    return j;
+                  });
           });
   const std::string rel = "bench/data/boxers-10.anim.json";
   for (const char* a : {"double", "certified"}) {

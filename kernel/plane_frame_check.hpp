@@ -148,4 +148,123 @@ OnInterval positive_on_unit_interval(const Poly<T>& h, std::string& where, int m
   }
 }
 
+// The same check for a 3D keyframe body (kernel/keyframe_motion.hpp, no
+// deformation: M(τ) = [[R'(e), E c], [0, E]], e(τ) = (1 − τ)q0 + τq1 with q1
+// already taken the shorter way round, R' = E R the quaternion matrix of
+// kernel/motion.hpp, E = |e|², c(τ) = (1 − τ)c0 + τc1), in fixed-size
+// polynomials and without allocation: the kept-plane check of an animation
+// frame from numbers prepared once per body and key pose (api/animate.cpp).
+// q(τ) = M(τ)ᵀp has degree 2 (its first three entries) and 3 (the last),
+// h = qᵀ adj(Q) q degree 6; h > 0 on [0, 1] is proved by the scaled
+// Bernstein coefficients s_k = Σ_j a_j C(6 − j, k − j) (= b_k C(6, k): integer
+// weights) all certainly positive. That is sufficient, not necessary: a plane
+// it cannot settle is `unknown` here and goes to the general check above.
+// The centre's side at τ = 0 is the sign of pᵀM(0)Y_c = q(0)ᵀY_c (E(0) > 0).
+// Requirements on T: Bounded<double> or exact rationals.
+template <class T>
+struct KeyframeBody3 {
+  const std::array<std::array<T, 4>, 4>* adj = nullptr;  // adj(Q), prepared once per body
+  std::array<T, 4> q0, q1;                               // the orientations at the frame's keys
+  std::array<T, 3> c0, c1;                               // the centres
+};
+
+enum class FrameSides { separates, fails, unknown };
+
+namespace plane_frame_detail {
+template <class T, std::size_t N>
+using FPoly = std::array<T, N>;  // coefficients of τ^0..τ^(N-1)
+
+template <class T, std::size_t N, std::size_t M>
+FPoly<T, N + M - 1> fmul(const FPoly<T, N>& x, const FPoly<T, M>& y) {
+  FPoly<T, N + M - 1> r;
+  r.fill(T(0));
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < M; ++j) r[i + j] += x[i] * y[j];
+  return r;
+}
+// x + y + z + w with the signs given (each +1 or -1).
+template <class T, std::size_t N>
+FPoly<T, N> fsum(const FPoly<T, N>& x, int sy, const FPoly<T, N>& y, int sz = 0, const FPoly<T, N>* z = nullptr, int sw = 0,
+                 const FPoly<T, N>* w = nullptr) {
+  FPoly<T, N> r = x;
+  for (std::size_t i = 0; i < N; ++i) {
+    r[i] = sy > 0 ? T(r[i] + y[i]) : T(r[i] - y[i]);
+    if (z) r[i] = sz > 0 ? T(r[i] + (*z)[i]) : T(r[i] - (*z)[i]);
+    if (w) r[i] = sw > 0 ? T(r[i] + (*w)[i]) : T(r[i] - (*w)[i]);
+  }
+  return r;
+}
+
+// q(τ) = M(τ)ᵀp of a keyframe body. With e = (w, v), kernel/motion.hpp's
+// quaternion matrix is R' = (w² − |v|²)I + 2vvᵀ + 2w[v]×, so the first three
+// entries are R'ᵀn = (w² − |v|²)n + 2(v·n)v − 2w(v × n) (n = p's first three),
+// the last E(c·n + p_3).
+template <class T>
+std::array<FPoly<T, 4>, 4> keyframe_plane_in_body(const KeyframeBody3<T>& b, const std::array<T, 4>& p) {
+  FPoly<T, 2> e[4];
+  for (int i = 0; i < 4; ++i) e[i] = {b.q0[i], T(b.q1[i] - b.q0[i])};
+  FPoly<T, 3> sq[4];
+  for (int i = 0; i < 4; ++i) sq[i] = fmul(e[i], e[i]);
+  const FPoly<T, 3> a = fsum(sq[0], -1, sq[1], -1, &sq[2], -1, &sq[3]);  // w² − |v|²
+  const FPoly<T, 3> E = fsum(sq[0], 1, sq[1], 1, &sq[2], 1, &sq[3]);
+  FPoly<T, 2> vn{T(0), T(0)}, cross[3];  // v·n and v × n
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 2; ++k) vn[k] += e[i + 1][k] * p[i];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, l = (i + 2) % 3;
+    for (int k = 0; k < 2; ++k) cross[i][k] = e[j + 1][k] * p[l] - e[l + 1][k] * p[j];
+  }
+  std::array<FPoly<T, 4>, 4> q;
+  for (int i = 0; i < 3; ++i) {
+    const FPoly<T, 3> u = fmul(vn, e[i + 1]), x = fmul(e[0], cross[i]);
+    for (int k = 0; k < 3; ++k) q[i][k] = a[k] * p[i] + T(2) * T(u[k] - x[k]);
+    q[i][3] = T(0);
+  }
+  FPoly<T, 2> side{p[3], T(0)};  // c(τ)·n + p_3
+  for (int i = 0; i < 3; ++i) {
+    side[0] += b.c0[i] * p[i];
+    side[1] += T(b.c1[i] - b.c0[i]) * p[i];
+  }
+  q[3] = fmul(E, side);
+  return q;
+}
+}  // namespace plane_frame_detail
+
+template <class T>
+FrameSides keyframe_plane_check(const std::array<T, 4>& p, const KeyframeBody3<T>& a, const KeyframeBody3<T>& b) {
+  using namespace plane_frame_detail;
+  static constexpr int C[7][7] = {{1, 0, 0, 0, 0, 0, 0}, {1, 1, 0, 0, 0, 0, 0}, {1, 2, 1, 0, 0, 0, 0}, {1, 3, 3, 1, 0, 0, 0},
+                                  {1, 4, 6, 4, 1, 0, 0}, {1, 5, 10, 10, 5, 1, 0}, {1, 6, 15, 20, 15, 6, 1}};
+  bool unknown = false;
+  for (int k = 0; k < 2; ++k) {
+    const KeyframeBody3<T>& bd = k ? b : a;
+    const auto& adj = *bd.adj;
+    const std::array<FPoly<T, 4>, 4> q = keyframe_plane_in_body(bd, p);
+    T side = T(0);
+    for (int j = 0; j < 4; ++j) side += q[j][0] * adj[j][3];
+    const Sign ss = scalar_traits<T>::sign(side), want = k ? Sign::positive : Sign::negative;
+    if (ss == Sign::uncertain) unknown = true;
+    else if (ss != want) return FrameSides::fails;
+    FPoly<T, 7> h;  // qᵀ adj(Q) q; q_0..q_2 have degree 2, q_3 degree 3
+    h.fill(T(0));
+    for (int i = 0; i < 4; ++i) {
+      FPoly<T, 4> ri;  // (adj q)_i
+      for (int m = 0; m < 3; ++m) {
+        ri[m] = adj[i][0] * q[0][m];
+        for (int j = 1; j < 4; ++j) ri[m] += adj[i][j] * q[j][m];
+      }
+      ri[3] = adj[i][3] * q[3][3];
+      const int n = i < 3 ? 3 : 4;
+      for (int x = 0; x < n; ++x)
+        for (int m = 0; m < 4; ++m) h[x + m] += q[i][x] * ri[m];
+    }
+    for (int m = 0; m < 7 && !unknown; ++m) {
+      T s = h[m];
+      for (int j = 0; j < m; ++j) s += (C[6 - j][m - j] == 1 ? h[j] : T(T(C[6 - j][m - j]) * h[j]));
+      if (scalar_traits<T>::sign(s) != Sign::positive) unknown = true;
+    }
+  }
+  return unknown ? FrameSides::unknown : FrameSides::separates;
+}
+
 }  // namespace eccd
