@@ -12,6 +12,7 @@
 #include "kernel/ccd_projection.hpp"
 #include "io/scene_reader.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 
@@ -70,6 +71,88 @@ void clear_gap(const Rational& a, const Rational& b, const std::vector<std::pair
   clear_gap(a, m, F, P, points, depth + 1);
   points.push_back(m);
   clear_gap(m, b, F, P, points, depth + 1);
+}
+
+// A root's bracket and the factor it is a root of (lo = hi for a rational root).
+struct Bracketed {
+  Rational lo, hi;
+  int factor;
+};
+
+// Does Descartes' bound of every factor on (a, b) equal the number of its
+// bracketed roots there? Then the checker proves those brackets by their
+// sign changes alone (certificate/check/exact_certificate.cpp).
+bool piece_is_tight(const Rational& a, const Rational& b, const std::vector<Bracketed>& br, std::size_t i0, std::size_t i1,
+                    const std::vector<std::pair<Poly<Rational>, int>>& F) {
+  for (std::size_t j = 0; j < F.size(); ++j) {
+    int count = 0;
+    for (std::size_t i = i0; i < i1; ++i) count += br[i].factor == int(j);
+    if (descartes_variations(F[j].first, a, b) != count) return false;
+  }
+  return true;
+}
+
+// Cuts (a, b), which holds the brackets br[i0 .. i1), at points in its gaps
+// until every piece is tight: between the middle two brackets, or, around a
+// single bracket, closer to it on both sides; a piece without a bracket is
+// bisected. Returns false (and adds nothing) when depth runs out: that piece
+// is then proved bracket by bracket.
+bool tighten_piece(const Rational& a, const Rational& b, const std::vector<Bracketed>& br, std::size_t i0, std::size_t i1,
+                   const std::vector<std::pair<Poly<Rational>, int>>& F, std::vector<Rational>& points, int depth) {
+  if (piece_is_tight(a, b, br, i0, i1, F)) return true;
+  if (depth > 24) return false;
+  const std::size_t mark = points.size();
+  auto cut = [&](const Rational& lo, const Rational& hi) { return simplest_dyadic_between(Rational((2 * lo + hi) / 3), Rational((lo + 2 * hi) / 3)); };
+  bool ok = false;
+  if (i1 - i0 >= 2) {
+    const std::size_t m = i0 + (i1 - i0) / 2;
+    const Rational c = cut(br[m - 1].hi, br[m].lo);
+    ok = tighten_piece(a, c, br, i0, m, F, points, depth + 1);
+    points.push_back(c);
+    ok = ok && tighten_piece(c, b, br, m, i1, F, points, depth + 1);
+  } else if (i1 - i0 == 1) {
+    const Rational c1 = cut(a, br[i0].lo), c2 = cut(br[i0].hi, b);
+    ok = tighten_piece(a, c1, br, i0, i0, F, points, depth + 1);
+    points.push_back(c1);
+    ok = ok && tighten_piece(c1, c2, br, i0, i1, F, points, depth + 1);
+    points.push_back(c2);
+    ok = ok && tighten_piece(c2, b, br, i1, i1, F, points, depth + 1);
+  } else {
+    const Rational c = cut(a, b);
+    ok = tighten_piece(a, c, br, i0, i0, F, points, depth + 1);
+    points.push_back(c);
+    ok = ok && tighten_piece(c, b, br, i0, i0, F, points, depth + 1);
+  }
+  if (!ok) points.resize(mark);
+  return ok;
+}
+
+// More gap points, so that Descartes' bound on each piece between them
+// counts exactly the bracketed roots there (tighten_piece). Each gap piece
+// clear_gap left has 0 sign variations for every factor and a piece's parts
+// have at most its variations, so the brackets-and-gaps proof still holds as
+// well. Nothing is added if it would pass the checker's bound on gap points.
+void add_counting_points(const std::vector<RootWork>& roots, const std::vector<std::pair<Poly<Rational>, int>>& F, const Poly<Rational>& P,
+                         std::vector<Rational>& points) {
+  std::vector<Bracketed> br;
+  for (const auto& w : roots)  // the roots inside (0, 1): a root at 0 or 1 is an end instant, not in any piece
+    if (w.root.lo > 0 && w.root.hi < 1) br.push_back({w.root.lo, w.root.hi, w.factor});
+  std::sort(br.begin(), br.end(), [](const Bracketed& x, const Bracketed& y) { return x.lo < y.lo; });
+  std::vector<Rational> cuts{Rational(0)};
+  cuts.insert(cuts.end(), points.begin(), points.end());
+  cuts.push_back(Rational(1));
+  std::vector<Rational> more;
+  std::size_t i0 = 0;
+  for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+    std::size_t i1 = i0;
+    while (i1 < br.size() && br[i1].hi < cuts[c + 1]) ++i1;
+    tighten_piece(cuts[c], cuts[c + 1], br, i0, i1, F, more, 0);
+    i0 = i1;
+  }
+  if (points.size() + more.size() <= certificate_max_gap_points(std::size_t(P.degree()))) {
+    points.insert(points.end(), more.begin(), more.end());
+    std::sort(points.begin(), points.end());
+  }
 }
 
 template <int N>
@@ -206,6 +289,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
     prev = w.root.hi;
   }
   if (prev < Rational(1)) clear_gap(prev, Rational(1), F, P, points, 0);
+  add_counting_points(roots, F, P, points);
   if (points.size() > certificate_max_gap_points(std::size_t(P.degree())))
     throw CertificationError("cannot certify: clearing the gaps between the brackets takes more than " +
                              std::to_string(certificate_max_gap_points(std::size_t(P.degree()))) + " points");

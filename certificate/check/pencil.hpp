@@ -146,6 +146,84 @@ inline QMatrix moving_quadric(const QMatrix& Q, const PolyMatrix& N, const mpq_c
   return r;
 }
 
+// The same on integers, for the f claim's many points: a rational matrix (of
+// numbers or polynomials) times the lcm of its denominators, a positive
+// integer; N(t) at an integer t; N^T Q N; and H! times the coefficients of
+// det(λA - B) (values at λ = 0 .. H by Bareiss, Newton's forward differences
+// d_j, H! binom(λ, j) = (H!/j!) λ(λ-1)...(λ-j+1) expanded on integers).
+using ZMatrix = std::vector<std::vector<mpz_class>>;
+using ZPolyMatrix = std::vector<std::vector<std::vector<mpz_class>>>;
+
+inline ZPolyMatrix integer_matrix(const PolyMatrix& m) {
+  mpz_class l = 1;
+  for (const auto& row : m)
+    for (const auto& e : row) l = denominator_lcm(e, l);
+  ZPolyMatrix r;
+  for (const auto& row : m) {
+    r.emplace_back();
+    for (const auto& e : row) r.back().push_back(integer_multiple(e, l));
+  }
+  return r;
+}
+inline ZMatrix integer_matrix(const QMatrix& m) {
+  mpz_class l = 1;
+  for (const auto& row : m)
+    for (const auto& e : row) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), e.get_den_mpz_t());
+  ZMatrix r;
+  for (const auto& row : m) {
+    r.emplace_back();
+    for (const auto& e : row) r.back().push_back(e.get_num() * (l / e.get_den()));
+  }
+  return r;
+}
+inline ZMatrix at_point(const ZPolyMatrix& m, const mpz_class& t) {
+  ZMatrix r(m.size());
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (const auto& e : m[i]) r[i].push_back(value_at(e, t));
+  return r;
+}
+inline ZMatrix moving_quadric(const ZMatrix& Q, const ZMatrix& n) {
+  const std::size_t H = Q.size();
+  ZMatrix qn(H, std::vector<mpz_class>(H)), r(H, std::vector<mpz_class>(H));
+  for (std::size_t i = 0; i < H; ++i)
+    for (std::size_t j = 0; j < H; ++j)
+      for (std::size_t k = 0; k < H; ++k) qn[i][j] += Q[i][k] * n[k][j];
+  for (std::size_t i = 0; i < H; ++i)
+    for (std::size_t j = i; j < H; ++j) {
+      for (std::size_t k = 0; k < H; ++k) r[i][j] += n[k][i] * qn[k][j];
+      if (i != j) r[j][i] = r[i][j];  // N^T Q N is symmetric (Q is: the scene reader requires it)
+    }
+  return r;
+}
+inline std::vector<mpz_class> pencil_coefficients(const ZMatrix& A, const ZMatrix& B) {
+  const std::size_t H = A.size();
+  std::vector<mpz_class> d;
+  for (std::size_t l = 0; l <= H; ++l) {
+    ZMatrix m(H, std::vector<mpz_class>(H));
+    for (std::size_t i = 0; i < H; ++i)
+      for (std::size_t j = 0; j < H; ++j) m[i][j] = A[i][j] * (unsigned long)l - B[i][j];
+    d.push_back(determinant(std::move(m)));
+  }
+  for (std::size_t j = 1; j <= H; ++j)  // forward differences: d[j] = Δ^j v(0)
+    for (std::size_t i = H; i >= j; --i) d[i] -= d[i - 1];
+  mpz_class hf = 1;
+  for (std::size_t k = 2; k <= H; ++k) hf *= (unsigned long)k;
+  std::vector<mpz_class> out(H + 1), ff{mpz_class(1)};
+  mpz_class jf = 1;  // j!
+  for (std::size_t j = 0; j <= H; ++j) {
+    if (j > 0) jf *= (unsigned long)j;
+    const mpz_class w = d[j] * (hf / jf);
+    for (std::size_t k = 0; k < ff.size(); ++k) out[k] += w * ff[k];
+    std::vector<mpz_class> next(ff.size() + 1);  // ff · (λ - j)
+    for (std::size_t k = 0; k < ff.size(); ++k) {
+      next[k + 1] += ff[k];
+      next[k] -= ff[k] * (unsigned long)j;
+    }
+    ff.swap(next);
+  }
+  return out;
+}
+
 // The coefficients h_0 .. h_H of det(λA - B) (by values at λ = 0 .. H).
 inline std::vector<mpq_class> pencil_coefficients(const QMatrix& A, const QMatrix& B) {
   const std::size_t H = A.size();
@@ -209,6 +287,16 @@ inline mpq_class subresultant_at(const std::vector<mpq_class>& c, int j, int i) 
     sq[std::size_t(r)][std::size_t(rows - 1)] = coeff(i);
   }
   return determinant(sq);
+}
+
+// The discriminant of the quartic a λ⁴ + b λ³ + c λ² + d λ + e, by its
+// closed form (Res(f, f') = a · disc f for a quartic).
+inline mpz_class quartic_discriminant_at(const std::vector<mpz_class>& g) {
+  const mpz_class &a = g[4], &b = g[3], &c = g[2], &d = g[1], &e = g[0];
+  const mpz_class a2 = a * a, b2 = b * b, c2 = c * c, d2 = d * d, e2 = e * e;
+  return 256 * a2 * a * e2 * e - 192 * a2 * b * d * e2 - 128 * a2 * c2 * e2 + 144 * a2 * c * d2 * e - 27 * a2 * d2 * d2 +
+         144 * a * b2 * c * e2 - 6 * a * b2 * d2 * e - 80 * a * b * c2 * d * e + 18 * a * b * c * d2 * d + 16 * a * c2 * c2 * e -
+         4 * a * c2 * c * d2 - 27 * b2 * b2 * e2 + 18 * b2 * b * c * d * e - 4 * b2 * b * d2 * d - 4 * b2 * c2 * c * e + b2 * c2 * d2;
 }
 
 // The discriminant of the cubic a λ³ + b λ² + c λ + d.

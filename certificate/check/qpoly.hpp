@@ -6,8 +6,9 @@
 // Statement. Coefficients lowest degree first, always trimmed (the zero
 // polynomial has no coefficient). What a checker needs and nothing more:
 // ring operations, division with remainder, the monic gcd (Euclid), the value
-// at a rational point (Horner), Newton interpolation at the integers 0..D,
-// and two root counts at rational points, each exact:
+// at a rational point (Horner; for integer multiples, on integers only),
+// Newton interpolation at the integers 0..D, a sign on a bracket by the mean
+// value theorem, and two root counts at rational points, each exact:
 //   descartes(p, lo, hi)  the sign variations of p after the map of (lo, hi)
 //       onto (0, ∞), an upper bound of the number of roots of p in the open
 //       interval (lo, hi), counted with multiplicity, and of the same parity;
@@ -148,6 +149,48 @@ inline mpz_class value_at(const std::vector<mpz_class>& z, const mpz_class& t) {
   mpz_class v = 0;
   for (std::size_t i = z.size(); i-- > 0;) v = v * t + z[i];
   return v;
+}
+
+// The sign of p(x) for an integer polynomial p and a rational x = a/b (b > 0):
+// the sign of b^n p(a/b), by Horner on integers (no rational arithmetic).
+inline int sign_at(const std::vector<mpz_class>& z, const mpq_class& x) {
+  if (z.empty()) return 0;
+  const mpz_class &a = x.get_num(), &b = x.get_den();
+  mpz_class v = z.back(), bp = 1;
+  for (std::size_t i = z.size() - 1; i-- > 0;) {
+    bp *= b;
+    v = v * a + z[i] * bp;
+  }
+  return sgn(v);
+}
+// b^n p(a/b) itself (n = z.size() - 1).
+inline mpz_class scaled_value_at(const std::vector<mpz_class>& z, const mpq_class& x) {
+  if (z.empty()) return 0;
+  const mpz_class &a = x.get_num(), &b = x.get_den();
+  mpz_class v = z.back(), bp = 1;
+  for (std::size_t i = z.size() - 1; i-- > 0;) {
+    bp *= b;
+    v = v * a + z[i] * bp;
+  }
+  return v;
+}
+
+// A sign of p proved on all of [lo, hi] ⊂ [-1, 1] by the mean value theorem:
+// |p(t) - p(lo)| <= (hi - lo) max |p'| <= (hi - lo) Σ k |z_k| there, so if
+// |p(lo)| is larger, p keeps the sign of p(lo) on the bracket. Returns that
+// sign, or 0 when this cheap test cannot tell (p may vanish, or p(lo) is too
+// small: then Descartes decides).
+inline int sign_on_bracket(const std::vector<mpz_class>& z, const mpq_class& lo, const mpq_class& hi) {
+  if (z.empty() || abs(lo) > 1 || abs(hi) > 1 || hi < lo) return 0;
+  const mpz_class v = scaled_value_at(z, lo);  // den(lo)^n p(lo)
+  if (sgn(v) == 0) return 0;
+  mpz_class slope = 0;  // Σ k |z_k|
+  for (std::size_t k = 1; k < z.size(); ++k) slope += mpz_class(abs(z[k])) * (unsigned long)k;
+  const mpq_class w = hi - lo;
+  mpz_class dn;
+  mpz_pow_ui(dn.get_mpz_t(), lo.get_den_mpz_t(), (unsigned long)(z.size() - 1));
+  // |v| / dn > w · slope  <=>  |v| · den(w) > dn · num(w) · slope
+  return mpz_class(abs(v) * w.get_den()) > mpz_class(dn * w.get_num() * slope) ? sgn(v) : 0;
 }
 
 namespace qpoly_impl {
