@@ -183,7 +183,6 @@ std::optional<Solution> translation_shortcut(const Scene& scene, const SolveOpti
 
 template <class T>
 Solution run_floating_3d(const Scene& scene, const SolveOptions& opt, const T& like) {
-  if (auto s = translation_shortcut(scene, opt, like)) return *s;
   if (opt.basis == Basis::scaled_bernstein && opt.method != Method::projection)
     throw std::invalid_argument("--basis scaled-bernstein applies to --method projection only in 3D");
   if ((opt.method == Method::sampling || opt.method == Method::marching) && (opt.grid < 1 || opt.grid > 999999))
@@ -191,6 +190,7 @@ Solution run_floating_3d(const Scene& scene, const SolveOptions& opt, const T& l
                                 ":N with N a whole number from 1 to 999999");
   Solution s;
   try {
+    if (auto t = deadline_passed() ? std::nullopt : translation_shortcut(scene, opt, like)) return *t;
     s = run_floating_3d_stages(scene, opt, like);
   } catch (const BudgetExhausted& e) {
     s = undecided_run<T>(e.what(), 3, Variant::answer);
