@@ -154,13 +154,14 @@ Solution run_floating_3d_stages(const Scene& scene, const SolveOptions& opt, con
   return s;
 }
 
-// The Bézier method's shortcut for a pair in straight-line relative
+// The guarded face's shortcut for a pair in straight-line relative
 // translation (floating/translation_ccd.hpp), in double from the scene's
-// numbers rounded: its answer when every claim is proved (plain double: taken
-// plainly), else nothing and the Bézier method runs.
+// numbers rounded: its answer when every claim is proved, else nothing and the
+// Bézier method runs. Only the guarded face takes it: the as-published face is
+// 001's Bézier method as the paper states it, whose errors the reports count.
 template <class T>
 std::optional<Solution> translation_shortcut(const Scene& scene, const SolveOptions& opt, const T& like) {
-  if constexpr (!std::is_same_v<T, double> && !std::is_same_v<T, Bounded<double>>) return std::nullopt;
+  if constexpr (!std::is_same_v<T, Bounded<double>>) return std::nullopt;
   else {
     if (opt.method != Method::bezier || opt.input != InputMode::rounded || opt.basis == Basis::scaled_bernstein) return std::nullopt;
     const auto start = std::chrono::steady_clock::now();
