@@ -116,6 +116,13 @@ TEST_CASE("eccd-check: exit 2 for an unreadable file, malformed JSON, bad argume
   CHECK(check::covers_format("eccd-certificate/2"));
   CHECK_FALSE(check::covers_format("eccd-bezier-certificate/1"));
   CHECK(check::covers_format("eccd-bezier-certificate/2"));
+  CHECK(check::covers_format("eccd-independent-certificate/3"));
+  CHECK_FALSE(check::covers_format("eccd-independent-certificate/2"));
+  {  // the independent kind's older version: refused by name
+    std::ofstream(d / "independent-2.json") << "{\"format\": \"eccd-independent-certificate/2\"}";
+    CHECK(run(q(checker) + " " + q(src + "/cases/independent/discs-end.json") + " " + q((d / "independent-2.json").string()), out) == 1);
+    CHECK(out.find("older version") != std::string::npos);
+  }
   fs::remove_all(d);
 }
 

@@ -279,6 +279,67 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
   return m;
 }
 
+// Mutations 9 and 10 of an independent-motion certificate: the net or the reduction, an end's tree or system.
+void mutate_independent_proof(json& c, json& seq, json& ans, const char* list, Mutant& m, std::mt19937_64& rng, int which) {
+  auto pick = [&](std::size_t n) { return std::size_t(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)); };
+  switch (which) {
+    case 4: {  // an integer changed by one
+      std::vector<json::json_pointer> nums;
+      collect(c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
+      const auto p = nums[pick(nums.size())];
+      const int d = pick(2) ? 1 : -1;
+      if (c[p].is_number_integer()) c[p] = c[p].get<long long>() + d;
+      else {
+        const std::string t = c[p].get<std::string>();
+        const std::size_t slash = t.find('/');
+        mpz_class n(slash == std::string::npos ? t : t.substr(0, slash), 10);
+        n += d;
+        c[p] = n.get_str() + (slash == std::string::npos ? "" : t.substr(slash));
+      }
+      m.what = "integer changed by one at " + p.to_string();
+      m.may_stay_valid = p.to_string().find("/boxes/") != std::string::npos || p.to_string().find("/chain/") != std::string::npos ||
+                         p.to_string() == "/precision_bits";
+      break;
+    }
+    case 9: {  // the net, or the bodies held still
+      if (pick(4) == 0) {
+        json& r = c["reduced"];
+        if (r.empty()) r.push_back(pick(2) ? "s" : "t");
+        else r.erase(r.begin());
+        m.what = "reduced changed";
+      } else {
+        json& co = c["net"]["coefficients"];
+        json& x = co[pick(co.size())];
+        x = mpq_class(rq(x) * 2 + 1).get_str();
+        m.what = "net coefficient changed";
+      }
+      break;
+    }
+    default: {  // an exclusion tree's node flipped, or an end's system renamed
+      std::vector<std::size_t> ends;
+      for (std::size_t k = 0; k < seq.size(); ++k)
+        if (seq[k]["kind"] == "end") ends.push_back(k);
+      if (ends.empty()) { ans[list] = json::array(); m.what = std::string(list) + " emptied"; break; }
+      json& e = seq[ends[pick(ends.size())]];
+      if (pick(3) == 0) {
+        const std::string names[] = {"fold", "0", "1", "free"};
+        std::string now = e["system"];
+        while (now == e["system"]) now = names[pick(4)];
+        e["system"] = now;
+        m.what = "end system renamed";
+        break;
+      }
+      std::string t = e["exclusion"].get<std::string>();
+      const std::size_t i = pick(t.size());
+      t[i] = t[i] == '0' ? '1' : '0';
+      e["exclusion"] = t;
+      m.what = "exclusion node flipped";
+      m.may_stay_valid = true;  // a finer tree may still exclude
+      break;
+    }
+  }
+}
+
 // The same mutations on an independent-motion certificate: its items (s_proof, t_proof) take the pieces' place.
 Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
   auto pick = [&](std::size_t n) { return std::size_t(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)); };
@@ -289,7 +350,8 @@ Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
   json& seq = c[proof];
   json& ans = c["answer"];
   const char* list = pick(2) ? "s_intervals" : "t_intervals";
-  switch (pick(11)) {
+  const std::size_t which = pick(11);
+  switch (which) {
     case 0:
       ans["collides"] = pick(3) == 0 ? json(nullptr) : json(!ans["collides"].get<bool>());
       m.what = "collides flipped";
@@ -332,24 +394,9 @@ Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
       }
       break;
     }
-    case 4: {  // an integer changed by one
-      std::vector<json::json_pointer> nums;
-      collect(c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
-      const auto p = nums[pick(nums.size())];
-      const int d = pick(2) ? 1 : -1;
-      if (c[p].is_number_integer()) c[p] = c[p].get<long long>() + d;
-      else {
-        const std::string t = c[p].get<std::string>();
-        const std::size_t slash = t.find('/');
-        mpz_class n(slash == std::string::npos ? t : t.substr(0, slash), 10);
-        n += d;
-        c[p] = n.get_str() + (slash == std::string::npos ? "" : t.substr(slash));
-      }
-      m.what = "integer changed by one at " + p.to_string();
-      m.may_stay_valid = p.to_string().find("/boxes/") != std::string::npos || p.to_string().find("/chain/") != std::string::npos ||
-                         p.to_string() == "/precision_bits";
+    case 4:
+      mutate_independent_proof(c, seq, ans, list, m, rng, 4);
       break;
-    }
     case 5:
       m.what = "scene swapped";
       m.scene_text = b.other_scene_text;
@@ -381,43 +428,10 @@ Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
       m.what = std::string(proof) + " item " + std::to_string(k) + " kind flipped";
       break;
     }
-    case 9: {  // the net, or the bodies held still
-      if (pick(4) == 0) {
-        json& r = c["reduced"];
-        if (r.empty()) r.push_back(pick(2) ? "s" : "t");
-        else r.erase(r.begin());
-        m.what = "reduced changed";
-      } else {
-        json& co = c["net"]["coefficients"];
-        json& x = co[pick(co.size())];
-        x = mpq_class(rq(x) * 2 + 1).get_str();
-        m.what = "net coefficient changed";
-      }
+    default:
+      mutate_independent_proof(c, seq, ans, list, m, rng, int(which));
       break;
-    }
-    default: {  // an exclusion tree's node flipped, or an end's system renamed
-      std::vector<std::size_t> ends;
-      for (std::size_t k = 0; k < seq.size(); ++k)
-        if (seq[k]["kind"] == "end") ends.push_back(k);
-      if (ends.empty()) { ans[list] = json::array(); m.what = std::string(list) + " emptied"; break; }
-      json& e = seq[ends[pick(ends.size())]];
-      if (pick(3) == 0) {
-        const std::string names[] = {"fold", "0", "1", "free"};
-        std::string now = e["system"];
-        while (now == e["system"]) now = names[pick(4)];
-        e["system"] = now;
-        m.what = "end system renamed";
-        break;
-      }
-      std::string t = e["exclusion"].get<std::string>();
-      const std::size_t i = pick(t.size());
-      t[i] = t[i] == '0' ? '1' : '0';
-      e["exclusion"] = t;
-      m.what = "exclusion node flipped";
-      m.may_stay_valid = true;  // a finer tree may still exclude
-      break;
-    }
-  }
+}
   m.text = c.dump();
   if (c["answer"] != b.cert["answer"] || m.scene_text != b.scene_text || c["net"] != b.cert["net"] || c["reduced"] != b.cert["reduced"])
     m.may_stay_valid = false;
