@@ -15,7 +15,8 @@
 // wrong (Example 2 perturbed: a false collision on [0.42496, 0.56538]), so
 // that the test is never vacuous. Work is bounded by the number of scenes and
 // by each run's deadline (kernel/budget.hpp), not timed.
-// ECCD_GUARD_SEED overrides the seed (printed).
+// ECCD_GUARD_SEED overrides the seed (printed); ECCD_GUARD_VERBOSE=1 prints
+// each false alarm with the guarded run's reasons.
 #include "api/answer_difference.hpp"
 #include "api/solve.hpp"
 #include "compare/scene_generator.hpp"
@@ -95,6 +96,11 @@ void check_scene(const Scene& s, Tally& t) {
         else if (dg.agrees) ++t.right_anyway;
       } else if (dp.agrees && grd_undecided) {
         ++t.false_alarms;
+        if (std::getenv("ECCD_GUARD_VERBOSE")) {
+          std::cout << "[false-alarm] " << where << " undecided " << dg.undecided << ":";
+          for (const auto& r : grd.undecided_reasons) std::cout << " | " << r;
+          std::cout << std::endl;
+        }
       }
       // The guard is never confidently wrong, whatever the published face said.
       if (grd_wrong) t.misses.push_back(where + ": guarded differs: " + diff_text(dg) + " (as published: " +
