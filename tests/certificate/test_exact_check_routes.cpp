@@ -93,7 +93,7 @@ TEST_CASE("eccd-check: a sign on a bracket by the mean value theorem, or no answ
   CHECK(check::sign_at(q, mpq_class(-3, 4)) == -1);
 }
 
-TEST_CASE("eccd-check: the writer's gap points let every piece count its roots; a root given to the wrong factor is rejected",
+TEST_CASE("eccd-check: the writer's gap points let every piece count its roots, and a root given to the wrong factor is rejected",
           "[eccd-check][exact-routes][certificate]") {
   for (const std::string rel : {"paper003/example2.json", "paper002/example.json", "generated/2d/2d-deg6-colliding-kinematic-793321409713674.json"}) {
     const std::string path = src + "/cases/" + rel, text = read_file_bytes(path);

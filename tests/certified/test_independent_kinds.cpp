@@ -238,7 +238,7 @@ TEST_CASE("F(u, s, t) of ellipses has the ellipsoids' sign convention: F(0) = de
   for (int k = 1; k < 8; ++k) CHECK(sgn(F(Rational(k, 8), h, h)) < 0);  // the same disc twice: overlap, F < 0 on (0, 1)
 }
 
-TEST_CASE("hold_still: a disc or ball turning about its centre is held at s = 0; a moving or turning ellipse is not", "[independent][kinds]") {
+TEST_CASE("hold_still: a disc or ball turning about its centre is held at s = 0, a moving or turning ellipse is not", "[independent][kinds]") {
   for (const int dim : {2, 3}) {
     INFO(dim << "D");
     const Maker m{dim};

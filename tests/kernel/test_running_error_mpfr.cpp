@@ -43,7 +43,7 @@ mpq_class exact_of(long double e) {  // a long double bound as a rational, exact
 
 }  // namespace
 
-TEST_CASE("Bounded<Mpfr>: mag is at least |x| and within 2^-52 of it; unit_mag bounds rounding to nearest", "[running-error][mpfr]") {
+TEST_CASE("Bounded<Mpfr>: mag is at least |x| and within 2^-52 of it, and unit_mag bounds rounding to nearest", "[running-error][mpfr]") {
   std::mt19937_64 rng(33);
   std::uniform_int_distribution<long> num(-(1L << 62), 1L << 62);
   std::uniform_int_distribution<int> shift(-300, 300), op(0, 2);
