@@ -338,9 +338,24 @@ struct Checker {
   QPoly evidence(const std::string& nm) {
     if (auto it = evidence_cache.find(nm); it != evidence_cache.end()) return it->second;
     QPoly q;
-    const mpq_class nine = 9, three = 3, four = 4;
-    if (H == 3 && nm == "P") q = nine * (g[3] * g[0]) - g[2] * g[1];
-    else if (H == 3 && nm == "D") q = g[2] * g[2] - three * (g[3] * g[1]);
+    const mpq_class four = 4;
+    // 2D on the integer G = L g: L² times P or D, the same signs and roots.
+    auto combine = [](const ZPoly& x, const ZPoly& y, long k) {
+      ZPoly r = product(x, y);
+      for (auto& c : r) c *= k;
+      return r;
+    };
+    if (H == 3 && nm == "P") {
+      make_integer_g();
+      ZPoly z = combine(G[3], G[0], 9);
+      add_to(z, product(G[2], G[1]), -1);
+      q = to_qpoly(trimmed(std::move(z)));
+    } else if (H == 3 && nm == "D") {
+      make_integer_g();
+      ZPoly z = product(G[2], G[2]);
+      add_to(z, combine(G[3], G[1], 3), -1);
+      q = to_qpoly(trimmed(std::move(z)));
+    }
     else if (H == 4) {
       auto s = [&](int j, int i) {
         const int bound = (2 * H - 1 - 2 * j) * g_degree();
