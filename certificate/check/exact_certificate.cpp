@@ -8,7 +8,8 @@
 //   on integers, timeline, instant K (a sign change of its factor), gaps
 //   (on each piece between gap points, Descartes' bound of each factor equals
 //   its brackets there; else Descartes on each bracket and gap), cell K
-//   (static test: negative roots of f by Sturm), status of each instant
+//   (static test: negative roots of f by Descartes where its count is
+//   exact, else Sturm), status of each instant
 //   (evidence signs proved on the bracket: mean value theorem or Descartes),
 //   answer (assembled by the checker from the checked timeline).
 #include "certificate/check/verdict.hpp"
@@ -251,9 +252,11 @@ struct Checker {
     const std::vector<mpz_class> PZ = integer_multiple(P, denominator_lcm(P));
     std::optional<std::pair<mpz_class, mpz_class>> ratio;  // (got, want) where want ≠ 0 first: got / want is the constant
     const int points = std::max(bound, P.degree()) + 1;  // both sides have degree < points
+    std::vector<mpz_class> p_values;  // P's values, for the factors below too
     for (int j = 0; j < points; ++j) {
       const mpz_class t = point(j, points), want = candidate_at(k, t);
       const mpz_class got = value_at(PZ, t);
+      p_values.push_back(got);
       if (!ratio && sgn(want) != 0) ratio = std::make_pair(got, want);
       if (ratio ? got * ratio->second != ratio->first * want : sgn(got) != 0)
         reject("projection", "P is not a constant multiple of the " + names[std::size_t(k)] + " of f (they disagree at t = " + t.get_str() + ")");
@@ -285,36 +288,47 @@ struct Checker {
     std::optional<std::pair<mpz_class, mpz_class>> r2;
     std::vector<std::vector<mpz_class>> FZ;
     for (const auto& fm : F) FZ.push_back(integer_multiple(fm.first, denominator_lcm(fm.first)));
-    for (std::size_t j = 0; j <= degree; ++j) {
-      const mpz_class t = point(int(j), int(degree) + 1);
+    for (int j = 0; j < points; ++j) {  // points > degree: the values of P above
+      const mpz_class t = point(j, points);
       mpz_class prod = 1;
       for (std::size_t i = 0; i < F.size(); ++i) {
         const mpz_class v = value_at(FZ[i], t);
         for (int e = 0; e < F[i].second; ++e) prod *= v;
       }
-      const mpz_class pv = value_at(PZ, t);
+      const mpz_class& pv = p_values[std::size_t(j)];
       if (!r2 && sgn(pv) != 0) r2 = std::make_pair(prod, pv);
       if (r2 ? prod * r2->second != r2->first * pv : sgn(prod) != 0)
         reject("factors", "the product of the factors is not a constant multiple of the projection (they disagree at t = " + t.get_str() + ")");
     }
     checked.push_back("factors: the product of " + std::to_string(F.size()) + " factor(s) is the projection up to a constant (values at " +
-                      std::to_string(degree + 1) + " points)");
+                      std::to_string(points) + " points)");
     return true;
   }
 
-  // The static test at a rational instant: negative roots of f(λ; t) by Sturm.
+  // The static test at a rational instant: negative roots of f(λ; t) (Descartes where exact, else Sturm).
   St static_status(const mpq_class& t) const {
     // den(t)^n L g_k(t) on integers (n the largest degree): f times a positive constant.
     std::size_t n = 0;
     for (const auto& x : G) n = std::max(n, x.size());
-    std::vector<mpq_class> v;
+    std::vector<mpz_class> z;
     for (const auto& x : G) {
       mpz_class pad;
       mpz_pow_ui(pad.get_mpz_t(), t.get_den_mpz_t(), (unsigned long)(n - std::max<std::size_t>(x.size(), 1)));
-      v.push_back(mpq_class(scaled_value_at(x, t) * pad));
+      z.push_back(scaled_value_at(x, t) * pad);
     }
+    std::vector<mpq_class> v(z.begin(), z.end());
     const QPoly f(std::move(v));
     if (f.zero() || sgn(f.c[0]) == 0 || f.degree() < H) reject("scene", "f(lambda; " + t.get_str() + ") is degenerate (det A or det B vanishes)");
+    // Descartes on f(-lambda) first: at most one sign variation means at most
+    // one negative root counted with multiplicity (not two, and no multiple
+    // one): overlapping. A cubic with a positive discriminant has three
+    // distinct real roots, none zero, where Descartes' count is exact: two
+    // or more variations are as many negative roots, separate. Else Sturm.
+    std::vector<mpz_class> mirrored = z;
+    for (std::size_t k = 1; k < mirrored.size(); k += 2) mirrored[k] = -mirrored[k];
+    const int v_neg = qpoly_impl::variations(mirrored);
+    if (v_neg <= 1) return St::overlapping;
+    if (H == 3 && sgn(cubic_discriminant_at(z)) > 0) return St::separate;
     if (negative_roots(f) >= 2) return St::separate;
     const QPoly h = gcd(f, derivative(f));
     if (h.degree() >= 1 && negative_roots(h) >= 1) return St::touching;
@@ -324,9 +338,24 @@ struct Checker {
   QPoly evidence(const std::string& nm) {
     if (auto it = evidence_cache.find(nm); it != evidence_cache.end()) return it->second;
     QPoly q;
-    const mpq_class nine = 9, three = 3, four = 4;
-    if (H == 3 && nm == "P") q = nine * (g[3] * g[0]) - g[2] * g[1];
-    else if (H == 3 && nm == "D") q = g[2] * g[2] - three * (g[3] * g[1]);
+    const mpq_class four = 4;
+    // 2D on the integer G = L g: L² times P or D, the same signs and roots.
+    auto combine = [](const ZPoly& x, const ZPoly& y, long k) {
+      ZPoly r = product(x, y);
+      for (auto& c : r) c *= k;
+      return r;
+    };
+    if (H == 3 && nm == "P") {
+      make_integer_g();
+      ZPoly z = combine(G[3], G[0], 9);
+      add_to(z, product(G[2], G[1]), -1);
+      q = to_qpoly(trimmed(std::move(z)));
+    } else if (H == 3 && nm == "D") {
+      make_integer_g();
+      ZPoly z = product(G[2], G[2]);
+      add_to(z, combine(G[3], G[1], 3), -1);
+      q = to_qpoly(trimmed(std::move(z)));
+    }
     else if (H == 4) {
       auto s = [&](int j, int i) {
         const int bound = (2 * H - 1 - 2 * j) * g_degree();
@@ -564,7 +593,7 @@ struct Checker {
       const St st = static_status(nodes[k].lo);
       if (st != nodes[k].status) reject(nodes[k].name, std::string("the static test gives ") + name(st) + ", not " + name(nodes[k].status));
     }
-    checked.push_back("cells: the static test (negative roots of f by Sturm) at each of the " + std::to_string(nodes.size() / 2) + " sample(s) gives the claimed status");
+    checked.push_back("cells: the static test (negative roots of f by Descartes where exact, else Sturm) at each of the " + std::to_string(nodes.size() / 2) + " sample(s) gives the claimed status");
     int rational_count = 0, irrational = 0;
     for (std::size_t k = 0; k < nodes.size(); k += 2) {
       Node& n = nodes[k];

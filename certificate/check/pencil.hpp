@@ -4,8 +4,8 @@
 //
 // Statement (scene-format.md; design.md "use the adjugate"). The moving solid
 // is A(t) = M(t)^-T Q M(t)^-1. The adjugate adj M(t) = det M(t) · M(t)^-1 is
-// a polynomial matrix; the checker gets it by evaluating the cofactors of
-// M(k) at the integers k = 0 .. (H - 1)·deg M and interpolating, divides out
+// a polynomial matrix; the checker gets it by expanding the cofactors of
+// L·M(t) (L > 0 clears M's denominators) on integer polynomials, divides out
 // the gcd of its entries (Euclid over Q), and calls the result N(t). Any
 // polynomial matrix c(t) M(t)^-1 with entries of content 1 equals N up to a
 // non-zero constant (if c1 X and c2 X both have coprime entries, c1 / c2 is a
@@ -18,9 +18,10 @@
 // are scaled by β/α > 0, their signs and multiplicities unchanged. The f
 // claim checks exactly this, at deg + 1 points (two polynomials of degree at
 // most deg that agree there are equal).
-// Also here: det M(t) has no root in [0, 1] (Sturm), and the determinant of a
-// rational matrix (Gaussian elimination over Q).
-// Requirements: GMP. Cost: O(D · H^4) rational operations for D points.
+// Also here: det M(t) up to a positive constant (cofactors on integer
+// polynomials), and the determinant of a rational matrix (Gaussian
+// elimination over Q) and of an integer one (Bareiss).
+// Requirements: GMP. Cost: O(D · H^4) integer operations for D points.
 #include "certificate/check/qpoly.hpp"
 #include "certificate/check/scene.hpp"
 
@@ -85,34 +86,79 @@ inline int matrix_degree(const PolyMatrix& m) {
   return d;
 }
 
-// adj(M) / gcd of its entries, by evaluation at integers and interpolation.
+// Integer polynomials (lowest degree first, trimmed): product, sum, and the
+// determinant of a square matrix of them by cofactor expansion along the
+// first row (H <= 4: at most 24 products of entries, no division).
+using ZPoly = std::vector<mpz_class>;
+inline ZPoly trimmed(ZPoly p) {
+  while (!p.empty() && sgn(p.back()) == 0) p.pop_back();
+  return p;
+}
+inline ZPoly product(const ZPoly& a, const ZPoly& b) {
+  if (a.empty() || b.empty()) return {};
+  ZPoly r(a.size() + b.size() - 1);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) mpz_addmul(r[i + j].get_mpz_t(), a[i].get_mpz_t(), b[j].get_mpz_t());
+  return trimmed(std::move(r));
+}
+inline void add_to(ZPoly& acc, const ZPoly& p, int sign) {
+  if (acc.size() < p.size()) acc.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (sign > 0) acc[i] += p[i];
+    else acc[i] -= p[i];
+  }
+}
+inline ZPoly determinant(const std::vector<std::vector<ZPoly>>& m) {
+  const std::size_t n = m.size();
+  if (n == 0) return ZPoly{mpz_class(1)};
+  if (n == 1) return m[0][0];
+  ZPoly d;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (m[0][c].empty()) continue;
+    std::vector<std::vector<ZPoly>> minor;
+    for (std::size_t r = 1; r < n; ++r) {
+      minor.emplace_back();
+      for (std::size_t k = 0; k < n; ++k)
+        if (k != c) minor.back().push_back(m[r][k]);
+    }
+    add_to(d, product(m[0][c], determinant(minor)), c % 2 ? -1 : 1);
+  }
+  return trimmed(std::move(d));
+}
+inline QPoly to_qpoly(const ZPoly& z) {
+  std::vector<mpq_class> c;
+  for (const auto& x : z) c.emplace_back(x);
+  return QPoly(std::move(c));
+}
+using ZPolyMatrix = std::vector<std::vector<ZPoly>>;
+inline ZPolyMatrix integer_matrix(const PolyMatrix& m);
+
+// adj(L·M) / gcd of its entries (L > 0 the lcm of M's denominators): the
+// cofactors on integer polynomials, then the monic gcd over Q (Euclid),
+// stopped as soon as it is a constant.
 inline PolyMatrix primitive_inverse(const PolyMatrix& M) {
   const std::size_t H = M.size();
-  const int D = int(H - 1) * matrix_degree(M);
-  std::vector<std::vector<std::vector<mpq_class>>> vals(H, std::vector<std::vector<mpq_class>>(H));
-  for (int k = 0; k <= D; ++k) {
-    const QMatrix m = at_point(M, mpq_class(k));
-    for (std::size_t i = 0; i < H; ++i)
-      for (std::size_t j = 0; j < H; ++j) {
-        // adj[i][j] = (-1)^(i+j) det(minor without row j and column i)
-        QMatrix minor;
-        for (std::size_t r = 0; r < H; ++r) {
-          if (r == j) continue;
-          std::vector<mpq_class> row;
-          for (std::size_t c = 0; c < H; ++c)
-            if (c != i) row.push_back(m[r][c]);
-          minor.push_back(row);
-        }
-        mpq_class v = H == 1 ? mpq_class(1) : determinant(minor);
-        vals[i][j].push_back((i + j) % 2 ? mpq_class(-v) : v);
-      }
-  }
+  const ZPolyMatrix Z = integer_matrix(M);
   PolyMatrix N(H, std::vector<QPoly>(H));
   QPoly g;
+  bool unit = false;  // the gcd is already a constant
   for (std::size_t i = 0; i < H; ++i)
     for (std::size_t j = 0; j < H; ++j) {
-      N[i][j] = interpolate_at_integers(vals[i][j]);
-      if (!N[i][j].zero()) g = g.zero() ? mpq_class(1 / N[i][j].lead()) * N[i][j] : gcd(g, N[i][j]);
+      // adj[i][j] = (-1)^(i+j) det(minor without row j and column i)
+      std::vector<std::vector<ZPoly>> minor;
+      for (std::size_t r = 0; r < H; ++r) {
+        if (r == j) continue;
+        minor.emplace_back();
+        for (std::size_t c = 0; c < H; ++c)
+          if (c != i) minor.back().push_back(Z[r][c]);
+      }
+      ZPoly v = determinant(minor);
+      if ((i + j) % 2)
+        for (auto& x : v) x = -x;
+      N[i][j] = to_qpoly(v);
+      if (N[i][j].zero() || unit) continue;
+      g = g.zero() ? mpq_class(1 / N[i][j].lead()) * N[i][j] : gcd(g, N[i][j]);
+      unit = g.degree() == 0;
     }
   if (g.degree() > 0)
     for (auto& row : N)
@@ -124,13 +170,8 @@ inline PolyMatrix primitive_inverse(const PolyMatrix& M) {
   return N;
 }
 
-// det M(t) as a polynomial (evaluation and interpolation).
-inline QPoly motion_determinant(const PolyMatrix& M) {
-  const int D = int(M.size()) * matrix_degree(M);
-  std::vector<mpq_class> v;
-  for (int k = 0; k <= D; ++k) v.push_back(determinant(at_point(M, mpq_class(k))));
-  return interpolate_at_integers(v);
-}
+// det M(t) times a positive constant (L^H, L the lcm of M's denominators), by cofactors on integer polynomials.
+inline QPoly motion_determinant(const PolyMatrix& M) { return to_qpoly(determinant(integer_matrix(M))); }
 
 // N^T Q N at t.
 inline QMatrix moving_quadric(const QMatrix& Q, const PolyMatrix& N, const mpq_class& t) {
@@ -152,7 +193,6 @@ inline QMatrix moving_quadric(const QMatrix& Q, const PolyMatrix& N, const mpq_c
 // det(λA - B) (values at λ = 0 .. H by Bareiss, Newton's forward differences
 // d_j, H! binom(λ, j) = (H!/j!) λ(λ-1)...(λ-j+1) expanded on integers).
 using ZMatrix = std::vector<std::vector<mpz_class>>;
-using ZPolyMatrix = std::vector<std::vector<std::vector<mpz_class>>>;
 
 inline ZPolyMatrix integer_matrix(const PolyMatrix& m) {
   mpz_class l = 1;
@@ -195,8 +235,35 @@ inline ZMatrix moving_quadric(const ZMatrix& Q, const ZMatrix& n) {
     }
   return r;
 }
+// For H = 3 by the identity det(λA - B) = λ³ det A - λ² Σ C(A)_ij B_ij +
+// λ Σ A_ij C(B)_ij - det B (C the cofactor matrix, C_ij = X_{i+1,j+1} X_{i+2,j+2}
+// - X_{i+1,j+2} X_{i+2,j+1}, indices mod 3), times 3! as the route above.
+inline ZMatrix cofactors3(const ZMatrix& X) {
+  ZMatrix C(3, std::vector<mpz_class>(3));
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      const std::size_t i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      C[i][j] = X[i1][j1] * X[i2][j2] - X[i1][j2] * X[i2][j1];
+    }
+  return C;
+}
 inline std::vector<mpz_class> pencil_coefficients(const ZMatrix& A, const ZMatrix& B) {
   const std::size_t H = A.size();
+  if (H == 3) {
+    const ZMatrix CA = cofactors3(A), CB = cofactors3(B);
+    std::vector<mpz_class> out(4);
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        mpz_submul(out[2].get_mpz_t(), CA[i][j].get_mpz_t(), B[i][j].get_mpz_t());
+        mpz_addmul(out[1].get_mpz_t(), A[i][j].get_mpz_t(), CB[i][j].get_mpz_t());
+      }
+    for (std::size_t j = 0; j < 3; ++j) {
+      mpz_addmul(out[3].get_mpz_t(), A[0][j].get_mpz_t(), CA[0][j].get_mpz_t());
+      mpz_submul(out[0].get_mpz_t(), B[0][j].get_mpz_t(), CB[0][j].get_mpz_t());
+    }
+    for (auto& x : out) x *= 6;
+    return out;
+  }
   std::vector<mpz_class> d;
   for (std::size_t l = 0; l <= H; ++l) {
     ZMatrix m(H, std::vector<mpz_class>(H));

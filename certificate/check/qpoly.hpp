@@ -145,8 +145,17 @@ inline mpz_class denominator_lcm(const QPoly& p, mpz_class l = 1) {
   return l;
 }
 // The value of an integer polynomial at an integer (Horner).
+// A t that fits a long (the usual case: small evaluation points) is applied in place.
 inline mpz_class value_at(const std::vector<mpz_class>& z, const mpz_class& t) {
   mpz_class v = 0;
+  if (t.fits_slong_p()) {
+    const long s = t.get_si();
+    for (std::size_t i = z.size(); i-- > 0;) {
+      mpz_mul_si(v.get_mpz_t(), v.get_mpz_t(), s);
+      mpz_add(v.get_mpz_t(), v.get_mpz_t(), z[i].get_mpz_t());
+    }
+    return v;
+  }
   for (std::size_t i = z.size(); i-- > 0;) v = v * t + z[i];
   return v;
 }

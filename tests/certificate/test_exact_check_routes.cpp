@@ -79,6 +79,36 @@ TEST_CASE("eccd-check: the pencil's coefficients on integers are H! times the ra
   }
 }
 
+TEST_CASE("eccd-check: N = adj(M) / the gcd of its entries, on integer polynomials", "[eccd-check][exact-routes]") {
+  // The rotation by the half-angle tangent with a translation: det M = (1 + t²)³ and adj(M)'s entries have no
+  // common factor (the translation's cofactors are not multiples of 1 + t²), so N = adj(M), N M = det M · I.
+  auto poly = [](std::vector<long> c) {
+    std::vector<mpq_class> q;
+    for (long x : c) q.emplace_back(x);
+    return check::QPoly(std::move(q));
+  };
+  const check::PolyMatrix M{{poly({1, 0, -1}), poly({0, -2}), poly({3, 1})},
+                            {poly({0, 2}), poly({1, 0, -1}), poly({-1, 0, 2})},
+                            {poly({}), poly({}), poly({1, 0, 1})}};
+  const check::PolyMatrix N = check::primitive_inverse(M);
+  const check::QPoly det = check::motion_determinant(M);
+  CHECK(det == poly({1, 0, 3, 0, 3, 0, 1}));  // (1 + t²)³
+  check::QPoly c;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      check::QPoly e;
+      for (std::size_t k = 0; k < 3; ++k) e = e + N[i][k] * M[k][j];
+      if (i != j) CHECK(e.zero());
+      if (i == 0 && j == 0) c = e;
+      if (i == j) CHECK(e == c);
+    }
+  CHECK(c == det);
+  CHECK(check::matrix_degree(N) == 4);
+  // The identity times 1 + t²: adj = (1 + t²)² I, the common factor (1 + t²)² divided out, N a constant matrix.
+  const check::PolyMatrix S{{poly({1, 0, 1}), poly({}), poly({})}, {poly({}), poly({1, 0, 1}), poly({})}, {poly({}), poly({}), poly({1, 0, 1})}};
+  CHECK(check::matrix_degree(check::primitive_inverse(S)) == 0);
+}
+
 TEST_CASE("eccd-check: a sign on a bracket by the mean value theorem, or no answer", "[eccd-check][exact-routes]") {
   const std::vector<mpz_class> p{mpz_class(-1), mpz_class(3)};  // 3t - 1, root 1/3
   CHECK(check::sign_on_bracket(p, mpq_class(1, 2), mpq_class(6, 10)) == 1);   // |p(1/2)| = 1/2 > (1/10) · 3
