@@ -660,7 +660,7 @@ def read(path, default=""):
         return default
 
 
-def machine_info(root):
+def machine_info(root, build_dir):
     info = {}
     cpuinfo = read("/proc/cpuinfo")
     m = re.search(r"^model name\s*:\s*(.+)$", cpuinfo, re.M)
@@ -681,7 +681,7 @@ def machine_info(root):
     rev = run(["git", "-C", root, "rev-parse", "--short=12", "HEAD"]).stdout.strip()
     dirty = run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"]).stdout.strip()
     info["git"] = (rev or "unknown") + (" with uncommitted changes in the working tree" if dirty else "")
-    cache = read(os.path.join(root, "build-bench", "CMakeCache.txt"))
+    cache = read(os.path.join(build_dir, "CMakeCache.txt"))
     m = re.search(r"^CMAKE_CXX_FLAGS_RELEASE:STRING=(.*)$", cache, re.M)
     info["release_flags"] = m.group(1) if m else ""
     for pkg in ("libcgal-dev", "libbenchmark-dev", "libmps-dev", "libgmp-dev", "libmpfr-dev", "libmpfi-dev", "libflint-dev"):
@@ -810,7 +810,7 @@ def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     os.makedirs(args.work, exist_ok=True)
     started = args.started or time.time()
-    info = machine_info(root)
+    info = machine_info(root, os.path.dirname(os.path.dirname(os.path.abspath(args.bench))))
     info["load_before"] = loadavg()
     raw = os.path.join(args.work, "benchmark.json")
     summary_path = os.path.join(args.work, "summary.json")
@@ -1007,7 +1007,7 @@ def write_report(out, summ, info, verdicts, rows, bench_seconds, total_seconds, 
     w(f"| memory | {info['memory']} |")
     w(f"| OS | {info['os']} |")
     w(f"| compiler | {summ.get('compiler', '?')} |")
-    w(f"| build | CMake build type {summ.get('build_type', '?')} (flags `{info.get('release_flags', '')}`), directory build-bench |")
+    w(f"| build | CMake build type {summ.get('build_type', '?')} (flags `{info.get('release_flags', '')}`), directory {os.path.relpath(os.path.dirname(os.path.dirname(os.path.abspath(args.bench))))} |")
     w(f"| libraries | GMP {summ.get('gmp', '?')}, MPFR {summ.get('mpfr', '?')}, CGAL (libcgal-dev) {info['pkg libcgal-dev']}, "
       f"MPFI (libmpfi-dev) {info['pkg libmpfi-dev']}, FLINT (libflint-dev) {info['pkg libflint-dev']}, {summ.get('mpsolve', 'MPSolve ?')} (libmps-dev {info['pkg libmps-dev']}), "
       f"Google Benchmark (libbenchmark-dev) {info['pkg libbenchmark-dev']} |")
