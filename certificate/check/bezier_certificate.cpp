@@ -205,30 +205,40 @@ struct BezierChecker {
     const PolyMatrix Na = stated_inverse(at(net, "inverse_a", "net"), "net.inverse_a", sc.a.M);
     const PolyMatrix Nb = stated_inverse(at(net, "inverse_b", "net"), "net.inverse_b", sc.b.M);
     // both sides are polynomials of degree <= 4 in u and <= D in t: equal at 5 x (D + 1) points, they are equal.
-    // The points are the integers u = 0..4, t = 0..D (the identity holds off [0, 1] too); the net's rows in
-    // integers over one denominator each (IntegerRows).
+    // The points are the integers u = 0..4, t = 0..D (the identity holds off [0, 1] too), all in integers:
+    // the net's rows over one denominator each (IntegerRows); A(t) = N_a^T Q_a N_a as the integer matrix
+    // A_Z(t) = s_a A(t) (Q_a, N_a times the lcm of their denominators, s_a = l(Q_a) l(N_a)^2), B likewise, so
+    // det((u - 1) A - u B) = det((u - 1) s_b A_Z - u s_a B_Z) / (s_a s_b)^4 (Bareiss, every division exact).
     const int D = std::max<int>(F.n, 8 * std::max(matrix_degree(Na), matrix_degree(Nb)));
     const IntegerRows rows(F);
+    const ZMatrix QaZ = integer_matrix(Qa), QbZ = integer_matrix(Qb);
+    const ZPolyMatrix NaZ = integer_matrix(Na), NbZ = integer_matrix(Nb);
+    const mpz_class la = denominators_lcm(Na), lb = denominators_lcm(Nb);
+    const mpz_class sa = denominators_lcm(Qa) * la * la, sb = denominators_lcm(Qb) * lb * lb;
+    mpz_class s4 = sa * sb;
+    s4 *= s4;
+    s4 *= s4;
     for (int k = 0; k <= D; ++k) {
-      const mpq_class t(k);
-      QMatrix A = moving_quadric(Qa, Na, t), B = moving_quadric(Qb, Nb, t);
+      const mpz_class t(k);
+      const ZMatrix A = moving_quadric(QaZ, at_point(NaZ, t)), B = moving_quadric(QbZ, at_point(NbZ, t));
       const std::vector<mpq_class> r = rows.at(k);
       for (int i = 0; i <= 4; ++i) {
-        const mpq_class u(i);
-        QMatrix P(4, std::vector<mpq_class>(4));
+        const mpz_class u(i);
+        ZMatrix P(4, std::vector<mpz_class>(4));
         for (int a = 0; a < 4; ++a)
-          for (int c = 0; c < 4; ++c) P[a][c] = (u - 1) * A[a][c] - u * B[a][c];
+          for (int c = 0; c < 4; ++c) P[a][c] = (u - 1) * sb * A[a][c] - u * sa * B[a][c];
         // Σ_l r_l C(4, l) u^l (1 - u)^(4 - l)
         mpq_class v = 0;
         static const int binom[5] = {1, 4, 6, 4, 1};
         for (int l = 0; l <= 4; ++l) {
           mpq_class term = r[l] * binom[l];
-          for (int e = 0; e < l; ++e) term *= u;
-          for (int e = 0; e < 4 - l; ++e) term *= (1 - u);
+          for (int e = 0; e < l; ++e) term *= i;
+          for (int e = 0; e < 4 - l; ++e) term *= (1 - i);
           v += term;
         }
-        if (v != determinant(P))
-          reject("net", "the net differs from det((u - 1) A(t) - u B(t)) at u = " + q(u) + ", t = " + q(t) + ": it is not F for this scene");
+        if (v * s4 != mpq_class(determinant(P)))
+          reject("net", "the net differs from det((u - 1) A(t) - u B(t)) at u = " + std::to_string(i) + ", t = " + std::to_string(k) +
+                            ": it is not F for this scene");
       }
     }
     checked.push_back("net: Q_a, Q_b positive multiples of the scene's shapes; N_a M_a, N_b M_b = c(t) I with c free of roots in [0, 1] "

@@ -194,10 +194,21 @@ inline QMatrix moving_quadric(const QMatrix& Q, const PolyMatrix& N, const mpq_c
 // d_j, H! binom(λ, j) = (H!/j!) λ(λ-1)...(λ-j+1) expanded on integers).
 using ZMatrix = std::vector<std::vector<mpz_class>>;
 
-inline ZPolyMatrix integer_matrix(const PolyMatrix& m) {
+// The lcm of a matrix's denominators: integer_matrix(m) is m times it.
+inline mpz_class denominators_lcm(const PolyMatrix& m) {
   mpz_class l = 1;
   for (const auto& row : m)
     for (const auto& e : row) l = denominator_lcm(e, l);
+  return l;
+}
+inline mpz_class denominators_lcm(const QMatrix& m) {
+  mpz_class l = 1;
+  for (const auto& row : m)
+    for (const auto& e : row) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), e.get_den_mpz_t());
+  return l;
+}
+inline ZPolyMatrix integer_matrix(const PolyMatrix& m) {
+  const mpz_class l = denominators_lcm(m);
   ZPolyMatrix r;
   for (const auto& row : m) {
     r.emplace_back();
@@ -206,9 +217,7 @@ inline ZPolyMatrix integer_matrix(const PolyMatrix& m) {
   return r;
 }
 inline ZMatrix integer_matrix(const QMatrix& m) {
-  mpz_class l = 1;
-  for (const auto& row : m)
-    for (const auto& e : row) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), e.get_den_mpz_t());
+  const mpz_class l = denominators_lcm(m);
   ZMatrix r;
   for (const auto& row : m) {
     r.emplace_back();
