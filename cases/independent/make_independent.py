@@ -219,7 +219,7 @@ def turning_scenes():
            "Independent motions, a body turning in place (cases/independent/make_independent.py): A, a ball (r = 1), "
            "turns about the x-axis through its fixed centre (1/2, 0, 0) by the quaternion (1, s, 0, 0) (0 to 90 degrees); "
            "B, a ball (r = 1/2), moves from (-3, 1, 0) to (3, 1, 0). A does not move as a set, so s-intervals [0, 1]; "
-           "(6t - 7/2)^2 + 1 <= 9/4: t-intervals [(7 - sqrt(5))/12, (7 + sqrt(5))/12] = [0.39699, 0.77001] "
+           "(6t - 7/2)^2 + 1 <= 9/4: t-intervals [(7 - sqrt(5))/12, (7 + sqrt(5))/12] = [0.39699, 0.76967] "
            "(36 t^2 - 42 t + 11 = 0). Proved on the lower-dimensional problem (A held at s = 0, system free).", dim=3)
     write2("disc-turning", {"shape": {"semi_axes": ["1", "1"]}, "motion": turning2()},
            {"shape": {"semi_axes": ["1/2", "1/2"]}, "motion": translation2((-3, 1), (6, 0))},
