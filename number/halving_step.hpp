@@ -5,9 +5,9 @@
 // written out (copy a, times 1 - 1/2, plus a copy of b times 1/2).
 //
 // Statement. Subdividing a Bernstein net at 1/2 (kernel/bernstein.hpp,
-// kernel/trivariate_bernstein.hpp split_half; Farin, "Curves and Surfaces for
-// CAGD", section on de Casteljau's algorithm, docs/references.md) repeats this
-// step. For T = Bounded<Mpfr> (number/running_error.hpp) the operations as
+// kernel/trivariate_bernstein.hpp split_half; the subdivision of the Bezier
+// method, paper 001 section 4, docs/references.md) repeats this step. For
+// T = Bounded<Mpfr> (number/running_error.hpp) the operations as
 // written cost two copies and two full multiplications per step, although
 // both products are exact: with a and b of precision p and 1/2 held exactly,
 // a/2 and b/2 are exact, and RN_p(a/2 + b/2) = RN_p(a + b)/2 (a power of two
@@ -19,9 +19,9 @@
 // magnitudes and exponents those products would have had (mag of the factor,
 // half a unit of the product's last place from its exponent), in the same
 // order, so the bound is also bit for bit the written-out one (its reads are
-// Bounded's, inlined: a power of two built from its bits, not looked up). A sign decided
-// on a net subdivided this way is therefore decided on the same value and
-// bound as before; only the work changes. Where the shortcut's conditions do
+// Bounded's, inlined: a power of two built from its bits, not looked up). A
+// sign decided on a net subdivided this way is therefore decided on the same
+// value and bound as before; only the work changes. Where the shortcut's conditions do
 // not hold (a coefficient or the constants of another precision, a 1/2 that
 // is not exactly 1/2), the step falls back to the written-out operations.
 // Requirements on T: the ring operations and scalar_traits<T>::from_rational;
