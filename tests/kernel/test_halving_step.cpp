@@ -59,7 +59,7 @@ BM random_value(std::mt19937_64& rng, int bits, mpq_class* exact = nullptr) {
   b.canonicalize();
   BM x = scalar_traits<BM>::from_rational(a, like);
   if (kind == 0) {
-    if (exact) *exact = a;
+    if (exact) *exact = 0;
     return scalar_traits<BM>::from_rational(mpq_class(0), like);
   }
   if (kind == 1) {
@@ -67,7 +67,7 @@ BM random_value(std::mt19937_64& rng, int bits, mpq_class* exact = nullptr) {
     return x;
   }
   BM y = scalar_traits<BM>::from_rational(b, like);
-  if (exact) *exact = kind == 2 ? a * b : a - b;
+  if (exact) *exact = kind == 2 ? mpq_class(a * b) : mpq_class(a - b);
   return kind == 2 ? x * y : x - y;
 }
 
