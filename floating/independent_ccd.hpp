@@ -104,7 +104,7 @@ template <class T>
 class Projector {
  public:
   Projector(const IndependentOptions& o, const T& like)
-      : opt_(o), half_(scalar_traits<T>::from_rational(mpq_class(1, 2), like)) {}
+      : opt_(o), half_(scalar_traits<T>::from_rational(mpq_class(1, 2), like)), step_(half_) {}
 
   long tests = 0, strips = 0, points = 0;
   std::string stop_reason;
@@ -157,6 +157,36 @@ class Projector {
  private:
   IndependentOptions opt_;
   T half_;
+  HalvingStep<T> step_;  // de Casteljau's step at 1/2 (number/halving_step.hpp)
+  // Nets no longer in use, kept with their numbers' storage: a split or a copy into one of them allocates
+  // nothing (an MPFR number's allocation cost as much as its arithmetic here).
+  std::vector<TriBern<T>> spare_;
+
+  TriBern<T> spare() {
+    if (spare_.empty()) return TriBern<T>{};
+    TriBern<T> f = std::move(spare_.back());
+    spare_.pop_back();
+    return f;
+  }
+  TriBern<T> copy_of(const TriBern<T>& x) {
+    TriBern<T> f = spare();
+    if (f.c.size() != x.c.size()) return x;
+    f.n = x.n;
+    std::copy(x.c.begin(), x.c.end(), f.c.begin());
+    return f;
+  }
+  // The two halves of f along axis, on the stack as (right, left): the left half is worked on first.
+  void push_halves(std::vector<std::tuple<TriBern<T>, int, unsigned long long>>& stack, TriBern<T>&& f, int axis,
+                   int d, unsigned long long i) {
+    TriBern<T> lo = spare();
+    f.split_half_into(axis, step_, lo);
+    stack.emplace_back(std::move(f), d + 1, 2 * i + 1);
+    stack.emplace_back(std::move(lo), d + 1, 2 * i);
+  }
+  void recycle(std::vector<std::tuple<TriBern<T>, int, unsigned long long>>& stack) {
+    for (auto& e : stack) spare_.push_back(std::move(std::get<0>(e)));
+    stack.clear();
+  }
 
   // The status of the single value s = x (F restricted to it): finer t- and u-pieces until decided
   // (a value at distance d from an end needs pieces of ~sqrt(d), or ~d where the extreme is on t = 0 or 1).
@@ -187,7 +217,7 @@ class Projector {
   // proof is dropped (it needs a finer s or t, which the caller provides).
   int classify_u(const TriBern<T>& box, int u_limit) {
     std::vector<std::tuple<TriBern<T>, int, unsigned long long>> stack;
-    stack.emplace_back(box, 0, 0ULL);
+    stack.emplace_back(copy_of(box), 0, 0ULL);
     bool unknown = false, can_overlap = true;
     if (record) neg_u_.clear();
     while (!stack.empty()) {
@@ -197,10 +227,13 @@ class Projector {
       const int sg = f.strict_sign();
       if (sg == 1) {
         if (record) pos_u_ = Dyadic{d, ui};
+        spare_.push_back(std::move(f));
+        recycle(stack);
         return 1;
       }
       if (sg == -1) {
         if (record) neg_u_.push_back(Dyadic{d, ui});
+        spare_.push_back(std::move(f));
         continue;
       }
       bool pos = false, neg = false;  // some corner's edge all positive / all negative
@@ -218,22 +251,24 @@ class Projector {
       if (pos) can_overlap = false;
       if ((neg && !can_overlap) || d >= u_limit) {  // helps neither proof, or as deep as allowed
         unknown = true;
+        spare_.push_back(std::move(f));
         continue;
       }
-      auto halves = std::move(f).split_half(0, half_);
-      stack.emplace_back(std::move(halves.second), d + 1, 2 * ui + 1);
-      stack.emplace_back(std::move(halves.first), d + 1, 2 * ui);
+      push_halves(stack, std::move(f), 0, d, ui);
     }
     return unknown ? 0 : -1;
   }
 
   Strip classify_strip(const TriBern<T>& strip, int limit) {
     std::vector<std::tuple<TriBern<T>, int, unsigned long long>> stack;
-    stack.emplace_back(strip, 0, 0ULL);
+    stack.emplace_back(copy_of(strip), 0, 0ULL);
     bool unknown = false;
     if (record) witness_.clear();
     while (!stack.empty()) {
-      if (stopped()) return Strip::unknown;
+      if (stopped()) {
+        recycle(stack);
+        return Strip::unknown;
+      }
       auto [f, d, ti] = std::move(stack.back());
       stack.pop_back();
       const int r = classify_u(f, limit);
@@ -242,16 +277,21 @@ class Projector {
           witness_.clear();
           for (const Dyadic& u : neg_u_) witness_.push_back(WitnessBox{Dyadic{d, ti}, u});
         }
+        spare_.push_back(std::move(f));
+        recycle(stack);
         return Strip::in;
       }
       if (r == 1) {
         if (record) witness_.push_back(WitnessBox{Dyadic{d, ti}, pos_u_});
+        spare_.push_back(std::move(f));
         continue;
       }
-      if (d >= limit) { unknown = true; continue; }
-      auto halves = std::move(f).split_half(2, half_);
-      stack.emplace_back(std::move(halves.second), d + 1, 2 * ti + 1);
-      stack.emplace_back(std::move(halves.first), d + 1, 2 * ti);
+      if (d >= limit) {
+        unknown = true;
+        spare_.push_back(std::move(f));
+        continue;
+      }
+      push_halves(stack, std::move(f), 2, d, ti);
     }
     return unknown ? Strip::unknown : Strip::out;
   }

@@ -42,6 +42,7 @@
 #include "kernel/prepared_scene.hpp"
 #include "kernel/quadric.hpp"
 #include "kernel/ring_determinant.hpp"
+#include "number/halving_step.hpp"
 
 #include <algorithm>
 #include <array>
@@ -74,35 +75,42 @@ struct TriBern {
   // in place on the lines of the right half: round r of keep_right
   // (kernel/bernstein.hpp) leaves the left half's coefficient r in the line's
   // first place (the same operations as keep_left's, in the same order), so
-  // no line is copied (a copy of an MPFR number allocates).
+  // no line is copied (a copy of an MPFR number allocates). Each step is
+  // number/halving_step.hpp's (for guarded MPFR an addition and an exponent
+  // shift, with the written-out steps' value and bound).
   std::pair<TriBern, TriBern> split_half(int axis, const T& half) const& {
     TriBern copy = *this;
     return std::move(copy).split_half(axis, half);
   }
   // The same, consuming this net: it becomes the right half (one copy fewer).
   std::pair<TriBern, TriBern> split_half(int axis, const T& half) && {
-    TriBern lo = *this, hi = std::move(*this);
-    const std::size_t st = hi.stride(axis), len = std::size_t(hi.n[axis]) + 1;
-    if (len == 1) return {std::move(lo), std::move(hi)};
-    const T other = T(1) - half;
-    T x = half, y = half;
-    for (std::size_t base = 0; base < hi.c.size(); ++base) {
-      // base is the first point of a line along axis iff its coordinate on the axis is 0
-      if ((base / st) % len != 0) continue;
-      T* h = hi.c.data() + base;
-      for (std::size_t r = 1; r < len; ++r) {
-        for (std::size_t i = 0; i + r < len; ++i) {  // compound operations: no temporaries (an MPFR copy allocates)
-          x = h[i * st];
-          x *= other;
-          y = h[(i + 1) * st];
-          y *= half;
-          x += y;
-          h[i * st] = std::move(x);  // the number types' moves swap: x keeps a live value for the next copy
-        }
-        lo.c[base + r * st] = h[0];
-      }
+    HalvingStep<T> step(half);
+    TriBern lo;
+    split_half_into(axis, step, lo);
+    return {std::move(lo), std::move(*this)};
+  }
+  // The same in place: this net becomes the right half and `lo` the left. A
+  // `lo` of this net's size keeps its numbers' storage (a caller that reuses
+  // nets allocates nothing); any other `lo` is replaced by a copy first.
+  void split_half_into(int axis, HalvingStep<T>& step, TriBern& lo) {
+    const std::size_t st = stride(axis), len = std::size_t(n[axis]) + 1;
+    if (lo.c.size() != c.size() || len == 1) {
+      lo.c = c;
+    } else {
+      for (std::size_t block = 0; block < c.size(); block += st * len)
+        for (std::size_t base = block; base < block + st; ++base) lo.c[base] = c[base];
     }
-    return {std::move(lo), std::move(hi)};
+    lo.n = n;
+    if (len == 1) return;
+    // the lines along axis start at the points whose coordinate on the axis is 0: st of them in each block of st * len
+    for (std::size_t block = 0; block < c.size(); block += st * len)
+      for (std::size_t base = block; base < block + st; ++base) {
+        T* h = c.data() + base;
+        for (std::size_t r = 1; r < len; ++r) {
+          for (std::size_t i = 0; i + r < len; ++i) step(h[i * st], h[(i + 1) * st]);
+          lo.c[base + r * st] = h[0];
+        }
+      }
   }
 
   // F with s fixed at x (degree 0 in s): a box of zero width in s.

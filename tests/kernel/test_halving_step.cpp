@@ -1,0 +1,141 @@
+// De Casteljau's step at 1/2 for guarded MPFR (number/halving_step.hpp): one
+// addition and an exponent shift must give bit for bit the value and the
+// running error bound of the four operations written out (copy, times 1 - 1/2,
+// copy, times 1/2, plus), on random values with and without error bounds, on
+// zeros, at several precisions, and where the shortcut does not apply (mixed
+// precisions). TriBern's split_half and split_half_into (reused storage) must
+// give the nets the written-out steps give, and both halves must hold the
+// exact rational halves within their bounds.
+#include "kernel/trivariate_bernstein.hpp"
+#include "number/halving_step.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <gmpxx.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace eccd;
+
+namespace {
+
+using BM = Bounded<Mpfr>;
+
+mpq_class exact_of(const Mpfr& x) {
+  mpz_class m;
+  const long e = long(mpfr_get_z_2exp(m.get_mpz_t(), x.get()));
+  mpq_class q(m);
+  if (e >= 0) q *= mpq_class(mpz_class(1) << e);
+  else q /= mpq_class(mpz_class(1) << -e);
+  return q;
+}
+
+mpq_class exact_of(long double e) {  // a long double bound as a rational, exactly (64-bit significand)
+  int ex = 0;
+  const long double f = std::frexp(e, &ex);  // e = f 2^ex, 1/2 <= f < 1
+  const mpz_class m(static_cast<unsigned long>(std::ldexp(f, 64)));
+  ex -= 64;
+  mpq_class q(m);
+  if (ex >= 0) q *= mpq_class(mpz_class(1) << ex);
+  else q /= mpq_class(mpz_class(1) << -ex);
+  return q;
+}
+
+bool same(const BM& a, const BM& b) {
+  return a.value().precision() == b.value().precision() && mpfr_get_prec(a.value().get()) == mpfr_get_prec(b.value().get()) &&
+         mpfr_equal_p(a.value().get(), b.value().get()) && mpfr_signbit(a.value().get()) == mpfr_signbit(b.value().get()) &&
+         a.bound() == b.bound();
+}
+
+// A random value of `bits` precision: exact (bound 0), or a rounded product or sum (bound > 0), or zero.
+BM random_value(std::mt19937_64& rng, int bits, mpq_class* exact = nullptr) {
+  std::uniform_int_distribution<long> num(-1000000007L, 1000000007L), den(1, 999983L);
+  const BM like(Mpfr(mpq_class(1), bits), 0);
+  const int kind = int(rng() % 4);
+  mpq_class a(num(rng), den(rng)), b(num(rng), den(rng));
+  a.canonicalize();
+  b.canonicalize();
+  BM x = scalar_traits<BM>::from_rational(a, like);
+  if (kind == 0) {
+    if (exact) *exact = 0;
+    return scalar_traits<BM>::from_rational(mpq_class(0), like);
+  }
+  if (kind == 1) {
+    if (exact) *exact = a;
+    return x;
+  }
+  BM y = scalar_traits<BM>::from_rational(b, like);
+  if (exact) *exact = kind == 2 ? mpq_class(a * b) : mpq_class(a - b);
+  return kind == 2 ? x * y : x - y;
+}
+
+}  // namespace
+
+TEST_CASE("guarded MPFR halving step: the written-out steps' value and bound, bit for bit", "[independent][halving]") {
+  std::mt19937_64 rng(20261201);
+  for (int bits : {53, 64, 128, 300}) {
+    const BM half = scalar_traits<BM>::from_rational(mpq_class(1, 2), BM(Mpfr(mpq_class(1), bits), 0));
+    HalvingStep<BM> fast(half);
+    WrittenHalvingStep<BM> written(half);
+    for (int k = 0; k < 2000; ++k) {
+      BM a = random_value(rng, bits), b = random_value(rng, bits);
+      BM a2 = a;
+      fast(a, b);
+      written(a2, b);
+      REQUIRE(same(a, a2));
+    }
+    // another precision in one operand: the written-out operations (the result takes the larger precision)
+    BM a = random_value(rng, bits), b = random_value(rng, bits + 64);
+    BM a2 = a;
+    fast(a, b);
+    written(a2, b);
+    CHECK(same(a, a2));
+    CHECK(a.value().precision() == bits + 64);
+  }
+}
+
+TEST_CASE("guarded MPFR TriBern halves: as the written-out steps, reused storage alike, and within their bounds of the exact halves", "[independent][halving]") {
+  std::mt19937_64 rng(7);
+  const int bits = 128;
+  const BM half = scalar_traits<BM>::from_rational(mpq_class(1, 2), BM(Mpfr(mpq_class(1), bits), 0));
+  TriBern<BM> f;
+  TriBern<Rational> q;
+  f.n = q.n = {4, 2, 3};
+  for (int i = 0; i < 5 * 3 * 4; ++i) {
+    mpq_class e;
+    f.c.push_back(random_value(rng, bits, &e));
+    q.c.push_back(Rational(e));
+  }
+  TriBern<BM> reused_lo = f;  // storage of the right size from an earlier net
+  for (int axis = 0; axis < 3; ++axis) {
+    auto [lo, hi] = f.split_half(axis, half);
+    // written out: the same loops with WrittenHalvingStep
+    TriBern<BM> wlo = f, whi = f;
+    WrittenHalvingStep<BM> w(half);
+    const std::size_t st = f.stride(axis), len = std::size_t(f.n[axis]) + 1;
+    for (std::size_t base = 0; base < f.c.size(); ++base) {
+      if ((base / st) % len != 0) continue;
+      for (std::size_t r = 1; r < len; ++r) {
+        for (std::size_t i = 0; i + r < len; ++i) w(whi.c[base + i * st], whi.c[base + (i + 1) * st]);
+        wlo.c[base + r * st] = whi.c[base];
+      }
+    }
+    TriBern<BM> g = f;
+    HalvingStep<BM> step(half);
+    g.split_half_into(axis, step, reused_lo);
+    auto [qlo, qhi] = q.split_half(axis, Rational(mpq_class(1, 2)));
+    for (std::size_t i = 0; i < f.c.size(); ++i) {
+      REQUIRE(same(lo.c[i], wlo.c[i]));
+      REQUIRE(same(hi.c[i], whi.c[i]));
+      REQUIRE(same(reused_lo.c[i], wlo.c[i]));
+      REQUIRE(same(g.c[i], whi.c[i]));
+      // the bound holds: |value - exact| <= bound, for the exact halves of the exact net
+      const mpq_class dlo = abs(exact_of(lo.c[i].value()) - qlo.c[i]);
+      const mpq_class dhi = abs(exact_of(hi.c[i].value()) - qhi.c[i]);
+      CHECK(dlo <= exact_of(lo.c[i].bound()));
+      CHECK(dhi <= exact_of(hi.c[i].bound()));
+    }
+  }
+}
