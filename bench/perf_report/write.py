@@ -266,7 +266,7 @@ def write_notes(w):
       "in the `solve_scene-*` groups (rows *certified*; the answer column says whether it decided in interval "
       "arithmetic or escalated to exact), and from the prepared pair (`run_certified`) in the rows *certified* of "
       "`ccd3d-paper002` and `ccd3d-deg1-translation`, which carry issue 21's targets; more rows and targets go into "
-      "`bench/eccd_bench.cpp` and `TARGETS` / `RATIO_TARGETS` (`bench/performance_report.py`).")
+      "`bench/eccd_bench.cpp` and `TARGETS` / `RATIO_TARGETS` (`bench/perf_report/targets.py`).")
     w("- FCL (Debian libfcl-dev; `scripts/bootstrap.sh` installs it) is found when build-bench is configured; without "
       "it the FCL rows are not measured and say why.")
     w("- MPSolve isolates all complex roots (inclusion discs), a larger task than CGAL's real roots; its count of "
