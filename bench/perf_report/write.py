@@ -59,7 +59,7 @@ def write_header(w, summ, info, bench_seconds, total_seconds, args):
       "(double and MPFR with Δ in Bernstein form, exact with `ExactPolicy`), 3D `characteristic_bernstein` + "
       "`ccd_bezier` / `ccd_sampling` / `ccd_marching`, or `to_arithmetic` + `ccd_projection`; no JSON. The "
       "`solve_scene-*` groups go through `eccd::solve_scene` (JSON included), from a table of (label, SolveOptions) "
-      "(`kSolveSceneRows` in `bench/eccd_bench.cpp`), which is where the certified interval mode is measured.")
+      "(`kSolveSceneRows` in `bench/group_solve_scene.cpp`), which is where the certified interval mode is measured.")
     w("")
 
 
@@ -241,7 +241,7 @@ def write_scenes(w, summ, rows):
             ans = ans or answer_text(res)
         w(f"| `{sid}` | {md_escape(src)} | {deg} | {md_escape(ans)} |")
     w("")
-    w("The 2D scenes are generated in the benchmark (`kinematic_scene` in `bench/eccd_bench.cpp`): two ellipses under "
+    w("The 2D scenes are generated in the benchmark (`kinematic_scene` in `bench/groups.hpp`): two ellipses under "
       "general rational Euclidean motions in the kinematic image (003 eq. (3)) with d0..d3 of degree K/2, so that "
       "every entry of M(t) has degree K and Δ(t) the full degree 24 K of 003 Table I (the generated corpus under "
       "`cases/generated/2d` parametrises the centre path instead and reaches Δ of degree 80 to 136 at degree 6). "
@@ -266,7 +266,7 @@ def write_notes(w):
       "in the `solve_scene-*` groups (rows *certified*; the answer column says whether it decided in interval "
       "arithmetic or escalated to exact), and from the prepared pair (`run_certified`) in the rows *certified* of "
       "`ccd3d-paper002` and `ccd3d-deg1-translation`, which carry issue 21's targets; more rows and targets go into "
-      "`bench/eccd_bench.cpp` and `TARGETS` / `RATIO_TARGETS` (`bench/perf_report/targets.py`).")
+      "`bench/group_*.cpp` and `TARGETS` / `RATIO_TARGETS` (`bench/perf_report/targets.py`).")
     w("- FCL (Debian libfcl-dev; `scripts/bootstrap.sh` installs it) is found when build-bench is configured; without "
       "it the FCL rows are not measured and say why.")
     w("- MPSolve isolates all complex roots (inclusion discs), a larger task than CGAL's real roots; its count of "
