@@ -1,0 +1,69 @@
+// The product path (issue 30): what a user waits for, eccd::solve(scene,
+// options) from the read scene to the typed answer (preparation, the
+// pipeline, contact points; no JSON), on the 2D degree-6 scene (Variant 3,
+// all external contacts) and paper 002's example. Each floating row names its
+// face (as published: the paper's algorithm in plain double; guarded: the
+// running error bound, the default of `eccd solve`) and its input mode
+// (rounded: the scene's numbers rounded to double, the default; prepared: the
+// exactly prepared pair rounded). Baseline: double as published, rounded
+// input, so that the guarded row's ratio is the guard's cost.
+#include "bench/groups.hpp"
+
+namespace eccd_bench::groups {
+
+struct ProductRow {
+  const char* label;
+  const char* arith;
+  Guard guard;
+  InputMode input;
+  int variant;
+};
+
+const ProductRow kProductRows[] = {
+    {"double as published, rounded input", "double", Guard::none, InputMode::rounded, 3},
+    {"double guarded, rounded input", "double", Guard::bound, InputMode::rounded, 3},
+    {"double as published, prepared input", "double", Guard::none, InputMode::prepared, 3},
+    {"double guarded, prepared input", "double", Guard::bound, InputMode::prepared, 3},
+    {"certified", "certified", Guard::bound, InputMode::prepared, 3},
+    {"exact", "exact", Guard::bound, InputMode::prepared, 3},
+    {"exact v0 (full answer)", "exact", Guard::bound, InputMode::prepared, 0},
+};
+
+void register_product() {
+  group("product-2d-deg6-v3", "eccd::solve on the 2D degree-6 scene (Δ of degree 144), Variant 3, as a user runs it",
+        "eccd::solve(scene, options) from the read scene: preparation, CD-DISC (Bernstein form), the answer; each floating "
+        "row names its face and input mode. Baseline: double as published, rounded input; the guarded row's ratio is the "
+        "guard's cost.",
+        "issue 21: double at most 50 µs; issue 30: guarded / as published at most ×1.5 (median)");
+  group("product-paper002", "eccd::solve on paper 002's example (degree 4, 3D), as a user runs it",
+        "eccd::solve(scene, options) from the read scene: preparation, the Bézier method (001 section 4) or the exact "
+        "projection, contact points and normals; each floating row names its face and input mode. Baseline: double as "
+        "published, rounded input.",
+        "issue 21: double at most 0.3 ms, exact 25 ms; issue 30: guarded / as published at most ×1.5 (median)");
+  for (int dim : {2, 3}) {
+    const std::string grp = dim == 2 ? "product-2d-deg6-v3" : "product-paper002";
+    bool first = true;
+    for (const ProductRow& r : kProductRows) {
+      if (dim == 3 && r.variant == 0) continue;  // 3D: one answer
+      SolveOptions o;
+      o.arith = parse_arithmetic(r.arith);
+      o.guard = r.guard;
+      o.input = r.input;
+      o.variant = dim == 2 ? Variant(r.variant) : Variant::answer;
+      std::string label = r.label;
+      const bool floating = o.arith.floating();
+      row(grp, label, first, std::string(r.arith) == "exact" && dim == 3 ? Cost::very_slow : Cost::slow,
+          "eccd::solve(scene, arith " + o.arith.name() + (floating ? std::string(", guard ") + to_string(o.guard) + ", input " + to_string(o.input) : std::string()) +
+              (dim == 2 ? ", variant " + std::to_string(int(o.variant)) : std::string(", method bezier")) + ")",
+          [grp, label, o, dim](benchmark::State& st) {
+            const Scene& sc = dim == 2 ? s2d_deg6.get().scene : s3d_paper002.get().scene;
+            if (dim == 2) note_scene(s2d_deg6.get());
+            else note_scene(s3d_paper002.get(), grp);
+            timed(st, grp + "/" + label, [&] { return solve(sc, o); }, [](const Solution& s) { return summarise_solution(s); });
+          });
+      first = false;
+    }
+  }
+}
+
+}  // namespace eccd_bench::groups
