@@ -1,10 +1,10 @@
-// The independent-motion certificate's writer (io/independent_certificate.hpp); its checker is eccd-check's.
-#include "io/independent_certificate.hpp"
+// The independent-motion certificate's writer (certificate/write/independent_certificate.hpp); its checker is eccd-check's.
+#include "certificate/write/independent_certificate.hpp"
 
 #include "certified/independent_proof.hpp"
-#include "io/certificate_check.hpp"
-#include "io/certificate_json.hpp"
-#include "io/certificate_result.hpp"
+#include "certificate/check_certificate.hpp"
+#include "certificate/write/certificate_json.hpp"
+#include "certificate/certificate_result.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/trivariate_bernstein.hpp"
