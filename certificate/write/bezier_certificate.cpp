@@ -26,11 +26,11 @@ namespace {
 
 using json = nlohmann::json;
 using namespace certificate_json;
-using krawczyk_detail::Box;
-using krawczyk_detail::Nets;
-using krawczyk_detail::System;
+using krawczyk_method::Box;
+using krawczyk_method::Nets;
+using krawczyk_method::System;
 using I = MpfiInterval;
-using krawczyk_detail::restrict_axis;
+using krawczyk_method::restrict_axis;
 
 const int kBits = 160;
 
