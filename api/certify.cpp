@@ -1,10 +1,10 @@
 // Certify a scene and check a certificate, typed (api/certify.hpp).
 #include "api/certify.hpp"
 
-#include "io/certificate.hpp"
-#include "io/certificate_check.hpp"
-#include "io/cycloidal_certificate.hpp"
-#include "io/independent_certificate.hpp"
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/check_certificate.hpp"
+#include "certificate/write/cycloidal_certificate.hpp"
+#include "certificate/write/independent_certificate.hpp"
 #include "io/scene_reader.hpp"
 
 #include <chrono>
@@ -36,13 +36,13 @@ Certificate certify(const Scene& scene) {
   s.basis = "exact";
   s.method = scene.dim == 3 ? "projection" : "cd-disc";
   s.certified = true;
-  if (cycloidal_certificate_scene(scene)) {  // certified (MPFI), not exact: io/cycloidal_certificate.hpp
+  if (cycloidal_certificate_scene(scene)) {  // certified (MPFI), not exact: certificate/write/cycloidal_certificate.hpp
     s.arith = Arithmetic::certified();
     s.basis = "pointwise";
     s.method = "cd-disc-cycloidal";
     s.certified = s.answer.undecided.empty();
   }
-  if (independent_certificate_scene(scene)) {  // interval proofs about the exact F: io/independent_certificate.hpp
+  if (independent_certificate_scene(scene)) {  // interval proofs about the exact F: certificate/write/independent_certificate.hpp
     s.basis = "interval+mpfi";
     s.method = "bezier-independent-proved";
   }

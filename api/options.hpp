@@ -8,7 +8,7 @@
 // "certified:none" (parse_arithmetic / Arithmetic::name are inverse).
 // Options are enums, not strings; the command line and the JSON use the
 // to_string / parse_* names below.
-#include "certified/arithmetic.hpp"       // Arithmetic, parse_arithmetic
+#include "solution/arithmetic.hpp"       // Arithmetic, parse_arithmetic
 #include "floating/cd_disc_floating.hpp"  // Basis, to_string(Basis), parse_basis
 #include "kernel/cd_disc.hpp"              // Variant
 #include "kernel/prepared_scene.hpp"       // InputMode

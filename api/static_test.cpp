@@ -446,7 +446,7 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
         }
       }
       for (std::size_t i = 0; i < n; ++i) {
-        Status s = static_filter_detail::status_of_code(codes[i]);
+        Status s = static_filter_status(codes[i]);
         out[i] = s != Status::uncertain ? s : after_fast<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
       }
       return;

@@ -1,6 +1,6 @@
 // `eccd certify`: the certified answer of one scene, a verdict for each
 // floating pipeline against it, and a certificate that `eccd
-// check-certificate` re-checks without the solver (io/certificate.hpp).
+// check-certificate` re-checks without the solver (certificate/write/exact_certificate.hpp).
 #include "app/atomic_write.hpp"
 #include "app/commands.hpp"
 #include "api/certify.hpp"
@@ -8,12 +8,12 @@
 #include "io/solution_json.hpp"
 #include "compare/harness.hpp"
 #include "compare/harness_families.hpp"
-#include "io/cycloidal_certificate.hpp"
-#include "io/independent_certificate.hpp"
-#include "io/bezier_certificate.hpp"
+#include "certificate/write/cycloidal_certificate.hpp"
+#include "certificate/write/independent_certificate.hpp"
+#include "certificate/write/bezier_certificate.hpp"
 #include "compare/verdict.hpp"
-#include "io/certificate.hpp"
-#include "io/certificate_check.hpp"
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/check_certificate.hpp"
 #include "io/scene_reader.hpp"
 
 #include <chrono>
@@ -56,7 +56,7 @@ std::string instant_text(const nlohmann::json& i) {
   return i["approx"].get<std::string>() + " in [" + lo + ", " + hi + "]";
 }
 
-// A cycloidal scene's certificate (io/cycloidal_certificate.hpp): MPFI-proved brackets, stretches left undecided.
+// A cycloidal scene's certificate (certificate/write/cycloidal_certificate.hpp): MPFI-proved brackets, stretches left undecided.
 std::string cycloidal_text(const nlohmann::json& cert) {
   std::ostringstream o;
   const auto& a = cert["answer"];
@@ -82,7 +82,7 @@ std::string cycloidal_text(const nlohmann::json& cert) {
   return o.str();
 }
 
-// An independent scene's certificate (io/independent_certificate.hpp): strips and ends proved, s- and t-intervals.
+// An independent scene's certificate (certificate/write/independent_certificate.hpp): strips and ends proved, s- and t-intervals.
 std::string independent_text(const nlohmann::json& cert) {
   std::ostringstream o;
   const auto& a = cert["answer"];
@@ -95,7 +95,7 @@ std::string independent_text(const nlohmann::json& cert) {
   return o.str();
 }
 
-// A Bézier certificate (io/bezier_certificate.hpp): pieces of t proved out / in, ends by Krawczyk.
+// A Bézier certificate (certificate/write/bezier_certificate.hpp): pieces of t proved out / in, ends by Krawczyk.
 std::string bezier_text(const nlohmann::json& cert) {
   std::ostringstream o;
   const auto& a = cert["answer"];
@@ -204,7 +204,7 @@ Command add_certify_command(CLI::App& app) {
     }
     // The writer's output must pass the checker before anyone sees it.
     if (!quiet() && route != "bezier") std::cerr << "certify: re-checking the certificate with the checker ...\n";
-    // (a Bézier certificate has just passed this very checker inside its writer: io/bezier_certificate.cpp)
+    // (a Bézier certificate has just passed this very checker inside its writer: certificate/write/bezier_certificate.cpp)
     CertificateCheck chk;
     if (route == "bezier") chk.valid = true;
     else chk = check_certificate(scene, doc, cert);
@@ -214,7 +214,7 @@ Command add_certify_command(CLI::App& app) {
     std::vector<Verdict> verdicts;
     if (!args->no_floating && !scene.independent) {  // independent scenes: the harness pipelines are shared-parameter methods
       nlohmann::json plain = cert["answer"];
-      plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches (io/cycloidal_certificate.hpp)
+      plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches (certificate/write/cycloidal_certificate.hpp)
       if (plain.contains("collides") && plain["collides"].is_null()) plain["collides"] = false;  // unknown: no collision proved, some stretch undecided
       Answer certified = answer_from_json(plain, "the certificate", "/answer");
       if (cert["answer"].contains("undecided"))

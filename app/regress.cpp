@@ -12,9 +12,9 @@
 #include "compare/verdict.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/cycloidal_motion.hpp"
-#include "io/bezier_certificate.hpp"
-#include "io/certificate.hpp"
-#include "io/certificate_check.hpp"
+#include "certificate/write/bezier_certificate.hpp"
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/check_certificate.hpp"
 #include "io/scene_reader.hpp"
 
 #include <algorithm>
@@ -197,7 +197,7 @@ Command add_regress_command(CLI::App& app) {
           row["arith"] = "certified";
           row["arith_reason"] = "cycloidal motion: no exact answer, the ground truth is the certified one";
         }
-        // independent motions (issue 20): exact is their certified pipeline (certificate: io/independent_certificate.hpp)
+        // independent motions (issue 20): exact is their certified pipeline (certificate: certificate/write/independent_certificate.hpp)
         if (sc.independent) opt.arith = Arithmetic::exact();
         const Solution sol = solve(sc, opt);
         std::string how;
@@ -236,13 +236,13 @@ Command add_regress_command(CLI::App& app) {
           line = "FAIL  " + name + ": the stored answer differs from the recomputed " + args->arith + " one:";
           for (const auto& d : diff) line += "\n        " + d;
         }
-        if (args->certify) {  // also a cycloidal scene (io/cycloidal_certificate.hpp) and an independent one (io/independent_certificate.hpp)
+        if (args->certify) {  // also a cycloidal scene (certificate/write/cycloidal_certificate.hpp) and an independent one (certificate/write/independent_certificate.hpp)
           nlohmann::json doc = nlohmann::json::parse(texts[f]);
           auto c0 = std::chrono::steady_clock::now();
           nlohmann::json cert;
           std::string route, route_why;
           try {
-            // certified mode: the certified route's certificate (io/bezier_certificate.hpp), else the exact one
+            // certified mode: the certified route's certificate (certificate/write/bezier_certificate.hpp), else the exact one
             cert = certified_mode ? make_certified_mode_certificate(sc, doc, route, route_why) : make_certificate(sc, doc);
           } catch (const CertificationError& e) {  // the proof left a range undecided: nothing certified, and said so
             if (!sc.independent) throw;

@@ -32,9 +32,9 @@ namespace eccd {
 
 namespace {
 
-using krawczyk_detail::Box;
-using krawczyk_detail::Nets;
-using krawczyk_detail::System;
+using krawczyk_method::Box;
+using krawczyk_method::Nets;
+using krawczyk_method::System;
 using I = MpfiInterval;
 
 Rational rat(double d) { return Rational(mpq_class(d)); }  // dyadic strip ends and box corners: exact
@@ -104,7 +104,7 @@ class Engine {
   }
 
   template <class IT>
-  std::string prove_end_with(krawczyk_detail::NetsT<IT>& nets, double lo, double hi, BezierPiece& piece) {
+  std::string prove_end_with(krawczyk_method::NetsT<IT>& nets, double lo, double hi, BezierPiece& piece) {
     const mpq_class qlo(lo), qhi(hi);
     const double tm = 0.5 * (lo + hi);
     // seed: the witness u of max F(., tm) in double
@@ -113,7 +113,7 @@ class Engine {
     sys.eqs = {{0, 0, 0}, {1, 0, 0}};
     sys.vars = {0, 2};
     sys.kind = "bezier-end";
-    std::optional<std::array<double, 3>> x = krawczyk_detail::newton(nets, sys, {u0, 0.0, tm});
+    std::optional<std::array<double, 3>> x = krawczyk_method::newton(nets, sys, {u0, 0.0, tm});
     if (!x) x = std::array<double, 3>{refine_argmax(u0, tm), 0.0, tm};  // no Newton point: the witness u at the run's middle
     const double ux = (*x)[0], tx = (*x)[2];
     if (!(ux > 0 && ux < 1) || !(tx > lo - (hi - lo) && tx < hi + (hi - lo)))
@@ -129,7 +129,7 @@ class Engine {
       if (sgn(X.lo[0]) <= 0 || X.hi[0] >= 1) continue;
       Box K;
       ++krawczyk_tests;
-      if (!krawczyk_detail::krawczyk(nets, sys, X, K)) continue;
+      if (!krawczyk_method::krawczyk(nets, sys, X, K)) continue;
       std::string ex = exclude(qlo, qhi, X.lo[0], X.hi[0]);
       if (!ex.empty()) { why += ": " + ex; continue; }
       // tighten: Y <- Y ∩ K(Y) keeps the unique zero
@@ -140,7 +140,7 @@ class Engine {
       Box Y = X;
       for (int it = 0; it < 12; ++it) {
         Box K2;
-        krawczyk_detail::krawczyk(nets, sys, Y, K2);
+        krawczyk_method::krawczyk(nets, sys, Y, K2);
         if (K2.lo.size() != Y.lo.size()) break;
         bool ok = true;
         for (std::size_t v = 0; v < 2; ++v) {
@@ -169,7 +169,7 @@ class Engine {
   BiBern<Interval> F_;
   BiBern<double> Fd_;
   std::optional<Nets> nets_;
-  std::optional<krawczyk_detail::NetsT<Interval>> dnets_;
+  std::optional<krawczyk_method::NetsT<Interval>> dnets_;
   long unresolved_ = 0;
   double sure_margin_ = INFINITY;
   static constexpr long kMaxUnresolved = 64;  // unresolved strips at the finest level, in all

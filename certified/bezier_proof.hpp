@@ -36,7 +36,7 @@
 namespace eccd {
 
 // ---- Contract between the engine (certified/bezier_proof.cpp) and the
-// ---- certificate (io/bezier_certificate.*): fields may be added, never
+// ---- certificate (certificate/write/bezier_certificate.*): fields may be added, never
 // ---- renamed or removed.
 struct BezierProofOptions {
   int strip_depth = 16;     // strips of t down to 2^-strip_depth

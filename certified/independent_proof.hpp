@@ -144,7 +144,7 @@ struct IndependentProofOptions {
   bool record = false;  // keep the proof (strip witness boxes, Krawczyk boxes) in the result: for the certificate
 };
 
-// What a proof of one projection consists of, for the certificate (io/independent_certificate.hpp).
+// What a proof of one projection consists of, for the certificate (certificate/write/independent_certificate.hpp).
 struct IndependentEndRecord {
   mpq_class run_lo, run_hi;           // the run of unresolved strips holding the end
   std::string system;                 // "fold", "t = 0", "t = 1" (the other parameter named by var)
@@ -152,7 +152,7 @@ struct IndependentEndRecord {
   mpq_class lo, hi;                   // the bracket: [max(run_lo, Y_last.s_lo), min(run_hi, Y_last.s_hi)]
 };
 struct IndependentProjectionRecord {
-  std::vector<independent_detail::Piece> pieces;  // in order, proved ones with their witness boxes
+  std::vector<independent_subdivision::Piece> pieces;  // in order, proved ones with their witness boxes
   std::vector<IndependentEndRecord> ends;
 };
 
@@ -166,13 +166,23 @@ struct IndependentProofResult {
   double seconds = 0;
 };
 
+// F = p G with p of one sign along s or t (a body that does not move as a set): G, of degree 0 there
+// (TriBern::without_positive_factor, exact); else F. Axis s first, then t. The proofs below run on it;
+// the certificate writer (certificate/write/independent_certificate.cpp) refuses a net it changes.
+inline TriBern<Rational> independent_net_reduced(const TriBern<Rational>& exact) {
+  TriBern<Rational> reduced = exact;
+  for (int axis : {1, 2})
+    if (auto g = reduced.without_positive_factor(axis)) reduced = std::move(*g);
+  return reduced;
+}
+
 namespace independent_proof_detail {
 
 using I = MpfiInterval;
-using independent_detail::Piece;
-using independent_detail::Strip;
+using independent_subdivision::Piece;
+using independent_subdivision::Strip;
 
-using namespace krawczyk_detail;  // Nets, System, Box, newton, krawczyk (certified/krawczyk.hpp)
+using namespace krawczyk_method;  // Nets, System, Box, newton, krawczyk (certified/krawczyk.hpp)
 
 struct EndProof {
   bool proved = false;
@@ -408,7 +418,7 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
                                                            const IndependentProofOptions& opt,
                                                            const char* var, IndependentProofResult& res, long& tests, long& boxes,
                                                            long& kz) {
-  using independent_detail::Projector;
+  using independent_subdivision::Projector;
   Projector<L> proj(opt.localise, FL.c[0]);
   proj.record = opt.record;
   std::vector<Piece> pieces = proj.project(FL);
@@ -430,7 +440,7 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
   const std::string why_stop = proj.stop_reason.empty() ? "" : " (" + proj.stop_reason + ")";
   auto range = [&](const mpq_class& a, const mpq_class& b) { return v + " in [" + decimal_string(a, 12) + ", " + decimal_string(b, 12) + "]"; };
   auto undecided = [&](const mpq_class& a, const mpq_class& b, const std::string& why) {
-    res.answer.undecided.push_back(independent_detail::located((a + b) / 2, (b - a) / 2));
+    res.answer.undecided.push_back(independent_subdivision::located((a + b) / 2, (b - a) / 2));
     res.undecided_reasons.push_back(range(a, b) + ": " + why);
   };
   // resolved pieces with the instants of their ends
@@ -475,7 +485,7 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
       undecided(p.lo, p.hi, "an end of the " + v + "-intervals lies here (" + v + " = " + decimal_string(p.lo, 12) + " proved " +
                                 (before == Strip::in ? "in" : "out") + ", " + decimal_string(p.hi, 12) + " proved " +
                                 (after == Strip::in ? "in" : "out") + ") but it is not proved to be one: " + e.why);
-      end = independent_detail::located((p.lo + p.hi) / 2, (p.hi - p.lo) / 2);
+      end = independent_subdivision::located((p.lo + p.hi) / 2, (p.hi - p.lo) / 2);
     }
     out.back().hi = end;
     pending = end;
@@ -491,15 +501,6 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
     i = j;
   }
   return iv;
-}
-
-// F = p G with p of one sign along s or t (a body that does not move as a set): G, of degree 0 there
-// (TriBern::without_positive_factor, exact); else F. Axis s first, then t.
-inline TriBern<Rational> independent_net_reduced(const TriBern<Rational>& exact) {
-  TriBern<Rational> reduced = exact;
-  for (int axis : {1, 2})
-    if (auto g = reduced.without_positive_factor(axis)) reduced = std::move(*g);
-  return reduced;
 }
 
 // The face u = index i of the exact net < 0 on [0, 1]^2: every control point of a sub-box < 0, by exact
@@ -576,7 +577,7 @@ inline IndependentProofResult prove_independent(const TriBern<Rational>& exact, 
     r.undecided_reasons.push_back("one projection found a meeting and the other none (a meeting set thinner than the strips)");
     r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
   }
-  r.undecided_reasons = independent_detail::one_per_cause(r.undecided_reasons);
+  r.undecided_reasons = independent_subdivision::one_per_cause(r.undecided_reasons);
   r.counters = {{"box_tests", tests}, {"exclusion_boxes", boxes}, {"krawczyk_tests", kz}, {"proved_ends", long(r.proofs.size())}};
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -37,7 +37,9 @@
 #include <vector>
 
 namespace eccd {
-namespace krawczyk_detail {
+// The pieces of the method, public: the Bézier proof (certified/bezier_proof.cpp),
+// the independent-motion proofs and the certificate writers (certificate/write/) use them.
+namespace krawczyk_method {
 
 using I = MpfiInterval;
 
@@ -262,5 +264,5 @@ bool krawczyk(NetsT<IT>& nets, const System& sys, const Box& X, Box& K) {
   return inside;
 }
 
-}  // namespace krawczyk_detail
+}  // namespace krawczyk_method
 }  // namespace eccd

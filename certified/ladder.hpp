@@ -56,7 +56,7 @@
 // evaluation. Split-point evaluations are capped at max_local_splits (4) per run,
 // and an identically-zero test of degree d makes at most d + 1.
 // Requirements: a prepared pair (kernel/prepared_scene.hpp), N = 3 (2D) or 4 (3D).
-#include "certified/solution.hpp"
+#include "solution/solution.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/scene.hpp"
 

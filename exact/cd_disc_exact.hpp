@@ -30,7 +30,7 @@ struct ExactPolicy {
   using Rep = Poly<Rational>;
   using Root = AlgebraicRoot;
   int bits = 64;  // brackets are refined to width <= 2^-bits
-  // If set, every isolation is kept here, in order (io/certificate.hpp
+  // If set, every isolation is kept here, in order (certificate/write/exact_certificate.hpp
   // builds the certificate from the very roots the answer was decided on).
   std::vector<Isolation>* record = nullptr;
 

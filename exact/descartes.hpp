@@ -9,7 +9,7 @@
 // counted with multiplicity) is even and >= 0. Hence
 //   V = 0  =>  p has no root in (a, b);
 //   V = 1  =>  p has exactly one root in (a, b), and it is simple.
-// The certificate checker (io/certificate_check.hpp) uses these two facts
+// The prover-side self-check (certificate/write/prover_self_check.hpp) uses these two facts
 // only; it never needs V to be exact in other cases. Unlike a Sturm sequence
 // (kernel/sturm.hpp), the cost does not explode with the degree: it is two
 // O(n²) passes over integers (n = deg p <= a few hundred for the projection

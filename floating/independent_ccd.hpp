@@ -77,7 +77,10 @@ struct IndependentResult {
   double seconds = 0;
 };
 
-namespace independent_detail {
+// The subdivision's pieces (strips, dyadic cells, the projector), public: the
+// proofs of certified/independent_proof.hpp and the certificate writer
+// (certificate/write/independent_certificate.cpp) build on them.
+namespace independent_subdivision {
 
 enum class Strip { in, out, unknown };
 
@@ -108,7 +111,7 @@ class Projector {
 
   long tests = 0, strips = 0, points = 0;
   std::string stop_reason;
-  bool record = false;  // keep each proved strip's boxes in Piece::witness (io/independent_certificate.hpp)
+  bool record = false;  // keep each proved strip's boxes in Piece::witness (certificate/write/independent_certificate.hpp)
 
   // The pieces of [0, 1] along axis 1 of F (s), in order.
   std::vector<Piece> project(const TriBern<T>& F) {
@@ -412,12 +415,12 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
   return out;
 }
 
-}  // namespace independent_detail
+}  // namespace independent_subdivision
 
 // The answer of an independent scene from F(u, s, t) (kernel/trivariate_bernstein.hpp).
 template <class T>
 IndependentResult ccd_independent(const TriBern<T>& F, const T& like, const IndependentOptions& opt = {}) {
-  using namespace independent_detail;
+  using namespace independent_subdivision;
   const auto start = std::chrono::steady_clock::now();
   IndependentResult r;
   r.answer.independent = true;

@@ -1,10 +1,10 @@
 #pragma once
-// A Solution (certified/solution.hpp, the API's api/solution.hpp) as JSON and
+// A Solution (solution/solution.hpp, the API's api/solution.hpp) as JSON and
 // as text: exactly the object `eccd solve --json` prints (the scene format's
 // answer keys, docs/answer-format.md, plus the run's diagnostics), the spec's
 // stored answer out of it, and the few lines `eccd solve` prints.
 // Requirements: nlohmann json 3.11 (JSON stays in io/ and above).
-#include "certified/solution.hpp"
+#include "solution/solution.hpp"
 
 #include <nlohmann/json.hpp>
 #include <string>

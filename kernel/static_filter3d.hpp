@@ -203,7 +203,6 @@ template <bool kLanes, class D = double>
   return D(2) * overlapping + separate;
 }
 
-inline Status status_of_code(double c) { return c == 1.0 ? Status::separate : c == 2.0 ? Status::overlapping : Status::uncertain; }
 
 // f's coefficients ĝ_k with their bounds e_k (|ĝ_k - g_k| <= e_k when ok = 1: the ranges held); D is double or
 // a lane vector (number/lane_vector.hpp).
@@ -273,6 +272,10 @@ template <bool kLanes, class D = double, class Leaf>
 
 }  // namespace static_filter_detail
 
+// The status a filter code stands for (1 separate, 2 overlapping, anything else
+// uncertain: the filter did not decide); api/static_test.cpp reads the batch's codes with it.
+inline Status static_filter_status(double c) { return c == 1.0 ? Status::separate : c == 2.0 ? Status::overlapping : Status::uncertain; }
+
 // The inputs of one pair as leaves: the semi-axes and the top three rows of the affine poses.
 template <class Axes, class Pose>
 [[gnu::always_inline]] inline auto static_leaves(const Axes& axes_a, const Pose& pose_a, const Axes& axes_b, const Pose& pose_b) {
@@ -288,7 +291,7 @@ template <class Axes, class Pose>
 // proves).
 template <class Axes, class Pose>
 Status static_filter3d(const Axes& axes_a, const Pose& pose_a, const Axes& axes_b, const Pose& pose_b) {
-  return static_filter_detail::status_of_code(
+  return static_filter_status(
       static_filter_detail::pair_code<false>(static_leaves(axes_a, pose_a, axes_b, pose_b)));
 }
 

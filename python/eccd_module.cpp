@@ -26,7 +26,7 @@
 #include "api/separate_json.hpp"    // eccd.separate's dict: the same builder as `eccd separate --json`
 #include "compare/fcl_engine.hpp"   // eccd.fcl: FCL as a peer engine, as `eccd fcl` runs it
 #include "io/animation_reader.hpp"
-#include "io/certificate_result.hpp"
+#include "certificate/certificate_result.hpp"
 #include "io/pose_import.hpp"
 #include "io/scene_reader.hpp"
 #include "io/solution_json.hpp"

@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
-# The layers' include arrows point one way (README "What is where"):
-#   number -> kernel -> floating | exact -> certified -> certificate -> io -> api -> compare -> app
+# The layers' include arrows point one way (docs/architecture.md, "Layers, folder by folder"):
+#   number -> kernel -> solution -> floating | exact -> certified -> io -> certificate -> api -> compare -> app
+# (solution/: the answer types every layer above shares; io/: the file
+# formats, which the certificate writers of certificate/write/ read scenes with).
 # A file may include headers of its own folder and of layers strictly below
 # it (floating and exact are siblings: neither includes the other). Prints
 # every include that points up or sideways and exits 1 if there is one.
 # The independent checker certificate/check/ is stricter (docs/checking.md):
 # it shares no code with the provers, so it includes only number/ and its own
 # folder, and no CGAL or FLINT header; that is checked too.
-# The grep it runs:  grep -n '#include' number kernel floating exact certified certificate io api compare app include
+# The grep it runs:  grep -n '#include' number kernel solution floating exact certified io certificate api compare app include
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rank() {
   case "$1" in
-    number) echo 0 ;; kernel) echo 1 ;; floating|exact) echo 2 ;; certified) echo 3 ;; certificate) echo 4 ;;
-    io) echo 5 ;; api) echo 6 ;; include|compare) echo 7 ;; app) echo 8 ;; *) echo 99 ;;
+    number) echo 0 ;; kernel) echo 1 ;; solution) echo 2 ;; floating|exact) echo 3 ;; certified) echo 4 ;;
+    io) echo 5 ;; certificate) echo 6 ;; api) echo 7 ;; include|compare) echo 8 ;; app) echo 9 ;; *) echo 99 ;;
   esac
 }
 bad=0
@@ -28,7 +30,7 @@ while IFS= read -r line; do
     echo "$file:$lineno: $from/ includes $inc (layer $to/ is not below $from/)"
     bad=1
   fi
-done < <(grep -rn '#include "' number kernel floating exact certified certificate io api compare app include --include='*.hpp' --include='*.cpp')
+done < <(grep -rn '#include "' number kernel solution floating exact certified io certificate api compare app include --include='*.hpp' --include='*.cpp')
 # The checker's isolation: certificate/check/ includes number/, its own folder
 # and system or third-party headers other than CGAL and FLINT, nothing else.
 if [ -d certificate/check ]; then
@@ -43,4 +45,4 @@ if [ -d certificate/check ]; then
   done < <(grep -rn '#include' certificate/check --include='*.hpp' --include='*.cpp')
 fi
 if [ "$bad" -ne 0 ]; then echo "check-layers: an include arrow points up or sideways (see above)"; exit 1; fi
-echo "check-layers: every include arrow points down (number -> kernel -> floating|exact -> certified -> certificate -> io -> api -> compare -> app); certificate/check includes only number/ and itself"
+echo "check-layers: every include arrow points down (number -> kernel -> solution -> floating|exact -> certified -> io -> certificate -> api -> compare -> app); certificate/check includes only number/ and itself"

@@ -213,7 +213,7 @@ TEST_CASE("independent scenes: certify and plot take them, the shared-parameter 
   using namespace eccd::clitest;
   const std::string f = q(indep("spheres-end"));
   // (exact and certified solve them: tests/certified/test_independent_proof.cpp)
-  // certify writes eccd-independent-certificate/3 (io/independent_certificate.hpp; tests/io/test_independent_certificate.cpp)
+  // certify writes eccd-independent-certificate/3 (certificate/write/independent_certificate.hpp; tests/certificate/test_independent_certificate.cpp)
   TempDir w;  // (an output is never a device: certify refuses --out /dev/null)
   Run cert = run_eccd("certify " + f + " --out " + q((w.path / "c.json").string()));
   CHECK(cert.code == 0);

@@ -4,8 +4,8 @@
 // cover; and the forgeries of incomplete cycloidal certificates that claim
 // "collides": false (tests/data/cert/) are REJECTED by eccd check-certificate.
 #include "certificate/check/verdict.hpp"
-#include "io/certificate.hpp"
-#include "io/certificate_check.hpp"
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/check_certificate.hpp"
 #include "io/scene_reader.hpp"
 #include "io/solution_json.hpp"
 #include "tests/support/cli.hpp"

@@ -9,7 +9,7 @@
 #include "certificate/check/pencil.hpp"
 #include "certificate/check/qpoly.hpp"
 #include "certificate/check/verdict.hpp"
-#include "io/certificate.hpp"
+#include "certificate/write/exact_certificate.hpp"
 #include "io/scene_reader.hpp"
 #include "io/solution_json.hpp"
 

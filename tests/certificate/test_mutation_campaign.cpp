@@ -1,7 +1,7 @@
 // The mutation campaign (docs/checking.md): genuine certificates mutated at
 // random (seed printed) and given to both checkers of eccd-certificate/2, the
 // independent one (certificate/check/, eccd-check's library) and the one on
-// the prover's algebra (io/certificate_check.hpp). Mutations: collides
+// the prover's algebra (certificate/write/prover_self_check.hpp). Mutations: collides
 // flipped, an end moved, an interval or a root dropped or added, an integer
 // changed by one, the scene swapped, a key duplicated, a bracket widened past
 // its neighbour, a status or an evidence sign flipped, a gap point dropped.
@@ -11,8 +11,9 @@
 // [.long][mutation-long]: 10^5 per kind (hidden, run by hand). ECCD_MUTATION_SEED fixes the
 // seed.
 #include "certificate/check/verdict.hpp"
-#include "io/certificate.hpp"
-#include "io/certificate_check.hpp"
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/check_certificate.hpp"
+#include "certificate/write/prover_self_check.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/certificate_mutation.hpp"
 
@@ -212,9 +213,9 @@ bool prover_algebra_valid(const Base& b, const Mutant& m) {
   }
   if (!structure.empty()) return false;
   try {
-    if (m.scene_text == b.scene_text) return check_certificate_with_prover_algebra(b.scene, b.doc, cert).valid;
+    if (m.scene_text == b.scene_text) return prover_self_check(b.scene, b.doc, cert).valid;
     const Scene other = parse_scene(m.scene_text, "other");
-    return check_certificate_with_prover_algebra(other, parse_json_document(m.scene_text, "other"), cert).valid;
+    return prover_self_check(other, parse_json_document(m.scene_text, "other"), cert).valid;
   } catch (const std::exception&) {
     return false;
   }

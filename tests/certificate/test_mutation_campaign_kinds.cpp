@@ -16,9 +16,9 @@
 // point, a bracket end inside the timeline). [mutation]: 500 per kind per
 // run; [.long][mutation-long]: 10^5 per kind (hidden, run by hand).
 #include "certificate/check/verdict.hpp"
-#include "io/bezier_certificate.hpp"
-#include "io/cycloidal_certificate.hpp"
-#include "io/independent_certificate.hpp"
+#include "certificate/write/bezier_certificate.hpp"
+#include "certificate/write/cycloidal_certificate.hpp"
+#include "certificate/write/independent_certificate.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/certificate_mutation.hpp"
 

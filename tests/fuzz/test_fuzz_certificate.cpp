@@ -1,4 +1,4 @@
-// Fuzz: the certificate checker (io/certificate_check.hpp) on mutated
+// Fuzz: the certificate checker (certificate/check_certificate.hpp) on mutated
 // certificates of a few corpus scenes (one of them a Bézier certificate from --arith certified). The certificate text is mutated, then
 // parsed (a text that is not JSON is an unreadable file: exit 2 at the command
 // line, not the checker's business) and checked. Every mutant must give a
@@ -8,9 +8,9 @@
 // the genuine answer (a mutant cannot forge another one). Runs
 // ECCD_FUZZ_SECONDS (default 10) from ECCD_FUZZ_SEED (default random; printed).
 #include "compare/regress.hpp"
-#include "io/bezier_certificate.hpp"
-#include "io/certificate.hpp"
-#include "io/certificate_check.hpp"
+#include "certificate/write/bezier_certificate.hpp"
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/check_certificate.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/mutate.hpp"
 
@@ -59,7 +59,7 @@ TEST_CASE("fuzz: the certificate checker gives a verdict on mutated certificates
     REQUIRE(eccd::check_certificate(g.scene, g.doc, g.cert).valid);
     genuine.push_back(std::move(g));
   }
-  {  // a Bézier certificate (certify --arith certified: io/bezier_certificate.hpp)
+  {  // a Bézier certificate (certify --arith certified: certificate/write/bezier_certificate.hpp)
     Genuine g;
     std::string path = std::string(ECCD_SOURCE_DIR) + "/cases/spheres/spheres-crossing.json";
     g.scene = eccd::read_scene_file(path);

@@ -1,8 +1,8 @@
-// The cycloidal certificate's writer (io/cycloidal_certificate.hpp).
-#include "io/cycloidal_certificate.hpp"
+// The cycloidal certificate's writer (certificate/write/cycloidal_certificate.hpp).
+#include "certificate/write/cycloidal_certificate.hpp"
 
 #include "certified/ladder.hpp"
-#include "io/cycloidal_enclosures.hpp"
+#include "certificate/write/cycloidal_enclosures.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/collision_timeline.hpp"
 

@@ -1,10 +1,10 @@
-// The independent-motion certificate's writer (io/independent_certificate.hpp); its checker is eccd-check's.
-#include "io/independent_certificate.hpp"
+// The independent-motion certificate's writer (certificate/write/independent_certificate.hpp); its checker is eccd-check's.
+#include "certificate/write/independent_certificate.hpp"
 
 #include "certified/independent_proof.hpp"
-#include "io/certificate_check.hpp"
-#include "io/certificate_json.hpp"
-#include "io/certificate_result.hpp"
+#include "certificate/check_certificate.hpp"
+#include "certificate/write/certificate_json.hpp"
+#include "certificate/certificate_result.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "kernel/trivariate_bernstein.hpp"
@@ -21,8 +21,8 @@ bool independent_certificate_scene(const Scene& s) { return s.independent; }
 namespace {
 
 using json = nlohmann::json;
-using independent_detail::Piece;
-using independent_detail::Strip;
+using independent_subdivision::Piece;
+using independent_subdivision::Strip;
 using I = MpfiInterval;
 
 const int kBits = 160;
@@ -37,8 +37,8 @@ TriBern<Rational> exact_net(const Scene& scene, std::array<bool, 2>& still) {
   return independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(shared), Rational(1)), &still);
 }
 
-mpq_class dy_lo(const independent_detail::Dyadic& d) { return mpq_class(mpz_class(std::to_string(d.i)), mpz_class(1) << d.d); }
-mpq_class dy_hi(const independent_detail::Dyadic& d) { return mpq_class(mpz_class(std::to_string(d.i + 1)), mpz_class(1) << d.d); }
+mpq_class dy_lo(const independent_subdivision::Dyadic& d) { return mpq_class(mpz_class(std::to_string(d.i)), mpz_class(1) << d.d); }
+mpq_class dy_hi(const independent_subdivision::Dyadic& d) { return mpq_class(mpz_class(std::to_string(d.i + 1)), mpz_class(1) << d.d); }
 std::string q(const mpq_class& x) { mpq_class y = x; y.canonicalize(); return y.get_str(); }
 
 // The exclusion of an end as the subdivision tree the checker replays (certificate/check/independent_certificate.cpp):
@@ -82,7 +82,7 @@ Keep kept_box(const std::string& system, const std::vector<mpq_class>& xlo, cons
 
 // The items of one projection; F: the net with the proof's parameter second, in MPFI.
 json projection_json(const IndependentProjectionRecord& rec, const TriBern<I>& F) {
-  krawczyk_detail::Nets nets(F, kBits);
+  krawczyk_method::Nets nets(F, kBits);
   const I half(mpq_class(1, 2), kBits);
   json items = json::array();
   std::size_t e = 0;
@@ -101,7 +101,7 @@ json projection_json(const IndependentProjectionRecord& rec, const TriBern<I>& F
       }
       std::array<TriBern<I>, 4> f;
       const std::array<std::array<int, 3>, 4> ords{{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {2, 0, 0}}};
-      for (int i = 0; i < 4; ++i) f[i] = krawczyk_detail::restrict_axis(nets.get(ords[i]), 1, p.lo, p.hi, kBits);
+      for (int i = 0; i < 4; ++i) f[i] = krawczyk_method::restrict_axis(nets.get(ords[i]), 1, p.lo, p.hi, kBits);
       std::string tree;
       long nodes = 0;
       exclusion_tree(f, 0, 1, 0, 1, 0, kept_box(r.system, r.chain_lo[0], r.chain_hi[0]), half, nodes, tree);
@@ -160,7 +160,7 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
   const auto start = std::chrono::steady_clock::now();
   std::array<bool, 2> still{};
   const TriBern<Rational> F = exact_net(s, still);
-  if (!(independent_proof_detail::independent_net_reduced(F).c == F.c))
+  if (!(independent_net_reduced(F).c == F.c))
     throw CertificationError("F has a factor of one sign along a parameter whose body moves: the proof runs on F divided by it, "
                              "which the certificate's net claim does not cover");
   IndependentProofOptions po;

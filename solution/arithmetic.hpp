@@ -6,8 +6,9 @@
 // "mpfr:BITS" (53 <= BITS <= 65536), "exact", "certified" (MPFI rung 256),
 // "certified:B1,B2,..." (increasing, each 54..65536), "certified:none";
 // parse_arithmetic and Arithmetic::name are inverse.
-// It sits here, below io/, because a Solution (certified/solution.hpp) names
-// its arithmetic and io/ writes Solutions; api/options.hpp includes it.
+// It sits in solution/, below floating/, exact/ and certified/, because a
+// Solution (solution/solution.hpp) names its arithmetic and every layer
+// above writes or returns Solutions; api/options.hpp includes it.
 #include <string>
 #include <vector>
 

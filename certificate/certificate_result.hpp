@@ -1,8 +1,8 @@
 #pragma once
 // What certifying a scene and checking a certificate report, without JSON (so
 // that api/certify.hpp can name them): CertificationError when a claim
-// cannot be made provable (io/certificate.hpp), and the checker's verdict
-// (io/certificate_check.hpp).
+// cannot be made provable (certificate/write/exact_certificate.hpp), and the checker's verdict
+// (certificate/check_certificate.hpp).
 #include <stdexcept>
 #include <string>
 #include <vector>

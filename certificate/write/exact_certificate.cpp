@@ -1,9 +1,9 @@
-// The certificate writer (io/certificate.hpp): the exact pipeline's own
+// The certificate writer (certificate/write/exact_certificate.hpp): the exact pipeline's own
 // timeline, with its brackets refined until the simple checks of
-// io/certificate_check.hpp prove every claim.
-#include "io/certificate.hpp"
-#include "io/cycloidal_certificate.hpp"
-#include "io/independent_certificate.hpp"
+// certificate/write/prover_self_check.hpp prove every claim.
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/write/cycloidal_certificate.hpp"
+#include "certificate/write/independent_certificate.hpp"
 
 #include "exact/algebraic_roots.hpp"
 #include "exact/cd_disc_exact.hpp"
@@ -165,8 +165,8 @@ PipelineResult<Rational> run_exact_recording_isolation(const Scene& s, std::vect
 }  // namespace
 
 nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved) {
-  if (cycloidal_certificate_scene(s)) return make_cycloidal_certificate(s, scene_doc, solved);  // io/cycloidal_certificate.hpp
-  if (independent_certificate_scene(s)) return make_independent_certificate(s, scene_doc, solved);  // io/independent_certificate.hpp
+  if (cycloidal_certificate_scene(s)) return make_cycloidal_certificate(s, scene_doc, solved);  // certificate/write/cycloidal_certificate.hpp
+  if (independent_certificate_scene(s)) return make_independent_certificate(s, scene_doc, solved);  // certificate/write/independent_certificate.hpp
   auto start = std::chrono::steady_clock::now();
   std::vector<Isolation> record;
   PipelineResult<Rational> res = s.dim == 2 ? run_exact_recording_isolation<3>(s, record) : run_exact_recording_isolation<4>(s, record);
@@ -193,7 +193,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
     c["gap_points"] = nlohmann::json::array();
     c["timeline"] = nlohmann::json::array();
     // Continuous touching: P·D without a root in [0, 1] keeps the status of
-    // the double root constant (io/certificate_check.hpp).
+    // the double root constant (certificate/write/prover_self_check.hpp).
     const Poly<Rational> PD = alg.evidence("P") * alg.evidence("D");
     const Rational half(1, 2);
     nlohmann::json ct = {{"convention", PD.is_zero() ? "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D vanishes identically: the "
@@ -226,7 +226,7 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
     throw std::logic_error("internal error: the pipeline isolated the roots of another polynomial than the projection");
   const Poly<Rational>& P = alg.projection;
   const auto F = square_free_factors(P);
-  // The checker's size bound (io/certificate.hpp), a few bits of slack for refine's rounding.
+  // The checker's size bound (certificate/write/exact_certificate.hpp), a few bits of slack for refine's rounding.
   const int max_bits = std::min<int>(kMaxBits, int(certificate_max_bits(std::size_t(P.degree()), integer_coefficient_bits(P))) - 8);
   proj["identically_zero"] = false;
   proj["degree"] = P.degree();

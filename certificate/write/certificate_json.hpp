@@ -1,7 +1,7 @@
 #pragma once
-// The small JSON helpers every certificate checker uses (io/certificate_check.cpp,
-// io/cycloidal_certificate_check.cpp, io/independent_certificate.cpp,
-// io/bezier_certificate.cpp): fail a claim with a reason, read a key, read a
+// The small JSON helpers of the prover-side certificate code
+// (certificate/write/prover_self_check.cpp, the writers of
+// certificate/write/): fail a claim with a reason, read a key, read a
 // bounded rational, and run a checker into a CertificateCheck verdict.
 //
 // Statement. A checker is a sequence of claims; the first that does not hold
@@ -11,8 +11,8 @@
 // Rationals are size-bounded before they are parsed (denial of service,
 // issue 15): a forged 10^6-digit number costs nothing.
 // Requirements: nlohmann::json documents; rationals are number/rational_traits.hpp's.
-#include "certified/solution.hpp"
-#include "io/certificate_result.hpp"
+#include "solution/solution.hpp"
+#include "certificate/certificate_result.hpp"
 #include "io/scene_reader.hpp"
 #include "number/rational_traits.hpp"
 
@@ -125,8 +125,8 @@ inline void require_same_intervals(const std::vector<std::pair<Instant, Instant>
       reject("answer", what + " " + std::to_string(i + 1) + " differs from the one " + source + " give");
 }
 
-// The end of a proof certificate's writer (io/bezier_certificate.cpp,
-// io/independent_certificate.cpp): the writer has run its own checker on the
+// The end of a proof certificate's writer (certificate/write/bezier_certificate.cpp,
+// certificate/write/independent_certificate.cpp): the writer has run its own checker on the
 // certificate (`self`) and never writes a claim it cannot re-prove; it stamps
 // the seconds taken and fills the proved run's Solution with what both proofs
 // share (the caller adds its own counters and details).

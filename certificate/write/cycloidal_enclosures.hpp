@@ -1,6 +1,6 @@
 #pragma once
 // The enclosures the cycloidal certificate's claims rest on
-// (io/cycloidal_certificate.hpp), shared by its writer and its checker: MPFI
+// (certificate/write/cycloidal_certificate.hpp), shared by its writer and its checker: MPFI
 // at a fixed precision, Δ, Δ', g_k and the static test of
 // kernel/cycloidal_motion.hpp / kernel/contact_status.hpp at a rational
 // instant or over a rational interval.

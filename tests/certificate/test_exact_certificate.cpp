@@ -1,9 +1,9 @@
-// Certificates (io/certificate.hpp) and their checker
-// (io/certificate_check.hpp): Descartes' rule on intervals, certificates
+// Certificates (certificate/write/exact_certificate.hpp) and their checker
+// (certificate/check_certificate.hpp): Descartes' rule on intervals, certificates
 // of the shipped cases accepted, and tampered ones rejected with the claim named.
-#include "io/certificate.hpp"
+#include "certificate/write/exact_certificate.hpp"
 #include "exact/certificate_algebra.hpp"
-#include "io/certificate_check.hpp"
+#include "certificate/check_certificate.hpp"
 #include "exact/descartes.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/scenes.hpp"

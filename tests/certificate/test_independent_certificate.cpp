@@ -1,4 +1,4 @@
-// The independent-motion certificate (io/independent_certificate.hpp, checked
+// The independent-motion certificate (certificate/write/independent_certificate.hpp, checked
 // by eccd-check: certificate/check/independent_certificate.cpp): cases
 // certified in 2D and 3D (bodies that stop, stand still or turn in place),
 // their certificates VALID, and tampered copies (a moved bracket, a flipped
@@ -6,7 +6,7 @@
 // exclusion tree cut short) REJECTED naming the claim.
 #include "api/certify.hpp"
 #include "api/solve.hpp"
-#include "io/independent_certificate.hpp"
+#include "certificate/write/independent_certificate.hpp"
 #include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,9 +1,9 @@
-// The cycloidal certificate (io/cycloidal_certificate.hpp): 003 Example 1
+// The cycloidal certificate (certificate/write/cycloidal_certificate.hpp): 003 Example 1
 // certified, its certificate VALID, and tampered copies REJECTED naming the
 // claim; a touch scene gives an incomplete certificate whose ε is checked.
 #include "api/certify.hpp"
 #include "api/solve.hpp"
-#include "io/cycloidal_certificate.hpp"
+#include "certificate/write/cycloidal_certificate.hpp"
 #include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>

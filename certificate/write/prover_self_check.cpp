@@ -1,18 +1,15 @@
-// The certificate checker (io/certificate_check.hpp). Deliberately simple:
-// it includes no root isolation and no CCD driver, only the exact algebra of
+// The prover-side self-check of eccd-certificate/2
+// (certificate/write/prover_self_check.hpp). Deliberately simple: it includes
+// no root isolation and no CCD driver, only the exact algebra of
 // exact/certificate_algebra.hpp, Descartes' rule and the timeline-to-answer step.
-#include "io/certificate_check.hpp"
+#include "certificate/write/prover_self_check.hpp"
 
-#include "io/certificate.hpp"
-#include "io/certificate_json.hpp"
-#include "io/cycloidal_certificate.hpp"
-#include "io/independent_certificate.hpp"
-#include "io/bezier_certificate.hpp"
+#include "certificate/write/certificate_json.hpp"
+#include "certificate/write/exact_certificate.hpp"
 #include "exact/certificate_algebra.hpp"
 #include "exact/descartes.hpp"
-#include "kernel/collision_timeline.hpp"
 #include "io/scene_reader.hpp"
-#include "certificate/check/verdict.hpp"
+#include "kernel/collision_timeline.hpp"
 
 #include <map>
 #include <optional>
@@ -507,47 +504,9 @@ struct Checker {
 
 }  // namespace
 
-CertificateCheck check_certificate_with_prover_algebra(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
+CertificateCheck prover_self_check(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
   Checker c{s, scene_doc, cert, certificate_algebra(s), {}, {}, {}, 0, 0, 0, 0, {}};
   return run_checker([&] { c.run(); }, c.checked);
-}
-
-CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
-  // eccd-certificate/2, eccd-bezier-certificate/2, eccd-cycloidal-certificate/2, eccd-independent-certificate/3
-  // (and anything else a shared-parameter scene is given): the independent checker, eccd-check's library (certificate/check/),
-  // on the scene's own text and the certificate.
-  if (cycloidal_certificate_scene(s)) {  // a cycloidal scene has one kind of certificate: say which when given another
-    const json fmt = cert.is_object() && cert.contains("format") ? cert["format"] : json();
-    if (fmt != kCycloidalCertificateFormat && fmt != "eccd-cycloidal-certificate/1") {
-      CertificateCheck out;
-      out.failed_claim = "certificate format";
-      out.reason = std::string("format: expected \"") + kCycloidalCertificateFormat + "\" for a cycloidal scene, got " + fmt.dump();
-      return out;
-    }
-  }
-  const std::string scene_text = s.source_text.empty() ? scene_doc.dump() : s.source_text;
-  const check::Verdict v = check::check_certificate_text(scene_text, s.path.empty() ? std::string("scene") : s.path, cert.dump(), "certificate");
-  CertificateCheck out;
-  out.valid = v.outcome == check::Outcome::valid;
-  out.checked = v.checked;
-  if (!out.valid) {
-    out.failed_claim = v.outcome == check::Outcome::unreadable && v.claim == "input" ? "certificate format" : v.claim;
-    out.reason = v.reason;
-  }
-  return out;
-}
-
-CertificateCheck check_certificate_text(const Scene& s, const nlohmann::json& scene_doc, const std::string& cert_text,
-                                        const std::string& cert_label) {
-  std::string structure;
-  nlohmann::json cert = parse_json_document(cert_text, cert_label, &structure);
-  if (!structure.empty()) {
-    CertificateCheck out;
-    out.failed_claim = "certificate format";
-    out.reason = structure;
-    return out;
-  }
-  return check_certificate(s, scene_doc, cert);
 }
 
 }  // namespace eccd

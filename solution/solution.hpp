@@ -9,9 +9,12 @@
 // solution_of turns any pipeline's PipelineResult<T> (kernel/cd_disc.hpp;
 // double, MPFR, intervals or rationals) into one; api/solve.cpp fills in what
 // was run, io/solution_json.hpp writes it as `eccd solve --json` does.
-// It lives here, below io/, because io/ writes it and the certified ladder
-// (certified/ladder.hpp) returns it; api/solution.hpp is its public name.
-#include "certified/arithmetic.hpp"
+// It lives in solution/, just above kernel/, because several layers share it:
+// the certified ladder (certified/ladder.hpp) returns it, io/ writes it, the
+// certificate writers (certificate/write/) fill it and api/ returns it
+// (api/solution.hpp is its public name).
+#include "solution/arithmetic.hpp"
+#include "solution/escalation.hpp"
 #include "kernel/answer.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/contact_status.hpp"
@@ -22,13 +25,6 @@
 #include <vector>
 
 namespace eccd {
-
-struct Escalation {
-  std::string rung;    // "interval", "mpfi:256", ...
-  std::string reason;  // why that rung gave up ("skipped: ..." when it was not tried)
-  double spent_ms = 0;   // the time the rung took before it gave up (0 when skipped)
-  double budget_ms = 0;  // the time it was allowed (certified/ladder.hpp, "Cost guarantee"; 0: not tried)
-};
 
 struct Solution {
   // What was run.

@@ -6,9 +6,9 @@
 // once (a FIFO serving two scenes cannot pair one scene's certificate with
 // another); continuous touching is in the certified answer and in regress.
 #include "compare/regress.hpp"
-#include "io/certificate.hpp"
+#include "certificate/write/exact_certificate.hpp"
 #include "exact/certificate_algebra.hpp"
-#include "io/certificate_check.hpp"
+#include "certificate/check_certificate.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/cli.hpp"
 

@@ -1,11 +1,11 @@
-// The Bézier certificate (io/bezier_certificate.hpp): certify --arith
+// The Bézier certificate (certificate/write/bezier_certificate.hpp): certify --arith
 // certified's route for 3D scenes. Certificates of cases/spheres (known
 // answers: the scene notes give the instants in closed form) are VALID, and
 // one tampered copy per claim kind is REJECTED naming that claim; the CLI
 // writes a VALID certificate, says its route, and writes nothing on error.
 #include "api/certify.hpp"
 #include "api/solve.hpp"
-#include "io/bezier_certificate.hpp"
+#include "certificate/write/bezier_certificate.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/support/cli.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The certificate of an exact answer: everything a simpler program needs to
-// re-check it without the solver (io/certificate_check.hpp checks it).
+// re-check it without the solver (certificate/check/ checks it; certificate/write/prover_self_check.hpp is the prover-side self-check).
 //
 // Statement. The exact pipeline (exact/cd_disc_exact.hpp in 2D,
 // kernel/ccd_projection.hpp in 3D) decides the status of two moving objects
@@ -30,8 +30,8 @@
 // Brackets are refined (never moved) until all these claims hold, so the
 // certificate's brackets may be narrower than `eccd solve`'s.
 // Requirements: a scene with rational motions.
-#include "certified/solution.hpp"
-#include "io/certificate_result.hpp"
+#include "solution/solution.hpp"
+#include "certificate/certificate_result.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>

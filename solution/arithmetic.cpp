@@ -1,5 +1,5 @@
-// Arithmetic names (certified/arithmetic.hpp).
-#include "certified/arithmetic.hpp"
+// Arithmetic names (solution/arithmetic.hpp).
+#include "solution/arithmetic.hpp"
 
 #include <stdexcept>
 

@@ -1,12 +1,12 @@
-// The Bézier certificate's writer and checker (io/bezier_certificate.hpp).
-#include "io/bezier_certificate.hpp"
+// The Bézier certificate's writer and checker (certificate/write/bezier_certificate.hpp).
+#include "certificate/write/bezier_certificate.hpp"
 
 #include "certified/bezier_proof.hpp"
-#include "io/certificate.hpp"
-#include "io/certificate_check.hpp"
-#include "io/certificate_json.hpp"
-#include "io/cycloidal_certificate.hpp"
-#include "io/independent_certificate.hpp"
+#include "certificate/write/exact_certificate.hpp"
+#include "certificate/check_certificate.hpp"
+#include "certificate/write/certificate_json.hpp"
+#include "certificate/write/cycloidal_certificate.hpp"
+#include "certificate/write/independent_certificate.hpp"
 #include "certified/krawczyk.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/characteristic_polynomial.hpp"
@@ -26,11 +26,11 @@ namespace {
 
 using json = nlohmann::json;
 using namespace certificate_json;
-using krawczyk_detail::Box;
-using krawczyk_detail::Nets;
-using krawczyk_detail::System;
+using krawczyk_method::Box;
+using krawczyk_method::Nets;
+using krawczyk_method::System;
 using I = MpfiInterval;
-using krawczyk_detail::restrict_axis;
+using krawczyk_method::restrict_axis;
 
 const int kBits = 160;
 

@@ -4,7 +4,7 @@
 //
 // Statement. A cycloidal motion (003 section V) is not rational, so Δ(t), the
 // discriminant of f(λ; t) = det(λA(t) - B(t)), is not a polynomial and the
-// exact certificate (io/certificate.hpp: Descartes' rule on integer
+// exact certificate (certificate/write/exact_certificate.hpp: Descartes' rule on integer
 // polynomials) cannot apply. Its claims are proved instead by interval
 // evaluation in MPFI at the certificate's `precision_bits` (outward rounding:
 // every enclosure holds the exact value), of Δ, Δ' (forward-mode derivative)
@@ -37,8 +37,8 @@
 // nothing but these enclosures and the timeline-to-answer step: no
 // subdivision search, no refinement, no solver.
 // Requirements: a 2D scene whose motions are static or cycloidal.
-#include "certified/solution.hpp"
-#include "io/certificate_result.hpp"
+#include "solution/solution.hpp"
+#include "certificate/certificate_result.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -53,9 +53,6 @@ bool cycloidal_certificate_scene(const Scene& s);
 // The certificate; `solved` receives the certified run's Solution with the
 // certificate's answer. Throws CertificationError when a claim cannot be proved.
 nlohmann::json make_cycloidal_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved = nullptr);
-
-// The checker's verdict on `cert` for scene `s` (scene_doc: the scene file's JSON).
-CertificateCheck check_cycloidal_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
 
 // Bounds (denial of service): precision 64..1024 bits, rationals of at most
 // 1024 bits, at most 20000 gap points and 4000 timeline entries.

@@ -24,8 +24,8 @@
 // Requirements: a 2D or 3D scene with "parameters": "independent" and
 // rational motions. Formats /1 and /2 (checked with the prover's code) are
 // refused by eccd-check with a message that says so.
-#include "certified/solution.hpp"
-#include "io/certificate_result.hpp"
+#include "solution/solution.hpp"
+#include "certificate/certificate_result.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>

@@ -16,8 +16,8 @@
 // with it before writing (a claim it cannot re-prove is never written).
 // Requirements: a 3D scene with shared parameters and rational motions; the
 // writer refuses (CertificationError) when the proof does not decide the scene.
-#include "certified/solution.hpp"
-#include "io/certificate_result.hpp"
+#include "solution/solution.hpp"
+#include "certificate/certificate_result.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -34,7 +34,7 @@ bool bezier_certificate_scene(const Scene& s);
 nlohmann::json make_bezier_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved = nullptr);
 
 // `eccd certify --arith certified`: the Bézier certificate when the scene is one and prove_bezier decides it,
-// else make_certificate's (io/certificate.hpp: exact, cycloidal or independent). `route` receives "bezier",
+// else make_certificate's (certificate/write/exact_certificate.hpp: exact, cycloidal or independent). `route` receives "bezier",
 // "exact", "cycloidal" or "independent"; `why` why the Bézier route was not taken ("" when it was).
 nlohmann::json make_certified_mode_certificate(const Scene& s, const nlohmann::json& scene_doc, std::string& route, std::string& why,
                                                Solution* solved = nullptr);

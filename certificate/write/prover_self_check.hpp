@@ -1,7 +1,11 @@
 #pragma once
-// The certificate checkers' entry point, and the prover-algebra checker of
-// eccd-certificate/2: re-checks a certificate (io/certificate.hpp) against
-// its scene without calling the solver.
+// The prover-side self-check of eccd-certificate/2: re-checks a certificate
+// (certificate/write/exact_certificate.hpp) against its scene without calling
+// the solver, on the prover's own exact algebra. It is not the independent
+// checker (certificate/check/, eccd-check, which shares no code with the
+// prover and is what the commands call: certificate/check_certificate.hpp);
+// it is a second opinion for the mutation campaign
+// (tests/certificate/test_mutation_campaign.cpp).
 //
 // Statement. It trusts only the scene reader and the exact algebra of
 // exact/certificate_algebra.hpp (f, the projection polynomial, the evidence
@@ -38,37 +42,22 @@
 // Every approx is a decimal inside its bracket; every integer is range
 // checked (no truncation); duplicate keys are refused (one strict parse);
 // every rational has at most certificate_max_bits(n, τ) bits
-// (io/certificate.hpp: 4τ + 1024, and n²·b <= 2^24 but >= 256; τ the bit
+// (certificate/write/exact_certificate.hpp: 4τ + 1024, and n²·b <= 2^24 but >= 256; τ the bit
 // size of the projection's integer coefficients, n its degree), every factor
 // coefficient τ + 2n + 64, at most 8n + 64 gap points,
 // multiplicities at most n = deg P and their degree sum equal to n, before
 // any arithmetic, so a forged certificate cannot make the checker slow.
 // The first claim that fails is reported by name with the reason and the JSON
 // place; a malformed part is REJECTED, never an internal error.
-#include "io/certificate_result.hpp"
+#include "certificate/certificate_result.hpp"
 #include "kernel/scene.hpp"
 
 #include <nlohmann/json.hpp>
-#include <string>
-#include <vector>
 
 namespace eccd {
 
-// Checks a certificate of any kind. An eccd-certificate/2 goes to the
-// independent checker (certificate/check/verdict.hpp, the library of
-// eccd-check), which shares no code with the prover; the other kinds
-// (cycloidal, independent, Bézier) still go to their checkers in io/, which
-// use some of the prover's code (docs/checking.md says which).
-CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
 // The checker of eccd-certificate/2 described above, on the prover's algebra
-// (exact/certificate_algebra.hpp): kept as a second opinion for the mutation
-// campaign (tests/certificate/test_mutation_campaign.cpp), not called by the
-// commands.
-CertificateCheck check_certificate_with_prover_algebra(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
-// The same from the certificate's bytes (read once by the caller): a duplicate
-// key or over-deep nesting is REJECTED naming its JSON place; malformed JSON
-// throws SceneError "LABEL: line L, column C: ..." (an unreadable file).
-CertificateCheck check_certificate_text(const Scene& s, const nlohmann::json& scene_doc, const std::string& cert_text,
-                                        const std::string& cert_label);
+// (exact/certificate_algebra.hpp).
+CertificateCheck prover_self_check(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
 
 }  // namespace eccd
