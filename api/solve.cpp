@@ -235,7 +235,16 @@ Solution run_floating_cycloidal(const Scene& scene, const SolveOptions& opt, con
 // if it decides everything; otherwise, or if the run's deadline passes, the
 // double answer stands. Both runs' times count in time_ms, and the work
 // counter second_look says that it ran (1) and decided (2).
+// Only where every reason is a sign too close to zero for double's bound: an overflow, a work bound or
+// the time budget stays the double run's answer.
 constexpr int kSecondLookBits = 128;
+
+bool only_too_close(const Solution& s) {
+  if (s.undecided_reasons.empty()) return false;
+  for (const auto& r : s.undecided_reasons)
+    if (r.find("too close to zero") == std::string::npos) return false;
+  return true;
+}
 
 Solution second_look_2d(const Scene& scene, const SolveOptions& opt, Solution first) {
   if (deadline_passed()) return first;
@@ -264,7 +273,7 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
   }
   Solution s = run_floating_2d(scene, opt, like);
   if constexpr (std::is_same_v<T, Bounded<double>>)
-    if (!s.decided()) s = second_look_2d(scene, opt, std::move(s));
+    if (!s.decided() && only_too_close(s)) s = second_look_2d(scene, opt, std::move(s));
   s.method = "cd-disc";
   return s;
 }
