@@ -223,6 +223,43 @@ Solution run_floating_cycloidal(const Scene& scene, const SolveOptions& opt, con
   return s;
 }
 
+// The guarded 2D face's second look. Where the guarded double run leaves
+// instants undecided, the reason is mostly its bound, not the algorithm: at a
+// near miss Δ's smallest values lie below what double resolves, and the
+// errors are already in Δ's coefficients, so no evaluation of those
+// coefficients can decide there. The same pipeline (same basis, input mode
+// and variant) then runs once more with a running error bound in MPFR of
+// kSecondLookBits bits, from the scene's numbers rounded to that precision:
+// its claims, like the double run's, are proved about the scene's exact
+// numbers (number/running_error.hpp). Its answer replaces the double one only
+// if it decides everything; otherwise, or if the run's deadline passes, the
+// double answer stands. Both runs' times count in time_ms, and the work
+// counter second_look says that it ran (1) and decided (2).
+// Only where every reason is a sign too close to zero for double's bound: an overflow, a work bound or
+// the time budget stays the double run's answer.
+constexpr int kSecondLookBits = 128;
+
+bool only_too_close(const Solution& s) {
+  if (s.undecided_reasons.empty()) return false;
+  for (const auto& r : s.undecided_reasons)
+    if (r.find("too close to zero") == std::string::npos) return false;
+  return true;
+}
+
+Solution second_look_2d(const Scene& scene, const SolveOptions& opt, Solution first) {
+  if (deadline_passed()) return first;
+  SolveOptions wide = opt;
+  wide.arith = Arithmetic::mpfr(kSecondLookBits);
+  const auto start = std::chrono::steady_clock::now();
+  Solution s = run_floating_2d(scene, wide, Bounded<Mpfr>(Mpfr(mpq_class(1), kSecondLookBits), 0));
+  const double ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+  const bool decided = s.decided();
+  Solution& out = decided ? s : first;
+  out.time_ms = first.time_ms + ms;
+  out.work.emplace_back("second_look", decided ? 2 : 1);
+  return std::move(out);
+}
+
 template <class T>
 Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
   if (scene.dim == 3) return run_floating_3d(scene, opt, like);
@@ -235,6 +272,8 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
                                      "(its roots of Δ are isolated by validated subdivision): use --guard bound");
   }
   Solution s = run_floating_2d(scene, opt, like);
+  if constexpr (std::is_same_v<T, Bounded<double>>)
+    if (!s.decided() && only_too_close(s)) s = second_look_2d(scene, opt, std::move(s));
   s.method = "cd-disc";
   return s;
 }

@@ -146,15 +146,16 @@ Bern<T> to_bernstein(const Poly<T>& p, int n) {  // n >= degree(p)
   if (p.is_zero()) return r;
   const T& like = p.c.front();
   const std::vector<T>& cn = binomial_row(n, like);
-  [[maybe_unused]] const double* inv = nullptr;  // 1 / C(n, i) for the guard's bounds, when the row is exact
+  // The guard's bound factors per C(n, i), so that a term's bound needs no division (number/running_error_loops.hpp).
+  [[maybe_unused]] const running_error_loops::DivisorFactors* factors = nullptr;
   if constexpr (std::is_same_v<T, Bounded<double>>) {
-    thread_local std::vector<double> inv_row;
-    if (running_error_loops::inverse_magnitudes(std::span<const T>(cn), inv_row)) inv = inv_row.data();
+    thread_local running_error_loops::DivisorFactors row_factors;
+    if (running_error_loops::divisor_factors(std::span<const T>(cn), row_factors)) factors = &row_factors;
   }
   for (int k = 0; k <= n; ++k) {
     const std::vector<T>& ck = binomial_row(k, like);
     if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
-      r.b[k] = running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1, inv);
+      r.b[k] = running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1, factors);
       continue;
     }
     T acc = T(0);

@@ -53,38 +53,55 @@ using BD = Bounded<double>;
 inline constexpr double kU = 0x1p-53;
 inline constexpr double kTiny = 0x1p-1072;  // per term or step: value and bound products that underflow
 
+// The products of convolve below on plain arrays: values xv, yv, bounds xe, ye, and yae = |yv| + ye; rv, mu
+// and E (x.size() + y.size() - 1 entries, zero on entry) receive the value sums, the sums of |p| + |r| and the
+// propagated bounds. The arrays do not overlap, and the parameters say so (__restrict, honoured for the
+// parameters of a function that is not inlined): the compiler then runs the inner loop on vectors, each lane
+// one output with its own products and sums in the scalar loop's order, so the values are bit for bit the
+// scalar ones.
+[[gnu::noinline]] inline void convolve_arrays(std::size_t m1, std::size_t n1, const double* __restrict xv,
+                                              const double* __restrict xe, const double* __restrict yv,
+                                              const double* __restrict ye, const double* __restrict yae,
+                                              double* __restrict rv, double* __restrict mu, double* __restrict E) {
+  for (std::size_t i = 0; i < m1; ++i) {
+    const double a = xv[i], aa = std::fabs(a), ae = xe[i];
+    double* __restrict r = rv + i;
+    double* __restrict m = mu + i;
+    double* __restrict e = E + i;
+    for (std::size_t j = 0; j < n1; ++j) {
+      const double p = a * yv[j];
+      const double s = r[j] + p;
+      r[j] = s;
+      m[j] += std::fabs(p) + std::fabs(s);
+      e[j] += aa * ye[j] + ae * yae[j];
+    }
+  }
+}
+
 // out[k] = sum_{i+j=k} x[i] * y[j], accumulated i outer, j inner from 0 (the
 // generic loop's order); out.size() == x.size() + y.size() - 1.
 inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD> out) {
   const std::size_t m1 = x.size(), n1 = y.size(), K = out.size();
-  thread_local std::vector<double> yv, ya, ye, yae, rv, mu, E;
-  yv.resize(n1); ya.resize(n1); ye.resize(n1); yae.resize(n1);
+  thread_local std::vector<double> buf;
+  buf.assign(2 * m1 + 3 * n1 + 3 * K, 0.0);  // one allocation per thread and size class: the arrays below
+  double* xv = buf.data();
+  double* xe = xv + m1;
+  double* yv = xe + m1;
+  double* ye = yv + n1;
+  double* yae = ye + n1;
+  double* rv = yae + n1;
+  double* mu = rv + K;
+  double* E = mu + K;
+  for (std::size_t i = 0; i < m1; ++i) {
+    xv[i] = x[i].value();
+    xe[i] = x[i].bound();
+  }
   for (std::size_t j = 0; j < n1; ++j) {
     yv[j] = y[j].value();
-    ya[j] = std::fabs(yv[j]);
     ye[j] = y[j].bound();
-    yae[j] = ya[j] + ye[j];
+    yae[j] = std::fabs(yv[j]) + ye[j];
   }
-  rv.assign(K, 0.0);
-  mu.assign(K, 0.0);
-  E.assign(K, 0.0);
-  // The buffers do not overlap (__restrict: the compiler may then run the inner loop on vectors).
-  const double* __restrict yvp = yv.data();
-  const double* __restrict yep = ye.data();
-  const double* __restrict yaep = yae.data();
-  for (std::size_t i = 0; i < m1; ++i) {
-    const double xv = x[i].value(), xa = std::fabs(xv), xe = x[i].bound();
-    double* __restrict r = rv.data() + i;
-    double* __restrict m = mu.data() + i;
-    double* __restrict e = E.data() + i;
-    for (std::size_t j = 0; j < n1; ++j) {
-      const double p = xv * yvp[j];
-      const double s = r[j] + p;
-      r[j] = s;
-      m[j] += std::fabs(p) + std::fabs(s);
-      e[j] += xa * yep[j] + xe * yaep[j];
-    }
-  }
+  convolve_arrays(m1, n1, xv, xe, yv, ye, yae, rv, mu, E);
   for (std::size_t k = 0; k < K; ++k) {
     const std::size_t lo = k + 1 > n1 ? k + 1 - n1 : 0, hi = std::min(k, m1 - 1);
     const double terms = hi >= lo ? double(hi - lo + 1) : 0.0;
@@ -195,35 +212,58 @@ inline BD horner(std::span<const BD> c, const BD& t) {
 // infinite where |d| <= ed; a rounding of the denominator makes it at most
 // (1 + u) times larger, so its quotient at least (1 - u) times smaller: the
 // same count of roundings as above, at most 14 + terms deep.
-// inv_abs_d, if given, holds fl(1 / |d[i]|) for divisors without error
-// (every ed = 0, as the binomials below 2^53): the bound ep / |d| is then
-// formed as ep * inv_abs_d[i] (two roundings instead of five, each making it
-// at least (1 - u) times smaller: inside the same count), so that a term
-// costs the plain division of its value and no second one.
-inline BD sum_of_ratios(const BD* a, const BD* c, const BD* d, int terms, const double* inv_abs_d = nullptr) {
+// f, if given, holds per divisor the two factors of that bound (divisor_factors
+// below): the quotient's bound is then formed as |p| f.alpha[i] + ep f.beta[i],
+// two products instead of a second division, so that a term costs the plain
+// division of its value and no other. Each factor is at least (1 - u)^4 times
+// its exact value (four roundings of non-negative quantities, each in the
+// direction that could make it smaller), as many as the division route's
+// difference, product and quotient and one product more: inside the same count.
+struct DivisorFactors {
+  std::vector<double> alpha, beta;  // per divisor: ed / (|d| (|d| - ed)) and 1 / (|d| - ed), both rounded
+};
+inline BD sum_of_ratios(const BD* a, const BD* c, const BD* d, int terms, const DivisorFactors* f = nullptr) {
   double acc = 0, E = 0, mu = 0;
+  const double* alpha = f ? f->alpha.data() : nullptr;
+  const double* beta = f ? f->beta.data() : nullptr;
   for (int i = 0; i < terms; ++i) {
     const double av = a[i].value(), cv = c[i].value(), dv = d[i].value();
-    const double ae = a[i].bound(), ce = c[i].bound(), de = d[i].bound();
+    const double ae = a[i].bound(), ce = c[i].bound();
     const double p = av * cv, q = p / dv;
     acc = acc + q;
-    const double pa = std::fabs(p), da = std::fabs(dv);
+    const double pa = std::fabs(p);
     const double ep = std::fabs(av) * ce + std::fabs(cv) * ae + ae * ce + (kU * pa + kTiny);
-    if (inv_abs_d) E += ep * inv_abs_d[i];
-    else if (!(da > de)) E = std::numeric_limits<double>::infinity();
-    else E += (pa * de + da * ep) / (da * (da - de));
+    if (f) {
+      E += pa * alpha[i] + ep * beta[i];
+    } else {
+      const double da = std::fabs(dv), de = d[i].bound();
+      if (!(da > de)) E = std::numeric_limits<double>::infinity();
+      else E += (pa * de + da * ep) / (da * (da - de));
+    }
     mu += std::fabs(q) + std::fabs(acc);
   }
   return BD(acc, (E + kU * mu + double(terms) * 2.0 * kTiny) * (1.0 + (double(terms) + 16.0) * 0x1p-50));
 }
 
-// fl(1 / |d[i]|) for i < size into out, if every d[i] is a non-zero value without error (else false: the
-// divisors' bounds enter each quotient's, and sum_of_ratios takes the general route).
-inline bool inverse_magnitudes(std::span<const BD> d, std::vector<double>& out) {
-  out.resize(d.size());
+// The factors of each quotient's bound by d[i] into out (see sum_of_ratios): for a divisor without error
+// alpha = 0 and beta = fl(1 / |d|); else, with w = fl(1 / fl(|d| fl(|d| - ed))), alpha = fl(ed w) and
+// beta = fl(|d| w). False if some |d[i]| <= ed[i] or a value is not finite: the quotient's bound is then
+// infinite or the factors meaningless, and sum_of_ratios takes the division route.
+inline bool divisor_factors(std::span<const BD> d, DivisorFactors& out) {
+  out.alpha.resize(d.size());
+  out.beta.resize(d.size());
   for (std::size_t i = 0; i < d.size(); ++i) {
-    if (d[i].bound() != 0 || !(std::fabs(d[i].value()) > 0) || !std::isfinite(d[i].value())) return false;
-    out[i] = 1.0 / std::fabs(d[i].value());
+    const double da = std::fabs(d[i].value()), de = d[i].bound();
+    if (!(da > de) || !std::isfinite(da) || !std::isfinite(de)) return false;
+    if (de == 0) {
+      out.alpha[i] = 0;
+      out.beta[i] = 1.0 / da;
+    } else {
+      const double w = 1.0 / (da * (da - de));
+      out.alpha[i] = de * w;
+      out.beta[i] = da * w;
+    }
+    if (!std::isfinite(out.alpha[i]) || !std::isfinite(out.beta[i])) return false;
   }
   return true;
 }

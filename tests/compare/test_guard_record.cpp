@@ -209,3 +209,24 @@ TEST_CASE("the guard flags the as-published error on a 3D keyframe scene, Bezier
   for (const auto& m : t.misses) UNSCOPED_INFO(m);
   CHECK(t.misses.empty());
 }
+
+// The guarded 2D double face's second look (api/solve.cpp): 003's Example 2 moved 1e-3 away, rounded input,
+// where double's bound is too wide to decide Δ's sign (the double run alone is undecided, the as-published
+// run claims a false collision). The 128-bit bounded run decides it, and its answer is the exact one.
+TEST_CASE("the guarded 2D double face decides by its second look where double's bound is too wide", "[guard-record]") {
+  const Scene s = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/paper003/example2-away-1e-3.json");
+  SolveOptions ex;
+  ex.arith = Arithmetic::exact();
+  const Solution exact = solve(s, ex);
+  const Solution grd = solve(s, options("double", Basis::bernstein, InputMode::rounded, Guard::bound));
+  long look = 0;
+  for (const auto& [name, n] : grd.work)
+    if (name == "second_look") look = n;
+  CHECK(look == 2);  // it ran and decided
+  CHECK(grd.decided());
+  CHECK(answer_difference(grd.answer, exact.answer).agrees);
+  CHECK_FALSE(grd.answer.collides);
+  const Solution pub = solve(s, options("double", Basis::bernstein, InputMode::rounded, Guard::none));
+  CHECK(pub.answer.collides);  // the as-published face's false collision, unchanged
+  for (const auto& [name, n] : pub.work) CHECK(name != "second_look");
+}

@@ -5,7 +5,7 @@
 // bit (the guard decides with the as-published numbers) and (b) have a bound
 // that contains the exact result computed in rationals from exact inputs
 // anywhere within the inputs' own bounds (the inputs are perturbed to the
-// ends of their bounds and inside). Degrees up to 90, past 56, where the
+// ends of their bounds and inside). Degrees up to 144 (2D Δ of motion degree 6), past 56, where the
 // binomial coefficients of double are rounded; and the binomial rows of
 // Bounded<double> are exact (bound 0) up to 2^53 and contain C(n, k) above.
 #include "kernel/bernstein.hpp"
@@ -109,7 +109,7 @@ TEST_CASE("running_error_loops: the one-pass bounds are those of Bounded's opera
 
 TEST_CASE("running_error_loops: Bernstein products hold the plain values and their bounds contain the exact product", "[running-error-loops]") {
   std::mt19937_64 rng(30);
-  for (int m : {0, 1, 5, 24, 36, 60})
+  for (int m : {0, 1, 5, 24, 36, 60, 144})
     for (int n : {0, 3, 24, 36, 50}) {
       INFO("degrees " << m << " x " << n);
       Input x = random_input(rng, m, true), y = random_input(rng, n, true);
@@ -179,7 +179,7 @@ TEST_CASE("running_error_loops: de Casteljau values and subdivision contain the 
 
 TEST_CASE("running_error_loops: the power-to-Bernstein conversion contains the exact coefficients", "[running-error-loops]") {
   std::mt19937_64 rng(33);
-  for (int n : {0, 1, 12, 36, 56, 57, 80}) {
+  for (int n : {0, 1, 12, 36, 56, 57, 80, 144}) {
     INFO("degree " << n);
     Input x = random_input(rng, n, true);
     const Bern<BD> b = to_bernstein(Poly<BD>(x.b), n);
@@ -187,6 +187,28 @@ TEST_CASE("running_error_loops: the power-to-Bernstein conversion contains the e
     const Bern<double> bp = to_bernstein(Poly<double>(x.plain), n);
     check_contains(b.b, be.b, bp.b);
   }
+}
+
+// The conversion's bounds against Bounded's operators term by term (a product, a division by C(n, i) and a
+// sum each): equal to rounding, for exact binomial rows (n <= 56) and rounded ones with bounds of their own
+// (n > 56, where each quotient's bound takes the divisor's error), and for a polynomial of lower degree.
+TEST_CASE("running_error_loops: the conversion's bounds are those of Bounded's operators, to rounding", "[running-error-loops]") {
+  std::mt19937_64 rng(35);
+  for (int n : {1, 12, 56, 57, 100, 144})
+    for (int deg : {n, n / 3}) {
+      INFO("degree " << deg << " in the basis of degree " << n);
+      Input x = random_input(rng, deg, true);
+      const Poly<BD> p(x.b);
+      const Bern<BD> fused = to_bernstein(p, n);
+      const BD like(1.0, 0);
+      const std::vector<BD>& cn = binomial_row(n, like);
+      std::vector<BD> generic(n + 1, BD(0));
+      for (int k = 0; k <= n; ++k) {
+        const std::vector<BD>& ck = binomial_row(k, like);
+        for (int i = 0; i <= k && i <= p.degree(); ++i) { BD term = ck[i] * p.c[i] / cn[i]; generic[k] = generic[k] + term; }
+      }
+      check_same_bounds(fused.b, generic);
+    }
 }
 
 TEST_CASE("running_error_loops: binomial rows of Bounded<double> are exact below 2^53 and contain C(n, k) above", "[running-error-loops]") {
