@@ -114,10 +114,16 @@ Instant to_global(const Instant& in, const Rational& t0, const Rational& dt, int
 Answer to_global(const Answer& a, const Rational& t0, const Rational& dt, int digits) {
   Answer g = a;
   auto map = [&](const Instant& i) { return to_global(i, t0, dt, digits); };
-  for (auto& [s, e] : g.intervals) { s = map(s); e = map(e); }
+  for (auto& [s, e] : g.intervals) {
+    s = map(s);
+    e = map(e);
+  }
   if (g.first_contact) g.first_contact = map(*g.first_contact);
   for (auto& c : g.contacts) c = map(c);
-  for (auto& [s, e] : g.contact_intervals) { s = map(s); e = map(e); }
+  for (auto& [s, e] : g.contact_intervals) {
+    s = map(s);
+    e = map(e);
+  }
   for (auto& u : g.undecided) u = map(u);
   return g;
 }
@@ -146,14 +152,16 @@ Scene pair_frame_scene(const Animation& anim, std::size_t i, std::size_t j, std:
   if (i >= anim.bodies.size() || j >= anim.bodies.size() || i == j)
     throw std::invalid_argument("pair_frame_scene: bodies " + std::to_string(i) + " and " + std::to_string(j) + " of " +
                                 std::to_string(anim.bodies.size()));
-  if (k >= anim.frames()) throw std::invalid_argument("pair_frame_scene: frame " + std::to_string(k) + " of " + std::to_string(anim.frames()));
+  if (k >= anim.frames())
+    throw std::invalid_argument("pair_frame_scene: frame " + std::to_string(k) + " of " +
+                                std::to_string(anim.frames()));
   const AnimationBody& A = anim.bodies[i];
   const AnimationBody& B = anim.bodies[j];
   Scene s;
   s.path = anim.path;
   s.name = anim.name + "/frame-" + std::to_string(k) + "/" + A.name + "--" + B.name;
-  s.note = "frame " + std::to_string(k) + " of animation " + anim.name + ": local time tau = (t - " + anim.times[k].get_str() +
-           ") / (" + anim.times[k + 1].get_str() + " - " + anim.times[k].get_str() + ")";
+  s.note = "frame " + std::to_string(k) + " of animation " + anim.name + ": local time tau = (t - " +
+           anim.times[k].get_str() + ") / (" + anim.times[k + 1].get_str() + " - " + anim.times[k].get_str() + ")";
   s.dim = anim.dim;
   s.a = SceneObject{A.Q, keyframe_motion(A.poses[k], A.poses[k + 1], anim.dim)};
   s.b = SceneObject{B.Q, keyframe_motion(B.poses[k], B.poses[k + 1], anim.dim)};
@@ -232,11 +240,14 @@ FrameSides KeptPlaneCheck::check(const Plane& plane, std::size_t i, std::size_t 
   return keyframe_plane_check(plane, body(i), body(j));
 }
 
-Rational body_shape_radius(const Animation& anim, std::size_t body) { return shape_radius(anim.bodies.at(body).Q, anim.dim); }
+Rational body_shape_radius(const Animation& anim, std::size_t body) {
+  return shape_radius(anim.bodies.at(body).Q, anim.dim);
+}
 Rational key_deformation_bound(const KeyPose& pose, int dim) { return deformation_bound(pose, dim); }
 
 AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
-  if (opt.threads < 1) throw std::invalid_argument("--threads " + std::to_string(opt.threads) + ": expected at least 1");
+  if (opt.threads < 1)
+    throw std::invalid_argument("--threads " + std::to_string(opt.threads) + ": expected at least 1");
   if (opt.shard_count < 1 || opt.shard_index >= opt.shard_count)
     throw std::invalid_argument("--shard " + std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count) +
                                 ": expected i/n with 0 <= i < n");
@@ -288,8 +299,12 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
     std::vector<std::size_t> order(n);
     for (std::size_t b = 0; b < n; ++b) order[b] = b;
     std::vector<Rational> lo(n), hi(n);
-    for (std::size_t b = 0; b < n; ++b) { lo[b] = sph[b].centre[0] - sph[b].radius; hi[b] = sph[b].centre[0] + sph[b].radius; }
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lo[x] < lo[y] || (lo[x] == lo[y] && x < y); });
+    for (std::size_t b = 0; b < n; ++b) {
+      lo[b] = sph[b].centre[0] - sph[b].radius;
+      hi[b] = sph[b].centre[0] + sph[b].radius;
+    }
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t x, std::size_t y) { return lo[x] < lo[y] || (lo[x] == lo[y] && x < y); });
     std::vector<PairTask> tasks;
     for (std::size_t u = 0; u < n; ++u) {
       const std::size_t x = order[u];
@@ -330,8 +345,9 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
   std::vector<std::size_t> work_pairs;
   for (std::size_t p = 0; p < by_pair.size(); ++p)
     if (!by_pair[p].empty()) work_pairs.push_back(p);
-  std::stable_sort(work_pairs.begin(), work_pairs.end(),
-                   [&](std::size_t x, std::size_t y) { return by_pair[x].size() > by_pair[y].size(); });  // longest first
+  std::stable_sort(work_pairs.begin(), work_pairs.end(), [&](std::size_t x, std::size_t y) {
+    return by_pair[x].size() > by_pair[y].size();
+  });  // longest first
   std::vector<std::vector<TaskResult>> out(frame_tasks.size());
   std::vector<std::vector<double>> task_seconds(frame_tasks.size());
   for (std::size_t f = 0; f < frame_tasks.size(); ++f) {
@@ -368,7 +384,8 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
 #ifdef ECCD_ANIMATE_PLANES
           // Only a plane from the frame just before (a frame dropped by stage 1 in between forgets it).
           auto kept_separates = [&]() {
-            const FrameSides f = fast_planes ? fast_planes->check(kept_prepared, task.a, task.b, k) : FrameSides::unknown;
+            const FrameSides f =
+                fast_planes ? fast_planes->check(kept_prepared, task.a, task.b, k) : FrameSides::unknown;
             if (f != FrameSides::unknown) return f == FrameSides::separates;
             return plane_separates_on_frame(scene_of(), *kept, so) == PlaneCheck::separates;
           };
@@ -431,14 +448,18 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
       TaskResult& r = out[f][t];
       if (r.error) std::rethrow_exception(r.error);
       fs.seconds += task_seconds[f][t];
-      if (r.plane_settled) { ++fs.separating_plane; continue; }
+      if (r.plane_settled) {
+        ++fs.separating_plane;
+        continue;
+      }
       ++fs.continuous_test;
       if (!r.solved) {
         res.undecided.push_back({k, task.a, task.b, r.budget_why});
         ++fs.undecided;
         continue;
       }
-      PairFrameAnswer pa{k, task.a, task.b, to_global(r.solution.answer, anim.times[k], dt, float_digits), r.solution.answer};
+      PairFrameAnswer pa{k, task.a, task.b, to_global(r.solution.answer, anim.times[k], dt, float_digits),
+                         r.solution.answer};
       if (opt.keep_tested) res.tested.push_back(pa);
       if (!r.solution.decided()) {
         std::string why;
@@ -486,7 +507,9 @@ nlohmann::ordered_json animation_result_to_json(const AnimationResult& r) {
   j["frames"] = r.frames;
   j["pairs_per_frame"] = r.pairs_per_frame;
   j["mode"] = r.all_intervals ? "all-intervals" : "first-contact";
-  auto pair = [&](std::size_t a, std::size_t b) { return nlohmann::ordered_json::array({r.body_names[a], r.body_names[b]}); };
+  auto pair = [&](std::size_t a, std::size_t b) {
+    return nlohmann::ordered_json::array({r.body_names[a], r.body_names[b]});
+  };
   j["events"] = nlohmann::ordered_json::array();
   for (const auto& e : r.events) {
     nlohmann::ordered_json ev;
@@ -494,19 +517,28 @@ nlohmann::ordered_json animation_result_to_json(const AnimationResult& r) {
     ev["pair"] = pair(e.body_a, e.body_b);
     ev["answer"] = nlohmann::ordered_json::parse(answer_to_json(e.answer).dump());
     drop_null_brackets(ev["answer"]);
-    ev["local_answer"] = nlohmann::ordered_json::parse(answer_to_json(e.local).dump());  // in τ (the pair-frame's scene)
+    ev["local_answer"] =
+        nlohmann::ordered_json::parse(answer_to_json(e.local).dump());  // in τ (the pair-frame's scene)
     drop_null_brackets(ev["local_answer"]);
     j["events"].push_back(ev);
   }
   j["undecided"] = nlohmann::ordered_json::array();
-  for (const auto& u : r.undecided) j["undecided"].push_back({{"frame", u.frame}, {"pair", pair(u.body_a, u.body_b)}, {"why", u.why}});
-  j["stages"] = {{"bounding_volumes", r.bounding_volumes}, {"separating_plane", r.separating_plane}, {"continuous_test", r.continuous_test}};
+  for (const auto& u : r.undecided)
+    j["undecided"].push_back({{"frame", u.frame}, {"pair", pair(u.body_a, u.body_b)}, {"why", u.why}});
+  j["stages"] = {{"bounding_volumes", r.bounding_volumes},
+                 {"separating_plane", r.separating_plane},
+                 {"continuous_test", r.continuous_test}};
   j["separating_plane_stage"] = r.planes_disabled ? "off" : r.plane_stage_built ? "built" : "not built";
   if (r.shard_count > 1) j["shard"] = std::to_string(r.shard_index) + "/" + std::to_string(r.shard_count);
   nlohmann::ordered_json pf = nlohmann::ordered_json::array();
   for (const auto& f : r.per_frame)
-    pf.push_back({{"frame", f.frame}, {"bounding_volumes", f.bounding_volumes}, {"separating_plane", f.separating_plane},
-                  {"continuous_test", f.continuous_test}, {"events", f.events}, {"undecided", f.undecided}, {"ms", f.seconds * 1e3}});
+    pf.push_back({{"frame", f.frame},
+                  {"bounding_volumes", f.bounding_volumes},
+                  {"separating_plane", f.separating_plane},
+                  {"continuous_test", f.continuous_test},
+                  {"events", f.events},
+                  {"undecided", f.undecided},
+                  {"ms", f.seconds * 1e3}});
   j["per_frame"] = pf;
   j["seconds"] = r.seconds;
   return j;

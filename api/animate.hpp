@@ -39,11 +39,10 @@
 // pair's surviving frames in order, so that the plane kept from frame k − 1 is
 // at hand in frame k; a frame dropped by stage 1 in between forgets it), the
 // pairs on a pool of `threads` std::threads, longest first; results are stored
-// by (frame, pair), so the output does not depend on the schedule. `shard_index`/`shard_count` (the command line's --shard i/n) keeps
-// the i-th of n contiguous blocks of frames (contiguous so that kept planes
-// carry from frame to frame inside a shard).
-// Requirements: the animation is exact (rationals); the arithmetic of the
-// continuous test is the caller's (SolveOptions::arith).
+// by (frame, pair), so the output does not depend on the schedule. `shard_index`/`shard_count` (the command line's
+// --shard i/n) keeps the i-th of n contiguous blocks of frames (contiguous so that kept planes carry from frame to
+// frame inside a shard). Requirements: the animation is exact (rationals); the arithmetic of the continuous test is the
+// caller's (SolveOptions::arith).
 #include "api/options.hpp"
 #include "io/animation_reader.hpp"
 #include "kernel/answer.hpp"
@@ -64,20 +63,20 @@ namespace eccd {
 inline constexpr const char* kAnimationAnswerFormat = "ellipse-ccd-animation-answer/1";
 
 struct AnimateOptions {
-  SolveOptions solve;           // the arithmetic (and budget) of the continuous test
-  bool all_intervals = false;   // false: first contact only
-  int threads = 2;              // >= 1
+  SolveOptions solve;                            // the arithmetic (and budget) of the continuous test
+  bool all_intervals = false;                    // false: first contact only
+  int threads = 2;                               // >= 1
   std::size_t shard_index = 0, shard_count = 1;  // 0 <= index < count
-  bool planes = true;           // false: skip stage 2 (no plane kept or built; --no-planes, 000 Table 1's "without")
-  bool keep_tested = false;     // keep every continuous test's local answer (AnimationResult::tested; for tests)
+  bool planes = true;        // false: skip stage 2 (no plane kept or built; --no-planes, 000 Table 1's "without")
+  bool keep_tested = false;  // keep every continuous test's local answer (AnimationResult::tested; for tests)
   // Called on the calling thread about every 0.1 s and at the end: (pair-frames of stages 2-3 done, of this run).
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
 struct PairFrameAnswer {
   std::size_t frame = 0, body_a = 0, body_b = 0;  // body_a < body_b, positions in Animation::bodies
-  Answer answer;  // in global time
-  Answer local;   // the scene's own answer, in the local time τ
+  Answer answer;                                  // in global time
+  Answer local;                                   // the scene's own answer, in the local time τ
 };
 struct PairFrameUndecided {
   std::size_t frame = 0, body_a = 0, body_b = 0;
@@ -85,10 +84,10 @@ struct PairFrameUndecided {
 };
 struct FrameSummary {
   std::size_t frame = 0;
-  std::size_t pairs = 0;              // checked pairs in the frame
-  std::size_t bounding_volumes = 0;   // settled by stage 1
-  std::size_t separating_plane = 0;   // settled by stage 2
-  std::size_t continuous_test = 0;    // settled by stage 3 (including undecided ones)
+  std::size_t pairs = 0;             // checked pairs in the frame
+  std::size_t bounding_volumes = 0;  // settled by stage 1
+  std::size_t separating_plane = 0;  // settled by stage 2
+  std::size_t continuous_test = 0;   // settled by stage 3 (including undecided ones)
   std::size_t events = 0, undecided = 0;
   double seconds = 0;  // stage 1 of the frame plus the work of its pair-frames (thread time, summed)
 };
@@ -106,7 +105,7 @@ struct AnimationResult {
   std::vector<PairFrameAnswer> tested;  // with keep_tested: every pair-frame of stage 3
   std::size_t bounding_volumes = 0, separating_plane = 0, continuous_test = 0;
   bool plane_stage_built = false;
-  bool planes_disabled = false;     // AnimateOptions::planes was false ("separating_plane_stage": "off")
+  bool planes_disabled = false;  // AnimateOptions::planes was false ("separating_plane_stage": "off")
   bool all_intervals = false;
   double seconds = 0;
 };

@@ -26,8 +26,7 @@ std::string gnum(double x) {
 std::optional<Rational> decimal_value(const Instant& i) {
   try {
     return parse_rational(i.approx);
-  } catch (const std::invalid_argument&) {
-  }
+  } catch (const std::invalid_argument&) {}
   if (std::isfinite(i.value)) return Rational(i.value);
   return std::nullopt;
 }
@@ -90,8 +89,9 @@ AnswerDifference answer_difference(const Answer& got, const Answer& ref, const D
     d.differences.push_back("collides: " + R + " " + yes(ref.collides) + ", " + A + " " + yes(got.collides));
   }
   if (got.independent != ref.independent) {
-    d.differences.push_back(std::string("kind: ") + R + " is an answer of " + (ref.independent ? "independent" : "shared-parameter") +
-                            " motions, " + A + " of " + (got.independent ? "independent" : "shared-parameter") + " motions");
+    d.differences.push_back(std::string("kind: ") + R + " is an answer of " +
+                            (ref.independent ? "independent" : "shared-parameter") + " motions, " + A + " of " +
+                            (got.independent ? "independent" : "shared-parameter") + " motions");
     d.agrees = false;
     return d;
   }
@@ -101,62 +101,62 @@ AnswerDifference answer_difference(const Answer& got, const Answer& ref, const D
   auto match_intervals = [&](const std::vector<std::pair<Instant, Instant>>& got_list,
                              const std::vector<std::pair<Instant, Instant>>& ref_list, const std::string& noun,
                              std::vector<const Instant*>& flagged_ref, std::vector<const Instant*>& flagged_got) {
-  // Intervals: correspondence by overlap, then the ends of one-to-one pairs.
-  auto G = spans(got_list), E = spans(ref_list);
-  auto overlap = [tol](const Span& x, const Span& y) { return x.lo() <= y.hi() + tol && y.lo() <= x.hi() + tol; };
-  double worst = 0;
-  bool one_to_one = true;
-  for (std::size_t k = 0; k < E.size(); ++k) {
-    std::vector<std::size_t> m;
-    for (std::size_t i = 0; i < G.size(); ++i)
-      if (overlap(G[i], E[k])) m.push_back(i);
-    if (m.empty()) {
-      one_to_one = false;
-      ++d.missed;
-      d.differences.push_back("missed " + span_text(E[k], noun));
-      flagged_ref.insert(flagged_ref.end(), {E[k].a, E[k].b});
-      continue;
-    }
-    if (m.size() > 1) {
-      one_to_one = false;
-      ++d.split;
-d.differences.push_back("splits " + span_text(E[k], noun) + " into " + std::to_string(m.size()) + " intervals");
-      flagged_ref.insert(flagged_ref.end(), {E[k].a, E[k].b});
-      continue;
-    }
-    const Span& g = G[m[0]];
-    const std::string which = noun + " " + std::to_string(k + 1);
-    for (int end = 0; end < 2; ++end) {
-      const Instant& x = end ? *g.b : *g.a;
-      const Instant& y = end ? *E[k].b : *E[k].a;
-      const double off = std::abs(x.value - y.value);
-      if (std::isfinite(off)) worst = std::max(worst, off);
-      if (!instants_match(x, y, tol)) {
-        ++d.endpoints_off;
-        d.differences.push_back(which + (end ? " end" : " start") + " off by " + gnum(off) + " (" + R + " " + num(y.value) +
-                                ", " + A + " " + num(x.value) + ")");
-        flagged_ref.push_back(&y);
-        flagged_got.push_back(&x);
+    // Intervals: correspondence by overlap, then the ends of one-to-one pairs.
+    auto G = spans(got_list), E = spans(ref_list);
+    auto overlap = [tol](const Span& x, const Span& y) { return x.lo() <= y.hi() + tol && y.lo() <= x.hi() + tol; };
+    double worst = 0;
+    bool one_to_one = true;
+    for (std::size_t k = 0; k < E.size(); ++k) {
+      std::vector<std::size_t> m;
+      for (std::size_t i = 0; i < G.size(); ++i)
+        if (overlap(G[i], E[k])) m.push_back(i);
+      if (m.empty()) {
+        one_to_one = false;
+        ++d.missed;
+        d.differences.push_back("missed " + span_text(E[k], noun));
+        flagged_ref.insert(flagged_ref.end(), {E[k].a, E[k].b});
+        continue;
+      }
+      if (m.size() > 1) {
+        one_to_one = false;
+        ++d.split;
+        d.differences.push_back("splits " + span_text(E[k], noun) + " into " + std::to_string(m.size()) + " intervals");
+        flagged_ref.insert(flagged_ref.end(), {E[k].a, E[k].b});
+        continue;
+      }
+      const Span& g = G[m[0]];
+      const std::string which = noun + " " + std::to_string(k + 1);
+      for (int end = 0; end < 2; ++end) {
+        const Instant& x = end ? *g.b : *g.a;
+        const Instant& y = end ? *E[k].b : *E[k].a;
+        const double off = std::abs(x.value - y.value);
+        if (std::isfinite(off)) worst = std::max(worst, off);
+        if (!instants_match(x, y, tol)) {
+          ++d.endpoints_off;
+          d.differences.push_back(which + (end ? " end" : " start") + " off by " + gnum(off) + " (" + R + " " +
+                                  num(y.value) + ", " + A + " " + num(x.value) + ")");
+          flagged_ref.push_back(&y);
+          flagged_got.push_back(&x);
+        }
       }
     }
-  }
-  for (std::size_t i = 0; i < G.size(); ++i) {
-    int n = 0;
-    for (const auto& e : E) n += overlap(G[i], e);
-    if (n == 0) {
-      one_to_one = false;
-      ++d.spurious;
-      d.differences.push_back("false " + span_text(G[i], noun));
-      flagged_got.insert(flagged_got.end(), {G[i].a, G[i].b});
-    } else if (n > 1) {
-      one_to_one = false;
-      ++d.merged;
-      d.differences.push_back("merges " + std::to_string(n) + " " + noun + "s into [" + num(G[i].a->value) + ", " +
-                              num(G[i].b->value) + "]");
-      flagged_got.insert(flagged_got.end(), {G[i].a, G[i].b});
+    for (std::size_t i = 0; i < G.size(); ++i) {
+      int n = 0;
+      for (const auto& e : E) n += overlap(G[i], e);
+      if (n == 0) {
+        one_to_one = false;
+        ++d.spurious;
+        d.differences.push_back("false " + span_text(G[i], noun));
+        flagged_got.insert(flagged_got.end(), {G[i].a, G[i].b});
+      } else if (n > 1) {
+        one_to_one = false;
+        ++d.merged;
+        d.differences.push_back("merges " + std::to_string(n) + " " + noun + "s into [" + num(G[i].a->value) + ", " +
+                                num(G[i].b->value) + "]");
+        flagged_got.insert(flagged_got.end(), {G[i].a, G[i].b});
+      }
     }
-  }
-  if (one_to_one && !E.empty()) d.max_endpoint_error = std::max(d.max_endpoint_error.value_or(0.0), worst);
+    if (one_to_one && !E.empty()) d.max_endpoint_error = std::max(d.max_endpoint_error.value_or(0.0), worst);
   };
   std::vector<const Instant*> flagged_ref, flagged_got;  // instants reported through an interval already
   if (got.independent) {
@@ -183,8 +183,8 @@ d.differences.push_back("splits " + span_text(E[k], noun) + " into " + std::to_s
       d.differences.push_back("first contact off by " + gnum(*d.first_contact_error) + " (" + R + " " +
                               num(ref.first_contact->value) + ", " + A + " " + num(got.first_contact->value) + ")");
   } else if (got.first_contact.has_value() != ref.first_contact.has_value()) {
-    d.differences.push_back("first contact: " + R + " " + (ref.first_contact ? where(*ref.first_contact) : "none") + ", " + A +
-                            " " + (got.first_contact ? where(*got.first_contact) : "none"));
+    d.differences.push_back("first contact: " + R + " " + (ref.first_contact ? where(*ref.first_contact) : "none") +
+                            ", " + A + " " + (got.first_contact ? where(*got.first_contact) : "none"));
   }
 
   // External contacts, one to one, nearest first.
@@ -218,8 +218,10 @@ d.differences.push_back("splits " + span_text(E[k], noun) + " into " + std::to_s
   if (got.contact_intervals.size() != ref.contact_intervals.size()) {
     d.contact_intervals_differ = 1;
     const std::size_t e = ref.contact_intervals.size(), g = got.contact_intervals.size();
-    if (e > g) d.missed += int(e - g);
-    else d.spurious += int(g - e);
+    if (e > g)
+      d.missed += int(e - g);
+    else
+      d.spurious += int(g - e);
     d.differences.push_back("contact_intervals: " + R + " " + std::to_string(e) + ", " + A + " " + std::to_string(g) +
                             " (intervals of continuous touching)");
   } else {
@@ -227,8 +229,9 @@ d.differences.push_back("splits " + span_text(E[k], noun) + " into " + std::to_s
       const auto &s = ref.contact_intervals[i], &g = got.contact_intervals[i];
       if (instants_match(s.first, g.first, tol) && instants_match(s.second, g.second, tol)) continue;
       ++d.contact_intervals_differ;
-      d.differences.push_back("contact interval " + std::to_string(i + 1) + ": " + R + " [" + num(s.first.value) + ", " +
-                              num(s.second.value) + "], " + A + " [" + num(g.first.value) + ", " + num(g.second.value) + "]");
+      d.differences.push_back("contact interval " + std::to_string(i + 1) + ": " + R + " [" + num(s.first.value) +
+                              ", " + num(s.second.value) + "], " + A + " [" + num(g.first.value) + ", " +
+                              num(g.second.value) + "]");
     }
   }
 

@@ -15,8 +15,9 @@ namespace eccd {
 namespace {
 nlohmann::json scene_document(const Scene& scene) {
   if (scene.source_text.empty())
-    throw std::invalid_argument("certify: the scene " + (scene.name.empty() ? std::string("(unnamed)") : scene.name) +
-                                " has no JSON text (built in code); certify a scene read by read_scene or scene_from_text");
+    throw std::invalid_argument(
+        "certify: the scene " + (scene.name.empty() ? std::string("(unnamed)") : scene.name) +
+        " has no JSON text (built in code); certify a scene read by read_scene or scene_from_text");
   return parse_json_document(scene.source_text, scene.path);
 }
 }  // namespace
@@ -42,7 +43,8 @@ Certificate certify(const Scene& scene) {
     s.method = "cd-disc-cycloidal";
     s.certified = s.answer.undecided.empty();
   }
-  if (independent_certificate_scene(scene)) {  // interval proofs about the exact F: certificate/write/independent_certificate.hpp
+  if (independent_certificate_scene(
+          scene)) {  // interval proofs about the exact F: certificate/write/independent_certificate.hpp
     s.basis = "interval+mpfi";
     s.method = "bezier-independent-proved";
   }

@@ -21,9 +21,14 @@ template <class T>
 std::vector<std::string> shown(const EVector<T, 3>& v) {
   std::vector<std::string> out;
   for (int i = 0; i < 3; ++i) {
-    if (sign(v(i)) == Sign::zero) { out.push_back("0"); continue; }  // not "-0"
-    if constexpr (std::is_same_v<T, double>) out.push_back(scalar_traits<double>::to_string(v(i)));
-    else out.push_back(round_decimal(scalar_traits<Mpfr>::to_string(v(i)), 20));
+    if (sign(v(i)) == Sign::zero) {
+      out.push_back("0");
+      continue;
+    }  // not "-0"
+    if constexpr (std::is_same_v<T, double>)
+      out.push_back(scalar_traits<double>::to_string(v(i)));
+    else
+      out.push_back(round_decimal(scalar_traits<Mpfr>::to_string(v(i)), 20));
   }
   return out;
 }
@@ -38,9 +43,12 @@ ContactPoint point_of(const ContactGeometry<T, 4>& g) {
 }
 
 template <class T>
-std::optional<MovingPair<T, 4>>& rounded_pair_cache(std::optional<MovingPair<double, 4>>& d, std::optional<MovingPair<Mpfr, 4>>& m) {
-  if constexpr (std::is_same_v<T, double>) return d;
-  else return m;
+std::optional<MovingPair<T, 4>>& rounded_pair_cache(std::optional<MovingPair<double, 4>>& d,
+                                                    std::optional<MovingPair<Mpfr, 4>>& m) {
+  if constexpr (std::is_same_v<T, double>)
+    return d;
+  else
+    return m;
 }
 
 mpq_class instant_value(const Instant& i) {
@@ -52,7 +60,8 @@ mpq_class instant_value(const Instant& i) {
 }  // namespace
 
 void add_contact_points_3d(const Scene& scene, Solution& s, const PreparedPair<4>* given) {
-  if (scene.dim != 3 || scene.independent || s.answer.contacts.empty() || s.answer.contact_points.size() >= s.answer.contacts.size())
+  if (scene.dim != 3 || scene.independent || s.answer.contacts.empty() ||
+      s.answer.contact_points.size() >= s.answer.contacts.size())
     return;
   for (const SceneObject* o : {&scene.a, &scene.b})
     if (std::holds_alternative<CycloidalMotion>(o->motion)) return;
@@ -64,7 +73,10 @@ void add_contact_points_3d(const Scene& scene, Solution& s, const PreparedPair<4
   std::string double_trouble, mpfr_trouble;
   for (const Instant& c : s.answer.contacts) {
     const mpq_class t = instant_value(c);
-    if (sgn(t) < 0 || t > 1) { pts.push_back({}); continue; }
+    if (sgn(t) < 0 || t > 1) {
+      pts.push_back({});
+      continue;
+    }
     if (!floating) {  // exact A(t), B(t) at the rational t, then MPFR at 256 bits
       if (!given && !prepared) prepared = prepare_pair<H_3D>(scene);
       const PreparedPair3& pp = given ? *given : *prepared;
@@ -73,7 +85,10 @@ void add_contact_points_3d(const Scene& scene, Solution& s, const PreparedPair<4
       Matrix<Rational, 4> b = quadric_at<Rational, 4>(pp.qb, pp.nb, rt);
       Matrix<Mpfr, 4> am, bm;
       for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) { am[i][j] = Mpfr(a[i][j], 256); bm[i][j] = Mpfr(b[i][j], 256); }
+        for (int j = 0; j < 4; ++j) {
+          am[i][j] = Mpfr(a[i][j], 256);
+          bm[i][j] = Mpfr(b[i][j], 256);
+        }
       pts.push_back(point_of<Mpfr>(contact_geometry<Mpfr, 4>(am, bm)));
       continue;
     }

@@ -30,9 +30,12 @@ Judgement judge(const Scene& scene, const Answer& theirs, const JudgeOptions& op
   d.reference_name = "certified";
   j.difference = answer_difference(theirs, j.certified.answer, d);
   j.agrees = j.difference.agrees;
-  if (j.agrees) j.verdict = "agrees";
-  else if (j.difference.collides_differs) j.verdict = "wrong collides";
-  else j.verdict = "differs: " + std::to_string(j.difference.differences.size()) + " difference(s)";
+  if (j.agrees)
+    j.verdict = "agrees";
+  else if (j.difference.collides_differs)
+    j.verdict = "wrong collides";
+  else
+    j.verdict = "differs: " + std::to_string(j.difference.differences.size()) + " difference(s)";
   return j;
 }
 
@@ -47,7 +50,8 @@ void check_instants(const Answer& a, const std::string& label, const std::string
     try {
       v = parse_rational(i.approx);
     } catch (const std::invalid_argument& e) {
-      bad("approx \"" + (i.approx.size() > 40 ? i.approx.substr(0, 40) + "..." : i.approx) + "\" is not a decimal number: " + e.what());
+      bad("approx \"" + (i.approx.size() > 40 ? i.approx.substr(0, 40) + "..." : i.approx) +
+          "\" is not a decimal number: " + e.what());
     }
     if (v < 0 || v > 1) bad("approx " + i.approx + " is outside [0, 1], the time of a scene");
     if (i.lo && *i.lo < 0) bad("lo " + i.lo->get_str() + " is below 0");
@@ -71,7 +75,9 @@ void check_instants(const Answer& a, const std::string& label, const std::string
 AnswerInput answer_from_text(const std::string& json_text, const std::string& label) {
   const nlohmann::json doc = parse_json_document(json_text, label);
   if (!doc.is_object())
-    throw SceneError(label + ": top level: expected a JSON object: an answer {\"collides\", \"intervals\", ...} or a scene file with an \"answer\"");
+    throw SceneError(label +
+                     ": top level: expected a JSON object: an answer {\"collides\", \"intervals\", ...} or a scene "
+                     "file with an \"answer\"");
   AnswerInput in;
   if (doc.contains("answer")) {
     if (doc["answer"].is_null()) throw SceneError(label + ": /answer: is null: the scene file has no answer to judge");

@@ -34,9 +34,9 @@
 namespace eccd {
 
 struct JudgeOptions {
-  double tol = 1e-6;            // on decimals; certified brackets widened by it
-  std::string name = "yours";   // how the differences name the judged answer (the engine's name)
-  bool use_stored = false;      // the scene's stored answer as the certified one, when it has one
+  double tol = 1e-6;           // on decimals; certified brackets widened by it
+  std::string name = "yours";  // how the differences name the judged answer (the engine's name)
+  bool use_stored = false;     // the scene's stored answer as the certified one, when it has one
 };
 
 struct Judgement {
@@ -52,7 +52,8 @@ Judgement judge(const Scene& scene, const Answer& theirs, const JudgeOptions& op
 // An answer to judge, read from JSON text, and which part of the text it was.
 struct AnswerInput {
   Answer answer;
-  std::string taken;  // "a bare answer object" | "the \"answer\" of a scene file" | "the answer of an `eccd solve --json` report"
+  std::string taken;  // "a bare answer object" | "the \"answer\" of a scene file" | "the answer of an `eccd solve
+                      // --json` report"
 };
 // Throws SceneError "LABEL: PLACE: what is wrong"; the instants' numbers are
 // checked as the scene reader checks numbers (a decimal approx, no NaN or

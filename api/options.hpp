@@ -8,10 +8,10 @@
 // "certified:none" (parse_arithmetic / Arithmetic::name are inverse).
 // Options are enums, not strings; the command line and the JSON use the
 // to_string / parse_* names below.
-#include "solution/arithmetic.hpp"       // Arithmetic, parse_arithmetic
+#include "solution/arithmetic.hpp"        // Arithmetic, parse_arithmetic
 #include "floating/cd_disc_floating.hpp"  // Basis, to_string(Basis), parse_basis
-#include "kernel/cd_disc.hpp"              // Variant
-#include "kernel/prepared_scene.hpp"       // InputMode
+#include "kernel/cd_disc.hpp"             // Variant
+#include "kernel/prepared_scene.hpp"      // InputMode
 
 #include <string>
 #include <utility>
@@ -39,12 +39,12 @@ std::pair<Method, int> parse_method(const std::string& text);
 
 struct SolveOptions {
   Arithmetic arith = Arithmetic::exact();
-  Basis basis = Basis::bernstein;  // floating only
+  Basis basis = Basis::bernstein;     // floating only
   Variant variant = Variant::answer;  // 2D: answer, collides, first contact, all contacts (003 VI-C)
-  Method method = Method::bezier;  // 3D floating only
-  int grid = 0;                    // sampling / marching: N instants (>= 1)
-  bool first_contact = false;      // 3D: stop after the first collision interval (001 section 4)
-  Guard guard = Guard::bound;      // floating only: as published (none) or guarded (bound)
+  Method method = Method::bezier;     // 3D floating only
+  int grid = 0;                       // sampling / marching: N instants (>= 1)
+  bool first_contact = false;         // 3D: stop after the first collision interval (001 section 4)
+  Guard guard = Guard::bound;         // floating only: as published (none) or guarded (bound)
   // Floating only: start from the scene's numbers rounded to the arithmetic
   // (default, what a user's program does) or from the exactly prepared scene.
   InputMode input = InputMode::rounded;

@@ -29,8 +29,10 @@ namespace {
 
 template <class T>
 T enter(const Rational& r) {
-  if constexpr (std::is_same_v<T, Interval>) return interval_of(r);
-  else return r;
+  if constexpr (std::is_same_v<T, Interval>)
+    return interval_of(r);
+  else
+    return r;
 }
 
 // M' = [[W R D, W c], [0, W]] of one key pose (statement), W·R by kernel/keyframe_motion.hpp's keyframe_rotation
@@ -58,7 +60,10 @@ Matrix<T, H> pose_matrix(const KeyPose& p) {
   Matrix<T, H> m;
   for (int i = 0; i < d; ++i) {
     for (int j = 0; j < d; ++j) {
-      if (!p.deformation) { m[i][j] = wr[i][j]; continue; }
+      if (!p.deformation) {
+        m[i][j] = wr[i][j];
+        continue;
+      }
       T s = zero;
       for (int k = 0; k < d; ++k) s = s + wr[i][k] * enter<T>((*p.deformation)[k][j]);
       m[i][j] = s;
@@ -146,8 +151,10 @@ bool plane_separates(const std::array<double, H>& p, const Matrix<T, H>& ca, con
   const T zero = T(0);
   std::array<T, H> pt;
   for (int i = 0; i < H; ++i) {  // a double is exact in both
-    if constexpr (std::is_same_v<T, Interval>) pt[i] = Interval(p[i], p[i]);
-    else pt[i] = Rational(p[i]);
+    if constexpr (std::is_same_v<T, Interval>)
+      pt[i] = Interval(p[i], p[i]);
+    else
+      pt[i] = Rational(p[i]);
   }
   auto test = [&](const Matrix<T, H>& c, Sign side) {
     std::array<T, H> v;
@@ -168,8 +175,10 @@ template <class T, int H>
 Status generic_status(const Matrix<T, H>& a, const Matrix<T, H>& b) {
   const T zero = T(0);
   std::vector<T> g = characteristic_coefficients_in<T, H>(a, b, zero);
-  if constexpr (H == 3) return cubic_contact_status(g[3], g[2], g[1], g[0]);
-  else return quartic_contact_status(g);
+  if constexpr (H == 3)
+    return cubic_contact_status(g[3], g[2], g[1], g[0]);
+  else
+    return quartic_contact_status(g);
 }
 
 template <int H>
@@ -309,7 +318,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
   }
   std::vector<BodyCache<H>> cache(n);
   std::size_t stamp = 0;
-  const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;  // then anim.pairs lists every pair in order
+  const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;      // then anim.pairs lists every pair in order
   using KeptPlane = std::pair<std::size_t, std::array<double, 4>>;  // pair position, plane (sorted by position)
   std::vector<KeptPlane> kept, next_kept;  // the planes kept from the pose before, and for the next
   // Scratch reused from pose to pose (no allocation per pose once warm).
@@ -385,26 +394,38 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       todo.clear();
       for (std::size_t t : which)
         for (std::size_t b : {tasks[t].a, tasks[t].b}) {
-          if (cache[b].stamp != stamp) { cache[b].stamp = stamp; cache[b].have = 0; }
-          if ((cache[b].have & what) != what && !(cache[b].queued)) { cache[b].queued = true; todo.push_back(b); }
+          if (cache[b].stamp != stamp) {
+            cache[b].stamp = stamp;
+            cache[b].have = 0;
+          }
+          if ((cache[b].have & what) != what && !(cache[b].queued)) {
+            cache[b].queued = true;
+            todo.push_back(b);
+          }
         }
       parallel_for(todo.size(), opt.threads, 64, [&](std::size_t u) {
         BodyCache<H>& c = cache[todo[u]];
         const KeyPose& p = anim.bodies[todo[u]].poses[k];
         const std::size_t b = todo[u];
         if (!(c.have & 1)) {
-          if (exact) c.mr = pose_matrix<Rational, H>(p);
-          else c.mi = pose_matrix<Interval, H>(p);
+          if (exact)
+            c.mr = pose_matrix<Rational, H>(p);
+          else
+            c.mi = pose_matrix<Interval, H>(p);
           c.have |= 1;
         }
         if ((what & 2) && !(c.have & 2)) {
-          if (exact) c.cr = dual_at_pose<Rational, H>(c.mr, adjQr[b], diag[b]);
-          else c.ci = dual_at_pose<Interval, H>(c.mi, adjQi[b], diag[b]);
+          if (exact)
+            c.cr = dual_at_pose<Rational, H>(c.mr, adjQr[b], diag[b]);
+          else
+            c.ci = dual_at_pose<Interval, H>(c.mi, adjQi[b], diag[b]);
           c.have |= 2;
         }
         if ((what & 4) && !(c.have & 4)) {
-          if (exact) c.ar = world_at_pose<Rational, H>(c.mr, Qr[b], diag[b]);
-          else c.ai = world_at_pose<Interval, H>(c.mi, Qi[b], diag[b]);
+          if (exact)
+            c.ar = world_at_pose<Rational, H>(c.mr, Qr[b], diag[b]);
+          else
+            c.ai = world_at_pose<Interval, H>(c.mi, Qi[b], diag[b]);
           c.have |= 4;
         }
         if ((what & 8) && !(c.have & 8)) {  // M = M'/W rounded to doubles, for api/static_test.hpp
@@ -457,15 +478,19 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       if (exact) {
         o.status = generic_status<Rational, H>(ca.ar, cb.ar);
       } else if (fast_double && axes[task.a] && axes[task.b]) {
-        if constexpr (d == 3) o.status = static_status(Ellipsoid{*axes[task.a], ca.pose}, Ellipsoid{*axes[task.b], cb.pose}, opt.solve.arith);
-        else o.status = static_status(Ellipse{*axes[task.a], ca.pose}, Ellipse{*axes[task.b], cb.pose}, opt.solve.arith);
+        if constexpr (d == 3)
+          o.status =
+              static_status(Ellipsoid{*axes[task.a], ca.pose}, Ellipsoid{*axes[task.b], cb.pose}, opt.solve.arith);
+        else
+          o.status = static_status(Ellipse{*axes[task.a], ca.pose}, Ellipse{*axes[task.b], cb.pose}, opt.solve.arith);
       } else {
         o.status = generic_status<Interval, H>(ca.ai, cb.ai);
         if (o.status == Status::uncertain && kind == Arithmetic::Certified) {  // the exact status
           const auto& pa = anim.bodies[task.a].poses[k];
           const auto& pb = anim.bodies[task.b].poses[k];
-          o.status = generic_status<Rational, H>(world_at_pose<Rational, H>(pose_matrix<Rational, H>(pa), Qr[task.a], diag[task.a]),
-                                                 world_at_pose<Rational, H>(pose_matrix<Rational, H>(pb), Qr[task.b], diag[task.b]));
+          o.status = generic_status<Rational, H>(
+              world_at_pose<Rational, H>(pose_matrix<Rational, H>(pa), Qr[task.a], diag[task.a]),
+              world_at_pose<Rational, H>(pose_matrix<Rational, H>(pb), Qr[task.b], diag[task.b]));
         }
       }
     });
@@ -501,8 +526,10 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
       res.planes_built += o.built;
       ps.planes_built += o.built;
       res.plane_build_failed += o.build_failed;
-      if (o.by_plane) ++ps.separating_plane;
-      else ++ps.static_test;
+      if (o.by_plane)
+        ++ps.separating_plane;
+      else
+        ++ps.static_test;
       PairPoseStatus st{k, task.a, task.b, o.status, o.by_plane};
       if (opt.keep_tested) res.tested.push_back(st);
       if (o.status == Status::uncertain) {
@@ -533,9 +560,12 @@ PosesResult animate_poses(const Animation& anim, const AnimateOptions& opt) {
   if (opt.threads < 1) throw std::invalid_argument("--jobs " + std::to_string(opt.threads) + ": expected at least 1");
   const Arithmetic::Kind kind = opt.solve.arith.kind;
   if (kind != Arithmetic::Double && kind != Arithmetic::Exact && kind != Arithmetic::Certified)
-    throw std::invalid_argument("--poses: arithmetic " + opt.solve.arith.name() + " is not supported (double, exact or certified)");
-  if (opt.shard_count != 1) throw std::invalid_argument("--poses: --frame-block is not supported (poses run in one block)");
-  if (opt.all_intervals) throw std::invalid_argument("--poses: --all-intervals has no meaning at a pose (a status, not intervals)");
+    throw std::invalid_argument("--poses: arithmetic " + opt.solve.arith.name() +
+                                " is not supported (double, exact or certified)");
+  if (opt.shard_count != 1)
+    throw std::invalid_argument("--poses: --frame-block is not supported (poses run in one block)");
+  if (opt.all_intervals)
+    throw std::invalid_argument("--poses: --all-intervals has no meaning at a pose (a status, not intervals)");
   if (anim.dim == 2) return run_poses<3>(anim, opt);
   if (anim.dim == 3) return run_poses<4>(anim, opt);
   throw std::invalid_argument("--poses: dim must be 2 or 3");
@@ -551,24 +581,38 @@ nlohmann::ordered_json poses_result_to_json(const PosesResult& r) {
   j["poses"] = r.poses;
   j["pairs_per_frame"] = r.pairs_per_pose;
   j["mode"] = "poses";
-  auto pair = [&](std::size_t a, std::size_t b) { return nlohmann::ordered_json::array({r.body_names[a], r.body_names[b]}); };
+  auto pair = [&](std::size_t a, std::size_t b) {
+    return nlohmann::ordered_json::array({r.body_names[a], r.body_names[b]});
+  };
   j["events"] = nlohmann::ordered_json::array();
   for (const auto& e : r.events)
-    j["events"].push_back({{"pose", e.pose}, {"t", r.times[e.pose].get_str()}, {"pair", pair(e.body_a, e.body_b)},
+    j["events"].push_back({{"pose", e.pose},
+                           {"t", r.times[e.pose].get_str()},
+                           {"pair", pair(e.body_a, e.body_b)},
                            {"status", to_string(e.status)}});
   j["undecided"] = nlohmann::ordered_json::array();
   for (const auto& u : r.undecided)
-    j["undecided"].push_back({{"pose", u.pose}, {"t", r.times[u.pose].get_str()}, {"pair", pair(u.body_a, u.body_b)}, {"why", u.why}});
-  j["stages"] = {{"bounding_volumes", r.bounding_volumes}, {"separating_plane", r.separating_plane}, {"static_test", r.static_test}};
+    j["undecided"].push_back(
+        {{"pose", u.pose}, {"t", r.times[u.pose].get_str()}, {"pair", pair(u.body_a, u.body_b)}, {"why", u.why}});
+  j["stages"] = {{"bounding_volumes", r.bounding_volumes},
+                 {"separating_plane", r.separating_plane},
+                 {"static_test", r.static_test}};
   j["separating_plane_stage"] = r.planes_disabled ? "off" : "built";
-  j["planes"] = {{"checked", r.plane_checks}, {"kept", r.separating_plane}, {"built", r.planes_built},
+  j["planes"] = {{"checked", r.plane_checks},
+                 {"kept", r.separating_plane},
+                 {"built", r.planes_built},
                  {"build_failed", r.plane_build_failed}};
   j["sweep_examined"] = r.sweep_examined;
   nlohmann::ordered_json pp = nlohmann::ordered_json::array();
   for (const auto& p : r.per_pose)
-    pp.push_back({{"pose", p.pose}, {"bounding_volumes", p.bounding_volumes}, {"separating_plane", p.separating_plane},
-                  {"static_test", p.static_test}, {"planes_built", p.planes_built}, {"events", p.events},
-                  {"undecided", p.undecided}, {"ms", p.seconds * 1e3}});
+    pp.push_back({{"pose", p.pose},
+                  {"bounding_volumes", p.bounding_volumes},
+                  {"separating_plane", p.separating_plane},
+                  {"static_test", p.static_test},
+                  {"planes_built", p.planes_built},
+                  {"events", p.events},
+                  {"undecided", p.undecided},
+                  {"ms", p.seconds * 1e3}});
   j["per_pose"] = pp;
   j["seconds"] = r.seconds;
   return j;

@@ -66,7 +66,7 @@ struct PoseSummary {
   std::size_t planes_built = 0;      // new planes built at this pose
   std::size_t sweep_examined = 0;    // pairs the sweep looked at (x intervals overlap)
   std::size_t events = 0, undecided = 0;
-  double seconds = 0;                // stage 1's time on its thread plus stages 2-3's wall time
+  double seconds = 0;  // stage 1's time on its thread plus stages 2-3's wall time
 };
 struct PairPoseStatus {
   std::size_t pose = 0, body_a = 0, body_b = 0;  // body_a < body_b
@@ -89,7 +89,7 @@ struct PosesResult {
   std::vector<PairPoseUndecided> undecided;
   std::vector<PairPoseStatus> tested;  // with AnimateOptions::keep_tested: every pair-pose past stage 1
   std::size_t bounding_volumes = 0, separating_plane = 0, static_test = 0;
-  std::size_t plane_checks = 0;        // kept planes checked (hits: separating_plane)
+  std::size_t plane_checks = 0;  // kept planes checked (hits: separating_plane)
   std::size_t planes_built = 0, plane_build_failed = 0;
   std::size_t sweep_examined = 0;
   bool planes_disabled = false;

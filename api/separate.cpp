@@ -21,9 +21,12 @@ namespace eccd {
 
 const char* to_string(PlaneCheck c) {
   switch (c) {
-    case PlaneCheck::separates: return "separates";
-    case PlaneCheck::fails: return "fails";
-    default: return "unknown";
+    case PlaneCheck::separates:
+      return "separates";
+    case PlaneCheck::fails:
+      return "fails";
+    default:
+      return "unknown";
   }
 }
 
@@ -32,8 +35,9 @@ namespace {
 void refuse_cycloidal(const Scene& s, const char* who) {
   for (const SceneObject* ob : {&s.a, &s.b})
     if (std::holds_alternative<CycloidalMotion>(ob->motion))
-      throw NotRationalMotion(std::string("object ") + (ob == &s.a ? "a" : "b") + " has a cycloidal motion: " + who +
-                              " needs a polynomial motion matrix M(t) (rational motions); cycloidal motions are not supported yet");
+      throw NotRationalMotion(
+          std::string("object ") + (ob == &s.a ? "a" : "b") + " has a cycloidal motion: " + who +
+          " needs a polynomial motion matrix M(t) (rational motions); cycloidal motions are not supported yet");
 }
 
 mpq_class to_rational(const mpq_class& x) { return x; }
@@ -43,10 +47,22 @@ mpq_class to_rational(const Mpfr& x) {
   mpfr_get_q(q.get_mpq_t(), x.get());
   return q;
 }
-template <class T> const T& plain(const T& x) { return x; }
-template <class T> const T& plain(const Bounded<T>& x) { return x.value(); }
-template <class T> double bound_of(const T&) { return 0; }
-template <class T> double bound_of(const Bounded<T>& x) { return double(x.bound()); }
+template <class T>
+const T& plain(const T& x) {
+  return x;
+}
+template <class T>
+const T& plain(const Bounded<T>& x) {
+  return x.value();
+}
+template <class T>
+double bound_of(const T&) {
+  return 0;
+}
+template <class T>
+double bound_of(const Bounded<T>& x) {
+  return double(x.bound());
+}
 
 template <class T, int H>
 Matrix<T, H> scene_shape(const SceneObject& ob, const T& like) {
@@ -62,8 +78,8 @@ PolyMatrix<T, H> scene_motion(const SceneObject& ob, const T& like) {
 template <class T, int H>
 std::array<T, H> plane_vector(const SeparatingPlane& pl, const T& like) {
   if (int(pl.normal.size()) != H - 1)
-    throw std::invalid_argument("the plane's normal has " + std::to_string(pl.normal.size()) + " entries; the scene needs " +
-                                std::to_string(H - 1));
+    throw std::invalid_argument("the plane's normal has " + std::to_string(pl.normal.size()) +
+                                " entries; the scene needs " + std::to_string(H - 1));
   bool zero = true;
   for (const auto& x : pl.normal) zero = zero && sgn(x) == 0;
   if (zero) throw std::invalid_argument("the plane's normal is zero");
@@ -84,7 +100,8 @@ std::string check_at(const Scene& scene, const SeparatingPlane& pl, const T& t, 
   for (int k = 0; k < 2; ++k) {
     const SceneObject& ob = k ? scene.b : scene.a;
     const std::string name = k ? "b" : "a";
-    PlaneAgainstObject<T, H> po = plane_against_object<T, H>(scene_shape<T, H>(ob, like), scene_motion<T, H>(ob, like), p, zero);
+    PlaneAgainstObject<T, H> po =
+        plane_against_object<T, H>(scene_shape<T, H>(ob, like), scene_motion<T, H>(ob, like), p, zero);
     auto eval = [&](const Poly<T>& f) { return f.is_zero() ? zero : f(t); };
     T miss = eval(po.miss);
     // n.c + o with c the centre at t: side(t) / (w(t) * Y_c,d), Y_c,d = the cofactor of Q's last entry.
@@ -93,7 +110,8 @@ std::string check_at(const Scene& scene, const SeparatingPlane& pl, const T& t, 
     T wd = eval(po.w) * adj[H - 1][H - 1];
     T side = eval(po.side) / wd;
     PlaneInequality im{name, "q^T adj(Q) q, q = M(t)^T (n, o)", "> 0", to_rational(plain(miss)), bound_of(miss), {}};
-    PlaneInequality is{name, "n.c + o, c the centre at t", k ? "> 0" : "< 0", to_rational(plain(side)), bound_of(side), {}};
+    PlaneInequality is{name, "n.c + o, c the centre at t", k ? "> 0" : "< 0", to_rational(plain(side)), bound_of(side),
+                       {}};
     for (int i = 0; i < H - 1; ++i) {
       T ci = zero;
       for (int j = 0; j < H; ++j) ci = ci + eval(m[i][j]) * adj[j][H - 1];
@@ -135,26 +153,38 @@ template <int H>
 Separation separate_exact(const Scene& scene, const mpq_class& t) {
   Separation s;
   const Status st = status_at(scene, t, Arithmetic::exact());
-  if (st != Status::separate) { s.status = status_word(st); return s; }
+  if (st != Status::separate) {
+    s.status = status_word(st);
+    return s;
+  }
   const PreparedPair<H> pp = prepare_pair<H>(scene);
   const Rational rt(t);
   Matrix<Rational, H> a = quadric_at<Rational, H>(pp.qa, pp.na, rt), b = quadric_at<Rational, H>(pp.qb, pp.nb, rt);
   for (auto* m : {&a, &b}) {  // a positive power of two per matrix: entries near 1 (the same solids)
     Rational big(0);
-    for (auto& row : *m) for (auto& x : row) if (abs(x) > big) big = abs(x);
+    for (auto& row : *m)
+      for (auto& x : row)
+        if (abs(x) > big) big = abs(x);
     long k = log2_size(big);
     mpz_class two = 1;
     two <<= std::abs(k);
     Rational f = k > 0 ? Rational(1) / Rational(two) : Rational(two);
-    for (auto& row : *m) for (auto& x : row) x *= f;
+    for (auto& row : *m)
+      for (auto& x : row) x *= f;
   }
   std::string last;
   for (int bits = 128; bits <= 4096; bits *= 2) {
     Matrix<Mpfr, H> am, bm;
     for (int i = 0; i < H; ++i)
-      for (int j = 0; j < H; ++j) { am[i][j] = rational_to_mpfr(a[i][j], bits); bm[i][j] = rational_to_mpfr(b[i][j], bits); }
+      for (int j = 0; j < H; ++j) {
+        am[i][j] = rational_to_mpfr(a[i][j], bits);
+        bm[i][j] = rational_to_mpfr(b[i][j], bits);
+      }
     PlaneConstruction<Mpfr, H> c = separating_plane<Mpfr, H>(am, bm);
-    if (!c.ok) { last = c.why + " (" + std::to_string(bits) + " bits)"; continue; }
+    if (!c.ok) {
+      last = c.why + " (" + std::to_string(bits) + " bits)";
+      continue;
+    }
     std::array<mpq_class, H> exact_p;
     for (int i = 0; i < H; ++i) exact_p[i] = to_rational(c.p(i));
     // Short rationals first: the simplest rational within 2^-e of each entry, e = 16, 32, ..., then the value itself.
@@ -181,8 +211,10 @@ Separation separate_exact(const Scene& scene, const mpq_class& t) {
     }
   }
   s.status = "undecided";
-  s.why = "the pair is separate at t (exact static test) but no rational plane from the construction up to 4096 bits "
-          "passed the exact checks; last: " + last;
+  s.why =
+      "the pair is separate at t (exact static test) but no rational plane from the construction up to 4096 bits "
+      "passed the exact checks; last: " +
+      last;
   return s;
 }
 
@@ -197,17 +229,31 @@ Separation separate_floating(const Scene& scene, const mpq_class& t, const Arith
     s.why = "the static test at t cannot decide in " + arith.name() + " (a sign within its running error bound)";
     return s;
   }
-  if (st != Status::separate) { s.status = status_word(st); return s; }
+  if (st != Status::separate) {
+    s.status = status_word(st);
+    return s;
+  }
   std::string trouble;
   const MovingPair<B, H> mp = round_pair<B, H>(scene, like, trouble);
-  if (!trouble.empty()) { s.status = "undecided"; s.why = trouble; return s; }
+  if (!trouble.empty()) {
+    s.status = "undecided";
+    s.why = trouble;
+    return s;
+  }
   const B bt = scalar_traits<B>::from_rational(t, like);
   const Matrix<B, H> ab = quadric_at<B, H>(mp.qa, mp.na, bt), bb = quadric_at<B, H>(mp.qb, mp.nb, bt);
   Matrix<T, H> a, b;
   for (int i = 0; i < H; ++i)
-    for (int j = 0; j < H; ++j) { a[i][j] = ab[i][j].value(); b[i][j] = bb[i][j].value(); }
+    for (int j = 0; j < H; ++j) {
+      a[i][j] = ab[i][j].value();
+      b[i][j] = bb[i][j].value();
+    }
   PlaneConstruction<T, H> c = separating_plane<T, H>(a, b);
-  if (!c.ok) { s.status = "undecided"; s.why = "the construction in " + arith.name() + ": " + c.why; return s; }
+  if (!c.ok) {
+    s.status = "undecided";
+    s.why = "the construction in " + arith.name() + ": " + c.why;
+    return s;
+  }
   std::array<mpq_class, H> p;
   for (int i = 0; i < H; ++i) p[i] = to_rational(c.p(i));
   fill_plane<T, H>(s, c, p);
@@ -241,11 +287,14 @@ Separation separate_certified(const Scene& scene, const mpq_class& t) {
 template <int H>
 Separation separate_dim(const Scene& scene, const mpq_class& t, const SolveOptions& o) {
   switch (o.arith.kind) {
-    case Arithmetic::Double: return separate_floating<double, H>(scene, t, o.arith, Bounded<double>(1.0, 0));
+    case Arithmetic::Double:
+      return separate_floating<double, H>(scene, t, o.arith, Bounded<double>(1.0, 0));
     case Arithmetic::Mpfr:
       return separate_floating<Mpfr, H>(scene, t, o.arith, Bounded<Mpfr>(Mpfr(mpq_class(1), o.arith.mpfr_bits), 0));
-    case Arithmetic::Certified: return separate_certified<H>(scene, t);
-    default: return separate_exact<H>(scene, t);
+    case Arithmetic::Certified:
+      return separate_certified<H>(scene, t);
+    default:
+      return separate_exact<H>(scene, t);
   }
 }
 
@@ -256,17 +305,24 @@ PlaneCheck frame_check(const Scene& scene, const SeparatingPlane& pl, const T& l
   bool unknown = false;
   for (int k = 0; k < 2; ++k) {
     const SceneObject& ob = k ? scene.b : scene.a;
-    PlaneAgainstObject<T, H> po = plane_against_object<T, H>(scene_shape<T, H>(ob, like), scene_motion<T, H>(ob, like), p, zero);
+    PlaneAgainstObject<T, H> po =
+        plane_against_object<T, H>(scene_shape<T, H>(ob, like), scene_motion<T, H>(ob, like), p, zero);
     // The centre's side at t = 0: sign(side(0)) * sign(w(0)).
     const Sign side = sign(po.side.is_zero() ? zero : po.side(zero)) * sign(po.w.is_zero() ? zero : po.w(zero));
     const Sign want = k ? Sign::positive : Sign::negative;
-    if (side == Sign::uncertain) unknown = true;
-    else if (side != want) return PlaneCheck::fails;
+    if (side == Sign::uncertain)
+      unknown = true;
+    else if (side != want)
+      return PlaneCheck::fails;
     std::string where;
     switch (positive_on_unit_interval(po.miss, where)) {
-      case OnInterval::not_positive: return PlaneCheck::fails;
-      case OnInterval::unknown: unknown = true; break;
-      default: break;
+      case OnInterval::not_positive:
+        return PlaneCheck::fails;
+      case OnInterval::unknown:
+        unknown = true;
+        break;
+      default:
+        break;
     }
   }
   return unknown ? PlaneCheck::unknown : PlaneCheck::separates;
@@ -275,10 +331,12 @@ PlaneCheck frame_check(const Scene& scene, const SeparatingPlane& pl, const T& l
 template <int H>
 PlaneCheck frame_check_dim(const Scene& scene, const SeparatingPlane& pl, const SolveOptions& o) {
   switch (o.arith.kind) {
-    case Arithmetic::Double: return frame_check<Bounded<double>, H>(scene, pl, Bounded<double>(1.0, 0));
+    case Arithmetic::Double:
+      return frame_check<Bounded<double>, H>(scene, pl, Bounded<double>(1.0, 0));
     case Arithmetic::Mpfr:
       return frame_check<Bounded<Mpfr>, H>(scene, pl, Bounded<Mpfr>(Mpfr(mpq_class(1), o.arith.mpfr_bits), 0));
-    case Arithmetic::Exact: return frame_check<Rational, H>(scene, pl, Rational(1));
+    case Arithmetic::Exact:
+      return frame_check<Rational, H>(scene, pl, Rational(1));
     case Arithmetic::Certified: {
       PlaneCheck c = frame_check<Bounded<double>, H>(scene, pl, Bounded<double>(1.0, 0));
       return c != PlaneCheck::unknown ? c : frame_check<Rational, H>(scene, pl, Rational(1));

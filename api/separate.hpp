@@ -53,30 +53,30 @@
 
 namespace eccd {
 
-struct SeparatingPlane {                 // the plane (2D: line) n·x + o = 0, in world coordinates
-  std::vector<mpq_class> normal;         // dim entries; a double is an exact rational, so every arithmetic fits
-  mpq_class offset;                      // object a lies in n·x + o < 0, object b in n·x + o > 0
+struct SeparatingPlane {          // the plane (2D: line) n·x + o = 0, in world coordinates
+  std::vector<mpq_class> normal;  // dim entries; a double is an exact rational, so every arithmetic fits
+  mpq_class offset;               // object a lies in n·x + o < 0, object b in n·x + o > 0
 };
 
 // One inequality of the separation proof (exact), or the same value computed
 // with its error bound (double / MPFR).
 struct PlaneInequality {
-  std::string object;      // "a" or "b"
-  std::string quantity;    // e.g. "q^T adj(Q) q, q = M(t)^T (n, o)" or "n.c + o"
-  std::string relation;    // "> 0" or "< 0"
-  mpq_class value;         // exact value (exact arithmetic) or the computed one
-  double error_bound = 0;  // 0 in exact arithmetic
+  std::string object;             // "a" or "b"
+  std::string quantity;           // e.g. "q^T adj(Q) q, q = M(t)^T (n, o)" or "n.c + o"
+  std::string relation;           // "> 0" or "< 0"
+  mpq_class value;                // exact value (exact arithmetic) or the computed one
+  double error_bound = 0;         // 0 in exact arithmetic
   std::vector<mpq_class> centre;  // the object's centre at t, for "n.c + o"
 };
 
 struct Separation {
-  std::string status;                    // "separate" | "touching" | "overlapping" | "undecided"
-  std::optional<SeparatingPlane> plane;  // when "separate"
+  std::string status;                                  // "separate" | "touching" | "overlapping" | "undecided"
+  std::optional<SeparatingPlane> plane;                // when "separate"
   std::vector<std::vector<mpq_class>> tangent_points;  // 000 section 3: the points of a and b (when separate)
-  std::string why;                       // when "undecided": where and why
+  std::string why;                                     // when "undecided": where and why
   // Beyond the contract: the inequalities that prove the plane (when separate).
   std::vector<PlaneInequality> checks;
-  int bits = 0;                          // MPFR bits of the construction (exact), or of the arithmetic
+  int bits = 0;  // MPFR bits of the construction (exact), or of the arithmetic
 };
 // The two objects of `scene` at the instant t (rational, in [0, 1]) in the arithmetic of o.
 Separation separate_at(const Scene& scene, const mpq_class& t, const SolveOptions& o);

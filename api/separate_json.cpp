@@ -49,9 +49,10 @@ nlohmann::ordered_json separation_to_json(const Scene& scene, const std::string&
       ch.push_back(x);
     }
     j["checks"] = ch;
-    j["checks_note"] = exact ? "exact rationals: q = M(t)^T (n, o) with M(t) the scene's motion matrix and Q its shape matrix; "
-                               "q^T adj(Q) q > 0 iff the plane misses the object (det Q < 0)"
-                             : "computed in " + arith.name() + " with a running error bound";
+    j["checks_note"] =
+        exact ? "exact rationals: q = M(t)^T (n, o) with M(t) the scene's motion matrix and Q its shape matrix; "
+                "q^T adj(Q) q > 0 iff the plane misses the object (det Q < 0)"
+              : "computed in " + arith.name() + " with a running error bound";
   }
   if (!sep.why.empty()) j["why"] = sep.why;
   return j;

@@ -34,10 +34,14 @@ Scene scene_from_text(const std::string& json_text, const std::string& label) { 
 
 const char* to_string(Method m) {
   switch (m) {
-    case Method::projection: return "projection";
-    case Method::sampling: return "sampling";
-    case Method::marching: return "marching";
-    default: return "bezier";
+    case Method::projection:
+      return "projection";
+    case Method::sampling:
+      return "sampling";
+    case Method::marching:
+      return "marching";
+    default:
+      return "bezier";
   }
 }
 
@@ -49,7 +53,8 @@ std::pair<Method, int> parse_method(const std::string& text) {
     if (text.rfind(name + ":", 0) != 0) continue;
     std::string n = text.substr(name.size() + 1);
     if (n.empty() || n.size() > 6 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1)
-      throw std::invalid_argument("--method " + text + ": expected " + name + ":N with N a whole number from 1 to 999999");
+      throw std::invalid_argument("--method " + text + ": expected " + name +
+                                  ":N with N a whole number from 1 to 999999");
     return {m, std::stoi(n)};
   }
   throw std::invalid_argument("--method " + text + ": expected bezier, projection, sampling:N or marching:N");
@@ -64,7 +69,8 @@ Guard parse_guard(const std::string& text) {
 }
 
 std::string SolveOptions::method_name() const {
-  if (method == Method::sampling || method == Method::marching) return std::string(to_string(method)) + ":" + std::to_string(grid);
+  if (method == Method::sampling || method == Method::marching)
+    return std::string(to_string(method)) + ":" + std::to_string(grid);
   return to_string(method);
 }
 
@@ -161,9 +167,11 @@ Solution run_floating_3d_stages(const Scene& scene, const SolveOptions& opt, con
 // 001's Bézier method as the paper states it, whose errors the reports count.
 template <class T>
 std::optional<Solution> translation_shortcut(const Scene& scene, const SolveOptions& opt, const T& like) {
-  if constexpr (!std::is_same_v<T, Bounded<double>>) return std::nullopt;
+  if constexpr (!std::is_same_v<T, Bounded<double>>)
+    return std::nullopt;
   else {
-    if (opt.method != Method::bezier || opt.input != InputMode::rounded || opt.basis == Basis::scaled_bernstein) return std::nullopt;
+    if (opt.method != Method::bezier || opt.input != InputMode::rounded || opt.basis == Basis::scaled_bernstein)
+      return std::nullopt;
     const auto start = std::chrono::steady_clock::now();
     const auto pair = translating_pair<T>(scene, like);
     if (!pair) return std::nullopt;
@@ -207,7 +215,8 @@ Solution run_floating_3d(const Scene& scene, const SolveOptions& opt, const T& l
 template <class T>
 Solution run_floating_cycloidal(const Scene& scene, const SolveOptions& opt, const T& like) {
   if (opt.input == InputMode::prepared)
-    throw std::invalid_argument("--input prepared needs rational motions: a cycloidal scene is read with --input rounded");
+    throw std::invalid_argument(
+        "--input prepared needs rational motions: a cycloidal scene is read with --input rounded");
   Solution s;
   try {
     CycloidalOptions co;
@@ -267,9 +276,12 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
     // The cycloidal pipeline isolates the roots of a transcendental Δ by
     // subdivision that reads T as an enclosure (number/enclosure.hpp): it
     // exists in the guarded face only.
-    if constexpr (has_error_bound_v<T>) return run_floating_cycloidal(scene, opt, like);
-    else throw std::invalid_argument("--guard none: a cycloidal scene has no as-published floating pipeline "
-                                     "(its roots of Δ are isolated by validated subdivision): use --guard bound");
+    if constexpr (has_error_bound_v<T>)
+      return run_floating_cycloidal(scene, opt, like);
+    else
+      throw std::invalid_argument(
+          "--guard none: a cycloidal scene has no as-published floating pipeline "
+          "(its roots of Δ are isolated by validated subdivision): use --guard bound");
   }
   Solution s = run_floating_2d(scene, opt, like);
   if constexpr (std::is_same_v<T, Bounded<double>>)
@@ -308,7 +320,8 @@ IndependentResult independent_floating_result(const Scene& scene, const SolveOpt
 template <class T>
 Solution run_independent_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
   if (has_cycloidal_motion(scene))
-    throw IndependentMotionsRefused("independent motions with cycloidal (non-rational) motions are not solved: F(u, s, t) needs rational motions");
+    throw IndependentMotionsRefused(
+        "independent motions with cycloidal (non-rational) motions are not solved: F(u, s, t) needs rational motions");
   const auto start = std::chrono::steady_clock::now();
   const IndependentResult r = scene.dim == 3 ? independent_floating_result<T, 4>(scene, opt, like)
                                              : independent_floating_result<T, 3>(scene, opt, like);
@@ -329,11 +342,15 @@ Solution run_independent_floating(const Scene& scene, const SolveOptions& opt, c
 // F's exact net of an independent scene, ellipses or ellipsoids.
 TriBern<Rational> independent_exact_net(const Scene& scene) {
   if (has_cycloidal_motion(scene))
-    throw IndependentMotionsRefused("independent motions with cycloidal (non-rational) motions are not solved: F(u, s, t) needs rational motions");
+    throw IndependentMotionsRefused(
+        "independent motions with cycloidal (non-rational) motions are not solved: F(u, s, t) needs rational motions");
   Scene shared = scene;
   shared.independent = false;
-  if (scene.dim == 3) return independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(shared), Rational(1)));
-  return independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(shared), Rational(1)));
+  if (scene.dim == 3)
+    return independent_ellipsoid_function<Rational, 4>(
+        to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(shared), Rational(1)));
+  return independent_ellipsoid_function<Rational, 3>(
+      to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(shared), Rational(1)));
 }
 
 // Proved answers for any rational motions (certified/independent_proof.hpp):
@@ -356,7 +373,8 @@ Solution run_independent_proved(const Scene& scene) {
   s.method = "bezier-independent-proved";
   s.projection = "krawczyk";
   s.projection_degree = r.degree_s;
-  s.decided_in = "interval proofs about the exact F (cells: intervals of doubles; ends: Krawczyk in MPFI " + std::to_string(po.bits) + " bits)";
+  s.decided_in = "interval proofs about the exact F (cells: intervals of doubles; ends: Krawczyk in MPFI " +
+                 std::to_string(po.bits) + " bits)";
   s.proofs = r.proofs;
   s.time_ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
   return s;
@@ -425,17 +443,23 @@ Solution solve_independent(const Scene& scene, const SolveOptions& opt) {
   switch (opt.arith.kind) {
     case Arithmetic::Double:
     case Arithmetic::Mpfr:
-      return in_face(opt, [&](const auto& like) { return run_independent_floating<std::decay_t<decltype(like)>>(scene, opt, like); });
-    case Arithmetic::Exact: return run_independent_exact(scene);
-    case Arithmetic::Certified: return run_independent_proved(scene);
+      return in_face(opt, [&](const auto& like) {
+        return run_independent_floating<std::decay_t<decltype(like)>>(scene, opt, like);
+      });
+    case Arithmetic::Exact:
+      return run_independent_exact(scene);
+    case Arithmetic::Certified:
+      return run_independent_proved(scene);
   }
-  throw IndependentMotionsRefused("independent motions (\"parameters\": \"independent\") are not solved in " + opt.arith.name() + " arithmetic");
+  throw IndependentMotionsRefused("independent motions (\"parameters\": \"independent\") are not solved in " +
+                                  opt.arith.name() + " arithmetic");
 }
 
 }  // namespace
 
 Solution solve(const Scene& scene, const SolveOptions& opt) {
-  if (scene.dim == 2 && (int(opt.variant) < 0 || int(opt.variant) > 3)) throw std::invalid_argument("--variant must be 0, 1, 2 or 3");
+  if (scene.dim == 2 && (int(opt.variant) < 0 || int(opt.variant) > 3))
+    throw std::invalid_argument("--variant must be 0, 1, 2 or 3");
   // Floating runs always end: each method has work bounds, and a run that the
   // caller did not bound otherwise gets the default deadline (the earlier of
   // two deadlines counts, kernel/budget.hpp); what is left then is undecided.
@@ -450,7 +474,7 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
     return s;
   }
   std::optional<PreparedPair<4>> prepared3;  // an exact or certified 3D run's pair, shared with its contact points
-  switch (opt.arith.kind) {  // prepare_pair refuses cycloidal motions for exact arithmetic
+  switch (opt.arith.kind) {                  // prepare_pair refuses cycloidal motions for exact arithmetic
     case Arithmetic::Double:
     case Arithmetic::Mpfr:
       s = in_face(opt, [&](const auto& like) { return run_floating<std::decay_t<decltype(like)>>(scene, opt, like); });
@@ -461,10 +485,14 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
                          : run_exact<3>(prepare_pair<3>(scene), opt.variant, opt.first_contact);
       break;
     case Arithmetic::Certified:
-      if (scene.dim == 2 && has_cycloidal_motion(scene)) { s = run_certified_cycloidal(scene, opt.arith.mpfi_rungs, opt.variant); break; }
+      if (scene.dim == 2 && has_cycloidal_motion(scene)) {
+        s = run_certified_cycloidal(scene, opt.arith.mpfi_rungs, opt.variant);
+        break;
+      }
       if (scene.dim == 3) prepared3 = prepare_pair<4>(scene);
-      s = scene.dim == 3 ? run_certified<4>(*prepared3, opt.arith.mpfi_rungs, opt.variant, opt.first_contact)
-                         : run_certified<3>(prepare_pair<3>(scene), opt.arith.mpfi_rungs, opt.variant, opt.first_contact);
+      s = scene.dim == 3
+              ? run_certified<4>(*prepared3, opt.arith.mpfi_rungs, opt.variant, opt.first_contact)
+              : run_certified<3>(prepare_pair<3>(scene), opt.arith.mpfi_rungs, opt.variant, opt.first_contact);
       break;
   }
   s.scene = scene.name;
@@ -472,7 +500,9 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
   s.dim = scene.dim;
   s.arith = opt.arith;
   s.input = floating ? opt.input : InputMode::prepared;
-  add_contact_points_3d(scene, s, prepared3 ? &*prepared3 : nullptr);  // issue 17 point 4: 3D contact points and normals (api/contact_points.hpp)
+  add_contact_points_3d(
+      scene, s,
+      prepared3 ? &*prepared3 : nullptr);  // issue 17 point 4: 3D contact points and normals (api/contact_points.hpp)
   return s;
 }
 

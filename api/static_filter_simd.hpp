@@ -37,8 +37,8 @@ void static_filter3d_lanes_avx2(const double (&in)[30][kSimdLanes], double (&cod
 // The instruction sets of the batched static test, narrowest first; none: pair by pair.
 enum class Isa { none, avx2, avx512 };
 const char* to_string(Isa isa);
-Isa cpu_isa();                   // the widest this CPU runs
-Isa static_batch_isa();          // what static_status_batch uses: min(cpu_isa(), the limit)
+Isa cpu_isa();                               // the widest this CPU runs
+Isa static_batch_isa();                      // what static_status_batch uses: min(cpu_isa(), the limit)
 void set_static_batch_isa_limit(Isa limit);  // for benchmarks and tests (default: avx512); not thread-safe
 
 }  // namespace eccd::simd

@@ -34,8 +34,8 @@ bool simd::has_avx512() {
 #if defined(__x86_64__) || defined(__i386__)
   static const bool ok = [] {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
-           __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   }();
   return ok;
 #else
@@ -59,7 +59,9 @@ namespace {
 simd::Isa g_isa_limit = simd::Isa::avx512;
 }  // namespace
 
-const char* simd::to_string(Isa isa) { return isa == Isa::avx512 ? "avx512" : isa == Isa::avx2 ? "avx2" : "none (pair by pair)"; }
+const char* simd::to_string(Isa isa) {
+  return isa == Isa::avx512 ? "avx512" : isa == Isa::avx2 ? "avx2" : "none (pair by pair)";
+}
 simd::Isa simd::cpu_isa() { return has_avx512() ? Isa::avx512 : has_avx2() ? Isa::avx2 : Isa::none; }
 simd::Isa simd::static_batch_isa() { return std::min(cpu_isa(), g_isa_limit); }
 void simd::set_static_batch_isa_limit(Isa limit) { g_isa_limit = limit; }
@@ -72,8 +74,10 @@ using Mat = std::array<std::array<T, N>, N>;
 // The status from f's coefficients g_0..g_{N-1} (increasing powers of λ).
 template <class T, std::size_t K>
 Status status_of(const std::array<T, K>& g) {
-  if constexpr (K == 4) return cubic_contact_status(g[3], g[2], g[1], g[0]);
-  else return quartic_contact_status(g);
+  if constexpr (K == 4)
+    return cubic_contact_status(g[3], g[2], g[1], g[0]);
+  else
+    return quartic_contact_status(g);
 }
 
 // ---- the scene at an instant ------------------------------------------------
@@ -111,7 +115,7 @@ Status scene_status_in(const Scene& scene, const mpq_class& t, const Arithmetic&
 
 template <int N>
 [[gnu::noinline, gnu::cold]] void check_shape_failed(const std::array<double, N - 1>& axes, const Mat<double, N>& pose,
-                                                   const char* which) {
+                                                     const char* which) {
   auto fail = [&](const std::string& what) {
     throw std::invalid_argument(std::string("static test: object ") + which + ": " + what);
   };
@@ -132,7 +136,10 @@ void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& po
   double z = 0;
   bool ok = true;
 #pragma GCC unroll 16
-  for (double a : axes) { z += a * 0.0; ok &= a > 0; }
+  for (double a : axes) {
+    z += a * 0.0;
+    ok &= a > 0;
+  }
 #pragma GCC unroll 16
   for (const auto& row : pose)
 #pragma GCC unroll 16
@@ -142,7 +149,8 @@ void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& po
   if (!(ok & (z == 0))) check_shape_failed<N>(axes, pose, which);
   // Singular linear part: a cheap double determinant first, the exact one only when that is 0.
   auto det = [](const auto& m) -> std::decay_t<decltype(m[0][0])> {
-    if constexpr (N == 3) return m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    if constexpr (N == 3)
+      return m[0][0] * m[1][1] - m[0][1] * m[1][0];
     else
       return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
              m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
@@ -157,9 +165,12 @@ void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& po
 
 template <class T>
 T from_double(double x) {
-  if constexpr (std::is_same_v<T, Rational>) return Rational(x);
-  else if constexpr (std::is_same_v<T, ForwardBound>) return ForwardBound::exact(x);
-  else return T(x, 0);  // Bounded<double>: the given double is exact
+  if constexpr (std::is_same_v<T, Rational>)
+    return Rational(x);
+  else if constexpr (std::is_same_v<T, ForwardBound>)
+    return ForwardBound::exact(x);
+  else
+    return T(x, 0);  // Bounded<double>: the given double is exact
 }
 
 // adj of the affine pose M = [R t; 0 1] in block form: N = [adj(R), -adj(R) t; 0, det R],
@@ -168,28 +179,36 @@ T from_double(double x) {
 template <class T, int N>
 [[gnu::always_inline]] inline Mat<T, N> affine_adjugate(const Mat<double, N>& pose) {
   Mat<T, N> m;
-  #pragma GCC unroll 16
+#pragma GCC unroll 16
   for (int i = 0; i < N; ++i)
-    #pragma GCC unroll 16
+#pragma GCC unroll 16
     for (int j = 0; j < N; ++j) m[i][j] = from_double<T>(pose[i][j]);
   Mat<T, N> n;
   T det;
   if constexpr (N == 3) {
-    n[0][0] = m[1][1]; n[0][1] = -m[0][1];
-    n[1][0] = -m[1][0]; n[1][1] = m[0][0];
+    n[0][0] = m[1][1];
+    n[0][1] = -m[0][1];
+    n[1][0] = -m[1][0];
+    n[1][1] = m[0][0];
     det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
   } else {
     auto c = [&](int r0, int r1, int c0, int c1) -> T { return m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]; };
-    n[0][0] = c(1, 2, 1, 2); n[0][1] = -c(0, 2, 1, 2); n[0][2] = c(0, 1, 1, 2);
-    n[1][0] = -c(1, 2, 0, 2); n[1][1] = c(0, 2, 0, 2); n[1][2] = -c(0, 1, 0, 2);
-    n[2][0] = c(1, 2, 0, 1); n[2][1] = -c(0, 2, 0, 1); n[2][2] = c(0, 1, 0, 1);
+    n[0][0] = c(1, 2, 1, 2);
+    n[0][1] = -c(0, 2, 1, 2);
+    n[0][2] = c(0, 1, 1, 2);
+    n[1][0] = -c(1, 2, 0, 2);
+    n[1][1] = c(0, 2, 0, 2);
+    n[1][2] = -c(0, 1, 0, 2);
+    n[2][0] = c(1, 2, 0, 1);
+    n[2][1] = -c(0, 2, 0, 1);
+    n[2][2] = c(0, 1, 0, 1);
     det = m[0][0] * n[0][0] + m[0][1] * n[1][0] + m[0][2] * n[2][0];
   }
   constexpr int d = N - 1;
-  #pragma GCC unroll 16
+#pragma GCC unroll 16
   for (int i = 0; i < d; ++i) {
     T s = m[0][0] - m[0][0];
-    #pragma GCC unroll 16
+#pragma GCC unroll 16
     for (int k = 0; k < d; ++k) s = s - n[i][k] * m[k][d];
     n[i][d] = s;
     n[d][i] = m[0][0] - m[0][0];
@@ -202,11 +221,12 @@ template <class T, int N>
 [[gnu::always_inline]] inline Mat<T, N> shape_matrix(const std::array<double, N - 1>& axes) {
   Mat<T, N> q;
   const T zero = from_double<T>(0), one = from_double<T>(1);
-  #pragma GCC unroll 16
+#pragma GCC unroll 16
   for (auto& row : q) row.fill(zero);
-  #pragma GCC unroll 16
+#pragma GCC unroll 16
   for (int i = 0; i < N - 1; ++i) {
-    if constexpr (std::is_same_v<T, ForwardBound>) q[i][i] = ForwardBound::inverse_square_leaf(axes[i]);
+    if constexpr (std::is_same_v<T, ForwardBound>)
+      q[i][i] = ForwardBound::inverse_square_leaf(axes[i]);
     else {
       T a = from_double<T>(axes[i]);
       q[i][i] = one / (a * a);
@@ -222,9 +242,11 @@ Status exact_pose_status(const std::array<double, N - 1>& axes_a, const Mat<doub
                          const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
   const Rational zero(0);
   auto world = [&](const std::array<double, N - 1>& axes, const Mat<double, N>& pose) {
-    return moving_quadric_in<Rational, Rational, N>(shape_matrix<Rational, N>(axes), affine_adjugate<Rational, N>(pose), zero);
+    return moving_quadric_in<Rational, Rational, N>(shape_matrix<Rational, N>(axes), affine_adjugate<Rational, N>(pose),
+                                                    zero);
   };
-  std::vector<Rational> g = characteristic_coefficients_in<Rational, N>(world(axes_a, pose_a), world(axes_b, pose_b), zero);
+  std::vector<Rational> g =
+      characteristic_coefficients_in<Rational, N>(world(axes_a, pose_a), world(axes_b, pose_b), zero);
   std::array<Rational, N + 1> v;
   for (int i = 0; i <= N; ++i) v[i] = g[i];
   return status_of(v);
@@ -236,33 +258,36 @@ Status exact_pose_status(const std::array<double, N - 1>& axes_a, const Mat<doub
 // pose_coefficients: f's coefficients g_0..g_{N-1}; straight-line code for
 // ForwardBound (the batch loop below vectorises it across pairs).
 template <int N, class T>
-[[gnu::always_inline]] inline std::array<T, N + 1> pose_coefficients(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
-                                       const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
+[[gnu::always_inline]] inline std::array<T, N + 1> pose_coefficients(const std::array<double, N - 1>& axes_a,
+                                                                     const Mat<double, N>& pose_a,
+                                                                     const std::array<double, N - 1>& axes_b,
+                                                                     const Mat<double, N>& pose_b) {
   const T zero = from_double<T>(0.0);
   Mat<T, N> nb = affine_adjugate<T, N>(pose_b);
   Mat<T, N> r;  // adj(M_b) M_a: b's frame relative to a's; affine, so its last row is (0 ... 0 det R_b)
-  #pragma GCC unroll 16
+#pragma GCC unroll 16
   for (int i = 0; i < N - 1; ++i)
-    #pragma GCC unroll 16
+#pragma GCC unroll 16
     for (int j = 0; j < N; ++j) {
       T s = zero;
-      #pragma GCC unroll 16
+#pragma GCC unroll 16
       for (int k = 0; k < N; ++k)
         if (std::is_same_v<T, ForwardBound> || pose_a[k][j] != 0) s = s + nb[i][k] * from_double<T>(pose_a[k][j]);
       r[i][j] = s;
     }
-  #pragma GCC unroll 16
+#pragma GCC unroll 16
   for (int j = 0; j < N; ++j) r[N - 1][j] = j == N - 1 ? nb[N - 1][N - 1] : zero;
   // b = Rᵀ Q_b R with Q_b diagonal: b_ij = sum_k q_k r_ki r_kj (40 products in 3D, not 128).
   Mat<T, N> qb = shape_matrix<T, N>(axes_b), b;
-  #pragma GCC unroll 16
+#pragma GCC unroll 16
   for (int i = 0; i < N; ++i)
-    #pragma GCC unroll 16
+#pragma GCC unroll 16
     for (int j = i; j < N; ++j) {
       T s = zero;
-      #pragma GCC unroll 16
+#pragma GCC unroll 16
       for (int k = 0; k < N - 1; ++k) s = s + qb[k][k] * r[k][i] * r[k][j];
-      if (i == N - 1 && j == N - 1) s = s + qb[N - 1][N - 1] * r[N - 1][N - 1] * r[N - 1][N - 1];  // the last row's one entry
+      if (i == N - 1 && j == N - 1)
+        s = s + qb[N - 1][N - 1] * r[N - 1][N - 1] * r[N - 1][N - 1];  // the last row's one entry
       b[i][j] = s;
       b[j][i] = s;
     }
@@ -275,8 +300,8 @@ template <int N, class T>
     const T &b11 = b[0][0], &b12 = b[0][1], &b13 = b[0][2], &b22 = b[1][1], &b23 = b[1][2], &b33 = b[2][2];
     T m1 = b22 * b33 - b23 * b23, m2 = b11 * b33 - b13 * b13, m3 = b11 * b22 - b12 * b12;
     T det = b11 * m1 - b12 * (b12 * b33 - b13 * b23) + b13 * (b12 * b23 - b13 * b22);
-    return std::array<T, 4>{zero - det, d1 * m1 + d2 * m2 + d3 * m3, zero - (d1 * d2 * b33 + d1 * d3 * b22 + d2 * d3 * b11),
-                            d1 * d2 * d3};
+    return std::array<T, 4>{zero - det, d1 * m1 + d2 * m2 + d3 * m3,
+                            zero - (d1 * d2 * b33 + d1 * d3 * b22 + d2 * d3 * b11), d1 * d2 * d3};
   }
 }
 
@@ -284,12 +309,16 @@ template <int N, class T>
 // Descartes; Bounded<double>: the Sturm count in 3D, 003 Theorem 6 in 2D).
 template <class T, std::size_t K>
 Status coefficient_status(const std::array<T, K>& g) {
-  if constexpr (K == 5 && std::is_same_v<T, ForwardBound>) return quartic_sign_status(g);
-  else return status_of(g);
+  if constexpr (K == 5 && std::is_same_v<T, ForwardBound>)
+    return quartic_sign_status(g);
+  else
+    return status_of(g);
 }
 
 template <class T, std::size_t K>
-[[gnu::flatten]] Status fast_coefficient_status(const std::array<T, K>& g) { return coefficient_status(g); }
+[[gnu::flatten]] Status fast_coefficient_status(const std::array<T, K>& g) {
+  return coefficient_status(g);
+}
 
 template <int N, class T>
 Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
@@ -315,8 +344,10 @@ Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<dou
 template <int N>
 [[gnu::flatten]] Status fast_pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
                                          const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b) {
-  if constexpr (N == 4) return fast_status3(axes_a, pose_a, axes_b, pose_b);
-  else return double_pose_status<N, ForwardBound>(axes_a, pose_a, axes_b, pose_b);
+  if constexpr (N == 4)
+    return fast_status3(axes_a, pose_a, axes_b, pose_b);
+  else
+    return double_pose_status<N, ForwardBound>(axes_a, pose_a, axes_b, pose_b);
 }
 
 template <int N>
@@ -331,7 +362,9 @@ template <int N>
 Status after_fast(const std::array<double, N - 1>& axes_a, const Mat<double, N>& pose_a,
                   const std::array<double, N - 1>& axes_b, const Mat<double, N>& pose_b, const Arithmetic& arith) {
   Status s = double_pose_status<N, Bounded<double>>(axes_a, pose_a, axes_b, pose_b);
-  return s != Status::uncertain || arith.kind != Arithmetic::Certified ? s : exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+  return s != Status::uncertain || arith.kind != Arithmetic::Certified
+             ? s
+             : exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
 }
 
 template <int N>
@@ -341,7 +374,9 @@ Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>
     // The 3D filter first: a status from it implies valid input (finite, semi-axes >= 2^-12, both linear parts
     // non-singular: kernel/static_filter3d.hpp), so the full validation runs only when it is uncertain; the
     // filter does not read the last rows, which are checked here.
-    auto affine = [](const Mat<double, 4>& m) { return (m[3][0] == 0) & (m[3][1] == 0) & (m[3][2] == 0) & (m[3][3] == 1); };
+    auto affine = [](const Mat<double, 4>& m) {
+      return (m[3][0] == 0) & (m[3][1] == 0) & (m[3][2] == 0) & (m[3][3] == 1);
+    };
     if ((arith.kind == Arithmetic::Double || arith.kind == Arithmetic::Certified) && affine(pose_a) && affine(pose_b)) {
       Status s = fast_status3(axes_a, pose_a, axes_b, pose_b);
       if (s != Status::uncertain) return s;
@@ -353,13 +388,18 @@ Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>
   check_shape<N>(axes_a, pose_a, "a");
   check_shape<N>(axes_b, pose_b, "b");
   switch (arith.kind) {
-    case Arithmetic::Double: return double_pose_status_filtered<N>(axes_a, pose_a, axes_b, pose_b);
-    case Arithmetic::Exact: return exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
-    case Arithmetic::Certified: {  // the filtered predicate: double with its error bound, exact only when it cannot decide
+    case Arithmetic::Double:
+      return double_pose_status_filtered<N>(axes_a, pose_a, axes_b, pose_b);
+    case Arithmetic::Exact:
+      return exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
+    case Arithmetic::Certified: {  // the filtered predicate: double with its error bound, exact only when it cannot
+                                   // decide
       Status s = double_pose_status_filtered<N>(axes_a, pose_a, axes_b, pose_b);
       return s != Status::uncertain ? s : exact_pose_status<N>(axes_a, pose_a, axes_b, pose_b);
     }
-    default: throw std::invalid_argument("static test from two poses: arithmetic " + arith.name() + " is not offered (double or exact)");
+    default:
+      throw std::invalid_argument("static test from two poses: arithmetic " + arith.name() +
+                                  " is not offered (double or exact)");
   }
 }
 
@@ -367,31 +407,48 @@ Status pose_status(const std::array<double, N - 1>& axes_a, const Mat<double, N>
 // last block repeats its first pair), then f's coefficients with their
 // a-priori bounds for every lane in one straight-line loop (vectorised).
 template <int N, class Shape>
-[[gnu::flatten]] void coefficient_block(const Shape* a, const Shape* b, int lanes, double (&gv)[N + 1][kStaticBatchLanes],
-                                        double (&gm)[N + 1][kStaticBatchLanes], double (&gd)[N + 1][kStaticBatchLanes]) {
+[[gnu::flatten]] void coefficient_block(const Shape* a, const Shape* b, int lanes,
+                                        double (&gv)[N + 1][kStaticBatchLanes], double (&gm)[N + 1][kStaticBatchLanes],
+                                        double (&gd)[N + 1][kStaticBatchLanes]) {
   constexpr int L = kStaticBatchLanes;
   // Structure of arrays: the block's inputs lane by lane (a short last block repeats its first pair).
   double axa[N - 1][L], axb[N - 1][L], ma[N][N][L], mb[N][N][L];
   for (int l = 0; l < L; ++l) {
     const Shape& sa = a[l < lanes ? l : 0];
     const Shape& sb = b[l < lanes ? l : 0];
-    for (int k = 0; k < N - 1; ++k) { axa[k][l] = sa.semi_axes[k]; axb[k][l] = sb.semi_axes[k]; }
+    for (int k = 0; k < N - 1; ++k) {
+      axa[k][l] = sa.semi_axes[k];
+      axb[k][l] = sb.semi_axes[k];
+    }
     for (int r = 0; r < N; ++r)
-      for (int c = 0; c < N; ++c) { ma[r][c][l] = sa.pose[r][c]; mb[r][c][l] = sb.pose[r][c]; }
+      for (int c = 0; c < N; ++c) {
+        ma[r][c][l] = sa.pose[r][c];
+        mb[r][c][l] = sb.pose[r][c];
+      }
   }
   // The vectorised loop: straight-line code over the lanes.
   for (int l = 0; l < L; ++l) {
     std::array<double, N - 1> xa, xb;
     Mat<double, N> pa, pb;
 #pragma GCC unroll 16
-    for (int k = 0; k < N - 1; ++k) { xa[k] = axa[k][l]; xb[k] = axb[k][l]; }
+    for (int k = 0; k < N - 1; ++k) {
+      xa[k] = axa[k][l];
+      xb[k] = axb[k][l];
+    }
 #pragma GCC unroll 16
     for (int r = 0; r < N; ++r)
 #pragma GCC unroll 16
-      for (int c = 0; c < N; ++c) { pa[r][c] = ma[r][c][l]; pb[r][c] = mb[r][c][l]; }
+      for (int c = 0; c < N; ++c) {
+        pa[r][c] = ma[r][c][l];
+        pb[r][c] = mb[r][c][l];
+      }
     std::array<ForwardBound, N + 1> g = pose_coefficients<N, ForwardBound>(xa, pa, xb, pb);
 #pragma GCC unroll 16
-    for (int k = 0; k <= N; ++k) { gv[k][l] = g[k].value(); gm[k][l] = g[k].magnitude(); gd[k][l] = g[k].depth(); }
+    for (int k = 0; k <= N; ++k) {
+      gv[k][l] = g[k].value();
+      gm[k][l] = g[k].magnitude();
+      gd[k][l] = g[k].depth();
+    }
   }
 }
 
@@ -399,10 +456,11 @@ template <int N, class Shape>
 // kStaticBatchLanes pairs: the coefficients of every lane in one loop (SoA
 // lanes g[k][lane]: value, magnitude, depth), then the sign rule per lane.
 template <int N, class Shape>
-void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::span<Status> out, const Arithmetic& arith) {
+void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::span<Status> out,
+                       const Arithmetic& arith) {
   if (a.size() != b.size() || a.size() != out.size())
-    throw std::invalid_argument("static_status_batch: the spans have different sizes (" + std::to_string(a.size()) + ", " +
-                                std::to_string(b.size()) + ", " + std::to_string(out.size()) + ")");
+    throw std::invalid_argument("static_status_batch: the spans have different sizes (" + std::to_string(a.size()) +
+                                ", " + std::to_string(b.size()) + ", " + std::to_string(out.size()) + ")");
   auto validate = [&](std::size_t i) {
     try {
       check_shape<N>(a[i].semi_axes, a[i].pose, "a");
@@ -415,9 +473,10 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
   if constexpr (N == 4) {
     const simd::Isa isa = simd::static_batch_isa();
     if ((arith.kind == Arithmetic::Double || arith.kind == Arithmetic::Certified) && isa != simd::Isa::none) {
-      // Blocks of lanes in structure of arrays, vectorised (AVX-512, or AVX2: issue 36). A status from the filter implies valid input
-      // (kernel/static_filter3d.hpp; the last rows are checked here), so only the pairs it leaves uncertain are
-      // validated in full; the codes wait in `codes` until every pair is known valid (nothing written before).
+      // Blocks of lanes in structure of arrays, vectorised (AVX-512, or AVX2: issue 36). A status from the filter
+      // implies valid input (kernel/static_filter3d.hpp; the last rows are checked here), so only the pairs it leaves
+      // uncertain are validated in full; the codes wait in `codes` until every pair is known valid (nothing written
+      // before).
       constexpr int SL = simd::kSimdLanes;
       std::vector<double> codes(n);
       for (std::size_t base = 0; base < n; base += SL) {
@@ -438,8 +497,10 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
           affine[l] = (sa.pose[3][0] == 0) & (sa.pose[3][1] == 0) & (sa.pose[3][2] == 0) & (sa.pose[3][3] == 1) &
                       (sb.pose[3][0] == 0) & (sb.pose[3][1] == 0) & (sb.pose[3][2] == 0) & (sb.pose[3][3] == 1);
         }
-        if (isa == simd::Isa::avx512) simd::static_filter3d_lanes_avx512(in, code);
-        else simd::static_filter3d_lanes_avx2(in, code);
+        if (isa == simd::Isa::avx512)
+          simd::static_filter3d_lanes_avx512(in, code);
+        else
+          simd::static_filter3d_lanes_avx2(in, code);
         for (int l = 0; l < lanes; ++l) {
           codes[base + l] = affine[l] ? code[l] : 0.0;
           if (codes[base + l] == 0.0) validate(base + l);
@@ -447,14 +508,16 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
       }
       for (std::size_t i = 0; i < n; ++i) {
         Status s = static_filter_status(codes[i]);
-        out[i] = s != Status::uncertain ? s : after_fast<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
+        out[i] =
+            s != Status::uncertain ? s : after_fast<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
       }
       return;
     }
   }
   for (std::size_t i = 0; i < n; ++i) validate(i);
   if (arith.kind != Arithmetic::Double && arith.kind != Arithmetic::Certified) {
-    for (std::size_t i = 0; i < n; ++i) out[i] = pose_status<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = pose_status<N>(a[i].semi_axes, a[i].pose, b[i].semi_axes, b[i].pose, arith);
     return;
   }
   constexpr int L = kStaticBatchLanes;
@@ -482,10 +545,12 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
 
 }  // namespace
 
-void static_status_batch(std::span<const Ellipsoid> a, std::span<const Ellipsoid> b, std::span<Status> out, const Arithmetic& arith) {
+void static_status_batch(std::span<const Ellipsoid> a, std::span<const Ellipsoid> b, std::span<Status> out,
+                         const Arithmetic& arith) {
   pose_status_batch<4>(a, b, out, arith);
 }
-void static_status_batch(std::span<const Ellipse> a, std::span<const Ellipse> b, std::span<Status> out, const Arithmetic& arith) {
+void static_status_batch(std::span<const Ellipse> a, std::span<const Ellipse> b, std::span<Status> out,
+                         const Arithmetic& arith) {
   pose_status_batch<3>(a, b, out, arith);
 }
 

@@ -55,11 +55,11 @@
 namespace eccd {
 
 struct Ellipse {
-  std::array<double, 2> semi_axes;           // a, b > 0 along the object's x and y
+  std::array<double, 2> semi_axes;            // a, b > 0 along the object's x and y
   std::array<std::array<double, 3>, 3> pose;  // object frame -> world, homogeneous (last row 0 0 1)
 };
 struct Ellipsoid {
-  std::array<double, 3> semi_axes;           // a, b, c > 0
+  std::array<double, 3> semi_axes;            // a, b, c > 0
   std::array<std::array<double, 4>, 4> pose;  // last row 0 0 0 1
 };
 

@@ -46,14 +46,18 @@ std::string summary_text(const AnimationResult& r) {
   std::ostringstream o;
   o << "animation " << r.animation << " (" << r.file << "), " << r.dim << "D, arithmetic " << r.arithmetic << ", "
     << (r.all_intervals ? "all intervals" : "first contact") << "\n";
-  o << "frames " << r.frames << (r.shard_count > 1 ? " (this shard: " + std::to_string(r.per_frame.size()) + ")" : std::string())
-    << ", pairs per frame " << r.pairs_per_frame << ", separating-plane stage " << (r.planes_disabled ? "off" : r.plane_stage_built ? "built" : "not built")
+  o << "frames " << r.frames
+    << (r.shard_count > 1 ? " (this shard: " + std::to_string(r.per_frame.size()) + ")" : std::string())
+    << ", pairs per frame " << r.pairs_per_frame << ", separating-plane stage "
+    << (r.planes_disabled     ? "off"
+        : r.plane_stage_built ? "built"
+                              : "not built")
     << "\n\n";
   o << "frame   pairs  bounding  plane  continuous  events  undecided       ms\n";
   for (const auto& f : r.per_frame) {
     char line[160];
-    std::snprintf(line, sizeof line, "%5zu  %6zu  %8zu  %5zu  %10zu  %6zu  %9zu  %7.1f\n", f.frame, f.pairs, f.bounding_volumes,
-                  f.separating_plane, f.continuous_test, f.events, f.undecided, f.seconds * 1e3);
+    std::snprintf(line, sizeof line, "%5zu  %6zu  %8zu  %5zu  %10zu  %6zu  %9zu  %7.1f\n", f.frame, f.pairs,
+                  f.bounding_volumes, f.separating_plane, f.continuous_test, f.events, f.undecided, f.seconds * 1e3);
     o << line;
   }
   const double total = double(r.bounding_volumes + r.separating_plane + r.continuous_test);
@@ -62,7 +66,8 @@ std::string summary_text(const AnimationResult& r) {
     << r.separating_plane << " (" << pct(r.separating_plane) << "), continuous test " << r.continuous_test << " ("
     << pct(r.continuous_test) << ")\n";
   o << "events " << r.events.size() << ", undecided " << r.undecided.size() << ", " << fixed(r.seconds, 3) << " s ("
-    << (r.per_frame.empty() ? std::string("-") : fixed(r.seconds * 1e3 / double(r.per_frame.size()), 1)) << " ms per frame)\n";
+    << (r.per_frame.empty() ? std::string("-") : fixed(r.seconds * 1e3 / double(r.per_frame.size()), 1))
+    << " ms per frame)\n";
   if (!r.events.empty()) o << "\nevents (global time t):\n";
   for (const auto& e : r.events) {
     o << "  frame " << e.frame << "  " << r.body_names[e.body_a] << " -- " << r.body_names[e.body_b];
@@ -72,7 +77,8 @@ std::string summary_text(const AnimationResult& r) {
   }
   if (!r.undecided.empty()) o << "\nundecided:\n";
   for (const auto& u : r.undecided)
-    o << "  frame " << u.frame << "  " << r.body_names[u.body_a] << " -- " << r.body_names[u.body_b] << ": " << u.why << "\n";
+    o << "  frame " << u.frame << "  " << r.body_names[u.body_a] << " -- " << r.body_names[u.body_b] << ": " << u.why
+      << "\n";
   return o.str();
 }
 
@@ -86,25 +92,29 @@ std::string poses_summary_text(const PosesResult& r) {
   o << " pose   pairs  bounding  plane  static  built  events  undecided       ms\n";
   for (const auto& p : r.per_pose) {
     char line[160];
-    std::snprintf(line, sizeof line, "%5zu  %6zu  %8zu  %5zu  %6zu  %5zu  %6zu  %9zu  %7.3f\n", p.pose, p.pairs, p.bounding_volumes,
-                  p.separating_plane, p.static_test, p.planes_built, p.events, p.undecided, p.seconds * 1e3);
+    std::snprintf(line, sizeof line, "%5zu  %6zu  %8zu  %5zu  %6zu  %5zu  %6zu  %9zu  %7.3f\n", p.pose, p.pairs,
+                  p.bounding_volumes, p.separating_plane, p.static_test, p.planes_built, p.events, p.undecided,
+                  p.seconds * 1e3);
     o << line;
   }
   const double total = double(r.bounding_volumes + r.separating_plane + r.static_test);
   auto pct = [&](std::size_t x) { return total > 0 ? fixed(100.0 * double(x) / total, 1) + " %" : std::string("-"); };
   o << "\nstages: bounding volumes " << r.bounding_volumes << " (" << pct(r.bounding_volumes) << "), separating plane "
-    << r.separating_plane << " (" << pct(r.separating_plane) << "), static test " << r.static_test << " (" << pct(r.static_test)
-    << ")\nplanes: " << r.plane_checks << " kept planes checked, " << r.separating_plane << " held, " << r.planes_built
-    << " built, " << r.plane_build_failed << " constructions failed; sweep looked at " << r.sweep_examined << " pairs\n";
+    << r.separating_plane << " (" << pct(r.separating_plane) << "), static test " << r.static_test << " ("
+    << pct(r.static_test) << ")\nplanes: " << r.plane_checks << " kept planes checked, " << r.separating_plane
+    << " held, " << r.planes_built << " built, " << r.plane_build_failed << " constructions failed; sweep looked at "
+    << r.sweep_examined << " pairs\n";
   o << "events " << r.events.size() << ", undecided " << r.undecided.size() << ", " << fixed(r.seconds, 3) << " s ("
-    << (r.per_pose.empty() ? std::string("-") : fixed(r.seconds * 1e3 / double(r.per_pose.size()), 3)) << " ms per pose)\n";
+    << (r.per_pose.empty() ? std::string("-") : fixed(r.seconds * 1e3 / double(r.per_pose.size()), 3))
+    << " ms per pose)\n";
   if (!r.events.empty()) o << "\nevents:\n";
   for (const auto& e : r.events)
     o << "  pose " << e.pose << " (t = " << r.times[e.pose].get_str() << ")  " << r.body_names[e.body_a] << " -- "
       << r.body_names[e.body_b] << "  " << to_string(e.status) << "\n";
   if (!r.undecided.empty()) o << "\nundecided:\n";
   for (const auto& u : r.undecided)
-    o << "  pose " << u.pose << "  " << r.body_names[u.body_a] << " -- " << r.body_names[u.body_b] << ": " << u.why << "\n";
+    o << "  pose " << u.pose << "  " << r.body_names[u.body_a] << " -- " << r.body_names[u.body_b] << ": " << u.why
+      << "\n";
   return o.str();
 }
 
@@ -113,28 +123,33 @@ std::string poses_summary_text(const PosesResult& r) {
 Command add_animate_command(CLI::App& app) {
   auto args = std::make_shared<AnimateArgs>();
   Command c;
-  c.sub = app.add_subcommand("animate",
-                             "Every checked pair of an animation (docs/animation-format.md) in every frame: bounding spheres, "
-                             "the kept separating plane, then the continuous test in the chosen arithmetic.");
+  c.sub = app.add_subcommand(
+      "animate",
+      "Every checked pair of an animation (docs/animation-format.md) in every frame: bounding spheres, "
+      "the kept separating plane, then the continuous test in the chosen arithmetic.");
   c.sub->add_option("ANIMATION", args->path, "Animation file (format ellipse-ccd-animation/1)")->required();
   c.sub->add_option("--arith", args->arith, "Arithmetic of the continuous test: double, mpfr:BITS, exact or certified")
       ->capture_default_str();
   c.sub->add_flag("--json", args->json, "Print the answer object (format ellipse-ccd-animation-answer/1)");
-  c.sub->add_flag("--all-intervals", args->all_intervals, "Every collision interval of each pair-frame (default: the first contact)");
-  c.sub->add_flag("--no-planes", args->no_planes,
-                  "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
-  c.sub->add_flag("--poses", args->poses,
-                  "Per-pose mode (papers 000 and 001): the static test of each pair at each key pose, keeping the separating "
-                  "plane from pose to pose (000 section 4); arithmetic double, exact or certified; answer \"mode\": \"poses\"");
+  c.sub->add_flag("--all-intervals", args->all_intervals,
+                  "Every collision interval of each pair-frame (default: the first contact)");
+  c.sub->add_flag(
+      "--no-planes", args->no_planes,
+      "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
+  c.sub->add_flag(
+      "--poses", args->poses,
+      "Per-pose mode (papers 000 and 001): the static test of each pair at each key pose, keeping the separating "
+      "plane from pose to pose (000 section 4); arithmetic double, exact or certified; answer \"mode\": \"poses\"");
   c.sub->add_option("--jobs", args->threads, "Threads running pair-frames (the output does not depend on it)")
       ->capture_default_str();
   add_old_spelling(c.sub, "--threads", "--threads", "--jobs", args->threads);
   // report --shard takes every n-th task; a block of frames is another partition, so it has its own name.
   c.sub->add_option("--frame-block", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
   add_old_spelling(c.sub, "--shard", "--shard", "--frame-block", args->shard);
-  c.sub->add_option("--out", args->out,
-                    "Write the output to this file (atomically) instead of standard output: a new name, or with --force an "
-                    "existing regular file that is not the animation (a directory, device, FIFO, socket or symbolic link: exit 2)");
+  c.sub->add_option(
+      "--out", args->out,
+      "Write the output to this file (atomically) instead of standard output: a new name, or with --force an "
+      "existing regular file that is not the animation (a directory, device, FIFO, socket or symbolic link: exit 2)");
   c.sub->add_flag("--force", args->force, "Replace an existing --out file");
 
   c.run = [args]() -> int {
@@ -142,16 +157,19 @@ Command add_animate_command(CLI::App& app) {
     o.solve.arith = parse_arithmetic(args->arith);
     o.all_intervals = args->all_intervals;
     o.planes = !args->no_planes;
-    // Each pair-frame's solve gets --time-limit (floating: at most the default 30 s); beyond it the pair-frame is undecided.
+    // Each pair-frame's solve gets --time-limit (floating: at most the default 30 s); beyond it the pair-frame is
+    // undecided.
     const double limit = run_budget().time_limit_s;
-    o.solve.time_limit_s = o.solve.arith.floating() ? (limit > 0 ? std::min(limit, kDefaultFloatingSeconds) : 0) : limit;
+    o.solve.time_limit_s =
+        o.solve.arith.floating() ? (limit > 0 ? std::min(limit, kDefaultFloatingSeconds) : 0) : limit;
     if (args->threads < 1 || args->threads > 256)
       throw std::invalid_argument("--jobs " + std::to_string(args->threads) + ": expected 1 to 256");
     o.threads = args->threads;
     if (!args->shard.empty()) {
       const std::string& s = args->shard;
       const auto slash = s.find('/');
-      bool ok = slash != std::string::npos && slash > 0 && slash + 1 < s.size() && s.find_first_not_of("0123456789/") == std::string::npos &&
+      bool ok = slash != std::string::npos && slash > 0 && slash + 1 < s.size() &&
+                s.find_first_not_of("0123456789/") == std::string::npos &&
                 s.find('/', slash + 1) == std::string::npos && slash <= 6 && s.size() - slash - 1 <= 6;
       if (ok) {
         o.shard_index = std::stoul(s.substr(0, slash));
@@ -165,7 +183,8 @@ Command add_animate_command(CLI::App& app) {
       check_output_file("--out", args->out, args->force, {args->path});
     }
     if (args->poses) {  // options first (exit 2), before the file is read
-      if (args->all_intervals) throw std::invalid_argument("--poses with --all-intervals: a pose has a status, not intervals");
+      if (args->all_intervals)
+        throw std::invalid_argument("--poses with --all-intervals: a pose has a status, not intervals");
       if (!args->shard.empty()) throw std::invalid_argument("--poses with --frame-block: poses run in one block");
       if (o.solve.arith.kind == Arithmetic::Mpfr)
         throw std::invalid_argument("--poses with --arith " + args->arith + ": expected double, exact or certified");
@@ -180,8 +199,9 @@ Command add_animate_command(CLI::App& app) {
       if (!cadence->due(long(done), el)) return;
       std::optional<double> left;
       if (done > 0) left = el / double(done) * double(total - done);  // the measured rate per pair-frame
-      std::cerr << cadence->begin() << "eccd animate: pair-frames " << done << "/" << total << " past the bounding volumes, "
-                << fixed(el, 1) << " s, " << (done == total ? std::string("done") : time_left_text(left)) << cadence->end(done == total);
+      std::cerr << cadence->begin() << "eccd animate: pair-frames " << done << "/" << total
+                << " past the bounding volumes, " << fixed(el, 1) << " s, "
+                << (done == total ? std::string("done") : time_left_text(left)) << cadence->end(done == total);
     };
     if (args->poses) {
       PosesResult pr;
@@ -198,8 +218,10 @@ Command add_animate_command(CLI::App& app) {
       } else {
         text = poses_summary_text(pr);
       }
-      if (!args->out.empty()) write_text_atomically(args->out, text);
-      else std::cout << text;
+      if (!args->out.empty())
+        write_text_atomically(args->out, text);
+      else
+        std::cout << text;
       return 0;
     }
     AnimationResult r;
@@ -216,8 +238,10 @@ Command add_animate_command(CLI::App& app) {
     } else {
       text = summary_text(r);
     }
-    if (!args->out.empty()) write_text_atomically(args->out, text);
-    else std::cout << text;
+    if (!args->out.empty())
+      write_text_atomically(args->out, text);
+    else
+      std::cout << text;
     return 0;
   };
   return c;

@@ -75,7 +75,8 @@ inline std::string not_a_plain_output(const std::filesystem::path& path) {
   if (S_ISLNK(ls.st_mode)) {
     struct stat ts {};
     std::string to = ::stat(path.c_str(), &ts) == 0 ? " to " + file_type_text(ts.st_mode) : " (dangling)";
-    return "it is a symbolic link" + to + "; an output is written only to a new name or a regular file (give the target's own path)";
+    return "it is a symbolic link" + to +
+           "; an output is written only to a new name or a regular file (give the target's own path)";
   }
   return "it is " + file_type_text(ls.st_mode) + ", not a regular file";
 }
@@ -84,7 +85,8 @@ inline void check_output_file(const std::string& option, const std::filesystem::
                               const std::vector<std::string>& inputs = {}) {
   const std::string shown = (option.empty() ? "" : option + " ") + path.string();
   if (path.empty()) throw OutputError(option + ": an empty path");
-  if (std::string why = not_a_plain_output(path); !why.empty()) throw OutputError(shown + ": refusing to write there: " + why);
+  if (std::string why = not_a_plain_output(path); !why.empty())
+    throw OutputError(shown + ": refusing to write there: " + why);
   struct stat os {};
   if (::stat(path.c_str(), &os) != 0) return;  // a new name
   for (const auto& in : inputs) {
@@ -225,7 +227,8 @@ inline void check_output_path(const std::string& option, const std::string& path
     if (part == "..") throw OutputError(option + " " + shown + ": \"..\" is not allowed in an output path");
   auto last = p.lexically_normal().filename();
   if (last.empty() || last == "." || last == "..")
-    throw OutputError(option + " " + shown + ": the output must be a named file or folder (not \"/\", \".\" or a path ending in '/')");
+    throw OutputError(option + " " + shown +
+                      ": the output must be a named file or folder (not \"/\", \".\" or a path ending in '/')");
 }
 
 // Does folder `dir` carry the marker file `marker` (written by the command that made it)?
@@ -240,7 +243,8 @@ inline void remove_our_folder(const std::filesystem::path& dir, const std::strin
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(fs::symlink_status(dir, ec))) return;
-  if (fs::is_symlink(dir, ec) || !fs::is_directory(dir, ec) || !(has_marker(dir, marker) || (written_by_us && written_by_us(dir))))
+  if (fs::is_symlink(dir, ec) || !fs::is_directory(dir, ec) ||
+      !(has_marker(dir, marker) || (written_by_us && written_by_us(dir))))
     throw OutputError(dir.string() + ": exists and was not written by this command (no " + marker +
                       " marker): refusing to replace it; remove it yourself or choose another name");
   fs::remove_all(dir, ec);
@@ -253,25 +257,28 @@ inline void check_replaceable(const std::filesystem::path& out, const std::strin
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(fs::symlink_status(out, ec))) return;
-  if (fs::is_symlink(out, ec) || !fs::is_directory(out, ec) || !(has_marker(out, marker) || (written_by_us && written_by_us(out))))
+  if (fs::is_symlink(out, ec) || !fs::is_directory(out, ec) ||
+      !(has_marker(out, marker) || (written_by_us && written_by_us(out))))
     throw OutputError(out.string() + ": exists and was not written by this command (no " + marker +
                       " marker): refusing to replace it; remove it yourself or choose another name");
 }
 
 // Puts the finished folder `partial` at `out`, replacing an old `out` of ours atomically.
-inline void replace_output_folder(const std::filesystem::path& partial, const std::filesystem::path& out, const std::string& marker,
+inline void replace_output_folder(const std::filesystem::path& partial, const std::filesystem::path& out,
+                                  const std::string& marker,
                                   const std::function<bool(const std::filesystem::path&)>& written_by_us = {}) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(fs::symlink_status(out, ec))) {
     if (std::rename(partial.c_str(), out.c_str()) != 0)
-      throw OutputError(out.string() + ": cannot move the finished output into place: " + errno_text(errno) + " (it is in " +
-                        partial.string() + ")");
+      throw OutputError(out.string() + ": cannot move the finished output into place: " + errno_text(errno) +
+                        " (it is in " + partial.string() + ")");
     return;
   }
   check_replaceable(out, marker, written_by_us);
   if (::renameat2(AT_FDCWD, partial.c_str(), AT_FDCWD, out.c_str(), RENAME_EXCHANGE) != 0)
-    throw OutputError(out.string() + ": cannot replace it: " + errno_text(errno) + " (the new output is in " + partial.string() + ")");
+    throw OutputError(out.string() + ": cannot replace it: " + errno_text(errno) + " (the new output is in " +
+                      partial.string() + ")");
   fs::remove_all(partial, ec);  // now the old output
   if (ec) throw OutputError(partial.string() + ": cannot remove the replaced output: " + ec.message());
 }

@@ -45,9 +45,7 @@ std::string check_seed_text(const std::string& text);
 // The message of an exception as the command line prints it: a scene the
 // exact pipeline refuses (kernel/prepared_scene.hpp, NotRationalMotion)
 // already carries the advice (--arith double, mpfr:BITS or certified).
-inline std::string cli_message(const std::exception& e) {
-  return e.what();
-}
+inline std::string cli_message(const std::exception& e) { return e.what(); }
 
 // The program's version (CMake project version) and the source tree's git
 // revision at configure time ("unknown" without git); app/main.cpp.
@@ -93,11 +91,11 @@ struct Command {
   std::function<int()> run;
 };
 
-Command add_solve_command(CLI::App& app);     // app/solve.cpp
-Command add_table_command(CLI::App& app);     // app/table.cpp
-Command add_generate_command(CLI::App& app);  // app/generate.cpp
-Command add_report_command(CLI::App& app);    // app/report.cpp
-Command add_plot_command(CLI::App& app);      // app/plot.cpp
+Command add_solve_command(CLI::App& app);              // app/solve.cpp
+Command add_table_command(CLI::App& app);              // app/table.cpp
+Command add_generate_command(CLI::App& app);           // app/generate.cpp
+Command add_report_command(CLI::App& app);             // app/report.cpp
+Command add_plot_command(CLI::App& app);               // app/plot.cpp
 Command add_certify_command(CLI::App& app);            // app/certify.cpp
 Command add_check_certificate_command(CLI::App& app);  // app/certify.cpp
 Command add_regress_command(CLI::App& app);            // app/regress.cpp

@@ -3,9 +3,9 @@
 // so that `eccd judge SCENE ANSWER` judges the real FCL. It prints one object
 // with "format" ("eccd-fcl-answer/1"), "version", the engine, FCL's version and tolerances
 // ("gjk_tolerance": the one fcl::collide received) and the answer under "answer" (judge reads it from there;
-// for --ccd only collides and first_contact: FCL's continuous collision claims nothing else); --json changes nothing. Exit 0, 2 bad
-// option or scene, 3 refused: FCL is not built in, a motion --ccd cannot
-// express, a pose that is not an ellipsoid in double.
+// for --ccd only collides and first_contact: FCL's continuous collision claims nothing else); --json changes nothing.
+// Exit 0, 2 bad option or scene, 3 refused: FCL is not built in, a motion --ccd cannot express, a pose that is not an
+// ellipsoid in double.
 #include "app/commands.hpp"
 #include "compare/fcl_engine.hpp"
 #include "io/scene_reader.hpp"
@@ -30,24 +30,29 @@ struct FclArgs {
 Command add_fcl_command(CLI::App& app) {
   auto args = std::make_shared<FclArgs>();
   Command c;
-  c.sub = app.add_subcommand("fcl",
-                             "FCL's answer for a scene (FCL 0.7 as a peer engine, docs/fcl.md), in the scene format's answer "
-                             "form, for `eccd judge SCENE ANSWER`. Exit 0, 2 bad input, 3 refused (FCL not built in, a motion "
-                             "--ccd cannot express).");
+  c.sub = app.add_subcommand(
+      "fcl",
+      "FCL's answer for a scene (FCL 0.7 as a peer engine, docs/fcl.md), in the scene format's answer "
+      "form, for `eccd judge SCENE ANSWER`. Exit 0, 2 bad input, 3 refused (FCL not built in, a motion "
+      "--ccd cannot express).");
   auto* s = c.sub;
   s->add_option("SCENE", args->scene, "Scene file (ellipse-ccd-scene/1); - reads standard input")->required();
-  args->samples_opt = s->add_option("--samples", args->samples,
-                                    "fcl::collide at t = k/N, k = 0..N, colliding samples merged into intervals (fcl/sample:N)")
-                          ->capture_default_str()->check(CLI::Range(1, 10000000));
-  args->ccd_opt = s->add_option("--ccd", args->ccd,
-                                "fcl::continuousCollide, naive solver, N iterations, translation motion (fcl/ccd:N): collides "
-                                "and first contact only; only for constant shapes moving by a translation linear in t")
-                      ->check(CLI::Range(2, 10000000));
+  args->samples_opt =
+      s->add_option("--samples", args->samples,
+                    "fcl::collide at t = k/N, k = 0..N, colliding samples merged into intervals (fcl/sample:N)")
+          ->capture_default_str()
+          ->check(CLI::Range(1, 10000000));
+  args->ccd_opt =
+      s->add_option("--ccd", args->ccd,
+                    "fcl::continuousCollide, naive solver, N iterations, translation motion (fcl/ccd:N): collides "
+                    "and first contact only; only for constant shapes moving by a translation linear in t")
+          ->check(CLI::Range(2, 10000000));
   args->samples_opt->excludes(args->ccd_opt);
-  args->gjk_opt = s->add_option("--gjk-tolerance", args->gjk_tolerance,
-                                "FCL's CollisionRequest::gjk_tolerance for fcl::collide (default FCL's own, 1e-6), e.g. 1e-12; "
-                                "not with --ccd (FCL's continuous collision uses a default request inside)")
-                      ->check(CLI::PositiveNumber);
+  args->gjk_opt =
+      s->add_option("--gjk-tolerance", args->gjk_tolerance,
+                    "FCL's CollisionRequest::gjk_tolerance for fcl::collide (default FCL's own, 1e-6), e.g. 1e-12; "
+                    "not with --ccd (FCL's continuous collision uses a default request inside)")
+          ->check(CLI::PositiveNumber);
   args->gjk_opt->excludes(args->ccd_opt);
   s->add_flag("--json", args->json,
               "Print one JSON object (format eccd-fcl-answer/1) with the answer under \"answer\"; the output is that "
@@ -65,7 +70,8 @@ Command add_fcl_command(CLI::App& app) {
     Answer a;
     try {
       a = ccd ? fcl_ccd(scene, n, fo) : fcl_sample(scene, n, fo);
-    } catch (const std::invalid_argument& e) {  // a valid scene FCL is not given: inexpressible motion, not an ellipsoid
+    } catch (
+        const std::invalid_argument& e) {  // a valid scene FCL is not given: inexpressible motion, not an ellipsoid
       throw ExitError(3, "fcl: " + src.label + ": " + engine + ": " + e.what());
     }
     nlohmann::ordered_json ans = nlohmann::ordered_json::parse(answer_to_json(a).dump());

@@ -63,7 +63,8 @@ namespace {
 void on_backstop(int) {
   remove_pending_output();  // a temporary output file being written (app/atomic_write.hpp)
   static const char msg[] =
-      "eccd: resource budget exhausted: the time limit passed (--time-limit) and the run did not stop by itself; ended\n";
+      "eccd: resource budget exhausted: the time limit passed (--time-limit) and the run did not stop by itself; "
+      "ended\n";
   ssize_t n = write(2, msg, sizeof msg - 1);
   (void)n;
   _exit(5);
@@ -169,11 +170,15 @@ int main(int argc, char** argv) {
 
 namespace {
 int run_main(int argc, char** argv) {
-  CLI::App app{"eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and ellipsoids"};
+  CLI::App app{
+      "eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and "
+      "ellipsoids"};
   app.require_subcommand(1);
   // Parser errors (an unknown option, a bad value) start with "eccd: " like every other error.
-  app.failure_message([](const CLI::App* a, const CLI::Error& e) { return "eccd: " + CLI::FailureMessage::simple(a, e); });
-  app.fallthrough();  // before the sub-commands are added: they inherit it (the budget options below work after them too)
+  app.failure_message(
+      [](const CLI::App* a, const CLI::Error& e) { return "eccd: " + CLI::FailureMessage::simple(a, e); });
+  app.fallthrough();  // before the sub-commands are added: they inherit it (the budget options below work after them
+                      // too)
   app.set_version_flag("--version", std::string("eccd ") + program_version() + " (git " + program_revision() + ")",
                        "Print the program's version and the git revision it was built from, and exit");
   app.add_flag("-q,--quiet", quiet(), "No progress and no warnings on stderr, only errors");
@@ -183,24 +188,36 @@ int run_main(int argc, char** argv) {
   app.add_option("--time-limit", run_budget().time_limit_s,
                  "Seconds each pipeline run may take (a solve, a certify, one scene of regress, one task of report); "
                  "beyond it the exact pipeline stops with exit 5 and floating ones report undecided; 0 = none")
-      ->capture_default_str()->check(CLI::Range(0.0, 1e9));
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e9));
   app.add_option("--memory-limit", run_budget().memory_limit_mb,
                  "Address space of the process in MiB (setrlimit RLIMIT_AS); exhausted: exit 5; 0 = none")
-      ->capture_default_str()->check(CLI::Range(std::size_t(0), std::size_t(1) << 30));
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t(0), std::size_t(1) << 30));
   app.add_option("--max-file-bytes", lim.max_file_bytes, "Largest scene file read (bytes); larger: exit 2")
-      ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
   app.add_option("--max-digits", lim.max_digits,
-                 "Most decimal digits in the numerator or denominator of a scene's number (its exact value in lowest terms); more: exit 2")
-      ->capture_default_str()->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
+                 "Most decimal digits in the numerator or denominator of a scene's number (its exact value in lowest "
+                 "terms); more: exit 2")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
   app.add_option("--max-degree", lim.max_degree, "Highest degree of a polynomial in a scene file; higher: exit 2")
-      ->capture_default_str()->check(CLI::Range(0, 100000));
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100000));
 
-  std::vector<Command> commands{add_solve_command(app),    add_table_command(app),             add_generate_command(app),
-                                add_report_command(app),   add_plot_command(app),              add_certify_command(app),
-                                add_check_certificate_command(app), add_regress_command(app), add_judge_command(app),
-                               add_fcl_command(app),
-                               add_animate_command(app)};
-  commands.push_back(add_separate_command(app));  // app/separate.cpp (issue 17)
+  std::vector<Command> commands{add_solve_command(app),
+                                add_table_command(app),
+                                add_generate_command(app),
+                                add_report_command(app),
+                                add_plot_command(app),
+                                add_certify_command(app),
+                                add_check_certificate_command(app),
+                                add_regress_command(app),
+                                add_judge_command(app),
+                                add_fcl_command(app),
+                                add_animate_command(app)};
+  commands.push_back(add_separate_command(app));      // app/separate.cpp (issue 17)
   commands.push_back(add_import_poses_command(app));  // app/import_poses.cpp
 
   // Under --json a failure is also one JSON object on stdout (README "Exit codes").
@@ -210,7 +227,8 @@ int run_main(int argc, char** argv) {
     const std::string message = utf8_for_json(raw);
     std::cerr << "eccd: " << message << "\n";
     if (json_mode) {
-      nlohmann::json j = {{"format", "eccd-error/1"}, {"version", program_version()}, {"error", message}, {"exit_code", code}};
+      nlohmann::json j = {
+          {"format", "eccd-error/1"}, {"version", program_version()}, {"error", message}, {"exit_code", code}};
       std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
     return code;
@@ -231,7 +249,8 @@ int run_main(int argc, char** argv) {
     rlimit rl{};
     rl.rlim_cur = rl.rlim_max = rlim_t(run_budget().memory_limit_mb) << 20;
     rlimit old{};
-    if (getrlimit(RLIMIT_AS, &old) == 0 && old.rlim_max != RLIM_INFINITY && old.rlim_max < rl.rlim_max) rl.rlim_cur = rl.rlim_max = old.rlim_max;
+    if (getrlimit(RLIMIT_AS, &old) == 0 && old.rlim_max != RLIM_INFINITY && old.rlim_max < rl.rlim_max)
+      rl.rlim_cur = rl.rlim_max = old.rlim_max;
     setrlimit(RLIMIT_AS, &rl);
   }
 
@@ -247,7 +266,8 @@ int run_main(int argc, char** argv) {
     return "";
   };
   std::ostringstream hint;
-  hint << " (--time-limit " << run_budget().time_limit_s << " s, --memory-limit " << run_budget().memory_limit_mb << " MiB)";
+  hint << " (--time-limit " << run_budget().time_limit_s << " s, --memory-limit " << run_budget().memory_limit_mb
+       << " MiB)";
   const std::string budget_hint = hint.str();
   try {
     for (auto& c : commands)
@@ -289,7 +309,8 @@ int run_main(int argc, char** argv) {
     return fail(5, "resource budget exhausted: " + cut_message(m) + budget_hint);
   } catch (const std::bad_alloc&) {
     const std::string in = input_of_command();
-    return fail(5, "resource budget exhausted: " + (in.empty() ? std::string() : in + ": ") + "out of memory" + budget_hint);
+    return fail(
+        5, "resource budget exhausted: " + (in.empty() ? std::string() : in + ": ") + "out of memory" + budget_hint);
   } catch (const std::exception& e) {
     return fail(70, "internal error: " + cut_message(e.what()));
   } catch (...) {

@@ -109,7 +109,6 @@ json rounded(const std::vector<double>& v) {
   return a;
 }
 
-
 // p at each rational t, exactly: integer Horner on L·p (L = lcm of the denominators).
 std::vector<Rational> exact_values(const Poly<Rational>& p, const std::vector<Rational>& ts) {
   std::vector<Rational> out(ts.size(), Rational(0));
@@ -147,7 +146,11 @@ std::vector<double> normalised(const std::vector<Rational>& v, Rational& max_abs
 // The grid k / n, k = 0..n, with extra instants (approximations) merged in, sorted, no duplicates.
 std::vector<Rational> grid_with(int n, const std::vector<double>& extra) {
   std::vector<Rational> ts;
-  for (int k = 0; k <= n; ++k) { Rational t(k, n); t.canonicalize(); ts.push_back(t); }
+  for (int k = 0; k <= n; ++k) {
+    Rational t(k, n);
+    t.canonicalize();
+    ts.push_back(t);
+  }
   for (double x : extra)
     if (x >= 0 && x <= 1) ts.push_back(Rational(x));  // exact value of the double
   std::sort(ts.begin(), ts.end());
@@ -174,12 +177,18 @@ Mat<Rational> inverse(Mat<Rational> a) {
     std::swap(a[p], a[c]);
     std::swap(inv[p], inv[c]);
     T piv = a[c][c];
-    for (std::size_t j = 0; j < n; ++j) { a[c][j] = a[c][j] / piv; inv[c][j] = inv[c][j] / piv; }
+    for (std::size_t j = 0; j < n; ++j) {
+      a[c][j] = a[c][j] / piv;
+      inv[c][j] = inv[c][j] / piv;
+    }
     for (std::size_t r = 0; r < n; ++r) {
       if (r == c) continue;
       T f = a[r][c];
       if (f == T(0)) continue;
-      for (std::size_t j = 0; j < n; ++j) { a[r][j] = a[r][j] - f * a[c][j]; inv[r][j] = inv[r][j] - f * inv[c][j]; }
+      for (std::size_t j = 0; j < n; ++j) {
+        a[r][j] = a[r][j] - f * a[c][j];
+        inv[r][j] = inv[r][j] - f * inv[c][j];
+      }
     }
   }
   return inv;
@@ -199,14 +208,19 @@ std::vector<double> null_vector4(const Mat<double>& m) {
     std::vector<double> col(4);
     for (int i = 0; i < 4; ++i) {
       int rr[3], cc[3];
-      for (int r = 0, k = 0; r < 4; ++r) if (r != j) rr[k++] = r;
-      for (int c = 0, k = 0; c < 4; ++c) if (c != i) cc[k++] = c;
+      for (int r = 0, k = 0; r < 4; ++r)
+        if (r != j) rr[k++] = r;
+      for (int c = 0, k = 0; c < 4; ++c)
+        if (c != i) cc[k++] = c;
       double d = det3(m, rr[0], rr[1], rr[2], cc[0], cc[1], cc[2]);
       col[i] = ((i + j) % 2 ? -d : d);
     }
     double n = 0;
     for (double x : col) n += std::fabs(x);
-    if (n > bestn) { bestn = n; best = col; }
+    if (n > bestn) {
+      bestn = n;
+      best = col;
+    }
   }
   return best;
 }
@@ -293,7 +307,10 @@ std::vector<std::pair<double, bool>> snapshot_instants(int k, const Solution& re
   for (auto [s, contact] : special) {
     bool merged = false;
     for (auto& [t, flag] : ts)
-      if (std::fabs(t - s) < 1e-9) { flag = flag || contact; merged = true; }
+      if (std::fabs(t - s) < 1e-9) {
+        flag = flag || contact;
+        merged = true;
+      }
     if (!merged) ts.push_back({s, contact});
   }
   std::sort(ts.begin(), ts.end());
@@ -306,9 +323,11 @@ PolyMatrix<double, 3> cycloidal_matrix_at(const CycloidalMotion& m, const std::v
   auto d = [](const Rational& q) { return q.get_d(); };
   const double a = std::numbers::pi * (d(m.theta0) + d(m.theta1) * t), c = std::cos(a), sn = std::sin(a);
   const double vx = d(m.x[0]) + d(m.x[1]) * t, vy = d(m.y[0]) + d(m.y[1]) * t;
-  const double rows[3][3] = {{c, -sn, x0[0] - (c * x0[0] - sn * x0[1]) + vx}, {sn, c, x0[1] - (sn * x0[0] + c * x0[1]) + vy}, {0, 0, 1}};
+  const double rows[3][3] = {
+      {c, -sn, x0[0] - (c * x0[0] - sn * x0[1]) + vx}, {sn, c, x0[1] - (sn * x0[0] + c * x0[1]) + vy}, {0, 0, 1}};
   PolyMatrix<double, 3> r;
-  for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) r[i][j] = Poly<double>(std::vector<double>{rows[i][j]});
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r[i][j] = Poly<double>(std::vector<double>{rows[i][j]});
   return r;
 }
 
@@ -345,9 +364,14 @@ void add_objects(json& data, const Scene& s, const Solution& rep, int k) {
     double t = double(i) / (kPath - 1);
     ts.push_back(t);
     auto ca = moved<N>(sa, ma(t), t).first, cb = moved<N>(sb, mb(t), t).first;
-    ax.push_back(ca[0]); ay.push_back(ca[1]); bx.push_back(cb[0]); by.push_back(cb[1]);
+    ax.push_back(ca[0]);
+    ay.push_back(ca[1]);
+    bx.push_back(cb[0]);
+    by.push_back(cb[1]);
   }
-  data["paths"] = {{"t", rounded(ts)}, {"a", {{"x", rounded(ax)}, {"y", rounded(ay)}}}, {"b", {{"x", rounded(bx)}, {"y", rounded(by)}}}};
+  data["paths"] = {{"t", rounded(ts)},
+                   {"a", {{"x", rounded(ax)}, {"y", rounded(ay)}}},
+                   {"b", {{"x", rounded(bx)}, {"y", rounded(by)}}}};
 }
 
 std::vector<double> critical_approx(const Solution& rep) {
@@ -383,8 +407,9 @@ void add_curve_2d(json& data, const Scene& s, const Solution& rep) {
                      {"degree", -1},
                      {"identically_zero", false},
                      {"max_abs", decimal_string(max_abs, 6)},
-                     {"how", "cycloidal motion: Δ(t) is not a polynomial; enclosed in MPFI at 128 bits at each instant "
-                             "and drawn at the mid-points, divided by its largest sampled |value|"},
+                     {"how",
+                      "cycloidal motion: Δ(t) is not a polynomial; enclosed in MPFI at 128 bits at each instant "
+                      "and drawn at the mid-points, divided by its largest sampled |value|"},
                      {"t", rounded(td)},
                      {"value", val}};
   } else {
@@ -405,7 +430,8 @@ void add_curve_2d(json& data, const Scene& s, const Solution& rep) {
   const Answer& ans = rep.answer;
   for (std::size_t i = 0; i < ans.contacts.size(); ++i) {
     json c = {{"t", ans.contacts[i].value}};
-    if (i < ans.contact_points.size() && ans.contact_points[i].x.size() == 2)  // decimal text of Lemma 5's point, display only
+    if (i < ans.contact_points.size() &&
+        ans.contact_points[i].x.size() == 2)  // decimal text of Lemma 5's point, display only
       // (an interval "[lo, hi]" from a certified run: its lower end, for display)
       c["point"] = {std::stod(ans.contact_points[i].x[0].substr(ans.contact_points[i].x[0].rfind('[') + 1)),
                     std::stod(ans.contact_points[i].x[1].substr(ans.contact_points[i].x[1].rfind('[') + 1))};
@@ -448,12 +474,18 @@ void add_curve_3d(json& data, const Scene& s, const Solution& rep) {
     double best = 0.5, fbest = -INFINITY;
     for (int i = 1; i < 2000; ++i) {
       double u = i / 2000.0, f = q(u);
-      if (f > fbest) { fbest = f; best = u; }
+      if (f > fbest) {
+        fbest = f;
+        best = u;
+      }
     }
     double lo = std::max(1e-12, best - 1.0 / 2000), hi = std::min(1 - 1e-12, best + 1.0 / 2000);
     for (int it = 0; it < 100; ++it) {  // golden section on the unimodal piece
       double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
-      if (q(a) > q(b)) hi = b; else lo = a;
+      if (q(a) > q(b))
+        hi = b;
+      else
+        lo = a;
     }
     double u0 = 0.5 * (lo + hi), lam = (u0 - 1) / u0;
     Mat<double> mm(4, std::vector<double>(4));
@@ -474,16 +506,25 @@ void add_curve_3d(json& data, const Scene& s, const Solution& rep) {
     Bern<double> q = coeffs_at(k);
     for (int i = 1; i < kFine; ++i) {
       double u = double(i) / kFine;
-      if (q(u) > 0) { u_lo = std::min(u_lo, u); u_hi = std::max(u_hi, u); }
+      if (q(u) > 0) {
+        u_lo = std::min(u_lo, u);
+        u_hi = std::max(u_hi, u);
+      }
     }
   }
-  for (const auto& c : contacts) { u_lo = std::min(u_lo, c["u"].get<double>()); u_hi = std::max(u_hi, c["u"].get<double>()); }
+  for (const auto& c : contacts) {
+    u_lo = std::min(u_lo, c["u"].get<double>());
+    u_hi = std::max(u_hi, c["u"].get<double>());
+  }
   double w0 = 0, w1 = 1;
   if (u_hi >= u_lo) {
     double margin = std::max(0.15 * (u_hi - u_lo), 2.0 / kFine);
     w0 = std::max(0.0, u_lo - margin);
     w1 = std::min(1.0, u_hi + margin);
-    if (w1 - w0 > 0.5) { w0 = 0; w1 = 1; }
+    if (w1 - w0 > 0.5) {
+      w0 = 0;
+      w1 = 1;
+    }
   }
   std::vector<double> us, td;
   for (int i = 0; i <= kGrid; ++i) us.push_back(w0 + (w1 - w0) * i / kGrid);
@@ -497,12 +538,13 @@ void add_curve_3d(json& data, const Scene& s, const Solution& rep) {
   }
   data["curve"] = {{"kind", "F"},
                    {"degree_t", F.degree_t()},
-                   {"how", "Bernstein coefficients in u built and evaluated exactly in t, divided by the largest, rounded to double, then de Casteljau in u"},
+                   {"how",
+                    "Bernstein coefficients in u built and evaluated exactly in t, divided by the largest, rounded to "
+                    "double, then de Casteljau in u"},
                    {"u_window", {w0, w1}},
                    {"u", us},
                    {"t", rounded(td)},
                    {"value", values}};
-
 }
 
 std::string quote(const std::string& s) {
@@ -520,8 +562,10 @@ int shell(const std::string& cmd) {
 // An interpreter with numpy and matplotlib: $ECCD_PYTHON if set, else python3 on PATH, else /usr/bin/python3.
 std::string find_python(std::string& tried) {
   std::vector<std::string> cands;
-  if (const char* e = std::getenv("ECCD_PYTHON"); e && *e) cands.push_back(e);
-  else cands = {"python3", "/usr/bin/python3"};
+  if (const char* e = std::getenv("ECCD_PYTHON"); e && *e)
+    cands.push_back(e);
+  else
+    cands = {"python3", "/usr/bin/python3"};
   for (const auto& c : cands) {
     tried += (tried.empty() ? "" : ", ") + c;
     if (shell(quote(c) + " -c 'import numpy, matplotlib' >/dev/null 2>&1") == 0) return c;
@@ -532,9 +576,9 @@ std::string find_python(std::string& tried) {
 // Independent motions (001 section 4; issue 20 point 5): where A(s) and B(t) meet, on an n x n grid of the
 // (s, t) square, by the double static test (api/static_test.hpp, status_at: 001 Appendix A with its error
 // bound) on the shared-parameter scene with A fixed at A(s), and the exact static test where double's error
-// bound cannot decide (two balls: f always has a double root): 1 meets (touching or overlapping), 0 separate. The zero set of F(u, s, t) = det((u-1)A(s) - uB(t))
-// projected on (s, t) is the boundary of that region (F > 0 for some u iff separate).
-// The same in 2D (ellipses, H = 3) and 3D (H = 4): the object fixed at its position x of its path.
+// bound cannot decide (two balls: f always has a double root): 1 meets (touching or overlapping), 0 separate. The zero
+// set of F(u, s, t) = det((u-1)A(s) - uB(t)) projected on (s, t) is the boundary of that region (F > 0 for some u iff
+// separate). The same in 2D (ellipses, H = 3) and 3D (H = 4): the object fixed at its position x of its path.
 constexpr int kStGrid = 64;
 template <int H>
 SceneObject fixed_at(const SceneObject& o, const Rational& x) {
@@ -548,7 +592,9 @@ SceneObject fixed_at(const SceneObject& o, const Rational& x) {
   return f;
 }
 void add_st_grid(json& data, const Scene& s) {
-  auto fixed = [&](const SceneObject& o, const Rational& x) { return s.dim == 3 ? fixed_at<4>(o, x) : fixed_at<3>(o, x); };
+  auto fixed = [&](const SceneObject& o, const Rational& x) {
+    return s.dim == 3 ? fixed_at<4>(o, x) : fixed_at<3>(o, x);
+  };
   std::vector<Rational> g;
   for (int k = 0; k < kStGrid; ++k) g.push_back(Rational(2 * k + 1, 2 * kStGrid));  // cell centres
   for (auto& x : g) x.canonicalize();
@@ -572,9 +618,15 @@ void add_st_grid(json& data, const Scene& s) {
   }
   std::vector<double> axis;
   for (const auto& x : g) axis.push_back(x.get_d());
-  data["st_grid"] = {{"n", kStGrid}, {"s", axis}, {"t", axis}, {"meets", meets}, {"uncertain", unsure},
-                     {"how", "static test at each cell's centre: double (001 App. A, error-bounded), exact where double "
-                             "cannot decide (" + std::to_string(unsure) + " cells)"}};
+  data["st_grid"] = {{"n", kStGrid},
+                     {"s", axis},
+                     {"t", axis},
+                     {"meets", meets},
+                     {"uncertain", unsure},
+                     {"how",
+                      "static test at each cell's centre: double (001 App. A, error-bounded), exact where double "
+                      "cannot decide (" +
+                          std::to_string(unsure) + " cells)"}};
 }
 
 std::string answer_words(const Solution& rep) {
@@ -592,7 +644,7 @@ std::string answer_words(const Solution& rep) {
 
 int run_plot(const PlotOptions& o) {
   const SceneSource src = read_scene_source(o.scene);  // "-": standard input
-  Scene s = parse_scene(src.text, src.label);            // SceneError -> exit 2
+  Scene s = parse_scene(src.text, src.label);          // SceneError -> exit 2
   for (const auto& [opt_name, f] : {std::pair<std::string, std::string>{"--out", o.out}, {"--data", o.data}}) {
     if (f.empty()) continue;
     check_output_path(opt_name, f);
@@ -602,14 +654,17 @@ int run_plot(const PlotOptions& o) {
       throw OutputError(f + ": folder " + dir.string() + " does not exist");
     if (fs::is_directory(f, ec)) throw OutputError(f + ": cannot write the file: it is a directory");
     // an existing regular file is replaced (a drawing is made again by design); anything else, or the scene, never
-    if (std::string why = not_a_plain_output(f); !why.empty()) throw OutputError(opt_name + " " + f + ": refusing to write there: " + why);
+    if (std::string why = not_a_plain_output(f); !why.empty())
+      throw OutputError(opt_name + " " + f + ": refusing to write there: " + why);
     check_output_file(opt_name, f, true, {o.scene});
   }
-  bool cyclo = std::holds_alternative<CycloidalMotion>(s.a.motion) || std::holds_alternative<CycloidalMotion>(s.b.motion);
+  bool cyclo =
+      std::holds_alternative<CycloidalMotion>(s.a.motion) || std::holds_alternative<CycloidalMotion>(s.b.motion);
   std::string arith_text = o.arith, arith_note;
   if (cyclo && (!o.arith_opt || o.arith_opt->count() == 0)) {
     arith_text = "double";
-    arith_note = "cycloidal motion: not rational, so double arithmetic (exact cannot represent it; certified also solves it)";
+    arith_note =
+        "cycloidal motion: not rational, so double arithmetic (exact cannot represent it; certified also solves it)";
     warn("plot", src.label + ": " + arith_note);
   }
   SolveOptions opt;
@@ -617,7 +672,8 @@ int run_plot(const PlotOptions& o) {
   Solution rep;
   try {
     ScopedDeadline deadline(run_budget().time_limit_s);
-    if (s.independent && (!o.arith_opt || o.arith_opt->count() == 0)) {  // exact where it answers (two balls), else double
+    if (s.independent &&
+        (!o.arith_opt || o.arith_opt->count() == 0)) {  // exact where it answers (two balls), else double
       try {
         rep = solve(s, opt);
       } catch (const std::invalid_argument& e) {
@@ -636,7 +692,8 @@ int run_plot(const PlotOptions& o) {
 
   const fs::path script = fs::path(plots_dir()) / "scene_figure.py";
   if (!fs::is_regular_file(script)) {
-    std::cerr << "eccd: plot: drawing script " << script.string() << " not found (set ECCD_PLOTS_DIR to the folder compare/plots)\n";
+    std::cerr << "eccd: plot: drawing script " << script.string()
+              << " not found (set ECCD_PLOTS_DIR to the folder compare/plots)\n";
     return 1;
   }
   std::string tried;
@@ -668,13 +725,17 @@ int run_plot(const PlotOptions& o) {
   }
 
   // Default PNG: the scene file's name; for a scene read from standard input, the scene's "name" (or "scene").
-  const std::string stem = o.scene != "-" ? fs::path(o.scene).stem().string() : !s.name.empty() && s.name.find('/') == std::string::npos ? s.name : "scene";
+  const std::string stem = o.scene != "-" ? fs::path(o.scene).stem().string()
+                           : !s.name.empty() && s.name.find('/') == std::string::npos ? s.name
+                                                                                      : "scene";
   const fs::path out = o.out.empty() ? fs::path(stem + ".png") : fs::path(o.out);
   const std::string tag = "." + std::to_string(::getpid()) + ".tmp";
   const fs::path tmp_png = fs::path(out.string() + tag + ".png");
   fs::path tmp_data;
-  if (!o.data.empty()) tmp_data = fs::path(o.data + tag + ".json");
-  else tmp_data = fs::temp_directory_path() / ("eccd-plot-" + std::to_string(::getpid()) + ".json");
+  if (!o.data.empty())
+    tmp_data = fs::path(o.data + tag + ".json");
+  else
+    tmp_data = fs::temp_directory_path() / ("eccd-plot-" + std::to_string(::getpid()) + ".json");
   auto cleanup = [&] {
     std::error_code ec;
     fs::remove(tmp_png, ec);
@@ -708,11 +769,11 @@ int run_plot(const PlotOptions& o) {
     int e = errno;
     cleanup();
     throw OutputError(o.data + ": cannot write the file: " + errno_text(e));
-  }
-  else fs::remove(tmp_data, ec);
+  } else
+    fs::remove(tmp_data, ec);
   if (!o.announce) return 0;
-  std::cout << "wrote " << out.string() << ": scene " << s.name << " (" << s.dim << "D), " << answer_words(rep)
-            << " [" << opt.arith.name() << (rep.certified ? ", certified" : ", not certified") << "]";
+  std::cout << "wrote " << out.string() << ": scene " << s.name << " (" << s.dim << "D), " << answer_words(rep) << " ["
+            << opt.arith.name() << (rep.certified ? ", certified" : ", not certified") << "]";
   if (!o.data.empty()) std::cout << "; data " << o.data;
   std::cout << "\n";
   return 0;
@@ -735,25 +796,32 @@ Command add_plot_command(CLI::App& app) {
       "(apt-get install python3-matplotlib; ECCD_PYTHON picks the interpreter, ECCD_PLOTS_DIR the script folder). "
       "Exit status: 0 written; 1 python/matplotlib missing or drawing failed (nothing written); 2 bad scene or "
       "option; 3 a request the pipeline refuses.");
-  c.sub->add_option("SCENE", o->scene, "Scene file (format ellipse-ccd-scene/1); - reads it from standard input")->required();
+  c.sub->add_option("SCENE", o->scene, "Scene file (format ellipse-ccd-scene/1); - reads it from standard input")
+      ->required();
   add_old_spelling(c.sub, "-o,--output", "-o/--output", "--out", o->out);
   c.sub->add_option("--out", o->out,
                     "PNG to write (default: the scene file's name with .png, in the current directory; for -, the "
                     "scene's name); "
                     "an existing regular file is replaced, only when drawing succeeded (a directory, device, FIFO, "
                     "socket, symbolic link or the scene: exit 2)");
-  c.sub->add_option("--instants", o->instants,
-                    "Number of evenly spaced instants drawn on the left, 0 to 50 (1 = t = 0 only); every contact "
-                    "instant and the first contact are drawn too")
+  c.sub
+      ->add_option("--instants", o->instants,
+                   "Number of evenly spaced instants drawn on the left, 0 to 50 (1 = t = 0 only); every contact "
+                   "instant and the first contact are drawn too")
       ->check(CLI::Range(0, 50))
       ->capture_default_str();
-  o->arith_opt = c.sub->add_option("--arith", o->arith,
-                                   "Arithmetic of the critical instants, collision intervals and contacts: exact "
-                                   "(certified), double or mpfr:BITS. A scene with a cycloidal motion defaults to "
-                                   "double (Delta(t) drawn from MPFI enclosures; --arith certified or mpfr:BITS also solve it)")
-                     ->capture_default_str();
-  c.sub->add_option("--data", o->data, "Also write the data the drawing script read (JSON, eccd-plot-data/1: the solve report, samples, outlines) to this file "
-                                       "(an existing regular file is replaced; a directory, device, FIFO, socket, symbolic link or the scene: exit 2)");
+  o->arith_opt =
+      c.sub
+          ->add_option("--arith", o->arith,
+                       "Arithmetic of the critical instants, collision intervals and contacts: exact "
+                       "(certified), double or mpfr:BITS. A scene with a cycloidal motion defaults to "
+                       "double (Delta(t) drawn from MPFI enclosures; --arith certified or mpfr:BITS also solve it)")
+          ->capture_default_str();
+  c.sub->add_option(
+      "--data", o->data,
+      "Also write the data the drawing script read (JSON, eccd-plot-data/1: the solve report, samples, outlines) to "
+      "this file "
+      "(an existing regular file is replaced; a directory, device, FIFO, socket, symbolic link or the scene: exit 2)");
   c.run = [o] { return run_plot(*o); };
   return c;
 }

@@ -44,7 +44,8 @@ struct RegressArgs {
 std::string answer_summary(const Answer& a) {
   std::string s = a.collides ? "collides" : "free";
   if (a.independent)  // independent motions (issue 20): s- and t-intervals
-    return s + ", " + std::to_string(a.s_intervals.size()) + " s-interval(s), " + std::to_string(a.t_intervals.size()) + " t-interval(s)";
+    return s + ", " + std::to_string(a.s_intervals.size()) + " s-interval(s), " + std::to_string(a.t_intervals.size()) +
+           " t-interval(s)";
   if (a.collides) s += ", " + std::to_string(a.intervals.size()) + " interval(s)";
   s += ", " + std::to_string(a.contacts.size()) + " contact(s)";
   return s;
@@ -57,7 +58,9 @@ struct CertificateCost {
 };
 // The kind of a certificate: its format, and for eccd-certificate/2 the dimension.
 std::string certificate_kind(const nlohmann::json& cert, int dim) {
-  std::string f = cert.is_object() && cert.contains("format") && cert["format"].is_string() ? cert["format"].get<std::string>() : "unknown";
+  std::string f = cert.is_object() && cert.contains("format") && cert["format"].is_string()
+                      ? cert["format"].get<std::string>()
+                      : "unknown";
   if (f == "eccd-certificate/2") f += dim == 2 ? " 2D" : " 3D";
   return f;
 }
@@ -73,36 +76,53 @@ struct PipelineTally {
 Command add_regress_command(CLI::App& app) {
   auto args = std::make_shared<RegressArgs>();
   Command c;
-  c.sub = app.add_subcommand("regress",
-                             "Recompute every scene under DIR that has a stored answer with the exact pipeline and compare: same "
-                             "collides, same numbers of intervals and contacts, each recomputed bracket overlapping the stored one. "
-                             "One line per scene, then a summary; exit 1 if any scene differs or fails (a scene over --time-limit, a file that "
-                             "looks like a scene but does not read as one, e.g. a misspelled format, fails); exit 2 if DIR has no scene.");
+  c.sub = app.add_subcommand(
+      "regress",
+      "Recompute every scene under DIR that has a stored answer with the exact pipeline and compare: same "
+      "collides, same numbers of intervals and contacts, each recomputed bracket overlapping the stored one. "
+      "One line per scene, then a summary; exit 1 if any scene differs or fails (a scene over --time-limit, a file "
+      "that "
+      "looks like a scene but does not read as one, e.g. a misspelled format, fails); exit 2 if DIR has no scene.");
   auto* s = c.sub;
   s->add_option("DIR", args->dir, "Folder searched recursively for scene files (*.json)")->capture_default_str();
-  s->add_flag("--floating", args->floating, "Also run every double and MPFR pipeline, as published (labels .../published) and guarded, and tabulate how each fares against the stored answers");
-  s->add_option("--arith", args->arith,
-                "Certified arithmetic that recomputes the answers: exact, or certified (intervals of doubles, escalating to "
-                "MPFI intervals of 256 bits, then to exact; certified:B1,B2,... or certified:none choose the MPFI rungs; the "
-                "summary says where each scene was decided)")
+  s->add_flag("--floating", args->floating,
+              "Also run every double and MPFR pipeline, as published (labels .../published) and guarded, and tabulate "
+              "how each fares against the stored answers");
+  s->add_option(
+       "--arith", args->arith,
+       "Certified arithmetic that recomputes the answers: exact, or certified (intervals of doubles, escalating to "
+       "MPFI intervals of 256 bits, then to exact; certified:B1,B2,... or certified:none choose the MPFI rungs; the "
+       "summary says where each scene was decided)")
       ->capture_default_str()
       ->check([](const std::string& a) -> std::string {
         if (a != "exact" && a.rfind("certified", 0) != 0) return "expected exact or certified[:BITS,...]";
-        try { parse_arithmetic(a); } catch (const std::exception& e) { return e.what(); }
+        try {
+          parse_arithmetic(a);
+        } catch (const std::exception& e) {
+          return e.what();
+        }
         return "";
       });
-  s->add_flag("--certify", args->certify,
-              "Also write each scene's certificate (in memory) and re-check it with the certificate checker; a certificate "
-              "that cannot be made or fails its check fails the scene; with --arith certified a 3D scene's certificate is "
-              "the interval Bezier proof's (eccd-bezier-certificate/2) when that proof decides it, else the exact one "
-              "(the route is reported per scene)");
-  s->add_option("--keep-certificates", args->keep_certificates,
-                "With --certify: also write each certificate into this folder (created if missing; file name: the scene's path "
-                "under DIR with / replaced by __, then .cert.json) and an index.json listing scene, certificate and format, so "
-                "that other checkers (eccd-check, tools/check_certificate.py --index) can re-check them");
-  s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions for --floating")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
-  s->add_option("--tol", args->tol, "--floating: tolerance on instants (an interval end further off counts as off)")->capture_default_str()->check(CLI::PositiveNumber);
-  s->add_flag("--json", args->json, "Print one JSON object (per-scene results, summary, floating table) instead of text");
+  s->add_flag(
+      "--certify", args->certify,
+      "Also write each scene's certificate (in memory) and re-check it with the certificate checker; a certificate "
+      "that cannot be made or fails its check fails the scene; with --arith certified a 3D scene's certificate is "
+      "the interval Bezier proof's (eccd-bezier-certificate/2) when that proof decides it, else the exact one "
+      "(the route is reported per scene)");
+  s->add_option(
+      "--keep-certificates", args->keep_certificates,
+      "With --certify: also write each certificate into this folder (created if missing; file name: the scene's path "
+      "under DIR with / replaced by __, then .cert.json) and an index.json listing scene, certificate and format, so "
+      "that other checkers (eccd-check, tools/check_certificate.py --index) can re-check them");
+  s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions for --floating")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(53, 65536));
+  s->add_option("--tol", args->tol, "--floating: tolerance on instants (an interval end further off counts as off)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  s->add_flag("--json", args->json,
+              "Print one JSON object (per-scene results, summary, floating table) instead of text");
   c.run = [args]() {
     if (!fs::is_directory(args->dir)) throw std::invalid_argument(args->dir + ": not a directory");
     std::vector<fs::path> files;
@@ -132,11 +152,16 @@ Command add_regress_command(CLI::App& app) {
         const fs::file_status st = fs::status(p, sec);
         if (sec || !fs::is_regular_file(st)) {
           std::string why;
-          if (sec.value() == ELOOP) why = "a symbolic link loop: cannot read it";
-          else if (fs::is_symlink(ls) && !fs::exists(st)) why = "a dangling symbolic link (its target does not exist)";
-          else if (sec) why = "cannot read it: " + sec.message();
-          else if (fs::is_directory(st)) continue;  // a link to a folder named *.json: not followed
-          else why = "not a regular file (a FIFO, device or socket): not read";
+          if (sec.value() == ELOOP)
+            why = "a symbolic link loop: cannot read it";
+          else if (fs::is_symlink(ls) && !fs::exists(st))
+            why = "a dangling symbolic link (its target does not exist)";
+          else if (sec)
+            why = "cannot read it: " + sec.message();
+          else if (fs::is_directory(st))
+            continue;  // a link to a folder named *.json: not followed
+          else
+            why = "not a regular file (a FIFO, device or socket): not read";
           broken[p] = why;
           files.push_back(p);
           continue;
@@ -144,27 +169,34 @@ Command add_regress_command(CLI::App& app) {
         std::string why, text;
         FileKind k = classify_file(p, text, why);
         if (k == FileKind::NotScene) continue;
-        if (k == FileKind::Broken) broken[p] = why;
-        else texts[p] = std::move(text);
+        if (k == FileKind::Broken)
+          broken[p] = why;
+        else
+          texts[p] = std::move(text);
         files.push_back(p);
       }
-      if (ec) warn("regress", args->dir + ": the folder walk stopped early: " + ec.message() + " (the scenes found so far are checked)");
+      if (ec)
+        warn("regress",
+             args->dir + ": the folder walk stopped early: " + ec.message() + " (the scenes found so far are checked)");
     }
     std::sort(skipped_names.begin(), skipped_names.end());
     for (const auto& n : skipped_names)
       warn("regress", n + ": skipped: only files named *.json (lower case) are read; rename it to check it");
     std::sort(files.begin(), files.end());
     if (files.empty())
-      throw std::invalid_argument(args->dir + ": no scene found (no *.json file with \"format\": \"ellipse-ccd-scene/1\")");
+      throw std::invalid_argument(args->dir +
+                                  ": no scene found (no *.json file with \"format\": \"ellipse-ccd-scene/1\")");
     auto t0 = std::chrono::steady_clock::now();
     int agree = 0, differ = 0, failed = 0, skipped = 0, escalated = 0;
     const bool certified_mode = args->arith != "exact";
     std::map<std::string, int> decided_in;  // certified mode: scenes per deciding rung
-    std::map<std::string, long> local_decisions;  // certified mode: decisions made locally, by kind (summed over scenes)
-    int local_scenes = 0;                        // certified mode: scenes decided with at least one local decision
-    int exact_only = 0;                          // certified mode: scenes run exactly (independent motions), in decided_in too
-    std::map<std::string, CertificateCost> certificate_cost;  // --certify: proving and checking time per certificate kind
-    nlohmann::json kept = nlohmann::json::array();             // --keep-certificates: the index
+    std::map<std::string, long>
+        local_decisions;   // certified mode: decisions made locally, by kind (summed over scenes)
+    int local_scenes = 0;  // certified mode: scenes decided with at least one local decision
+    int exact_only = 0;    // certified mode: scenes run exactly (independent motions), in decided_in too
+    std::map<std::string, CertificateCost>
+        certificate_cost;                           // --certify: proving and checking time per certificate kind
+    nlohmann::json kept = nlohmann::json::array();  // --keep-certificates: the index
     nlohmann::json rows = nlohmann::json::array();
     std::vector<std::string> pipeline_order;
     std::map<std::string, PipelineTally> tally;
@@ -197,7 +229,8 @@ Command add_regress_command(CLI::App& app) {
           row["arith"] = "certified";
           row["arith_reason"] = "cycloidal motion: no exact answer, the ground truth is the certified one";
         }
-        // independent motions (issue 20): exact is their certified pipeline (certificate: certificate/write/independent_certificate.hpp)
+        // independent motions (issue 20): exact is their certified pipeline (certificate:
+        // certificate/write/independent_certificate.hpp)
         if (sc.independent) opt.arith = Arithmetic::exact();
         const Solution sol = solve(sc, opt);
         std::string how;
@@ -213,7 +246,8 @@ Command add_regress_command(CLI::App& app) {
             row["escalation_reason"] = r["escalation_reason"];
             how = "  (decided in " + sol.decided_in + "; escalated: " + r["escalation_reason"].get<std::string>() + ")";
           } else {
-            how = sol.decided_in == "interval" ? "  (decided in interval arithmetic)" : "  (decided in " + sol.decided_in + ")";
+            how = sol.decided_in == "interval" ? "  (decided in interval arithmetic)"
+                                               : "  (decided in " + sol.decided_in + ")";
           }
         }
         if (certified_mode && sol.arith.kind != Arithmetic::Certified) {  // an independent scene, run exactly
@@ -236,14 +270,17 @@ Command add_regress_command(CLI::App& app) {
           line = "FAIL  " + name + ": the stored answer differs from the recomputed " + args->arith + " one:";
           for (const auto& d : diff) line += "\n        " + d;
         }
-        if (args->certify) {  // also a cycloidal scene (certificate/write/cycloidal_certificate.hpp) and an independent one (certificate/write/independent_certificate.hpp)
+        if (args->certify) {  // also a cycloidal scene (certificate/write/cycloidal_certificate.hpp) and an independent
+                              // one (certificate/write/independent_certificate.hpp)
           nlohmann::json doc = nlohmann::json::parse(texts[f]);
           auto c0 = std::chrono::steady_clock::now();
           nlohmann::json cert;
           std::string route, route_why;
           try {
-            // certified mode: the certified route's certificate (certificate/write/bezier_certificate.hpp), else the exact one
-            cert = certified_mode ? make_certified_mode_certificate(sc, doc, route, route_why) : make_certificate(sc, doc);
+            // certified mode: the certified route's certificate (certificate/write/bezier_certificate.hpp), else the
+            // exact one
+            cert =
+                certified_mode ? make_certified_mode_certificate(sc, doc, route, route_why) : make_certificate(sc, doc);
           } catch (const CertificationError& e) {  // the proof left a range undecided: nothing certified, and said so
             if (!sc.independent) throw;
             cert = nullptr;
@@ -253,41 +290,57 @@ Command add_regress_command(CLI::App& app) {
           if (!cert.is_null() && !args->keep_certificates.empty()) {
             std::string file;
             for (char ch : name) file += ch == '/' || ch == '\\' ? std::string("__") : std::string(1, ch);
-            file = file.substr(0, file.size() - (file.size() > 5 && file.compare(file.size() - 5, 5, ".json") == 0 ? 5 : 0)) + ".cert.json";
+            file = file.substr(
+                       0, file.size() - (file.size() > 5 && file.compare(file.size() - 5, 5, ".json") == 0 ? 5 : 0)) +
+                   ".cert.json";
             fs::create_directories(args->keep_certificates);
             write_text_atomically(fs::path(args->keep_certificates) / file, cert.dump(1) + "\n");
-            kept.push_back({{"scene", fs::absolute(f).string()}, {"certificate", file}, {"format", cert.value("format", "")}});
+            kept.push_back(
+                {{"scene", fs::absolute(f).string()}, {"certificate", file}, {"format", cert.value("format", "")}});
           }
           if (!cert.is_null()) {
-          const auto c1 = std::chrono::steady_clock::now();
-          CertificateCheck chk = check_certificate(sc, doc, cert);
-          const auto c2 = std::chrono::steady_clock::now();
-          double cs = std::chrono::duration<double>(c2 - c0).count();
-          const double prove_s = std::chrono::duration<double>(c1 - c0).count(), check_s = std::chrono::duration<double>(c2 - c1).count();
-          CertificateCost& cost = certificate_cost[certificate_kind(cert, sc.dim)];
-          ++cost.count;
-          cost.prove_s += prove_s;
-          cost.check_s += check_s;
-          cost.worst_ratio = std::max(cost.worst_ratio, check_s / std::max(prove_s, 1e-9));
-          row["certificate"] = {{"valid", chk.valid}, {"seconds", cs}, {"prove_seconds", prove_s}, {"check_seconds", check_s}};
-          if (certified_mode) row["certificate"]["route"] = route;
-          char buf[80];
-          std::snprintf(buf, sizeof buf, ", certificate%s%s checked (%.2f s)", route.empty() ? "" : " ", route.c_str(), cs);
-          std::vector<std::string> cdiff;  // the certified route's certificate proves an answer: it must be the stored one
-          if (chk.valid && route == "bezier") cdiff = regress_differences(*sc.answer, answer_from_json(cert["answer"], name, "/answer"));
-          if (!cdiff.empty()) {
-            row["certificate"]["differences"] = cdiff;
-            if (diff.empty()) { --agree; ++differ; row["result"] = "differs"; }
-            line = "FAIL  " + name + ": its Bezier certificate proves an answer other than the stored one:";
-            for (const auto& d : cdiff) line += "\n        " + d;
-          } else if (chk.valid) {
-            line += buf;
-          } else {
-            row["certificate"]["failed_claim"] = chk.failed_claim;
-            row["certificate"]["reason"] = chk.reason;
-            if (diff.empty()) { --agree; ++differ; row["result"] = "differs"; }
-            line = "FAIL  " + name + ": its certificate fails the checker: " + chk.failed_claim + ": " + chk.reason;
-          }
+            const auto c1 = std::chrono::steady_clock::now();
+            CertificateCheck chk = check_certificate(sc, doc, cert);
+            const auto c2 = std::chrono::steady_clock::now();
+            double cs = std::chrono::duration<double>(c2 - c0).count();
+            const double prove_s = std::chrono::duration<double>(c1 - c0).count(),
+                         check_s = std::chrono::duration<double>(c2 - c1).count();
+            CertificateCost& cost = certificate_cost[certificate_kind(cert, sc.dim)];
+            ++cost.count;
+            cost.prove_s += prove_s;
+            cost.check_s += check_s;
+            cost.worst_ratio = std::max(cost.worst_ratio, check_s / std::max(prove_s, 1e-9));
+            row["certificate"] = {
+                {"valid", chk.valid}, {"seconds", cs}, {"prove_seconds", prove_s}, {"check_seconds", check_s}};
+            if (certified_mode) row["certificate"]["route"] = route;
+            char buf[80];
+            std::snprintf(buf, sizeof buf, ", certificate%s%s checked (%.2f s)", route.empty() ? "" : " ",
+                          route.c_str(), cs);
+            std::vector<std::string>
+                cdiff;  // the certified route's certificate proves an answer: it must be the stored one
+            if (chk.valid && route == "bezier")
+              cdiff = regress_differences(*sc.answer, answer_from_json(cert["answer"], name, "/answer"));
+            if (!cdiff.empty()) {
+              row["certificate"]["differences"] = cdiff;
+              if (diff.empty()) {
+                --agree;
+                ++differ;
+                row["result"] = "differs";
+              }
+              line = "FAIL  " + name + ": its Bezier certificate proves an answer other than the stored one:";
+              for (const auto& d : cdiff) line += "\n        " + d;
+            } else if (chk.valid) {
+              line += buf;
+            } else {
+              row["certificate"]["failed_claim"] = chk.failed_claim;
+              row["certificate"]["reason"] = chk.reason;
+              if (diff.empty()) {
+                --agree;
+                ++differ;
+                row["result"] = "differs";
+              }
+              line = "FAIL  " + name + ": its certificate fails the checker: " + chk.failed_claim + ": " + chk.reason;
+            }
           }
         }
         if (args->floating && sc.independent) {  // the harness's pipelines are shared-parameter methods
@@ -329,13 +382,16 @@ Command add_regress_command(CLI::App& app) {
         line = "FAIL  " + name + ": " + e.what();
       }
       rows.push_back(row);
-      if (!args->json) std::cout << line << "\n" << std::flush;
-      else if (!quiet()) std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), name.c_str());
+      if (!args->json)
+        std::cout << line << "\n" << std::flush;
+      else if (!quiet())
+        std::fprintf(stderr, "\r[%zu/%zu] %s", done, files.size(), name.c_str());
     }
     if (args->json && !quiet()) std::fprintf(stderr, "\n");
     if (!args->keep_certificates.empty() && args->certify) {
       fs::create_directories(args->keep_certificates);
-      write_text_atomically(fs::path(args->keep_certificates) / "index.json", nlohmann::json{{"certificates", kept}}.dump(1) + "\n");
+      write_text_atomically(fs::path(args->keep_certificates) / "index.json",
+                            nlohmann::json{{"certificates", kept}}.dump(1) + "\n");
     }
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     nlohmann::json table = nlohmann::json::array();
@@ -343,14 +399,23 @@ Command add_regress_command(CLI::App& app) {
       PipelineTally& t = tally[label];
       std::sort(t.ms.begin(), t.ms.end());
       double med = t.ms.empty() ? 0 : t.ms[t.ms.size() / 2];
-      table.push_back({{"pipeline", label}, {"scenes", t.scenes}, {"agree", t.agree}, {"wrong_collides", t.wrong_collides},
-                       {"missed", t.missed}, {"false", t.spurious}, {"endpoints_off", t.endpoints_off}, {"undecided", t.undecided},
-                       {"errors", t.errors}, {"max_endpoint_error", t.max_err}, {"median_ms", med}});
+      table.push_back({{"pipeline", label},
+                       {"scenes", t.scenes},
+                       {"agree", t.agree},
+                       {"wrong_collides", t.wrong_collides},
+                       {"missed", t.missed},
+                       {"false", t.spurious},
+                       {"endpoints_off", t.endpoints_off},
+                       {"undecided", t.undecided},
+                       {"errors", t.errors},
+                       {"max_endpoint_error", t.max_err},
+                       {"median_ms", med}});
     }
     int bad = differ + failed;
     if (args->json) {
-      nlohmann::json j = {{"dir", args->dir}, {"arith", args->arith}, {"scenes", rows}, {"agree", agree}, {"differ", differ},
-                          {"errors", failed}, {"skipped", skipped}, {"seconds", secs}, {"passed", bad == 0}};
+      nlohmann::json j = {{"dir", args->dir},   {"arith", args->arith}, {"scenes", rows},
+                          {"agree", agree},     {"differ", differ},     {"errors", failed},
+                          {"skipped", skipped}, {"seconds", secs},      {"passed", bad == 0}};
       if (certified_mode) {
         j["escalated"] = escalated;
         j["decided_in"] = decided_in;
@@ -361,8 +426,12 @@ Command add_regress_command(CLI::App& app) {
       if (args->certify) {
         nlohmann::json cj = nlohmann::json::array();
         for (const auto& [kind, c] : certificate_cost)
-          cj.push_back({{"kind", kind}, {"certificates", c.count}, {"prove_seconds", c.prove_s}, {"check_seconds", c.check_s},
-                        {"check_over_prove", c.check_s / std::max(c.prove_s, 1e-9)}, {"worst_check_over_prove", c.worst_ratio}});
+          cj.push_back({{"kind", kind},
+                        {"certificates", c.count},
+                        {"prove_seconds", c.prove_s},
+                        {"check_seconds", c.check_s},
+                        {"check_over_prove", c.check_s / std::max(c.prove_s, 1e-9)},
+                        {"worst_check_over_prove", c.worst_ratio}});
         j["certificate_cost"] = cj;
       }
       stamp_format(j, "eccd-regress/1");
@@ -371,29 +440,37 @@ Command add_regress_command(CLI::App& app) {
     }
     if (args->floating && !table.empty()) {
       std::cout << "\nfloating pipelines against the stored exact answers (tolerance " << args->tol << "):\n";
-      std::printf("  %-22s %6s %6s %6s %6s %6s %6s %6s %6s %10s %10s\n", "pipeline", "scenes", "agree", "wrongC", "missed", "false",
-                  "endOff", "undec", "errors", "max end err", "median ms");
+      std::printf("  %-22s %6s %6s %6s %6s %6s %6s %6s %6s %10s %10s\n", "pipeline", "scenes", "agree", "wrongC",
+                  "missed", "false", "endOff", "undec", "errors", "max end err", "median ms");
       for (const auto& r : table)
-        std::printf("  %-22s %6d %6d %6d %6d %6d %6d %6d %6d %10.2g %10.2f\n", r["pipeline"].get<std::string>().c_str(), r["scenes"].get<int>(),
-                    r["agree"].get<int>(), r["wrong_collides"].get<int>(), r["missed"].get<int>(), r["false"].get<int>(),
-                    r["endpoints_off"].get<int>(), r["undecided"].get<int>(), r["errors"].get<int>(), r["max_endpoint_error"].get<double>(),
+        std::printf("  %-22s %6d %6d %6d %6d %6d %6d %6d %6d %10.2g %10.2f\n", r["pipeline"].get<std::string>().c_str(),
+                    r["scenes"].get<int>(), r["agree"].get<int>(), r["wrong_collides"].get<int>(),
+                    r["missed"].get<int>(), r["false"].get<int>(), r["endpoints_off"].get<int>(),
+                    r["undecided"].get<int>(), r["errors"].get<int>(), r["max_endpoint_error"].get<double>(),
                     r["median_ms"].get<double>());
-      std::cout << "  (wrongC: wrong `collides`; missed / false: collision intervals or contacts missed or invented; endOff: interval ends off by more than the tolerance)\n";
+      std::cout << "  (wrongC: wrong `collides`; missed / false: collision intervals or contacts missed or invented; "
+                   "endOff: interval ends off by more than the tolerance)\n";
     }
     if (args->certify && !certificate_cost.empty()) {
-      std::printf("\ncertificate cost (checking / proving time, per kind; proving = writing the certificate, its exact or interval run included):\n");
+      std::printf(
+          "\ncertificate cost (checking / proving time, per kind; proving = writing the certificate, its exact or "
+          "interval run included):\n");
       int w = 4;  // the kind column as wide as its longest name (eccd-independent-certificate/3 is 30 characters)
       for (const auto& kc : certificate_cost) w = std::max(w, int(kc.first.size()));
-      std::printf("  %-*s %6s %11s %11s %12s %12s\n", w, "kind", "certs", "prove s", "check s", "check/prove", "worst ratio");
+      std::printf("  %-*s %6s %11s %11s %12s %12s\n", w, "kind", "certs", "prove s", "check s", "check/prove",
+                  "worst ratio");
       for (const auto& [kind, c] : certificate_cost)
-        std::printf("  %-*s %6d %11.2f %11.2f %12.3f %12.3f\n", w, kind.c_str(), c.count, c.prove_s, c.check_s, c.check_s / std::max(c.prove_s, 1e-9),
-                    c.worst_ratio);
+        std::printf("  %-*s %6d %11.2f %11.2f %12.3f %12.3f\n", w, kind.c_str(), c.count, c.prove_s, c.check_s,
+                    c.check_s / std::max(c.prove_s, 1e-9), c.worst_ratio);
     }
-    std::printf("\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n", args->dir.c_str(),
-                agree + differ + failed, agree, differ, failed, skipped, secs);
+    std::printf(
+        "\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n",
+        args->dir.c_str(), agree + differ + failed, agree, differ, failed, skipped, secs);
     if (certified_mode) {
-      std::printf("certified mode: %d of %d scene(s) decided in intervals of doubles, %d escalated, %d run exactly (independent motions); decided in:",
-                  agree + differ - escalated - exact_only, agree + differ, escalated, exact_only);
+      std::printf(
+          "certified mode: %d of %d scene(s) decided in intervals of doubles, %d escalated, %d run exactly "
+          "(independent motions); decided in:",
+          agree + differ - escalated - exact_only, agree + differ, escalated, exact_only);
       for (const auto& [rung, n] : decided_in) std::printf(" %s %d", rung.c_str(), n);
       std::printf("\n");
       if (local_scenes) {

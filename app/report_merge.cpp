@@ -80,12 +80,14 @@ std::vector<std::string> csv_rows(const std::string& text, const std::string& he
     throw std::invalid_argument(file.string() + ": truncated (the last line is incomplete)");
   std::vector<CsvRecord> recs = csv_records(text, file.string());
   std::vector<std::string> head = csv_split(header);
-  if (recs.empty() || recs[0].fields != head) throw std::invalid_argument(file.string() + ": line 1: not the expected header");
+  if (recs.empty() || recs[0].fields != head)
+    throw std::invalid_argument(file.string() + ": line 1: not the expected header");
   std::vector<std::string> rows;
   for (std::size_t k = 1; k < recs.size(); ++k) {
     if (recs[k].fields.size() != head.size())
-      throw std::invalid_argument(file.string() + ": line " + std::to_string(recs[k].line) + ": " + std::to_string(recs[k].fields.size()) +
-                                  " fields, expected " + std::to_string(head.size()) + " (truncated or edited?)");
+      throw std::invalid_argument(file.string() + ": line " + std::to_string(recs[k].line) + ": " +
+                                  std::to_string(recs[k].fields.size()) + " fields, expected " +
+                                  std::to_string(head.size()) + " (truncated or edited?)");
     rows.push_back(csv_line(recs[k].fields));
   }
   return rows;
@@ -95,7 +97,7 @@ std::vector<std::string> csv_rows(const std::string& text, const std::string& he
 struct MergedParts {
   std::vector<std::string> rows, cells;
   nlohmann::json meta;
-  std::vector<std::string> seen;  // part folder per shard index
+  std::vector<std::string> seen;                                           // part folder per shard index
   std::vector<std::pair<fs::path, nlohmann::ordered_json>> scene_indexes;  // each part's scenes/index.json
   double wall = 0;
 };
@@ -123,7 +125,9 @@ void read_part(const ReportArgs& a, const std::string& dir, const std::string& h
   int n = shards.get<int>(), i = 0;
   if (m["shard"].is_string()) {
     auto [si, sn] = parse_shard_text(m["shard"].get<std::string>(), mp.string() + ": /shard");
-    if (sn != n) throw std::invalid_argument(mp.string() + ": /shard says " + std::to_string(sn) + " shards but /shards is " + std::to_string(n));
+    if (sn != n)
+      throw std::invalid_argument(mp.string() + ": /shard says " + std::to_string(sn) + " shards but /shards is " +
+                                  std::to_string(n));
     i = si;
   } else if (!m["shard"].is_null() || n != 1) {
     throw std::invalid_argument(mp.string() + ": /shard: expected \"i/n\"");
@@ -134,34 +138,40 @@ void read_part(const ReportArgs& a, const std::string& dir, const std::string& h
     meta = m;
     seen.assign(std::size_t(n), "");
   } else {
-    for (const char* k : {"seed", "mpfr_bits", "degrees", "dims", "families", "separations", "count_per_combination", "grid", "shards", "failure_map"})
-      if (m[k] != meta[k]) throw std::invalid_argument(dir + ": was run with a different " + std::string(k) + " than " + a.merge[0]);
+    for (const char* k : {"seed", "mpfr_bits", "degrees", "dims", "families", "separations", "count_per_combination",
+                          "grid", "shards", "failure_map"})
+      if (m[k] != meta[k])
+        throw std::invalid_argument(dir + ": was run with a different " + std::string(k) + " than " + a.merge[0]);
   }
   if (!seen[std::size_t(i)].empty())
-    throw std::invalid_argument(dir + ": shard " + std::to_string(i) + "/" + std::to_string(n) + " given twice (also " + seen[std::size_t(i)] + ")");
+    throw std::invalid_argument(dir + ": shard " + std::to_string(i) + "/" + std::to_string(n) + " given twice (also " +
+                                seen[std::size_t(i)] + ")");
   seen[std::size_t(i)] = dir;
   wall += m["wall_seconds"].get<double>();
   const fs::path rp = d / "results.csv";
   std::vector<std::string> r = csv_rows(read_part_file(rp, true), header, rp);
-  if (m.contains("result_rows") && (!m["result_rows"].is_number_unsigned() || m["result_rows"].get<std::uint64_t>() != r.size()))
-    throw std::invalid_argument(rp.string() + ": " + std::to_string(r.size()) + " row(s), but " + mp.string() + " says " +
-                                m["result_rows"].dump() + " (truncated?)");
+  if (m.contains("result_rows") &&
+      (!m["result_rows"].is_number_unsigned() || m["result_rows"].get<std::uint64_t>() != r.size()))
+    throw std::invalid_argument(rp.string() + ": " + std::to_string(r.size()) + " row(s), but " + mp.string() +
+                                " says " + m["result_rows"].dump() + " (truncated?)");
   rows.insert(rows.end(), r.begin(), r.end());
   scene_indexes.emplace_back(d, read_scene_index(d / "scenes" / "index.json"));
   const fs::path fp = d / "failure_map.csv";
   std::string ftext = read_part_file(fp, !m["failure_map"].is_null());
   if (!ftext.empty() || !m["failure_map"].is_null()) {
     std::vector<std::string> c = csv_rows(ftext, map_header, fp);
-    if (m.contains("map_rows") && (!m["map_rows"].is_number_unsigned() || m["map_rows"].get<std::uint64_t>() != c.size()))
-      throw std::invalid_argument(fp.string() + ": " + std::to_string(c.size()) + " row(s), but " + mp.string() + " says " +
-                                  m["map_rows"].dump() + " (truncated?)");
+    if (m.contains("map_rows") &&
+        (!m["map_rows"].is_number_unsigned() || m["map_rows"].get<std::uint64_t>() != c.size()))
+      throw std::invalid_argument(fp.string() + ": " + std::to_string(c.size()) + " row(s), but " + mp.string() +
+                                  " says " + m["map_rows"].dump() + " (truncated?)");
     cells.insert(cells.end(), c.begin(), c.end());
   }
 }
 
 int run_merge(const ReportArgs& a) {
   if (a.merge.size() < 1) throw std::invalid_argument("--merge needs the part folders");
-  if (a.resume) throw std::invalid_argument("--resume: not with --merge (a merge only joins finished parts: run it again)");
+  if (a.resume)
+    throw std::invalid_argument("--resume: not with --merge (a merge only joins finished parts: run it again)");
   std::string name;
   fs::path out = output_folder(a, "", name);
   fs::path partial = out;
@@ -181,16 +191,22 @@ int run_merge(const ReportArgs& a) {
   for (const auto& dir : a.merge) read_part(a, dir, header, map_header, parts);
   auto& [rows, cells, meta, seen, scene_indexes, wall] = parts;
   for (std::size_t i = 0; i < seen.size(); ++i)
-    if (seen[i].empty()) throw std::invalid_argument("--merge: shard " + std::to_string(i) + "/" + std::to_string(seen.size()) + " is missing");
+    if (seen[i].empty())
+      throw std::invalid_argument("--merge: shard " + std::to_string(i) + "/" + std::to_string(seen.size()) +
+                                  " is missing");
   if (!meta["failure_map"].is_null() &&
       (!meta["failure_map"].is_object() || !meta["failure_map"]["pipelines"].is_array() ||
-       !std::all_of(meta["failure_map"]["pipelines"].begin(), meta["failure_map"]["pipelines"].end(), [](const nlohmann::json& x) { return x.is_string(); })))
-    throw std::invalid_argument((fs::path(a.merge[0]) / "meta.json").string() + ": /failure_map/pipelines: expected an array of strings");
+       !std::all_of(meta["failure_map"]["pipelines"].begin(), meta["failure_map"]["pipelines"].end(),
+                    [](const nlohmann::json& x) { return x.is_string(); })))
+    throw std::invalid_argument((fs::path(a.merge[0]) / "meta.json").string() +
+                                ": /failure_map/pipelines: expected an array of strings");
   for (const auto& c : cells) {  // sort_map reads ix and iy as integers
     auto f = csv_split(c, "failure_map.csv row");
     for (int k : {1, 2})
-      if (f[std::size_t(k)].empty() || f[std::size_t(k)].size() > 6 || f[std::size_t(k)].find_first_not_of("0123456789") != std::string::npos)
-        throw std::invalid_argument("--merge: failure_map.csv row \"" + c.substr(0, 80) + "\": ix and iy must be small non-negative integers");
+      if (f[std::size_t(k)].empty() || f[std::size_t(k)].size() > 6 ||
+          f[std::size_t(k)].find_first_not_of("0123456789") != std::string::npos)
+        throw std::invalid_argument("--merge: failure_map.csv row \"" + c.substr(0, 80) +
+                                    "\": ix and iy must be small non-negative integers");
   }
   sort_results(rows);
   InterruptGuard guard;  // a merge is quick and not resumable: interrupted, its partial output is removed
@@ -217,10 +233,13 @@ int run_merge(const ReportArgs& a) {
   meta["result_rows"] = rows.size();
   meta["no_ground_truth"] = no_ground_truth_meta(rows);
   meta["map_rows"] = cells.size();
-  if (meta.contains("externals") && meta["externals"].is_array()) meta["externals"] = externals_meta(meta["externals"], rows);
-  if (meta.contains("fcl") && meta["fcl"].is_object() && meta["pipelines"].is_array()) {  // the parts' counts, recounted over all rows
+  if (meta.contains("externals") && meta["externals"].is_array())
+    meta["externals"] = externals_meta(meta["externals"], rows);
+  if (meta.contains("fcl") && meta["fcl"].is_object() &&
+      meta["pipelines"].is_array()) {  // the parts' counts, recounted over all rows
     meta["fcl"]["skipped"] = nlohmann::json::object();
-    for (const auto& [label, n] : fcl_skipped(meta["pipelines"].get<std::vector<std::string>>(), rows)) meta["fcl"]["skipped"][label] = n;
+    for (const auto& [label, n] : fcl_skipped(meta["pipelines"].get<std::vector<std::string>>(), rows))
+      meta["fcl"]["skipped"][label] = n;
   }
   write_file(partial / "meta.json", meta.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   merge_scene_files(partial, out, scene_indexes);

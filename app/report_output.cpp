@@ -77,7 +77,10 @@ nlohmann::json machine_info() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
   while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) { m["cpu"] = line.substr(line.find(':') + 2); break; }
+    if (line.rfind("model name", 0) == 0) {
+      m["cpu"] = line.substr(line.find(':') + 2);
+      break;
+    }
   if (!m.contains("cpu")) m["cpu"] = "unknown";
   m["cores"] = std::thread::hardware_concurrency();
   m["os"] = read_command_output("uname -srm 2>/dev/null");
@@ -104,9 +107,12 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 std::string fmt_duration(double s) {
   char b[32];
-  if (s >= 3600) std::snprintf(b, sizeof b, "%dh%02dm", int(s / 3600), int(std::fmod(s, 3600) / 60));
-  else if (s >= 60) std::snprintf(b, sizeof b, "%dm%02ds", int(s / 60), int(std::fmod(s, 60)));
-  else std::snprintf(b, sizeof b, "%.0fs", s);
+  if (s >= 3600)
+    std::snprintf(b, sizeof b, "%dh%02dm", int(s / 3600), int(std::fmod(s, 3600) / 60));
+  else if (s >= 60)
+    std::snprintf(b, sizeof b, "%dm%02ds", int(s / 60), int(std::fmod(s, 60)));
+  else
+    std::snprintf(b, sizeof b, "%.0fs", s);
   return b;
 }
 
@@ -114,16 +120,17 @@ std::string fmt_duration(double s) {
 // scene keep their pipeline order under a stable sort).
 std::vector<std::string> scene_key(const std::string& line) {
   auto f = csv_split(line, "results.csv row");
-  static const std::map<std::string, std::string> fam{{"colliding", "0"}, {"free", "1"}, {"touch", "2"}, {"near-miss", "3"},
-                                                       {"overlap", "4"}, {"graze", "5"}, {"decimal", "6"}, {"keyframe", "7"},
-                                                       {"case", "8"}, {"cycloidal", "9a"}, {"independent", "9b"}};
+  static const std::map<std::string, std::string> fam{
+      {"colliding", "0"}, {"free", "1"},     {"touch", "2"}, {"near-miss", "3"},  {"overlap", "4"},     {"graze", "5"},
+      {"decimal", "6"},   {"keyframe", "7"}, {"case", "8"},  {"cycloidal", "9a"}, {"independent", "9b"}};
   auto pad = [](const std::string& x) { return std::string(8 - std::min<std::size_t>(8, x.size()), '0') + x; };
   std::string d = f.size() > 6 && !f[6].empty() ? pad(f[6].substr(3)) : "";
   std::string digits = f.size() > 27 ? pad(f[27]) : "";  // results_csv_header(): column 28 is digits
   return {f[1], f[2], pad(f[3]), fam.count(f[4]) ? fam.at(f[4]) : f[4], f[5], d, digits, f[0]};
 }
 void sort_results(std::vector<std::string>& lines) {
-  std::stable_sort(lines.begin(), lines.end(), [](const std::string& a, const std::string& b) { return scene_key(a) < scene_key(b); });
+  std::stable_sort(lines.begin(), lines.end(),
+                   [](const std::string& a, const std::string& b) { return scene_key(a) < scene_key(b); });
 }
 void sort_map(std::vector<std::string>& lines, const std::vector<std::string>& order) {
   auto key = [&](const std::string& l) {
@@ -131,7 +138,8 @@ void sort_map(std::vector<std::string>& lines, const std::vector<std::string>& o
     long p = std::find(order.begin(), order.end(), f[0]) - order.begin();
     return std::make_tuple(p, std::stoi(f[1]), std::stoi(f[2]));
   };
-  std::stable_sort(lines.begin(), lines.end(), [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
+  std::stable_sort(lines.begin(), lines.end(),
+                   [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
 }
 
 // The scene files behind the rows, for report.html's links (compare/plots/report_html.py):
@@ -139,7 +147,8 @@ void sort_map(std::vector<std::string>& lines, const std::vector<std::string>& o
 // else), and scenes/index.json, each scene's name -> its file relative to the report folder
 // `out` (a scene file given by --cases or --scenes links to that file: the link holds while the
 // report stays where it was written, beside them).
-void write_scene_files(const fs::path& partial, const fs::path& out, const std::vector<Task>& tasks, const FailureMap* map) {
+void write_scene_files(const fs::path& partial, const fs::path& out, const std::vector<Task>& tasks,
+                       const FailureMap* map) {
   const fs::path dir = partial / "scenes";
   fs::create_directories(dir);
   const fs::path out_abs = fs::absolute(out).lexically_normal();
@@ -153,8 +162,9 @@ void write_scene_files(const fs::path& partial, const fs::path& out, const std::
     std::error_code ec;
     if (fs::is_regular_file(t.label, ec)) {
       const auto doc = nlohmann::json::parse(t.text, nullptr, false);
-      const std::string name = doc.is_object() && doc.contains("name") && doc["name"].is_string() ? doc["name"].get<std::string>()
-                                                                                                : fs::path(t.label).stem().string();
+      const std::string name = doc.is_object() && doc.contains("name") && doc["name"].is_string()
+                                   ? doc["name"].get<std::string>()
+                                   : fs::path(t.label).stem().string();
       index[name] = fs::absolute(t.label).lexically_normal().lexically_relative(out_abs).generic_string();
     } else if (t.label.find('/') == std::string::npos && t.label.find("..") == std::string::npos) {
       own_file(t.label, nlohmann::ordered_json::parse(t.text).dump(1));  // the scene format's key order, as written
@@ -176,8 +186,10 @@ nlohmann::ordered_json read_scene_index(const fs::path& file) {
   std::stringstream text;
   text << in.rdbuf();
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(text.str(), nullptr, false);
-  if (!j.is_object() || j.value("format", "") != "eccd-report-scenes/1" || !j.contains("scenes") || !j["scenes"].is_object())
-    throw std::invalid_argument(file.string() + ": not an eccd-report-scenes/1 index (expected an object with \"format\" and \"scenes\")");
+  if (!j.is_object() || j.value("format", "") != "eccd-report-scenes/1" || !j.contains("scenes") ||
+      !j["scenes"].is_object())
+    throw std::invalid_argument(
+        file.string() + ": not an eccd-report-scenes/1 index (expected an object with \"format\" and \"scenes\")");
   for (const auto& [name, rel] : j["scenes"].items())
     if (!rel.is_string()) throw std::invalid_argument(file.string() + ": /scenes/" + name + ": expected a file name");
   return j["scenes"];
@@ -187,7 +199,8 @@ nlohmann::ordered_json read_scene_index(const fs::path& file) {
 // folder and its index (read_scene_index, read while the parts are checked, before anything is written).
 // A part's own file (scenes/NAME.json) is copied; a link to a file given by --cases or --scenes is made
 // relative to the merged report `out` (the part's link was relative to the part).
-void merge_scene_files(const fs::path& partial, const fs::path& out, const std::vector<std::pair<fs::path, nlohmann::ordered_json>>& parts) {
+void merge_scene_files(const fs::path& partial, const fs::path& out,
+                       const std::vector<std::pair<fs::path, nlohmann::ordered_json>>& parts) {
   const fs::path dir = partial / "scenes";
   fs::create_directories(dir);
   const fs::path out_abs = fs::absolute(out).lexically_normal();
@@ -200,7 +213,9 @@ void merge_scene_files(const fs::path& partial, const fs::path& out, const std::
       std::error_code ec;
       if (own.parent_path() == "scenes" && own.extension() == ".json") {
         if (!fs::is_regular_file(d / own, ec)) {
-          warn("report", (d / own).string() + ": missing (listed in the part's scenes/index.json): the merged report does not link scene " + name);
+          warn("report",
+               (d / own).string() +
+                   ": missing (listed in the part's scenes/index.json): the merged report does not link scene " + name);
           continue;
         }
         fs::copy_file(d / own, partial / own, fs::copy_options::overwrite_existing);
@@ -224,7 +239,9 @@ void write_map_picture(const fs::path& partial, const std::string& scene) {
   const fs::path file = partial / "scenes" / "index.json";
   nlohmann::ordered_json j;
   j["scenes"] = read_scene_index(file);
-  if (scene.empty() || scene.find('/') != std::string::npos || scene.find("..") != std::string::npos || !j["scenes"].contains(scene)) return;
+  if (scene.empty() || scene.find('/') != std::string::npos || scene.find("..") != std::string::npos ||
+      !j["scenes"].contains(scene))
+    return;
   j = nlohmann::ordered_json::parse(std::ifstream(file, std::ios::binary));  // as written, its keys in order
   const fs::path png = partial / "scenes" / (scene + ".png");
   std::string why;
@@ -235,7 +252,8 @@ void write_map_picture(const fs::path& partial, const std::string& scene) {
     why = e.what();
   }
   if (!why.empty()) {
-    warn("report", "the failure map's scene " + scene + " could not be drawn (" + why + "): its cells link to the scene file");
+    warn("report",
+         "the failure map's scene " + scene + " could not be drawn (" + why + "): its cells link to the scene file");
     return;
   }
   j["pictures"] = {{scene, "scenes/" + scene + ".png"}};
@@ -253,12 +271,14 @@ void run_figures(const fs::path& dir) {
 }
 void run_script(const fs::path& dir, const std::string& name) {
   fs::path script = fs::path(plots_dir()) / name;
-  if (!fs::exists(script)) throw std::runtime_error(script.string() + ": the report script is missing (set ECCD_PLOTS_DIR?)");
+  if (!fs::exists(script))
+    throw std::runtime_error(script.string() + ": the report script is missing (set ECCD_PLOTS_DIR?)");
   std::string cmd = "python3 " + shell_quote(script.string()) + " " + shell_quote(dir.string());
   std::fflush(nullptr);
   std::string err;
   int rc = -1;
-  if (FILE* p = popen((cmd + " 3>&1 1>&2 2>&3").c_str(), "r")) {  // the script's stderr into the pipe, its stdout to ours
+  if (FILE* p =
+          popen((cmd + " 3>&1 1>&2 2>&3").c_str(), "r")) {  // the script's stderr into the pipe, its stdout to ours
     char buf[4096];
     while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) {
       if (!quiet()) std::fwrite(buf, 1, n, stderr);
@@ -267,7 +287,11 @@ void run_script(const fs::path& dir, const std::string& name) {
     rc = pclose(p);
   }
   if (rc == 0) return;
-  std::string why = "the report step failed (" + cmd + (rc == -1 ? ": could not be started" : WIFEXITED(rc) ? ": exit status " + std::to_string(WEXITSTATUS(rc)) : ": killed by a signal") + "); results.csv is in " + dir.string();
+  std::string why = "the report step failed (" + cmd +
+                    (rc == -1        ? ": could not be started"
+                     : WIFEXITED(rc) ? ": exit status " + std::to_string(WEXITSTATUS(rc))
+                                     : ": killed by a signal") +
+                    "); results.csv is in " + dir.string();
   if (err.find("No module named 'matplotlib") != std::string::npos)
     why += ". matplotlib is missing: apt-get install python3-matplotlib";
   else if (err.find("No module named 'numpy") != std::string::npos)
@@ -289,7 +313,8 @@ bool looks_like_old_report(const fs::path& dir) {
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string n = e.path().filename().string();
     if (!e.is_regular_file()) return false;
-    if (n != "report.md" && n != "results.csv" && n != "failure_map.csv" && n != "meta.json" && e.path().extension() != ".png")
+    if (n != "report.md" && n != "results.csv" && n != "failure_map.csv" && n != "meta.json" &&
+        e.path().extension() != ".png")
       return false;
   }
   return !ec;
@@ -321,8 +346,9 @@ fs::path output_folder(const ReportArgs& a, const std::string& suffix, std::stri
       if (std::regex_match(n, run) && e.is_directory() && n > newest) newest = n;
     }
     if (newest.empty())
-      throw std::invalid_argument("--resume: nothing to resume: no reports/run-*" + suffix +
-                                  ".partial folder (an interrupted run keeps one; give --name or --out-dir to resume another)");
+      throw std::invalid_argument(
+          "--resume: nothing to resume: no reports/run-*" + suffix +
+          ".partial folder (an interrupted run keeps one; give --name or --out-dir to resume another)");
     name = newest.substr(0, newest.size() - suffix.size() - 8);
     return fs::path("reports") / (name + suffix);
   }
@@ -330,7 +356,9 @@ fs::path output_folder(const ReportArgs& a, const std::string& suffix, std::stri
   char b[32];
   std::strftime(b, sizeof b, "run-%Y%m%d-%H%M%S", std::gmtime(&t));
   name = b;
-  for (int k = 2; fs::exists(fs::path("reports") / (name + suffix), ec) || fs::exists(fs::path("reports") / (name + suffix + ".partial"), ec); ++k)
+  for (int k = 2; fs::exists(fs::path("reports") / (name + suffix), ec) ||
+                  fs::exists(fs::path("reports") / (name + suffix + ".partial"), ec);
+       ++k)
     name = std::string(b) + "-" + std::to_string(k);
   return fs::path("reports") / (name + suffix);
 }
@@ -347,15 +375,21 @@ void start_partial(const fs::path& partial, const fs::path& out) {
   if (!m) throw OutputError((partial / kMarker).string() + ": cannot write: " + errno_text(errno));
 }
 
-void finish_output(const fs::path& partial, const fs::path& out) { replace_output_folder(partial, out, kMarker, looks_like_old_report); }
+void finish_output(const fs::path& partial, const fs::path& out) {
+  replace_output_folder(partial, out, kMarker, looks_like_old_report);
+}
 
 // ---- FCL in meta.json (branch fcl; contract-19: "fcl" key) ------------------
 // {"available", "version", "tolerances", "skipped": {"fcl/ccd:N": scenes without a row}}; the reason when absent.
-nlohmann::json fcl_meta(const HarnessOptions& h, const std::vector<std::string>& labels, const std::vector<std::string>& rows) {
+nlohmann::json fcl_meta(const HarnessOptions& h, const std::vector<std::string>& labels,
+                        const std::vector<std::string>& rows) {
   const FclAvailability fa = fcl_availability();
-  nlohmann::json j = {{"available", fa.available}, {"version", fa.available ? nlohmann::json(fa.version) : nlohmann::json(nullptr)}};
-  if (!fa.available) j["reason"] = fa.reason;
-  else if (!h.fcl) j["reason"] = "FCL is built in but was not run (--no-fcl)";
+  nlohmann::json j = {{"available", fa.available},
+                      {"version", fa.available ? nlohmann::json(fa.version) : nlohmann::json(nullptr)}};
+  if (!fa.available)
+    j["reason"] = fa.reason;
+  else if (!h.fcl)
+    j["reason"] = "FCL is built in but was not run (--no-fcl)";
   j["tolerances"] = fcl_tolerances();
   j["samples"] = h.fcl && fa.available ? h.fcl_samples : std::vector<int>{};
   j["skipped"] = nlohmann::json::object();
@@ -387,9 +421,10 @@ nlohmann::json externals_meta(const nlohmann::json& engines, const std::vector<s
 // meta.json of a run (eccd-report-meta/1, docs/report-files.md): its options, pipelines, machine, revision,
 // times, counts, failures, externals and the failure map.
 nlohmann::json report_meta(const ReportArgs& a, const std::string& name, const std::string& started,
-                           std::chrono::steady_clock::time_point t_start, int shard_n, std::size_t generated, std::size_t from_cases,
-                           const std::vector<std::string>& failures, const std::vector<std::string>& rows,
-                           const std::vector<std::string>& cells, const WorkerFiles& reused, const std::optional<FailureMap>& map) {
+                           std::chrono::steady_clock::time_point t_start, int shard_n, std::size_t generated,
+                           std::size_t from_cases, const std::vector<std::string>& failures,
+                           const std::vector<std::string>& rows, const std::vector<std::string>& cells,
+                           const WorkerFiles& reused, const std::optional<FailureMap>& map) {
   nlohmann::json meta;
   stamp_format(meta, "eccd-report-meta/1");  // "format" and "version" (the program's)
   meta["name"] = name;
@@ -416,8 +451,9 @@ nlohmann::json report_meta(const ReportArgs& a, const std::string& name, const s
   meta["pipelines"] = labels;
   meta["fcl"] = fcl_meta(a.harness, labels, rows);
   meta["machine"] = machine_info();
-  std::string ver = read_command_output("git -C " + shell_quote(fs::path(plots_dir()).parent_path().parent_path().string()) +
-                                        " describe --always --dirty 2>/dev/null");
+  std::string ver =
+      read_command_output("git -C " + shell_quote(fs::path(plots_dir()).parent_path().parent_path().string()) +
+                          " describe --always --dirty 2>/dev/null");
   meta["revision"] = ver.empty() ? program_revision() : ver;  // git describe of the source tree
   meta["started"] = started;
   meta["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
@@ -426,7 +462,7 @@ nlohmann::json report_meta(const ReportArgs& a, const std::string& name, const s
   meta["scene_count"] = generated + from_cases;
   meta["failed"] = failures;
   meta["no_ground_truth"] = no_ground_truth_meta(rows);  // issue 20: scenes whose ground truth is refused or undecided
-  meta["result_rows"] = rows.size();  // --merge checks a part's row counts against these
+  meta["result_rows"] = rows.size();                     // --merge checks a part's row counts against these
   meta["map_rows"] = cells.size();
   {
     nlohmann::json ext = nlohmann::json::array();
@@ -436,13 +472,16 @@ nlohmann::json report_meta(const ReportArgs& a, const std::string& name, const s
   meta["resumed_tasks"] = reused.done.size();  // finished by an interrupted run and reused (--resume)
   if (map) {
     meta["failure_map"] = {{"scene", map->scene},
-                           {"x_input", "constant coefficient of B's x-translation entry m[0][2] (nearest double " + std::to_string(map->x0) + ")"},
-                           {"y_input", "constant coefficient of B's y-translation entry m[1][2] (nearest double " + std::to_string(map->y0) + ")"},
+                           {"x_input", "constant coefficient of B's x-translation entry m[0][2] (nearest double " +
+                                           std::to_string(map->x0) + ")"},
+                           {"y_input", "constant coefficient of B's y-translation entry m[1][2] (nearest double " +
+                                           std::to_string(map->y0) + ")"},
                            {"n", map->n},
                            {"pipelines", map->pipelines},
-                           {"note", "2D touch-and-separate scene of motion degree 2; cell (ix, iy) moves the two inputs by "
-                                    "ix - n/2 and iy - n/2 units in the last place of the nearest doubles; every cell is "
-                                    "solved exactly and by each pipeline"}};
+                           {"note",
+                            "2D touch-and-separate scene of motion degree 2; cell (ix, iy) moves the two inputs by "
+                            "ix - n/2 and iy - n/2 units in the last place of the nearest doubles; every cell is "
+                            "solved exactly and by each pipeline"}};
   } else {
     meta["failure_map"] = nullptr;
   }

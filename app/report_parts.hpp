@@ -31,11 +31,11 @@ namespace eccd::report_detail {
 namespace fs = std::filesystem;
 
 struct ReportArgs {
-  std::string name;        // --name; without --name and --out-dir: a new reports/run-YYYYMMDD-HHMMSS
+  std::string name;  // --name; without --name and --out-dir: a new reports/run-YYYYMMDD-HHMMSS
   std::string out;
   bool out_given = false;  // --out-dir given (even as '')
   bool name_given = false;
-  bool resume = false;     // --resume
+  bool resume = false;  // --resume
   GeneratePlan plan;
   HarnessOptions harness;
   std::string cases = "cases";
@@ -90,7 +90,8 @@ constexpr std::size_t kMaxReportFileBytes = std::size_t(256) << 20;
 // the command that resumes) or removes it, and exits 130.
 extern volatile sig_atomic_t g_interrupted;
 void on_interrupt(int sig);
-extern int g_lock_fd;  // PartialLock's descriptor: closed in the workers, so their own children (run_bounded) never hold it
+extern int
+    g_lock_fd;  // PartialLock's descriptor: closed in the workers, so their own children (run_bounded) never hold it
 
 struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -101,7 +102,8 @@ struct Interrupted : std::runtime_error {
 // workers (run_tasks), then keeps or removes NAME.partial (run_report) and
 // exits 130.
 struct InterruptGuard {
-  struct sigaction old_int {}, old_term {}, old_hup {};
+  struct sigaction old_int {
+  }, old_term{}, old_hup{};
   InterruptGuard() {
     g_interrupted = 0;
     struct sigaction sa {};
@@ -144,7 +146,8 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
                const ReportArgs& a, const FailureMap* map, const fs::path& work, int session);
 
 // app/report_resume.cpp
-nlohmann::ordered_json report_plan(const ReportArgs& a, const std::vector<Task>& mine, const std::string& shard, const std::string& started);
+nlohmann::ordered_json report_plan(const ReportArgs& a, const std::vector<Task>& mine, const std::string& shard,
+                                   const std::string& started);
 WorkerFiles check_resume(const fs::path& partial, const nlohmann::ordered_json& plan);
 
 // A running report holds an exclusive flock on its NAME.partial/plan.json
@@ -186,21 +189,25 @@ std::vector<std::string> split(const std::string& s, char sep);
 std::string fmt_duration(double s);
 void sort_results(std::vector<std::string>& lines);
 void sort_map(std::vector<std::string>& lines, const std::vector<std::string>& order);
-void write_scene_files(const fs::path& partial, const fs::path& out, const std::vector<Task>& tasks, const FailureMap* map);
+void write_scene_files(const fs::path& partial, const fs::path& out, const std::vector<Task>& tasks,
+                       const FailureMap* map);
 nlohmann::ordered_json read_scene_index(const fs::path& file);
-void merge_scene_files(const fs::path& partial, const fs::path& out, const std::vector<std::pair<fs::path, nlohmann::ordered_json>>& parts);
+void merge_scene_files(const fs::path& partial, const fs::path& out,
+                       const std::vector<std::pair<fs::path, nlohmann::ordered_json>>& parts);
 void write_map_picture(const fs::path& partial, const std::string& scene);
 void run_figures(const fs::path& dir);
 bool looks_like_old_report(const fs::path& dir);
 fs::path output_folder(const ReportArgs& a, const std::string& suffix, std::string& name);
 void start_partial(const fs::path& partial, const fs::path& out);
 void finish_output(const fs::path& partial, const fs::path& out);
-nlohmann::json fcl_meta(const HarnessOptions& h, const std::vector<std::string>& labels, const std::vector<std::string>& rows);
+nlohmann::json fcl_meta(const HarnessOptions& h, const std::vector<std::string>& labels,
+                        const std::vector<std::string>& rows);
 nlohmann::json externals_meta(const nlohmann::json& engines, const std::vector<std::string>& rows);
 nlohmann::json report_meta(const ReportArgs& a, const std::string& name, const std::string& started,
-                           std::chrono::steady_clock::time_point t_start, int shard_n, std::size_t generated, std::size_t from_cases,
-                           const std::vector<std::string>& failures, const std::vector<std::string>& rows,
-                           const std::vector<std::string>& cells, const WorkerFiles& reused, const std::optional<FailureMap>& map);
+                           std::chrono::steady_clock::time_point t_start, int shard_n, std::size_t generated,
+                           std::size_t from_cases, const std::vector<std::string>& failures,
+                           const std::vector<std::string>& rows, const std::vector<std::string>& cells,
+                           const WorkerFiles& reused, const std::optional<FailureMap>& map);
 
 // app/report_merge.cpp
 int run_merge(const ReportArgs& a);

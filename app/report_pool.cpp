@@ -112,9 +112,11 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
     o.arith = parse_arithmetic(p.substr(0, slash));
     o.basis = parse_basis(p.substr(slash + 1));
     BoundedRun br = run_bounded(s, o, a.harness.budget_s, a.harness.isolate);
-    std::string kind = br.timed_out ? "undecided" : !br.error.empty() ? "error" : answer_kind(br.got);  // a time-out decides nothing
-    out.push_back("M" + csv_line({p, std::to_string(t.ix), std::to_string(t.iy), std::to_string(t.ix - h), std::to_string(t.iy - h),
-                                  kind, exact}));
+    std::string kind = br.timed_out        ? "undecided"
+                       : !br.error.empty() ? "error"
+                                           : answer_kind(br.got);  // a time-out decides nothing
+    out.push_back("M" + csv_line({p, std::to_string(t.ix), std::to_string(t.iy), std::to_string(t.ix - h),
+                                  std::to_string(t.iy - h), kind, exact}));
   }
   return out;
 }
@@ -122,7 +124,6 @@ std::vector<std::string> run_task(const Task& t, const ReportArgs& a, const Fail
 volatile sig_atomic_t g_interrupted = 0;
 void on_interrupt(int sig) { g_interrupted = sig; }
 int g_lock_fd = -1;
-
 
 // A worker's file (NAME.partial/worker-SESSION-W.txt) holds the output of the
 // tasks it ran, one line per row: "TASK<tab>TEXT", TEXT with its backslashes
@@ -133,13 +134,20 @@ int g_lock_fd = -1;
 // --resume runs again. Rows start with R, M or E, so "#done" is unambiguous.
 std::string escape_line(const std::string& s) {
   std::string o;
-  for (char c : s) o += c == '\\' ? std::string("\\\\") : c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
+  for (char c : s)
+    o += c == '\\'   ? std::string("\\\\")
+         : c == '\n' ? std::string("\\n")
+         : c == '\r' ? std::string("\\r")
+                     : std::string(1, c);
   return o;
 }
 std::string unescape_line(const std::string& s) {
   std::string o;
   for (std::size_t k = 0; k < s.size(); ++k) {
-    if (s[k] != '\\' || k + 1 == s.size()) { o += s[k]; continue; }
+    if (s[k] != '\\' || k + 1 == s.size()) {
+      o += s[k];
+      continue;
+    }
     char c = s[++k];
     o += c == 'n' ? '\n' : c == 'r' ? '\r' : c;
   }
@@ -152,7 +160,8 @@ int worker_file_session(const std::string& n) {
   std::string mid = n.substr(7, n.size() - 11);
   auto dash = mid.find('-');
   if (dash == std::string::npos || dash == 0 || dash + 1 == mid.size() ||
-      mid.find_first_not_of("0123456789-") != std::string::npos || mid.find('-', dash + 1) != std::string::npos || dash > 6)
+      mid.find_first_not_of("0123456789-") != std::string::npos || mid.find('-', dash + 1) != std::string::npos ||
+      dash > 6)
     return -1;
   return std::stoi(mid.substr(0, dash));
 }
@@ -179,11 +188,13 @@ WorkerFiles read_worker_files(const fs::path& work, long tasks) {
     long cur = -1;
     TaskOutput pending;
     std::size_t start = 0;
-    for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {  // a last line without '\n' is dropped
+    for (std::size_t end; (end = text.find('\n', start)) != std::string::npos;
+         start = end + 1) {  // a last line without '\n' is dropped
       std::string line = text.substr(start, end - start);
       auto tab = line.find('\t');
       long k = -1;
-      if (tab != std::string::npos && tab > 0 && tab <= 9 && line.find_first_not_of("0123456789") == tab) k = std::stol(line.substr(0, tab));
+      if (tab != std::string::npos && tab > 0 && tab <= 9 && line.find_first_not_of("0123456789") == tab)
+        k = std::stol(line.substr(0, tab));
       if (k < 0 || k >= tasks) {  // not a line of ours: drop the task it interrupts
         cur = -1;
         continue;
@@ -224,16 +235,24 @@ std::pair<std::string, double> task_kind(const Task& t, int dim, int degree) {
   return {std::to_string(dim) + "D deg " + std::to_string(degree), prior};
 }
 
-std::string signal_name() { return g_interrupted == SIGINT ? "SIGINT" : g_interrupted == SIGHUP ? "SIGHUP" : "SIGTERM"; }
+std::string signal_name() {
+  return g_interrupted == SIGINT ? "SIGINT" : g_interrupted == SIGHUP ? "SIGHUP" : "SIGTERM";
+}
 
 std::int64_t now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
 }
 
 // Shared memory: the counters, per worker the task it runs and since when,
 // per scheduled task its cost (-1 until finished).
-struct Shared { std::atomic<long> next, done; };
-struct Slot { std::atomic<long> task; std::atomic<std::int64_t> since; };
+struct Shared {
+  std::atomic<long> next, done;
+};
+struct Slot {
+  std::atomic<long> task;
+  std::atomic<std::int64_t> since;
+};
 
 // Worker `w` of run_tasks, in its own process (after fork): takes task numbers
 // from the shared counter until `n` are taken, appends each task's rows and its
@@ -257,7 +276,8 @@ struct Slot { std::atomic<long> task; std::atomic<std::int64_t> since; };
       std::string text;
       try {
         ScopedDeadline deadline(run_budget().time_limit_s);
-        for (const auto& l : run_task(tasks[std::size_t(k)], a, map)) text += std::to_string(k) + "\t" + escape_line(l) + "\n";
+        for (const auto& l : run_task(tasks[std::size_t(k)], a, map))
+          text += std::to_string(k) + "\t" + escape_line(l) + "\n";
       } catch (const std::exception& e) {
         std::string msg = e.what();
         std::replace(msg.begin(), msg.end(), '\n', ' ');
@@ -298,13 +318,19 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
     if (show) std::fprintf(stderr, "[%ld/%ld] every task was finished by the earlier run\n", before, total);
     return;
   }
-  const std::size_t bytes = sizeof(Shared) + sizeof(Slot) * std::size_t(jobs) + sizeof(std::atomic<std::int64_t>) * std::size_t(n);
+  const std::size_t bytes =
+      sizeof(Shared) + sizeof(Slot) * std::size_t(jobs) + sizeof(std::atomic<std::int64_t>) * std::size_t(n);
   void* mem = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (mem == MAP_FAILED) throw std::runtime_error("mmap failed");
-  struct Unmap { void* m; std::size_t b; ~Unmap() { munmap(m, b); } } unmap{mem, bytes};
+  struct Unmap {
+    void* m;
+    std::size_t b;
+    ~Unmap() { munmap(m, b); }
+  } unmap{mem, bytes};
   auto* sh = new (mem) Shared{{0}, {0}};
   auto* slots = reinterpret_cast<Slot*>(static_cast<char*>(mem) + sizeof(Shared));
-  auto* cost_ns = reinterpret_cast<std::atomic<std::int64_t>*>(reinterpret_cast<char*>(slots) + sizeof(Slot) * std::size_t(jobs));
+  auto* cost_ns =
+      reinterpret_cast<std::atomic<std::int64_t>*>(reinterpret_cast<char*>(slots) + sizeof(Slot) * std::size_t(jobs));
   for (int w = 0; w < jobs; ++w) new (&slots[w]) Slot{{-1}, {0}};
   for (long j = 0; j < n; ++j) new (&cost_ns[j]) std::atomic<std::int64_t>(-1);
   std::fflush(nullptr);
@@ -342,7 +368,8 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!show || !cadence.due(std::min(total - 1, before + sh->done.load()), el)) continue;  // the end has its own line below
+    if (!show || !cadence.due(std::min(total - 1, before + sh->done.load()), el))
+      continue;  // the end has its own line below
     // Measured costs so far, the tasks not started and the running ones.
     const long next = std::min(sh->next.load(), n);
     for (long j = 0; j < next; ++j)
@@ -364,18 +391,21 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
     }
     // Per kind (est.wall), checked against the run's own rate so far: the larger of the two.
     std::optional<double> left = est.wall(queued, busy, jobs);
-    if (std::optional<double> by_rate = est.wall_by_rate(queued, busy_kinds, el); left && by_rate) left = std::max(*left, *by_rate);
+    if (std::optional<double> by_rate = est.wall_by_rate(queued, busy_kinds, el); left && by_rate)
+      left = std::max(*left, *by_rate);
     std::fprintf(stderr, "%s[%ld/%ld] %s elapsed, %s (%d worker%s)%s", cadence.begin(), before + sh->done.load(), total,
-                 fmt_duration(el).c_str(), time_left_text(left).c_str(), jobs, jobs == 1 ? "" : "s", cadence.end(false));
+                 fmt_duration(el).c_str(), time_left_text(left).c_str(), jobs, jobs == 1 ? "" : "s",
+                 cadence.end(false));
     std::fflush(stderr);
   }
   const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long finished = sh->done.load();
-  if (show) std::fprintf(stderr, "%s[%ld/%ld] done in %s%s\n", cadence.begin(), before + finished, total, fmt_duration(el).c_str(),
-                        tty ? "\x1b[K" : "");
+  if (show)
+    std::fprintf(stderr, "%s[%ld/%ld] done in %s%s\n", cadence.begin(), before + finished, total,
+                 fmt_duration(el).c_str(), tty ? "\x1b[K" : "");
   if (bad || finished != n)
-    throw std::runtime_error("a worker process failed (" + std::to_string(bad) + " of " + std::to_string(jobs) + "); the finished tasks are kept in " +
-                             work.string() + " for --resume");
+    throw std::runtime_error("a worker process failed (" + std::to_string(bad) + " of " + std::to_string(jobs) +
+                             "); the finished tasks are kept in " + work.string() + " for --resume");
 }
 
 }  // namespace eccd::report_detail

@@ -43,7 +43,8 @@ namespace fs = std::filesystem;
 
 namespace eccd::report_detail {
 
-nlohmann::ordered_json report_plan(const ReportArgs& a, const std::vector<Task>& mine, const std::string& shard, const std::string& started) {
+nlohmann::ordered_json report_plan(const ReportArgs& a, const std::vector<Task>& mine, const std::string& shard,
+                                   const std::string& started) {
   nlohmann::ordered_json o;
   o["seed"] = a.plan.seed;
   o["dims"] = a.plan.dims;
@@ -117,24 +118,31 @@ WorkerFiles check_resume(const fs::path& partial, const nlohmann::ordered_json& 
   const std::string p = partial.string();
   std::error_code ec;
   if (!fs::exists(fs::symlink_status(partial, ec)))
-    throw std::invalid_argument("--resume: nothing to resume: " + p + " does not exist (an interrupted eccd report keeps it; "
+    throw std::invalid_argument("--resume: nothing to resume: " + p +
+                                " does not exist (an interrupted eccd report keeps it; "
                                 "a finished or never started one has none)");
   if (fs::is_symlink(partial, ec) || !fs::is_directory(partial, ec) || !has_marker(partial, kMarker))
-    throw std::invalid_argument("--resume: " + p + " was not written by eccd report (no " + kMarker + " marker): refusing to use it");
+    throw std::invalid_argument("--resume: " + p + " was not written by eccd report (no " + kMarker +
+                                " marker): refusing to use it");
   if (!fs::is_regular_file(partial / kPlanFile, ec))
-    throw std::invalid_argument("--resume: " + p + " cannot be resumed: it has no " + kPlanFile +
-                                " (written by --merge or by an eccd without --resume); run without --resume to start afresh");
+    throw std::invalid_argument(
+        "--resume: " + p + " cannot be resumed: it has no " + kPlanFile +
+        " (written by --merge or by an eccd without --resume); run without --resume to start afresh");
   nlohmann::ordered_json old;
   try {
-    old = parse_json_document(read_bounded_file((partial / kPlanFile).string(), kMaxReportFileBytes, "the limit of a report's own file"),
-                              (partial / kPlanFile).string());
+    old = parse_json_document(
+        read_bounded_file((partial / kPlanFile).string(), kMaxReportFileBytes, "the limit of a report's own file"),
+        (partial / kPlanFile).string());
   } catch (const std::exception& e) {
-    throw std::invalid_argument("--resume: " + (partial / kPlanFile).string() + ": unreadable (" + e.what() + "); run without --resume to start afresh");
+    throw std::invalid_argument("--resume: " + (partial / kPlanFile).string() + ": unreadable (" + e.what() +
+                                "); run without --resume to start afresh");
   }
-  const std::string again = "; resuming would mix two different runs: give the same options, or run without --resume to start afresh";
+  const std::string again =
+      "; resuming would mix two different runs: give the same options, or run without --resume to start afresh";
   if (!old.is_object() || old.value("format", "") != plan["format"])
-    throw std::invalid_argument("--resume: " + (partial / kPlanFile).string() + ": not a plan of this eccd (format " +
-                                (old.is_object() && old.contains("format") ? old["format"].dump() : std::string("missing")) + ")" + again);
+    throw std::invalid_argument(
+        "--resume: " + (partial / kPlanFile).string() + ": not a plan of this eccd (format " +
+        (old.is_object() && old.contains("format") ? old["format"].dump() : std::string("missing")) + ")" + again);
   auto shown = [](const nlohmann::ordered_json& j) {
     std::string s = j.dump();
     return s.size() > 120 ? s.substr(0, 120) + "..." : s;
@@ -143,13 +151,15 @@ WorkerFiles check_resume(const fs::path& partial, const nlohmann::ordered_json& 
   for (const auto& [k, v] : plan["options"].items())
     if (!oo.is_object() || !oo.contains(k) || oo[k] != v)
       throw std::invalid_argument("--resume: " + p + " was started with a different " + k + " (" +
-                                  (oo.is_object() && oo.contains(k) ? shown(oo[k]) : std::string("not recorded")) + "; this run: " + shown(v) + ")" + again);
+                                  (oo.is_object() && oo.contains(k) ? shown(oo[k]) : std::string("not recorded")) +
+                                  "; this run: " + shown(v) + ")" + again);
   if (old["revision"] != plan["revision"])
-    throw std::invalid_argument("--resume: " + p + " was started by another build of eccd (git " + shown(old["revision"]) + "; this one: " +
-                                shown(plan["revision"]) + ")" + again);
+    throw std::invalid_argument("--resume: " + p + " was started by another build of eccd (git " +
+                                shown(old["revision"]) + "; this one: " + shown(plan["revision"]) + ")" + again);
   if (old["tasks"] != plan["tasks"] || old["tasks_digest"] != plan["tasks_digest"])
-    throw std::invalid_argument("--resume: " + p + " was started on other scenes (" + shown(old["tasks"]) + " task(s), digest " +
-                                shown(old["tasks_digest"]) + "; this run: " + shown(plan["tasks"]) + ", " + shown(plan["tasks_digest"]) +
+    throw std::invalid_argument("--resume: " + p + " was started on other scenes (" + shown(old["tasks"]) +
+                                " task(s), digest " + shown(old["tasks_digest"]) +
+                                "; this run: " + shown(plan["tasks"]) + ", " + shown(plan["tasks_digest"]) +
                                 "; did the files under --cases or --scenes change?)" + again);
   return read_worker_files(partial, plan["tasks"].get<long>());
 }

@@ -33,13 +33,17 @@ inline FileKind classify_file(const std::filesystem::path& p, std::string& text,
     return FileKind::Broken;
   }
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (j.is_discarded()) { why = "not a JSON text (malformed or truncated): cannot tell whether it is a scene"; return FileKind::Broken; }
+  if (j.is_discarded()) {
+    why = "not a JSON text (malformed or truncated): cannot tell whether it is a scene";
+    return FileKind::Broken;
+  }
   if (!j.is_object()) return FileKind::NotScene;
   auto f = j.find("format");
   const std::string scene_format = "ellipse-ccd-scene/1";
   if (f != j.end() && f->is_string() && f->get<std::string>() == scene_format) return FileKind::Scene;
-  const bool scene_like = (f != j.end() && f->is_string() && f->get<std::string>().rfind("ellipse-ccd-scene", 0) == 0) ||
-                          (j.contains("dim") && j.contains("a") && j.contains("b"));
+  const bool scene_like =
+      (f != j.end() && f->is_string() && f->get<std::string>().rfind("ellipse-ccd-scene", 0) == 0) ||
+      (j.contains("dim") && j.contains("a") && j.contains("b"));
   if (scene_like) {
     std::string got = f == j.end() ? std::string("no \"format\" key") : "\"format\" " + f->dump().substr(0, 80);
     why = "looks like a scene but has " + got + " (a scene has \"format\": \"" + scene_format + "\")";

@@ -49,7 +49,8 @@ std::string short_answer(const Solution& r) {
   return o.str();
 }
 
-int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const std::vector<std::string>& guards, bool json) {
+int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const std::vector<std::string>& guards,
+              bool json) {
   std::vector<fs::path> files;
   if (!fs::is_directory(dir)) throw std::invalid_argument(dir + ": not a directory");
   for (auto& e : fs::recursive_directory_iterator(dir)) {
@@ -60,7 +61,10 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const s
     if (k == FileKind::Scene) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  struct Col { std::string label; SolveOptions opt; };
+  struct Col {
+    std::string label;
+    SolveOptions opt;
+  };
   std::vector<Col> cols;
   auto col = [](const std::string& arith, Basis basis, Guard guard = Guard::bound) {
     SolveOptions o;
@@ -141,27 +145,33 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const s
     }
     ++done;
     if (!quiet() && tty) std::fprintf(stderr, "\r\x1b[K");  // the row replaces the progress line on a shared terminal
-    if (json) std::cout << js.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
-    else line(row);
+    if (json)
+      std::cout << js.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+    else
+      line(row);
     const double el = seconds();
     if (!quiet() && cadence.due(long(done), el)) {
       std::optional<double> left;
-      if (done < files.size()) left = el / double(done) * double(files.size() - done);  // the measured rate per scene
-      else left = 0.0;
-      std::fprintf(stderr, "%s[%zu/%zu] %s, %.0f s elapsed, %s%s", cadence.begin(), done, files.size(), f.filename().string().c_str(), el,
-                   time_left_text(left).c_str(), tty ? "" : "\n");
+      if (done < files.size())
+        left = el / double(done) * double(files.size() - done);  // the measured rate per scene
+      else
+        left = 0.0;
+      std::fprintf(stderr, "%s[%zu/%zu] %s, %.0f s elapsed, %s%s", cadence.begin(), done, files.size(),
+                   f.filename().string().c_str(), el, time_left_text(left).c_str(), tty ? "" : "\n");
       std::fflush(stderr);
     }
   }
   if (!quiet() && tty) std::fprintf(stderr, "\n");
   if (json) return 0;
-  std::cout << "\n'!' marks a floating answer that differs from the exact one (api/answer_difference.hpp: collides,\n"
-               "an interval missed, false, split or merged, an end, the first contact or a contact more than 1e-6 away);\n"
-               "3D scenes: floating columns run 001's Bezier method with f built in power or Bernstein form\n"
-               "(scaled Bernstein is a 2D discriminant construction: n/a); exact is the certified projection;\n"
-               "'?N' counts instants a floating pipeline could not classify; iv = collision intervals, t0 = first contact;\n"
-               "'/published': the algorithm as published (plain double or MPFR, no guard), the other floating columns are\n"
-               "guarded (an error bound makes every unsure sign undecided). A cycloidal scene has no as-published face (n/a).\n";
+  std::cout
+      << "\n'!' marks a floating answer that differs from the exact one (api/answer_difference.hpp: collides,\n"
+         "an interval missed, false, split or merged, an end, the first contact or a contact more than 1e-6 away);\n"
+         "3D scenes: floating columns run 001's Bezier method with f built in power or Bernstein form\n"
+         "(scaled Bernstein is a 2D discriminant construction: n/a); exact is the certified projection;\n"
+         "'?N' counts instants a floating pipeline could not classify; iv = collision intervals, t0 = first contact;\n"
+         "'/published': the algorithm as published (plain double or MPFR, no guard), the other floating columns are\n"
+         "guarded (an error bound makes every unsure sign undecided). A cycloidal scene has no as-published face "
+         "(n/a).\n";
   return 0;
 }
 
@@ -176,15 +186,29 @@ Command add_table_command(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   Command c;
-  c.sub = app.add_subcommand("table", "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR arithmetic, each floating column as published and guarded, and print a side-by-side table.");
+  c.sub =
+      app.add_subcommand("table",
+                         "Solve every scene under DIR in exact, double (power, Bernstein, scaled Bernstein) and MPFR "
+                         "arithmetic, each floating column as published and guarded, and print a side-by-side table.");
   c.sub->add_option("DIR", args->dir, "Folder of scene files")->capture_default_str();
-  c.sub->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions in bits (repeatable, or a comma list: 64,128)")->delimiter(',')->capture_default_str()->check(CLI::Range(53, 65536));
-  add_old_spelling(c.sub, "--mpfr", "--mpfr", "--mpfr-bits", args->mpfr_bits)->delimiter(',')->check(CLI::Range(53, 65536));
-  c.sub->add_flag("--json", args->json, "JSON Lines instead of the table: one object per scene file, printed as soon as it is solved (format eccd-table-row/1: folder, file, and a solution per column, keyed by the column's label)");
-  c.sub->add_option("--guard", args->guards,
-                    "Faces of the floating columns, a comma list: none (the algorithm as published, plain double or MPFR; "
-                    "columns .../published) and bound (guarded by an error bound)")
-      ->delimiter(',')->capture_default_str()->check(CLI::IsMember({"none", "bound"}));
+  c.sub->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions in bits (repeatable, or a comma list: 64,128)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(53, 65536));
+  add_old_spelling(c.sub, "--mpfr", "--mpfr", "--mpfr-bits", args->mpfr_bits)
+      ->delimiter(',')
+      ->check(CLI::Range(53, 65536));
+  c.sub->add_flag("--json", args->json,
+                  "JSON Lines instead of the table: one object per scene file, printed as soon as it is solved (format "
+                  "eccd-table-row/1: folder, file, and a solution per column, keyed by the column's label)");
+  c.sub
+      ->add_option(
+          "--guard", args->guards,
+          "Faces of the floating columns, a comma list: none (the algorithm as published, plain double or MPFR; "
+          "columns .../published) and bound (guarded by an error bound)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "bound"}));
   c.run = [args]() { return run_table(args->dir, args->mpfr_bits, args->guards, args->json); };
   return c;
 }

@@ -36,7 +36,8 @@ namespace eccd {
 class TimeLeft {
  public:
   // prior[k] > 0: the rough relative cost of a task of kind k.
-  explicit TimeLeft(std::vector<double> prior) : prior_(std::move(prior)), sum_(prior_.size(), 0), n_(prior_.size(), 0) {}
+  explicit TimeLeft(std::vector<double> prior)
+      : prior_(std::move(prior)), sum_(prior_.size(), 0), n_(prior_.size(), 0) {}
 
   // A finished task of kind k took `seconds`.
   void add(std::size_t kind, double seconds) {
@@ -72,8 +73,8 @@ class TimeLeft {
   // Wall seconds left: `queued[k]` tasks of kind k not started, `running` the
   // (kind, seconds run so far) of the tasks in progress, `workers` processes.
   // nullopt before any task has finished (nothing to scale the priors by).
-  std::optional<double> wall(const std::vector<long>& queued, const std::vector<std::pair<std::size_t, double>>& running,
-                             int workers) const {
+  std::optional<double> wall(const std::vector<long>& queued,
+                             const std::vector<std::pair<std::size_t, double>>& running, int workers) const {
     if (!measured()) return std::nullopt;
     std::vector<double> c(prior_.size());
     for (std::size_t k = 0; k < c.size(); ++k) c[k] = cost(k);
@@ -106,9 +107,12 @@ inline std::string time_left_text(std::optional<double> seconds) {
   if (!seconds) return "time left unknown";
   const long s = std::lround(std::max(0.0, *seconds));
   std::string t;
-  if (s >= 3600) t = std::to_string(s / 3600) + " h " + std::to_string(s % 3600 / 60) + " min";
-  else if (s >= 60) t = std::to_string(s / 60) + " min " + std::to_string(s % 60) + " s";
-  else t = std::to_string(s) + " s";
+  if (s >= 3600)
+    t = std::to_string(s / 3600) + " h " + std::to_string(s % 3600 / 60) + " min";
+  else if (s >= 60)
+    t = std::to_string(s / 60) + " min " + std::to_string(s % 60) + " s";
+  else
+    t = std::to_string(s) + " s";
   return "about " + t + " left";
 }
 
@@ -126,10 +130,14 @@ class ProgressCadence {
   // true: print a line now (and remember that it was printed).
   bool due(long done, double elapsed_s) {
     bool print;
-    if (done >= total_) print = !ended_;
-    else if (tty_) print = elapsed_s - last_s_ >= gap_;
-    else print = std::floor(100.0 * double(done) / double(total_) / step_) > std::floor(100.0 * double(last_done_) / double(total_) / step_) ||
-                 elapsed_s - last_s_ >= heartbeat_ || last_s_ < 0;
+    if (done >= total_)
+      print = !ended_;
+    else if (tty_)
+      print = elapsed_s - last_s_ >= gap_;
+    else
+      print = std::floor(100.0 * double(done) / double(total_) / step_) >
+                  std::floor(100.0 * double(last_done_) / double(total_) / step_) ||
+              elapsed_s - last_s_ >= heartbeat_ || last_s_ < 0;
     if (print) {
       last_s_ = elapsed_s;
       last_done_ = done;

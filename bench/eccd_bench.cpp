@@ -146,7 +146,6 @@
 #include <string>
 #include <vector>
 
-
 #ifndef ECCD_SOURCE_DIR
 #define ECCD_SOURCE_DIR "."
 #endif
@@ -226,7 +225,8 @@ json summary(const std::string& started) {
     json rows = json::array();
     double base = 0;
     for (const Row& r : g_rows)
-      if (r.group == g.id && r.baseline && g_medians.count(r.key) && g_medians[r.key].error.empty()) base = g_medians[r.key].cpu_ns;
+      if (r.group == g.id && r.baseline && g_medians.count(r.key) && g_medians[r.key].error.empty())
+        base = g_medians[r.key].cpu_ns;
     for (const Row& r : g_rows) {
       if (r.group != g.id || !g_medians.count(r.key)) continue;
       const Median& m = g_medians[r.key];
@@ -262,12 +262,18 @@ void print_ratios(const json& s) {
   for (const auto& g : s["groups"]) {
     std::printf("\n[%s] %s\n", g["id"].get<std::string>().c_str(), g["title"].get<std::string>().c_str());
     for (const auto& r : g["rows"]) {
-      if (r.contains("error")) { std::printf("  %-44s ERROR %s\n", r["label"].get<std::string>().c_str(), r["error"].get<std::string>().c_str()); continue; }
+      if (r.contains("error")) {
+        std::printf("  %-44s ERROR %s\n", r["label"].get<std::string>().c_str(), r["error"].get<std::string>().c_str());
+        continue;
+      }
       double ns = r["median_cpu_ns"];
       char t[32];
-      if (ns < 1e4) std::snprintf(t, sizeof t, "%.1f ns", ns);
-      else if (ns < 1e7) std::snprintf(t, sizeof t, "%.3f ms", ns / 1e6);
-      else std::snprintf(t, sizeof t, "%.1f ms", ns / 1e6);
+      if (ns < 1e4)
+        std::snprintf(t, sizeof t, "%.1f ns", ns);
+      else if (ns < 1e7)
+        std::snprintf(t, sizeof t, "%.3f ms", ns / 1e6);
+      else
+        std::snprintf(t, sizeof t, "%.1f ms", ns / 1e6);
       char ratio[32] = "-";
       if (!r["ratio"].is_null()) std::snprintf(ratio, sizeof ratio, "%.3g", r["ratio"].get<double>());
       std::printf("  %-44s %14s  x%-10s%s\n", r["label"].get<std::string>().c_str(), t, ratio,
@@ -279,11 +285,12 @@ void print_ratios(const json& s) {
 }  // namespace
 
 // The hooks of bench/speed_targets.hpp (issue 36's rows).
-void eccd_bench::add_group(const std::string& id, const std::string& title, const std::string& description, const std::string& anchor) {
+void eccd_bench::add_group(const std::string& id, const std::string& title, const std::string& description,
+                           const std::string& anchor) {
   group(id, title, description, anchor);
 }
-void eccd_bench::add_row(const std::string& grp, const std::string& label, bool baseline, int cost, const std::string& note,
-                         std::function<void(benchmark::State&)> fn, bool process_cpu) {
+void eccd_bench::add_row(const std::string& grp, const std::string& label, bool baseline, int cost,
+                         const std::string& note, std::function<void(benchmark::State&)> fn, bool process_cpu) {
   row(grp, label, baseline, Cost(cost), note, std::move(fn), process_cpu);
 }
 void eccd_bench::record_result(const std::string& key, const nlohmann::json& summary) { g_results[key] = summary; }
@@ -296,11 +303,16 @@ int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     std::string a = argv[i];
-    if (a.rfind("--eccd_summary=", 0) == 0) summary_path = a.substr(15);
-    else if (a == "--eccd_quick") g_quick = true;
-    else if (a == "--eccd_list") list = true;
-    else if (a.rfind("--eccd_profile_seconds=", 0) == 0) g_profile_seconds = std::stod(a.substr(23));
-    else args.push_back(argv[i]);
+    if (a.rfind("--eccd_summary=", 0) == 0)
+      summary_path = a.substr(15);
+    else if (a == "--eccd_quick")
+      g_quick = true;
+    else if (a == "--eccd_list")
+      list = true;
+    else if (a.rfind("--eccd_profile_seconds=", 0) == 0)
+      g_profile_seconds = std::stod(a.substr(23));
+    else
+      args.push_back(argv[i]);
   }
   // Repetitions of all rows run interleaved in random order (unless the
   // command line says otherwise): on a shared machine a burst of load from
@@ -332,18 +344,22 @@ int main(int argc, char** argv) {
   register_static_certified();
   register_certified_cost();
   register_translation3d();  // issue 21: one degree-1 translating 3D query
-  register_product();  // issue 30: eccd::solve from the scene, both faces and input modes (the target rows)
-  register_planes();  // 000 section 4: the plane check per pair-frame (issue 17)
-  register_animation();  // 001 section 5 in spirit: the boxers per frame, double and certified (issue 17)
-  register_fcl_static();  // issue 21: FCL's static ellipsoid test on the static3d pairs
-  register_fcl_table2();  // issue 21: per frame of 000 Table 2, eccd and FCL, misclassified frames
-  eccd_bench::register_poses({group, [](const std::string& g, const std::string& l, bool b, const std::string& n,
-                                        std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
-                              [](const std::string& k, const json& j) { g_results[k] = j; }, ECCD_SOURCE_DIR});  // issue 36
-  eccd_bench::register_table1_frames();  // 000 Table 1 as an animation, per frame (bench/table1_frames.cpp)
-  eccd_bench::register_speed_targets();  // issue 36: the targets on the product path (bench/speed_targets.cpp)
+  register_product();        // issue 30: eccd::solve from the scene, both faces and input modes (the target rows)
+  register_planes();         // 000 section 4: the plane check per pair-frame (issue 17)
+  register_animation();      // 001 section 5 in spirit: the boxers per frame, double and certified (issue 17)
+  register_fcl_static();     // issue 21: FCL's static ellipsoid test on the static3d pairs
+  register_fcl_table2();     // issue 21: per frame of 000 Table 2, eccd and FCL, misclassified frames
+  eccd_bench::register_poses({group,
+                              [](const std::string& g, const std::string& l, bool b, const std::string& n,
+                                 std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
+                              [](const std::string& k, const json& j) { g_results[k] = j; },
+                              ECCD_SOURCE_DIR});  // issue 36
+  eccd_bench::register_table1_frames();           // 000 Table 1 as an animation, per frame (bench/table1_frames.cpp)
+  eccd_bench::register_speed_targets();           // issue 36: the targets on the product path (bench/speed_targets.cpp)
   eccd_bench::register_independent({group,  // issue 33: cases/independent in four arithmetics (bench/independent.cpp)
-                                    [](auto& g, auto& l, bool b, bool heavy, auto& n, auto fn) { row(g, l, b, heavy ? Cost::heavy : Cost::slow, n, fn); },
+                                    [](auto& g, auto& l, bool b, bool heavy, auto& n, auto fn) {
+                                      row(g, l, b, heavy ? Cost::heavy : Cost::slow, n, fn);
+                                    },
                                     [](const std::string& k, const json& j) { g_results[k] = j; }});
 
   SummaryReporter reporter;
@@ -353,9 +369,11 @@ int main(int argc, char** argv) {
   if (!summary_path.empty()) {
     std::ofstream f(summary_path);
     f << s.dump(1) << "\n";
-    if (!f) { std::cerr << "cannot write " << summary_path << "\n"; return 1; }
+    if (!f) {
+      std::cerr << "cannot write " << summary_path << "\n";
+      return 1;
+    }
   }
   benchmark::Shutdown();
   return 0;
 }
-

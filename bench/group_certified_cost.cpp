@@ -27,7 +27,8 @@ void register_certified_cost() {
     g.seed = 1800 + 100 * dim + 10 * degree + e;
     GeneratedScene gs = generate_scene(g);
     std::string text = gs.doc.dump();
-    scenes.push_back({gs.name, std::make_shared<Lazy<Scene>>([text, name = gs.name] { return parse_scene(text, name); })});
+    scenes.push_back(
+        {gs.name, std::make_shared<Lazy<Scene>>([text, name = gs.name] { return parse_scene(text, name); })});
   };
   for (const auto& e : std::filesystem::directory_iterator(src("cases/short-overlap")))
     if (e.path().extension() == ".json") file("cases/short-overlap/" + e.path().filename().string());
@@ -45,11 +46,12 @@ void register_certified_cost() {
   for (int dim : {2, 3}) generated(dim, 1, "graze", "translation", 0);
   std::sort(scenes.begin(), scenes.end());
   const char* grp = "certified-cost";
-  group(grp, "the certified ladder against exact on short overlaps, near misses and grazes",
-        "Per scene, `eccd::solve_scene` with --arith exact and with --arith certified (the ladder with its budgets: "
-        "certified/ladder.hpp, \"Cost guarantee\"). The report gives each scene's ratio certified / exact, their median, "
-        "and certified / (exact + 2 x the interval rung's time), the guarantee's bound (at most 1 up to a constant).",
-        "issue 18: the certified ladder never costs much more than exact (guarantee: exact + 2 x the interval rung + c)");
+  group(
+      grp, "the certified ladder against exact on short overlaps, near misses and grazes",
+      "Per scene, `eccd::solve_scene` with --arith exact and with --arith certified (the ladder with its budgets: "
+      "certified/ladder.hpp, \"Cost guarantee\"). The report gives each scene's ratio certified / exact, their median, "
+      "and certified / (exact + 2 x the interval rung's time), the guarantee's bound (at most 1 up to a constant).",
+      "issue 18: the certified ladder never costs much more than exact (guarantee: exact + 2 x the interval rung + c)");
   bool first = true;
   for (const auto& [name, sc] : scenes) {
     for (const char* arith : {"exact", "certified"}) {
@@ -57,20 +59,23 @@ void register_certified_cost() {
       std::string key = std::string(grp) + "/" + name + " " + arith;
       row(grp, name + " " + arith, first, Cost::very_slow, std::string("solve_scene, arith ") + arith,
           [key, sc = sc, o](benchmark::State& st) {
-            timed(st, key, [&] { return solution_to_json(solve(sc->get(), o)); }, [](const json& j) {
-              json r{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]},
-                     {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
-              if (j.contains("decided_in")) {
-                r["decided_in"] = j["decided_in"];
-                if (j.contains("escalation_reason")) r["escalation_reason"] = j["escalation_reason"];
-                // The interval rung's time (the guarantee's I): its escalation, or the whole run when it decided.
-                double interval_ms = j["time_ms"].get<double>();
-                for (const auto& e : j["escalations"])
-                  if (e["rung"] == "interval") interval_ms = e.value("spent_ms", 0.0);
-                r["interval_ms"] = interval_ms;
-              }
-              return r;
-            });
+            timed(
+                st, key, [&] { return solution_to_json(solve(sc->get(), o)); },
+                [](const json& j) {
+                  json r{{"collides", j["collides"]},
+                         {"time_ms_inside", j["time_ms"]},
+                         {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
+                  if (j.contains("decided_in")) {
+                    r["decided_in"] = j["decided_in"];
+                    if (j.contains("escalation_reason")) r["escalation_reason"] = j["escalation_reason"];
+                    // The interval rung's time (the guarantee's I): its escalation, or the whole run when it decided.
+                    double interval_ms = j["time_ms"].get<double>();
+                    for (const auto& e : j["escalations"])
+                      if (e["rung"] == "interval") interval_ms = e.value("spent_ms", 0.0);
+                    r["interval_ms"] = interval_ms;
+                  }
+                  return r;
+                });
           });
       first = false;
     }

@@ -17,9 +17,14 @@ void register_certified_sets() {
     const char* prefix;
   };
   const Set sets[] = {
-      {"certified-set-2d-deg4", "certified mode against double on the degree-4 2D generated set", {"cases/generated/2d"}, "2d-deg4-"},
-      {"certified-set-3d-deg4", "certified mode against double on the degree-4 3D generated set",
-       {"cases/generated/3d-euler", "cases/generated/3d-affine"}, "3d-deg4-"},
+      {"certified-set-2d-deg4",
+       "certified mode against double on the degree-4 2D generated set",
+       {"cases/generated/2d"},
+       "2d-deg4-"},
+      {"certified-set-3d-deg4",
+       "certified mode against double on the degree-4 3D generated set",
+       {"cases/generated/3d-euler", "cases/generated/3d-affine"},
+       "3d-deg4-"},
   };
   for (const Set& set : sets) {
     std::vector<std::string> files;
@@ -28,12 +33,13 @@ void register_certified_sets() {
         if (e.path().extension() == ".json" && e.path().filename().string().rfind(set.prefix, 0) == 0)
           files.push_back(std::string(d) + "/" + e.path().filename().string());
     std::sort(files.begin(), files.end());
-    group(set.id, set.title,
-          "Per scene of the set (every scene of `cases/` whose name starts with the set's prefix), `eccd::solve_scene` "
-          "with --arith double (2D: CD-DISC with Δ in Bernstein form; 3D: the Bézier method) and with --arith certified "
-          "(intervals of doubles, escalating to MPFI and then exact where a sign is uncertain). The report gives each "
-          "scene's ratio certified / double and their median.",
-          "issue 6 target: median cost of the certified mode at most 3x the double pipeline");
+    group(
+        set.id, set.title,
+        "Per scene of the set (every scene of `cases/` whose name starts with the set's prefix), `eccd::solve_scene` "
+        "with --arith double (2D: CD-DISC with Δ in Bernstein form; 3D: the Bézier method) and with --arith certified "
+        "(intervals of doubles, escalating to MPFI and then exact where a sign is uncertain). The report gives each "
+        "scene's ratio certified / double and their median.",
+        "issue 6 target: median cost of the certified mode at most 3x the double pipeline");
     bool first = true;
     for (const std::string& rel : files) {
       std::string name = std::filesystem::path(rel).stem().string();
@@ -44,14 +50,17 @@ void register_certified_sets() {
         row(set.id, name + " " + arith, first && is_double, is_double ? Cost::slow : Cost::very_slow,
             std::string("solve_scene, arith ") + arith + ", " + rel,
             [key = std::string(set.id) + "/" + name + " " + arith, sc, o](benchmark::State& st) {
-              timed(st, key, [&] { return solution_to_json(solve(sc->get(), o)); }, [](const json& j) {
-                json r{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]},
-                       {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
-                       {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
-                for (const char* k : {"escalated", "decided_in", "escalation_reason"})
-                  if (j.contains(k)) r[k] = j[k];
-                return r;
-              });
+              timed(
+                  st, key, [&] { return solution_to_json(solve(sc->get(), o)); },
+                  [](const json& j) {
+                    json r{{"collides", j["collides"]},
+                           {"time_ms_inside", j["time_ms"]},
+                           {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
+                           {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
+                    for (const char* k : {"escalated", "decided_in", "escalation_reason"})
+                      if (j.contains(k)) r[k] = j[k];
+                    return r;
+                  });
             });
         first = false;
       }

@@ -30,11 +30,13 @@ const ProductRow kProductRows[] = {
 };
 
 void register_product() {
-  group("product-2d-deg6-v3", "eccd::solve on the 2D degree-6 scene (Δ of degree 144), Variant 3, as a user runs it",
-        "eccd::solve(scene, options) from the read scene: preparation, CD-DISC (Bernstein form), the answer; each floating "
-        "row names its face and input mode. Baseline: double as published, rounded input; the guarded row's ratio is the "
-        "guard's cost.",
-        "issue 21: double at most 50 µs; issue 30: guarded / as published at most ×1.5 (median)");
+  group(
+      "product-2d-deg6-v3", "eccd::solve on the 2D degree-6 scene (Δ of degree 144), Variant 3, as a user runs it",
+      "eccd::solve(scene, options) from the read scene: preparation, CD-DISC (Bernstein form), the answer; each "
+      "floating "
+      "row names its face and input mode. Baseline: double as published, rounded input; the guarded row's ratio is the "
+      "guard's cost.",
+      "issue 21: double at most 50 µs; issue 30: guarded / as published at most ×1.5 (median)");
   group("product-paper002", "eccd::solve on paper 002's example (degree 4, 3D), as a user runs it",
         "eccd::solve(scene, options) from the read scene: preparation, the Bézier method (001 section 4) or the exact "
         "projection, contact points and normals; each floating row names its face and input mode. Baseline: double as "
@@ -53,13 +55,19 @@ void register_product() {
       std::string label = r.label;
       const bool floating = o.arith.floating();
       row(grp, label, first, std::string(r.arith) == "exact" && dim == 3 ? Cost::very_slow : Cost::slow,
-          "eccd::solve(scene, arith " + o.arith.name() + (floating ? std::string(", guard ") + to_string(o.guard) + ", input " + to_string(o.input) : std::string()) +
+          "eccd::solve(scene, arith " + o.arith.name() +
+              (floating ? std::string(", guard ") + to_string(o.guard) + ", input " + to_string(o.input)
+                        : std::string()) +
               (dim == 2 ? ", variant " + std::to_string(int(o.variant)) : std::string(", method bezier")) + ")",
           [grp, label, o, dim](benchmark::State& st) {
             const Scene& sc = dim == 2 ? s2d_deg6.get().scene : s3d_paper002.get().scene;
-            if (dim == 2) note_scene(s2d_deg6.get());
-            else note_scene(s3d_paper002.get(), grp);
-            timed(st, grp + "/" + label, [&] { return solve(sc, o); }, [](const Solution& s) { return summarise_solution(s); });
+            if (dim == 2)
+              note_scene(s2d_deg6.get());
+            else
+              note_scene(s3d_paper002.get(), grp);
+            timed(
+                st, grp + "/" + label, [&] { return solve(sc, o); },
+                [](const Solution& s) { return summarise_solution(s); });
           });
       first = false;
     }

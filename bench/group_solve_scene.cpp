@@ -32,11 +32,12 @@ const SolveRow kSolveSceneRows[] = {
 
 void register_solve_scene() {
   group("solve_scene-2d-deg6", "eccd::solve_scene on the 2D degree-6 scene (JSON included)",
-        "What `eccd solve` computes, through solve(scene, SolveOptions) then solution_to_json: the pipeline plus preparation of the "
+        "What `eccd solve` computes, through solve(scene, SolveOptions) then solution_to_json: the pipeline plus "
+        "preparation of the "
         "scene (prepare_pair) and the JSON report; rows of the certified interval mode (`--arith certified`) included.",
         "the first row of the table (double)");
-  group("solve_scene-paper002", "eccd::solve_scene on paper 002's example (JSON included)",
-        "As above, 3D.", "the first row of the table (double Bézier)");
+  group("solve_scene-paper002", "eccd::solve_scene on paper 002's example (JSON included)", "As above, 3D.",
+        "the first row of the table (double Bézier)");
   std::map<std::string, bool> seen;
   for (const SolveRow& r : kSolveSceneRows) {
     std::string grp = r.group, label = r.label;
@@ -45,17 +46,21 @@ void register_solve_scene() {
     SolveOptions o = r.options();
     int dim = r.dim;
     row(grp, label, baseline, label.find("exact") != std::string::npos && dim == 3 ? Cost::very_slow : Cost::slow,
-        "solve_scene, arith " + o.arith.name() + (dim == 2 ? ", variant " + std::to_string(int(o.variant)) : ", method " + o.method_name()),
+        "solve_scene, arith " + o.arith.name() +
+            (dim == 2 ? ", variant " + std::to_string(int(o.variant)) : ", method " + o.method_name()),
         [grp, label, o, dim](benchmark::State& st) {
           const Scene& sc = dim == 2 ? s2d_deg6.get().scene : s3d_paper002.get().scene;
-          timed(st, grp + "/" + label, [&] { return solution_to_json(solve(sc, o)); }, [](const json& j) {
-            json r{{"collides", j["collides"]}, {"time_ms_inside", j["time_ms"]},
-                   {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
-                   {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
-            for (const char* k : {"escalated", "decided_in", "escalation_reason", "certified"})
-              if (j.contains(k)) r[k] = j[k];
-            return r;
-          });
+          timed(
+              st, grp + "/" + label, [&] { return solution_to_json(solve(sc, o)); },
+              [](const json& j) {
+                json r{{"collides", j["collides"]},
+                       {"time_ms_inside", j["time_ms"]},
+                       {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
+                       {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
+                for (const char* k : {"escalated", "decided_in", "escalation_reason", "certified"})
+                  if (j.contains(k)) r[k] = j[k];
+                return r;
+              });
         });
   }
 }

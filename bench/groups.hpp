@@ -58,7 +58,6 @@
 #include <string>
 #include <vector>
 
-
 #ifndef ECCD_SOURCE_DIR
 #define ECCD_SOURCE_DIR "."
 #endif
@@ -75,7 +74,12 @@ namespace eccd_bench::groups {
 // ---------------------------------------------------------------------------
 // Registry: groups, rows, and what each row answered.
 
-enum class Cost { fast, slow, very_slow, heavy };  // repetitions / minimum time policy (heavy: seconds per iteration, 3 repetitions)
+enum class Cost {
+  fast,
+  slow,
+  very_slow,
+  heavy
+};  // repetitions / minimum time policy (heavy: seconds per iteration, 3 repetitions)
 
 struct Group {
   std::string id, title, description, anchor;
@@ -92,20 +96,27 @@ inline std::map<std::string, json> g_scenes;   // scene id -> description
 inline bool g_quick = false;
 inline double g_profile_seconds = 0;  // > 0: one repetition of at least this long per row (for perf)
 
-inline void group(const std::string& id, const std::string& title, const std::string& description, const std::string& anchor) {
+inline void group(const std::string& id, const std::string& title, const std::string& description,
+                  const std::string& anchor) {
   g_groups.push_back({id, title, description, anchor});
 }
 
 // Registers one benchmark "group/label"; fn runs the timing loop.
 inline void row(const std::string& grp, const std::string& label, bool baseline, Cost cost, const std::string& note,
-         std::function<void(benchmark::State&)> fn, bool process_cpu = false) {
+                std::function<void(benchmark::State&)> fn, bool process_cpu = false) {
   std::string key = grp + "/" + label;
   g_rows.push_back({key, grp, label, note, baseline});
   auto* b = benchmark::RegisterBenchmark(key.c_str(), [fn](benchmark::State& st) { fn(st); });
   int reps = cost == Cost::fast ? 10 : (cost == Cost::slow ? 9 : (cost == Cost::very_slow ? 5 : 3));
   double min_time = cost == Cost::fast ? 0.1 : 0.05;
-  if (g_quick) { reps = 3; min_time = 0.01; }
-  if (g_profile_seconds > 0) { reps = 1; min_time = g_profile_seconds; }
+  if (g_quick) {
+    reps = 3;
+    min_time = 0.01;
+  }
+  if (g_profile_seconds > 0) {
+    reps = 1;
+    min_time = g_profile_seconds;
+  }
   b->Repetitions(reps)->MinTime(min_time)->Unit(cost == Cost::fast ? benchmark::kNanosecond : benchmark::kMicrosecond);
   // Nanosecond rows: a short warm-up (first touches of the batch, the allocator) before each repetition.
   if (cost == Cost::fast && g_profile_seconds == 0) b->MinWarmUpTime(g_quick ? 0.01 : 0.05);
@@ -145,7 +156,9 @@ class Lazy {
 // ---------------------------------------------------------------------------
 // What a CCD run answered (for the report: the rows must agree on the scene).
 
-inline std::string short_instant(const Instant& i) { return i.approx.substr(0, std::min<std::size_t>(i.approx.size(), 10)); }
+inline std::string short_instant(const Instant& i) {
+  return i.approx.substr(0, std::min<std::size_t>(i.approx.size(), 10));
+}
 
 template <class T>
 json summarise_ccd(const PipelineResult<T>& r) {
@@ -201,7 +214,8 @@ inline ojson kinematic_motion(std::mt19937_64& rng, int m, int cx) {
     d[0][i] = wide(rng);
     d[1][i] = wide(rng);
   }
-  for (int k : {2, 3}) if (d[k][m] == 0) d[k][m] = 1;  // full degree m
+  for (int k : {2, 3})
+    if (d[k][m] == 0) d[k][m] = 1;  // full degree m
   for (int i = 0; i <= m; ++i) {
     mpq_class a = d[0][i] + mpq_class(cx) * d[3][i] / 2, b = d[1][i] - mpq_class(cx) * d[2][i] / 2;
     d[0][i] = a;
@@ -210,7 +224,10 @@ inline ojson kinematic_motion(std::mt19937_64& rng, int m, int cx) {
   ojson arr = ojson::array();
   for (int k = 0; k < 4; ++k) {
     ojson p = ojson::array();
-    for (auto& c : d[k]) { c.canonicalize(); p.push_back(c.get_str()); }
+    for (auto& c : d[k]) {
+      c.canonicalize();
+      p.push_back(c.get_str());
+    }
     arr.push_back(p);
   }
   return ojson{{"type", "kinematic"}, {"d", arr}};
@@ -222,7 +239,8 @@ inline Scene kinematic_scene(int motion_degree, std::uint64_t seed, bool apart) 
   int m = motion_degree / 2;
   ojson s;
   s["format"] = "ellipse-ccd-scene/1";
-  s["name"] = "bench-2d-deg" + std::to_string(motion_degree) + (apart ? "-free-" : "-colliding-") + std::to_string(seed);
+  s["name"] =
+      "bench-2d-deg" + std::to_string(motion_degree) + (apart ? "-free-" : "-colliding-") + std::to_string(seed);
   s["dim"] = 2;
   int gap = apart ? 9 : 4;
   for (const char* obj : {"a", "b"}) {
@@ -280,9 +298,15 @@ inline Scene2D select_2d(int degree, bool apart, std::uint64_t seed) {
     if (e.answer.collides != d.answer.collides || e.answer.contacts.size() != d.answer.contacts.size()) continue;
     if (e.status_at_0 != Status::separate) continue;
     Scene2D out{sc.name, sc, p, json::object()};
-    out.info = {{"dim", 2}, {"motion_degree", degree}, {"family", apart ? "free" : "colliding"}, {"seed", seed},
-                {"tries", tries + 1}, {"projection_degree", e.projection_degree}, {"exact_answer", summarise_ccd(e)},
-                {"source", "generated in-process (bench/eccd_bench.cpp kinematic_scene), general kinematic-image motion"}};
+    out.info = {
+        {"dim", 2},
+        {"motion_degree", degree},
+        {"family", apart ? "free" : "colliding"},
+        {"seed", seed},
+        {"tries", tries + 1},
+        {"projection_degree", e.projection_degree},
+        {"exact_answer", summarise_ccd(e)},
+        {"source", "generated in-process (bench/eccd_bench.cpp kinematic_scene), general kinematic-image motion"}};
     return out;
   }
   throw std::runtime_error("no 2D scene of degree " + std::to_string(degree) + " found");
@@ -293,7 +317,8 @@ inline Scene2D scene2d_from_file(const std::string& id, const std::string& rel) 
   PreparedPair<3> p = prepare_pair<3>(sc);
   auto e = run2d_exact(p, Variant::answer);
   Scene2D out{id, sc, p, json::object()};
-  out.info = {{"dim", 2}, {"file", rel}, {"projection_degree", e.projection_degree}, {"exact_answer", summarise_ccd(e)}};
+  out.info = {
+      {"dim", 2}, {"file", rel}, {"projection_degree", e.projection_degree}, {"exact_answer", summarise_ccd(e)}};
   return out;
 }
 
@@ -318,19 +343,24 @@ inline Lazy<Scene2D> s2d_deg2([] { return select_2d(2, false, kSeed2D); });
 inline Lazy<Scene2D> s2d_deg4([] { return select_2d(4, false, kSeed2D); });
 inline Lazy<Scene2D> s2d_deg6([] { return select_2d(6, false, kSeed2D); });
 inline Lazy<Scene2D> s2d_deg6_free([] { return select_2d(6, true, kSeed2D); });
-inline Lazy<Scene2D> s2d_paper003([] { return scene2d_from_file("paper003-example2", "cases/paper003/example2.json"); });
+inline Lazy<Scene2D> s2d_paper003([] {
+  return scene2d_from_file("paper003-example2", "cases/paper003/example2.json");
+});
 
 inline Lazy<Scene3D> s3d_deg2([] {
-  return scene3d_from_file("3d-deg2-affine", "cases/generated/3d-affine/3d-deg2-colliding-affine-2295206434708192.json",
-                           "generated corpus, degree-2 affine motions: separate at t = 0, one collision interval, two contacts");
+  return scene3d_from_file(
+      "3d-deg2-affine", "cases/generated/3d-affine/3d-deg2-colliding-affine-2295206434708192.json",
+      "generated corpus, degree-2 affine motions: separate at t = 0, one collision interval, two contacts");
 });
 inline Lazy<Scene3D> s3d_deg4([] {
-  return scene3d_from_file("3d-deg4-euler", "cases/generated/3d-euler/3d-deg4-colliding-euler-8020579862790034.json",
-                           "generated corpus, degree-4 Euler-parameter motions: separate at t = 0, one collision interval");
+  return scene3d_from_file(
+      "3d-deg4-euler", "cases/generated/3d-euler/3d-deg4-colliding-euler-8020579862790034.json",
+      "generated corpus, degree-4 Euler-parameter motions: separate at t = 0, one collision interval");
 });
 inline Lazy<Scene3D> s3d_deg4_affine([] {
-  return scene3d_from_file("3d-deg4-affine", "cases/generated/3d-affine/3d-deg4-colliding-affine-6989596756321537.json",
-                           "generated corpus, degree-4 affine motions, colliding (001 Fig. 3 is a degree-4 affine pair)");
+  return scene3d_from_file(
+      "3d-deg4-affine", "cases/generated/3d-affine/3d-deg4-colliding-affine-6989596756321537.json",
+      "generated corpus, degree-4 affine motions, colliding (001 Fig. 3 is a degree-4 affine pair)");
 });
 inline Lazy<Scene3D> s3d_paper002([] {
   return scene3d_from_file("paper002-example", "cases/paper002/example.json",
@@ -346,7 +376,6 @@ inline void note_scene(const Scene3D& s, const std::string& group) {
   g_scenes[s.id] = j;
 }
 
-
 // ---------------------------------------------------------------------------
 // The static tests' inputs (groups static2d/static3d, fcl-static3d, static-certified-*): batches of
 // random pairs in double.
@@ -360,10 +389,10 @@ using M4 = std::array<std::array<double, 4>, 4>;
 // rotated by a random unit quaternion (or angle), semi-axes in [1, 3], centre
 // at a random distance in [0, 7] (about half the pairs separate).
 struct Static3D {
-  std::vector<std::array<double, 3>> e;  // ea, eb, ec of A
-  std::vector<M4> a, b;                  // A = diag(ea, eb, ec, -1) and B in A's frame
+  std::vector<std::array<double, 3>> e;     // ea, eb, ec of A
+  std::vector<M4> a, b;                     // A = diag(ea, eb, ec, -1) and B in A's frame
   std::vector<std::vector<double>> coeffs;  // Appendix A coefficients (for the status-only row)
-  std::vector<Ellipsoid> pa, pb;            // the same pairs as a user gives them: semi-axes and poses (the API's input)
+  std::vector<Ellipsoid> pa, pb;  // the same pairs as a user gives them: semi-axes and poses (the API's input)
 };
 struct Static2D {
   std::vector<M3> a, b;
@@ -380,7 +409,10 @@ inline Static3D make_static3d() {
     std::array<double, 3> ea{1 / (a1 * a1), 1 / (a2 * a2), 1 / (a3 * a3)};
     double q[4];
     double qn = 0;
-    for (double& x : q) { x = nrm(rng); qn += x * x; }
+    for (double& x : q) {
+      x = nrm(rng);
+      qn += x * x;
+    }
     qn = std::sqrt(qn);
     for (double& x : q) x /= qn;
     const double w = q[0], x = q[1], y = q[2], z = q[3];
@@ -422,7 +454,10 @@ inline Static3D make_static3d() {
     pb.pose[3] = {0, 0, 0, 1};
     s.pa.push_back(pa);
     s.pb.push_back(pb);
-    { auto c = appendix_a_coefficients(ea[0], ea[1], ea[2], B); s.coeffs.emplace_back(c.begin(), c.end()); }
+    {
+      auto c = appendix_a_coefficients(ea[0], ea[1], ea[2], B);
+      s.coeffs.emplace_back(c.begin(), c.end());
+    }
   }
   return s;
 }
@@ -475,8 +510,8 @@ inline json status_counts(const std::vector<Status>& v) {
 // The 3D pipelines as the ccd3d, phases and translation groups run them.
 
 template <class T>
-PipelineResult<T> run3d_floating(const PreparedPair<4>& p, const std::string& method, Basis basis, int bits, const T& like,
-                               bool first_contact) {
+PipelineResult<T> run3d_floating(const PreparedPair<4>& p, const std::string& method, Basis basis, int bits,
+                                 const T& like, bool first_contact) {
   if (method == "projection") {
     FloatingPolicy<T> pol(basis, bits, like);
     return ccd_projection(to_arithmetic<T, 4>(p, like), pol, first_contact);
@@ -504,20 +539,20 @@ inline SolveOptions opts(const char* arith, int variant, const char* method = "b
   return o;
 }
 
-void register_static();  // bench/group_static.cpp
-void register_2d();  // bench/group_ccd2d.cpp
-void register_3d();  // bench/group_ccd3d.cpp
-void register_isolation();  // bench/group_isolation.cpp
-void register_phases();  // bench/group_phases.cpp
-void register_solve_scene();  // bench/group_solve_scene.cpp
-void register_planes();  // bench/group_planes.cpp
-void register_translation3d();  // bench/group_translation3d.cpp
-void register_product();  // bench/group_product.cpp
-void register_animation();  // bench/group_animation.cpp
-void register_fcl_static();  // bench/group_fcl.cpp
-void register_fcl_table2();  // bench/group_fcl.cpp
-void register_certified_sets();  // bench/group_certified_sets.cpp
+void register_static();            // bench/group_static.cpp
+void register_2d();                // bench/group_ccd2d.cpp
+void register_3d();                // bench/group_ccd3d.cpp
+void register_isolation();         // bench/group_isolation.cpp
+void register_phases();            // bench/group_phases.cpp
+void register_solve_scene();       // bench/group_solve_scene.cpp
+void register_planes();            // bench/group_planes.cpp
+void register_translation3d();     // bench/group_translation3d.cpp
+void register_product();           // bench/group_product.cpp
+void register_animation();         // bench/group_animation.cpp
+void register_fcl_static();        // bench/group_fcl.cpp
+void register_fcl_table2();        // bench/group_fcl.cpp
+void register_certified_sets();    // bench/group_certified_sets.cpp
 void register_static_certified();  // bench/group_static_certified.cpp
-void register_certified_cost();  // bench/group_certified_cost.cpp
+void register_certified_cost();    // bench/group_certified_cost.cpp
 
 }  // namespace eccd_bench::groups

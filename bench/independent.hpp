@@ -17,7 +17,9 @@ struct IndependentHooks {
   // group(id, title, description, anchor)
   std::function<void(const std::string&, const std::string&, const std::string&, const std::string&)> group;
   // row(group, label, baseline, heavy, note, fn): heavy = seconds per iteration (few repetitions)
-  std::function<void(const std::string&, const std::string&, bool, bool, const std::string&, std::function<void(benchmark::State&)>)> row;
+  std::function<void(const std::string&, const std::string&, bool, bool, const std::string&,
+                     std::function<void(benchmark::State&)>)>
+      row;
   // result(key, what the row answered)
   std::function<void(const std::string&, const nlohmann::json&)> result;
 };

@@ -45,11 +45,13 @@ void run(benchmark::State& st, const TriBern<T>& F, const T& like) {
     tests += r.counters.front().second;
   }
   st.counters["box_tests"] = benchmark::Counter(double(tests), benchmark::Counter::kAvgIterations);
-  st.counters["ns_per_test"] = benchmark::Counter(double(tests) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  st.counters["ns_per_test"] =
+      benchmark::Counter(double(tests) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 const bool registered = [] {
-  for (const char* scene : {"ellipsoids-cross", "ellipsoids-turning", "spheres-cross", "ellipsoids-apart", "spheres-end"}) {
+  for (const char* scene :
+       {"ellipsoids-cross", "ellipsoids-turning", "spheres-cross", "ellipsoids-apart", "spheres-end"}) {
     const std::string file = std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + scene + ".json";
     const std::string grp = std::string("independent-boxtest/") + scene;
     benchmark::RegisterBenchmark((grp + "/double").c_str(), [file](benchmark::State& st) {

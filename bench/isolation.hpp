@@ -30,8 +30,8 @@
 namespace eccd_bench {
 
 struct IsolationOutcome {
-  int roots = 0;          // CGAL: distinct real roots; MPSolve: inclusion discs (= degree)
-  int in_unit = 0;        // of those, in [0, 1] (MPSolve: discs meeting [0, 1])
+  int roots = 0;    // CGAL: distinct real roots; MPSolve: inclusion discs (= degree)
+  int in_unit = 0;  // of those, in [0, 1] (MPSolve: discs meeting [0, 1])
 };
 
 class PreparedIsolation {

@@ -21,15 +21,16 @@ namespace eccd_bench {
 
 void register_poses(const PosesBenchHooks& h) {
   using namespace eccd;
-  h.group("poses", "Per-pose mode (eccd animate --poses): per pair-pose, the static test with the kept plane",
-          "eccd::animate_poses(animation, arith, threads 1) on 000 Table 1 (bench/data/table1-{0.1,1}-1000.anim.json: "
-          "make_repro.py table1 --rate R --frames 1000 --seed 1), 000 Table 2 (bench/data/table2-main-1000.anim.json: "
-          "make_repro.py table2 --frames 1000 --radius 5.49) and the boxers (bench/data/boxers-10.anim.json, 11 keys, "
-          "576 pairs). One iteration is the whole animation; per pair-pose = median / pair_poses (every stage: bounding "
-          "spheres, the kept plane's check, the static test, building planes). plane_share: pair-poses past the bounding "
-          "spheres settled by the kept plane. Baseline: double, Table 1 at 0.1 rad.",
-          "issue 36: at most 0.5 µs per pair-pose in double and 1 µs certified; 000 Tables 1-2: 2.1-5 µs per frame "
-          "(one pair, static pose per frame)");
+  h.group(
+      "poses", "Per-pose mode (eccd animate --poses): per pair-pose, the static test with the kept plane",
+      "eccd::animate_poses(animation, arith, threads 1) on 000 Table 1 (bench/data/table1-{0.1,1}-1000.anim.json: "
+      "make_repro.py table1 --rate R --frames 1000 --seed 1), 000 Table 2 (bench/data/table2-main-1000.anim.json: "
+      "make_repro.py table2 --frames 1000 --radius 5.49) and the boxers (bench/data/boxers-10.anim.json, 11 keys, "
+      "576 pairs). One iteration is the whole animation; per pair-pose = median / pair_poses (every stage: bounding "
+      "spheres, the kept plane's check, the static test, building planes). plane_share: pair-poses past the bounding "
+      "spheres settled by the kept plane. Baseline: double, Table 1 at 0.1 rad.",
+      "issue 36: at most 0.5 µs per pair-pose in double and 1 µs certified; 000 Tables 1-2: 2.1-5 µs per frame "
+      "(one pair, static pose per frame)");
   struct R {
     const char* label;
     const char* file;
@@ -56,7 +57,8 @@ void register_poses(const PosesBenchHooks& h) {
     auto anim = std::make_shared<std::pair<std::once_flag, std::unique_ptr<Animation>>>();
     auto result = h.result;
     h.row("poses", r.label, r.baseline,
-          std::string("eccd::animate_poses, arith ") + r.arith + (r.planes ? "" : ", planes off") + ", threads 1, " + r.file,
+          std::string("eccd::animate_poses, arith ") + r.arith + (r.planes ? "" : ", planes off") + ", threads 1, " +
+              r.file,
           [key, path, o, anim, result](benchmark::State& st) {
             std::call_once(anim->first, [&] { anim->second = std::make_unique<Animation>(read_animation(path)); });
             std::unique_ptr<PosesResult> last;

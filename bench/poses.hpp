@@ -13,7 +13,9 @@ struct PosesBenchHooks {
   // group(id, title, description, anchor)
   std::function<void(const std::string&, const std::string&, const std::string&, const std::string&)> group;
   // row(group, label, baseline, note, timing loop): a microsecond row, process CPU time
-  std::function<void(const std::string&, const std::string&, bool, const std::string&, std::function<void(benchmark::State&)>)> row;
+  std::function<void(const std::string&, const std::string&, bool, const std::string&,
+                     std::function<void(benchmark::State&)>)>
+      row;
   // result(key, what the row computed): after the timing loop
   std::function<void(const std::string&, const nlohmann::json&)> result;
   std::string source_dir;

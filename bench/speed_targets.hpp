@@ -11,7 +11,8 @@
 namespace eccd_bench {
 
 // cost: 0 fast (nanosecond rows), 1 slow, 2 very slow, 3 heavy (as eccd_bench.cpp's Cost).
-void add_group(const std::string& id, const std::string& title, const std::string& description, const std::string& anchor);
+void add_group(const std::string& id, const std::string& title, const std::string& description,
+               const std::string& anchor);
 void add_row(const std::string& grp, const std::string& label, bool baseline, int cost, const std::string& note,
              std::function<void(benchmark::State&)> fn, bool process_cpu = false);
 void record_result(const std::string& key, const nlohmann::json& summary);

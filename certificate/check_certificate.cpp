@@ -11,19 +11,21 @@ using json = nlohmann::json;
 
 CertificateCheck check_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert) {
   // eccd-certificate/2, eccd-bezier-certificate/2, eccd-cycloidal-certificate/2, eccd-independent-certificate/3
-  // (and anything else a shared-parameter scene is given): the independent checker, eccd-check's library (certificate/check/),
-  // on the scene's own text and the certificate.
+  // (and anything else a shared-parameter scene is given): the independent checker, eccd-check's library
+  // (certificate/check/), on the scene's own text and the certificate.
   if (cycloidal_certificate_scene(s)) {  // a cycloidal scene has one kind of certificate: say which when given another
     const json fmt = cert.is_object() && cert.contains("format") ? cert["format"] : json();
     if (fmt != kCycloidalCertificateFormat && fmt != "eccd-cycloidal-certificate/1") {
       CertificateCheck out;
       out.failed_claim = "certificate format";
-      out.reason = std::string("format: expected \"") + kCycloidalCertificateFormat + "\" for a cycloidal scene, got " + fmt.dump();
+      out.reason = std::string("format: expected \"") + kCycloidalCertificateFormat + "\" for a cycloidal scene, got " +
+                   fmt.dump();
       return out;
     }
   }
   const std::string scene_text = s.source_text.empty() ? scene_doc.dump() : s.source_text;
-  const check::Verdict v = check::check_certificate_text(scene_text, s.path.empty() ? std::string("scene") : s.path, cert.dump(), "certificate");
+  const check::Verdict v = check::check_certificate_text(scene_text, s.path.empty() ? std::string("scene") : s.path,
+                                                         cert.dump(), "certificate");
   CertificateCheck out;
   out.valid = v.outcome == check::Outcome::valid;
   out.checked = v.checked;

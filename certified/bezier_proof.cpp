@@ -75,9 +75,7 @@ class Engine {
 
   // The localisation: strips in t order, proved out / in, or not (at 2^-strip_depth).
   // Returns false when the work cap was reached or more than kMaxUnresolved strips stayed unresolved.
-  bool localise(std::vector<Strip>& out) {
-    return strip(F_, 0.0, 1.0, 0, out);
-  }
+  bool localise(std::vector<Strip>& out) { return strip(F_, 0.0, 1.0, 0, out); }
 
   // The end in the run [lo, hi] (out on one side, in on the other): "" and the piece, or why not.
   // Krawczyk's test first on the localisation's net in intervals of doubles, then on the same net held in
@@ -114,10 +112,12 @@ class Engine {
     sys.vars = {0, 2};
     sys.kind = "bezier-end";
     std::optional<std::array<double, 3>> x = krawczyk_method::newton(nets, sys, {u0, 0.0, tm});
-    if (!x) x = std::array<double, 3>{refine_argmax(u0, tm), 0.0, tm};  // no Newton point: the witness u at the run's middle
+    if (!x)
+      x = std::array<double, 3>{refine_argmax(u0, tm), 0.0, tm};  // no Newton point: the witness u at the run's middle
     const double ux = (*x)[0], tx = (*x)[2];
     if (!(ux > 0 && ux < 1) || !(tx > lo - (hi - lo) && tx < hi + (hi - lo)))
-      return "Newton's method on (F, F_u) went outside the run (u = " + std::to_string(ux) + ", t = " + std::to_string(tx) + ")";
+      return "Newton's method on (F, F_u) went outside the run (u = " + std::to_string(ux) +
+             ", t = " + std::to_string(tx) + ")";
     const mpq_class uq(ux), tq(tx), w = qhi - qlo;
     std::string why = "Krawczyk's test failed around u = " + std::to_string(ux) + ", t = " + std::to_string(tx);
     for (const int f : {64, 16, 4, 256, 1, 1024}) {
@@ -131,7 +131,10 @@ class Engine {
       ++krawczyk_tests;
       if (!krawczyk_method::krawczyk(nets, sys, X, K)) continue;
       std::string ex = exclude(qlo, qhi, X.lo[0], X.hi[0]);
-      if (!ex.empty()) { why += ": " + ex; continue; }
+      if (!ex.empty()) {
+        why += ": " + ex;
+        continue;
+      }
       // tighten: Y <- Y ∩ K(Y) keeps the unique zero
       piece.kind = BezierPiece::end;
       piece.lo = Rational(qlo);
@@ -216,19 +219,32 @@ class Engine {
     const int n = int(col.b.size());
     if (n >= 1 && n <= kWitnessRows) {
       alignas(64) double w[kWitnessRows][K], su[K], uu[K];
-      for (int k = 0; k < K; ++k) { uu[k] = (k + 1) / 128.0; su[k] = 1.0 - uu[k]; }
+      for (int k = 0; k < K; ++k) {
+        uu[k] = (k + 1) / 128.0;
+        su[k] = 1.0 - uu[k];
+      }
       for (int i = 0; i < n; ++i)
         for (int k = 0; k < K; ++k) w[i][k] = col.b[i];
       for (int r = 1; r < n; ++r)
         for (int i = 0; i + r < n; ++i)
-          for (int k = 0; k < K; ++k) { const double x = su[k] * w[i][k]; const double y = uu[k] * w[i + 1][k]; w[i][k] = x + y; }
+          for (int k = 0; k < K; ++k) {
+            const double x = su[k] * w[i][k];
+            const double y = uu[k] * w[i + 1][k];
+            w[i][k] = x + y;
+          }
       for (int k = 0; k < K; ++k)
-        if (w[0][k] > best) { best = w[0][k]; ub = uu[k]; }
+        if (w[0][k] > best) {
+          best = w[0][k];
+          ub = uu[k];
+        }
       return {ub, best};
     }
     for (int k = 1; k < 128; ++k) {
       const double u = k / 128.0, v = col(u);
-      if (v > best) { best = v; ub = u; }
+      if (v > best) {
+        best = v;
+        ub = u;
+      }
     }
     return {ub, best};
   }
@@ -248,7 +264,10 @@ class Engine {
     const double r = 0.6180339887498949;
     for (int k = 0; k < 80; ++k) {
       const double c = b - r * (b - a), d = a + r * (b - a);
-      if (col(c) > col(d)) b = d; else a = c;
+      if (col(c) > col(d))
+        b = d;
+      else
+        a = c;
     }
     return 0.5 * (a + b);
   }
@@ -265,8 +284,13 @@ class Engine {
       }
       const double um = 0.5 * (u0 + u1);
       // only the half that holds u* is computed (issue 18: split_u was a sixth of a certified 3D query)
-      if (ustar < um) { keep_u_left(g, Interval(0.5, 0.5)); u1 = um; }
-      else { keep_u_right(g, Interval(0.5, 0.5)); u0 = um; }
+      if (ustar < um) {
+        keep_u_left(g, Interval(0.5, 0.5));
+        u1 = um;
+      } else {
+        keep_u_right(g, Interval(0.5, 0.5));
+        u0 = um;
+      }
     }
     return false;
   }
@@ -358,12 +382,12 @@ class Engine {
       Ex b = std::move(stack.back());
       stack.pop_back();
       ++exclusion_boxes;
-      if (++n > opt_.max_boxes) return "the exclusion of other zeros of (F, F_u) needed more than " + std::to_string(opt_.max_boxes) + " boxes";
+      if (++n > opt_.max_boxes)
+        return "the exclusion of other zeros of (F, F_u) needed more than " + std::to_string(opt_.max_boxes) + " boxes";
       check_work();
       if (mpq_class(b.u0) >= xu0 && mpq_class(b.u1) <= xu1) continue;
       if (b.f.strict_sign() != 0 || b.fu.strict_sign() != 0) continue;
-      if (b.depth >= 40)
-        return "another zero of (F, F_u) near u = " + std::to_string(b.u0) + " could not be excluded";
+      if (b.depth >= 40) return "another zero of (F, F_u) near u = " + std::to_string(b.u0) + " could not be excluded";
       // split in u (the t-range is the run's, already narrow; a t-split costs a degree in t squared),
       // and below depth 12 in t every other level
       const double um = 0.5 * (b.u0 + b.u1);
@@ -389,7 +413,9 @@ class Engine {
 
 Instant exact_instant(const mpq_class& x) { return bracketed_instant(x, x, x); }
 
-std::string where(double lo, double hi) { return "t in [" + decimal_string(mpq_class(lo), 12) + ", " + decimal_string(mpq_class(hi), 12) + "]"; }
+std::string where(double lo, double hi) {
+  return "t in [" + decimal_string(mpq_class(lo), 12) + ", " + decimal_string(mpq_class(hi), 12) + "]";
+}
 
 }  // namespace
 
@@ -397,8 +423,10 @@ BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOption
   BezierProofResult r;
   Engine e(p, options);
   auto counters = [&] {
-    r.work = {{"bezier_strip_tests", e.strip_tests}, {"bezier_box_tests", e.box_tests},
-              {"bezier_exclusion_boxes", e.exclusion_boxes}, {"bezier_krawczyk_tests", e.krawczyk_tests},
+    r.work = {{"bezier_strip_tests", e.strip_tests},
+              {"bezier_box_tests", e.box_tests},
+              {"bezier_exclusion_boxes", e.exclusion_boxes},
+              {"bezier_krawczyk_tests", e.krawczyk_tests},
               {"bezier_degree_t", long(e.F().degree_t())}};
   };
   auto refuse = [&](const std::string& why) {
@@ -410,8 +438,7 @@ BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOption
     return r;
   };
   std::vector<Strip> strips;
-  if (!e.localise(strips))
-    return refuse("the localisation stopped: " + e.stop_reason(options));
+  if (!e.localise(strips)) return refuse("the localisation stopped: " + e.stop_reason(options));
   // merge neighbours of one kind (unproved strips into runs)
   std::vector<Strip> m;
   for (auto& s : strips) {
@@ -458,12 +485,14 @@ BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOption
                     " (a touch, or a contact within 2^-" + std::to_string(options.strip_depth) + " of it)");
     if (m[i - 1].kind == m[i + 1].kind)
       return refuse(where(s.lo, s.hi) + std::string(": ") +
-                    (m[i - 1].kind == BezierPiece::out ? "separate on both sides: a touch, a near miss or a collision narrower than the strips"
-                                                       : "overlapping on both sides: a touching gap or none") +
+                    (m[i - 1].kind == BezierPiece::out
+                         ? "separate on both sides: a touch, a near miss or a collision narrower than the strips"
+                         : "overlapping on both sides: a touching gap or none") +
                     " (a tangency cannot be proved by intervals)");
     BezierPiece pc;
     const std::string why = e.prove_end(s.lo, s.hi, pc);
-    if (!why.empty()) return refuse(where(s.lo, s.hi) + ": an end of a collision interval lies here but is not proved: " + why);
+    if (!why.empty())
+      return refuse(where(s.lo, s.hi) + ": an end of a collision interval lies here but is not proved: " + why);
     pieces.push_back(std::move(pc));
   }
   // the timeline: instants at 0, the ends and 1; cells between them

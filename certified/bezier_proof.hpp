@@ -39,12 +39,12 @@ namespace eccd {
 // ---- certificate (certificate/write/bezier_certificate.*): fields may be added, never
 // ---- renamed or removed.
 struct BezierProofOptions {
-  int strip_depth = 16;     // strips of t down to 2^-strip_depth
-  int u_depth = 10;         // u-subdivision of one strip, at most this deep
-  long max_boxes = 20000;   // work cap (boxes tested in all)
-  int bits = 160;           // MPFI precision of the enclosed net for the ends (Krawczyk)
+  int strip_depth = 16;        // strips of t down to 2^-strip_depth
+  int u_depth = 10;            // u-subdivision of one strip, at most this deep
+  long max_boxes = 20000;      // work cap (boxes tested in all)
+  int bits = 160;              // MPFI precision of the enclosed net for the ends (Krawczyk)
   bool first_contact = false;  // stop after the first collision interval (its end still proved)
-  bool record = false;      // keep the proof in BezierProofResult::pieces (for the certificate)
+  bool record = false;         // keep the proof in BezierProofResult::pieces (for the certificate)
 };
 
 // A box [u_lo, u_hi] x [t_lo, t_hi] of the (u, t) square, rational corners.
@@ -67,9 +67,9 @@ struct BezierPiece {
 };
 
 struct BezierProofResult {
-  bool decided = false;      // everything on [0, 1] proved (else `reason` says where and why)
+  bool decided = false;  // everything on [0, 1] proved (else `reason` says where and why)
   std::string reason;
-  Answer answer;             // intervals, first_contact, contacts (the proved ends), collides; when decided
+  Answer answer;                    // intervals, first_contact, contacts (the proved ends), collides; when decided
   std::vector<BezierPiece> pieces;  // when options.record (and decided)
   std::vector<std::pair<std::string, long>> work;  // counters
 };

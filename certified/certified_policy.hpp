@@ -115,8 +115,8 @@ struct CertifiedPolicy {
   int max_depth = 48;    // isolation gives up (escalates) below pieces of width 2^-max_depth
   int refine_bits = 30;  // brackets are refined to width <= 2^-refine_bits while signs are certain
   T like;
-  mutable long pieces = 0;  // Bernstein pieces examined (work counter)
-  const ExactPointOracle* oracle = nullptr;   // exact values at rational instants (local decisions); may be null
+  mutable long pieces = 0;                   // Bernstein pieces examined (work counter)
+  const ExactPointOracle* oracle = nullptr;  // exact values at rational instants (local decisions); may be null
   long max_local_splits = 4;  // exact split-point evaluations allowed per run (beyond: escalate as without the oracle)
   mutable long local_split_evaluations = 0;
   mutable std::map<std::string, long> local;  // decisions made locally with the oracle, by kind (see above)
@@ -137,8 +137,10 @@ struct CertifiedPolicy {
   template <class F>
   Rep build(const std::vector<Poly<T>>& g, F formula) const {
     Rep r;
-    if constexpr (std::is_same_v<T, Interval>) r = Rep(formula(bernstein_g(g)));  // Δ, P, D share g's conversion
-    else r = Rep(build_in_basis(Basis::bernstein, g, formula, T(0)));
+    if constexpr (std::is_same_v<T, Interval>)
+      r = Rep(formula(bernstein_g(g)));  // Δ, P, D share g's conversion
+    else
+      r = Rep(build_in_basis(Basis::bernstein, g, formula, T(0)));
     if (oracle)  // the formula is a stateless ring formula (kernel/basis_build.hpp): held by value
       r.exact = [formula](const std::vector<Poly<Rational>>& G) { return Poly<Rational>(formula(G)); };
     return r;
@@ -202,7 +204,8 @@ struct CertifiedPolicy {
       // earlier, on precision (an MPFI rung may decide it): a later failure
       // that looks like a multiple root is not taken for one.
       if (local_in_isolation && e.kind == Escalate::multiple_root)
-        throw Escalate(std::string(e.what()) + " (after local decisions; without them: precision)", Escalate::precision);
+        throw Escalate(std::string(e.what()) + " (after local decisions; without them: precision)",
+                       Escalate::precision);
       throw;
     }
     whole = nullptr;
@@ -288,7 +291,7 @@ struct CertifiedPolicy {
     }
     if (depth >= max_depth)
       throw Escalate("interval root isolation cannot separate roots near t = " + decimal_string(a, 12) +
-                     " (a multiple root, or roots closer than 2^-" + std::to_string(max_depth) + ")",
+                         " (a multiple root, or roots closer than 2^-" + std::to_string(max_depth) + ")",
                      Escalate::multiple_root);
     // Split at the middle, or near it if the value there is not certainly non-zero.
     static const char* const fracs[] = {"1/2", "7/16", "9/16", "3/8", "5/8"};
@@ -343,8 +346,10 @@ struct CertifiedPolicy {
       Rational m = (a + b) / 2;
       Sign sm = eccd::sign(bernstein_at(*whole, m));
       if (sm != Sign::positive && sm != Sign::negative) break;  // keep the bracket we have
-      if (sm == sa) a = m;
-      else b = m;
+      if (sm == sa)
+        a = m;
+      else
+        b = m;
     }
     out.push_back({a, b});
   }
@@ -371,7 +376,8 @@ struct CertifiedPolicy {
   mutable std::vector<Bern<T>> g_bern;
   const std::vector<Bern<T>>& bernstein_g(const std::vector<Poly<T>>& g) const {
     auto same = [](const Poly<T>& x, const Poly<T>& y) {
-      return x.c.size() == y.c.size() && (x.c.empty() || std::memcmp(x.c.data(), y.c.data(), x.c.size() * sizeof(T)) == 0);
+      return x.c.size() == y.c.size() &&
+             (x.c.empty() || std::memcmp(x.c.data(), y.c.data(), x.c.size() * sizeof(T)) == 0);
     };
     bool hit = g.size() == g_seen.size();
     for (std::size_t i = 0; hit && i < g.size(); ++i) hit = same(g[i], g_seen[i]);

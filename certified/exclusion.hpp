@@ -43,8 +43,8 @@ struct ExclusionResult {
 // T: MpfiInterval or Interval (number/interval.hpp, outward rounding); half: 1/2 in T (exact in both).
 template <class T, std::size_t N, class Excluded>
 ExclusionResult exclude_region(std::array<TriBern<T>, N> nets, int ax_u, int ax_t, const ExclusionRegion& region,
-                               const ExclusionRegion& keep, Excluded&& excluded, long max_boxes, int max_depth, int t_every,
-                               const T& half) {
+                               const ExclusionRegion& keep, Excluded&& excluded, long max_boxes, int max_depth,
+                               int t_every, const T& half) {
   using I = T;
   struct Ex {
     std::array<TriBern<I>, N> f;
@@ -57,8 +57,14 @@ ExclusionResult exclude_region(std::array<TriBern<T>, N> nets, int ax_u, int ax_
   while (!stack.empty()) {
     Ex b = std::move(stack.back());
     stack.pop_back();
-    if (++res.boxes > max_boxes) { res.status = ExclusionResult::too_many_boxes; return res; }
-    if (deadline_passed()) { res.status = ExclusionResult::deadline; return res; }
+    if (++res.boxes > max_boxes) {
+      res.status = ExclusionResult::too_many_boxes;
+      return res;
+    }
+    if (deadline_passed()) {
+      res.status = ExclusionResult::deadline;
+      return res;
+    }
     if (b.r.u0 >= keep.u0 && b.r.u1 <= keep.u1 && b.r.t0 >= keep.t0 && b.r.t1 <= keep.t1) continue;
     if (excluded(std::as_const(b.f), std::as_const(b.r))) continue;
     if (b.depth >= max_depth) {

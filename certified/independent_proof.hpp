@@ -129,27 +129,28 @@
 namespace eccd {
 
 struct IndependentProofOptions {
-  int bits = 160;                // MPFI precision of the enclosed net
+  int bits = 160;  // MPFI precision of the enclosed net
   IndependentOptions localise = [] {
     IndependentOptions o;
-    o.strip_depth = 16;          // strips down to 2^-16; Krawczyk gives the fine bracket
-    o.s_depth = 0;               // no bisection by point tests: it proves single values, not the ranges between them
+    o.strip_depth = 16;  // strips down to 2^-16; Krawczyk gives the fine bracket
+    o.s_depth = 0;       // no bisection by point tests: it proves single values, not the ranges between them
     o.max_tests = 1000000;
     return o;
   }();
-  double localise_work = 2e8;    // ... and at most this many coefficient operations (box tests times the net's size)
-  bool localise_in_mpfi = false;  // localisation in intervals of doubles (number/interval.hpp: also enclosures) or in MPFI
-  long max_boxes = 20000;        // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
+  double localise_work = 2e8;  // ... and at most this many coefficient operations (box tests times the net's size)
+  bool localise_in_mpfi =
+      false;               // localisation in intervals of doubles (number/interval.hpp: also enclosures) or in MPFI
+  long max_boxes = 20000;  // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
   int max_box_depth = 36;
   bool record = false;  // keep the proof (strip witness boxes, Krawczyk boxes) in the result: for the certificate
 };
 
 // What a proof of one projection consists of, for the certificate (certificate/write/independent_certificate.hpp).
 struct IndependentEndRecord {
-  mpq_class run_lo, run_hi;           // the run of unresolved strips holding the end
-  std::string system;                 // "fold", "t = 0", "t = 1" (the other parameter named by var)
+  mpq_class run_lo, run_hi;  // the run of unresolved strips holding the end
+  std::string system;        // "fold", "t = 0", "t = 1" (the other parameter named by var)
   std::vector<std::vector<mpq_class>> chain_lo, chain_hi;  // X = Y_0 (K(X) inside X), Y_{i+1} contains Y_i ∩ K(Y_i)
-  mpq_class lo, hi;                   // the bracket: [max(run_lo, Y_last.s_lo), min(run_hi, Y_last.s_hi)]
+  mpq_class lo, hi;  // the bracket: [max(run_lo, Y_last.s_lo), min(run_hi, Y_last.s_hi)]
 };
 struct IndependentProjectionRecord {
   std::vector<independent_subdivision::Piece> pieces;  // in order, proved ones with their witness boxes
@@ -158,7 +159,7 @@ struct IndependentProjectionRecord {
 
 struct IndependentProofResult {
   IndependentProjectionRecord s_record, t_record;  // filled (witness boxes) when IndependentProofOptions::record
-  Answer answer;  // independent = true; instants with proved brackets
+  Answer answer;                                   // independent = true; instants with proved brackets
   std::vector<std::string> undecided_reasons;
   std::vector<std::string> proofs;  // one line per end: how it was proved
   std::vector<std::pair<std::string, long>> counters;
@@ -243,10 +244,17 @@ class EndProver {
       double g = -1e300, ua = 0.5;
       for (int j = 1; j < NU; ++j) {
         const double u = double(j) / NU, v = nets_.eval_mid({0, 0, 0}, {u, sm, t});
-        if (v > g) { g = v; ua = u; }
+        if (v > g) {
+          g = v;
+          ua = u;
+        }
       }
-      if (k == 0 || k == NT) seeds.push_back({g, {ua, sm, t}});
-      else if (g < best_g) { best_g = g; best_x = {ua, sm, t}; }
+      if (k == 0 || k == NT)
+        seeds.push_back({g, {ua, sm, t}});
+      else if (g < best_g) {
+        best_g = g;
+        best_x = {ua, sm, t};
+      }
     }
     seeds.push_back({best_g, best_x});
     // F does not depend on the other parameter (that body does not move, kernel/trivariate_bernstein.hpp,
@@ -261,9 +269,18 @@ class EndProver {
       System sys;
       sys.eqs = {{0, 0, 0}, {1, 0, 0}};
       sys.vars = {0, 1};
-      if (free) { sys.fixed_t = mpq_class(0); sys.kind = "free"; }
-      else if (edge) { sys.fixed_t = mpq_class(x0[2] == 0.0 ? 0 : 1); sys.kind = var == "s" ? "t" : "s"; sys.kind += std::string(" = ") + (x0[2] == 0.0 ? "0" : "1"); }
-      else { sys.eqs.push_back({0, 0, 1}); sys.vars.push_back(2); sys.kind = "fold"; }
+      if (free) {
+        sys.fixed_t = mpq_class(0);
+        sys.kind = "free";
+      } else if (edge) {
+        sys.fixed_t = mpq_class(x0[2] == 0.0 ? 0 : 1);
+        sys.kind = var == "s" ? "t" : "s";
+        sys.kind += std::string(" = ") + (x0[2] == 0.0 ? "0" : "1");
+      } else {
+        sys.eqs.push_back({0, 0, 1});
+        sys.vars.push_back(2);
+        sys.kind = "fold";
+      }
       if (boxes - start_boxes > 3 * opt_.max_boxes) {
         best.why += "; stopped after " + std::to_string(boxes - start_boxes) + " exclusion boxes for this end";
         break;
@@ -294,9 +311,10 @@ class EndProver {
     const mpq_class s0 = exact_of(x[1]), u0 = exact_of(x[0]), t0 = exact_of(x[2]);
     const std::string other = var == "s" ? "t" : "s";
     r.why = "Krawczyk's test failed around the extreme point near " + var + " = " + decimal_string(s0, 12) + " (" +
-            (sys.kind == "fold" ? "a fold, " + other + " = " + decimal_string(t0, 8)
+            (sys.kind == "fold"   ? "a fold, " + other + " = " + decimal_string(t0, 8)
              : sys.kind == "free" ? "F does not depend on " + other
-                                  : "on " + sys.kind) + ")";
+                                  : "on " + sys.kind) +
+            ")";
     std::string last_fail;  // the last failed condition, said once
     // the (u, t) half-width of X: the fold's branch of F = F_u = 0 spreads ~sqrt(w) in t across the strip, and
     // Krawczyk's test needs X small: a ladder from wide to narrow
@@ -308,7 +326,10 @@ class EndProver {
       Box X;
       X.lo = {u0 - rho, std::min(lo, mpq_class(s0 - rho))};
       X.hi = {u0 + rho, std::max(hi, mpq_class(s0 + rho))};
-      if (!sys.fixed_t) { X.lo.push_back(t0 - rho); X.hi.push_back(t0 + rho); }
+      if (!sys.fixed_t) {
+        X.lo.push_back(t0 - rho);
+        X.hi.push_back(t0 + rho);
+      }
       Box K;
       ++krawczyk_tests;
       if (!krawczyk(nets_, sys, X, K)) continue;
@@ -326,7 +347,8 @@ class EndProver {
         region[1] = I(std::min(lo, X.lo[1]), std::max(hi, X.hi[1]), bits);
         region[2] = I(xt0, xt1, bits);
         const auto& q = quotients_[at0 ? 0 : 1];
-        const bool ft = one_sign(nets_.eval({0, 0, 1}, region)) || (q && one_sign((*q)(region[0], region[1], region[2])));
+        const bool ft =
+            one_sign(nets_.eval({0, 0, 1}, region)) || (q && one_sign((*q)(region[0], region[1], region[2])));
         if (!ft || !one_sign(nets_.eval({2, 0, 0}, region))) {
           last_fail = ": F_" + other + " or F_uu changes sign near that end of the path";
           continue;
@@ -342,7 +364,10 @@ class EndProver {
         }
       }
       std::string ex = exclude(lo, hi, xu0, xu1, xt0, xt1);
-      if (!ex.empty()) { last_fail = ": " + ex; continue; }
+      if (!ex.empty()) {
+        last_fail = ": " + ex;
+        continue;
+      }
       // tighten: X <- K(X) ∩ X keeps the unique zero
       Box Y = X;
       r.system = sys.kind == "free" || !sys.fixed_t ? sys.kind : sys.kind.substr(4);  // "fold", "free", "0", "1"
@@ -365,13 +390,17 @@ class EndProver {
       }
       r.lo = std::max(lo, Y.lo[1]);
       r.hi = std::min(hi, Y.hi[1]);
-      if (r.lo > r.hi) { r.why = "the proved extreme point lies outside the run (internal inconsistency)"; return r; }
+      if (r.lo > r.hi) {
+        r.why = "the proved extreme point lies outside the run (internal inconsistency)";
+        return r;
+      }
       r.proved = true;
-      r.how = var + " in [" + decimal_string(lo, 12) + ", " + decimal_string(hi, 12) + "]: one end, " +
-              (sys.kind == "fold"   ? "a fold F = F_u = F_" + other + " = 0 (Krawczyk, F_uu < 0)"
-               : sys.kind == "free" ? "F = F_u = 0 in (u, " + var + "), F not depending on " + other + " (Krawczyk)"
-                                    : "F = F_u = 0 on " + sys.kind + " (Krawczyk, F_" + other + " and F_uu of one sign)") +
-              ", the rest of the strip excluded in " + std::to_string(last_boxes_) + " boxes";
+      r.how =
+          var + " in [" + decimal_string(lo, 12) + ", " + decimal_string(hi, 12) + "]: one end, " +
+          (sys.kind == "fold"   ? "a fold F = F_u = F_" + other + " = 0 (Krawczyk, F_uu < 0)"
+           : sys.kind == "free" ? "F = F_u = 0 in (u, " + var + "), F not depending on " + other + " (Krawczyk)"
+                                : "F = F_u = 0 on " + sys.kind + " (Krawczyk, F_" + other + " and F_uu of one sign)") +
+          ", the rest of the strip excluded in " + std::to_string(last_boxes_) + " boxes";
       return r;
     }
     r.why += last_fail;
@@ -397,16 +426,16 @@ class EndProver {
       if (g[0].strict_sign() != 0 || g[1].strict_sign() != 0) return true;
       return sgn(r.t0) > 0 && r.t1 < 1 && g[2].strict_sign() != 0 && g[3].strict_sign() != 0;
     };
-    const ExclusionResult e = exclude_region(std::move(f), 0, 2, {0, 1, 0, 1}, {xu0, xu1, xt0, xt1}, excluded, opt_.max_boxes,
-                                             opt_.max_box_depth, 1, I(mpq_class(1, 2), bits));
+    const ExclusionResult e = exclude_region(std::move(f), 0, 2, {0, 1, 0, 1}, {xu0, xu1, xt0, xt1}, excluded,
+                                             opt_.max_boxes, opt_.max_box_depth, 1, I(mpq_class(1, 2), bits));
     boxes += e.boxes;
     last_boxes_ = e.boxes;
     if (e.status == ExclusionResult::too_many_boxes)
       return "the exclusion of other extreme points needed more than " + std::to_string(opt_.max_boxes) + " boxes";
     if (e.status == ExclusionResult::deadline) return deadline_reason();
     if (e.status == ExclusionResult::stuck)
-      return "another possible extreme point near u = " + decimal_string(e.u0, 8) + ", " + std::string("other parameter = ") +
-             decimal_string(e.t0, 8) + " could not be excluded";
+      return "another possible extreme point near u = " + decimal_string(e.u0, 8) + ", " +
+             std::string("other parameter = ") + decimal_string(e.t0, 8) + " could not be excluded";
     return "";
   }
 };
@@ -414,10 +443,10 @@ class EndProver {
 // One projection (axis 1 of F) with proved ends; `var` is "s" or "t". The
 // localisation runs on FL (the same exact net enclosed in L: Interval or MpfiInterval).
 template <class L>
-std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rational>& exact, const TriBern<I>& F, const TriBern<L>& FL,
-                                                           const IndependentProofOptions& opt,
-                                                           const char* var, IndependentProofResult& res, long& tests, long& boxes,
-                                                           long& kz) {
+std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rational>& exact, const TriBern<I>& F,
+                                                           const TriBern<L>& FL, const IndependentProofOptions& opt,
+                                                           const char* var, IndependentProofResult& res, long& tests,
+                                                           long& boxes, long& kz) {
   using independent_subdivision::Projector;
   Projector<L> proj(opt.localise, FL.c[0]);
   proj.record = opt.record;
@@ -438,13 +467,18 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
   EndProver prover(nets, opt, {edge_quotient(exact, 0, opt.bits), edge_quotient(exact, 1, opt.bits)});
   const std::string v = var;
   const std::string why_stop = proj.stop_reason.empty() ? "" : " (" + proj.stop_reason + ")";
-  auto range = [&](const mpq_class& a, const mpq_class& b) { return v + " in [" + decimal_string(a, 12) + ", " + decimal_string(b, 12) + "]"; };
+  auto range = [&](const mpq_class& a, const mpq_class& b) {
+    return v + " in [" + decimal_string(a, 12) + ", " + decimal_string(b, 12) + "]";
+  };
   auto undecided = [&](const mpq_class& a, const mpq_class& b, const std::string& why) {
     res.answer.undecided.push_back(independent_subdivision::located((a + b) / 2, (b - a) / 2));
     res.undecided_reasons.push_back(range(a, b) + ": " + why);
   };
   // resolved pieces with the instants of their ends
-  struct R { Strip status; Instant lo, hi; };
+  struct R {
+    Strip status;
+    Instant lo, hi;
+  };
   std::vector<R> out;
   auto exact_instant = [](const mpq_class& x) { return bracketed_instant(x, x, x); };
   Instant pending = exact_instant(mpq_class(0));
@@ -466,12 +500,17 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
       continue;
     }
     if (before == after || !has_before || !has_after) {
-      undecided(p.lo, p.hi, std::string(before == Strip::in ? "inside the meeting set on both sides: a touching gap or none"
-                                                              : "separate on both sides: a touch, a near miss or a meeting narrower than the strips") +
-                                " could not be told apart (a touch cannot be proved by enclosure)" + why_stop);
+      undecided(
+          p.lo, p.hi,
+          std::string(before == Strip::in
+                          ? "inside the meeting set on both sides: a touching gap or none"
+                          : "separate on both sides: a touch, a near miss or a meeting narrower than the strips") +
+              " could not be told apart (a touch cannot be proved by enclosure)" + why_stop);
       const Instant hi_end = exact_instant(p.hi);
-      if (!out.empty() && out.back().status == before) out.back().hi = hi_end;
-      else out.push_back({before, pending, hi_end});
+      if (!out.empty() && out.back().status == before)
+        out.back().hi = hi_end;
+      else
+        out.push_back({before, pending, hi_end});
       pending = hi_end;
       continue;
     }
@@ -480,11 +519,13 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
     if (e.proved) {
       end = bracketed_instant((e.lo + e.hi) / 2, e.lo, e.hi);
       res.proofs.push_back(e.how);
-      if (opt.record) rec.ends.push_back(IndependentEndRecord{p.lo, p.hi, e.system, e.chain_lo, e.chain_hi, e.lo, e.hi});
+      if (opt.record)
+        rec.ends.push_back(IndependentEndRecord{p.lo, p.hi, e.system, e.chain_lo, e.chain_hi, e.lo, e.hi});
     } else {
-      undecided(p.lo, p.hi, "an end of the " + v + "-intervals lies here (" + v + " = " + decimal_string(p.lo, 12) + " proved " +
-                                (before == Strip::in ? "in" : "out") + ", " + decimal_string(p.hi, 12) + " proved " +
-                                (after == Strip::in ? "in" : "out") + ") but it is not proved to be one: " + e.why);
+      undecided(p.lo, p.hi,
+                "an end of the " + v + "-intervals lies here (" + v + " = " + decimal_string(p.lo, 12) + " proved " +
+                    (before == Strip::in ? "in" : "out") + ", " + decimal_string(p.hi, 12) + " proved " +
+                    (after == Strip::in ? "in" : "out") + ") but it is not proved to be one: " + e.why);
       end = independent_subdivision::located((p.lo + p.hi) / 2, (p.hi - p.lo) / 2);
     }
     out.back().hi = end;
@@ -536,7 +577,8 @@ inline bool face_negative(const TriBern<Rational>& net, int i) {
 }  // namespace independent_proof_detail
 
 // The proved answer of an independent scene from F's exact net (kernel/trivariate_bernstein.hpp, T = Rational).
-inline IndependentProofResult prove_independent(const TriBern<Rational>& exact, const IndependentProofOptions& opt = {}) {
+inline IndependentProofResult prove_independent(const TriBern<Rational>& exact,
+                                                const IndependentProofOptions& opt = {}) {
   using namespace independent_proof_detail;
   const auto start = std::chrono::steady_clock::now();
   IndependentProofResult r;
@@ -554,31 +596,37 @@ inline IndependentProofResult prove_independent(const TriBern<Rational>& exact, 
   // F < 0 on the faces u = 0 and u = 1: exact signs of the faces' nets, subdivided exactly where the hull
   // of the whole face does not show it (a turning body: det A(s) < 0 with Bernstein coefficients of both signs)
   if (!face_negative(net, 0) || !face_negative(net, net.n[0]))
-        throw std::invalid_argument(
-            "independent motions: F(0, s, t) = det A(s) or F(1, s, t) = det B(t) is not proved < 0 on [0, 1]^2 (a degenerate "
-            "motion matrix?): the proof of the interval ends needs it");
+    throw std::invalid_argument(
+        "independent motions: F(0, s, t) = det A(s) or F(1, s, t) = det B(t) is not proved < 0 on [0, 1]^2 (a "
+        "degenerate "
+        "motion matrix?): the proof of the interval ends needs it");
   long tests = 0, boxes = 0, kz = 0;
   // the localisation's work bound in coefficient operations: a box test costs about the net's size
   IndependentProofOptions o2 = opt;
-  o2.localise.max_tests = std::max(20000L, std::min(opt.localise.max_tests, long(opt.localise_work / double(net.c.size()))));
+  o2.localise.max_tests =
+      std::max(20000L, std::min(opt.localise.max_tests, long(opt.localise_work / double(net.c.size()))));
   const IndependentProofOptions& opt_run = o2;
   if (opt.localise_in_mpfi) {
     r.answer.s_intervals = proved_projection(net, F, F, opt_run, "s", r, tests, boxes, kz);
-    r.answer.t_intervals = proved_projection(net.swap_st(), F.swap_st(), F.swap_st(), opt_run, "t", r, tests, boxes, kz);
+    r.answer.t_intervals =
+        proved_projection(net.swap_st(), F.swap_st(), F.swap_st(), opt_run, "t", r, tests, boxes, kz);
   } else {
     TriBern<Interval> FL;
     FL.n = net.n;
     for (const auto& q : net.c) FL.c.push_back(scalar_traits<Interval>::from_rational(q));
     r.answer.s_intervals = proved_projection(net, F, FL, opt_run, "s", r, tests, boxes, kz);
-    r.answer.t_intervals = proved_projection(net.swap_st(), F.swap_st(), FL.swap_st(), opt_run, "t", r, tests, boxes, kz);
+    r.answer.t_intervals =
+        proved_projection(net.swap_st(), F.swap_st(), FL.swap_st(), opt_run, "t", r, tests, boxes, kz);
   }
   r.answer.collides = !r.answer.s_intervals.empty() || !r.answer.t_intervals.empty();
   if (r.answer.s_intervals.empty() != r.answer.t_intervals.empty()) {
-    r.undecided_reasons.push_back("one projection found a meeting and the other none (a meeting set thinner than the strips)");
+    r.undecided_reasons.push_back(
+        "one projection found a meeting and the other none (a meeting set thinner than the strips)");
     r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
   }
   r.undecided_reasons = independent_subdivision::one_per_cause(r.undecided_reasons);
-  r.counters = {{"box_tests", tests}, {"exclusion_boxes", boxes}, {"krawczyk_tests", kz}, {"proved_ends", long(r.proofs.size())}};
+  r.counters = {
+      {"box_tests", tests}, {"exclusion_boxes", boxes}, {"krawczyk_tests", kz}, {"proved_ends", long(r.proofs.size())}};
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

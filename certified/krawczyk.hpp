@@ -53,7 +53,9 @@ inline mpq_class upper(const I& x) {
   mpfr_get_q(q.get_mpq_t(), &x.get()->right);
   return q;
 }
-inline bool finite(const I& x) { return !mpfi_nan_p(x.get()) && mpfr_number_p(&x.get()->left) && mpfr_number_p(&x.get()->right); }
+inline bool finite(const I& x) {
+  return !mpfi_nan_p(x.get()) && mpfr_number_p(&x.get()->left) && mpfr_number_p(&x.get()->right);
+}
 inline mpq_class exact_of(double d) { return mpq_class(d); }  // a double is an exact rational
 // The same for intervals of doubles (number/interval.hpp): its end points are doubles, exact rationals.
 inline mpq_class lower(const Interval& x) { return mpq_class(x.lo); }
@@ -61,14 +63,19 @@ inline mpq_class upper(const Interval& x) { return mpq_class(x.hi); }
 inline bool finite(const Interval& x) { return std::isfinite(x.lo) && std::isfinite(x.hi); }
 
 // Enclosures of rationals in an interval type (MPFI at `bits`, or doubles rounded outwards).
-template <class IT> struct Enclose;
-template <> struct Enclose<MpfiInterval> {
+template <class IT>
+struct Enclose;
+template <>
+struct Enclose<MpfiInterval> {
   static MpfiInterval point(const mpq_class& q, int bits) { return MpfiInterval(q, bits); }
   static MpfiInterval hull(const mpq_class& a, const mpq_class& b, int bits) { return MpfiInterval(a, b, bits); }
 };
-template <> struct Enclose<Interval> {
+template <>
+struct Enclose<Interval> {
   static Interval point(const mpq_class& q, int) { return interval_of(q); }
-  static Interval hull(const mpq_class& a, const mpq_class& b, int) { return Interval(interval_of(a).lo, interval_of(b).hi); }
+  static Interval hull(const mpq_class& a, const mpq_class& b, int) {
+    return Interval(interval_of(a).lo, interval_of(b).hi);
+  }
 };
 
 // The derivative of a tensor Bernstein net along `axis` (degree one lower there; a constant gives 0).
@@ -117,7 +124,9 @@ class NetsT {
   using I = IT;
 
  public:
-  NetsT(const TriBern<I>& F, int bits) : bits_(bits), zero_(Enclose<I>::point(mpq_class(0), bits)) { nets_[{0, 0, 0}] = F; }
+  NetsT(const TriBern<I>& F, int bits) : bits_(bits), zero_(Enclose<I>::point(mpq_class(0), bits)) {
+    nets_[{0, 0, 0}] = F;
+  }
   const TriBern<I>& get(std::array<int, 3> o) {
     auto it = nets_.find(o);
     if (it != nets_.end()) return it->second;
@@ -160,7 +169,10 @@ struct System {
   std::string kind;
 };
 
-inline std::array<int, 3> plus(std::array<int, 3> o, int ax) { ++o[ax]; return o; }
+inline std::array<int, 3> plus(std::array<int, 3> o, int ax) {
+  ++o[ax];
+  return o;
+}
 
 // Solve the m x m system a x = b in double by Gaussian elimination with partial pivoting; false if singular.
 inline bool solve_small(std::vector<std::vector<double>> a, std::vector<double>& b) {
@@ -256,7 +268,10 @@ bool krawczyk(NetsT<IT>& nets, const System& sys, const Box& X, Box& K) {
       for (std::size_t l = 0; l < m; ++l) a = a - Y[i][l] * J[l][j];
       k = k + a * (box[sys.vars[j]] - centre[sys.vars[j]]);
     }
-    if (!finite(k)) { K = Box{}; return false; }  // no enclosure: K left empty, never half filled
+    if (!finite(k)) {
+      K = Box{};
+      return false;
+    }  // no enclosure: K left empty, never half filled
     K.lo[i] = lower(k);
     K.hi[i] = upper(k);
     inside = inside && K.lo[i] > X.lo[i] && K.hi[i] < X.hi[i];

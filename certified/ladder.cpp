@@ -77,7 +77,8 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 // The Bézier rung (3D, certified/bezier_proof.hpp) within `budget_s` seconds:
 // a Solution if the proof decided [0, 1], else nothing with `reason` set.
-std::optional<Solution> try_bezier_rung(const PreparedPair<4>& p, bool first_contact, double budget_s, std::string& reason) {
+std::optional<Solution> try_bezier_rung(const PreparedPair<4>& p, bool first_contact, double budget_s,
+                                        std::string& reason) {
   try {
     ScopedDeadline rung_deadline(budget_s);
     if (deadline_passed()) throw BudgetExhausted("bezier rung: " + deadline_reason());
@@ -104,7 +105,8 @@ std::optional<Solution> try_bezier_rung(const PreparedPair<4>& p, bool first_con
       std::size_t j = i;
       while (j + 1 < r.pieces.size() && r.pieces[j + 1].kind == r.pieces[i].kind) ++j;
       const Rational mid = (r.pieces[i].lo + r.pieces[j].hi) / 2;
-      s.cells.push_back({bracketed_instant(mid, mid, mid), r.pieces[i].kind == BezierPiece::in ? Status::overlapping : Status::separate});
+      s.cells.push_back({bracketed_instant(mid, mid, mid),
+                         r.pieces[i].kind == BezierPiece::in ? Status::overlapping : Status::separate});
       i = j;
     }
     s.work = r.work;
@@ -128,13 +130,14 @@ std::optional<Solution> try_bezier_rung(const PreparedPair<4>& p, bool first_con
 template <int N>
 Solution run_exact(const PreparedPair<N>& p, Variant variant, bool first_contact) {
   ExactPolicy pol;
-  Solution s = solution_of(projection_pipeline(to_arithmetic<Rational, N>(p, Rational(1)), pol, variant, first_contact), N - 1);
+  Solution s =
+      solution_of(projection_pipeline(to_arithmetic<Rational, N>(p, Rational(1)), pol, variant, first_contact), N - 1);
   return named<N>(s, "exact", true);
 }
 
 template <int N>
-Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_rungs, Variant variant, bool first_contact,
-                       const LadderBudget& budget) {
+Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_rungs, Variant variant,
+                       bool first_contact, const LadderBudget& budget) {
   const auto start = Clock::now();
   std::vector<Escalation> escalations;
   auto finish = [&](Solution s, const std::string& rung) {
@@ -155,8 +158,8 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
   // Rung 1: intervals of doubles, within the fixed budget B_I.
   auto t = Clock::now();
   double local_s = 0;
-  if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, budget.interval_s, budget.local, reason,
-                                               multiple_root, out_of_budget, local_s))
+  if (auto s = try_certified_rung<Interval, N>(p, variant, first_contact, Interval(0), 48, budget.interval_s,
+                                               budget.local, reason, multiple_root, out_of_budget, local_s))
     return finish(*s, "interval");
   const double interval_s = seconds_since(t);
   escalations.push_back({"interval", reason, interval_s * 1e3, budget.interval_s * 1e3});
@@ -172,11 +175,15 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
     const double left_s = mpfi_total_s - mpfi_spent_s;
     // Not converging: straight to exact.
     std::string skip;
-    if (multiple_root) skip = "skipped: the rung below met a multiple root or an exact zero (no precision separates it)";
-    else if (not_converging) skip = "skipped: the rung below was not converging";
-    else if (out_of_budget) skip = "skipped: the rung below ran out of its budget";
-    else if (left_s <= 0) skip = "skipped: the MPFI budget (" + std::to_string(budget.mpfi_factor).substr(0, 4) +
-                                 " x the interval rung's time) is spent";
+    if (multiple_root)
+      skip = "skipped: the rung below met a multiple root or an exact zero (no precision separates it)";
+    else if (not_converging)
+      skip = "skipped: the rung below was not converging";
+    else if (out_of_budget)
+      skip = "skipped: the rung below ran out of its budget";
+    else if (left_s <= 0)
+      skip = "skipped: the MPFI budget (" + std::to_string(budget.mpfi_factor).substr(0, 4) +
+             " x the interval rung's time) is spent";
     if (!skip.empty()) {
       escalations.push_back({rung, skip, 0, 0});
       continue;
@@ -189,7 +196,8 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
     t = Clock::now();
     double mpfi_local_s = 0;
     if (auto s = try_certified_rung<MpfiInterval, N>(p, variant, first_contact, MpfiInterval(Rational(0), bits), depth,
-                                                     left_s, budget.local, reason, multiple_root, out_of_budget, mpfi_local_s))
+                                                     left_s, budget.local, reason, multiple_root, out_of_budget,
+                                                     mpfi_local_s))
       return finish(*s, rung);
     const double rung_s = seconds_since(t);
     mpfi_spent_s += rung_s;

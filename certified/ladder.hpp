@@ -71,7 +71,7 @@ struct LadderBudget {
   double bezier_s = 0.25;    // B_Z: the Bézier rung's budget in 3D (seconds; <= 0: none)
   double interval_s = 1.0;   // B_I: the interval rung's budget (seconds; <= 0: none)
   double mpfi_factor = 1.0;  // f: all MPFI rungs together at most f x the interval rung's time
-  bool local = true;         // local decisions with the exact oracle at rational instants (false: as before issue 18 point 2)
+  bool local = true;  // local decisions with the exact oracle at rational instants (false: as before issue 18 point 2)
 };
 
 template <int N>

@@ -61,7 +61,8 @@ std::vector<CsvRecord> csv_records(const std::string& text, const std::string& w
           fail(line, "text after the closing quote of a field (a quote inside a field must be doubled)");
       } else {
         while (i < n && text[i] != ',' && text[i] != '\n' && text[i] != '\r') {
-          if (text[i] == '"') fail(line, "a quote inside an unquoted field (the field must be quoted, its quotes doubled)");
+          if (text[i] == '"')
+            fail(line, "a quote inside an unquoted field (the field must be quoted, its quotes doubled)");
           field += text[i++];
         }
       }

@@ -17,20 +17,24 @@ namespace eccd {
 ExternalEngine parse_external(const std::string& spec) {
   const auto eq = spec.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size())
-    throw std::invalid_argument("--external " + spec + ": expected NAME=DIR (a name for the engine, then the folder of its answer files)");
+    throw std::invalid_argument("--external " + spec +
+                                ": expected NAME=DIR (a name for the engine, then the folder of its answer files)");
   ExternalEngine e{spec.substr(0, eq), spec.substr(eq + 1)};
   if (e.name.size() > 40) throw std::invalid_argument("--external " + spec + ": the name is longer than 40 characters");
   for (char c : e.name)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
-      throw std::invalid_argument("--external " + spec + ": the name '" + e.name +
-                                  "' may hold only letters, digits, '_', '-' and '.' (it becomes the pipeline label ext:NAME)");
+      throw std::invalid_argument(
+          "--external " + spec + ": the name '" + e.name +
+          "' may hold only letters, digits, '_', '-' and '.' (it becomes the pipeline label ext:NAME)");
   std::error_code ec;
-  if (!fs::is_directory(e.dir, ec)) throw std::invalid_argument("--external " + spec + ": " + e.dir + " is not a folder");
+  if (!fs::is_directory(e.dir, ec))
+    throw std::invalid_argument("--external " + spec + ": " + e.dir + " is not a folder");
   return e;
 }
 
 std::optional<ExternalAnswer> read_external_answer(const ExternalEngine& engine, const std::string& scene_name) {
-  if (scene_name.empty() || scene_name.find('/') != std::string::npos) return std::nullopt;  // no file can bear that name
+  if (scene_name.empty() || scene_name.find('/') != std::string::npos)
+    return std::nullopt;  // no file can bear that name
   const fs::path p = fs::path(engine.dir) / (scene_name + ".json");
   std::error_code ec;
   if (!fs::is_regular_file(p, ec)) return std::nullopt;
@@ -47,7 +51,8 @@ std::optional<ExternalAnswer> read_external_answer(const ExternalEngine& engine,
   // knows only the answer's keys). Malformed JSON goes to the reader as it is, for its message.
   std::string answer_text = text.str();
   auto j = nlohmann::json::parse(answer_text, nullptr, false);
-  if (j.is_object() && (j.contains("time_us") || j.contains("time_ms"))) {  // else the text goes as it is (duplicate keys and all)
+  if (j.is_object() &&
+      (j.contains("time_us") || j.contains("time_ms"))) {  // else the text goes as it is (duplicate keys and all)
     for (const char* key : {"time_us", "time_ms"}) {
       if (!j.contains(key)) continue;
       if (!j[key].is_number() || j[key].get<double>() < 0) {

@@ -49,7 +49,8 @@ FclPose pose_of(const Matrix<double, H>& q, const PolyMatrix<double, H>& n, doub
     std::snprintf(tb, sizeof tb, "%.17g", t);
     throw std::invalid_argument("FCL pose of object " + std::string(which) + " at t = " + tb + ": " + what);
   };
-  if (!S.allFinite() || !b.allFinite() || !std::isfinite(c)) fail("the quadric has a value that is not finite in double");
+  if (!S.allFinite() || !b.allFinite() || !std::isfinite(c))
+    fail("the quadric has a value that is not finite in double");
   Eigen::LDLT<Eigen::Matrix<double, d, d>> ldlt(S);
   Eigen::Matrix<double, d, 1> x0 = -ldlt.solve(b);
   const double k = x0.dot(S * x0) - c;
@@ -101,7 +102,8 @@ std::string inexpressible_motion(const Motion& motion, const char* which) {
   const std::string who = std::string("object ") + which + " (" + motion_type_name(motion) + "): ";
   for (int j = 0; j < d; ++j)
     if (!M[d][j].is_zero()) return who + "M(t) is not affine (its last row is not 0 ... 0 w)";
-  if (M[d][d].degree() > 0) return who + "the denominator w(t) of M(t) is not constant (degree " + std::to_string(M[d][d].degree()) + ")";
+  if (M[d][d].degree() > 0)
+    return who + "the denominator w(t) of M(t) is not constant (degree " + std::to_string(M[d][d].degree()) + ")";
   for (int i = 0; i < d; ++i)
     for (int j = 0; j < d; ++j)
       if (M[i][j].degree() > 0)
@@ -109,8 +111,8 @@ std::string inexpressible_motion(const Motion& motion, const char* which) {
                "] has degree " + std::to_string(M[i][j].degree()) + ")";
   for (int i = 0; i < d; ++i)
     if (M[i][d].degree() > 1)
-      return who + "its translation is not linear in t (M[" + std::to_string(i) + "][" + std::to_string(d) + "] has degree " +
-             std::to_string(M[i][d].degree()) + ")";
+      return who + "its translation is not linear in t (M[" + std::to_string(i) + "][" + std::to_string(d) +
+             "] has degree " + std::to_string(M[i][d].degree()) + ")";
   return "";
 }
 
@@ -120,9 +122,13 @@ struct Poser {
   MovingPair<double, H_2D> m2;
   MovingPair<double, H_3D> m3;
   explicit Poser(const Scene& s) : dim(s.dim) {
-    if (cycloidal(s)) throw std::invalid_argument("the FCL peer does not take cycloidal motions (eccd solves them in double, mpfr:BITS and certified)");
-    if (dim == 3) m3 = rounded_scene<H_3D>(s);
-    else m2 = rounded_scene<H_2D>(s);
+    if (cycloidal(s))
+      throw std::invalid_argument(
+          "the FCL peer does not take cycloidal motions (eccd solves them in double, mpfr:BITS and certified)");
+    if (dim == 3)
+      m3 = rounded_scene<H_3D>(s);
+    else
+      m2 = rounded_scene<H_2D>(s);
   }
   FclScenePose at(double t) const { return dim == 3 ? scene_pose<H_3D>(m3, t) : scene_pose<H_2D>(m2, t); }
 };
@@ -211,12 +217,12 @@ std::string fcl_tolerances(const FclOptions& options) {
   fcl::detail::GJKSolver_libccd<double> solver;
   fcl::ContinuousCollisionRequestd cr;
   std::ostringstream o;
-  o << "fcl::collide with " << (options.gjk_tolerance > 0 ? "a CollisionRequest (gjk_tolerance set)" : "the default CollisionRequest")
-    << ": GJK solver "
-    << (r.gjk_solver_type == fcl::GST_LIBCCD ? "libccd (GST_LIBCCD)" : "indep (GST_INDEP)") << ", gjk_tolerance "
-    << r.gjk_tolerance << ", at most " << solver.max_collision_iterations
-    << " GJK iterations; fcl::continuousCollide: CCDC_NAIVE with CCDM_TRANS, num_max_iterations N, toc_err " << cr.toc_err
-    << " (so at most " << std::ceil(1 / cr.toc_err) << " samples), each sample an fcl::collide as above";
+  o << "fcl::collide with "
+    << (options.gjk_tolerance > 0 ? "a CollisionRequest (gjk_tolerance set)" : "the default CollisionRequest")
+    << ": GJK solver " << (r.gjk_solver_type == fcl::GST_LIBCCD ? "libccd (GST_LIBCCD)" : "indep (GST_INDEP)")
+    << ", gjk_tolerance " << r.gjk_tolerance << ", at most " << solver.max_collision_iterations
+    << " GJK iterations; fcl::continuousCollide: CCDC_NAIVE with CCDM_TRANS, num_max_iterations N, toc_err "
+    << cr.toc_err << " (so at most " << std::ceil(1 / cr.toc_err) << " samples), each sample an fcl::collide as above";
   return o.str();
 #else
   return "";
@@ -274,7 +280,9 @@ Answer fcl_ccd(const Scene& s, int n, const FclOptions& o) {
   need_fcl();
   check_options(o);
   if (o.gjk_tolerance > 0)
-    throw std::invalid_argument("fcl/ccd: FCL's naive continuous collision makes its own default CollisionRequest, so a gjk_tolerance cannot reach it");
+    throw std::invalid_argument(
+        "fcl/ccd: FCL's naive continuous collision makes its own default CollisionRequest, so a gjk_tolerance cannot "
+        "reach it");
   // FCL's naive solver samples t = i/(N-1): N = 1 would divide by zero.
   if (n < 2) throw std::invalid_argument("fcl/ccd:N needs N >= 2");
   if (std::string why = fcl_ccd_inexpressible(s); !why.empty()) throw std::invalid_argument(why);
@@ -292,7 +300,8 @@ Answer fcl_ccd(const Scene& s, int n, const FclOptions& o) {
   request.ccd_motion_type = fcl::CCDM_TRANS;
   request.ccd_solver_type = fcl::CCDC_NAIVE;
   fcl::ContinuousCollisionResultd result;
-  fcl::continuousCollide(&ea, transform_of(p0.a), transform_of(a1), &eb, transform_of(p0.b), transform_of(b1), request, result);
+  fcl::continuousCollide(&ea, transform_of(p0.a), transform_of(a1), &eb, transform_of(p0.b), transform_of(b1), request,
+                         result);
   a.collides = result.is_collide;
   if (a.collides) a.first_contact = double_instant(result.time_of_contact);
 #endif

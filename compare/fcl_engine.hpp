@@ -97,9 +97,9 @@ struct FclUnavailable : std::runtime_error {
 
 // One body as FCL receives it.
 struct FclPose {
-  std::array<double, 3> radii{};                  // the semi-axes (2D: the third is the common h)
+  std::array<double, 3> radii{};                    // the semi-axes (2D: the third is the common h)
   std::array<std::array<double, 3>, 3> rotation{};  // columns: the body's axes in the world, det +1
-  std::array<double, 3> centre{};                 // 2D: z = 0
+  std::array<double, 3> centre{};                   // 2D: z = 0
 };
 struct FclScenePose {
   FclPose a, b;

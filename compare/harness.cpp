@@ -38,20 +38,21 @@ int motion_degree(const Motion& m) {
   if (std::holds_alternative<CycloidalMotion>(m)) return -1;
   auto M = motion_matrix<Rational, N>(m, [](const Rational& x) { return x; });
   int d = 0;
-  for (auto& row : M) for (auto& e : row) d = std::max(d, e.degree());
+  for (auto& row : M)
+    for (auto& e : row) d = std::max(d, e.degree());
   return d;
 }
 
 // Exact reference coefficients of one scene.
 struct Reference2 {
   PreparedPair2 p;
-  std::vector<Poly<Rational>> g;        // power form
-  std::vector<Bern<Rational>> g_bern;   // each g_k in Bernstein form of its degree
-  Bern<Rational> delta_bern;            // Δ in Bernstein form of its degree
+  std::vector<Poly<Rational>> g;       // power form
+  std::vector<Bern<Rational>> g_bern;  // each g_k in Bernstein form of its degree
+  Bern<Rational> delta_bern;           // Δ in Bernstein form of its degree
 };
 struct Reference3 {
   PreparedPair3 p;
-  std::vector<Poly<Rational>> g;        // power form (the projection pipeline's setup)
+  std::vector<Poly<Rational>> g;  // power form (the projection pipeline's setup)
   std::vector<Bern<Rational>> g_bern;
   BiBern<Rational> F;
 };
@@ -82,7 +83,8 @@ void coefficients_3d(const Reference3& ref, const PipelineSpec& ps, const T& lik
   bool power = ps.basis == "power";
   std::vector<Bern<T>> g = characteristic_bernstein<T, H_3D>(ref.p, power, like);
   row.coef_err = coefficient_error(g, ref.g_bern);
-  row.coef_err_common = row.coef_err;  // Bernstein coefficients (also for bezier-power: f set up in power form, held in Bernstein form)
+  row.coef_err_common =
+      row.coef_err;  // Bernstein coefficients (also for bezier-power: f set up in power form, held in Bernstein form)
   row.delta_err = coefficient_error(ellipsoid_function(g, like), ref.F);
 }
 
@@ -128,7 +130,9 @@ SceneInfo scene_info(const Scene& s, const std::string& source) {
 
 namespace {
 template <class O>
-constexpr bool has_input_member = requires(O o) { o.input; };
+constexpr bool has_input_member = requires(O o) {
+  o.input;
+};
 
 template <class O>
 void set_input(O& o, const std::string& mode) {
@@ -156,13 +160,15 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
   std::vector<PipelineSpec> v;
   std::vector<std::string> modes;
   for (const auto& m : o.inputs) {
-    if (m != "rounded" && m != "prepared") throw std::invalid_argument("input mode '" + m + "': expected rounded or prepared");
+    if (m != "rounded" && m != "prepared")
+      throw std::invalid_argument("input mode '" + m + "': expected rounded or prepared");
     if (!solver_has_input_modes() && m == "rounded") continue;  // this solver always starts from the prepared scene
     if (std::find(modes.begin(), modes.end(), m) == modes.end()) modes.push_back(m);
   }
   if (modes.empty()) modes.push_back("prepared");
   const bool both = modes.size() > 1;
-  auto add = [&](const std::string& arith, const std::string& basis, const std::string& method, const std::string& variant) {
+  auto add = [&](const std::string& arith, const std::string& basis, const std::string& method,
+                 const std::string& variant) {
     for (const auto& mode : modes) {
       if (arith == "exact" && mode != modes.front()) continue;
       PipelineSpec p;
@@ -173,9 +179,14 @@ std::vector<PipelineSpec> harness_pipelines(int dim, const HarnessOptions& o) {
       p.method = arith == "exact" ? (dim == 2 ? "cd-disc" : "projection") : method;
       p.label = arith == "exact" ? "exact" : arith + "/" + variant;
       p.input = arith == "exact" ? "prepared" : mode;
-      p.arith = p.opt.arith.kind == Arithmetic::Exact ? "exact" : p.opt.arith.kind == Arithmetic::Mpfr ? "mpfr" : "double";
+      p.arith = p.opt.arith.kind == Arithmetic::Exact  ? "exact"
+                : p.opt.arith.kind == Arithmetic::Mpfr ? "mpfr"
+                                                       : "double";
       p.bits = p.opt.arith.precision_bits();
-      if (arith == "exact") { v.push_back(p); continue; }
+      if (arith == "exact") {
+        v.push_back(p);
+        continue;
+      }
       apply_input_mode(p.opt, mode);
       for (PipelineSpec& f : in_faces(p, o.guards)) {
         if (both && mode == "prepared") f.label += "@prepared";
@@ -257,8 +268,10 @@ std::vector<std::pair<std::string, int>> fcl_skipped(const std::vector<std::stri
   for (const auto& line : csv_rows) {
     std::vector<std::string> f = csv_split(line, "results.csv row");
     if (f.size() < 9) continue;
-    if (f[8] == "exact") scenes.push_back(f[0]);
-    else if (f[8].rfind("fcl/ccd:", 0) == 0) have.emplace_back(f[8], f[0]);
+    if (f[8] == "exact")
+      scenes.push_back(f[0]);
+    else if (f[8].rfind("fcl/ccd:", 0) == 0)
+      have.emplace_back(f[8], f[0]);
   }
   std::sort(have.begin(), have.end());
   std::vector<std::pair<std::string, int>> out;
@@ -319,7 +332,9 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       BoundedRun c;
       in_process(c);
       nlohmann::json msg = {{"got", c.got ? solution_to_json(*c.got) : nlohmann::json(nullptr)},
-                            {"timed_out", c.timed_out}, {"error", c.error}, {"reason", c.reason}};
+                            {"timed_out", c.timed_out},
+                            {"error", c.error},
+                            {"reason", c.reason}};
       std::string text = msg.dump();
       const char* p = text.data();
       std::size_t left = text.size();
@@ -339,12 +354,16 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       r.cpu_s = thread_cpu_seconds() - cpu_start;
     } else {
       std::string text;
-      const double hard = 2 * budget_s + 1;       // processor seconds of the child
-      const double backstop = 10 * hard + 120;    // wall seconds: a child that neither works nor ends
+      const double hard = 2 * budget_s + 1;     // processor seconds of the child
+      const double backstop = 10 * hard + 120;  // wall seconds: a child that neither works nor ends
       bool killed = false;
       char buf[65536];
       while (true) {
-        if (child_cpu_seconds(pid) > hard || elapsed() > backstop) { kill(pid, SIGKILL); killed = true; break; }
+        if (child_cpu_seconds(pid) > hard || elapsed() > backstop) {
+          kill(pid, SIGKILL);
+          killed = true;
+          break;
+        }
         pollfd pf{fds[0], POLLIN, 0};
         int pr = poll(&pf, 1, 50);
         if (pr < 0 && errno == EINTR) continue;
@@ -357,12 +376,14 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       int status = 0;
       rusage ru{};
       while (wait4(pid, &status, 0, &ru) < 0 && errno == EINTR) {}
-      r.cpu_s = double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+      r.cpu_s =
+          double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
       if (killed) {
         r.timed_out = true;
         r.killed = true;
-        r.reason = "time budget: " + fmt(budget_s, "%g") + " s of processor time; the run did not stop and was killed after " +
-                   fmt(r.cpu_s, "%.3g") + " s of processor time (" + fmt(elapsed(), "%.3g") + " s)";
+        r.reason = "time budget: " + fmt(budget_s, "%g") +
+                   " s of processor time; the run did not stop and was killed after " + fmt(r.cpu_s, "%.3g") +
+                   " s of processor time (" + fmt(elapsed(), "%.3g") + " s)";
       } else {
         try {
           nlohmann::json msg = nlohmann::json::parse(text);
@@ -404,7 +425,8 @@ namespace {
 
 // The row of an external engine on one scene (compare/external_answers.hpp), if it answered the scene: its
 // answer against the exact one by the same metrics as every pipeline; an unreadable file is an error row.
-void rows_from_external(const ExternalEngine& e, const SceneInfo& info, const Answer& exact, std::vector<ResultRow>& rows) {
+void rows_from_external(const ExternalEngine& e, const SceneInfo& info, const Answer& exact,
+                        std::vector<ResultRow>& rows) {
   std::optional<ExternalAnswer> ext = read_external_answer(e, info.name);
   if (!ext) return;  // no answer file for this scene: no row (meta.json counts the missing ones)
   ResultRow row;
@@ -419,7 +441,8 @@ void rows_from_external(const ExternalEngine& e, const SceneInfo& info, const An
   if (!ext->answer) {
     row.error = row.reason = ext->error;
   } else if (row.m.outcome == "undecided") {
-    for (const auto& u : ext->answer->undecided) row.reason += (row.reason.empty() ? "" : "; ") + ("undecided near t = " + u.approx);
+    for (const auto& u : ext->answer->undecided)
+      row.reason += (row.reason.empty() ? "" : "; ") + ("undecided near t = " + u.approx);
   }
   rows.push_back(row);
 }
@@ -453,7 +476,8 @@ void fill_row_from_run(ResultRow& row, BoundedRun&& br, const Answer& truth) {
 }
 
 std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const HarnessOptions& opt) {
-  if (motion_family_scene(s)) return run_motion_family_scene(s, info, opt);  // cycloidal, independent (harness_families.hpp)
+  if (motion_family_scene(s))
+    return run_motion_family_scene(s, info, opt);  // cycloidal, independent (harness_families.hpp)
   std::vector<ResultRow> rows;
   auto pipes = harness_pipelines(s.dim, opt);
   Solution exact;
@@ -497,20 +521,26 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
       continue;
     }
     BoundedRun br;
-    if (ps.label == "exact") br.got = exact;
-    else br = run_bounded(s, ps.opt, opt.budget_s, opt.isolate);
+    if (ps.label == "exact")
+      br.got = exact;
+    else
+      br = run_bounded(s, ps.opt, opt.budget_s, opt.isolate);
     fill_row_from_run(row, std::move(br), exact.answer);
     // Coefficient errors are recomputed from the prepared scene, i.e. for the prepared input mode only (a rounded
     // row leaves them empty rather than show another mode's numbers).
     if ((ps.arith == "double" || ps.arith == "mpfr") && ps.input == "prepared") {
       Basis basis = ps.opt.basis;
       if (ps.opt.arith.kind == Arithmetic::Double) {
-        if (s.dim == 2) coefficients_2d<double>(r2, basis, 53, 1.0, row);
-        else coefficients_3d<double>(r3, ps, 1.0, row);
+        if (s.dim == 2)
+          coefficients_2d<double>(r2, basis, 53, 1.0, row);
+        else
+          coefficients_3d<double>(r3, ps, 1.0, row);
       } else {
         Mpfr like(mpq_class(1), ps.opt.arith.precision_bits());
-        if (s.dim == 2) coefficients_2d<Mpfr>(r2, basis, ps.opt.arith.precision_bits(), like, row);
-        else coefficients_3d<Mpfr>(r3, ps, like, row);
+        if (s.dim == 2)
+          coefficients_2d<Mpfr>(r2, basis, ps.opt.arith.precision_bits(), like, row);
+        else
+          coefficients_3d<Mpfr>(r3, ps, like, row);
       }
     }
     rows.push_back(row);
@@ -529,15 +559,39 @@ std::string results_csv_line(const ResultRow& r) {
   const SceneInfo& s = r.scene;
   auto opt = [](const std::optional<double>& x) { return x ? fmt(*x) : std::string(); };
   // In the order of results_csv_header(); csv_line quotes a field with a comma, quote or line break (RFC 4180).
-  return csv_line({s.name, s.source, std::to_string(s.dim), std::to_string(s.degree), s.family, s.motion,
+  return csv_line({s.name,
+                   s.source,
+                   std::to_string(s.dim),
+                   std::to_string(s.degree),
+                   s.family,
+                   s.motion,
                    s.family == "near-miss" || s.family == "overlap" ? separation_label(s.d_exponent) : "",
-                   s.seed ? std::to_string(*s.seed) : "", r.pipeline, r.arith, std::to_string(r.bits), r.basis, r.method,
-                   opt(r.coef_err), opt(r.delta_err), r.m.outcome, r.m.collides ? (*r.m.collides ? "1" : "0") : "",
-                   r.m.outcome == kNoGroundTruthOutcome ? "" : r.m.exact_collides ? "1" : "0", std::to_string(r.m.intervals),
+                   s.seed ? std::to_string(*s.seed) : "",
+                   r.pipeline,
+                   r.arith,
+                   std::to_string(r.bits),
+                   r.basis,
+                   r.method,
+                   opt(r.coef_err),
+                   opt(r.delta_err),
+                   r.m.outcome,
+                   r.m.collides ? (*r.m.collides ? "1" : "0") : "",
+                   r.m.outcome == kNoGroundTruthOutcome ? ""
+                   : r.m.exact_collides                 ? "1"
+                                                        : "0",
+                   std::to_string(r.m.intervals),
                    r.m.outcome == kNoGroundTruthOutcome ? "" : std::to_string(r.m.exact_intervals),
-                   std::to_string(r.m.missed_contacts), std::to_string(r.m.false_contacts), opt(r.m.first_contact_err),
-                   opt(r.m.endpoint_err), fmt(r.time_us, "%.1f"), r.m.structure_ok ? "1" : "0", r.input,
-                   s.digits ? std::to_string(s.digits) : "", csv_text(r.reason), opt(r.coef_err_common), r.guard});
+                   std::to_string(r.m.missed_contacts),
+                   std::to_string(r.m.false_contacts),
+                   opt(r.m.first_contact_err),
+                   opt(r.m.endpoint_err),
+                   fmt(r.time_us, "%.1f"),
+                   r.m.structure_ok ? "1" : "0",
+                   r.input,
+                   s.digits ? std::to_string(s.digits) : "",
+                   csv_text(r.reason),
+                   opt(r.coef_err_common),
+                   r.guard});
 }
 
 }  // namespace eccd

@@ -82,10 +82,10 @@ struct SceneInfo {
   std::string name;
   std::string source = "generated";  // generated | cases
   int dim = 2, degree = 0;
-  std::string family = "case";       // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe | case
-  std::string motion = "case";       // kinematic | euler | affine | translation | case
-  int d_exponent = 0;                // near-miss: separation 10^-e; overlap: depth 10^-e
-  int digits = 0;                    // decimal, keyframe: significant digits of the scene's numbers
+  std::string family = "case";  // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe | case
+  std::string motion = "case";  // kinematic | euler | affine | translation | case
+  int d_exponent = 0;           // near-miss: separation 10^-e; overlap: depth 10^-e
+  int digits = 0;               // decimal, keyframe: significant digits of the scene's numbers
   std::optional<std::uint64_t> seed;
 };
 
@@ -95,15 +95,16 @@ SceneInfo scene_info(const Scene& s, const std::string& source);
 int scene_degree(const Scene& s);
 
 struct PipelineSpec {
-  std::string label;  // "double/power", "mpfr:128/bezier", "exact", "double/power@prepared", "certified", "fcl/sample:100", ...
-  SolveOptions opt;   // eccd's pipelines (engine solve)
+  std::string
+      label;  // "double/power", "mpfr:128/bezier", "exact", "double/power@prepared", "certified", "fcl/sample:100", ...
+  SolveOptions opt;  // eccd's pipelines (engine solve)
   std::string basis, method;
   std::string input = "prepared";  // rounded | prepared (exact: prepared)
-  std::string guard;  // floating: none (as published) | bound (guarded); "" otherwise
-  std::string arith;  // the CSV's arith: exact | double | mpfr | certified | fcl
-  int bits = 0;       // the CSV's bits
+  std::string guard;               // floating: none (as published) | bound (guarded); "" otherwise
+  std::string arith;               // the CSV's arith: exact | double | mpfr | certified | fcl
+  int bits = 0;                    // the CSV's bits
   enum class Engine { solve, fcl_sample, fcl_ccd } engine = Engine::solve;
-  int fcl_n = 0;      // N of fcl/sample:N and fcl/ccd:N
+  int fcl_n = 0;  // N of fcl/sample:N and fcl/ccd:N
 };
 
 // Whether api/solve.hpp's SolveOptions has an input mode (`input`, an enum
@@ -131,26 +132,26 @@ void apply_input_mode(SolveOptions& opt, const std::string& mode);
 // back as JSON (io/solution_json.hpp, both ways).
 struct BoundedRun {
   std::optional<Solution> got;  // the run's solution (none: it failed, hit its budget or was killed)
-  bool timed_out = false;  // no answer used: the budget ran out (or the answer came after it)
-  bool killed = false;     // the run did not stop by itself within 2 x budget + 1 s and was killed
+  bool timed_out = false;       // no answer used: the budget ran out (or the answer came after it)
+  bool killed = false;          // the run did not stop by itself within 2 x budget + 1 s and was killed
   std::string error, reason;
   double wall_s = 0;
-  double cpu_s = 0;        // processor time of the run (the child's user + system time when isolated)
+  double cpu_s = 0;  // processor time of the run (the child's user + system time when isolated)
 };
 BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s, bool isolate);
 
 struct HarnessOptions {
   std::vector<int> mpfr_bits{53, 64, 80, 100, 128, 160, 192, 256, 384, 512};
-  int grid = 64;               // N of the 3D sampling:N and marching:N baselines
-  bool mpfr_power_3d = false;  // also run mpfr:B/bezier-power in 3D
+  int grid = 64;                                            // N of the 3D sampling:N and marching:N baselines
+  bool mpfr_power_3d = false;                               // also run mpfr:B/bezier-power in 3D
   std::vector<std::string> inputs = default_input_modes();  // input modes of the floating pipelines
-  std::vector<std::string> guards{"none", "bound"};  // faces of the floating pipelines (as published, guarded)
+  std::vector<std::string> guards{"none", "bound"};         // faces of the floating pipelines (as published, guarded)
   double budget_s = 10;         // time budget of one floating run (processor seconds, run_bounded; <= 0: none)
   double exact_budget_s = 600;  // time budget of the exact run (ground truth)
   bool isolate = true;          // each floating run in a child process killed at 2 x budget + 1 s (run_bounded)
-  std::vector<ExternalEngine> externals;  // report --external: a row "ext:NAME" per scene with an answer file
-  bool certified = true;        // the certified pipeline (under budget_s like a floating run)
-  bool fcl = fcl_availability().available;  // the fcl/ pipelines (ignored when FCL is not built in)
+  std::vector<ExternalEngine> externals;        // report --external: a row "ext:NAME" per scene with an answer file
+  bool certified = true;                        // the certified pipeline (under budget_s like a floating run)
+  bool fcl = fcl_availability().available;      // the fcl/ pipelines (ignored when FCL is not built in)
   std::vector<int> fcl_samples{10, 100, 1000};  // N of fcl/sample:N and fcl/ccd:N (each >= 2)
 };
 

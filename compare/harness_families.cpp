@@ -13,8 +13,8 @@ namespace {
 
 bool cycloidal_scene(const Scene& s) { return s.dim == 2 && !s.independent && has_cycloidal_motion(s); }
 
-PipelineSpec spec(const std::string& arith, const std::string& variant, const std::string& basis, const std::string& method,
-                  const std::string& input) {
+PipelineSpec spec(const std::string& arith, const std::string& variant, const std::string& basis,
+                  const std::string& method, const std::string& input) {
   PipelineSpec p;
   p.opt.arith = parse_arithmetic(arith);
   p.label = arith == "exact" || arith == "certified" ? arith : arith + "/" + variant;
@@ -52,7 +52,8 @@ std::vector<PipelineSpec> motion_family_pipelines(const Scene& s, const HarnessO
   if (cycloidal_scene(s)) {
     v.push_back(spec("certified", "", "none", "ladder", "prepared"));
     add(spec("double", "cycloidal", "pointwise", "cd-disc-cycloidal", "rounded"), true);
-    for (int b : o.mpfr_bits) add(spec("mpfr:" + std::to_string(b), "cycloidal", "pointwise", "cd-disc-cycloidal", "rounded"), true);
+    for (int b : o.mpfr_bits)
+      add(spec("mpfr:" + std::to_string(b), "cycloidal", "pointwise", "cd-disc-cycloidal", "rounded"), true);
   } else {
     v.push_back(spec("exact", "", "exact", "balls-exact", "prepared"));
     add(spec("double", "independent", "bernstein", "bezier-independent", "prepared"), false);
@@ -66,7 +67,8 @@ std::vector<ResultRow> run_motion_family_scene(const Scene& s, const SceneInfo& 
   SceneInfo info = info0;
   if (info.degree < 1) info.degree = 1;  // a cycloidal case: linear translation, transcendental rotation (as generated)
   const std::vector<PipelineSpec> pipes = motion_family_pipelines(s, opt);
-  // The ground truth: certified (cycloidal) or exact (independent); none when it is refused or leaves something undecided.
+  // The ground truth: certified (cycloidal) or exact (independent); none when it is refused or leaves something
+  // undecided.
   std::optional<Solution> truth;
   std::string no_truth;
   {
@@ -79,7 +81,8 @@ std::vector<ResultRow> run_motion_family_scene(const Scene& s, const SceneInfo& 
   }
   if (truth && !truth->answer.undecided.empty()) {
     no_truth = std::string(kNoGroundTruthReason) + "the " + pipes[0].label + " answer leaves " +
-               std::to_string(truth->answer.undecided.size()) + " instant(s) undecided (" + joined(truth->undecided_reasons) + ")";
+               std::to_string(truth->answer.undecided.size()) + " instant(s) undecided (" +
+               joined(truth->undecided_reasons) + ")";
   }
   std::vector<ResultRow> rows;
   for (std::size_t k = 0; k < pipes.size(); ++k) {
@@ -87,8 +90,10 @@ std::vector<ResultRow> run_motion_family_scene(const Scene& s, const SceneInfo& 
     ResultRow row = pipeline_row(info, ps);
     BoundedRun br;
     if (k == 0) {
-      if (truth) br.got = *truth;
-      else br.error = no_truth.substr(std::string(kNoGroundTruthReason).size());
+      if (truth)
+        br.got = *truth;
+      else
+        br.error = no_truth.substr(std::string(kNoGroundTruthReason).size());
     } else {
       // Independent runs stay in this process: their pipeline asks the deadline, and an undecided floating answer
       // (s-intervals found, t-intervals not yet) does not survive the child's JSON round trip (the answer reader
@@ -107,7 +112,8 @@ std::vector<ResultRow> run_motion_family_scene(const Scene& s, const SceneInfo& 
     } else {
       fill_row_from_run(row, std::move(br), truth->answer);
       if (k == 0 && ps.arith == "certified")
-        row.reason = "ground truth: the certified answer (cycloidal motion: no exact answer exists); compared with itself";
+        row.reason =
+            "ground truth: the certified answer (cycloidal motion: no exact answer exists); compared with itself";
     }
     rows.push_back(row);
   }

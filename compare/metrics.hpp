@@ -56,14 +56,23 @@ namespace eccd {
 // A non-finite value (an overflow: ±inf or NaN) has no exact value; GMP would
 // raise SIGFPE on it. It is recorded here and makes the error +inf.
 struct NonFinite {
-  static bool& seen() { thread_local bool s = false; return s; }
+  static bool& seen() {
+    thread_local bool s = false;
+    return s;
+  }
 };
 inline mpq_class exact_value(double x) {
-  if (!std::isfinite(x)) { NonFinite::seen() = true; return mpq_class(0); }
+  if (!std::isfinite(x)) {
+    NonFinite::seen() = true;
+    return mpq_class(0);
+  }
   return mpq_class(x);
 }
 inline mpq_class exact_value(const Mpfr& x) {
-  if (!mpfr_number_p(x.get())) { NonFinite::seen() = true; return mpq_class(0); }
+  if (!mpfr_number_p(x.get())) {
+    NonFinite::seen() = true;
+    return mpq_class(0);
+  }
   mpq_class q;
   mpfr_get_q(q.get_mpq_t(), x.get());
   return q;
@@ -109,8 +118,10 @@ double coefficient_error(const std::vector<Poly<T>>& approx, const std::vector<P
   for (std::size_t k = 0; k < exact.size(); ++k) {
     int n = std::max(exact[k].degree(), k < approx.size() ? approx[k].degree() : -1);
     append_coefficients(exact[k], e, n);
-    if (k < approx.size()) append_coefficients(approx[k], a, n);
-    else for (int i = 0; i <= n; ++i) a.push_back(0);
+    if (k < approx.size())
+      append_coefficients(approx[k], a, n);
+    else
+      for (int i = 0; i <= n; ++i) a.push_back(0);
   }
   return normwise_relative_error(a, e);
 }
@@ -153,8 +164,16 @@ template <class T>
 double coefficient_error(const BiBern<T>& approx, const BiBern<mpq_class>& exact) {
   std::vector<Bern<T>> a;
   std::vector<Bern<mpq_class>> e;
-  for (const auto& row : approx.b) { Bern<T> b; b.b = row; a.push_back(b); }
-  for (const auto& row : exact.b) { Bern<mpq_class> b; b.b = row; e.push_back(b); }
+  for (const auto& row : approx.b) {
+    Bern<T> b;
+    b.b = row;
+    a.push_back(b);
+  }
+  for (const auto& row : exact.b) {
+    Bern<mpq_class> b;
+    b.b = row;
+    e.push_back(b);
+  }
   return coefficient_error(a, e);
 }
 
@@ -176,7 +195,8 @@ struct AnswerMetrics {
 inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, double tol = 1e-6) {
   AnswerMetrics m;
   m.exact_collides = exact.collides;
-  m.exact_intervals = int(exact.independent ? exact.s_intervals.size() + exact.t_intervals.size() : exact.intervals.size());
+  m.exact_intervals =
+      int(exact.independent ? exact.s_intervals.size() + exact.t_intervals.size() : exact.intervals.size());
   if (!got) {
     m.outcome = "error";
     return m;
@@ -187,9 +207,12 @@ inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, doub
   m.collides = got->collides;
   m.intervals = d.intervals;
   m.exact_intervals = d.reference_intervals;  // independent motions: s- and t-intervals together (issue 20)
-  if (!got->undecided.empty()) m.outcome = "undecided";
-  else if (!d.collides_differs) m.outcome = "correct";
-  else m.outcome = got->collides ? "false_positive" : "false_negative";
+  if (!got->undecided.empty())
+    m.outcome = "undecided";
+  else if (!d.collides_differs)
+    m.outcome = "correct";
+  else
+    m.outcome = got->collides ? "false_positive" : "false_negative";
   m.missed_contacts = d.missed_contacts;
   m.false_contacts = d.false_contacts;
   m.first_contact_err = d.first_contact_error;
@@ -205,7 +228,8 @@ inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, doub
     }
   }
   m.structure_ok = m.outcome == "correct" && m.intervals == m.exact_intervals && d.split == 0 && d.merged == 0 &&
-                   d.endpoints_off == 0 && m.missed_contacts == 0 && m.false_contacts == 0 && d.contact_intervals_differ == 0;
+                   d.endpoints_off == 0 && m.missed_contacts == 0 && m.false_contacts == 0 &&
+                   d.contact_intervals_differ == 0;
   return m;
 }
 

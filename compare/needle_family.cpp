@@ -20,7 +20,8 @@ GeneratedScene needle_scene(const NeedleSpec& sp) {
   g.spec.motion = sp.dim == 3 ? "euler" : "matrix";
   if (sp.kind == "miss") {
     x = J::array({"-3." + std::string(std::size_t(sp.gap_exponent - 1), '0') + "1", "4", "-4"});
-    name = "needle-" + std::to_string(sp.dim) + "d-R1e" + std::to_string(sp.r_exponent) + "-miss1e-" + std::to_string(sp.gap_exponent);
+    name = "needle-" + std::to_string(sp.dim) + "d-R1e" + std::to_string(sp.r_exponent) + "-miss1e-" +
+           std::to_string(sp.gap_exponent);
     g.spec.d_exponent = sp.gap_exponent;
     g.t0 = Rational(1, 2);
   } else if (sp.kind == "touch-end") {
@@ -41,17 +42,25 @@ GeneratedScene needle_scene(const NeedleSpec& sp) {
   if (sp.dim == 3) {
     doc["a"] = {{"shape", {{"semi_axes", J::array({"1", "1", "1"})}}}, {"motion", {{"type", "static"}}}};
     doc["b"] = {{"shape", {{"semi_axes", J::array({"1", R, "1"})}}},
-                {"motion", {{"type", "euler"}, {"e", J::array({"1", "0", "0", "0"})}, {"translation", J::array({x, "0", "0"})},
-                            {"translation_denominator", "1"}}}};
+                {"motion",
+                 {{"type", "euler"},
+                  {"e", J::array({"1", "0", "0", "0"})},
+                  {"translation", J::array({x, "0", "0"})},
+                  {"translation_denominator", "1"}}}};
   } else {
     doc["a"] = {{"shape", {{"semi_axes", J::array({"1", "1"})}}}, {"motion", {{"type", "static"}}}};
     doc["b"] = {{"shape", {{"semi_axes", J::array({"1", R})}}},
-                {"motion", {{"type", "matrix"}, {"m", J::array({J::array({"1", "0", x}), J::array({"0", "1", "0"}), J::array({"0", "0", "1"})})}}}};
+                {"motion",
+                 {{"type", "matrix"},
+                  {"m", J::array({J::array({"1", "0", x}), J::array({"0", "1", "0"}), J::array({"0", "0", "1"})})}}}};
   }
-  doc["note"] = "Needle family (compare/needle_family.hpp): a static unit " + std::string(sp.dim == 3 ? "sphere" : "circle") +
-                " and a needle of semi-axes (1, " + R + (sp.dim == 3 ? ", 1)" : ")") + " whose centre moves along x: " +
-                (sp.kind == "miss" ? "closest at t = 1/2 with a gap of 1e-" + std::to_string(sp.gap_exponent) + ", never touching."
-                 : sp.kind == "touch-end" ? "one external touch at t = 1." : "one tangential touch at t = 1/2.");
+  doc["note"] = "Needle family (compare/needle_family.hpp): a static unit " +
+                std::string(sp.dim == 3 ? "sphere" : "circle") + " and a needle of semi-axes (1, " + R +
+                (sp.dim == 3 ? ", 1)" : ")") + " whose centre moves along x: " +
+                (sp.kind == "miss"
+                     ? "closest at t = 1/2 with a gap of 1e-" + std::to_string(sp.gap_exponent) + ", never touching."
+                 : sp.kind == "touch-end" ? "one external touch at t = 1."
+                                          : "one tangential touch at t = 1/2.");
   g.name = name;
   g.doc = doc;
   return g;

@@ -29,9 +29,9 @@ namespace eccd {
 
 struct NeedleSpec {
   int dim = 3;
-  int r_exponent = 20;       // R = 10^r_exponent (0 .. 300)
+  int r_exponent = 20;        // R = 10^r_exponent (0 .. 300)
   std::string kind = "miss";  // miss | touch-end | touch-mid
-  int gap_exponent = 3;      // miss: g = 10^-gap_exponent (>= 1)
+  int gap_exponent = 3;       // miss: g = 10^-gap_exponent (>= 1)
 };
 
 // The scene (GeneratedScene::spec.family is "needle"; t0 the touch or closest instant).

@@ -28,7 +28,10 @@ std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
 }
 std::uint64_t hash_string(const std::string& s) {
   std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : s) { h ^= c; h *= 1099511628211ULL; }
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
   return h;
 }
 
@@ -96,13 +99,17 @@ struct Tangency {
 Tangency shape_with_normal(Rng& r, const Vec& n) {
   int dim = int(n.size());
   int j = 0;
-  for (int i = 1; i < dim; ++i) if (abs(n[i]) > abs(n[j])) j = i;
+  for (int i = 1; i < dim; ++i)
+    if (abs(n[i]) > abs(n[j])) j = i;
   while (true) {
     Tangency t;
     t.alpha.assign(dim, Rational(0));
     Rational rest = 0;
     for (int i = 0; i < dim; ++i)
-      if (i != j) { t.alpha[i] = r.frac(2, 16, 4); rest += t.alpha[i] * n[i] * n[i]; }
+      if (i != j) {
+        t.alpha[i] = r.frac(2, 16, 4);
+        rest += t.alpha[i] * n[i] * n[i];
+      }
     Rational nj2 = n[j] * n[j];
     Rational want = rest + nj2 * r.frac(3, 10, 4);
     double target = std::sqrt(want.get_d());  // picks r only
@@ -111,7 +118,10 @@ Tangency shape_with_normal(Rng& r, const Vec& n) {
     t.alpha[j] = (rad * rad - rest) / nj2;
     if (t.alpha[j] < Rational(1, 4) || t.alpha[j] > 6) continue;
     Rational check = 0;
-    for (int i = 0; i < dim; ++i) { t.point.push_back(t.alpha[i] * n[i] / rad); check += t.point[i] * t.point[i] / t.alpha[i]; }
+    for (int i = 0; i < dim; ++i) {
+      t.point.push_back(t.alpha[i] * n[i] / rad);
+      check += t.point[i] * t.point[i] / t.alpha[i];
+    }
     if (check != 1) throw std::logic_error("generator: tangency point not on the ellipse");
     return t;
   }
@@ -201,14 +211,17 @@ HMat to_hmat(const Motion& m) {
 }
 int hdegree(const HMat& h) {
   int d = 0;
-  for (auto& row : h) for (auto& e : row) d = std::max(d, e.degree());
+  for (auto& row : h)
+    for (auto& e : row) d = std::max(d, e.degree());
   return d;
 }
 
 // ---- motions with a prescribed centre path ---------------------------------
 
 // Bernstein control points of a centre path of degree p inside a box.
-struct Box { Vec lo, hi; };
+struct Box {
+  Vec lo, hi;
+};
 std::vector<Vec> control_points(Rng& r, int p, const Box& box) {
   std::vector<Vec> c(p + 1);
   for (auto& pt : c)
@@ -269,7 +282,8 @@ Motion affine_motion(Rng& r, int deg, const std::vector<RPoly>& centre) {
     }
     mm.m[3][3] = constant(1);
     PolyMatrix<Rational, 3> L{};
-    for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) L[i][j] = mm.m[i][j];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) L[i][j] = mm.m[i][j];
     if (badly_scaled(det<Rational, 3>(L))) continue;
     return mm;
   }
@@ -344,17 +358,15 @@ Vec random_axes(Rng& r, int dim) {
   return a;
 }
 
-int motion_degree(int dim, const Motion& m) {
-  return dim == 2 ? hdegree(to_hmat<3>(m)) : hdegree(to_hmat<4>(m));
-}
+int motion_degree(int dim, const Motion& m) { return dim == 2 ? hdegree(to_hmat<3>(m)) : hdegree(to_hmat<4>(m)); }
 
 struct Built {
   Vec alpha_a, alpha_b;
   Motion ma, mb;
   std::optional<Rational> t0;
-  Vec axes_a, axes_b;  // realistic families: semi-axes (decimals) instead of alpha
+  Vec axes_a, axes_b;                                    // realistic families: semi-axes (decimals) instead of alpha
   std::optional<nlohmann::ordered_json> json_a, json_b;  // keyframe: the motion as written (Bernstein key values)
-  std::string base;     // decimal: the family it was rounded from
+  std::string base;                                      // decimal: the family it was rounded from
 };
 
 // colliding / free: independent motions with controlled centre paths.
@@ -371,8 +383,10 @@ Built build_random(Rng& r, const GeneratorSpec& s) {
     // bounding radius <= 2 (squared semi-axes <= 4), times 1.9 for affine.
     Rational R = s.motion == "affine" ? Rational(4) : Rational(2);
     Rational gap = r.frac(1, 10, 10);
-    box_a.hi[0] = -(R + gap); box_a.lo[0] = box_a.hi[0] - 6;
-    box_b.lo[0] = R + gap;    box_b.hi[0] = box_b.lo[0] + 6;
+    box_a.hi[0] = -(R + gap);
+    box_a.lo[0] = box_a.hi[0] - 6;
+    box_b.lo[0] = R + gap;
+    box_b.hi[0] = box_b.lo[0] + 6;
   }
   auto ca = control_points(r, pa, box_a), cb = control_points(r, pb, box_b);
   if (s.family == "colliding") {
@@ -407,7 +421,8 @@ Built build_touch(Rng& r, const GeneratorSpec& s) {
     delta = Rational(mpz_class(1), ten);
   }
   Vec n = random_unit(r, dim), m;
-  do m = random_unit(r, dim); while (dot(m, n) == -1);
+  do m = random_unit(r, dim);
+  while (dot(m, n) == -1);
   Tangency ta = shape_with_normal(r, n), tb = shape_with_normal(r, m);
   b.alpha_a = ta.alpha;
   b.alpha_b = tb.alpha;
@@ -443,7 +458,10 @@ Built build_touch(Rng& r, const GeneratorSpec& s) {
       HMat tw(4, std::vector<RPoly>(4));
       for (int i = 0; i < 3; ++i) {
         RPoly acc = E * constant(p[i]);
-        for (int j = 0; j < 3; ++j) { tw[i][j] = Rq[i][j]; acc -= Rq[i][j] * constant(p[j]); }
+        for (int j = 0; j < 3; ++j) {
+          tw[i][j] = Rq[i][j];
+          acc -= Rq[i][j] * constant(p[j]);
+        }
         tw[i][3] = acc;
       }
       tw[3][3] = E;
@@ -558,7 +576,10 @@ Vec random_orientation(Rng& r, int dim, int digits) {
   while (true) {
     std::vector<double> q(n);
     double len = 0;
-    for (auto& x : q) { x = double(r.next() >> 11) / double(1ULL << 52) - 1.0; len += x * x; }
+    for (auto& x : q) {
+      x = double(r.next() >> 11) / double(1ULL << 52) - 1.0;
+      len += x * x;
+    }
     len = std::sqrt(len);
     if (len < 0.2 || len > 1.0) continue;
     Vec out;
@@ -567,7 +588,7 @@ Vec random_orientation(Rng& r, int dim, int digits) {
   }
 }
 Keyframed keyframed_body(Rng& r, int dim, int degree, int digits, const Vec& box_lo, const Vec& box_hi) {
-  const int joints = degree / 2;          // 2 -> 1, 3 -> 1, 4 -> 2, 5 -> 2, 6 -> 3
+  const int joints = degree / 2;  // 2 -> 1, 3 -> 1, 4 -> 2, 5 -> 2, 6 -> 3
   const bool moving_root = degree % 2 == 1;
   Vec c0, c1;
   for (int i = 0; i < dim; ++i) {
@@ -646,7 +667,8 @@ Built build_linear_overlap(Rng& r, const GeneratorSpec& s) {
   b.t0 = t0;
   Rational delta = s.family == "overlap" ? pow10(-s.d_exponent) : Rational(0);
   Vec n = random_unit(r, dim), m;
-  do m = random_unit(r, dim); while (dot(m, n) == -1);
+  do m = random_unit(r, dim);
+  while (dot(m, n) == -1);
   Tangency ta = shape_with_normal(r, n), tb = shape_with_normal(r, m);
   b.alpha_a = ta.alpha;
   b.alpha_b = tb.alpha;
@@ -660,7 +682,10 @@ Built build_linear_overlap(Rng& r, const GeneratorSpec& s) {
   Vec ga = random_unit(r, dim), gb = random_unit(r, dim);
   Mat RG = dot(ga, gb) == -1 ? identity(dim) : rotation_taking(r, ga, gb);
   Vec g0, g1;
-  for (int i = 0; i < dim; ++i) { g0.push_back(r.frac(-24, 24, 8)); g1.push_back(r.frac(-24, 24, 8)); }
+  for (int i = 0; i < dim; ++i) {
+    g0.push_back(r.frac(-24, 24, 8));
+    g1.push_back(r.frac(-24, 24, 8));
+  }
   auto affine = [&](const Mat& L, const std::vector<RPoly>& tr) {
     MatrixMotion mm;
     mm.m.assign(dim + 1, std::vector<RPoly>(dim + 1));
@@ -713,7 +738,7 @@ Rational round_significant(const Rational& x, int digits) {
   while (pow10(e + 1) <= a) ++e;
   Rational unit = pow10(e - digits + 1);
   Rational q = a / unit;
-  mpz_class n = q.get_num() / q.get_den();  // floor
+  mpz_class n = q.get_num() / q.get_den();        // floor
   if (Rational(n) + Rational(1, 2) <= q) n += 1;  // half away from zero
   Rational out = Rational(n) * unit;
   out.canonicalize();
@@ -725,8 +750,14 @@ std::string exact_decimal(const Rational& x0) {
   x.canonicalize();
   mpz_class den = x.get_den();
   int twos = 0, fives = 0;
-  while (den % 2 == 0) { den /= 2; ++twos; }
-  while (den % 5 == 0) { den /= 5; ++fives; }
+  while (den % 2 == 0) {
+    den /= 2;
+    ++twos;
+  }
+  while (den % 5 == 0) {
+    den /= 5;
+    ++fives;
+  }
   if (den != 1) return x.get_str();
   int k = std::max(twos, fives);
   mpz_class n = x.get_num() * mpz_class(pow10(k).get_num()) / x.get_den();
@@ -748,7 +779,7 @@ std::uint64_t scene_seed(std::uint64_t run_seed, const GeneratorSpec& c, int ind
   h = mix(h, hash_string(c.motion));
   h = mix(h, std::uint64_t(c.d_exponent));
   if (c.digits) h = mix(h, std::uint64_t(c.digits) + 0x100);  // only the realistic families: old seeds stay
-  return mix(h, std::uint64_t(index)) >> 11;  // 53 bits: exact in JSON and in a double
+  return mix(h, std::uint64_t(index)) >> 11;                  // 53 bits: exact in JSON and in a double
 }
 
 GeneratedScene generate_scene(const GeneratorSpec& spec) {
@@ -783,10 +814,14 @@ GeneratedScene generate_scene(const GeneratorSpec& spec) {
     Built b;
     g_decimal_output = realistic;  // keyframe motions are written while they are built
     try {
-      if (linear) b = build_linear_overlap(r, spec);
-      else if (spec.family == "decimal") b = build_decimal(r, spec);
-      else if (spec.family == "keyframe") b = build_keyframe(r, spec);
-      else b = touchy ? build_touch(r, spec) : build_random(r, spec);
+      if (linear)
+        b = build_linear_overlap(r, spec);
+      else if (spec.family == "decimal")
+        b = build_decimal(r, spec);
+      else if (spec.family == "keyframe")
+        b = build_keyframe(r, spec);
+      else
+        b = touchy ? build_touch(r, spec) : build_random(r, spec);
     } catch (const std::domain_error&) {
       g_decimal_output = false;
       continue;
@@ -815,11 +850,14 @@ GeneratedScene generate_scene(const GeneratorSpec& spec) {
     if (spec.family == "near-miss") note << " Minimum separation d at t0, never colliding (constructed).";
     if (spec.family == "colliding") note << " The centres coincide at one instant (constructed).";
     if (spec.family == "free") note << " The plane x = 0 separates the solids throughout (constructed).";
-    if (spec.family == "overlap") note << " Linear translations; at t0 B is pushed depth into A along the common normal (constructed).";
+    if (spec.family == "overlap")
+      note << " Linear translations; at t0 B is pushed depth into A along the common normal (constructed).";
     if (spec.family == "graze") note << " Linear translations; the solids touch at t0 only (constructed).";
-    if (spec.family == "decimal") note << " A " << b.base << " scene with every number rounded to that many significant digits.";
+    if (spec.family == "decimal")
+      note << " A " << b.base << " scene with every number rounded to that many significant digits.";
     if (spec.family == "keyframe")
-      note << " Keyframed rigid motions (animation-format.md: centres linear, orientations by a linear quaternion curve), "
+      note << " Keyframed rigid motions (animation-format.md: centres linear, orientations by a linear quaternion "
+              "curve), "
               "key values with that many significant digits.";
     auto& d = g.doc;
     d = nlohmann::ordered_json();
@@ -848,7 +886,9 @@ GeneratedScene generate_scene(const GeneratorSpec& spec) {
 std::vector<GeneratorSpec> plan_scenes(const GeneratePlan& plan) {
   std::vector<GeneratorSpec> out;
   auto emit = [&](int dim, int deg, const std::string& fam, const std::string& mot) {
-    std::vector<int> exps = fam == "near-miss" ? plan.d_exponents : fam == "overlap" ? plan.depth_exponents : std::vector<int>{0};
+    std::vector<int> exps = fam == "near-miss" ? plan.d_exponents
+                            : fam == "overlap" ? plan.depth_exponents
+                                               : std::vector<int>{0};
     std::vector<int> digs = realistic_family(fam) ? plan.digits : std::vector<int>{0};
     for (int e : exps)
       for (int dg : digs)
@@ -866,13 +906,15 @@ std::vector<GeneratorSpec> plan_scenes(const GeneratePlan& plan) {
   };
   for (int dim : plan.dims) {
     for (const auto& fam : plan.families)  // cycloidal (2D), independent (2D, 3D): degree 1, once per dimension
-      for (int d : motion_family_dims(fam)) if (d == dim) emit(dim, 1, fam, motion_family_motion(fam));
+      for (int d : motion_family_dims(fam))
+        if (d == dim) emit(dim, 1, fam, motion_family_motion(fam));
     for (int deg : plan.degrees)
       for (const auto& fam : plan.families) {
         if (linear_family(fam) || motion_family(fam)) continue;
         if (fam == "keyframe" && (deg < 2 || deg > 6)) continue;
         for (const auto& mot : motions_for(dim)) {
-          if (!plan.motions.empty() && std::find(plan.motions.begin(), plan.motions.end(), mot) == plan.motions.end()) continue;
+          if (!plan.motions.empty() && std::find(plan.motions.begin(), plan.motions.end(), mot) == plan.motions.end())
+            continue;
           if (!family_applies(fam, mot)) continue;
           emit(dim, deg, fam, mot);
         }
@@ -895,13 +937,20 @@ std::optional<GeneratorSpec> spec_from_note(const std::string& note) {
     if (eq == std::string::npos) continue;
     std::string k = tok.substr(0, eq), v = tok.substr(eq + 1);
     try {
-      if (k == "family") s.family = v, any = true;
-      else if (k == "dim") s.dim = std::stoi(v);
-      else if (k == "degree") s.degree = std::stoi(v);
-      else if (k == "motion") s.motion = v;
-      else if ((k == "d" || k == "depth") && v.rfind("1e-", 0) == 0) s.d_exponent = std::stoi(v.substr(3));
-      else if (k == "digits") s.digits = std::stoi(v);
-      else if (k == "seed") s.seed = std::stoull(v);
+      if (k == "family")
+        s.family = v, any = true;
+      else if (k == "dim")
+        s.dim = std::stoi(v);
+      else if (k == "degree")
+        s.degree = std::stoi(v);
+      else if (k == "motion")
+        s.motion = v;
+      else if ((k == "d" || k == "depth") && v.rfind("1e-", 0) == 0)
+        s.d_exponent = std::stoi(v.substr(3));
+      else if (k == "digits")
+        s.digits = std::stoi(v);
+      else if (k == "seed")
+        s.seed = std::stoull(v);
     } catch (const std::exception&) {
       return std::nullopt;
     }

@@ -98,7 +98,8 @@ namespace eccd {
 struct GeneratorSpec {
   int dim = 2;
   int degree = 2;                    // motion degree, 1..8 (the report uses 2..6)
-  std::string family = "colliding";  // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe | cycloidal | independent
+  std::string family = "colliding";  // colliding | free | touch | near-miss | overlap | graze | decimal | keyframe |
+                                     // cycloidal | independent
   std::string motion = "kinematic";  // 2D: kinematic; 3D: euler | affine; overlap and graze: translation
   int d_exponent = 0;                // near-miss: separation d = 10^-d_exponent (>= 1); overlap: depth 10^-d_exponent
   int digits = 0;                    // decimal, keyframe: significant digits of every number (1..30)
@@ -138,7 +139,8 @@ bool realistic_family(const std::string& family);
 struct GeneratePlan {
   std::vector<int> dims{2, 3};
   std::vector<int> degrees{2, 3, 4, 5, 6};
-  std::vector<std::string> families{"colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe"};
+  std::vector<std::string> families{"colliding", "free",  "touch",   "near-miss",
+                                    "overlap",   "graze", "decimal", "keyframe"};
   std::vector<std::string> motions;  // empty = every motion of the dimension
   std::vector<int> d_exponents{2, 4, 6, 8, 10, 12, 14, 16};
   std::vector<int> depth_exponents{3, 5, 7, 9};  // overlap depths 10^-e

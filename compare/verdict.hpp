@@ -30,8 +30,8 @@ struct Verdict {
   std::string pipeline;
   std::string guard;  // the face of the floating run: "none" (as published) | "bound" (guarded)
   bool agrees = false;
-  std::string error;                      // the pipeline failed (exception message)
-  std::vector<std::string> differences;   // empty iff agrees (and no error)
+  std::string error;                     // the pipeline failed (exception message)
+  std::vector<std::string> differences;  // empty iff agrees (and no error)
   std::optional<double> max_endpoint_error;
   double time_ms = 0;
   // Counters for tables (eccd regress --floating).
@@ -62,7 +62,8 @@ struct Verdict {
 
 // got: a pipeline's answer; certified: the certified answer; time_ms: the
 // pipeline's time. The comparison is api/answer_difference.hpp's.
-inline Verdict judge(const std::string& pipeline, const Answer& got, const Answer& certified, double tol, double time_ms = 0) {
+inline Verdict judge(const std::string& pipeline, const Answer& got, const Answer& certified, double tol,
+                     double time_ms = 0) {
   Verdict v;
   v.pipeline = pipeline;
   v.time_ms = time_ms;

@@ -81,6 +81,7 @@ class CgalErrBuf : public std::streambuf {
     static thread_local std::string t;
     return t;
   }
+
  protected:
   int overflow(int ch) override {
     if (ch != EOF) put(char(ch));
@@ -90,12 +91,14 @@ class CgalErrBuf : public std::streambuf {
     for (std::streamsize i = 0; i < n; ++i) put(s[i]);
     return n;
   }
+
  private:
   void put(char c) {
     std::string& t = text();
     if (t.size() < 4096) t += c;
     if (t.find("primes in the array exhausted") != std::string::npos)
-      throw BudgetExhausted("exact root isolation: the coefficients are too large for CGAL's modular gcd (it ran out of primes)");
+      throw BudgetExhausted(
+          "exact root isolation: the coefficients are too large for CGAL's modular gcd (it ran out of primes)");
   }
 };
 
@@ -124,8 +127,9 @@ class CgalGuard {
   static void check_size(const std::vector<mpz_class>& z, const char* what) {
     for (const auto& x : z)
       if (mpz_sizeinbase(x.get_mpz_t(), 2) > kMaxCgalBits)
-        throw BudgetExhausted(std::string(what) + ": a polynomial coefficient of " + std::to_string(mpz_sizeinbase(x.get_mpz_t(), 2)) +
-                              " bits, beyond the " + std::to_string(kMaxCgalBits) +
+        throw BudgetExhausted(std::string(what) + ": a polynomial coefficient of " +
+                              std::to_string(mpz_sizeinbase(x.get_mpz_t(), 2)) + " bits, beyond the " +
+                              std::to_string(kMaxCgalBits) +
                               "-bit limit of CGAL's modular gcd (the scene's numbers have too many digits)");
     check_deadline_now(what);
   }
@@ -152,7 +156,8 @@ auto with_cgal(F&& f) {
   try {
     return f();
   } catch (const std::ios::failure&) {
-    throw BudgetExhausted("exact root isolation: the coefficients are too large for CGAL's modular gcd (it ran out of primes)");
+    throw BudgetExhausted(
+        "exact root isolation: the coefficients are too large for CGAL's modular gcd (it ran out of primes)");
   }
 }
 
@@ -266,14 +271,16 @@ class Refiner {
       d.B = b << (d.k - jb);
       eval_dyadic(d.FA, f_, d.A, d.k);
       eval_dyadic(d.FB, f_, d.B, d.k);
-      if (sgn(d.FA) * sgn(d.FB) >= 0) throw std::logic_error("internal error: not an isolating interval of a simple root");
+      if (sgn(d.FA) * sgn(d.FB) >= 0)
+        throw std::logic_error("internal error: not an isolating interval of a simple root");
       return true;
     }
     // Rational ends: take grid points j1 < j2 inside (lo, hi) (at least three
     // of them at level k); the root lies in (lo, j1), [j1, j2] or (j2, hi),
     // and the outer pieces shrink by 4 or more each round.
     int s_lo = sign_at_rational(f_, lo);
-    if (s_lo == 0 || s_lo == sign_at_rational(f_, hi)) throw std::logic_error("internal error: not an isolating interval of a simple root");
+    if (s_lo == 0 || s_lo == sign_at_rational(f_, hi))
+      throw std::logic_error("internal error: not an isolating interval of a simple root");
     for (;;) {
       check_deadline("exact root refinement");
       Rational w = hi - lo;
@@ -290,9 +297,15 @@ class Refiner {
       j2 -= 1;
       mpz_class F1, F2;
       eval_dyadic(F1, f_, j1, k);
-      if (sgn(F1) == 0) { exact = dyadic(j1, k); return false; }
+      if (sgn(F1) == 0) {
+        exact = dyadic(j1, k);
+        return false;
+      }
       eval_dyadic(F2, f_, j2, k);
-      if (sgn(F2) == 0) { exact = dyadic(j2, k); return false; }
+      if (sgn(F2) == 0) {
+        exact = dyadic(j2, k);
+        return false;
+      }
       if (sgn(F1) != s_lo) {
         hi = dyadic(j1, k);
       } else if (sgn(F2) == s_lo) {
@@ -363,8 +376,17 @@ class Refiner {
     }
     mpz_class M = s >> 1, FM;
     eval_dyadic(FM, f_, M, d.k);
-    if (sgn(FM) == 0) { exact = dyadic(M, d.k); return false; }
-    if (sgn(FM) == sgn(d.FA)) { d.A = M; d.FA = FM; } else { d.B = M; d.FB = FM; }
+    if (sgn(FM) == 0) {
+      exact = dyadic(M, d.k);
+      return false;
+    }
+    if (sgn(FM) == sgn(d.FA)) {
+      d.A = M;
+      d.FA = FM;
+    } else {
+      d.B = M;
+      d.FB = FM;
+    }
     return true;
   }
 
@@ -391,7 +413,10 @@ class Refiner {
     if (off > w - 1) off = w - 1;
     mpz_class M = d.A + off, FM;
     eval_dyadic(FM, f_, M, d.k);
-    if (sgn(FM) == 0) { exact = dyadic(M, d.k); return -1; }
+    if (sgn(FM) == 0) {
+      exact = dyadic(M, d.k);
+      return -1;
+    }
     const int sa = sgn(d.FA);
     if (sgn(FM) == sa) {  // the root is in (M, B)
       d.A = M;
@@ -400,8 +425,15 @@ class Refiner {
       if (M1 >= d.B) return 1;
       mpz_class F1;
       eval_dyadic(F1, f_, M1, d.k);
-      if (sgn(F1) == 0) { exact = dyadic(M1, d.k); return -1; }
-      if (sgn(F1) == sa) { d.A = M1; d.FA = F1; return 0; }
+      if (sgn(F1) == 0) {
+        exact = dyadic(M1, d.k);
+        return -1;
+      }
+      if (sgn(F1) == sa) {
+        d.A = M1;
+        d.FA = F1;
+        return 0;
+      }
       d.B = M1;
       d.FB = F1;
       return 1;
@@ -412,8 +444,15 @@ class Refiner {
     if (M1 <= d.A) return 1;
     mpz_class F1;
     eval_dyadic(F1, f_, M1, d.k);
-    if (sgn(F1) == 0) { exact = dyadic(M1, d.k); return -1; }
-    if (sgn(F1) != sa) { d.B = M1; d.FB = F1; return 0; }
+    if (sgn(F1) == 0) {
+      exact = dyadic(M1, d.k);
+      return -1;
+    }
+    if (sgn(F1) != sa) {
+      d.B = M1;
+      d.FB = F1;
+      return 0;
+    }
     d.A = M1;
     d.FA = F1;
     return 1;
@@ -460,7 +499,9 @@ bool certainly_square_free(const IntPoly& z) {
     for (int i = 0; i <= n; ++i) a[i] = mod(z[i]);
     if (a[n] == 0) continue;
     for (int i = 1; i <= n; ++i) b[i - 1] = mul(a[i], u64(i) % q);
-    auto trim = [](std::vector<u64>& v) { while (!v.empty() && v.back() == 0) v.pop_back(); };
+    auto trim = [](std::vector<u64>& v) {
+      while (!v.empty() && v.back() == 0) v.pop_back();
+    };
     trim(b);
     if (b.empty()) continue;
     // Euclid: a <- a mod b, swap, until b = 0; deg gcd = deg a at the end.
@@ -605,7 +646,8 @@ std::vector<AlgebraicRoot> finish_roots(std::vector<Work>& all, int bits, bool r
     bool disjoint = true;
     for (std::size_t i = 0; i + 1 < all.size(); ++i) {
       if (all[i].r.hi < all[i + 1].r.lo) continue;
-      if (all[i + 1].r.hi < all[i].r.lo) throw std::logic_error("internal error: the roots are not in increasing order");
+      if (all[i + 1].r.hi < all[i].r.lo)
+        throw std::logic_error("internal error: the roots are not in increasing order");
       if (b2 > long(kMaxLevel)) throw std::logic_error("internal error: brackets of distinct roots do not separate");
       disjoint = false;
       for (Work* w : {&all[i], &all[i + 1]})
@@ -638,8 +680,8 @@ std::vector<AlgebraicRoot> finish_roots(std::vector<Work>& all, int bits, bool r
 // by 1 for the right one, whose constant term is P at the midpoint (zero:
 // the midpoint is an exact root). Terminates for square-free f (Vincent's
 // theorem); bounded by the run's deadline and by kMaxLevel.
-void zero_one_descartes(const IntPoly& P, const mpz_class& i, unsigned long D, std::vector<std::pair<Rational, Rational>>& brackets,
-                        std::vector<bool>& exact) {
+void zero_one_descartes(const IntPoly& P, const mpz_class& i, unsigned long D,
+                        std::vector<std::pair<Rational, Rational>>& brackets, std::vector<bool>& exact) {
   check_deadline("exact root isolation");
   if (D > kMaxLevel) throw std::logic_error("internal error: root isolation does not converge");
   const std::size_t n = P.size() - 1;
@@ -721,14 +763,19 @@ void unit_roots_of_square_free(IntPoly z, int m, int bits, std::vector<Work>& al
     std::vector<bool> exact;
     zero_one_descartes(z, 0, 0, brackets, exact);
     for (std::size_t i = 0; i < brackets.size(); ++i) {
-      if (exact[i]) { rational_root(brackets[i].first); continue; }
+      if (exact[i]) {
+        rational_root(brackets[i].first);
+        continue;
+      }
       Work w;
       w.r.impl = impl;
       w.r.multiplicity = m;
       Refiner rf(impl->f);
       std::optional<Rational> ex;
-      if (!rf.init(brackets[i].first, brackets[i].second, w.d, ex)) w.r.lo = w.r.hi = *ex;
-      else refine_to(w.r, w.d, rf, bits);
+      if (!rf.init(brackets[i].first, brackets[i].second, w.d, ex))
+        w.r.lo = w.r.hi = *ex;
+      else
+        refine_to(w.r, w.d, rf, bits);
       all.push_back(std::move(w));
     }
   }
@@ -764,7 +811,10 @@ std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a
   {
     IntPoly z = integer_multiple(p);
     CgalGuard::check_size(z, "exact root isolation");
-    with_cgal([&] { kernel().solve_1_object()(to_ak(z), std::back_inserter(roots)); return 0; });
+    with_cgal([&] {
+      kernel().solve_1_object()(to_ak(z), std::back_inserter(roots));
+      return 0;
+    });
   }
   // CGAL returns them sorted. Only those whose isolating interval meets [a, b]
   // are worked on; the others are known to be outside.
@@ -801,8 +851,10 @@ std::vector<AlgebraicRoot> real_roots(const Poly<Rational>& p, const Rational& a
         if (ca < 0) continue;
         int cb = compare_root(impl->f, w.r.lo, w.r.hi, sgn(w.d.FA), b);
         if (cb > 0) continue;
-        if (ca == 0) w.r.lo = w.r.hi = a;
-        else if (cb == 0) w.r.lo = w.r.hi = b;
+        if (ca == 0)
+          w.r.lo = w.r.hi = a;
+        else if (cb == 0)
+          w.r.lo = w.r.hi = b;
       } else if (w.r.lo < a || w.r.lo > b) {
         continue;
       }
@@ -837,7 +889,8 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   IntPoly gi = flint_gcd(Q, f);
   if (gi.size() > 1) {
     int glo = sign_at_rational(gi, r.lo), ghi = sign_at_rational(gi, r.hi);
-    if (glo == 0 || ghi == 0) throw std::invalid_argument("sign_at: the root's factor vanishes at an end of its bracket");
+    if (glo == 0 || ghi == 0)
+      throw std::invalid_argument("sign_at: the root's factor vanishes at an end of its bracket");
     if (glo != ghi) return Sign::zero;
   }
   // q(root) != 0: refine a copy of the bracket until the bound decides.
@@ -847,7 +900,8 @@ Sign sign_at(const Poly<Rational>& q, const AlgebraicRoot& r) {
   for (long bits = std::max<long>(64, long(d.k));; bits *= 2) {
     check_deadline("sign at an algebraic number");
     if (int s = constant_sign(Q, d)) return sign_of_int(s);
-    if (bits > long(kMaxLevel)) throw std::logic_error("internal error: the sign at an algebraic number does not converge");
+    if (bits > long(kMaxLevel))
+      throw std::logic_error("internal error: the sign at an algebraic number does not converge");
     if (!rf.refine(d, bits, exact)) return sign_of_int(sign_at_rational(Q, *exact));
   }
 }
@@ -873,7 +927,10 @@ std::vector<std::pair<Poly<Rational>, int>> square_free_factors_cgal(const Poly<
   std::vector<std::pair<AKPoly, int>> f;
   IntPoly z = integer_multiple(p);
   CgalGuard::check_size(z, "square-free factorisation");
-  with_cgal([&] { PT::Square_free_factorize_up_to_constant_factor()(to_ak(z), std::back_inserter(f)); return 0; });
+  with_cgal([&] {
+    PT::Square_free_factorize_up_to_constant_factor()(to_ak(z), std::back_inserter(f));
+    return 0;
+  });
   std::vector<std::pair<Poly<Rational>, int>> out;
   for (auto& [q, m] : f)
     if (PT::Degree()(q) > 0) out.push_back({poly_from_ak(q), m});

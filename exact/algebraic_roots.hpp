@@ -7,18 +7,14 @@
 // rational bracket that provably holds it and no other root, and must decide
 // signs of polynomials at t0 exactly, never by evaluating near t0 in floating
 // point (design.md, "Mathematics the code must get right"). Isolation of
-// every real root (Descartes' method) is CGAL's Algebraic_kernel_d_1 over CORE::BigInt (CORE ships inside CGAL's headers;
-// issue 6 measured it 1.5-4x faster than the kernel over CGAL::Gmpz with MPFI
-// on the workbench's polynomials). On [0, 1] (what the pipelines ask for)
-// only the roots there are isolated, by Descartes' bisection of (0, 1) in
-// GMP integers, after a modular certificate that the polynomial is
-// square-free (else after FLINT's square-free factorisation,
-// exact/flint_poly.hpp, which also does the gcds), issue 21; other
-// ranges use CGAL's isolation of every real root. What follows isolation is done in
-// exact/algebraic_roots.cpp on the isolating intervals, with integers only:
-// refinement by quadratic interval refinement (Abbott, "Quadratic interval
-// refinement for real roots", 2006; exact signs of the square-free factor at
-// dyadic points), exact comparison with the ends of the range, and signs at a
+// every real root (Descartes' method) is CGAL's Algebraic_kernel_d_1 over CORE::BigInt (CORE ships inside CGAL's
+// headers; issue 6 measured it 1.5-4x faster than the kernel over CGAL::Gmpz with MPFI on the workbench's polynomials).
+// On [0, 1] (what the pipelines ask for) only the roots there are isolated, by Descartes' bisection of (0, 1) in GMP
+// integers, after a modular certificate that the polynomial is square-free (else after FLINT's square-free
+// factorisation, exact/flint_poly.hpp, which also does the gcds), issue 21; other ranges use CGAL's isolation of every
+// real root. What follows isolation is done in exact/algebraic_roots.cpp on the isolating intervals, with integers
+// only: refinement by quadratic interval refinement (Abbott, "Quadratic interval refinement for real roots", 2006;
+// exact signs of the square-free factor at dyadic points), exact comparison with the ends of the range, and signs at a
 // root (a Taylor bound at the bracket's midpoint proves the sign constant on
 // the bracket; when it cannot, gcd with the factor: zero iff the gcd changes
 // sign over the bracket; else refinement until the bound decides).

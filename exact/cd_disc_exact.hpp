@@ -50,8 +50,14 @@ struct ExactPolicy {
     std::vector<Root> rs = real_roots(q, Rational(0), Rational(1), bits);
     const Poly<Rational> t({Rational(0), Rational(1)}), t1({Rational(-1), Rational(1)});
     for (auto& r : rs) {
-      if (eccd::sign_at(t, r) == Sign::zero) { r.lo = r.hi = 0; continue; }
-      if (eccd::sign_at(t1, r) == Sign::zero) { r.lo = r.hi = 1; continue; }
+      if (eccd::sign_at(t, r) == Sign::zero) {
+        r.lo = r.hi = 0;
+        continue;
+      }
+      if (eccd::sign_at(t1, r) == Sign::zero) {
+        r.lo = r.hi = 1;
+        continue;
+      }
       for (int b = 2 * bits; r.lo <= 0 || r.hi >= 1; b *= 2) refine(r, b);  // strictly inside (0, 1)
     }
     if (record) record->push_back({q, rs});
@@ -67,7 +73,10 @@ struct ExactPolicy {
     Rational mid = (r.lo + r.hi) / 2;
     return bracketed_instant(mid, r.lo, r.hi);
   }
-  Rational value(const Root& r) const { Rational mid = (r.lo + r.hi) / 2; return mid; }
+  Rational value(const Root& r) const {
+    Rational mid = (r.lo + r.hi) / 2;
+    return mid;
+  }
   int multiplicity(const Root& r) const { return r.multiplicity; }
   bool at_zero(const Root& r) const { return r.hi == 0; }
   bool at_one(const Root& r) const { return r.lo == 1; }

@@ -41,11 +41,11 @@ namespace eccd {
 
 struct CertificateAlgebra {
   int dim = 2;
-  std::vector<Poly<Rational>> g;        // g_0 .. g_{dim+1}
-  Poly<Rational> projection;            // zero only for a 2D Δ ≡ 0
-  std::string projection_name;          // "discriminant", "psc_1", ...
-  int projection_index = 0;             // 3D: k of psc_k (0 = discriminant)
-  std::vector<std::string> vanishing;   // the candidates before it, each ≡ 0
+  std::vector<Poly<Rational>> g;       // g_0 .. g_{dim+1}
+  Poly<Rational> projection;           // zero only for a 2D Δ ≡ 0
+  std::string projection_name;         // "discriminant", "psc_1", ...
+  int projection_index = 0;            // 3D: k of psc_k (0 = discriminant)
+  std::vector<std::string> vanishing;  // the candidates before it, each ≡ 0
 
   // An evidence polynomial by its certificate name; throws std::invalid_argument for an unknown name.
   Poly<Rational> evidence(const std::string& name) const {
@@ -60,7 +60,8 @@ struct CertificateAlgebra {
           subresultant_evidence_name(j, i) == name)
         return subresultant_evidence(g, j, i);
     }
-    throw std::invalid_argument("unknown evidence polynomial \"" + name + "\" for a " + std::to_string(dim) + "D scene");
+    throw std::invalid_argument("unknown evidence polynomial \"" + name + "\" for a " + std::to_string(dim) +
+                                "D scene");
   }
 
   // The exact static test at a rational instant.
@@ -165,7 +166,10 @@ inline std::optional<ApproxValue> read_approx(const std::string& s, std::size_t 
   long places = 0;
   bool dot = false;
   for (; i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || (s[i] == '.' && !dot)); ++i) {
-    if (s[i] == '.') { dot = true; continue; }
+    if (s[i] == '.') {
+      dot = true;
+      continue;
+    }
     digits += s[i];
     if (dot) ++places;
   }

@@ -56,7 +56,8 @@ std::vector<mpz_class> primitive_of(const fmpz_poly_t p) {
 }  // namespace
 
 std::vector<std::pair<std::vector<mpz_class>, int>> flint_square_free_factors(const std::vector<mpz_class>& z) {
-  if (z.empty() || sgn(z.back()) == 0) throw std::invalid_argument("flint_square_free_factors: a zero leading coefficient");
+  if (z.empty() || sgn(z.back()) == 0)
+    throw std::invalid_argument("flint_square_free_factors: a zero leading coefficient");
   FPoly f(z);
   fmpz_poly_factor_t fac;
   fmpz_poly_factor_init(fac);

@@ -49,7 +49,7 @@
 namespace eccd {
 
 struct BallPath {
-  Rational radius;               // r (rational)
+  Rational radius;                // r (rational)
   std::array<Rational, 3> c0, d;  // centre c0 + s d
 };
 
@@ -166,8 +166,9 @@ inline std::vector<std::pair<Instant, Instant>> ball_projection(const BallPath& 
     const Rational sample = (pts[i].hi + pts[i + 1].lo) / 2;
     const bool in = meets_at(sample);
     if (in != g_nonpositive(sample))
-      throw std::logic_error("independent balls: the shared-parameter pipeline and the explicit distance disagree at s = " +
-                             sample.get_str());
+      throw std::logic_error(
+          "independent balls: the shared-parameter pipeline and the explicit distance disagree at s = " +
+          sample.get_str());
     cell_in.push_back(in);
   }
   std::vector<bool> pt_in;

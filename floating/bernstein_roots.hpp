@@ -49,8 +49,8 @@ namespace eccd {
 
 template <class T>
 struct FloatRoot {
-  T lo, hi, value;     // the root lies in [lo, hi] as far as rounded arithmetic can tell
-  bool cluster = false;  // true: a multiple root or an unresolved cluster
+  T lo, hi, value;          // the root lies in [lo, hi] as far as rounded arithmetic can tell
+  bool cluster = false;     // true: a multiple root or an unresolved cluster
   bool unresolved = false;  // true: the work bound or the deadline stopped the search here (roots unknown)
 };
 
@@ -62,7 +62,7 @@ struct BernsteinRootOptions {
   // root (bern_argmax: the peak's u) asks for fewer bits than the arithmetic has.
   int simple_bits = 0;
   bool first_only = false;
-  long max_pieces = 20000;  // work bound: pieces examined (de Casteljau splits are O(n^2) each)
+  long max_pieces = 20000;      // work bound: pieces examined (de Casteljau splits are O(n^2) each)
   mutable std::string stopped;  // out: "" or why the search stopped early
 };
 
@@ -74,7 +74,10 @@ T control_polygon_zero(std::span<const T> b, Sign sa, const T& half) {
   int i = 0;  // the last coefficient of sign sa before the change
   for (int k = 1; k <= n; ++k) {
     Sign sk = sign(b[k]);
-    if (sk == sa) { i = k; continue; }
+    if (sk == sa) {
+      i = k;
+      continue;
+    }
     if (sk == Sign::zero) continue;
     T d = b[i] - b[k];
     T x = (T(i) + T(k - i) * (b[i] / d)) / T(n);
@@ -106,14 +109,23 @@ std::pair<V, V> refine_simple_root(std::span<const V> b, Sign sa, int max_iter, 
     // Each step evaluates the piece; at degree ~100 in MPFR the up to 4p steps
     // took seconds past the deadline: ask it every step, except below degree 8,
     // where eight steps cost less than the clock read they would each add.
-    if ((low_degree ? it % 8 == 0 : true) && deadline_passed()) { out_of_time = true; break; }
+    if ((low_degree ? it % 8 == 0 : true) && deadline_passed()) {
+      out_of_time = true;
+      break;
+    }
     V den = fhi - flo;
-    V x = it == 0 && fast ? x_first : point_of(V((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
+    V x = it == 0 && fast
+              ? x_first
+              : point_of(V((lo * fhi - hi * flo) / den));  // an evaluation point: its own error does not matter
     if (!(x > lo && x < hi)) x = point_of(V(half * (lo + hi)));
     V fx = piece_value(x);
     Sign sx = value_sign(fx);
     if (sx == Sign::uncertain) break;
-    if (sx == Sign::zero) { lo = x; hi = x; break; }
+    if (sx == Sign::zero) {
+      lo = x;
+      hi = x;
+      break;
+    }
     // An end kept twice has its value scaled: Illinois by 1/2; Anderson-Björck
     // (fast) by m = 1 - f(x)/f(replaced end), 1/2 if that is not in (0, 1):
     // with Illinois' fixed 1/2 the last steps crawled by halvings.
@@ -124,11 +136,13 @@ std::pair<V, V> refine_simple_root(std::span<const V> b, Sign sa, int max_iter, 
     };
     if (sx == sa) {
       if (side == -1) fhi = damp(fx, flo) * fhi;
-      lo = x; flo = fx;
+      lo = x;
+      flo = fx;
       side = -1;
     } else {
       if (side == 1) flo = damp(fx, fhi) * flo;
-      hi = x; fhi = fx;
+      hi = x;
+      fhi = fx;
       side = 1;
     }
   }
@@ -157,7 +171,8 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
   auto strict_one_sign = [](const Bern<T>& q) {
     Sign s0 = sign(q.b.front());
     if (s0 == Sign::zero || s0 == Sign::uncertain) return false;
-    for (const auto& x : q.b) if (sign(x) != s0) return false;
+    for (const auto& x : q.b)
+      if (sign(x) != s0) return false;
     return true;
   };
   auto add = [&](FloatRoot<T> r) {
@@ -173,7 +188,10 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
     out.push_back(std::move(r));
   };
 
-  struct Piece { Bern<T> q; T a, b; };
+  struct Piece {
+    Bern<T> q;
+    T a, b;
+  };
   std::vector<Piece> stack;  // depth-first, leftmost first
   for (const auto& x : p.b)
     if (!is_finite_value(x)) {  // NaN or Inf: nothing can be decided
@@ -186,8 +204,9 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
   const bool low_degree = p.degree() < 8;
   while (!stack.empty()) {
     if (++pieces > opt.max_pieces || deadline_passed()) {
-      opt.stopped = deadline_passed() ? deadline_reason()
-                                       : "root isolation stopped at its work bound of " + std::to_string(opt.max_pieces) + " pieces";
+      opt.stopped = deadline_passed()
+                        ? deadline_reason()
+                        : "root isolation stopped at its work bound of " + std::to_string(opt.max_pieces) + " pieces";
       while (!stack.empty()) {  // leftmost first: what is left is unresolved
         Piece rest = std::move(stack.back());
         stack.pop_back();
@@ -207,7 +226,10 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
       // signs are uncertain to the caller).
       bool all_uncertain = true;
       for (const auto& x : pc.q.b) all_uncertain = all_uncertain && sign(x) == Sign::uncertain;
-      if (all_uncertain) { add({pc.a, pc.b, point_of(T(half * (pc.a + pc.b))), true}); continue; }
+      if (all_uncertain) {
+        add({pc.a, pc.b, point_of(T(half * (pc.a + pc.b))), true});
+        continue;
+      }
     }
     Sign sa = sign(pc.q.b.front()), sb = sign(pc.q.b.back());
     // Descartes' rule needs every coefficient's sign: an uncertain one (a
@@ -229,8 +251,8 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
         values = std::span<const V>(pc.q.b);
       }
       bool out_of_time = false;
-      auto [lo_v, hi_v] = refine_simple_root<V>(values, sa, 4 * opt.precision_bits, P::of(simple_width),
-                                                P::of(zero), P::of(one), P::of(half), low_degree, out_of_time);
+      auto [lo_v, hi_v] = refine_simple_root<V>(values, sa, 4 * opt.precision_bits, P::of(simple_width), P::of(zero),
+                                                P::of(one), P::of(half), low_degree, out_of_time);
       const T lo = P::lift(lo_v), hi = P::lift(hi_v);
       T rlo = point_of(T(pc.a + w * lo)), rhi = point_of(T(pc.a + w * hi));
       if (out_of_time) {  // a root is in [rlo, rhi], but not located to the working precision: unresolved

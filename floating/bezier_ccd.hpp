@@ -87,13 +87,13 @@
 namespace eccd {
 
 struct BezierOptions {
-  int samples = 32;        // first pass: static tests at samples + 1 instants
-  int max_shots = 64;      // iterations of one iterative Bézier shooting
-  int gauss_depth = 5;     // the Gaussian-circle test splits u into 2^gauss_depth pieces
-  int u_depth = 10;        // overlap certificates split u adaptively, at most this deep
-  int max_depth = 40;      // t-subdivision depth below one sample interval
+  int samples = 32;               // first pass: static tests at samples + 1 instants
+  int max_shots = 64;             // iterations of one iterative Bézier shooting
+  int gauss_depth = 5;            // the Gaussian-circle test splits u into 2^gauss_depth pieces
+  int u_depth = 10;               // overlap certificates split u adaptively, at most this deep
+  int max_depth = 40;             // t-subdivision depth below one sample interval
   long max_subdivisions = 20000;  // work cap for the whole run (then every open gap is closed as at the depth limit)
-  int overlap_depth = 10;  // t-subdivision depth between two overlapping instants
+  int overlap_depth = 10;         // t-subdivision depth between two overlapping instants
   bool first_contact_only = false;
 };
 
@@ -146,7 +146,9 @@ BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
 // bits of u and cost a third of a 3D query (issue 21). Clusters (a multiple
 // root of f', an inflection) are still found at the full precision.
 template <class U>
-struct Peak { U u, value; };
+struct Peak {
+  U u, value;
+};
 
 // u0, u1: 0 and 1 at the precision of f's coefficients.
 template <class U>
@@ -160,7 +162,10 @@ Peak<U> bern_argmax(const Bern<U>& f, int bits, const U& u0, const U& u1) {
   const int n = f.degree();
   df.b.reserve(std::max(n, 1));
   if (n <= 0) df.b.push_back(V(0));
-  for (int i = 0; i < n; ++i) { V diff = P::of(f.b[i + 1]) - P::of(f.b[i]); df.b.push_back(V(n) * diff); }
+  for (int i = 0; i < n; ++i) {
+    V diff = P::of(f.b[i + 1]) - P::of(f.b[i]);
+    df.b.push_back(V(n) * diff);
+  }
   BernsteinRootOptions<V> ro;
   ro.precision_bits = bits;
   ro.simple_bits = std::min(bits, bits / 2 + 6);
@@ -223,14 +228,21 @@ inline bool pointed(const std::vector<std::pair<double, double>>& pts) {
       x = std::ldexp(x, -e);
       y = std::ldexp(y, -e);
     }
-    if (first) { lx = hx = x; ly = hy = y; first = false; continue; }
+    if (first) {
+      lx = hx = x;
+      ly = hy = y;
+      first = false;
+      continue;
+    }
     const int c1 = cross_sign(lx, ly, x, y), c2 = cross_sign(x, y, hx, hy);  // lo × p, p × hi
-    if (c1 >= 0 && c2 >= 0) {  // inside [lo, hi], or on one of its lines
+    if (c1 >= 0 && c2 >= 0) {                                                // inside [lo, hi], or on one of its lines
       if ((c1 == 0 && !same_way(lx, ly, x, y)) || (c2 == 0 && !same_way(x, y, hx, hy))) return false;
     } else if (c1 > 0 && c2 < 0) {
-      hx = x; hy = y;
+      hx = x;
+      hy = y;
     } else if (c1 < 0 && c2 > 0) {
-      lx = x; ly = y;
+      lx = x;
+      ly = y;
     } else {
       return false;
     }
@@ -245,7 +257,10 @@ class BezierZeroSet {
  public:
   using Peak = eccd::Peak<T>;
   enum class ShotKind { miss, converged, inconclusive };
-  struct Shot { ShotKind kind; T t; };
+  struct Shot {
+    ShotKind kind;
+    T t;
+  };
 
   // g: the coefficients g_0..g_4 of f(λ;t) in Bernstein form in t.
   BezierZeroSet(const std::vector<Bern<T>>& g, const T& like, int bits, BezierOptions opt)
@@ -318,7 +333,10 @@ class BezierZeroSet {
       // A peak within rounding noise of 0 (relative to F(., t0)'s coefficients) is a touch as far
       // as this arithmetic can tell.
       T scale = zero_;
-      for (const auto& x : f.b) { T ax = scalar_traits<T>::abs(x); if (ax > scale) scale = ax; }
+      for (const auto& x : f.b) {
+        T ax = scalar_traits<T>::abs(x);
+        if (ax > scale) scale = ax;
+      }
       if (!(scalar_traits<T>::abs(p.value) > noise_ * scale)) return Status::touching;
       Sign s = sign(p.value);
       if (s == Sign::positive) return Status::separate;
@@ -359,8 +377,14 @@ class BezierZeroSet {
   // on the stack for the small degrees of F in u (no allocation per level of a deep descent to a needle).
   Status classify_on_u(std::span<const T> f, int depth, long& pieces, const T& u0, const T& u1, T& witness) const {
     ++pieces;
-    if (sign(f.front()) == Sign::positive) { witness = u0; return Status::separate; }
-    if (sign(f.back()) == Sign::positive) { witness = u1; return Status::separate; }
+    if (sign(f.front()) == Sign::positive) {
+      witness = u0;
+      return Status::separate;
+    }
+    if (sign(f.back()) == Sign::positive) {
+      witness = u1;
+      return Status::separate;
+    }
     bool all = true;
     for (const auto& x : f) all = all && sign(x) == Sign::negative;
     if (all) return Status::overlapping;
@@ -441,7 +465,7 @@ class BezierZeroSet {
           if (sign(G.b.front()) != Sign::positive) return {ShotKind::inconclusive, t};
         return {ShotKind::miss, to};
       }
-      T s = roots.front().lo;  // the hit: F(û, .) > 0 before it
+      T s = roots.front().lo;                // the hit: F(û, .) > 0 before it
       T tn = point_of(T(t + s * (to - t)));  // an evaluation point (number/running_error.hpp)
       T step = tn - t;
       if (sign(step) == Sign::negative) step = -step;
@@ -500,10 +524,10 @@ class BezierZeroSet {
   T zero_, one_, half_, eps_t_, touch_tol_, noise_;
   std::vector<TimelineNode> seq_;
   int degree_u_ = 0;
-  std::vector<T> abscissa_;  // i / degree_u_, i = 0..degree_u_ (status's witnesses)
-  std::vector<T> seq_t_;  // the instant of seq_[k] in T (its text is made by format_kept)
+  std::vector<T> abscissa_;             // i / degree_u_, i = 0..degree_u_ (status's witnesses)
+  std::vector<T> seq_t_;                // the instant of seq_[k] in T (its text is made by format_kept)
   std::vector<BiBern<T>> gauss_piece_;  // collect_gradient's u-piece at each depth (storage reused)
-  std::vector<T> small_ints_;  // 0, 1, 2, ... as T (small_int)
+  std::vector<T> small_ints_;           // 0, 1, 2, ... as T (small_int)
   std::vector<std::pair<double, double>> gauss_pts_;
   unsigned polls_ = 0;
   bool late_ = false;
@@ -538,7 +562,8 @@ class BezierZeroSet {
   // Control points of ∇F (in the coordinates of the whole square) over the
   // u-pieces of f where F may vanish. The pieces are split_u's (keep_u_left /
   // keep_u_right on a copy: the same values), made in gauss_piece_[depth - 1].
-  void collect_gradient(const BiBern<T>& f, int depth, double wu, double wt, std::vector<std::pair<double, double>>& pts) {
+  void collect_gradient(const BiBern<T>& f, int depth, double wu, double wt,
+                        std::vector<std::pair<double, double>>& pts) {
     if (f.strict_sign() == -1) return;  // F < 0 on this piece: no zero-set here
     if (depth > 0) {
       BiBern<T>& piece = gauss_piece_[depth - 1];
@@ -559,21 +584,32 @@ class BezierZeroSet {
     const int m = f.degree_u(), n = f.degree_t();
     const std::size_t base = pts.size();
     pts.resize(base + std::size_t(m + 1) * std::size_t(n + 1));
-    auto at = [&](int i, int j) -> std::pair<double, double>& { return pts[base + std::size_t(i) * std::size_t(n + 1) + j]; };
+    auto at = [&](int i, int j) -> std::pair<double, double>& {
+      return pts[base + std::size_t(i) * std::size_t(n + 1) + j];
+    };
     // Directions only (no sign is read from them): in the plain arithmetic under a running bound, the same values.
     using P = PlainOf<T>;
     using V = typename P::type;
     auto elevated_derivative = [&](auto c, int k, int deg) {
       V e = P::of(zero_);
-      if (k > 0) { V d = P::of(c(k)) - P::of(c(k - 1)); e = P::of(small_int(k)) * d; }
-      if (k < deg) { V d = P::of(c(k + 1)) - P::of(c(k)); V term = P::of(small_int(deg - k)) * d; e = k > 0 ? V(e + term) : term; }
+      if (k > 0) {
+        V d = P::of(c(k)) - P::of(c(k - 1));
+        e = P::of(small_int(k)) * d;
+      }
+      if (k < deg) {
+        V d = P::of(c(k + 1)) - P::of(c(k));
+        V term = P::of(small_int(deg - k)) * d;
+        e = k > 0 ? V(e + term) : term;
+      }
       return e;
     };
     for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= m; ++i) at(i, j).first = to_double(elevated_derivative([&](int k) -> const T& { return f.b[k][j]; }, i, m)) / wu;
+      for (int i = 0; i <= m; ++i)
+        at(i, j).first = to_double(elevated_derivative([&](int k) -> const T& { return f.b[k][j]; }, i, m)) / wu;
     for (int i = 0; i <= m; ++i) {
       const std::vector<T>& row = f.b[i];
-      for (int j = 0; j <= n; ++j) at(i, j).second = to_double(elevated_derivative([&](int k) -> const T& { return row[k]; }, j, n)) / wt;
+      for (int j = 0; j <= n; ++j)
+        at(i, j).second = to_double(elevated_derivative([&](int k) -> const T& { return row[k]; }, j, n)) / wt;
     }
   }
 
@@ -607,14 +643,18 @@ class BezierZeroSet {
     }
   }
   Instant instant(const T& t) const {
-    if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), t, t, nearest_double(t)};
-    else return rounded_instant(t);
+    if constexpr (scalar_traits<T>::is_exact)
+      return Instant{decimal_string(t), t, t, nearest_double(t)};
+    else
+      return rounded_instant(t);
   }
   bool first_run_closed() const {
     bool seen = false;
     for (const auto& n : seq_) {
-      if (in_collision(n.status)) seen = true;
-      else if (seen && n.status == Status::separate) return true;
+      if (in_collision(n.status))
+        seen = true;
+      else if (seen && n.status == Status::separate)
+        return true;
     }
     return false;
   }
@@ -622,7 +662,10 @@ class BezierZeroSet {
 
   // Fills the open interval (a, b) between two decided instants.
   void resolve(const T& a, Status sa, const T& b, Status sb, int depth) {
-    if (sa == Status::uncertain || sb == Status::uncertain) { push_cell(a, b, Status::uncertain); return; }
+    if (sa == Status::uncertain || sb == Status::uncertain) {
+      push_cell(a, b, Status::uncertain);
+      return;
+    }
     if constexpr (scalar_traits<T>::is_exact) {
       // Exact: certificates only; a gap goes to the projection (ccd_projection).
       (void)depth;
@@ -634,7 +677,8 @@ class BezierZeroSet {
       if (subdivisions >= opt_.max_subdivisions || out_of_time()) {
         if (stopped.empty())
           stopped = late_ ? deadline_reason()
-                                      : "Bezier subdivision stopped at its work bound of " + std::to_string(opt_.max_subdivisions) + " subdivisions";
+                          : "Bezier subdivision stopped at its work bound of " + std::to_string(opt_.max_subdivisions) +
+                                " subdivisions";
         push_cell(a, b, Status::uncertain);
         return;
       }
@@ -654,9 +698,15 @@ class BezierZeroSet {
       }
       if (sepa && sepb) {
         Shot f = shoot(a, b);
-        if (f.kind == ShotKind::miss) { push_cell(a, b, Status::separate); return; }
+        if (f.kind == ShotKind::miss) {
+          push_cell(a, b, Status::separate);
+          return;
+        }
         Shot k = shoot(b, a);
-        if (k.kind == ShotKind::miss) { push_cell(a, b, Status::separate); return; }
+        if (k.kind == ShotKind::miss) {
+          push_cell(a, b, Status::separate);
+          return;
+        }
         T gap = k.t - f.t;
         if (!(gap > touch_tol_)) {  // both shots met: a tangential touch
           T c = mid(f.t, k.t);
@@ -701,7 +751,11 @@ class BezierZeroSet {
         return;
       }
       // both in collision
-      if (overlap_on(a, b)) { ++overlap_certificates; push_cell(a, b, Status::overlapping); return; }
+      if (overlap_on(a, b)) {
+        ++overlap_certificates;
+        push_cell(a, b, Status::overlapping);
+        return;
+      }
       // Below 2^-overlap_depth of a sample interval an uncertified overlapping
       // pair of ends is accepted (a separate pocket that short is missed).
       // With a running error bound that would be a guess: the cell is undecided.
@@ -730,7 +784,10 @@ PipelineResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int b
   std::vector<Bern<T>> gs = g;
   std::string trouble;
   if constexpr (!scalar_traits<T>::is_exact) {  // scaled by a power of two; non-finite: nothing to decide
-    if (!normalise_pow2<T>([&](auto f) { for (auto& gi : gs) for (auto& x : gi.b) f(x); }))
+    if (!normalise_pow2<T>([&](auto f) {
+          for (auto& gi : gs)
+            for (auto& x : gi.b) f(x);
+        }))
       trouble = "overflow: a non-finite coefficient of f (g_k)";
   }
   PipelineResult<T> res = result_from_bernstein(gs, opt.first_contact_only);
@@ -743,7 +800,8 @@ PipelineResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int b
   BezierZeroSet<T> z(gs, like, bits, opt);
   if constexpr (!scalar_traits<T>::is_exact) {
     bool finite = true;
-    for (const auto& row : z.F().b) for (const auto& x : row) finite = finite && is_finite_value(x);
+    for (const auto& row : z.F().b)
+      for (const auto& x : row) finite = finite && is_finite_value(x);
     if (!finite) {
       Instant i0{"0", std::nullopt, std::nullopt}, i1{"1", std::nullopt, std::nullopt};
       undecided_everywhere(res, i0, i1, "overflow: a non-finite control point of F(u, t)");
@@ -755,14 +813,20 @@ PipelineResult<T> ccd_bezier(const std::vector<Bern<T>>& g, const T& like, int b
   res.status_at_0 = seq.front().status;
   res.projection_degree = z.F().degree_t();
   for (std::size_t k = 0; k < seq.size(); ++k) {
-    if (seq[k].is_cell) res.cells.push_back({seq[k].t, seq[k].status});
-    else if (seq[k].status == Status::touching || seq[k].status == Status::uncertain) res.critical.push_back({seq[k].t, seq[k].status, 0});
+    if (seq[k].is_cell)
+      res.cells.push_back({seq[k].t, seq[k].status});
+    else if (seq[k].status == Status::touching || seq[k].status == Status::uncertain)
+      res.critical.push_back({seq[k].t, seq[k].status, 0});
   }
   check_isolated_instants(seq, false);
   assemble_answer(seq, res.answer, [](std::size_t) {});
   if (opt.first_contact_only && res.answer.intervals.size() > 1) res.answer.intervals.resize(1);
-  res.counters = {{"shots", z.shots}, {"shot_iterations", z.shot_iterations}, {"subdivisions", z.subdivisions},
-                  {"gauss_tests", z.gauss_tests}, {"gauss_passed", z.gauss_passed}, {"overlap_certificates", z.overlap_certificates},
+  res.counters = {{"shots", z.shots},
+                  {"shot_iterations", z.shot_iterations},
+                  {"subdivisions", z.subdivisions},
+                  {"gauss_tests", z.gauss_tests},
+                  {"gauss_passed", z.gauss_passed},
+                  {"overlap_certificates", z.overlap_certificates},
                   {"overlap_unverified", z.overlap_unverified}};
   if (!z.stopped.empty()) res.undecided_reasons.push_back(z.stopped);
   if (!res.answer.undecided.empty() && res.undecided_reasons.empty())

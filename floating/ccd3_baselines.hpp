@@ -137,8 +137,10 @@ namespace baseline_detail {
 // Display of an instant: decimal for exact T, the arithmetic's own string otherwise.
 template <class T>
 Instant uncertified_instant(const T& t) {
-  if constexpr (scalar_traits<T>::is_exact) return Instant{decimal_string(t), std::nullopt, std::nullopt, nearest_double(t)};
-  else return rounded_instant(t);
+  if constexpr (scalar_traits<T>::is_exact)
+    return Instant{decimal_string(t), std::nullopt, std::nullopt, nearest_double(t)};
+  else
+    return rounded_instant(t);
 }
 
 // k / N in the run's arithmetic.
@@ -167,9 +169,13 @@ inline Status cell_between_samples(Status l, Status r) {
 // Floating: g scaled by a power of two (number/pow2_scaling.hpp); "" or why nothing can be decided.
 template <class T>
 std::string prepare_g(std::vector<Bern<T>>& g) {
-  if constexpr (scalar_traits<T>::is_exact) return {};
+  if constexpr (scalar_traits<T>::is_exact)
+    return {};
   else {
-    if (!normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.b) f(x); }))
+    if (!normalise_pow2<T>([&](auto f) {
+          for (auto& gi : g)
+            for (auto& x : gi.b) f(x);
+        }))
       return "overflow: a non-finite coefficient of f (g_k)";
     return {};
   }
@@ -177,7 +183,8 @@ std::string prepare_g(std::vector<Bern<T>>& g) {
 
 // The rest of [0, 1] from the last observed instant `from` is undecided (work bound or deadline).
 template <class T>
-void rest_undecided(std::vector<TimelineNode>& seq, PipelineResult<T>& res, const T& from, const T& like, const std::string& why) {
+void rest_undecided(std::vector<TimelineNode>& seq, PipelineResult<T>& res, const T& from, const T& like,
+                    const std::string& why) {
   T one = scalar_traits<T>::from_rational(mpq_class(1), like);
   seq.push_back({cell_instant(from, one, like), Status::uncertain, true});
   seq.push_back({uncertified_instant(one), Status::uncertain, false});
@@ -199,7 +206,8 @@ bool begin_run(std::vector<Bern<T>>& g, const T& like, int N, bool first_contact
   const std::string trouble = prepare_g(g);
   res = result_from_bernstein(g, first_contact_only);
   if (trouble.empty()) return true;
-  undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)), trouble);
+  undecided_everywhere(res, uncertified_instant(grid_value(0, 1, like)), uncertified_instant(grid_value(1, 1, like)),
+                       trouble);
   return false;
 }
 
@@ -219,7 +227,8 @@ PipelineResult<T> ccd_sampling(const std::vector<Bern<T>>& g, const T& like, int
   std::optional<T> prev;
   for (int k = 0; k <= N; ++k) {
     if (prev && (deadline_passed() || k > kBaselineWork)) {
-      rest_undecided(seq, res, *prev, like, deadline_passed() ? deadline_reason() : "sampling stopped at its work bound");
+      rest_undecided(seq, res, *prev, like,
+                     deadline_passed() ? deadline_reason() : "sampling stopped at its work bound");
       break;
     }
     T t = grid_value(k, N, like);
@@ -296,7 +305,10 @@ PipelineResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int
   for (int j = 0; j < N; ++j) {
     work += long(N) + 1;
     if (deadline_passed() || work > kBaselineWork) {
-      rest_undecided(seq, res, t0, like, deadline_passed() ? deadline_reason() : "marching stopped at its work bound of " + std::to_string(kBaselineWork) + " values of F");
+      rest_undecided(seq, res, t0, like,
+                     deadline_passed()
+                         ? deadline_reason()
+                         : "marching stopped at its work bound of " + std::to_string(kBaselineWork) + " values of F");
       break;
     }
     T t1 = grid_value(j + 1, N, like);
@@ -315,7 +327,7 @@ PipelineResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int
         if (!c || (starts ? *c < ci : ci < *c)) c = ci;
       }
       const bool on_row = starts ? !(*c < t1) : !(t0 < *c);  // c is the collision row itself
-      if (on_row && starts) {  // c == t_{j+1}: row j+1 is where the collision starts
+      if (on_row && starts) {                                // c == t_{j+1}: row j+1 is where the collision starts
         seq.push_back({cell_instant(t0, t1, like), Status::separate, true});
         seq.push_back({uncertified_instant(t1), Status::touching, false});
         res.critical.push_back({seq.back().t, Status::touching, 0});

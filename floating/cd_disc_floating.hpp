@@ -44,8 +44,8 @@ struct FloatingPolicy {
   // error bound too (issue 30 point 5: fewer and shorter products for the guard, and its values are then
   // bit for bit the as-published ones, so where the guard decides it gives the published answer).
   static constexpr bool delta_from_hessian = true;
-  long max_pieces = 20000;               // root isolation work bound (per polynomial)
-  mutable std::string trouble;           // "" or why nothing can be decided (a non-finite value)
+  long max_pieces = 20000;                 // root isolation work bound (per polynomial)
+  mutable std::string trouble;             // "" or why nothing can be decided (a non-finite value)
   mutable std::vector<std::string> notes;  // why parts were left undecided (work bound, deadline)
 
   FloatingPolicy(Basis b, int precision_bits, const T& like_value) : basis(b), bits(precision_bits), like(like_value) {}
@@ -63,12 +63,16 @@ struct FloatingPolicy {
   }
   // Scales g_0..g_N by one power of two (the caller's first step); false if not finite.
   bool normalise_g(std::vector<Poly<T>>& g) const {
-    bool ok = normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.c) f(x); });
+    bool ok = normalise_pow2<T>([&](auto f) {
+      for (auto& gi : g)
+        for (auto& x : gi.c) f(x);
+    });
     if (!ok && trouble.empty()) trouble = "overflow: a non-finite coefficient of f (g_k)";
     return ok;
   }
   bool identically_zero(const Bern<T>& q) const {
-    for (const auto& x : q.b) if (!is_zero(x)) return false;
+    for (const auto& x : q.b)
+      if (!is_zero(x)) return false;
     return true;
   }
   std::vector<Root> roots(const Bern<T>& q, bool first_only) const {

@@ -62,10 +62,10 @@
 namespace eccd {
 
 struct IndependentOptions {
-  int strip_depth = 18;      // strips (proofs for whole ranges of s) of width down to 2^-strip_depth
-  int s_depth = 34;          // an end inside such a strip: bisection by point tests down to 2^-s_depth (the ends' tolerance)
-  int min_limit = 4;         // ... and at least this deep (wide strips fail fast and are split: cheaper than deep pieces)
-  int extra_depth = 2;       // t- and u-pieces of a strip at depth d: at most d/2 + extra_depth deep
+  int strip_depth = 18;  // strips (proofs for whole ranges of s) of width down to 2^-strip_depth
+  int s_depth = 34;     // an end inside such a strip: bisection by point tests down to 2^-s_depth (the ends' tolerance)
+  int min_limit = 4;    // ... and at least this deep (wide strips fail fast and are split: cheaper than deep pieces)
+  int extra_depth = 2;  // t- and u-pieces of a strip at depth d: at most d/2 + extra_depth deep
   long max_tests = 40000000;  // u-box sign tests for the whole run (both projections; ~3e6 per second in double)
 };
 
@@ -111,7 +111,8 @@ class Projector {
 
   long tests = 0, strips = 0, points = 0;
   std::string stop_reason;
-  bool record = false;  // keep each proved strip's boxes in Piece::witness (certificate/write/independent_certificate.hpp)
+  bool record =
+      false;  // keep each proved strip's boxes in Piece::witness (certificate/write/independent_certificate.hpp)
 
   // The pieces of [0, 1] along axis 1 of F (s), in order.
   std::vector<Piece> project(const TriBern<T>& F) {
@@ -128,7 +129,8 @@ class Projector {
       }
     std::vector<Piece> refined;
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      const Strip before = i > 0 ? runs[i - 1].status : Strip::out, after = i + 1 < runs.size() ? runs[i + 1].status : Strip::out;
+      const Strip before = i > 0 ? runs[i - 1].status : Strip::out,
+                  after = i + 1 < runs.size() ? runs[i + 1].status : Strip::out;
       if (runs[i].status != Strip::unknown || before == after || !runs[i].examined) {
         refined.push_back(runs[i]);
         continue;
@@ -179,8 +181,8 @@ class Projector {
     return f;
   }
   // The two halves of f along axis, on the stack as (right, left): the left half is worked on first.
-  void push_halves(std::vector<std::tuple<TriBern<T>, int, unsigned long long>>& stack, TriBern<T>&& f, int axis,
-                   int d, unsigned long long i) {
+  void push_halves(std::vector<std::tuple<TriBern<T>, int, unsigned long long>>& stack, TriBern<T>&& f, int axis, int d,
+                   unsigned long long i) {
     TriBern<T> lo = spare();
     f.split_half_into(axis, step_, lo);
     stack.emplace_back(std::move(f), d + 1, 2 * i + 1);
@@ -196,7 +198,10 @@ class Projector {
   Strip point(const TriBern<T>& F, const mpq_class& x, int depth) {
     const TriBern<T> at = F.at_s(scalar_traits<T>::from_rational(x, half_));
     Strip r = Strip::unknown;
-    for (int lim = std::max(opt_.min_limit, depth / 2 + opt_.extra_depth); r == Strip::unknown && lim <= std::min(depth + 4, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth) + 8) && !stopped(); lim += 2) {
+    for (int lim = std::max(opt_.min_limit, depth / 2 + opt_.extra_depth);
+         r == Strip::unknown &&
+         lim <= std::min(depth + 4, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth) + 8) && !stopped();
+         lim += 2) {
       r = classify_strip(at, lim);
       ++points;
     }
@@ -205,8 +210,10 @@ class Projector {
 
   bool stopped() {
     if (!stop_reason.empty()) return true;
-    if (tests > opt_.max_tests) stop_reason = "work bound reached (" + std::to_string(opt_.max_tests) + " box tests)";
-    else if (deadline_passed()) stop_reason = deadline_reason();
+    if (tests > opt_.max_tests)
+      stop_reason = "work bound reached (" + std::to_string(opt_.max_tests) + " box tests)";
+    else if (deadline_passed())
+      stop_reason = deadline_reason();
     return !stop_reason.empty();
   }
 
@@ -305,11 +312,13 @@ class Projector {
 
   void walk(const TriBern<T>& strip, const mpq_class& lo, const mpq_class& hi, int depth, std::vector<Piece>& out) {
     ++strips;
-    const Strip r = stopped() ? Strip::unknown : classify_strip(strip, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth));
+    const Strip r =
+        stopped() ? Strip::unknown : classify_strip(strip, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth));
     // F of degree 0 in s (that body does not move): every sub-strip is this strip again, splitting decides nothing
     if (r != Strip::unknown || depth >= opt_.strip_depth || !stop_reason.empty() || strip.n[1] == 0) {
       out.push_back({lo, hi, r});
-      out.back().examined = r != Strip::unknown || stop_reason.empty();  // unknown because the run stopped: not examined
+      out.back().examined =
+          r != Strip::unknown || stop_reason.empty();  // unknown because the run stopped: not examined
       if (record && r != Strip::unknown) out.back().witness = witness_;
       return;
     }
@@ -330,8 +339,10 @@ inline std::vector<std::string> one_per_cause(const std::vector<std::string>& re
     const bool placed = cut != std::string::npos && (r.rfind("s in [", 0) == 0 || r.rfind("t in [", 0) == 0);
     const std::string cause = placed ? r.substr(cut + 2) : r, where = placed ? r.substr(0, cut) : "";
     auto it = std::find_if(by_cause.begin(), by_cause.end(), [&](const auto& e) { return e.first == cause; });
-    if (it == by_cause.end()) by_cause.emplace_back(cause, where);
-    else if (!where.empty() && it->second.find(where) == std::string::npos) it->second += (it->second.empty() ? "" : ", ") + where;
+    if (it == by_cause.end())
+      by_cause.emplace_back(cause, where);
+    else if (!where.empty() && it->second.find(where) == std::string::npos)
+      it->second += (it->second.empty() ? "" : ", ") + where;
   }
   std::vector<std::string> out;
   for (const auto& [cause, where] : by_cause) out.push_back(where.empty() ? cause : where + ": " + cause);
@@ -346,7 +357,8 @@ inline Instant located(const mpq_class& x, const mpq_class& w) {
 
 // Pieces -> maximal intervals of the "in" set, plus undecided values and reasons (`var` is "s" or "t").
 inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> pieces, const char* var, int s_depth,
-                                                             const std::string& stop_reason, std::vector<Instant>& undecided,
+                                                             const std::string& stop_reason,
+                                                             std::vector<Instant>& undecided,
                                                              std::vector<std::string>& reasons) {
   auto merge = [](std::vector<Piece>& v) {
     std::vector<Piece> m;
@@ -363,13 +375,19 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
   mpq_class strip(1);
   strip /= mpq_class(mpz_class(1) << s_depth);
   const std::string v = var;
-  auto range = [&](const Piece& p) { return v + " in [" + decimal_string(p.lo, 12) + ", " + decimal_string(p.hi, 12) + "]"; };
+  auto range = [&](const Piece& p) {
+    return v + " in [" + decimal_string(p.lo, 12) + ", " + decimal_string(p.hi, 12) + "]";
+  };
   const std::string why = stop_reason.empty() ? "" : " (" + stop_reason + ")";
   std::vector<Piece> resolved;
   std::vector<mpq_class> end_width;  // per resolved piece: the uncertainty of its hi end (0 = exact)
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     Piece p = pieces[i];
-    if (p.status != Strip::unknown) { resolved.push_back(p); end_width.push_back(0); continue; }
+    if (p.status != Strip::unknown) {
+      resolved.push_back(p);
+      end_width.push_back(0);
+      continue;
+    }
     const Strip before = i > 0 ? pieces[i - 1].status : Strip::out;
     const Strip after = i + 1 < pieces.size() ? pieces[i + 1].status : Strip::out;
     const mpq_class mid = (p.lo + p.hi) / 2, w = p.hi - p.lo;
@@ -384,8 +402,9 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
     if (before == after) {  // in-unknown-in or out-unknown-out (the ends of [0, 1] count as out)
       undecided.push_back(located(mid, w / 2));
       reasons.push_back(range(p) + ": " +
-                        (before == Strip::in ? "inside the meeting set on both sides: a touching gap or none"
-                                             : "separate on both sides: a touch, a near miss or a collision narrower than the strips") +
+                        (before == Strip::in
+                             ? "inside the meeting set on both sides: a touching gap or none"
+                             : "separate on both sides: a touch, a near miss or a collision narrower than the strips") +
                         " could not be told apart" + why);
       p.status = before;
       resolved.push_back(p);
@@ -405,7 +424,10 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
   std::vector<std::pair<Instant, Instant>> out;
   mpq_class start_w = 0;
   for (std::size_t i = 0; i < resolved.size(); ++i) {
-    if (resolved[i].status != Strip::in) { start_w = end_width[i]; continue; }
+    if (resolved[i].status != Strip::in) {
+      start_w = end_width[i];
+      continue;
+    }
     std::size_t j = i;
     while (j + 1 < resolved.size() && resolved[j + 1].status == Strip::in) ++j;
     out.emplace_back(located(resolved[i].lo, start_w), located(resolved[j].hi, end_width[j]));
@@ -433,15 +455,19 @@ IndependentResult ccd_independent(const TriBern<T>& F, const T& like, const Inde
   half.max_tests = opt.max_tests - std::min(ps.tests, opt.max_tests / 2);
   Projector<T> pt(half, like);
   auto t_pieces = pt.project(F.swap_st());
-  r.answer.s_intervals = intervals_of(s_pieces, "s", opt.s_depth, ps.stop_reason, r.answer.undecided, r.undecided_reasons);
-  r.answer.t_intervals = intervals_of(t_pieces, "t", opt.s_depth, pt.stop_reason, r.answer.undecided, r.undecided_reasons);
+  r.answer.s_intervals =
+      intervals_of(s_pieces, "s", opt.s_depth, ps.stop_reason, r.answer.undecided, r.undecided_reasons);
+  r.answer.t_intervals =
+      intervals_of(t_pieces, "t", opt.s_depth, pt.stop_reason, r.answer.undecided, r.undecided_reasons);
   r.answer.collides = !r.answer.s_intervals.empty() || !r.answer.t_intervals.empty();
   if (r.answer.s_intervals.empty() != r.answer.t_intervals.empty()) {
-    r.undecided_reasons.push_back("one projection found a meeting and the other none (a meeting set thinner than the strips)");
+    r.undecided_reasons.push_back(
+        "one projection found a meeting and the other none (a meeting set thinner than the strips)");
     r.answer.undecided.push_back(Instant{"0", std::nullopt, std::nullopt, 0.0});
   }
   r.undecided_reasons = one_per_cause(r.undecided_reasons);
-  r.counters = {{"box_tests", ps.tests + pt.tests}, {"strips", ps.strips + pt.strips}, {"point_tests", ps.points + pt.points}};
+  r.counters = {
+      {"box_tests", ps.tests + pt.tests}, {"strips", ps.strips + pt.strips}, {"point_tests", ps.points + pt.points}};
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

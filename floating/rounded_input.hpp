@@ -43,7 +43,6 @@
 
 namespace eccd {
 
-
 // The scene's pair rounded to T and prepared in T. trouble: "" or why a stage
 // is not finite.
 template <class T, int H>
@@ -56,13 +55,19 @@ MovingPair<T, H> round_pair(const Scene& s, const T& like, std::string& trouble)
   auto shape = [&](const SceneObject& o, Matrix<T, H>& q, const char* name) {
     for (int i = 0; i < H; ++i)
       for (int j = 0; j < H; ++j) q[i][j] = conv(o.Q.at(i).at(j));
-    if (!normalise_pow2<T>([&](auto f) { for (auto& row : q) for (auto& x : row) f(x); }) && trouble.empty())
+    if (!normalise_pow2<T>([&](auto f) {
+          for (auto& row : q)
+            for (auto& x : row) f(x);
+        }) &&
+        trouble.empty())
       trouble = std::string("non-finite value in the shape matrix of object ") + name;
   };
   auto motion = [&](const SceneObject& o, PolyMatrix<T, H>& n, const char* name) {
     n = motion_inverse<T, H>(o.motion, conv);
     bool ok = normalise_pow2<T>([&](auto f) {
-      for (auto& row : n) for (auto& e : row) for (auto& c : e.c) f(c);
+      for (auto& row : n)
+        for (auto& e : row)
+          for (auto& c : e.c) f(c);
     });
     if (!ok && trouble.empty()) trouble = std::string("overflow in the motion inverse N(t) of object ") + name;
   };
@@ -86,7 +91,8 @@ MovingPair<T, H> round_pair(const Scene& s, const T& like, std::string& trouble)
   if (used) {
     long k = std::lround(sum / (used * H));
     if (k != 0)
-      for (auto& row : m.qb) for (auto& x : row) x = times_pow2(x, -k);
+      for (auto& row : m.qb)
+        for (auto& x : row) x = times_pow2(x, -k);
   }
   return m;
 }
@@ -96,14 +102,21 @@ template <class T, int H>
 MovingPairBern<T, H> to_bernstein_pair(const MovingPair<T, H>& m) {
   const T& like = m.qa[0][0];
   auto bern = [&](const Poly<T>& e) {
-    if (e.is_zero()) { Bern<T> r; r.b.push_back(scalar_traits<T>::from_rational(mpq_class(0), like)); return r; }
+    if (e.is_zero()) {
+      Bern<T> r;
+      r.b.push_back(scalar_traits<T>::from_rational(mpq_class(0), like));
+      return r;
+    }
     return to_bernstein(e, std::max(e.degree(), 0));
   };
   MovingPairBern<T, H> out;
   out.qa = m.qa;
   out.qb = m.qb;
   for (int i = 0; i < H; ++i)
-    for (int j = 0; j < H; ++j) { out.na[i][j] = bern(m.na[i][j]); out.nb[i][j] = bern(m.nb[i][j]); }
+    for (int j = 0; j < H; ++j) {
+      out.na[i][j] = bern(m.na[i][j]);
+      out.nb[i][j] = bern(m.nb[i][j]);
+    }
   return out;
 }
 
@@ -126,11 +139,17 @@ std::vector<Bern<T>> characteristic_bernstein_of(const MovingPair<T, H>& m, bool
 // Scales g_0..g_N (Bernstein form) by one power of two; false if a value is not finite.
 template <class T>
 bool normalise_coefficients(std::vector<Bern<T>>& g) {
-  return normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.b) f(x); });
+  return normalise_pow2<T>([&](auto f) {
+    for (auto& gi : g)
+      for (auto& x : gi.b) f(x);
+  });
 }
 template <class T>
 bool normalise_coefficients(std::vector<Poly<T>>& g) {
-  return normalise_pow2<T>([&](auto f) { for (auto& gi : g) for (auto& x : gi.c) f(x); });
+  return normalise_pow2<T>([&](auto f) {
+    for (auto& gi : g)
+      for (auto& x : gi.c) f(x);
+  });
 }
 
 }  // namespace eccd

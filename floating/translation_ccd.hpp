@@ -76,8 +76,10 @@ inline double plain(double x) { return x; }
 inline double plain(const Bounded<double>& x) { return x.value(); }
 template <class T>
 T point(double x) {
-  if constexpr (has_error_bound_v<T>) return T(x, 0);
-  else return x;
+  if constexpr (has_error_bound_v<T>)
+    return T(x, 0);
+  else
+    return x;
 }
 template <class T>
 bool surely_positive(const T& x) {
@@ -95,7 +97,8 @@ M3<T> adjugate3(const M3<T>& g) {
   M3<T> a;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      a[i][j] = g[(j + 1) % 3][(i + 1) % 3] * g[(j + 2) % 3][(i + 2) % 3] - g[(j + 1) % 3][(i + 2) % 3] * g[(j + 2) % 3][(i + 1) % 3];
+      a[i][j] = g[(j + 1) % 3][(i + 1) % 3] * g[(j + 2) % 3][(i + 2) % 3] -
+                g[(j + 1) % 3][(i + 2) % 3] * g[(j + 2) % 3][(i + 1) % 3];
   return a;
 }
 template <class T>
@@ -315,8 +318,8 @@ inline double line_margin(const Hk& e) { return e.v[0] - e.v[1] * e.v[1] / (4 * 
 
 // The first contact (upper = false: the λ maximising t₋) or the last (upper: minimising t₊), refined by
 // Newton's method on H_λ(λ, t(λ)) = 0 inside [lo, hi]; false if a root in t went missing.
-inline bool refine_end(const std::array<std::array<double, 5>, 3>& h, bool upper, double lo, double hi, double& lam, double& t,
-                       long& steps) {
+inline bool refine_end(const std::array<std::array<double, 5>, 3>& h, bool upper, double lo, double hi, double& lam,
+                       double& t, long& steps) {
   for (int it = 0; it < 40; ++it) {
     const Hk e = eval_hk(h, lam);
     double r0, r1;
@@ -327,13 +330,16 @@ inline bool refine_end(const std::array<std::array<double, 5>, 3>& h, bool upper
     const double Hll = e.d2[0] + t * (e.d2[1] + t * e.d2[2]);
     const double Hlt = e.d1[1] + 2 * t * e.d1[2];
     if (Ht == 0) return false;
-    const double dt = -Hl / Ht;           // t'(λ)
-    const double g1 = Hll + Hlt * dt;     // d/dλ of H_λ(λ, t(λ))
+    const double dt = -Hl / Ht;        // t'(λ)
+    const double g1 = Hll + Hlt * dt;  // d/dλ of H_λ(λ, t(λ))
     ++steps;
     double next = g1 != 0 ? lam - Hl / g1 : 0.5 * (lo + hi);
     if (!(next > lo)) next = 0.5 * (lam + lo);  // Newton left the bracket: halve towards its side
     if (!(next < hi)) next = 0.5 * (lam + hi);
-    if (std::abs(next - lam) <= 1e-15 * std::max(1.0, std::abs(lam))) { lam = next; break; }
+    if (std::abs(next - lam) <= 1e-15 * std::max(1.0, std::abs(lam))) {
+      lam = next;
+      break;
+    }
     lam = next;
   }
   const Hk e = eval_hk(h, lam);
@@ -406,8 +412,17 @@ bool overlap_at(const TranslatingPair<T>& P, double t) {
   for (int it = 0; it < 100; ++it) {
     if (c.qa < 1 && c.qb < 1) break;
     const double f = c.qa - c.qb;
-    if (f > 0) { lo = lam; flo = f; if (side == 1) fhi *= 0.5; side = 1; }
-    else { hi = lam; fhi = f; if (side == -1) flo *= 0.5; side = -1; }
+    if (f > 0) {
+      lo = lam;
+      flo = f;
+      if (side == 1) fhi *= 0.5;
+      side = 1;
+    } else {
+      hi = lam;
+      fhi = f;
+      if (side == -1) flo *= 0.5;
+      side = -1;
+    }
     if (!(hi - lo > 1e-17)) break;
     lam = (flo == 1 && fhi == -1) ? 0.5 * (lo + hi) : lo + (hi - lo) * flo / (flo - fhi);
     if (!(lam > lo && lam < hi)) lam = 0.5 * (lo + hi);
@@ -453,8 +468,19 @@ inline double best_line_witness(const std::array<std::array<double, 5>, 3>& h, d
   };
   double f1 = m(x1), f2 = m(x2);
   for (int it = 0; it < 60 && hi - lo > 1e-13; ++it) {
-    if (f1 < f2) { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = m(x2); }
-    else { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = m(x1); }
+    if (f1 < f2) {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + g * (hi - lo);
+      f2 = m(x2);
+    } else {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - g * (hi - lo);
+      f1 = m(x1);
+    }
   }
   return f1 < f2 ? x2 : x1;
 }
@@ -473,11 +499,20 @@ std::optional<TranslationResult> translation_ccd(const TranslatingPair<T>& P) {
     const Hk e = eval_hk(P.hd, l);
     if (!(e.v[2] > 0)) return std::nullopt;  // no relative translation, or not read as a pencil of ellipsoids
     const double m = line_margin(e);
-    if (m > best_margin) { best_margin = m; lmiss = l; }
+    if (m > best_margin) {
+      best_margin = m;
+      lmiss = l;
+    }
     double r0, r1;
     if (!t_roots(e, r0, r1)) continue;
-    if (r0 > tin) { tin = r0; lin = l; }
-    if (r1 < tout) { tout = r1; lout = l; }
+    if (r0 > tin) {
+      tin = r0;
+      lin = l;
+    }
+    if (r1 < tout) {
+      tout = r1;
+      lout = l;
+    }
   }
   auto bracket = [](double l) { return std::make_pair(std::max(0.0, l - 1.0 / N), std::min(1.0, l + 1.0 / N)); };
   auto separate = [&](double lam) {

@@ -53,11 +53,14 @@ class AnimationReader {
   const StrictJson& doc_;
   int dim_ = 3;
 
-  void check_keys(const json& j, const std::string& ptr, const std::vector<std::string>& allowed, const std::string& what) const {
+  void check_keys(const json& j, const std::string& ptr, const std::vector<std::string>& allowed,
+                  const std::string& what) const {
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
       for (const auto& a : allowed) ok = ok || a == it.key();
-      if (!ok) fail(child(ptr, it.key()), "unknown key " + json_quote(it.key()) + " in " + what + "; allowed keys: " + join(allowed));
+      if (!ok)
+        fail(child(ptr, it.key()),
+             "unknown key " + json_quote(it.key()) + " in " + what + "; allowed keys: " + join(allowed));
     }
   }
   const json& member(const json& j, const std::string& ptr, const std::string& key, const std::string& what) const {
@@ -75,8 +78,11 @@ class AnimationReader {
   }
   Rational number(const json& j, const std::string& ptr) const { return json_rational(doc_, j, label_, ptr); }
   std::vector<Rational> numbers(const json& j, const std::string& ptr, std::size_t n, const std::string& what) const {
-    if (!j.is_array()) fail(ptr, what + " must be an array of " + std::to_string(n) + " numbers, got " + json_type_name(j));
-    if (j.size() != n) fail(ptr, what + " must have " + std::to_string(n) + " entries (dim " + std::to_string(dim_) + "), got " + std::to_string(j.size()));
+    if (!j.is_array())
+      fail(ptr, what + " must be an array of " + std::to_string(n) + " numbers, got " + json_type_name(j));
+    if (j.size() != n)
+      fail(ptr, what + " must have " + std::to_string(n) + " entries (dim " + std::to_string(dim_) + "), got " +
+                    std::to_string(j.size()));
     std::vector<Rational> r;
     for (std::size_t i = 0; i < n; ++i) r.push_back(number(j[i], child(ptr, i)));
     return r;
@@ -96,7 +102,8 @@ KeyPose AnimationReader::pose(const json& j, const std::string& ptr) const {
   const std::string op = child(ptr, "orientation");
   const json& o = member(j, ptr, "orientation", what);
   const std::size_t nq = dim_ == 3 ? 4 : 2;
-  p.orientation = numbers(o, op, nq, dim_ == 3 ? "orientation (a quaternion [w, x, y, z])" : "orientation (a pair [w, z])");
+  p.orientation =
+      numbers(o, op, nq, dim_ == 3 ? "orientation (a quaternion [w, x, y, z])" : "orientation (a pair [w, z])");
   bool zero = true;
   for (const auto& x : p.orientation) zero = zero && sgn(x) == 0;
   if (zero)
@@ -124,22 +131,24 @@ KeyPose AnimationReader::pose(const json& j, const std::string& ptr) const {
 }
 
 // q(τ) and D(τ) of every frame (kernel/keyframe_motion.hpp) must not vanish on [0, 1].
-void AnimationReader::check_frames(const AnimationBody& b, const std::string& ptr, const std::vector<Rational>& times) const {
+void AnimationReader::check_frames(const AnimationBody& b, const std::string& ptr,
+                                   const std::vector<Rational>& times) const {
   for (std::size_t k = 0; k + 1 < b.poses.size(); ++k) {
     const KeyPose& p0 = b.poses[k];
     const KeyPose& p1 = b.poses[k + 1];
-    const std::string frame = "body " + json_quote(b.name) + ", frame " + std::to_string(k) + " (t from " + times[k].get_str() +
-                              " to " + times[k + 1].get_str() + ")";
+    const std::string frame = "body " + json_quote(b.name) + ", frame " + std::to_string(k) + " (t from " +
+                              times[k].get_str() + " to " + times[k + 1].get_str() + ")";
     const std::string where = child(child(ptr, "poses"), k + 1);
     const RPoly w = keyframe_weight(p0.orientation, shorter_way(p0.orientation, p1.orientation));
     if (std::string at = root_in_unit(w); !at.empty())
-      fail(child(where, "orientation"), frame + ": the interpolated orientation q(τ) vanishes " + at +
-                                           " (the key orientations are opposite, a half turn apart): its rotation is undefined there");
+      fail(child(where, "orientation"),
+           frame + ": the interpolated orientation q(τ) vanishes " + at +
+               " (the key orientations are opposite, a half turn apart): its rotation is undefined there");
     if (!keyframe_is_identity(p0, dim_) || !keyframe_is_identity(p1, dim_)) {
       const RPoly det = keyframe_deformation_det(p0, p1, dim_);
       if (std::string at = root_in_unit(det); !at.empty())
-        fail(child(where, "deformation"), frame + ": the interpolated deformation D(τ) is singular: det D(τ) = 0 " + at +
-                                             " (det D must stay positive between the key poses)");
+        fail(child(where, "deformation"), frame + ": the interpolated deformation D(τ) is singular: det D(τ) = 0 " +
+                                              at + " (det D must stay positive between the key poses)");
     }
   }
 }
@@ -178,12 +187,14 @@ void AnimationReader::pairs(Animation& a, const json* j) const {
     a.pairs_rule = "between-groups";
     for (std::size_t i = 0; i < n; ++i)
       if (!a.bodies[i].has_group)
-        fail(child(child("/bodies", i), "name"), "pairs is \"between-groups\" but body " + json_quote(a.bodies[i].name) +
+        fail(child(child("/bodies", i), "name"), "pairs is \"between-groups\" but body " +
+                                                     json_quote(a.bodies[i].name) +
                                                      " has no group (add \"group\": \"...\")");
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t k = i + 1; k < n; ++k)
         if (a.bodies[i].group != a.bodies[k].group) a.pairs.push_back({i, k});
-    if (a.pairs.empty()) fail("/pairs", "pairs is \"between-groups\" but every body is in the same group: no pair to check");
+    if (a.pairs.empty())
+      fail("/pairs", "pairs is \"between-groups\" but every body is in the same group: no pair to check");
     return;
   }
   if (!j->is_array())
@@ -205,7 +216,8 @@ void AnimationReader::pairs(Animation& a, const json* j) const {
       const std::string sp = child(ep, s);
       if (!p[s].is_string()) fail(sp, "a body name must be a string, got " + json_type_name(p[s]));
       auto it = index.find(p[s].get<std::string>());
-      if (it == index.end()) fail(sp, "unknown body name " + json_quote(p[s].get<std::string>()) + " (no body of that name)");
+      if (it == index.end())
+        fail(sp, "unknown body name " + json_quote(p[s].get<std::string>()) + " (no body of that name)");
       ids[s] = it->second;
     }
     if (ids[0] == ids[1]) fail(ep, "a pair of a body with itself (" + json_quote(a.bodies[ids[0]].name) + ")");
@@ -240,24 +252,28 @@ Animation AnimationReader::animation(const json& root) {
     a.note = note->get<std::string>();
   }
   const json& times = member(root, "", "times", what);
-  if (!times.is_array()) fail("/times", "times must be an array of key times [\"t0\", \"t1\", ...], got " + json_type_name(times));
-  if (times.size() < 2) fail("/times", "times needs at least two key times (one frame), got " + std::to_string(times.size()));
+  if (!times.is_array())
+    fail("/times", "times must be an array of key times [\"t0\", \"t1\", ...], got " + json_type_name(times));
+  if (times.size() < 2)
+    fail("/times", "times needs at least two key times (one frame), got " + std::to_string(times.size()));
   for (std::size_t k = 0; k < times.size(); ++k) {
     a.times.push_back(number(times[k], child("/times", k)));
     if (k > 0 && !(a.times[k - 1] < a.times[k]))
-      fail(child("/times", k), "times must be strictly increasing: t_" + std::to_string(k) + " = " + a.times[k].get_str() +
-                                   " does not exceed t_" + std::to_string(k - 1) + " = " + a.times[k - 1].get_str());
+      fail(child("/times", k), "times must be strictly increasing: t_" + std::to_string(k) + " = " +
+                                   a.times[k].get_str() + " does not exceed t_" + std::to_string(k - 1) + " = " +
+                                   a.times[k - 1].get_str());
   }
   const json& bodies = member(root, "", "bodies", what);
   if (!bodies.is_array()) fail("/bodies", "bodies must be an array of bodies, got " + json_type_name(bodies));
-  if (bodies.size() < 2) fail("/bodies", "an animation needs at least two bodies, got " + std::to_string(bodies.size()));
+  if (bodies.size() < 2)
+    fail("/bodies", "an animation needs at least two bodies, got " + std::to_string(bodies.size()));
   std::map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const std::string bp = child("/bodies", i);
     AnimationBody b = body(bodies[i], bp, a.times.size());
     if (auto it = names.find(b.name); it != names.end())
-      fail(child(bp, "name"), "duplicate body name " + json_quote(b.name) + " (also /bodies/" + std::to_string(it->second) +
-                                  "); names must be unique");
+      fail(child(bp, "name"), "duplicate body name " + json_quote(b.name) + " (also /bodies/" +
+                                  std::to_string(it->second) + "); names must be unique");
     names[b.name] = i;
     check_frames(b, bp, a.times);
     a.bodies.push_back(std::move(b));

@@ -45,7 +45,7 @@ namespace eccd {
 
 struct AnimationBody {
   std::string name;
-  std::string group;       // "" when the file gives none
+  std::string group;  // "" when the file gives none
   bool has_group = false;
   std::vector<std::vector<Rational>> Q;  // the shape, (dim+1) x (dim+1), in the body's frame
   std::vector<KeyPose> poses;            // one per key time
@@ -57,7 +57,7 @@ struct Animation {
   int dim = 3;
   std::vector<Rational> times;  // t_0 < t_1 < ... < t_K
   std::vector<AnimationBody> bodies;
-  std::string pairs_rule = "all";  // "all" | "between-groups" | "list"
+  std::string pairs_rule = "all";                          // "all" | "between-groups" | "list"
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // body indices i < j, in the order of bodies
   std::size_t frames() const { return times.empty() ? 0 : times.size() - 1; }
 };

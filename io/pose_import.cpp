@@ -61,7 +61,9 @@ std::string canonical_number(const Rational& q_in) {
 }
 
 std::string number_from_double(double x) {
-  if (!std::isfinite(x)) throw std::invalid_argument(std::string(std::isnan(x) ? "NaN" : "an infinite value") + " is not a number of the animation format");
+  if (!std::isfinite(x))
+    throw std::invalid_argument(std::string(std::isnan(x) ? "NaN" : "an infinite value") +
+                                " is not a number of the animation format");
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round-trip
   return canonical_number(parse_rational(std::string(buf, r.ptr)));
@@ -156,7 +158,8 @@ Keyframes shapes_from_text(const std::string& json_text, const std::string& labe
     fail("/format", std::string("expected \"") + kShapesFormat + "\"");
   Keyframes k;
   if (root.contains("name")) {
-    if (!root["name"].is_string() || root["name"].get<std::string>().empty()) fail("/name", "expected a non-empty string");
+    if (!root["name"].is_string() || root["name"].get<std::string>().empty())
+      fail("/name", "expected a non-empty string");
     k.name = root["name"].get<std::string>();
   }
   if (root.contains("note")) {
@@ -168,7 +171,8 @@ Keyframes shapes_from_text(const std::string& json_text, const std::string& labe
   if (dim != 2 && dim != 3) fail("/dim", "expected 2 or 3");
   k.dim = int(dim.get_num().get_si());
   if (!root.contains("bodies") || !root["bodies"].is_array() || root["bodies"].size() < 2)
-    fail(root.contains("bodies") ? "/bodies" : "", "expected \"bodies\": a list of at least two bodies {\"name\", \"shape\"}");
+    fail(root.contains("bodies") ? "/bodies" : "",
+         "expected \"bodies\": a list of at least two bodies {\"name\", \"shape\"}");
   std::set<std::string> names;
   for (std::size_t i = 0; i < root["bodies"].size(); ++i) {
     const nlohmann::json& b = root["bodies"][i];
@@ -191,7 +195,8 @@ Keyframes shapes_from_text(const std::string& json_text, const std::string& labe
     body.shape = nlohmann::ordered_json::parse(b["shape"].dump());
     k.bodies.push_back(std::move(body));
   }
-  if (root.contains("pairs")) k.pairs = nlohmann::ordered_json::parse(root["pairs"].dump());  // checked with the animation
+  if (root.contains("pairs"))
+    k.pairs = nlohmann::ordered_json::parse(root["pairs"].dump());  // checked with the animation
   return k;
 }
 
@@ -205,7 +210,12 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
   std::map<std::string, std::size_t> body_index;
   for (std::size_t i = 0; i < k.bodies.size(); ++i) body_index[k.bodies[i].name] = i;
 
-  struct Row { Rational t; std::size_t body; KeyframePose pose; long line; };
+  struct Row {
+    Rational t;
+    std::size_t body;
+    KeyframePose pose;
+    long line;
+  };
   std::vector<Row> rows;
   std::size_t start = 0;
   long line = 0;
@@ -217,7 +227,8 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
     start = end + 1;
     ++line;
     const std::string where = csv_label + ": line " + std::to_string(line);
-    if (text.find('\0') != std::string::npos) throw SceneError(where + ": a NUL byte (a binary file, not a CSV of poses)");
+    if (text.find('\0') != std::string::npos)
+      throw SceneError(where + ": a NUL byte (a binary file, not a CSV of poses)");
     const std::string t = trim(text);
     if (t.empty() || t[0] == '#') {
       if (end == csv_text.size()) break;
@@ -243,8 +254,8 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
       try {
         return parse_rational(fields[col]);
       } catch (const std::invalid_argument& e) {
-        throw SceneError(where + ", column " + std::to_string(col + 1) + " (" + columns[col] + "): " +
-                         json_quote(fields[col]) + ": " + e.what());
+        throw SceneError(where + ", column " + std::to_string(col + 1) + " (" + columns[col] +
+                         "): " + json_quote(fields[col]) + ": " + e.what());
       }
     };
     Row r;
@@ -254,8 +265,8 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
     if (it == body_index.end()) {
       std::string known;
       for (const auto& b : k.bodies) known += (known.empty() ? "" : ", ") + b.name;
-      throw SceneError(where + ", column 2 (body): " + json_quote(fields[1]) + " is not a body of the shapes file (its bodies: " +
-                       known + ")");
+      throw SceneError(where + ", column 2 (body): " + json_quote(fields[1]) +
+                       " is not a body of the shapes file (its bodies: " + known + ")");
     }
     r.body = it->second;
     for (int i = 0; i < dim; ++i) r.pose.position.push_back(canonical_number(number(std::size_t(2 + i))));
@@ -266,7 +277,8 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
         zero = zero && q == 0;
         r.pose.orientation.push_back(canonical_number(q));
       }
-      if (zero) throw SceneError(where + ", columns 6-9 (qw, qx, qy, qz): the quaternion is zero, which is no rotation");
+      if (zero)
+        throw SceneError(where + ", columns 6-9 (qw, qx, qy, qz): the quaternion is zero, which is no rotation");
     } else {
       const Rational angle = number(4);
       r.pose.orientation = orientation_of_angle(nearest_double(angle));

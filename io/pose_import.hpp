@@ -65,8 +65,8 @@ struct KeyframePose {
   std::vector<std::vector<std::string>> deformation;  // dim x dim, or empty (the identity)
 };
 struct KeyframeBody {
-  std::string name, group;  // group "" = none
-  nlohmann::ordered_json shape;  // a shape of the scene format
+  std::string name, group;          // group "" = none
+  nlohmann::ordered_json shape;     // a shape of the scene format
   std::vector<KeyframePose> poses;  // one per key time
 };
 struct Keyframes {

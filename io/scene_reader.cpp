@@ -54,8 +54,9 @@ InputLimits& input_limits() {
 
 namespace {
 [[noreturn]] void beyond_digits(const char* part, std::size_t digits, bool at_least = false) {
-  bad_number(std::string(part) + " has " + (at_least ? "at least " : "") + std::to_string(digits) + " digits, beyond the input limit of " +
-             std::to_string(input_limits().max_digits) + " digits per number (--max-digits)");
+  bad_number(std::string(part) + " has " + (at_least ? "at least " : "") + std::to_string(digits) +
+             " digits, beyond the input limit of " + std::to_string(input_limits().max_digits) +
+             " digits per number (--max-digits)");
 }
 void check_digits(const mpq_class& q) {
   const std::size_t lim = input_limits().max_digits;
@@ -114,14 +115,20 @@ Rational parse_rational(const std::string& text) {
   while (j < text.size() && text[j] >= '0' && text[j] <= '9') mantissa += text[j++];
   if (j < text.size() && text[j] == '.') {
     ++j;
-    while (j < text.size() && text[j] >= '0' && text[j] <= '9') { mantissa += text[j++]; ++frac_len; }
+    while (j < text.size() && text[j] >= '0' && text[j] <= '9') {
+      mantissa += text[j++];
+      ++frac_len;
+    }
   }
   if (mantissa.empty()) bad_number(std::string("no digits; ") + kNumberForms);
   long exponent = 0;
   if (j < text.size() && (text[j] == 'e' || text[j] == 'E')) {
     ++j;
     bool eneg = false;
-    if (j < text.size() && (text[j] == '+' || text[j] == '-')) { eneg = text[j] == '-'; ++j; }
+    if (j < text.size() && (text[j] == '+' || text[j] == '-')) {
+      eneg = text[j] == '-';
+      ++j;
+    }
     std::string ed;
     while (j < text.size() && text[j] >= '0' && text[j] <= '9') ed += text[j++];
     if (ed.empty()) bad_number("the exponent has no digits");
@@ -145,7 +152,8 @@ Rational parse_rational(const std::string& text) {
     std::size_t lim = input_limits().max_digits;
     if (e0 >= 0 && core + std::size_t(e0) > lim + 1) beyond_digits("the number", core + std::size_t(e0));
     // the denominator in lowest terms is at least 10^-e0 / core: more than -e0 - core digits
-    if (e0 < 0 && std::size_t(-e0) > core + lim + 1) beyond_digits("its denominator (in lowest terms)", std::size_t(-e0) - core, true);
+    if (e0 < 0 && std::size_t(-e0) > core + lim + 1)
+      beyond_digits("its denominator (in lowest terms)", std::size_t(-e0) - core, true);
   }
   mpz_class m(mantissa, 10);
   const long e = exponent - frac_len;
@@ -221,9 +229,12 @@ constexpr std::size_t kMaxDepth = 64;
 std::string escape_token(const std::string& k) {
   std::string r;
   for (char ch : k) {
-    if (ch == '~') r += "~0";
-    else if (ch == '/') r += "~1";
-    else r += ch;
+    if (ch == '~')
+      r += "~0";
+    else if (ch == '/')
+      r += "~1";
+    else
+      r += ch;
   }
   return r;
 }
@@ -251,11 +262,16 @@ std::string shorten_digits(const std::string& m) {
   std::string r;
   std::size_t i = 0;
   while (i < m.size()) {
-    if (m[i] < '0' || m[i] > '9') { r += m[i++]; continue; }
+    if (m[i] < '0' || m[i] > '9') {
+      r += m[i++];
+      continue;
+    }
     std::size_t j = i;
     while (j < m.size() && m[j] >= '0' && m[j] <= '9') ++j;
-    if (j - i > 40) r += m.substr(i, 20) + "...(" + std::to_string(j - i) + " digits)..." + m.substr(j - 8, 8);
-    else r += m.substr(i, j - i);
+    if (j - i > 40)
+      r += m.substr(i, 20) + "...(" + std::to_string(j - i) + " digits)..." + m.substr(j - 8, 8);
+    else
+      r += m.substr(i, j - i);
     i = j;
   }
   return r;
@@ -269,15 +285,23 @@ std::string quote(const std::string& s) {
 
 std::string type_name(const json& j) {
   switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return "a boolean";
+    case json::value_t::string:
+      return "a string";
     case json::value_t::number_integer:
-    case json::value_t::number_unsigned: return "an integer";
-    case json::value_t::number_float: return "a number with a fraction part";
-    case json::value_t::object: return "an object";
-    case json::value_t::array: return "an array";
-    default: return "an unexpected value";
+    case json::value_t::number_unsigned:
+      return "an integer";
+    case json::value_t::number_float:
+      return "a number with a fraction part";
+    case json::value_t::object:
+      return "an object";
+    case json::value_t::array:
+      return "an array";
+    default:
+      return "an unexpected value";
   }
 }
 
@@ -307,8 +331,10 @@ std::string poly_text(const RPoly& p) {
       term += term.empty() ? "t" : " t";
       if (i > 1) term += '^' + std::to_string(i);
     }
-    if (r.empty()) r = (sgn(c) < 0 ? "-" : "") + term;
-    else r += (sgn(c) < 0 ? " - " : " + ") + term;
+    if (r.empty())
+      r = (sgn(c) < 0 ? "-" : "") + term;
+    else
+      r += (sgn(c) < 0 ? " - " : " + ") + term;
     if (r.size() > 200) return r + " ...";
   }
   return r;
@@ -348,21 +374,45 @@ class DomBuilder {
   std::size_t error_byte = 0;
   std::string json_error_what;
 
-  bool null() { put(json(nullptr)); return true; }
-  bool boolean(bool v) { put(json(v)); return true; }
-  bool number_integer(number_integer_t v) { put(json(v)); return true; }
-  bool number_unsigned(number_unsigned_t v) { put(json(v)); return true; }
+  bool null() {
+    put(json(nullptr));
+    return true;
+  }
+  bool boolean(bool v) {
+    put(json(v));
+    return true;
+  }
+  bool number_integer(number_integer_t v) {
+    put(json(v));
+    return true;
+  }
+  bool number_unsigned(number_unsigned_t v) {
+    put(json(v));
+    return true;
+  }
   bool number_float(number_float_t v, const string_t& s) {
     float_text[current_pointer()] = s;
     put(json(v));
     return true;
   }
-  bool string(string_t& s) { put(json(std::move(s))); return true; }
-  bool binary(binary_t& b) { put(json::binary(std::move(b))); return true; }
+  bool string(string_t& s) {
+    put(json(std::move(s)));
+    return true;
+  }
+  bool binary(binary_t& b) {
+    put(json::binary(std::move(b)));
+    return true;
+  }
   bool start_object(std::size_t) { return open(json::object()); }
   bool start_array(std::size_t) { return open(json::array()); }
-  bool end_object() { close(); return true; }
-  bool end_array() { close(); return true; }
+  bool end_object() {
+    close();
+    return true;
+  }
+  bool end_array() {
+    close();
+    return true;
+  }
   bool key(string_t& k) {
     if (stack_.back()->contains(k)) {
       error_place = pointer_of(tokens_.size()) + "/" + escape_token(k);
@@ -399,9 +449,15 @@ class DomBuilder {
     return pointer_of(tokens_.size()) + "/" + current_token();
   }
   json* put(json&& v) {
-    if (stack_.empty()) { root = std::move(v); return &root; }
+    if (stack_.empty()) {
+      root = std::move(v);
+      return &root;
+    }
     json& top = *stack_.back();
-    if (top.is_array()) { top.push_back(std::move(v)); return &top.back(); }
+    if (top.is_array()) {
+      top.push_back(std::move(v));
+      return &top.back();
+    }
     json& slot = top[keys_.back()];
     slot = std::move(v);
     return &slot;
@@ -436,7 +492,8 @@ class Reader {
   }
 
   Scene scene(const json& root);
-  std::vector<std::vector<Rational>> shape_of_dim(const json& j, const std::string& ptr, int dim) {  // parse_strict_json users
+  std::vector<std::vector<Rational>> shape_of_dim(const json& j, const std::string& ptr,
+                                                  int dim) {  // parse_strict_json users
     dim_ = dim;
     return shape(j, ptr);
   }
@@ -444,7 +501,8 @@ class Reader {
   // independent: the scene's "parameters" (nullopt: from the keys, for an answer file).
   Answer answer(const json& j, const std::string& ptr, std::optional<bool> independent = std::nullopt);
   Answer independent_answer(const json& j, const std::string& ptr);
-  std::vector<std::pair<Instant, Instant>> interval_list(const json& j, const std::string& ptr, const std::string& name) const;
+  std::vector<std::pair<Instant, Instant>> interval_list(const json& j, const std::string& ptr,
+                                                         const std::string& name) const;
   Instant instant(const json& j, const std::string& ptr) const;
 
  private:
@@ -462,7 +520,8 @@ class Reader {
       bool ok = false;
       for (const auto& a : allowed) ok = ok || a == it.key();
       if (!ok)
-        fail(child(ptr, it.key()), "unknown key " + quote(it.key()) + " in " + what + "; allowed keys: " + join(allowed));
+        fail(child(ptr, it.key()),
+             "unknown key " + quote(it.key()) + " in " + what + "; allowed keys: " + join(allowed));
     }
   }
   const json* find(const json& j, const std::string& key) const {
@@ -536,12 +595,12 @@ Rational Reader::number(const json& j, const std::string& ptr) const {
     if (integer_text) {  // an integer too large for 64 bits: the raw digits are exact
       try {
         return parse_rational(raw);
-      } catch (const std::invalid_argument&) {
-      }
+      } catch (const std::invalid_argument&) {}
     }
     fail(ptr, "the JSON number " + raw +
                   " has a fraction part or exponent, and a JSON parser may already have rounded it; "
-                  "write it as a string \"" + raw + "\" for its exact decimal value");
+                  "write it as a string \"" +
+                  raw + "\" for its exact decimal value");
   }
   fail(ptr, "expected a number (a string such as \"-3/7\" or \"1.8\", or a JSON integer), got " + type_name(j));
 }
@@ -586,7 +645,8 @@ std::vector<std::vector<Rational>> Reader::shape(const json& j, const std::strin
     if (find(j, k)) given.push_back(k);
   if (given.empty()) fail(ptr, "a shape needs exactly one of the keys semi_axes, semi_axes_squared, matrix");
   if (given.size() > 1)
-    fail(ptr, "a shape takes exactly one of semi_axes, semi_axes_squared, matrix; this one has " + join(given, " and "));
+    fail(ptr,
+         "a shape takes exactly one of semi_axes, semi_axes_squared, matrix; this one has " + join(given, " and "));
   const std::string& kind = given[0];
   const std::string kp = child(ptr, kind);
   const json& v = *find(j, kind);
@@ -648,11 +708,10 @@ Motion Reader::motion(const json& j, const std::string& ptr) const {
   for (const auto& k : types) known = known || k == type;
   if (!known) fail(tp, "unknown motion type " + quote(type) + "; allowed types: " + join(types));
   const std::string dims = "dim " + std::to_string(dim_);
-  const std::string allowed_here =
-      dim_ == 2 ? "static, matrix, kinematic, cycloidal" : "static, matrix, euler";
+  const std::string allowed_here = dim_ == 2 ? "static, matrix, kinematic, cycloidal" : "static, matrix, euler";
   if ((type == "kinematic" || type == "cycloidal") && dim_ != 2)
-    fail(tp, "motion type " + quote(type) + " is for dim 2 only, but this scene has " + dims +
-                 " (allowed for " + dims + ": " + allowed_here + ")");
+    fail(tp, "motion type " + quote(type) + " is for dim 2 only, but this scene has " + dims + " (allowed for " + dims +
+                 ": " + allowed_here + ")");
   if (type == "euler" && dim_ != 3)
     fail(tp, "motion type \"euler\" is for dim 3 only, but this scene has " + dims + " (allowed for " + dims + ": " +
                  allowed_here + ")");
@@ -776,13 +835,12 @@ Instant Reader::instant(const json& j, const std::string& ptr) const {
   if (has_lo != has_hi)
     fail(ptr, std::string("lo and hi must both be rational strings (certified) or both null; here ") +
                   (has_lo ? "hi" : "lo") + " is null");
-  if (has_lo && *in.lo > *in.hi)
-    fail(ptr, "lo > hi: lo = " + in.lo->get_str() + ", hi = " + in.hi->get_str());
+  if (has_lo && *in.lo > *in.hi) fail(ptr, "lo > hi: lo = " + in.lo->get_str() + ", hi = " + in.hi->get_str());
   return in;
 }
 
 std::vector<std::pair<Instant, Instant>> Reader::interval_list(const json& j, const std::string& ptr,
-                                                                const std::string& name) const {
+                                                               const std::string& name) const {
   if (!j.is_array()) fail(ptr, name + " must be an array of [start, end] pairs of instants, got " + type_name(j));
   std::vector<std::pair<Instant, Instant>> out;
   for (std::size_t i = 0; i < j.size(); ++i) {
@@ -804,9 +862,10 @@ Answer Reader::independent_answer(const json& j, const std::string& ptr) {
   const std::string what = "an answer of independent motions";
   for (const char* k : {"intervals", "first_contact", "contacts", "contact_intervals"})
     if (find(j, k))
-      fail(child(ptr, k), std::string("\"") + k +
-                              "\" does not apply to independent motions (\"parameters\": \"independent\"): their answer is "
-                              "collides, s_intervals and t_intervals");
+      fail(child(ptr, k),
+           std::string("\"") + k +
+               "\" does not apply to independent motions (\"parameters\": \"independent\"): their answer is "
+               "collides, s_intervals and t_intervals");
   check_keys(j, ptr, {"collides", "s_intervals", "t_intervals"}, what);
   const json& c = member(j, ptr, "collides", what);
   if (!c.is_boolean()) fail(child(ptr, "collides"), "collides must be true or false, got " + type_name(c));
@@ -831,8 +890,9 @@ Answer Reader::answer(const json& j, const std::string& ptr, std::optional<bool>
   if (*independent) return independent_answer(j, ptr);
   for (const char* k : {"s_intervals", "t_intervals"})
     if (find(j, k))
-      fail(child(ptr, k), std::string("\"") + k +
-                              "\" applies to independent motions only; this scene's \"parameters\" is \"shared\" (the default)");
+      fail(child(ptr, k),
+           std::string("\"") + k +
+               "\" applies to independent motions only; this scene's \"parameters\" is \"shared\" (the default)");
   check_keys(j, ptr, {"collides", "intervals", "first_contact", "contacts", "contact_intervals"}, what);
   const json& c = member(j, ptr, "collides", what);
   if (!c.is_boolean()) fail(child(ptr, "collides"), "collides must be true or false, got " + type_name(c));
@@ -841,7 +901,8 @@ Answer Reader::answer(const json& j, const std::string& ptr, std::optional<bool>
   const std::string ip = child(ptr, "intervals"), fp = child(ptr, "first_contact"), cp = child(ptr, "contacts");
   const json* iv = find(j, "intervals");
   if (iv) {
-    if (!iv->is_array()) fail(ip, "intervals must be an array of [start, end] pairs of instants, got " + type_name(*iv));
+    if (!iv->is_array())
+      fail(ip, "intervals must be an array of [start, end] pairs of instants, got " + type_name(*iv));
     for (std::size_t i = 0; i < iv->size(); ++i) {
       const std::string p = child(ip, i);
       const json& pair = (*iv)[i];
@@ -854,7 +915,8 @@ Answer Reader::answer(const json& j, const std::string& ptr, std::optional<bool>
   // contact_intervals (docs/answer-format.md): [start, end] pairs like intervals; missing = [].
   if (const json* ci = find(j, "contact_intervals")) {
     const std::string cip = child(ptr, "contact_intervals");
-    if (!ci->is_array()) fail(cip, "contact_intervals must be an array of [start, end] pairs of instants, got " + type_name(*ci));
+    if (!ci->is_array())
+      fail(cip, "contact_intervals must be an array of [start, end] pairs of instants, got " + type_name(*ci));
     for (std::size_t i = 0; i < ci->size(); ++i) {
       const std::string p = child(cip, i);
       const json& pair = (*ci)[i];
@@ -911,9 +973,12 @@ Scene Reader::scene(const json& root) {
     s.note = note->get<std::string>();
   }
   if (const json* par = find(root, "parameters")) {  // scene-format.md, "Independent motions"
-    if (!par->is_string() || (par->get_ref<const std::string&>() != "shared" && par->get_ref<const std::string&>() != "independent"))
-      fail("/parameters", "parameters must be \"shared\" (one t for both objects, the default) or \"independent\" "
-                          "(A(s) and B(t)), got " + (par->is_string() ? quote(par->get<std::string>()) : type_name(*par)));
+    if (!par->is_string() ||
+        (par->get_ref<const std::string&>() != "shared" && par->get_ref<const std::string&>() != "independent"))
+      fail("/parameters",
+           "parameters must be \"shared\" (one t for both objects, the default) or \"independent\" "
+           "(A(s) and B(t)), got " +
+               (par->is_string() ? quote(par->get<std::string>()) : type_name(*par)));
     s.independent = par->get_ref<const std::string&>() == "independent";
   }
   s.a = object(a, "/a");
@@ -927,13 +992,19 @@ std::string json_error_text(const std::string& text, std::size_t pos, const std:
   if (pos > text.size()) pos = text.size();
   std::size_t line = 1, line_start = 0;
   for (std::size_t i = 0; i < pos; ++i)
-    if (text[i] == '\n') { ++line; line_start = i + 1; }
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
   std::size_t column = pos - line_start;
   if (column == 0) column = 1;
   // Prefer the parser's own "at line L, column C" when its message has one.
   if (auto k = what.find(" at line "); k != std::string::npos) {
     unsigned long l = 0, c = 0;
-    if (std::sscanf(what.c_str() + k, " at line %lu, column %lu", &l, &c) == 2) { line = l; column = c; }
+    if (std::sscanf(what.c_str() + k, " at line %lu, column %lu", &l, &c) == 2) {
+      line = l;
+      column = c;
+    }
   }
   std::string reason = what;
   if (auto k = reason.find("] "); k != std::string::npos && reason.rfind("[json.exception.", 0) == 0)
@@ -969,9 +1040,11 @@ namespace {
 // One strict parse: the DOM with duplicate keys and over-deep nesting refused.
 // Syntax errors always throw; structure errors (duplicate key, depth) throw
 // unless `structure_error` is given, which then receives "PLACE: what".
-void parse_dom(const std::string& json_text, const std::string& file_label, DomBuilder& b, std::string* structure_error) {
+void parse_dom(const std::string& json_text, const std::string& file_label, DomBuilder& b,
+               std::string* structure_error) {
   if (json_text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw SceneError(file_label + ": line 1, column 1: malformed JSON: the file is empty or blank (expected a JSON object)");
+    throw SceneError(file_label +
+                     ": line 1, column 1: malformed JSON: the file is empty or blank (expected a JSON object)");
   if (auto nul = json_text.find('\0'); nul != std::string::npos) {
     std::size_t line = 1 + std::size_t(std::count(json_text.begin(), json_text.begin() + long(nul), '\n'));
     throw SceneError(file_label + ": line " + std::to_string(line) + ", byte " + std::to_string(nul + 1) +
@@ -994,7 +1067,8 @@ void parse_dom(const std::string& json_text, const std::string& file_label, DomB
 }
 }  // namespace
 
-nlohmann::json parse_json_document(const std::string& json_text, const std::string& file_label, std::string* structure_error) {
+nlohmann::json parse_json_document(const std::string& json_text, const std::string& file_label,
+                                   std::string* structure_error) {
   DomBuilder b;
   parse_dom(json_text, file_label, b, structure_error);
   return structure_error && !structure_error->empty() ? json() : std::move(b.root);
@@ -1059,8 +1133,11 @@ std::string read_bounded_file(const std::string& path, std::size_t limit, const 
   if (::fstat(fd, &st) != 0) throw SceneError(path + ": cannot read the file: " + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) throw SceneError(path + ": cannot read the file: it is a directory");
   if (!stdin_path && !S_ISREG(st.st_mode)) {
-    const char* what = S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)" : S_ISCHR(st.st_mode) ? "a character device"
-                       : S_ISBLK(st.st_mode) ? "a block device" : S_ISSOCK(st.st_mode) ? "a socket" : "not a regular file";
+    const char* what = S_ISFIFO(st.st_mode)   ? "a FIFO (named pipe)"
+                       : S_ISCHR(st.st_mode)  ? "a character device"
+                       : S_ISBLK(st.st_mode)  ? "a block device"
+                       : S_ISSOCK(st.st_mode) ? "a socket"
+                                              : "not a regular file";
     throw SceneError(path + ": cannot read the file: it is " + std::string(what) +
                      ", not a regular file (to read a stream, give - and pipe it to standard input)");
   }
@@ -1070,8 +1147,8 @@ std::string read_bounded_file(const std::string& path, std::size_t limit, const 
   }
   // At most limit + 1 bytes are read: a huge file or a stream such as a pipe
   // from /dev/zero is refused without reading it whole.
-  const std::string too_large =
-      path + ": larger than " + limit_text + " of " + std::to_string(limit) + " bytes" + (option.empty() ? "" : " (" + option + ")");
+  const std::string too_large = path + ": larger than " + limit_text + " of " + std::to_string(limit) + " bytes" +
+                                (option.empty() ? "" : " (" + option + ")");
   if (S_ISREG(st.st_mode) && std::uint64_t(st.st_size) > limit) throw SceneError(too_large);
   std::string text;
   std::vector<char> buf(1 << 16);

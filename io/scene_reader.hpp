@@ -87,7 +87,6 @@
 
 namespace eccd {
 
-
 // Limits on what a scene may ask for (choice 14). Defaults: 8 MiB files,
 // 1000 digits per numerator / denominator, motion polynomials of degree 32.
 struct InputLimits {
@@ -130,13 +129,14 @@ struct StrictJson {
   std::unordered_map<std::string, std::string> raw_numbers;  // JSON pointer -> raw text of a non-integer number
 };
 StrictJson parse_strict_json(const std::string& json_text, const std::string& file_label);
-Rational json_rational(const StrictJson& doc, const nlohmann::json& j, const std::string& file_label, const std::string& place);
+Rational json_rational(const StrictJson& doc, const nlohmann::json& j, const std::string& file_label,
+                       const std::string& place);
 // A shape of dimension dim: the matrix Q (throws SceneError at `place`).
-std::vector<std::vector<Rational>> json_shape(const StrictJson& doc, const nlohmann::json& j, const std::string& file_label,
-                                              const std::string& place, int dim);
-std::string json_place(const std::string& pointer);    // "top level" for "", long tokens cut
-std::string json_quote(const std::string& text);       // a user's string in a message: quoted, cut at 80 characters
-std::string json_type_name(const nlohmann::json& j);   // "an integer", "a number with a fraction part", ...
+std::vector<std::vector<Rational>> json_shape(const StrictJson& doc, const nlohmann::json& j,
+                                              const std::string& file_label, const std::string& place, int dim);
+std::string json_place(const std::string& pointer);   // "top level" for "", long tokens cut
+std::string json_quote(const std::string& text);      // a user's string in a message: quoted, cut at 80 characters
+std::string json_type_name(const nlohmann::json& j);  // "an integer", "a number with a fraction part", ...
 
 // Exact value of a number string (choice 1 above). Throws std::invalid_argument
 // whose what() is the reason (the reader turns it into a SceneError).

@@ -58,7 +58,10 @@ json solution_to_json(const Solution& s) {
     // The common normal at each contact point (ContactPoint::normal), same order; only when some point has one.
     json normals = json::array();
     bool any_normal = false;
-    for (const auto& p : s.answer.contact_points) { normals.push_back(p.normal); any_normal = any_normal || !p.normal.empty(); }
+    for (const auto& p : s.answer.contact_points) {
+      normals.push_back(p.normal);
+      any_normal = any_normal || !p.normal.empty();
+    }
     if (any_normal) j["contact_normals"] = normals;
     j["contact_intervals"] = pair_list(s.answer.contact_intervals);
   }
@@ -77,7 +80,8 @@ json solution_to_json(const Solution& s) {
   j["critical_instants"] = crit;
   j["undecided_reasons"] = s.undecided_reasons;
   json cells = json::array();
-  for (const auto& c : s.cells) cells.push_back({{"sample", instant_to_json(c.sample)}, {"status", to_string(c.status)}});
+  for (const auto& c : s.cells)
+    cells.push_back({{"sample", instant_to_json(c.sample)}, {"status", to_string(c.status)}});
   j["cells"] = cells;
   json work = json::object();
   for (const auto& [k, v] : s.work) work[k] = v;
@@ -111,12 +115,15 @@ json solution_to_json(const Solution& s) {
 nlohmann::ordered_json stored_answer_of(const json& report) {
   nlohmann::ordered_json ans;
   if (report.contains("s_intervals")) {  // independent motions (scene-format.md, "Independent motions")
-    for (const char* k : {"collides", "s_intervals", "t_intervals"}) ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
+    for (const char* k : {"collides", "s_intervals", "t_intervals"})
+      ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
     return ans;
   }
-  for (const char* k : {"collides", "intervals", "first_contact", "contacts"}) ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
+  for (const char* k : {"collides", "intervals", "first_contact", "contacts"})
+    ans[k] = nlohmann::ordered_json::parse(report.at(k).dump());
   // Continuous touching (docs/answer-format.md): stored only when there is some, so older answers keep their keys.
-  if (report.contains("contact_intervals") && report["contact_intervals"].is_array() && !report["contact_intervals"].empty())
+  if (report.contains("contact_intervals") && report["contact_intervals"].is_array() &&
+      !report["contact_intervals"].empty())
     ans["contact_intervals"] = nlohmann::ordered_json::parse(report["contact_intervals"].dump());
   return ans;
 }
@@ -157,7 +164,8 @@ Solution solution_from_json(const json& j, const std::string& label) {
   // collides null: unknown, which only an answer with undecided stretches may
   // say (solution_to_json); the typed answer then holds false (no interval).
   if (ans["collides"].is_null() && j.contains("collides")) {
-    if (list("undecided").empty()) fail("/collides", "collides is null (unknown) but nothing is undecided: a complete answer says true or false");
+    if (list("undecided").empty())
+      fail("/collides", "collides is null (unknown) but nothing is undecided: a complete answer says true or false");
     ans["collides"] = false;
   }
   if (j.contains("s_intervals")) {  // independent motions
@@ -174,7 +182,8 @@ Solution solution_from_json(const json& j, const std::string& label) {
   }
   s.answer = answer_from_json(ans, label, "");
   const json und = list("undecided");
-  for (std::size_t i = 0; i < und.size(); ++i) s.answer.undecided.push_back(instant_from_json(und[i], label, "/undecided/" + std::to_string(i)));
+  for (std::size_t i = 0; i < und.size(); ++i)
+    s.answer.undecided.push_back(instant_from_json(und[i], label, "/undecided/" + std::to_string(i)));
   const json pts = list("contact_points");
   for (std::size_t i = 0; i < pts.size(); ++i) {
     ContactPoint p;
@@ -203,7 +212,8 @@ Solution solution_from_json(const json& j, const std::string& label) {
     fail("", e.what());
   }
   s.guard = text("guard");
-  if (!s.guard.empty() && s.guard != "none" && s.guard != "bound") fail("/guard", "expected \"none\", \"bound\" or null, got \"" + s.guard + "\"");
+  if (!s.guard.empty() && s.guard != "none" && s.guard != "bound")
+    fail("/guard", "expected \"none\", \"bound\" or null, got \"" + s.guard + "\"");
   s.basis = text("basis");
   s.method = text("method");
   for (Variant v : {Variant::answer, Variant::collides, Variant::first_contact, Variant::all_contacts})
@@ -218,14 +228,16 @@ Solution solution_from_json(const json& j, const std::string& label) {
   for (std::size_t i = 0; i < crit.size(); ++i) {
     const std::string place = "/critical_instants/" + std::to_string(i);
     if (!crit[i].is_object() || !crit[i].contains("t")) fail(place, "expected {\"t\", \"status\", \"multiplicity\"}");
-    s.critical.push_back({instant_from_json(crit[i]["t"], label, place + "/t"), status(crit[i].value("status", json()), place + "/status"),
+    s.critical.push_back({instant_from_json(crit[i]["t"], label, place + "/t"),
+                          status(crit[i].value("status", json()), place + "/status"),
                           crit[i].value("multiplicity", 0)});
   }
   const json cells = list("cells");
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const std::string place = "/cells/" + std::to_string(i);
     if (!cells[i].is_object() || !cells[i].contains("sample")) fail(place, "expected {\"sample\", \"status\"}");
-    s.cells.push_back({instant_from_json(cells[i]["sample"], label, place + "/sample"), status(cells[i].value("status", json()), place + "/status")});
+    s.cells.push_back({instant_from_json(cells[i]["sample"], label, place + "/sample"),
+                       status(cells[i].value("status", json()), place + "/status")});
   }
   // A bracketed instant's value is the double nearest its bracket's mid-point
   // (kernel/answer.hpp bracketed_instant), not its approx, which carries only
@@ -253,8 +265,8 @@ Solution solution_from_json(const json& j, const std::string& label) {
   s.decided_in = text("decided_in");
   for (const auto& e : list("escalations"))
     if (e.is_object())
-      s.escalations.push_back({e.value("rung", std::string()), e.value("reason", std::string()), e.value("spent_ms", 0.0),
-                               e.value("budget_ms", 0.0)});
+      s.escalations.push_back({e.value("rung", std::string()), e.value("reason", std::string()),
+                               e.value("spent_ms", 0.0), e.value("budget_ms", 0.0)});
   return s;
 }
 
@@ -263,18 +275,25 @@ std::string summary_text(const Solution& s) {
   auto inst = [](const Instant& i) {
     std::string t = i.approx;
     if (i.certified()) {
-      if (*i.lo == *i.hi) t += " (exactly " + i.lo->get_str() + ")";
-      else t += " in [" + i.lo->get_str() + ", " + i.hi->get_str() + "]";
+      if (*i.lo == *i.hi)
+        t += " (exactly " + i.lo->get_str() + ")";
+      else
+        t += " in [" + i.lo->get_str() + ", " + i.hi->get_str() + "]";
     }
     return t;
   };
   if (s.answer.independent) {  // independent motions: A(s), B(t) (scene-format.md, "Independent motions")
     o << "scene " << s.scene << " (" << s.dim << "D, independent motions A(s), B(t)), arithmetic " << s.arith.name()
       << (s.certified ? ", certified" : ", not certified") << ", method " << s.method
-      << (s.guard == "none" ? ", as published (no guard)" : s.guard == "bound" ? ", guarded" : "") << "\n";
+      << (s.guard == "none"    ? ", as published (no guard)"
+          : s.guard == "bound" ? ", guarded"
+                               : "")
+      << "\n";
     o << "  collides: " << claim_text(s.answer) << "\n";
-    for (const auto& [a, b] : s.answer.s_intervals) o << "  s-interval (A's path inside B's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
-    for (const auto& [a, b] : s.answer.t_intervals) o << "  t-interval (B's path inside A's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
+    for (const auto& [a, b] : s.answer.s_intervals)
+      o << "  s-interval (A's path inside B's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
+    for (const auto& [a, b] : s.answer.t_intervals)
+      o << "  t-interval (B's path inside A's swept volume): [" << inst(a) << ", " << inst(b) << "]\n";
     for (const auto& u : s.answer.undecided) o << "  undecided near " << u.approx << "\n";
     if (!s.answer.undecided.empty())
       for (const auto& why : s.undecided_reasons) o << "  undecided because: " << why << "\n";
@@ -287,23 +306,29 @@ std::string summary_text(const Solution& s) {
   o << "scene " << s.scene << " (" << s.dim << "D), arithmetic " << s.arith.name()
     << (s.certified ? ", certified" : ", not certified") << (s.basis != "exact" ? ", basis " + s.basis : std::string())
     << (s.input == InputMode::rounded ? ", input rounded" : "")
-    << (s.guard == "none" ? ", as published (no guard)" : s.guard == "bound" ? ", guarded" : "") << "\n";
+    << (s.guard == "none"    ? ", as published (no guard)"
+        : s.guard == "bound" ? ", guarded"
+                             : "")
+    << "\n";
   // Say what the polynomial is: Δ, psc_k, or for the Bézier method F(u,t).
   std::string poly = s.projection == "bezier" ? "F(u,t) of degree " + std::to_string(s.projection_degree) + " in t"
                      : s.method == "cd-disc-cycloidal" ? s.projection + " (cycloidal: not a polynomial)"
-                     : s.projection_degree < 0       ? "no polynomial in t (method " + s.method + " tests instants only)"
-                                                     : s.projection + " degree " + std::to_string(s.projection_degree);
+                     : s.projection_degree < 0 ? "no polynomial in t (method " + s.method + " tests instants only)"
+                                               : s.projection + " degree " + std::to_string(s.projection_degree);
   o << "  status at t = 0: " << to_string(s.status_at_0) << "; " << poly
-    << (!s.projection_identically_zero ? ""
+    << (!s.projection_identically_zero       ? ""
         : s.projection.rfind("psc_", 0) == 0 ? " (the discriminant vanishes identically)"
-                                              : " (identically zero)")
-    << ", " << s.critical.size() << (s.projection_degree < 0 && s.projection != "bezier" && s.method != "cd-disc-cycloidal"
-                                         ? " change(s) of status between samples\n" : " root(s) in [0, 1]\n");
+                                             : " (identically zero)")
+    << ", " << s.critical.size()
+    << (s.projection_degree < 0 && s.projection != "bezier" && s.method != "cd-disc-cycloidal"
+            ? " change(s) of status between samples\n"
+            : " root(s) in [0, 1]\n");
   o << "  collides: " << claim_text(s.answer) << "\n";
   if (!two_d_partial)
     for (const auto& [a, b] : s.answer.intervals) {
       const bool touch = instant_to_json(a) == instant_to_json(b);
-      o << "  collision interval: [" << inst(a) << ", " << inst(b) << "]" << (touch ? "  (isolated touch)" : "") << "\n";
+      o << "  collision interval: [" << inst(a) << ", " << inst(b) << "]" << (touch ? "  (isolated touch)" : "")
+        << "\n";
     }
   if (s.answer.first_contact) o << "  first contact: " << inst(*s.answer.first_contact) << "\n";
   if (!(s.dim == 2 && (s.variant == Variant::collides || s.variant == Variant::first_contact)))

@@ -34,7 +34,7 @@
 namespace eccd {
 
 struct Instant {
-  std::string approx;              // decimal, for people and plots
+  std::string approx;               // decimal, for people and plots
   std::optional<mpq_class> lo, hi;  // present iff certified
   // The approximation as a double (for display and reports; never used to
   // decide): filled wherever approx is, NaN where nothing filled it.
@@ -56,8 +56,8 @@ struct Answer {
   std::vector<Instant> contacts;
   std::vector<std::pair<Instant, Instant>> contact_intervals;  // continuous touching; JSON key optional, default []
   // Extras: not part of the stored answer, reported by `eccd solve --json`.
-  std::vector<ContactPoint> contact_points;      // one per contact
-  std::vector<Instant> undecided;                 // floating: instants it could not classify
+  std::vector<ContactPoint> contact_points;  // one per contact
+  std::vector<Instant> undecided;            // floating: instants it could not classify
   // Independent motions (scene-format.md, "Independent motions"; a scene with
   // "parameters": "independent"): the answer is `collides`, `s_intervals`
   // (the maximal closed intervals of { s : A(s) meets B(t) for some t }) and
@@ -169,9 +169,12 @@ inline Instant bracketed_instant(const mpq_class& mid, const mpq_class& lo, cons
 // 9 % of an animation frame) is skipped.
 template <class T>
 constexpr bool prints_as_double() {
-  if constexpr (std::is_same_v<T, double>) return true;
-  else if constexpr (requires(const T& x) { x.value(); }) return std::is_same_v<std::decay_t<decltype(std::declval<const T&>().value())>, double>;
-  else return false;
+  if constexpr (std::is_same_v<T, double>)
+    return true;
+  else if constexpr (requires(const T& x) { x.value(); })
+    return std::is_same_v<std::decay_t<decltype(std::declval<const T&>().value())>, double>;
+  else
+    return false;
 }
 
 template <class T>
@@ -179,8 +182,8 @@ Instant rounded_instant(const T& t) {
   if constexpr (prints_as_double<T>())
     if (precision_digits(scalar_traits<T>::precision(t)) == 17)
       return Instant{scalar_traits<T>::to_string(t), std::nullopt, std::nullopt, scalar_traits<T>::to_double(t)};
-  return Instant{round_decimal(scalar_traits<T>::to_string(t), precision_digits(scalar_traits<T>::precision(t))), std::nullopt,
-                 std::nullopt, scalar_traits<T>::to_double(t)};
+  return Instant{round_decimal(scalar_traits<T>::to_string(t), precision_digits(scalar_traits<T>::precision(t))),
+                 std::nullopt, std::nullopt, scalar_traits<T>::to_double(t)};
 }
 
 }  // namespace eccd

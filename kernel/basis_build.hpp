@@ -36,9 +36,12 @@ enum class Basis { power, bernstein, scaled_bernstein };
 
 inline const char* to_string(Basis b) {
   switch (b) {
-    case Basis::power: return "power";
-    case Basis::bernstein: return "bernstein";
-    default: return "scaled-bernstein";
+    case Basis::power:
+      return "power";
+    case Basis::bernstein:
+      return "bernstein";
+    default:
+      return "scaled-bernstein";
   }
 }
 inline Basis parse_basis(const std::string& s) {
@@ -71,7 +74,8 @@ Bern<T> build_in_basis(Basis basis, const std::vector<Poly<T>>& g, F formula, co
 // A 2D formula of (g3, g2, g1, g0) (003's Δ, P, D) as the policy's build of G = {g_0, ..., g_3}.
 template <class Policy, class G, class F>
 auto build_cubic(const Policy& pol, const G& g, F formula) {
-  return pol.build(g, [formula](const auto& c) { return formula(c[3], c[2], c[1], c[0]); });  // by value: a policy may keep it
+  return pol.build(
+      g, [formula](const auto& c) { return formula(c[3], c[2], c[1], c[0]); });  // by value: a policy may keep it
 }
 
 }  // namespace eccd

@@ -48,7 +48,11 @@ void de_casteljau_in_place(std::span<T> w, const T& t) {
     return;
   }
   for (int r = 1; r < int(w.size()); ++r)
-    for (int i = 0; i + r < int(w.size()); ++i) { T x = s * w[i]; T y = t * w[i + 1]; w[i] = x + y; }
+    for (int i = 0; i + r < int(w.size()); ++i) {
+      T x = s * w[i];
+      T y = t * w[i + 1];
+      w[i] = x + y;
+    }
 }
 
 // The value at t of the polynomial with Bernstein coefficients b (any
@@ -82,13 +86,18 @@ void keep_right(std::span<T> c, const T& tau) {
     return;
   }
   for (int r = 1; r <= n; ++r)
-    for (int i = 0; i + r <= n; ++i) { T x = s * c[i]; T y = tau * c[i + 1]; c[i] = x + y; }
+    for (int i = 0; i + r <= n; ++i) {
+      T x = s * c[i];
+      T y = tau * c[i + 1];
+      c[i] = x + y;
+    }
 }
 template <class T>
 void keep_left(std::span<T> c, const T& tau) {
   const int n = int(c.size()) - 1;
   T s = T(1) - tau;
-  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30): split's left piece
+  if constexpr (std::is_same_v<T,
+                               Bounded<double>>) {  // the guard's bound in the same pass (issue 30): split's left piece
     thread_local std::vector<T> left;
     left.resize(c.size());
     running_error_loops::de_casteljau(c, s, tau, left.data());
@@ -97,7 +106,11 @@ void keep_left(std::span<T> c, const T& tau) {
   }
   // round r computes the same values as split()'s, stored one place to the right (c[i + r] for its w[i])
   for (int r = 1; r <= n; ++r)
-    for (int i = n; i >= r; --i) { T x = s * c[i - 1]; T y = tau * c[i]; c[i] = x + y; }
+    for (int i = n; i >= r; --i) {
+      T x = s * c[i - 1];
+      T y = tau * c[i];
+      c[i] = x + y;
+    }
 }
 
 // Both pieces at once (issue 36: one de Casteljau triangle instead of two):
@@ -116,7 +129,11 @@ void split_into(std::span<const T> c, const T& tau, std::span<T> lo, std::span<T
   }
   lo[0] = hi[0];
   for (int r = 1; r <= n; ++r) {
-    for (int i = 0; i + r <= n; ++i) { T x = s * hi[i]; T y = tau * hi[i + 1]; hi[i] = x + y; }
+    for (int i = 0; i + r <= n; ++i) {
+      T x = s * hi[i];
+      T y = tau * hi[i + 1];
+      hi[i] = x + y;
+    }
     lo[r] = hi[0];
   }
 }
@@ -155,17 +172,23 @@ Bern<T> to_bernstein(const Poly<T>& p, int n) {  // n >= degree(p)
   for (int k = 0; k <= n; ++k) {
     const std::vector<T>& ck = binomial_row(k, like);
     if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
-      r.b[k] = running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1, factors);
+      r.b[k] =
+          running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1, factors);
       continue;
     }
     T acc = T(0);
-    for (int i = 0; i <= k && i <= p.degree(); ++i) { T term = ck[i] * p.c[i] / cn[i]; acc = acc + term; }
+    for (int i = 0; i <= k && i <= p.degree(); ++i) {
+      T term = ck[i] * p.c[i] / cn[i];
+      acc = acc + term;
+    }
     r.b[k] = acc;
   }
   return r;
 }
 template <class T>
-Bern<T> to_bernstein(const Poly<T>& p) { return to_bernstein(p, std::max(p.degree(), 0)); }
+Bern<T> to_bernstein(const Poly<T>& p) {
+  return to_bernstein(p, std::max(p.degree(), 0));
+}
 
 template <class T>
 Poly<T> to_power(const Bern<T>& q) {
@@ -180,7 +203,10 @@ Poly<T> to_power(const Bern<T>& q) {
     T acc = T(0);
     for (int k = 0; k <= i; ++k) {
       T term = ci[k] * q.b[k];
-      if ((i - k) % 2) acc = acc - term; else acc = acc + term;
+      if ((i - k) % 2)
+        acc = acc - term;
+      else
+        acc = acc + term;
     }
     r.c[i] = cn[i] * acc;
   }
@@ -201,7 +227,10 @@ void elevate_into(std::span<const T> q, int r, std::vector<T>& e) {
   e.resize(n + r + 1);
   for (int k = 0; k <= n + r; ++k) {
     T acc = T(0);
-    for (int j = std::max(0, k - r); j <= std::min(n, k); ++j) { T term = cn[j] * cr[k - j] * q[j]; acc = acc + term; }
+    for (int j = std::max(0, k - r); j <= std::min(n, k); ++j) {
+      T term = cn[j] * cr[k - j] * q[j];
+      acc = acc + term;
+    }
     e[k] = acc / cnr[k];
   }
 }
@@ -227,13 +256,24 @@ Bern<T> operator+(const Bern<T>& x, const Bern<T>& y) {
   return a;
 }
 template <class T>
-Bern<T> operator-(const Bern<T>& x) { Bern<T> r = x; for (auto& v : r.b) v = -v; return r; }
+Bern<T> operator-(const Bern<T>& x) {
+  Bern<T> r = x;
+  for (auto& v : r.b) v = -v;
+  return r;
+}
 template <class T>
-Bern<T> operator-(const Bern<T>& x, const Bern<T>& y) { return x + (-y); }
+Bern<T> operator-(const Bern<T>& x, const Bern<T>& y) {
+  return x + (-y);
+}
 template <class T>
-Bern<T> operator*(const T& s, Bern<T> x) { for (auto& v : x.b) v = s * v; return x; }
+Bern<T> operator*(const T& s, Bern<T> x) {
+  for (auto& v : x.b) v = s * v;
+  return x;
+}
 template <class T>
-Bern<T> operator*(int s, const Bern<T>& x) { return T(s) * x; }
+Bern<T> operator*(int s, const Bern<T>& x) {
+  return T(s) * x;
+}
 
 // Product in Bernstein form: c_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) a_i b_j.
 template <class T>
@@ -253,7 +293,10 @@ Bern<T> operator*(const Bern<T>& x, const Bern<T>& y) {
     running_error_loops::convolve(std::span<const T>(xs), std::span<const T>(ys), std::span<T>(r.b));
   else
     for (int i = 0; i <= m; ++i)
-      for (int j = 0; j <= n; ++j) { T p = xs[i] * ys[j]; r.b[i + j] = r.b[i + j] + p; }
+      for (int j = 0; j <= n; ++j) {
+        T p = xs[i] * ys[j];
+        r.b[i + j] = r.b[i + j] + p;
+      }
   for (int k = 0; k <= m + n; ++k) r.b[k] = r.b[k] / cmn[k];
   return r;
 }
@@ -263,8 +306,14 @@ template <class T>
 void derivative_into(std::span<const T> q, std::vector<T>& d) {
   int n = int(q.size()) - 1;
   d.clear();
-  if (n <= 0) { d.push_back(T(0)); return; }
-  for (int i = 0; i < n; ++i) { T diff = q[i + 1] - q[i]; d.push_back(T(n) * diff); }
+  if (n <= 0) {
+    d.push_back(T(0));
+    return;
+  }
+  for (int i = 0; i < n; ++i) {
+    T diff = q[i + 1] - q[i];
+    d.push_back(T(n) * diff);
+  }
 }
 template <class T>
 Bern<T> derivative(const Bern<T>& q) {
@@ -290,7 +339,11 @@ std::pair<Bern<T>, Bern<T>> split(const Bern<T>& q, const T& tau) {
     return {std::move(left), std::move(right)};
   }
   for (int r = 1; r <= n; ++r) {
-    for (int i = 0; i + r <= n; ++i) { T x = s * w[i]; T y = tau * w[i + 1]; w[i] = x + y; }
+    for (int i = 0; i + r <= n; ++i) {
+      T x = s * w[i];
+      T y = tau * w[i + 1];
+      w[i] = x + y;
+    }
     left.b[r] = w[0];
   }
   return {std::move(left), std::move(right)};

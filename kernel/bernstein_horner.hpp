@@ -82,9 +82,13 @@ T chained(const std::vector<T>& c, const T& x, const T& zero) {
   const T x2 = x * x;
   const T x4 = x2 * x2;
   int top = n - (n % 4);  // the chains' last full block starts here
-  T h[4] = {c[top], top + 1 <= n ? c[top + 1] : zero, top + 2 <= n ? c[top + 2] : zero, top + 3 <= n ? c[top + 3] : zero};
+  T h[4] = {c[top], top + 1 <= n ? c[top + 1] : zero, top + 2 <= n ? c[top + 2] : zero,
+            top + 3 <= n ? c[top + 3] : zero};
   for (int j = top - 4; j >= 0; j -= 4)
-    for (int k = 0; k < 4; ++k) { T y = h[k] * x4; h[k] = y + c[j + k]; }
+    for (int k = 0; k < 4; ++k) {
+      T y = h[k] * x4;
+      h[k] = y + c[j + k];
+    }
   T r = h[3] * x;
   r = r + h[2];
   r = r * x;
@@ -97,7 +101,9 @@ T chained(const std::vector<T>& c, const T& x, const T& zero) {
 inline bool usable(double x) { return std::fabs(x) > 0x1p-960 && std::isfinite(x); }
 inline bool usable(const Mpfr& x) { return is_finite_value(x) && !mpfr_zero_p(x.get()); }
 template <class T>
-bool usable(const Bounded<T>& x) { return usable(x.value()) && std::isfinite(x.bound()); }
+bool usable(const Bounded<T>& x) {
+  return usable(x.value()) && std::isfinite(x.bound());
+}
 }  // namespace horner_detail
 
 template <class T>
@@ -115,7 +121,10 @@ class BernsteinHorner {
     a_.resize(n + 1);
     for (int i = 0; i <= n; ++i) {
       a_[i] = c[i] * b[i];
-      if (!is_finite_value(a_[i])) { a_.clear(); return; }
+      if (!is_finite_value(a_[i])) {
+        a_.clear();
+        return;
+      }
     }
     rev_.assign(a_.rbegin(), a_.rend());
     one_ = c[0];  // the run's one (binomial_row starts from it)
@@ -132,15 +141,16 @@ class BernsteinHorner {
     const T u = one_ - t;
     const bool low = !(t > half_);
     // t <= 1/2: u^n A(t/u) with A's coefficients a_0..a_n; else t^n A~(u/t) with them reversed.
-    T r = horner_detail::chained(low ? a_ : rev_, low ? T(t / u) : T(u / t), zero_) * horner_detail::power(low ? u : t, n, one_);
+    T r = horner_detail::chained(low ? a_ : rev_, low ? T(t / u) : T(u / t), zero_) *
+          horner_detail::power(low ? u : t, n, one_);
     if (!horner_detail::usable(r)) return bernstein_value(b_, t);
     return r;
   }
 
  private:
   std::span<const T> b_;
-  std::vector<T> a_;    // C(n,i) b_i; empty: de Casteljau
-  std::vector<T> rev_;  // the same, last first (the mirrored Horner above t = 1/2)
+  std::vector<T> a_;           // C(n,i) b_i; empty: de Casteljau
+  std::vector<T> rev_;         // the same, last first (the mirrored Horner above t = 1/2)
   T one_{}, half_{}, zero_{};  // exact constants at the run's precision
 };
 

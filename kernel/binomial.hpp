@@ -42,7 +42,8 @@ const std::vector<T>& binomial_row(int n, const T& like) {
     for (int k = 1; k < m; ++k) {
       next[k] = row[k - 1] + row[k];
       if constexpr (std::is_same_v<T, Bounded<double>>)
-        if (row[k - 1].bound() == 0 && row[k].bound() == 0 && next[k].value() <= 0x1p53) next[k] = T(next[k].value(), 0);
+        if (row[k - 1].bound() == 0 && row[k].bound() == 0 && next[k].value() <= 0x1p53)
+          next[k] = T(next[k].value(), 0);
     }
     rows.push_back(std::move(next));
   }

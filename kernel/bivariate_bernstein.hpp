@@ -85,7 +85,11 @@ void keep_u_right(BiBern<T>& f, const T& tau) {
   }
   for (int r = 1; r <= m; ++r)
     for (int i = 0; i + r <= m; ++i)
-      for (int j = 0; j <= n; ++j) { T x = s * f.b[i][j]; T y = tau * f.b[i + 1][j]; f.b[i][j] = x + y; }
+      for (int j = 0; j <= n; ++j) {
+        T x = s * f.b[i][j];
+        T y = tau * f.b[i + 1][j];
+        f.b[i][j] = x + y;
+      }
 }
 template <class T>
 void keep_u_left(BiBern<T>& f, const T& tau) {
@@ -97,7 +101,11 @@ void keep_u_left(BiBern<T>& f, const T& tau) {
   }
   for (int r = 1; r <= m; ++r)
     for (int i = m; i >= r; --i)
-      for (int j = 0; j <= n; ++j) { T x = s * f.b[i - 1][j]; T y = tau * f.b[i][j]; f.b[i][j] = x + y; }
+      for (int j = 0; j <= n; ++j) {
+        T x = s * f.b[i - 1][j];
+        T y = tau * f.b[i][j];
+        f.b[i][j] = x + y;
+      }
 }
 
 // de Casteljau in u at tau: the pieces over [0, tau] and [tau, 1] in u.

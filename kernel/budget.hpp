@@ -55,9 +55,9 @@ inline double thread_cpu_seconds() {
 namespace detail {
 struct DeadlineState {
   Clock::time_point at = Clock::time_point::max();  // wall deadline
-  double cpu_at = -1;                                // thread-CPU deadline in seconds (< 0: none)
-  double seconds = 0;      // the budget as given, for messages
-  bool cpu = false;        // the message's budget is processor time
+  double cpu_at = -1;                               // thread-CPU deadline in seconds (< 0: none)
+  double seconds = 0;                               // the budget as given, for messages
+  bool cpu = false;                                 // the message's budget is processor time
   bool passed = false;
 };
 inline DeadlineState& deadline_state() {
@@ -76,15 +76,24 @@ inline bool deadline_reached(DeadlineState& s) {
 // and restore the outer ones on exit.
 class ScopedDeadline {
  public:
-  explicit ScopedDeadline(double seconds, DeadlineClock clock = DeadlineClock::wall) : saved_(detail::deadline_state()) {
+  explicit ScopedDeadline(double seconds, DeadlineClock clock = DeadlineClock::wall)
+      : saved_(detail::deadline_state()) {
     auto& s = detail::deadline_state();
     if (seconds > 0) {
       if (clock == DeadlineClock::wall) {
         auto at = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-        if (at < s.at) { s.at = at; s.seconds = seconds; s.cpu = false; }
+        if (at < s.at) {
+          s.at = at;
+          s.seconds = seconds;
+          s.cpu = false;
+        }
       } else {
         double at = thread_cpu_seconds() + seconds;
-        if (s.cpu_at < 0 || at < s.cpu_at) { s.cpu_at = at; s.seconds = seconds; s.cpu = true; }
+        if (s.cpu_at < 0 || at < s.cpu_at) {
+          s.cpu_at = at;
+          s.seconds = seconds;
+          s.cpu = true;
+        }
       }
     }
     s.passed = s.passed || detail::deadline_reached(s);

@@ -70,8 +70,12 @@ PipelineResult<T> ccd_projection(const MovingPair3<T>& pair, Policy& pol, bool f
   };
   Rep proj = pol.build(g, [](const auto& G) { return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]); });
   int k = 0;
-  while (pol.identically_zero(proj) && k < 3) { ++k; proj = s(k, k); }
-  if (pol.identically_zero(proj)) throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
+  while (pol.identically_zero(proj) && k < 3) {
+    ++k;
+    proj = s(k, k);
+  }
+  if (pol.identically_zero(proj))
+    throw std::logic_error("internal error: psc_3 of the characteristic quartic vanishes");
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
   res.projection_index = k;
   res.projection_degree = proj.degree();
@@ -89,7 +93,11 @@ PipelineResult<T> ccd_projection(const MovingPair3<T>& pair, Policy& pol, bool f
   std::vector<TimelineNode> seq;
   std::vector<const Root*> node_root;
   std::vector<Sign> touch;
-  auto push = [&](TimelineNode n, const Root* r, Sign tch) { seq.push_back(n); node_root.push_back(r); touch.push_back(tch); };
+  auto push = [&](TimelineNode n, const Root* r, Sign tch) {
+    seq.push_back(n);
+    node_root.push_back(r);
+    touch.push_back(tch);
+  };
   push({pol.instant_at(zero), res.status_at_0, false}, nullptr, Sign::zero);
   bool stopped = false;
   for (std::size_t i = 0; i <= interior.size(); ++i) {
@@ -113,8 +121,14 @@ PipelineResult<T> ccd_projection(const MovingPair3<T>& pair, Policy& pol, bool f
   for (std::size_t n = 2; n < seq.size(); n += 2) {
     if (!node_root[n] || touch[n] == Sign::positive) continue;
     Status left = seq[n - 1].status, right = n + 1 < seq.size() ? seq[n + 1].status : left;
-    if (touch[n] == Sign::uncertain) { seq[n].status = Status::uncertain; continue; }
-    if (left == right) { seq[n].status = left; continue; }
+    if (touch[n] == Sign::uncertain) {
+      seq[n].status = Status::uncertain;
+      continue;
+    }
+    if (left == right) {
+      seq[n].status = left;
+      continue;
+    }
     if constexpr (scalar_traits<T>::is_exact)
       throw std::logic_error("internal error: the status changes at a root of the projection without a touch");
     seq[n].status = Status::uncertain;
@@ -137,9 +151,11 @@ namespace eccd {
 // floating policies all enter here, so the dispatch is written once.
 template <class T, int H, PipelinePolicy<T> Policy>
 PipelineResult<T> projection_pipeline(const MovingPair<T, H>& pair, Policy& pol, Variant variant = Variant::answer,
-                                    bool first_contact_only = false) {
-  if constexpr (H == H_2D) return cd_disc(pair, pol, variant);
-  else return ccd_projection(pair, pol, first_contact_only);
+                                      bool first_contact_only = false) {
+  if constexpr (H == H_2D)
+    return cd_disc(pair, pol, variant);
+  else
+    return ccd_projection(pair, pol, first_contact_only);
 }
 
 }  // namespace eccd

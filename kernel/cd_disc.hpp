@@ -72,14 +72,17 @@ void collect_reasons(PipelineResult<T>& res, const Policy& pol, PlainUndecided p
   if (!res.undecided_reasons.empty()) return;
   if constexpr (plain_rounded<T>()) {
     if (has(plain, PlainUndecided::isolated))
-      res.undecided_reasons.push_back("a root of Δ the rounded computation placed between two separate cells, where P and D did "
-                                      "not read as a touch (a spurious root, or a touch it could not place): no status there");
+      res.undecided_reasons.push_back(
+          "a root of Δ the rounded computation placed between two separate cells, where P and D did "
+          "not read as a touch (a spurious root, or a touch it could not place): no status there");
     if (has(plain, PlainUndecided::own_sign))
-      res.undecided_reasons.push_back("the rounded values of f's coefficients at an instant give no status (a sign pattern "
-                                      "impossible for two ellipses, or a NaN): no status there");
+      res.undecided_reasons.push_back(
+          "the rounded values of f's coefficients at an instant give no status (a sign pattern "
+          "impossible for two ellipses, or a NaN): no status there");
     if (plain == PlainUndecided::none)  // a pipeline that does not tell (ccd_projection.hpp)
-      res.undecided_reasons.push_back("the rounded values at an instant give no status (signs that match no configuration, "
-                                      "or a NaN): no status there");
+      res.undecided_reasons.push_back(
+          "the rounded values at an instant give no status (signs that match no configuration, "
+          "or a NaN): no status there");
   } else {
     res.undecided_reasons.push_back("a sign too close to zero to decide in this arithmetic");
   }
@@ -87,7 +90,8 @@ void collect_reasons(PipelineResult<T>& res, const Policy& pol, PlainUndecided p
 
 // The contact point of Lemma 5: the null vector of λ0 A(t) - B(t), λ0 = P / (2D).
 template <class T>
-ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b, const std::vector<Poly<T>>& g, const T& t) {
+ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b, const std::vector<Poly<T>>& g,
+                           const T& t) {
   T g3 = g[3](t), g2 = g[2](t), g1 = g[1](t), g0 = g[0](t);
   T p = double_root_numerator(g3, g2, g1, g0), d = double_root_denominator(g3, g2, g1);
   ContactPoint cp;
@@ -95,7 +99,10 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
   T lam = p / (T(2) * d);
   Matrix<T, 3> m{};
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) { T x = lam * a[i][j](t); m[i][j] = x - b[i][j](t); }
+    for (int j = 0; j < 3; ++j) {
+      T x = lam * a[i][j](t);
+      m[i][j] = x - b[i][j](t);
+    }
   // null vector: the largest cross product of two rows (rank 2, Lemma 5)
   T best[3] = {T(0), T(0), T(0)};
   double bestn = -1;
@@ -104,19 +111,28 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
     const auto& v = m[(r + 1) % 3];
     T c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     double n = std::abs(to_double(c[0])) + std::abs(to_double(c[1])) + std::abs(to_double(c[2]));
-    if (n > bestn) { bestn = n; best[0] = c[0]; best[1] = c[1]; best[2] = c[2]; }
+    if (n > bestn) {
+      bestn = n;
+      best[0] = c[0];
+      best[1] = c[1];
+      best[2] = c[2];
+    }
   }
   if (is_zero(best[2])) return cp;
   T x = best[0] / best[2], y = best[1] / best[2];
   auto show = [](const T& v) {  // display only
-    if constexpr (scalar_traits<T>::is_exact) return decimal_string(v); else return scalar_traits<T>::to_string(v);
+    if constexpr (scalar_traits<T>::is_exact)
+      return decimal_string(v);
+    else
+      return scalar_traits<T>::to_string(v);
   };
   cp.x = {show(x), show(y)};
   // The common normal: the gradient (A X) of a at X = (x, y, 1), as a unit vector in double (display only).
   double n[2];
   for (int i = 0; i < 2; ++i) n[i] = to_double(T(a[i][0](t) * x + a[i][1](t) * y + a[i][2](t)));
   const double len = std::hypot(n[0], n[1]);
-  if (len > 0 && std::isfinite(len)) cp.normal = {decimal_string(mpq_class(n[0] / len), 17), decimal_string(mpq_class(n[1] / len), 17)};
+  if (len > 0 && std::isfinite(len))
+    cp.normal = {decimal_string(mpq_class(n[0] / len), 17), decimal_string(mpq_class(n[1] / len), 17)};
   return cp;
 }
 
@@ -126,7 +142,8 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
 // policy's reasons and its time; a policy that already reported trouble
 // (floating: a non-finite value) leaves [0, 1] undecided.
 template <class T, PipelinePolicy<T> Policy>
-std::pair<T, T> start_run(PipelineResult<T>& res, const Policy& pol, const T& like) {  // g normalised (hook); {0, 1} in T
+std::pair<T, T> start_run(PipelineResult<T>& res, const Policy& pol,
+                          const T& like) {  // g normalised (hook); {0, 1} in T
   policy_hooks::normalise_g(pol, res.g);
   return {scalar_traits<T>::from_rational(mpq_class(0), like), scalar_traits<T>::from_rational(mpq_class(1), like)};
 }
@@ -157,8 +174,10 @@ bool undecided_on_trouble(PipelineResult<T>& res, Policy& pol, const T& zero, co
 // error against the exact Δ is the same to two digits).
 template <class Policy>
 constexpr bool delta_from_hessian() {
-  if constexpr (requires { Policy::delta_from_hessian; }) return Policy::delta_from_hessian;
-  else return false;
+  if constexpr (requires { Policy::delta_from_hessian; })
+    return Policy::delta_from_hessian;
+  else
+    return false;
 }
 template <class T, PipelinePolicy<T> Policy>
 auto discriminant_of(const std::vector<Poly<T>>& g, const Policy& pol) {
@@ -196,7 +215,9 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
   auto finish = [&]() { return finish_run(res, pol, start, plain); };
   if (undecided_on_trouble(res, pol, zero, one)) return finish();
 
-  auto status_at = [&](const T& t) { return policy_hooks::settle_status(pol, t, cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t))); };
+  auto status_at = [&](const T& t) {
+    return policy_hooks::settle_status(pol, t, cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t)));
+  };
   res.status_at_0 = status_at(zero);
 
   auto delta = discriminant_of(g, pol);
@@ -230,7 +251,8 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
         Status st = status_at_multiple_root(pol.sign_at_value(P, s), pol.sign_at_value(D, s));
         res.cells.push_back({pol.instant_at(s), st});
         if (st == Status::touching)
-          ans.contact_intervals.push_back({i ? pol.instant(rts[i - 1]) : i0, i < rts.size() ? pol.instant(rts[i]) : i1});
+          ans.contact_intervals.push_back(
+              {i ? pol.instant(rts[i - 1]) : i0, i < rts.size() ? pol.instant(rts[i]) : i1});
       }
     }
     return finish();
@@ -266,9 +288,12 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
   const typename Policy::Root* root0 = nullptr;
   const typename Policy::Root* root1 = nullptr;
   for (auto& r : rts) {
-    if (pol.at_zero(r)) root0 = &r;
-    else if (pol.at_one(r)) root1 = &r;
-    else interior.push_back(&r);
+    if (pol.at_zero(r))
+      root0 = &r;
+    else if (pol.at_one(r))
+      root1 = &r;
+    else
+      interior.push_back(&r);
   }
   auto root_status = [&](const typename Policy::Root& r) {
     return status_at_multiple_root(pol.sign_at(P, r), pol.sign_at(D, r));
@@ -278,7 +303,10 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
     if (r && root_status(*r) == Status::touching) s = Status::touching;
     return s;
   };
-  auto push = [&](TimelineNode n, const typename Policy::Root* r) { seq.push_back(n); node_root.push_back(r); };
+  auto push = [&](TimelineNode n, const typename Policy::Root* r) {
+    seq.push_back(n);
+    node_root.push_back(r);
+  };
   push({i0, endpoint_status(zero, root0), false}, root0);
   for (std::size_t i = 0; i <= interior.size(); ++i) {
     const typename Policy::Root* l = i ? interior[i - 1] : nullptr;
@@ -301,12 +329,15 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
   }
   res.timeline = seq;
   for (std::size_t k = 0; k < seq.size(); ++k)
-    if (!seq[k].is_cell && node_root[k]) res.critical.push_back({seq[k].t, seq[k].status, pol.multiplicity(*node_root[k])});
+    if (!seq[k].is_cell && node_root[k])
+      res.critical.push_back({seq[k].t, seq[k].status, pol.multiplicity(*node_root[k])});
 
   assemble_answer(seq, ans, [&](std::size_t k) {
     const T at = node_root[k] ? pol.value(*node_root[k]) : (k == 0 ? zero : one);
-    if constexpr (std::is_same_v<T, mpq_class>) ans.contact_points.push_back(contact_point_integer(A, B, g, at));  // the same point over the integers (issue 21)
-    else ans.contact_points.push_back(contact_point(A, B, g, at));
+    if constexpr (std::is_same_v<T, mpq_class>)
+      ans.contact_points.push_back(contact_point_integer(A, B, g, at));  // the same point over the integers (issue 21)
+    else
+      ans.contact_points.push_back(contact_point(A, B, g, at));
   });
   if (variant == Variant::all_contacts) ans.intervals.clear();
   return finish();

@@ -65,12 +65,21 @@ std::vector<R> characteristic_coefficients_in(const std::array<std::array<R, H>,
               const R& e = src ? a[r][c] : b[r][c];
               if (is_ring_zero(e)) continue;
               const unsigned to = from + (src ? 2u : 1u) * pow3[c];
-              if (!live[to]) { dp[to] = zero; live[to] = 1; }
+              if (!live[to]) {
+                dp[to] = zero;
+                live[to] = 1;
+              }
               if (r == 0) {
-                if (neg) dp[to] = dp[to] - e; else dp[to] = dp[to] + e;
+                if (neg)
+                  dp[to] = dp[to] - e;
+                else
+                  dp[to] = dp[to] + e;
               } else {
                 R term = dp[from] * e;
-                if (neg) dp[to] = dp[to] - term; else dp[to] = dp[to] + term;
+                if (neg)
+                  dp[to] = dp[to] - term;
+                else
+                  dp[to] = dp[to] + term;
               }
             }
           }
@@ -83,7 +92,10 @@ std::vector<R> characteristic_coefficients_in(const std::array<std::array<R, H>,
     const unsigned full = index(N - 1, mask);
     const R& d = live[full] ? dp[full] : zero;
     int k = std::popcount(mask);
-    if ((H - k) % 2) g[k] = g[k] - d; else g[k] = g[k] + d;
+    if ((H - k) % 2)
+      g[k] = g[k] - d;
+    else
+      g[k] = g[k] + d;
   }
   return g;
 }
@@ -102,7 +114,8 @@ std::vector<Poly<T>> characteristic_of(const MovingPair<T, H>& p) {
 template <class T, int H>
 std::vector<Bern<T>> characteristic_of(const MovingPairBern<T, H>& p) {
   Bern<T> zero;
-  zero.b.push_back(scalar_traits<T>::from_rational(mpq_class(0), p.qa[0][0]));  // an exact 0 (not x - x, which carries x's error bound)
+  zero.b.push_back(scalar_traits<T>::from_rational(
+      mpq_class(0), p.qa[0][0]));  // an exact 0 (not x - x, which carries x's error bound)
   auto a = moving_quadric_in<Bern<T>, T, H>(p.qa, p.na, zero);
   auto b = moving_quadric_in<Bern<T>, T, H>(p.qb, p.nb, zero);
   return characteristic_coefficients_in<Bern<T>, H>(a, b, zero);

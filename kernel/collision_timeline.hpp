@@ -27,7 +27,7 @@
 namespace eccd {
 
 struct TimelineNode {
-  Instant t;      // the instant, or for a cell its sample instant
+  Instant t;  // the instant, or for a cell its sample instant
   Status status;
   bool is_cell;
 };
@@ -39,7 +39,8 @@ struct TimelineNode {
 inline void check_isolated_instants(std::vector<TimelineNode>& seq, bool exact) {
   for (std::size_t k = 2; k + 2 < seq.size(); k += 2) {
     TimelineNode& n = seq[k];
-    if (n.status == Status::overlapping && seq[k - 1].status == Status::separate && seq[k + 1].status == Status::separate) {
+    if (n.status == Status::overlapping && seq[k - 1].status == Status::separate &&
+        seq[k + 1].status == Status::separate) {
       if (exact) throw std::logic_error("internal error: an isolated overlapping instant between separate cells");
       n.status = Status::uncertain;
     }
@@ -53,7 +54,9 @@ void assemble_answer(const std::vector<TimelineNode>& seq, Answer& ans, OnContac
   // Continuous touching (docs/answer-format.md): a touching cell makes a
   // contact interval from its left to its right instant (runs merged); the
   // instants inside such an interval are not isolated contacts.
-  auto touching_cell = [&](std::size_t k) { return k < seq.size() && seq[k].is_cell && seq[k].status == Status::touching; };
+  auto touching_cell = [&](std::size_t k) {
+    return k < seq.size() && seq[k].is_cell && seq[k].status == Status::touching;
+  };
   auto contact = [&](std::size_t k) {
     if (touching_cell(k + 1) || (k > 0 && touching_cell(k - 1))) return;
     ans.contacts.push_back(seq[k].t);
@@ -68,7 +71,10 @@ void assemble_answer(const std::vector<TimelineNode>& seq, Answer& ans, OnContac
   }
   for (std::size_t k = 0; k < seq.size(); ++k) {
     const TimelineNode& n = seq[k];
-    if (n.status == Status::uncertain) { ans.undecided.push_back(n.t); continue; }
+    if (n.status == Status::uncertain) {
+      ans.undecided.push_back(n.t);
+      continue;
+    }
     if (!n.is_cell && n.status == Status::touching) contact(k);
     if (!in_collision(n.status)) continue;
     std::size_t e = k;

@@ -40,7 +40,11 @@ ContactGeometry<T, H> contact_geometry(const Matrix<T, H>& a, const Matrix<T, H>
   for (const T& c : small_real_roots(derivative(f))) {
     if (sign(c) != Sign::negative) continue;
     T v = abs_of(f(c));
-    if (!have || v < best) { have = true; lam = c; best = v; }
+    if (!have || v < best) {
+      have = true;
+      lam = c;
+      best = v;
+    }
   }
   if (!have) return out;
   const EMatrix<T, H> A = to_eigen<T, H>(a), B = to_eigen<T, H>(b);

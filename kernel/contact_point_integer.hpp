@@ -47,8 +47,8 @@ namespace contact_integer_detail {
 
 // out[i] = q_i(u/v) · D · v^N for the polynomials qs (D the lcm of all their
 // coefficients' denominators, N their largest degree): integers.
-inline void common_denominator_values(const std::vector<const Poly<mpq_class>*>& qs, const mpq_class& t, std::vector<mpz_class>& out,
-                                      mpz_class& D, int& N) {
+inline void common_denominator_values(const std::vector<const Poly<mpq_class>*>& qs, const mpq_class& t,
+                                      std::vector<mpz_class>& out, mpz_class& D, int& N) {
   D = 1;
   N = 0;
   for (const auto* q : qs) {
@@ -89,7 +89,10 @@ inline void common_denominator_values(const std::vector<const Poly<mpq_class>*>&
 // 53 bits, without reducing the fraction: false when |n / d| may lie outside
 // [2^-1000, 2^1000] (the caller then reduces it).
 inline bool truncated_double(const mpz_class& n, const mpz_class& d, double& out) {
-  if (sgn(n) == 0) { out = 0.0; return true; }
+  if (sgn(n) == 0) {
+    out = 0.0;
+    return true;
+  }
   // |n| >= 2^(bn-1), d < 2^bd, so q = trunc(|n| 2^e / d) >= 2^63 for e = bd - bn + 64,
   // and q < 2^65: truncating q to 53 bits is truncating |n| 2^e / d (the dropped bits are below q's 12th).
   const long e = long(mpz_sizeinbase(d.get_mpz_t(), 2)) - long(mpz_sizeinbase(n.get_mpz_t(), 2)) + 64;
@@ -150,7 +153,10 @@ inline ContactPoint contact_point_integer(const PolyMatrix<mpq_class, 3>& a, con
   if (sgn(D) == 0) return cp;
   std::vector<const Poly<mpq_class>*> pa, pb;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) { pa.push_back(&a[i][j]); pb.push_back(&b[i][j]); }
+    for (int j = 0; j < 3; ++j) {
+      pa.push_back(&a[i][j]);
+      pb.push_back(&b[i][j]);
+    }
   common_denominator_values(pa, t, IA, DA, NA);
   common_denominator_values(pb, t, IB, DB, NB);
   mpz_class vNA, vNB;
@@ -169,11 +175,17 @@ inline ContactPoint contact_point_integer(const PolyMatrix<mpq_class, 3>& a, con
     const auto& w = M[(r + 1) % 3];
     mpz_class c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
     double n = std::abs(to_double_of(c[0], s2)) + std::abs(to_double_of(c[1], s2)) + std::abs(to_double_of(c[2], s2));
-    if (n > bestn) { bestn = n; best[0] = c[0]; best[1] = c[1]; best[2] = c[2]; }
+    if (n > bestn) {
+      bestn = n;
+      best[0] = c[0];
+      best[1] = c[1];
+      best[2] = c[2];
+    }
   }
   if (sgn(best[2]) == 0) return cp;
   cp.x = {decimal_string_of(best[0], best[2]), decimal_string_of(best[1], best[2])};
-  // The common normal: (a_i0 x + a_i1 y + a_i2)(t) = (IA_i0 C0 + IA_i1 C1 + IA_i2 C2) / (DA v^NA C2), in double (display only).
+  // The common normal: (a_i0 x + a_i1 y + a_i2)(t) = (IA_i0 C0 + IA_i1 C1 + IA_i2 C2) / (DA v^NA C2), in double
+  // (display only).
   const mpz_class den = DA * vNA * best[2];
   double n[2];
   for (int i = 0; i < 2; ++i) {
@@ -181,7 +193,8 @@ inline ContactPoint contact_point_integer(const PolyMatrix<mpq_class, 3>& a, con
     n[i] = sgn(den) < 0 ? to_double_of(mpz_class(-num), mpz_class(-den)) : to_double_of(num, den);
   }
   const double len = std::hypot(n[0], n[1]);
-  if (len > 0 && std::isfinite(len)) cp.normal = {decimal_string(mpq_class(n[0] / len), 17), decimal_string(mpq_class(n[1] / len), 17)};
+  if (len > 0 && std::isfinite(len))
+    cp.normal = {decimal_string(mpq_class(n[0] / len), 17), decimal_string(mpq_class(n[1] / len), 17)};
   return cp;
 }
 

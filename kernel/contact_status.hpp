@@ -26,10 +26,14 @@ enum class Status { separate, touching, overlapping, uncertain };
 
 inline const char* to_string(Status s) {
   switch (s) {
-    case Status::separate: return "separate";
-    case Status::touching: return "touching";
-    case Status::overlapping: return "overlapping";
-    default: return "uncertain";
+    case Status::separate:
+      return "separate";
+    case Status::touching:
+      return "touching";
+    case Status::overlapping:
+      return "overlapping";
+    default:
+      return "uncertain";
   }
 }
 inline bool in_collision(Status s) { return s == Status::touching || s == Status::overlapping; }

@@ -46,10 +46,10 @@
 namespace eccd {
 
 struct CycloidalOptions {
-  bool certified = false;     // instants with brackets (T = MpfiInterval)
-  int max_depth = 40;         // smallest cell 2^-max_depth
-  int refine_bits = 60;       // a simple root's bracket is narrowed to 2^-refine_bits (while signs are proved)
-  long max_cells = 200000;    // work bound on cells examined
+  bool certified = false;   // instants with brackets (T = MpfiInterval)
+  int max_depth = 40;       // smallest cell 2^-max_depth
+  int refine_bits = 60;     // a simple root's bracket is narrowed to 2^-refine_bits (while signs are proved)
+  long max_cells = 200000;  // work bound on cells examined
 };
 
 // One critical stretch of Δ: a proved simple root in (lo, hi), or an undecided stretch [lo, hi].
@@ -102,8 +102,13 @@ class CycloidalIsolator {
       if (c.simple) continue;
       mpq_class w = c.hi - c.lo;
       mpq_class a = std::max(mpq_class(0), mpq_class(c.lo - w)), b = std::min(mpq_class(1), mpq_class(c.hi + w));
-      if (prove_simple(a, b)) { c.lo = a; c.hi = b; c.simple = true; refine(c); }
-      else c.eps = magnitude_bound(delta_range(c.lo, c.hi));
+      if (prove_simple(a, b)) {
+        c.lo = a;
+        c.hi = b;
+        c.simple = true;
+        refine(c);
+      } else
+        c.eps = magnitude_bound(delta_range(c.lo, c.hi));
     }
     return merged;
   }
@@ -124,7 +129,10 @@ class CycloidalIsolator {
       mpq_class m = (c.lo + c.hi) / 2;
       Sign sm = sign(delta_point(m));
       if (sm == Sign::uncertain || sm == Sign::zero) break;  // the mid-point's sign is not proved: keep the bracket
-      if (sm == sl) c.lo = m; else c.hi = m;
+      if (sm == sl)
+        c.lo = m;
+      else
+        c.hi = m;
     }
   }
   void visit(const mpq_class& a, const mpq_class& b, int depth, std::vector<CycloidalCritical>& out) {
@@ -191,18 +199,24 @@ PipelineResult<T> cycloidal_cd_disc(const CycloidalPair<T>& pair, const T& like,
   res.status_at_0 = status_at(point(zero));
   std::vector<TimelineNode> seq;
   std::vector<const CycloidalCritical*> node_crit;
-  auto push = [&](TimelineNode n, const CycloidalCritical* c) { seq.push_back(n); node_crit.push_back(c); };
+  auto push = [&](TimelineNode n, const CycloidalCritical* c) {
+    seq.push_back(n);
+    node_crit.push_back(c);
+  };
   // An undecided stretch that reaches 0 or 1 makes that end undecided. (A
   // simple root's bracket may start at 0 or end at 1, but Δ's sign there is
   // proved non-zero, so the root is interior.)
-  const CycloidalCritical* c0 = (!crit.empty() && !crit.front().simple && crit.front().lo == zero) ? &crit.front() : nullptr;
-  const CycloidalCritical* c1 = (!crit.empty() && !crit.back().simple && crit.back().hi == one) ? &crit.back() : nullptr;
+  const CycloidalCritical* c0 =
+      (!crit.empty() && !crit.front().simple && crit.front().lo == zero) ? &crit.front() : nullptr;
+  const CycloidalCritical* c1 =
+      (!crit.empty() && !crit.back().simple && crit.back().hi == one) ? &crit.back() : nullptr;
   auto end_status = [&](const mpq_class& t, const CycloidalCritical* c) {
     return c ? Status::uncertain : status_at(point(t));
   };
   push({instant_of(zero, zero), end_status(zero, c0), false}, c0);
   std::vector<const CycloidalCritical*> interior;
-  for (auto& c : crit) if (&c != c0 && &c != c1) interior.push_back(&c);  // c0 == c1 is possible (all of [0, 1])
+  for (auto& c : crit)
+    if (&c != c0 && &c != c1) interior.push_back(&c);  // c0 == c1 is possible (all of [0, 1])
   for (std::size_t i = 0; i <= interior.size(); ++i) {
     mpq_class a = i ? interior[i - 1]->hi : (c0 ? c0->hi : zero);
     mpq_class b = i < interior.size() ? interior[i]->lo : (c1 ? c1->lo : one);
@@ -211,13 +225,15 @@ PipelineResult<T> cycloidal_cd_disc(const CycloidalPair<T>& pair, const T& like,
     Status cs = a < b ? status_at(point(s)) : Status::uncertain;
     push({instant_of(s, s), cs, true}, nullptr);
     res.cells.push_back({instant_of(s, s), cs});
-    if (i < interior.size()) push({instant_of(interior[i]->lo, interior[i]->hi), root_status(*interior[i]), false}, interior[i]);
+    if (i < interior.size())
+      push({instant_of(interior[i]->lo, interior[i]->hi), root_status(*interior[i]), false}, interior[i]);
   }
   push({instant_of(one, one), end_status(one, c1), false}, c1);
   check_isolated_instants(seq, false);
   res.timeline = seq;
   for (std::size_t k = 0; k < seq.size(); ++k)
-    if (!seq[k].is_cell && node_crit[k]) res.critical.push_back({seq[k].t, seq[k].status, node_crit[k]->simple ? 1 : 2});
+    if (!seq[k].is_cell && node_crit[k])
+      res.critical.push_back({seq[k].t, seq[k].status, node_crit[k]->simple ? 1 : 2});
 
   Answer& ans = res.answer;
   assemble_answer(seq, ans, [&](std::size_t k) {
@@ -225,20 +241,23 @@ PipelineResult<T> cycloidal_cd_disc(const CycloidalPair<T>& pair, const T& like,
     T tt = point(t);
     auto toc = [](const Matrix<T, 3>& m) {
       PolyMatrix<T, 3> r;
-      for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) r[i][j] = Poly<T>(std::vector<T>{m[i][j]});
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r[i][j] = Poly<T>(std::vector<T>{m[i][j]});
       return r;
     };
     auto g = cycloidal_g<T>(pair, tt);
     std::vector<Poly<T>> gp;
     for (auto& x : g) gp.push_back(Poly<T>(std::vector<T>{x}));
-    ans.contact_points.push_back(contact_point(toc(cycloidal_quadric_at<T>(pair.a, tt)), toc(cycloidal_quadric_at<T>(pair.b, tt)), gp, tt));
+    ans.contact_points.push_back(
+        contact_point(toc(cycloidal_quadric_at<T>(pair.a, tt)), toc(cycloidal_quadric_at<T>(pair.b, tt)), gp, tt));
   });
   for (auto& c : crit) {
     if (c.simple) continue;
     char eps[32];
     std::snprintf(eps, sizeof eps, "%.3g", c.eps);
-    res.undecided_reasons.push_back("Δ has no proved sign on [" + decimal_string(c.lo, 25) + ", " + decimal_string(c.hi, 25) +
-                                    "] (|Δ| <= " + eps + " there): a touch or near miss within that bound, or close roots; "
+    res.undecided_reasons.push_back("Δ has no proved sign on [" + decimal_string(c.lo, 25) + ", " +
+                                    decimal_string(c.hi, 25) + "] (|Δ| <= " + eps +
+                                    " there): a touch or near miss within that bound, or close roots; "
                                     "nothing is claimed there");
   }
   if (iso.work_bound_hit()) res.undecided_reasons.push_back("cycloidal root isolation: work bound reached (cells)");

@@ -32,9 +32,9 @@ namespace eccd {
 template <class T>
 struct CycloidalObject {
   Matrix<T, 3> q;
-  T cx, cy;            // centre (about which it turns)
-  T th0, th1;          // angle / π = th0 + th1 t
-  T x0, x1, y0, y1;    // translation
+  T cx, cy;          // centre (about which it turns)
+  T th0, th1;        // angle / π = th0 + th1 t
+  T x0, x1, y0, y1;  // translation
 };
 
 template <class T>
@@ -54,19 +54,25 @@ CycloidalPair<T> cycloidal_pair(const Scene& s, const T& like) {
   auto conv = [&](const Rational& r) { return scalar_traits<T>::from_rational(r, like); };
   auto one = [&](const SceneObject& o, const char* which) {
     CycloidalObject<T> c;
-    for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) c.q[i][j] = conv(o.Q[i][j]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) c.q[i][j] = conv(o.Q[i][j]);
     // centre: Q[0:2,0:2] c = -Q[0:2,2] (exactly, in rationals)
     const auto& Q = o.Q;
     Rational det = Q[0][0] * Q[1][1] - Q[0][1] * Q[1][0];
-    if (det == 0) throw std::invalid_argument(std::string("object ") + which + ": not an ellipse (singular quadratic part)");
+    if (det == 0)
+      throw std::invalid_argument(std::string("object ") + which + ": not an ellipse (singular quadratic part)");
     Rational cx = (-Q[0][2] * Q[1][1] + Q[1][2] * Q[0][1]) / det;
     Rational cy = (-Q[1][2] * Q[0][0] + Q[0][2] * Q[1][0]) / det;
     c.cx = conv(cx);
     c.cy = conv(cy);
     Rational z(0);
     if (auto* m = std::get_if<CycloidalMotion>(&o.motion)) {
-      c.th0 = conv(m->theta0); c.th1 = conv(m->theta1);
-      c.x0 = conv(m->x[0]); c.x1 = conv(m->x[1]); c.y0 = conv(m->y[0]); c.y1 = conv(m->y[1]);
+      c.th0 = conv(m->theta0);
+      c.th1 = conv(m->theta1);
+      c.x0 = conv(m->x[0]);
+      c.x1 = conv(m->x[1]);
+      c.y0 = conv(m->y[0]);
+      c.y1 = conv(m->y[1]);
     } else if (std::holds_alternative<StaticMotion>(o.motion)) {
       c.th0 = c.th1 = c.x0 = c.x1 = c.y0 = c.y1 = conv(z);
     } else {
@@ -81,19 +87,34 @@ CycloidalPair<T> cycloidal_pair(const Scene& s, const T& like) {
 // A(t) for one object, at t in R (T, or Dual<T> for derivatives).
 template <class R, class T>
 Matrix<R, 3> cycloidal_quadric_at(const CycloidalObject<T>& o, const R& t) {
-  auto lift = [](const T& x) { if constexpr (std::is_same_v<R, T>) return x; else return R(x, T(0) * x); };
+  auto lift = [](const T& x) {
+    if constexpr (std::is_same_v<R, T>)
+      return x;
+    else
+      return R(x, T(0) * x);
+  };
   R s, c;
   sin_cos_pi(R(lift(o.th0) + lift(o.th1) * t), s, c);
   R wx = lift(o.cx) + lift(o.x0) + lift(o.x1) * t, wy = lift(o.cy) + lift(o.y0) + lift(o.y1) * t;
   Matrix<R, 3> n;
-  n[0][0] = c; n[0][1] = s; n[0][2] = lift(o.cx) - (c * wx + s * wy);
-  n[1][0] = -s; n[1][1] = c; n[1][2] = lift(o.cy) - (c * wy - s * wx);
-  n[2][0] = R(0); n[2][1] = R(0); n[2][2] = R(1);
+  n[0][0] = c;
+  n[0][1] = s;
+  n[0][2] = lift(o.cx) - (c * wx + s * wy);
+  n[1][0] = -s;
+  n[1][1] = c;
+  n[1][2] = lift(o.cy) - (c * wy - s * wx);
+  n[2][0] = R(0);
+  n[2][1] = R(0);
+  n[2][2] = R(1);
   Matrix<R, 3> qn, a;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) qn[i][j] = lift(o.q[i][0]) * n[0][j] + lift(o.q[i][1]) * n[1][j] + lift(o.q[i][2]) * n[2][j];
+    for (int j = 0; j < 3; ++j)
+      qn[i][j] = lift(o.q[i][0]) * n[0][j] + lift(o.q[i][1]) * n[1][j] + lift(o.q[i][2]) * n[2][j];
   for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) { a[i][j] = n[0][i] * qn[0][j] + n[1][i] * qn[1][j] + n[2][i] * qn[2][j]; a[j][i] = a[i][j]; }
+    for (int j = i; j < 3; ++j) {
+      a[i][j] = n[0][i] * qn[0][j] + n[1][i] * qn[1][j] + n[2][i] * qn[2][j];
+      a[j][i] = a[i][j];
+    }
   return a;
 }
 

@@ -29,7 +29,15 @@ struct NumTraits<eccd::Mpfr> : GenericNumTraits<eccd::Mpfr> {
   using NonInteger = eccd::Mpfr;
   using Nested = eccd::Mpfr;
   using Literal = eccd::Mpfr;
-  enum { IsComplex = 0, IsInteger = 0, IsSigned = 1, RequireInitialization = 1, ReadCost = 10, AddCost = 10, MulCost = 40 };
+  enum {
+    IsComplex = 0,
+    IsInteger = 0,
+    IsSigned = 1,
+    RequireInitialization = 1,
+    ReadCost = 10,
+    AddCost = 10,
+    MulCost = 40
+  };
 };
 }  // namespace Eigen
 

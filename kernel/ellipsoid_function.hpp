@@ -24,7 +24,10 @@
 
 namespace eccd {
 
-inline int binomial4(int j) { static const int c[5] = {1, 4, 6, 4, 1}; return c[j]; }
+inline int binomial4(int j) {
+  static const int c[5] = {1, 4, 6, 4, 1};
+  return c[j];
+}
 
 // Each polynomial in Bernstein form of its own degree (the zero polynomial as [0]).
 template <class T>

@@ -22,7 +22,8 @@ namespace eccd {
 
 // Coefficients in increasing powers of λ: {A0, A1, A2, A3, A4}.
 template <class T>
-[[gnu::always_inline]] constexpr std::array<T, 5> appendix_a_coefficients(const T& ea, const T& eb, const T& ec, const std::array<std::array<T, 4>, 4>& m) {
+[[gnu::always_inline]] constexpr std::array<T, 5> appendix_a_coefficients(const T& ea, const T& eb, const T& ec,
+                                                                          const std::array<std::array<T, 4>, 4>& m) {
   const T &b11 = m[0][0], &b12 = m[0][1], &b13 = m[0][2], &b14 = m[0][3];
   const T &b22 = m[1][1], &b23 = m[1][2], &b24 = m[1][3];
   const T &b33 = m[2][2], &b34 = m[2][3], &b44 = m[3][3];

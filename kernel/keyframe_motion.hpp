@@ -39,8 +39,8 @@
 namespace eccd {
 
 struct KeyPose {
-  std::vector<Rational> position;     // dim entries
-  std::vector<Rational> orientation;  // 3D: [w, x, y, z]; 2D: [w, z]
+  std::vector<Rational> position;                                 // dim entries
+  std::vector<Rational> orientation;                              // 3D: [w, x, y, z]; 2D: [w, z]
   std::optional<std::vector<std::vector<Rational>>> deformation;  // dim x dim; absent = identity
 };
 
@@ -73,8 +73,8 @@ inline RPoly keyframe_weight(const std::vector<Rational>& q0, const std::vector<
 
 // The homogeneous matrix [[W(τ)·R(τ), 0], [0, W(τ)]] (size dim + 1, degree 2)
 // of q(τ) from q_0 and q'_1.
-inline std::vector<std::vector<RPoly>> keyframe_rotation(const std::vector<Rational>& q0, const std::vector<Rational>& q1,
-                                                         int dim) {
+inline std::vector<std::vector<RPoly>> keyframe_rotation(const std::vector<Rational>& q0,
+                                                         const std::vector<Rational>& q1, int dim) {
   std::vector<std::vector<RPoly>> h(dim + 1, std::vector<RPoly>(dim + 1));
   std::vector<RPoly> q = keyframe_orientation(q0, q1);
   if (dim == 2) {

@@ -38,9 +38,9 @@ namespace modp {
 inline constexpr std::uint64_t kPrime = (std::uint64_t(1) << 61) - 1;
 
 inline std::uint64_t mul(std::uint64_t a, std::uint64_t b) {
-  unsigned __int128 x = static_cast<unsigned __int128>(a) * b;  // < 2^122
+  unsigned __int128 x = static_cast<unsigned __int128>(a) * b;                // < 2^122
   std::uint64_t lo = std::uint64_t(x & kPrime), hi = std::uint64_t(x >> 61);  // x = hi·2^61 + lo, 2^61 ≡ 1
-  std::uint64_t r = lo + hi;  // < 2^62
+  std::uint64_t r = lo + hi;                                                  // < 2^62
   r = (r & kPrime) + (r >> 61);
   return r >= kPrime ? r - kPrime : r;
 }
@@ -67,7 +67,10 @@ inline std::optional<std::vector<std::uint64_t>> image(const Poly<Rational>& a) 
   for (std::size_t i = 0; i < a.c.size(); ++i) {
     std::uint64_t d = residue(a.c[i].get_den());
     if (d == 0) return std::nullopt;
-    if (d != last_d) { last_d = d; last_inv = inverse(d); }
+    if (d != last_d) {
+      last_d = d;
+      last_inv = inverse(d);
+    }
     r[i] = mul(residue(a.c[i].get_num()), last_inv);
   }
   if (r.empty() || r.back() == 0) return std::nullopt;
@@ -76,7 +79,9 @@ inline std::optional<std::vector<std::uint64_t>> image(const Poly<Rational>& a) 
 
 // The degree of gcd(a, b) in F_p[t] (Euclid); both non-zero with non-zero leading coefficients.
 inline int gcd_degree(std::vector<std::uint64_t> a, std::vector<std::uint64_t> b) {
-  auto trim = [](std::vector<std::uint64_t>& v) { while (!v.empty() && v.back() == 0) v.pop_back(); };
+  auto trim = [](std::vector<std::uint64_t>& v) {
+    while (!v.empty() && v.back() == 0) v.pop_back();
+  };
   if (a.size() < b.size()) std::swap(a, b);
   while (!b.empty()) {
     const std::uint64_t inv = inverse(b.back());
@@ -113,8 +118,10 @@ bool content_is_constant(const Rows& m) {
   for (const auto& row : m)
     for (const Poly<Rational>& e : row) {
       if (e.is_zero()) continue;
-      if (!first) first = &e;
-      else if (coprime_mod_p(*first, e)) return true;
+      if (!first)
+        first = &e;
+      else if (coprime_mod_p(*first, e))
+        return true;
     }
   return first && first->degree() == 0;
 }

@@ -83,9 +83,15 @@ PolyMatrix<T, N> motion_matrix(const Motion& motion, Conv conv) {
     if constexpr (N == 3) {
       Poly<T> d0 = P(k->d[0]), d1 = P(k->d[1]), d2 = P(k->d[2]), d3 = P(k->d[3]);
       Poly<T> c = d2 * d2 - d3 * d3, s = 2 * (d2 * d3);
-      m[0][0] = c; m[0][1] = s;  m[0][2] = 2 * (d0 * d3 - d1 * d2);
-      m[1][0] = -s; m[1][1] = c; m[1][2] = 2 * (d0 * d2 + d1 * d3);
-      m[2][0] = Poly<T>(); m[2][1] = Poly<T>(); m[2][2] = d2 * d2 + d3 * d3;
+      m[0][0] = c;
+      m[0][1] = s;
+      m[0][2] = 2 * (d0 * d3 - d1 * d2);
+      m[1][0] = -s;
+      m[1][1] = c;
+      m[1][2] = 2 * (d0 * d2 + d1 * d3);
+      m[2][0] = Poly<T>();
+      m[2][1] = Poly<T>();
+      m[2][2] = d2 * d2 + d3 * d3;
       return m;
     }
     throw std::invalid_argument("kinematic motions are 2D only");
@@ -116,8 +122,12 @@ PolyMatrix<T, N> motion_inverse(const Motion& motion, Conv conv) {
       Poly<T> d0 = P(k->d[0]), d1 = P(k->d[1]), d2 = P(k->d[2]), d3 = P(k->d[3]);
       Poly<T> c = d2 * d2 - d3 * d3, s = 2 * (d2 * d3);
       PolyMatrix<T, 3> n{};
-      n[0][0] = c;  n[0][1] = -s; n[0][2] = 2 * (d1 * d2 + d0 * d3);
-      n[1][0] = s;  n[1][1] = c;  n[1][2] = 2 * (d1 * d3 - d0 * d2);
+      n[0][0] = c;
+      n[0][1] = -s;
+      n[0][2] = 2 * (d1 * d2 + d0 * d3);
+      n[1][0] = s;
+      n[1][1] = c;
+      n[1][2] = 2 * (d1 * d3 - d0 * d2);
       n[2][2] = d2 * d2 + d3 * d3;
       return n;
     }

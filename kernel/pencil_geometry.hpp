@@ -58,7 +58,11 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
       T m = (l + r) / T(2);
       if (!(l < m && m < r)) break;
       Sign sm = sign(p(m));
-      if (sm == Sign::zero) { l = m; r = m; break; }
+      if (sm == Sign::zero) {
+        l = m;
+        r = m;
+        break;
+      }
       (sm == sl ? l : r) = m;
     }
     return (l + r) / T(2);
@@ -80,7 +84,11 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
           const Sign sa = sign(p(a)), sb = sign(p(b));
           if (sa == Sign::zero) return a;
           if (sb == Sign::zero) return b;
-          if (sa == sl && sb != sl) { l = a; r = b; x = xs; }
+          if (sa == sl && sb != sl) {
+            l = a;
+            r = b;
+            x = xs;
+          }
         }
       }
     }
@@ -110,10 +118,17 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
         nx = x - dx;
         // Inside the bracket and at most half the step before last (else bisect).
         newton = l < nx && nx < r && abs_of(T(dx + dx)) <= abs_of(step_old);
-        if (newton) { step_old = step; step = dx; }
+        if (newton) {
+          step_old = step;
+          step = dx;
+        }
         if (newton && negligible(dx, x)) return nx;
       }
-      if (!newton) { step_old = step; step = m - x; nx = m; }
+      if (!newton) {
+        step_old = step;
+        step = m - x;
+        nx = m;
+      }
       if (nx == x) return x;  // a step below the precision of T
       x = nx;
     }
@@ -135,11 +150,16 @@ std::vector<T> small_real_roots(const Poly<T>& p) {
     if (-bound < c && c < bound) pts.push_back(c);
   pts.push_back(bound);
   std::vector<T> roots;
-  auto add = [&](const T& r) { if (roots.empty() || roots.back() < r) roots.push_back(r); };
+  auto add = [&](const T& r) {
+    if (roots.empty() || roots.back() < r) roots.push_back(r);
+  };
   for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
     T l = pts[k], r = pts[k + 1];
     Sign sl = sign(p(l)), sr = sign(p(r));
-    if (sl == Sign::zero) { add(l); continue; }
+    if (sl == Sign::zero) {
+      add(l);
+      continue;
+    }
     if (sr == Sign::zero || sl == sr) continue;
     add(root_in_bracket(p, l, r, sl));
   }
@@ -184,7 +204,10 @@ EVector<T, H> null_vector(const EMatrix<T, H>& m) {
       row(j) = ((i + j) % 2) ? T(-d) : d;
     }
     T size = row.squaredNorm();
-    if (i == 0 || size > best_size) { best = row; best_size = size; }
+    if (i == 0 || size > best_size) {
+      best = row;
+      best_size = size;
+    }
   }
   return best;
 }

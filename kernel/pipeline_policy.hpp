@@ -6,9 +6,9 @@
 // Statement. The pipelines are written once (design.md: "only the places
 // where the mathematics really differs branch"); a policy P for the scalar
 // type T supplies those places:
-//   P::Rep                        how a projection polynomial is held (Poly<Rational> exact, Bern<T> rounded or interval)
-//   P::Root                       a root of one in [0, 1] (a bracket, an approximation)
-//   build(g, formula)             formula(G) for G = {g_0..g_N}, f's coefficients, applied in the ring of the
+//   P::Rep                        how a projection polynomial is held (Poly<Rational> exact, Bern<T> rounded or
+//   interval) P::Root                       a root of one in [0, 1] (a bracket, an approximation) build(g, formula)
+//   formula(G) for G = {g_0..g_N}, f's coefficients, applied in the ring of the
 //                                 policy's basis (kernel/basis_build.hpp); 2D formulas of (g3, g2, g1, g0)
 //                                 go through build_cubic
 //   identically_zero(q)           q ≡ 0 (interval policies may throw when they cannot tell)
@@ -49,40 +49,51 @@ namespace policy_detail {
 // The archetype of a build formula: any ring formula of G = {g_0..g_N}.
 struct FirstOf {
   template <class G>
-  auto operator()(const G& g) const { return g[0]; }
+  auto operator()(const G& g) const {
+    return g[0];
+  }
 };
 }  // namespace policy_detail
 
 template <class P, class T>
-concept PipelinePolicy =
-    requires(const P& pol, const std::vector<Poly<T>>& g, const typename P::Rep& q, const typename P::Root& r,
-             const typename P::Root* rp, const T& t, bool first_only) {
-      { pol.build(g, policy_detail::FirstOf{}) } -> std::same_as<typename P::Rep>;
-      { q.degree() } -> std::convertible_to<int>;
-      { pol.identically_zero(q) } -> std::convertible_to<bool>;
-      { pol.roots(q, first_only) } -> std::same_as<std::vector<typename P::Root>>;
-      { pol.sign_at(q, r) } -> std::same_as<Sign>;
-      { pol.sign_at_value(q, t) } -> std::same_as<Sign>;
-      { pol.multiplicity(r) } -> std::convertible_to<int>;
-      { pol.sample_between(rp, rp) } -> std::convertible_to<T>;
-      { pol.instant(r) } -> std::same_as<Instant>;
-      { pol.instant_at(t) } -> std::same_as<Instant>;
-      { pol.value(r) } -> std::convertible_to<T>;
-      { pol.at_zero(r) } -> std::convertible_to<bool>;
-      { pol.at_one(r) } -> std::convertible_to<bool>;
-    };
+concept PipelinePolicy = requires(const P& pol, const std::vector<Poly<T>>& g, const typename P::Rep& q,
+                                  const typename P::Root& r, const typename P::Root* rp, const T& t, bool first_only) {
+  { pol.build(g, policy_detail::FirstOf{}) } -> std::same_as<typename P::Rep>;
+  { q.degree() } -> std::convertible_to<int>;
+  { pol.identically_zero(q) } -> std::convertible_to<bool>;
+  { pol.roots(q, first_only) } -> std::same_as<std::vector<typename P::Root>>;
+  { pol.sign_at(q, r) } -> std::same_as<Sign>;
+  { pol.sign_at_value(q, t) } -> std::same_as<Sign>;
+  { pol.multiplicity(r) } -> std::convertible_to<int>;
+  { pol.sample_between(rp, rp) } -> std::convertible_to<T>;
+  { pol.instant(r) } -> std::same_as<Instant>;
+  { pol.instant_at(t) } -> std::same_as<Instant>;
+  { pol.value(r) } -> std::convertible_to<T>;
+  { pol.at_zero(r) } -> std::convertible_to<bool>;
+  { pol.at_one(r) } -> std::convertible_to<bool>;
+};
 
 // The optional hooks, each as a concept, and their neutral defaults.
 template <class P, class G>
-concept NormalisesG = requires(const P& pol, G& g) { { pol.normalise_g(g) } -> std::convertible_to<bool>; };
+concept NormalisesG = requires(const P& pol, G& g) {
+  { pol.normalise_g(g) } -> std::convertible_to<bool>;
+};
 template <class P>
-concept ReportsTrouble = requires(const P& pol) { { pol.trouble } -> std::convertible_to<std::string>; };
+concept ReportsTrouble = requires(const P& pol) {
+  { pol.trouble } -> std::convertible_to<std::string>;
+};
 template <class P>
-concept KeepsNotes = requires(const P& pol) { { pol.notes } -> std::convertible_to<std::vector<std::string>>; };
+concept KeepsNotes = requires(const P& pol) {
+  { pol.notes } -> std::convertible_to<std::vector<std::string>>;
+};
 template <class P, class T>
-concept SettlesStatus = requires(const P& pol, const T& t, Status s) { { pol.settle_status(t, s) } -> std::same_as<Status>; };
+concept SettlesStatus = requires(const P& pol, const T& t, Status s) {
+  { pol.settle_status(t, s) } -> std::same_as<Status>;
+};
 template <class R>
-concept MayBeUnresolved = requires(const R& r) { { r.unresolved } -> std::convertible_to<bool>; };
+concept MayBeUnresolved = requires(const R& r) {
+  { r.unresolved } -> std::convertible_to<bool>;
+};
 
 namespace policy_hooks {
 template <class Policy, class G>
@@ -91,23 +102,31 @@ void normalise_g(const Policy& pol, G& g) {
 }
 template <class Policy>
 std::string trouble(const Policy& pol) {
-  if constexpr (ReportsTrouble<Policy>) return pol.trouble;
-  else return {};
+  if constexpr (ReportsTrouble<Policy>)
+    return pol.trouble;
+  else
+    return {};
 }
 template <class Policy>
 std::vector<std::string> notes(const Policy& pol) {
-  if constexpr (KeepsNotes<Policy>) return pol.notes;
-  else return {};
+  if constexpr (KeepsNotes<Policy>)
+    return pol.notes;
+  else
+    return {};
 }
 template <class Policy, class T>
 Status settle_status(const Policy& pol, const T& t, Status s) {
-  if constexpr (SettlesStatus<Policy, T>) return s == Status::uncertain ? pol.settle_status(t, s) : s;
-  else return s;
+  if constexpr (SettlesStatus<Policy, T>)
+    return s == Status::uncertain ? pol.settle_status(t, s) : s;
+  else
+    return s;
 }
 template <class Root>
 bool unresolved(const Root& r) {
-  if constexpr (MayBeUnresolved<Root>) return r.unresolved;
-  else return false;
+  if constexpr (MayBeUnresolved<Root>)
+    return r.unresolved;
+  else
+    return false;
 }
 }  // namespace policy_hooks
 

@@ -33,18 +33,25 @@ template <class T>
 struct PipelineResult {
   Answer answer;
   Variant variant = Variant::answer;
-  std::vector<Poly<T>> g;           // g_0 .. g_N (g_3 in 2D, g_4 in 3D), power form
-  int projection_degree = -1;       // degree of the projection (see above) as built in this arithmetic and basis
+  std::vector<Poly<T>> g;      // g_0 .. g_N (g_3 in 2D, g_4 in 3D), power form
+  int projection_degree = -1;  // degree of the projection (see above) as built in this arithmetic and basis
   bool projection_identically_zero = false;
-  int projection_index = 0;         // 3D: 0 = discriminant, k = psc_k (kernel/ccd_projection.hpp)
+  int projection_index = 0;  // 3D: 0 = discriminant, k = psc_k (kernel/ccd_projection.hpp)
   Status status_at_0 = Status::uncertain;
-  struct Critical { Instant t; Status status; int multiplicity = 0; };
-  std::vector<Critical> critical;   // roots of the projection in [0, 1] with their status
-  struct Cell { Instant sample; Status status; };
+  struct Critical {
+    Instant t;
+    Status status;
+    int multiplicity = 0;
+  };
+  std::vector<Critical> critical;  // roots of the projection in [0, 1] with their status
+  struct Cell {
+    Instant sample;
+    Status status;
+  };
   std::vector<Cell> cells;
-  std::vector<TimelineNode> timeline;  // instant, cell, ..., instant (kernel/collision_timeline.hpp)
+  std::vector<TimelineNode> timeline;                  // instant, cell, ..., instant (kernel/collision_timeline.hpp)
   std::vector<std::pair<std::string, long>> counters;  // work done (method-specific)
-  std::vector<std::string> undecided_reasons;  // floating: why the undecided instants are undecided
+  std::vector<std::string> undecided_reasons;          // floating: why the undecided instants are undecided
   double seconds = 0;
 };
 

@@ -91,7 +91,7 @@ PlaneAgainstObject<T, H> plane_against_object(const Matrix<T, H>& q, const PolyM
     if (!r.is_zero() && !qt[i].is_zero()) out.miss += qt[i] * r;
   }
   constexpr int d = H - 1;
-  for (int i = 0; i < H; ++i)   // pᵀ M(t) Y_c, Y_c = adj(Q) e_d = column d of adj
+  for (int i = 0; i < H; ++i)  // pᵀ M(t) Y_c, Y_c = adj(Q) e_d = column d of adj
     for (int k = 0; k < H; ++k)
       if (!is_zero(p[i]) && !m[i][k].is_zero() && !is_zero(adj[k][d])) out.side += (p[i] * adj[k][d]) * m[i][k];
   out.w = m[d][d];
@@ -114,7 +114,11 @@ OnInterval positive_on_unit_interval(const Poly<T>& h, std::string& where, int m
     if (sign(h(zero)) != Sign::positive) return OnInterval::not_positive;
     return count_roots_closed(h, zero, one) == 0 ? OnInterval::positive : OnInterval::not_positive;
   } else {
-    struct Piece { std::vector<T> b; int depth; double lo, hi; };
+    struct Piece {
+      std::vector<T> b;
+      int depth;
+      double lo, hi;
+    };
     std::vector<Piece> todo{{bern.b, 0, 0.0, 1.0}};
     while (!todo.empty()) {
       Piece pc = std::move(todo.back());
@@ -126,9 +130,10 @@ OnInterval positive_on_unit_interval(const Poly<T>& h, std::string& where, int m
       for (const T& c : pc.b) all = all && sign(c) == Sign::positive;
       if (all) continue;
       if (pc.depth >= max_depth) {
-        where = "t in [" + std::to_string(pc.lo) + ", " + std::to_string(pc.hi) +
-                "]: a Bernstein coefficient of the plane's polynomial is within its error bound of 0 or negative after " +
-                std::to_string(max_depth) + " subdivisions";
+        where =
+            "t in [" + std::to_string(pc.lo) + ", " + std::to_string(pc.hi) +
+            "]: a Bernstein coefficient of the plane's polynomial is within its error bound of 0 or negative after " +
+            std::to_string(max_depth) + " subdivisions";
         return OnInterval::unknown;
       }
       // de Casteljau at 1/2: left = first entries of the triangle, right = last ones.
@@ -184,8 +189,8 @@ FPoly<T, N + M - 1> fmul(const FPoly<T, N>& x, const FPoly<T, M>& y) {
 }
 // x + y + z + w with the signs given (each +1 or -1).
 template <class T, std::size_t N>
-FPoly<T, N> fsum(const FPoly<T, N>& x, int sy, const FPoly<T, N>& y, int sz = 0, const FPoly<T, N>* z = nullptr, int sw = 0,
-                 const FPoly<T, N>* w = nullptr) {
+FPoly<T, N> fsum(const FPoly<T, N>& x, int sy, const FPoly<T, N>& y, int sz = 0, const FPoly<T, N>* z = nullptr,
+                 int sw = 0, const FPoly<T, N>* w = nullptr) {
   FPoly<T, N> r = x;
   for (std::size_t i = 0; i < N; ++i) {
     r[i] = sy > 0 ? T(r[i] + y[i]) : T(r[i] - y[i]);
@@ -233,8 +238,9 @@ std::array<FPoly<T, 4>, 4> keyframe_plane_in_body(const KeyframeBody3<T>& b, con
 template <class T>
 FrameSides keyframe_plane_check(const std::array<T, 4>& p, const KeyframeBody3<T>& a, const KeyframeBody3<T>& b) {
   using namespace plane_frame_detail;
-  static constexpr int C[7][7] = {{1, 0, 0, 0, 0, 0, 0}, {1, 1, 0, 0, 0, 0, 0}, {1, 2, 1, 0, 0, 0, 0}, {1, 3, 3, 1, 0, 0, 0},
-                                  {1, 4, 6, 4, 1, 0, 0}, {1, 5, 10, 10, 5, 1, 0}, {1, 6, 15, 20, 15, 6, 1}};
+  static constexpr int C[7][7] = {{1, 0, 0, 0, 0, 0, 0},   {1, 1, 0, 0, 0, 0, 0}, {1, 2, 1, 0, 0, 0, 0},
+                                  {1, 3, 3, 1, 0, 0, 0},   {1, 4, 6, 4, 1, 0, 0}, {1, 5, 10, 10, 5, 1, 0},
+                                  {1, 6, 15, 20, 15, 6, 1}};
   bool unknown = false;
   for (int k = 0; k < 2; ++k) {
     const KeyframeBody3<T>& bd = k ? b : a;
@@ -243,8 +249,10 @@ FrameSides keyframe_plane_check(const std::array<T, 4>& p, const KeyframeBody3<T
     T side = T(0);
     for (int j = 0; j < 4; ++j) side += q[j][0] * adj[j][3];
     const Sign ss = scalar_traits<T>::sign(side), want = k ? Sign::positive : Sign::negative;
-    if (ss == Sign::uncertain) unknown = true;
-    else if (ss != want) return FrameSides::fails;
+    if (ss == Sign::uncertain)
+      unknown = true;
+    else if (ss != want)
+      return FrameSides::fails;
     FPoly<T, 7> h;  // qᵀ adj(Q) q; q_0..q_2 have degree 2, q_3 degree 3
     h.fill(T(0));
     for (int i = 0; i < 4; ++i) {

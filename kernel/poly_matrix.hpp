@@ -57,7 +57,10 @@ Poly<T> minor_det(const PolyMatrix<T, N>& a, const std::array<int, N>& rows, con
     for (int k = 0, m = 0; k < n; ++k)
       if (k != j) sub[m++] = cols[k];
     Poly<T> term = e * minor_det<T, N>(a, subrows, sub, n - 1);
-    if (j % 2) d -= term; else d += term;
+    if (j % 2)
+      d -= term;
+    else
+      d += term;
   }
   return d;
 }
@@ -76,8 +79,10 @@ PolyMatrix<T, N> adjugate(const PolyMatrix<T, N>& a) {
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
       std::array<int, N> rows{}, cols{};
-      for (int k = 0, m = 0; k < N; ++k) if (k != j) rows[m++] = k;
-      for (int k = 0, m = 0; k < N; ++k) if (k != i) cols[m++] = k;
+      for (int k = 0, m = 0; k < N; ++k)
+        if (k != j) rows[m++] = k;
+      for (int k = 0, m = 0; k < N; ++k)
+        if (k != i) cols[m++] = k;
       Poly<T> c = minor_det<T, N>(a, rows, cols, N - 1);
       r[i][j] = ((i + j) % 2) ? -c : c;
     }

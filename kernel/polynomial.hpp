@@ -32,7 +32,12 @@ struct Poly {
 
   Poly() = default;
   explicit Poly(std::vector<T> coeffs) : c(std::move(coeffs)) { trim(); }
-  static Poly constant(const T& v) { Poly p; p.c.push_back(v); p.trim(); return p; }
+  static Poly constant(const T& v) {
+    Poly p;
+    p.c.push_back(v);
+    p.trim();
+    return p;
+  }
 
   int degree() const { return int(c.size()) - 1; }  // -1 for the zero polynomial
   bool is_zero() const { return c.empty(); }
@@ -46,12 +51,17 @@ struct Poly {
   template <class U>
   U operator()(const U& t) const {  // Horner
     if (c.empty()) return U(0);
-    if constexpr (std::is_same_v<T, mpq_class> && std::is_same_v<U, mpq_class>)  // exact: integer Horner (number/rational_poly_eval.hpp)
+    if constexpr (std::is_same_v<T, mpq_class> &&
+                  std::is_same_v<U, mpq_class>)  // exact: integer Horner (number/rational_poly_eval.hpp)
       return rational_poly_eval(c, t);
-    if constexpr (std::is_same_v<T, Bounded<double>> && std::is_same_v<U, Bounded<double>>)  // the bound in the same pass (issue 30)
+    if constexpr (std::is_same_v<T, Bounded<double>> &&
+                  std::is_same_v<U, Bounded<double>>)  // the bound in the same pass (issue 30)
       return running_error_loops::horner(std::span<const T>(c), t);
     U r = U(c.back());
-    for (int i = int(c.size()) - 2; i >= 0; --i) { r = r * t; r = r + U(c[i]); }
+    for (int i = int(c.size()) - 2; i >= 0; --i) {
+      r = r * t;
+      r = r + U(c[i]);
+    }
     return r;
   }
 
@@ -67,9 +77,18 @@ struct Poly {
     trim();
     return *this;
   }
-  friend Poly operator+(Poly a, const Poly& b) { a += b; return a; }
-  friend Poly operator-(Poly a, const Poly& b) { a -= b; return a; }
-  friend Poly operator-(Poly a) { for (auto& x : a.c) x = -x; return a; }
+  friend Poly operator+(Poly a, const Poly& b) {
+    a += b;
+    return a;
+  }
+  friend Poly operator-(Poly a, const Poly& b) {
+    a -= b;
+    return a;
+  }
+  friend Poly operator-(Poly a) {
+    for (auto& x : a.c) x = -x;
+    return a;
+  }
   // A product is where building f, Δ or a subresultant spends its time (degree
   // up to 432 in 3D, millions of MPFR operations): it asks the run's deadline
   // (kernel/budget.hpp) and throws BudgetExhausted once it has passed.
@@ -81,7 +100,11 @@ struct Poly {
       // The same canonical rationals either way: long factors by Kronecker substitution
       // (number/integer_poly_product.hpp), short ones over common denominators
       // (number/rational_convolution.hpp, empty when that would not pay).
-      if (std::min(a.c.size(), b.c.size()) > 2) { r.c = rational_poly_product(a.c, b.c); r.trim(); return r; }
+      if (std::min(a.c.size(), b.c.size()) > 2) {
+        r.c = rational_poly_product(a.c, b.c);
+        r.trim();
+        return r;
+      }
       r.c = rational_convolution(a.c, b.c);
       if (!r.c.empty()) {
         r.trim();
@@ -93,11 +116,18 @@ struct Poly {
       running_error_loops::convolve(std::span<const T>(a.c), std::span<const T>(b.c), std::span<T>(r.c));
     else
       for (std::size_t i = 0; i < a.c.size(); ++i)
-        for (std::size_t j = 0; j < b.c.size(); ++j) { T p = a.c[i] * b.c[j]; r.c[i + j] = r.c[i + j] + p; }
+        for (std::size_t j = 0; j < b.c.size(); ++j) {
+          T p = a.c[i] * b.c[j];
+          r.c[i + j] = r.c[i + j] + p;
+        }
     r.trim();
     return r;
   }
-  friend Poly operator*(const T& s, Poly a) { for (auto& x : a.c) x = s * x; a.trim(); return a; }
+  friend Poly operator*(const T& s, Poly a) {
+    for (auto& x : a.c) x = s * x;
+    a.trim();
+    return a;
+  }
   friend Poly operator*(int s, const Poly& a) { return T(s) * a; }
   friend bool operator==(const Poly& a, const Poly& b) { return a.c == b.c; }
 };
@@ -133,7 +163,10 @@ void divide(const Poly<T>& a, const Poly<T>& b, Poly<T>& q, Poly<T>& r) {
     int k = r.degree() - b.degree();
     T f = r.lead() / b.lead();
     q.c[k] = f;
-    for (int i = 0; i <= b.degree(); ++i) { T p = f * b.c[i]; r.c[i + k] = r.c[i + k] - p; }
+    for (int i = 0; i <= b.degree(); ++i) {
+      T p = f * b.c[i];
+      r.c[i + k] = r.c[i + k] - p;
+    }
     r.c.back() = T(0);  // cancelled exactly
     r.trim();
   }
@@ -150,7 +183,10 @@ Poly<T> gcd(Poly<T> a, Poly<T> b) {
     a = std::move(b);
     b = std::move(r);
   }
-  if (!a.is_zero()) { T l = a.lead(); for (auto& x : a.c) x = x / l; }
+  if (!a.is_zero()) {
+    T l = a.lead();
+    for (auto& x : a.c) x = x / l;
+  }
   return a;
 }
 

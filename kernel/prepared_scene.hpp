@@ -66,14 +66,22 @@ struct MovingPair {
 
 using PreparedPair2 = PreparedPair<H_2D>;  // two ellipses
 using PreparedPair3 = PreparedPair<H_3D>;  // two ellipsoids
-template <class T> using MovingPair2 = MovingPair<T, H_2D>;
-template <class T> using MovingPair3 = MovingPair<T, H_3D>;
+template <class T>
+using MovingPair2 = MovingPair<T, H_2D>;
+template <class T>
+using MovingPair3 = MovingPair<T, H_3D>;
 
 // Scales a list of rationals (in place, by one positive factor) to coprime integers.
 inline void make_primitive(std::vector<Rational*> xs) {
   mpz_class l = 1, g = 0;
-  for (auto* x : xs) { x->canonicalize(); mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t()); }
-  for (auto* x : xs) { mpz_class n = x->get_num() * (l / x->get_den()); mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), n.get_mpz_t()); }
+  for (auto* x : xs) {
+    x->canonicalize();
+    mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t());
+  }
+  for (auto* x : xs) {
+    mpz_class n = x->get_num() * (l / x->get_den());
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), n.get_mpz_t());
+  }
   if (g == 0) return;
   // x · l / g is the integer num(x) · (l / den(x)) / g (exact divisions): the same value, no rational gcds
   for (auto* x : xs) {
@@ -92,9 +100,15 @@ void remove_polynomial_content(PolyMatrix<Rational, H>& n) {
         if (!e.is_zero()) g = g.is_zero() ? gcd(e, e) : gcd(g, e);
   if (g.degree() > 0)
     for (auto& row : n)
-      for (auto& e : row) { RPoly q, r; divide(e, g, q, r); e = q; }
+      for (auto& e : row) {
+        RPoly q, r;
+        divide(e, g, q, r);
+        e = q;
+      }
   std::vector<Rational*> all;
-  for (auto& row : n) for (auto& e : row) for (auto& c : e.c) all.push_back(&c);
+  for (auto& row : n)
+    for (auto& e : row)
+      for (auto& c : e.c) all.push_back(&c);
   make_primitive(all);
 }
 
@@ -103,8 +117,11 @@ Matrix<Rational, H> shape_matrix(const SceneObject& o) {
   Matrix<Rational, H> q{};
   std::vector<Rational*> all;
   for (int i = 0; i < H; ++i)
-    for (int j = 0; j < H; ++j) { q[i][j] = o.Q.at(i).at(j); }
-  for (auto& row : q) for (auto& x : row) all.push_back(&x);
+    for (int j = 0; j < H; ++j) {
+      q[i][j] = o.Q.at(i).at(j);
+    }
+  for (auto& row : q)
+    for (auto& x : row) all.push_back(&x);
   make_primitive(all);
   return q;
 }
@@ -140,7 +157,8 @@ void balance_pencil(PreparedPair<H>& p) {
   mpz_class two = 1;
   two <<= std::abs(k);
   Rational f = k > 0 ? Rational(1) / Rational(two) : Rational(two);
-  for (auto& row : p.qb) for (auto& x : row) x *= f;
+  for (auto& row : p.qb)
+    for (auto& x : row) x *= f;
 }
 
 // A scene the exact preparation cannot represent: a motion with no polynomial
@@ -160,7 +178,8 @@ inline void refuse_independent(const Scene& s, const std::string& who = "this pi
   if (s.independent)
     throw IndependentMotionsRefused(
         "the scene has independent motions (\"parameters\": \"independent\": A(s), B(t)); " + who +
-        " treats one shared t; independent scenes are answered by `eccd solve` only (--arith exact or certified: proved "
+        " treats one shared t; independent scenes are answered by `eccd solve` only (--arith exact or certified: "
+        "proved "
         "answers; double or mpfr:BITS)");
 }
 
@@ -210,15 +229,20 @@ struct MovingPairBern {
   Matrix<T, H> qa{}, qb{};
   std::array<std::array<Bern<T>, H>, H> na{}, nb{};
 };
-template <class T> using MovingPairBern2 = MovingPairBern<T, H_2D>;
-template <class T> using MovingPairBern3 = MovingPairBern<T, H_3D>;
+template <class T>
+using MovingPairBern2 = MovingPairBern<T, H_2D>;
+template <class T>
+using MovingPairBern3 = MovingPairBern<T, H_3D>;
 
 template <class T, int H>
 MovingPairBern<T, H> to_arithmetic_bernstein(const PreparedPair<H>& p, const T& like) {
   auto conv = [&](const Rational& q) { return scalar_traits<T>::from_rational(q, like); };
   auto bern = [&](const Poly<Rational>& e) {
     Bern<T> r;
-    if (e.is_zero()) { r.b.push_back(conv(Rational(0))); return r; }
+    if (e.is_zero()) {
+      r.b.push_back(conv(Rational(0)));
+      return r;
+    }
     for (const auto& c : to_bernstein(e).b) r.b.push_back(conv(c));
     return r;
   };

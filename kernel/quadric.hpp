@@ -13,7 +13,8 @@ namespace eccd {
 
 // A = Nᵀ Q N with N's entries in any ring R (Poly<T> or Bern<T>), Q scalar.
 template <class R, class S, int N>
-std::array<std::array<R, N>, N> moving_quadric_in(const Matrix<S, N>& q, const std::array<std::array<R, N>, N>& n, const R& zero) {
+std::array<std::array<R, N>, N> moving_quadric_in(const Matrix<S, N>& q, const std::array<std::array<R, N>, N>& n,
+                                                  const R& zero) {
   std::array<std::array<R, N>, N> qn, a;
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
@@ -38,7 +39,9 @@ std::array<std::array<R, N>, N> moving_quadric_in(const Matrix<S, N>& q, const s
 template <class T, int H>
 Matrix<T, H> quadric_at(const Matrix<T, H>& q, const PolyMatrix<T, H>& n, const T& t) {
   Matrix<T, H> nt{}, r{};
-  for (int i = 0; i < H; ++i) for (int j = 0; j < H; ++j) nt[i][j] = n[i][j].is_zero() ? scalar_traits<T>::from_rational(mpq_class(0), t) : n[i][j](t);
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j)
+      nt[i][j] = n[i][j].is_zero() ? scalar_traits<T>::from_rational(mpq_class(0), t) : n[i][j](t);
   for (int i = 0; i < H; ++i)
     for (int j = 0; j < H; ++j) {
       T s = scalar_traits<T>::from_rational(mpq_class(0), t);

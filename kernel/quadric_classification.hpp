@@ -28,7 +28,9 @@ namespace quadric_detail {
 // Numbers of positive, negative and zero eigenvalues of a symmetric rational
 // matrix of size 1..3 (Descartes' rule on the real-rooted characteristic
 // polynomial det(lambda I - A)).
-struct Inertia { int pos = 0, neg = 0, zero = 0; };
+struct Inertia {
+  int pos = 0, neg = 0, zero = 0;
+};
 
 inline Inertia symmetric_inertia(const std::vector<std::vector<mpq_class>>& a) {
   const int n = int(a.size());
@@ -37,7 +39,8 @@ inline Inertia symmetric_inertia(const std::vector<std::vector<mpq_class>>& a) {
   e[0] = 1;
   for (int mask = 1; mask < (1 << n); ++mask) {
     std::vector<int> idx;
-    for (int i = 0; i < n; ++i) if (mask & (1 << i)) idx.push_back(i);
+    for (int i = 0; i < n; ++i)
+      if (mask & (1 << i)) idx.push_back(i);
     std::vector<std::vector<mpq_class>> sub(idx.size(), std::vector<mpq_class>(idx.size()));
     for (std::size_t i = 0; i < idx.size(); ++i)
       for (std::size_t j = 0; j < idx.size(); ++j) sub[i][j] = a[idx[i]][idx[j]];
@@ -49,10 +52,12 @@ inline Inertia symmetric_inertia(const std::vector<std::vector<mpq_class>>& a) {
   Inertia r;
   while (r.zero <= n && sgn(c[r.zero]) == 0) ++r.zero;
   auto variations = [&](bool negate_odd) {  // of c[r.zero..n], with c[k] negated for odd k if asked
-    return sign_variations_n(std::size_t(n + 1 - r.zero), [&](std::size_t i) {
-             const int k = r.zero + int(i);
-             return sign_of_int((negate_odd && (k % 2)) ? -sgn(c[k]) : sgn(c[k]));
-           }).count;
+    return sign_variations_n(std::size_t(n + 1 - r.zero),
+                             [&](std::size_t i) {
+                               const int k = r.zero + int(i);
+                               return sign_of_int((negate_odd && (k % 2)) ? -sgn(c[k]) : sgn(c[k]));
+                             })
+        .count;
   };
   r.pos = variations(false);
   r.neg = variations(true);
@@ -62,17 +67,17 @@ inline Inertia symmetric_inertia(const std::vector<std::vector<mpq_class>>& a) {
 }  // namespace quadric_detail
 
 enum class QuadricKind {
-  real_ellipsoid,        // the only accepted kind: real, non-degenerate, X^T Q X < 0 inside
-  wrong_sign,            // -Q is a real ellipse/ellipsoid
-  imaginary,             // no real point
-  single_point,          // ellipse/ellipsoid shrunk to a point (det Q = 0)
-  hyperbola,             // dim 2
-  parabola,              // dim 2
-  hyperboloid_one_sheet, // dim 3
+  real_ellipsoid,         // the only accepted kind: real, non-degenerate, X^T Q X < 0 inside
+  wrong_sign,             // -Q is a real ellipse/ellipsoid
+  imaginary,              // no real point
+  single_point,           // ellipse/ellipsoid shrunk to a point (det Q = 0)
+  hyperbola,              // dim 2
+  parabola,               // dim 2
+  hyperboloid_one_sheet,  // dim 3
   hyperboloid_two_sheets,
   elliptic_paraboloid,
   hyperbolic_paraboloid,
-  degenerate,            // det Q = 0, not a point
+  degenerate,  // det Q = 0, not a point
 };
 
 struct QuadricClass {
@@ -96,13 +101,13 @@ inline QuadricClass classify_quadric(const std::vector<std::vector<mpq_class>>& 
     // Definite block. For -Q (size dim+1): det(-Q) = (-1)^(dim+1) det Q.
     const bool negated = in.neg == dim;
     const int Dp = negated ? ((dim + 1) % 2 ? -D : D) : D;
-    if (Dp == 0)
-      return {K::single_point, "is a single point (a degenerate " + ell + ", det Q = 0)"};
+    if (Dp == 0) return {K::single_point, "is a single point (a degenerate " + ell + ", det Q = 0)"};
     if (Dp > 0)
-      return {K::imaginary, "is an imaginary " + ell + " (no real point: the solid X^T Q X <= 0 would be " +
-                                (negated ? std::string(d2 ? "the whole plane" : "all of space") : std::string("the empty set")) + ")"};
-    if (negated)
-      return {K::wrong_sign, "has the wrong sign: X^T Q X > 0 inside; negate the matrix"};
+      return {K::imaginary,
+              "is an imaginary " + ell + " (no real point: the solid X^T Q X <= 0 would be " +
+                  (negated ? std::string(d2 ? "the whole plane" : "all of space") : std::string("the empty set")) +
+                  ")"};
+    if (negated) return {K::wrong_sign, "has the wrong sign: X^T Q X > 0 inside; negate the matrix"};
     return {K::real_ellipsoid, ""};
   }
   if (d2) {
@@ -129,8 +134,7 @@ inline QuadricClass classify_quadric(const std::vector<std::vector<mpq_class>>& 
     return {K::degenerate, elliptic ? "is degenerate (det Q = 0): an elliptic cylinder, a line, or empty"
                                     : "is degenerate (det Q = 0): a hyperbolic cylinder or a pair of planes"};
   }
-  return {K::degenerate,
-          "is degenerate (det Q = 0): a parabolic cylinder, a pair of planes, a plane, or nothing"};
+  return {K::degenerate, "is degenerate (det Q = 0): a parabolic cylinder, a pair of planes, a plane, or nothing"};
 }
 
 }  // namespace eccd

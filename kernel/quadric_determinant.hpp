@@ -68,8 +68,10 @@ Rational quadric_det_at(const Matrix<Rational, H>& q, const PolyMatrix<Rational,
       const int deg = n[i][j].degree();
       if (deg >= 0) {
         for (int k = deg; k >= 0; --k) {
-          if (ln == 1) s = s * a + c[k].get_num() * bp;  // integer coefficients (after make_primitive)
-          else s = s * a + (c[k].get_num() * (ln / c[k].get_den())) * bp;
+          if (ln == 1)
+            s = s * a + c[k].get_num() * bp;  // integer coefficients (after make_primitive)
+          else
+            s = s * a + (c[k].get_num() * (ln / c[k].get_den())) * bp;
           bp *= b;
         }
         // s = Σ_k c_k L a^k b^(deg-k); scale to b^d

@@ -70,8 +70,10 @@ Status quartic_sign_status(const std::array<T, 5>& g) {
   if (s == Sign::uncertain) return Status::uncertain;
   if (s == Sign::negative) return Status::overlapping;
   if (s == Sign::zero) {
-    if constexpr (scalar_traits<T>::is_exact) return quartic_contact_status(g);
-    else return Status::uncertain;
+    if constexpr (scalar_traits<T>::is_exact)
+      return quartic_contact_status(g);
+    else
+      return Status::uncertain;
   }
   const Sign seq[5] = {sign(g[4]), sign(g[3]) * Sign::negative, sign(g[2]), sign(g[1]) * Sign::negative, sign(g[0])};
   const SignVariations v = sign_variations_n<5>(5, [&](std::size_t k) { return seq[k]; });

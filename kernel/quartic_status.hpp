@@ -54,9 +54,13 @@ Status quartic_contact_status(std::span<const T> g) {
   return Status::uncertain;
 }
 template <class T>
-Status quartic_contact_status(const std::array<T, 5>& g) { return quartic_contact_status(std::span<const T>(g)); }
+Status quartic_contact_status(const std::array<T, 5>& g) {
+  return quartic_contact_status(std::span<const T>(g));
+}
 template <class T>
-Status quartic_contact_status(const std::vector<T>& g) { return quartic_contact_status(std::span<const T>(g)); }
+Status quartic_contact_status(const std::vector<T>& g) {
+  return quartic_contact_status(std::span<const T>(g));
+}
 
 // The status at instant t from the coefficient polynomials g_i(t) (at most 5).
 template <class T>

@@ -63,8 +63,8 @@ Sign negative_multiple_root(int k, SignOf sign_of) {
     }
     Sign sb = sign_of(2, 1), sc = sign_of(2, 0), sd = sign_of(2, -1);
     if (sb == Sign::uncertain || sc == Sign::uncertain || sd == Sign::uncertain) return Sign::uncertain;
-    if (sd == Sign::negative) return Sign::zero;  // complex pair of double roots
-    bool neg = (lead * sc) == Sign::negative ||                                   // roots of opposite signs
+    if (sd == Sign::negative) return Sign::zero;                                    // complex pair of double roots
+    bool neg = (lead * sc) == Sign::negative ||                                     // roots of opposite signs
                ((lead * sc) == Sign::positive && (lead * sb) == Sign::positive) ||  // both negative
                (sc == Sign::zero && (lead * sb) == Sign::positive);                 // 0 and -b/a < 0
     return neg ? Sign::positive : Sign::zero;

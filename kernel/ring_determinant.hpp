@@ -65,7 +65,10 @@ R ring_det(const std::vector<std::vector<R>>& a, const R& zero) {
         if (is_ring_zero(e)) continue;
         std::uint32_t nm = mask | (1u << c);
         R term = r == 0 ? e : dp[mask] * e;
-        if (std::popcount(mask >> (c + 1)) % 2) dp[nm] = dp[nm] - term; else dp[nm] = dp[nm] + term;
+        if (std::popcount(mask >> (c + 1)) % 2)
+          dp[nm] = dp[nm] - term;
+        else
+          dp[nm] = dp[nm] + term;
         live[nm] = 1;
       }
     }
@@ -80,7 +83,10 @@ T field_det(std::array<std::array<T, H>, H> m) {
     for (int r = c + 1; r < H; ++r)
       if (scalar_traits<T>::abs(m[r][c]) > scalar_traits<T>::abs(m[p][c])) p = r;
     if (is_zero(m[p][c])) return m[p][c];
-    if (p != c) { std::swap(m[p], m[c]); d = -d; }
+    if (p != c) {
+      std::swap(m[p], m[c]);
+      d = -d;
+    }
     d = d * m[c][c];
     for (int i = c + 1; i < H; ++i) {
       T f = m[i][c] / m[c][c];

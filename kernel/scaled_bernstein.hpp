@@ -40,7 +40,10 @@ ScaledBern<T> elevate(const ScaledBern<T>& q, int r) {
   ScaledBern<T> e = q;
   for (int k = 0; k < r; ++k) {
     std::vector<T> n(e.s.size() + 1, T(0));
-    for (std::size_t i = 0; i < e.s.size(); ++i) { n[i] = n[i] + e.s[i]; n[i + 1] = n[i + 1] + e.s[i]; }
+    for (std::size_t i = 0; i < e.s.size(); ++i) {
+      n[i] = n[i] + e.s[i];
+      n[i + 1] = n[i + 1] + e.s[i];
+    }
     e.s = std::move(n);
   }
   return e;
@@ -53,18 +56,30 @@ ScaledBern<T> operator+(const ScaledBern<T>& x, const ScaledBern<T>& y) {
   return a;
 }
 template <class T>
-ScaledBern<T> operator-(const ScaledBern<T>& x) { ScaledBern<T> r = x; for (auto& v : r.s) v = -v; return r; }
+ScaledBern<T> operator-(const ScaledBern<T>& x) {
+  ScaledBern<T> r = x;
+  for (auto& v : r.s) v = -v;
+  return r;
+}
 template <class T>
-ScaledBern<T> operator-(const ScaledBern<T>& x, const ScaledBern<T>& y) { return x + (-y); }
+ScaledBern<T> operator-(const ScaledBern<T>& x, const ScaledBern<T>& y) {
+  return x + (-y);
+}
 template <class T>
-ScaledBern<T> operator*(int k, ScaledBern<T> x) { for (auto& v : x.s) v = T(k) * v; return x; }
+ScaledBern<T> operator*(int k, ScaledBern<T> x) {
+  for (auto& v : x.s) v = T(k) * v;
+  return x;
+}
 template <class T>
 ScaledBern<T> operator*(const ScaledBern<T>& x, const ScaledBern<T>& y) {
   check_deadline("polynomial product");  // as Poly<T>::operator* (kernel/polynomial.hpp)
   ScaledBern<T> r;
   r.s.assign(x.s.size() + y.s.size() - 1, T(0));
   for (std::size_t i = 0; i < x.s.size(); ++i)
-    for (std::size_t j = 0; j < y.s.size(); ++j) { T p = x.s[i] * y.s[j]; r.s[i + j] = r.s[i + j] + p; }
+    for (std::size_t j = 0; j < y.s.size(); ++j) {
+      T p = x.s[i] * y.s[j];
+      r.s[i + j] = r.s[i + j] + p;
+    }
   return r;
 }
 

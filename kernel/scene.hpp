@@ -27,13 +27,13 @@ inline constexpr int H_3D = 4;  // ellipsoids in space
 using RPoly = Poly<Rational>;
 
 struct StaticMotion {};
-struct MatrixMotion {            // M(t) entry by entry; size (dim+1) x (dim+1)
+struct MatrixMotion {  // M(t) entry by entry; size (dim+1) x (dim+1)
   std::vector<std::vector<RPoly>> m;
 };
-struct KinematicMotion {         // 2D, 003 eq. (3)
+struct KinematicMotion {  // 2D, 003 eq. (3)
   std::array<RPoly, 4> d;
 };
-struct EulerMotion {             // 3D, 002 section 2: quaternion e and translation v / v3
+struct EulerMotion {  // 3D, 002 section 2: quaternion e and translation v / v3
   std::array<RPoly, 4> e;
   std::array<RPoly, 3> v;
   RPoly v3;

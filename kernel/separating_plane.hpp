@@ -37,8 +37,8 @@ namespace eccd {
 template <class T, int H>
 struct PlaneConstruction {
   bool ok = false;
-  std::string why;                    // when !ok: where the construction gave up
-  EVector<T, H> p;                    // the plane pᵀX = 0, A on the negative side
+  std::string why;                         // when !ok: where the construction gave up
+  EVector<T, H> p;                         // the plane pᵀX = 0, A on the negative side
   EVector<T, H - 1> tangent_a, tangent_b;  // 000's P_R^A and P_L^B (affine)
 };
 
@@ -60,7 +60,10 @@ PlaneConstruction<T, H> separating_plane(const Matrix<T, H>& a, const Matrix<T, 
   T aa = va.dot(A * va), ab = vb.dot(A * vb), ba = va.dot(B * va), bb = vb.dot(B * vb);
   if (sign(aa) == Sign::positive && sign(bb) == Sign::positive) {  // the roles came out swapped
     std::swap(va, vb);
-    aa = va.dot(A * va); ab = vb.dot(A * vb); ba = va.dot(B * va); bb = vb.dot(B * vb);
+    aa = va.dot(A * va);
+    ab = vb.dot(A * vb);
+    ba = va.dot(B * va);
+    bb = vb.dot(B * vb);
   }
   if (!(sign(aa) == Sign::negative && sign(ab) == Sign::positive && sign(ba) == Sign::positive &&
         sign(bb) == Sign::negative)) {

@@ -44,7 +44,10 @@ SignVariations sign_variations_n(std::size_t n, SignOf&& sign_of) {
   for (std::size_t k = 0; k < cap; ++k) {
     if (k >= n) break;
     const Sign s = sign_of(k);
-    if (s == Sign::uncertain) { v.uncertain = true; return v; }
+    if (s == Sign::uncertain) {
+      v.uncertain = true;
+      return v;
+    }
     if (s == Sign::zero) continue;
     if (last != Sign::zero && s != last) ++v.count;
     last = s;

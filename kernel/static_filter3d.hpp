@@ -119,7 +119,8 @@ template <class T, class Leaf>
   // g_0 = det(-b) = det(J) det(R)^2 = -(det L'_a · det³)^2, since det R = det(N L'_a) det = det³ det L'_a: a
   // short product instead of Appendix A's 4x4 cofactor expansion, whose cancellation is large when the poses
   // scale unevenly (the filter then could not certify g_0's sign); the same number for exact inputs.
-  T det_a = la[0][0] * (la[1][1] * la[2][2] - la[1][2] * la[2][1]) - la[0][1] * (la[1][0] * la[2][2] - la[1][2] * la[2][0]) +
+  T det_a = la[0][0] * (la[1][1] * la[2][2] - la[1][2] * la[2][1]) -
+            la[0][1] * (la[1][0] * la[2][2] - la[1][2] * la[2][0]) +
             la[0][2] * (la[1][0] * la[2][1] - la[1][1] * la[2][0]);
   T p = det_a * (det * (det * det));
   g[0] = -(p * p);
@@ -140,7 +141,6 @@ static_assert(kDepth[0] > 0 && kDepth[0] * 0x1p-53 <= 0x1p-10, "the bound needs 
 inline constexpr int kDeltaDepth = 13;
 
 inline constexpr double kU = 0x1p-53, kTau = 0x1p-430, kMaxEntry = 0x1p12, kMinAxis = 0x1p-12;
-
 
 // The magnitude run's type for a lane type: Magnitude for double (one lane, or the compiler's vectoriser),
 // LaneMagnitude<W> for W lanes in one vector register (number/lane_vector.hpp).
@@ -171,8 +171,8 @@ template <bool kLanes, class D = double>
   }
   // Sign changes of g4, -g3, g2, -g1, g0 (all non-zero when certain).
   const D zero(0);
-  const D s4 = lane_gt(g[4], zero), s3 = lane_not_gt(g[3], zero), s2 = lane_gt(g[2], zero), s1 = lane_not_gt(g[1], zero),
-          s0 = lane_gt(g[0], zero);
+  const D s4 = lane_gt(g[4], zero), s3 = lane_not_gt(g[3], zero), s2 = lane_gt(g[2], zero),
+          s1 = lane_not_gt(g[1], zero), s0 = lane_gt(g[0], zero);
   const D changes = (s4 - s3) * (s4 - s3) + (s3 - s2) * (s3 - s2) + (s2 - s1) * (s2 - s1) + (s1 - s0) * (s1 - s0);
   if constexpr (!kLanes) {
     if (certain == 0) return 0.0;
@@ -186,10 +186,12 @@ template <bool kLanes, class D = double>
   if constexpr (kLanes) {
     using Mag = typename LaneOf<D>::Magnitude;
     dv = quartic_discriminant(g[4], g[3], g[2], g[1], g[0]);
-    dm = quartic_discriminant(Mag::leaf(g[4]), Mag::leaf(g[3]), Mag::leaf(g[2]), Mag::leaf(g[1]), Mag::leaf(g[0])).value();
+    dm = quartic_discriminant(Mag::leaf(g[4]), Mag::leaf(g[3]), Mag::leaf(g[2]), Mag::leaf(g[1]), Mag::leaf(g[0]))
+             .value();
   } else {
-    const ValueMagnitude d = quartic_discriminant(ValueMagnitude::leaf(g[4]), ValueMagnitude::leaf(g[3]), ValueMagnitude::leaf(g[2]),
-                                                  ValueMagnitude::leaf(g[1]), ValueMagnitude::leaf(g[0]));
+    const ValueMagnitude d =
+        quartic_discriminant(ValueMagnitude::leaf(g[4]), ValueMagnitude::leaf(g[3]), ValueMagnitude::leaf(g[2]),
+                             ValueMagnitude::leaf(g[1]), ValueMagnitude::leaf(g[0]));
     dv = d.value();
     dm = d.magnitude();
   }
@@ -203,7 +205,6 @@ template <bool kLanes, class D = double>
   return D(2) * overlapping + separate;
 }
 
-
 // f's coefficients ĝ_k with their bounds e_k (|ĝ_k - g_k| <= e_k when ok = 1: the ranges held); D is double or
 // a lane vector (number/lane_vector.hpp).
 template <class D = double>
@@ -213,7 +214,7 @@ struct Bounds {
 };
 template <bool kLanes, class D = double, class Leaf>
 [[gnu::always_inline]] inline Bounds<D> bounds(Leaf leaf) {
-  D ok(1);  // the ranges
+  D ok(1);                 // the ranges
   if constexpr (kLanes) {  // compares and products only (0 for NaN too)
     const D min_axis(kMinAxis), max_entry(kMaxEntry);
 #pragma GCC unroll 3
@@ -222,7 +223,8 @@ template <bool kLanes, class D = double, class Leaf>
       ok = ok * (lane_ge(leaf(static_axis_b(j)), min_axis) * lane_le(leaf(static_axis_b(j)), max_entry));
 #pragma GCC unroll 4
       for (int c = 0; c < 4; ++c)
-        ok = ok * (lane_le(lane_abs(leaf(static_pose_a(j, c))), max_entry) * lane_le(lane_abs(leaf(static_pose_b(j, c))), max_entry));
+        ok = ok * (lane_le(lane_abs(leaf(static_pose_a(j, c))), max_entry) *
+                   lane_le(lane_abs(leaf(static_pose_b(j, c))), max_entry));
     }
   } else {  // max / min instructions (x > m ? x : m); a NaN input is passed over here, but it makes some
             // coefficient NaN (every input is a factor of some monomial), and then no sign is certain
@@ -274,11 +276,14 @@ template <bool kLanes, class D = double, class Leaf>
 
 // The status a filter code stands for (1 separate, 2 overlapping, anything else
 // uncertain: the filter did not decide); api/static_test.cpp reads the batch's codes with it.
-inline Status static_filter_status(double c) { return c == 1.0 ? Status::separate : c == 2.0 ? Status::overlapping : Status::uncertain; }
+inline Status static_filter_status(double c) {
+  return c == 1.0 ? Status::separate : c == 2.0 ? Status::overlapping : Status::uncertain;
+}
 
 // The inputs of one pair as leaves: the semi-axes and the top three rows of the affine poses.
 template <class Axes, class Pose>
-[[gnu::always_inline]] inline auto static_leaves(const Axes& axes_a, const Pose& pose_a, const Axes& axes_b, const Pose& pose_b) {
+[[gnu::always_inline]] inline auto static_leaves(const Axes& axes_a, const Pose& pose_a, const Axes& axes_b,
+                                                 const Pose& pose_b) {
   return [xa = &axes_a, pa = &pose_a, xb = &axes_b, pb = &pose_b](int k) -> double {
     if (k < 3) return (*xa)[k];
     if (k < 15) return (*pa)[(k - 3) / 4][(k - 3) % 4];
@@ -291,8 +296,7 @@ template <class Axes, class Pose>
 // proves).
 template <class Axes, class Pose>
 Status static_filter3d(const Axes& axes_a, const Pose& pose_a, const Axes& axes_b, const Pose& pose_b) {
-  return static_filter_status(
-      static_filter_detail::pair_code<false>(static_leaves(axes_a, pose_a, axes_b, pose_b)));
+  return static_filter_status(static_filter_detail::pair_code<false>(static_leaves(axes_a, pose_a, axes_b, pose_b)));
 }
 
 // Lanes: in[k][l] is input k (static_axis_a, ...) of lane l; code[l] = 0 uncertain, 1 separate, 2 overlapping.
@@ -306,7 +310,8 @@ template <int L>
 // W lanes in one vector register (number/lane_vector.hpp: the same program lane by lane, no vectoriser needed):
 // L pairs as L / W vectors; in and code as above.
 template <int W, int L>
-[[gnu::always_inline]] inline void static_filter3d_vector_lanes(const double (&in)[kStaticInputs][L], double (&code)[L]) {
+[[gnu::always_inline]] inline void static_filter3d_vector_lanes(const double (&in)[kStaticInputs][L],
+                                                                double (&code)[L]) {
   static_assert(L % W == 0);
   using D = LaneDouble<W>;
   for (int base = 0; base < L; base += W) {

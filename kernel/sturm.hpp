@@ -59,14 +59,26 @@ class InlineVector {
   InlineVector& operator=(const InlineVector&) requires kTrivial = default;
   InlineVector& operator=(InlineVector&&) requires kTrivial = default;
   ~InlineVector() requires kTrivial = default;
-  InlineVector(const InlineVector& o) { for (const T& x : o) push_back(x); }
-  InlineVector(InlineVector&& o) noexcept { for (T& x : o) push_back(std::move(x)); o.clear(); }
+  InlineVector(const InlineVector& o) {
+    for (const T& x : o) push_back(x);
+  }
+  InlineVector(InlineVector&& o) noexcept {
+    for (T& x : o) push_back(std::move(x));
+    o.clear();
+  }
   InlineVector& operator=(const InlineVector& o) {
-    if (this != &o) { clear(); for (const T& x : o) push_back(x); }
+    if (this != &o) {
+      clear();
+      for (const T& x : o) push_back(x);
+    }
     return *this;
   }
   InlineVector& operator=(InlineVector&& o) noexcept {
-    if (this != &o) { clear(); for (T& x : o) push_back(std::move(x)); o.clear(); }
+    if (this != &o) {
+      clear();
+      for (T& x : o) push_back(std::move(x));
+      o.clear();
+    }
     return *this;
   }
   ~InlineVector() { clear(); }
@@ -88,10 +100,14 @@ class InlineVector {
     ++n_;
   }
   void pop_back() { std::destroy_at(a_ + --n_); }
-  void clear() { while (n_ > 0) pop_back(); }
+  void clear() {
+    while (n_ > 0) pop_back();
+  }
 
  private:
-  union { T a_[N]; };  // slots [0, n_) hold objects
+  union {
+    T a_[N];
+  };  // slots [0, n_) hold objects
   std::size_t n_ = 0;
 };
 
@@ -100,15 +116,19 @@ namespace sturm_core {
 // The loop bound of a storage: its capacity if fixed (loops then unroll), else unbounded.
 template <class V>
 constexpr int bound() {
-  if constexpr (requires { V::inline_capacity; }) return int(V::inline_capacity);
-  else return INT_MAX;
+  if constexpr (requires { V::inline_capacity; })
+    return int(V::inline_capacity);
+  else
+    return INT_MAX;
 }
 
 // eccd::is_zero; for double a plain comparison (the same answer: NaN is not zero).
 template <class T>
 bool is_zero_coeff(const T& x) {
-  if constexpr (std::is_floating_point_v<T>) return x == T(0);
-  else return eccd::is_zero(x);
+  if constexpr (std::is_floating_point_v<T>)
+    return x == T(0);
+  else
+    return eccd::is_zero(x);
 }
 
 // Drop the leading coefficient (c[0]).
@@ -172,7 +192,10 @@ template <class S>
 void build(S& s) {
   using V = typename S::value_type;
   using T = typename V::value_type;
-  if (s.empty() || s[0].empty()) { s.clear(); return; }
+  if (s.empty() || s[0].empty()) {
+    s.clear();
+    return;
+  }
   V d;
   const int n = int(s[0].size());
   constexpr int cap = bound<V>();
@@ -201,7 +224,10 @@ void build(S& s) {
   if constexpr (scalar_traits<T>::is_exact) {
     if (s.back().size() > 1) {
       V g = s.back(), q;
-      for (auto& x : s) { reduce(x, g, &q); x = q; }
+      for (auto& x : s) {
+        reduce(x, g, &q);
+        x = q;
+      }
     }
   }
 }
@@ -246,7 +272,9 @@ int count(S& s, const std::optional<T>& a, const std::optional<T>& b) {
 
 // Poly<T> (c[i]: coefficient of t^i) <-> the core's order (leading coefficient first).
 template <class T>
-std::vector<T> lead_first(const Poly<T>& p) { return std::vector<T>(p.c.rbegin(), p.c.rend()); }
+std::vector<T> lead_first(const Poly<T>& p) {
+  return std::vector<T>(p.c.rbegin(), p.c.rend());
+}
 
 }  // namespace sturm_core
 

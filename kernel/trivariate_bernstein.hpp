@@ -60,7 +60,9 @@ struct TriBern {
   std::size_t index(int i, int j, int k) const { return (std::size_t(i) * (n[1] + 1) + j) * (n[2] + 1) + k; }
   const T& at(int i, int j, int k) const { return c[index(i, j, k)]; }
   T& at(int i, int j, int k) { return c[index(i, j, k)]; }
-  std::size_t stride(int axis) const { return axis == 2 ? 1 : axis == 1 ? std::size_t(n[2] + 1) : std::size_t(n[1] + 1) * (n[2] + 1); }
+  std::size_t stride(int axis) const {
+    return axis == 2 ? 1 : axis == 1 ? std::size_t(n[2] + 1) : std::size_t(n[1] + 1) * (n[2] + 1);
+  }
 
   // Every control point strictly positive (+1), strictly negative (-1), or neither (0, also when a sign is uncertain).
   int strict_sign() const {
@@ -151,7 +153,10 @@ struct TriBern {
       for (std::size_t base = 0; base < c.size() && !ref; ++base) {
         if ((base / st) % len != 0) continue;
         for (std::size_t m = 0; m < len; ++m)
-          if (sign(c[base + m * st]) != Sign::zero) { ref = base; break; }
+          if (sign(c[base + m * st]) != Sign::zero) {
+            ref = base;
+            break;
+          }
       }
       if (!ref) return std::nullopt;
       const Sign sp = sign(c[*ref]);
@@ -311,7 +316,11 @@ TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p, std::ar
     }
     return ring_det(sub, zero);
   };
-  struct Term { int k; bool negative; Bern<T> in_s, in_t; };
+  struct Term {
+    int k;
+    bool negative;
+    Bern<T> in_s, in_t;
+  };
   std::vector<Term> terms;
   int ds = 0, dt = 0;
   const unsigned all = (1u << H) - 1;
@@ -337,14 +346,20 @@ TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p, std::ar
       for (int q = 0; q <= dt; ++q) {
         const T v = x.b[p] * y.b[q];
         T& cell = gk[std::size_t(p) * (dt + 1) + q];
-        if (tm.negative) cell = cell - v;
-        else cell = cell + v;
+        if (tm.negative)
+          cell = cell - v;
+        else
+          cell = cell + v;
       }
   }
   TriBern<T> F;
   F.n = {H, ds, dt};
   F.c.assign(std::size_t(H + 1) * (ds + 1) * (dt + 1), zero_s);
-  auto choose = [](int n, int r) { long v = 1; for (int i = 1; i <= r; ++i) v = v * (n - r + i) / i; return v; };
+  auto choose = [](int n, int r) {
+    long v = 1;
+    for (int i = 1; i <= r; ++i) v = v * (n - r + i) / i;
+    return v;
+  };
   for (int j = 0; j <= H; ++j) {
     const T w = scalar_traits<T>::from_rational(mpq_class(j % 2 ? -1 : 1, choose(H, j)), zero_s);  // (-1)^(H-j) (-1)^H
     for (int p = 0; p <= ds; ++p)

@@ -16,7 +16,8 @@
 
 namespace eccd {
 
-template <> struct scalar_traits<double> {
+template <>
+struct scalar_traits<double> {
   static constexpr bool is_exact = false;
   static Sign sign(double x) {
     if (std::isnan(x)) return Sign::uncertain;

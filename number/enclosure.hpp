@@ -33,9 +33,13 @@
 namespace eccd {
 
 namespace enclosure_detail {
-template <class U> int precision_of(const U& x) {
-  if constexpr (std::is_same_v<U, double>) { (void)x; return 53; }
-  else return x.precision() > 0 ? x.precision() : int(Mpfr::kConstBits);
+template <class U>
+int precision_of(const U& x) {
+  if constexpr (std::is_same_v<U, double>) {
+    (void)x;
+    return 53;
+  } else
+    return x.precision() > 0 ? x.precision() : int(Mpfr::kConstBits);
 }
 // An upper bound of a non-negative rational as a long double.
 inline long double up(const mpq_class& q) {
@@ -54,20 +58,25 @@ void sin_cos_pi(const Bounded<U>& x, Bounded<U>& s, Bounded<U>& c) {
   using E = typename B::E;
   const int p = enclosure_detail::precision_of(x.value());
   mpfr_t arg, ms, mc;
-  mpfr_inits2(p + 8, arg, (mpfr_ptr)nullptr);
-  mpfr_inits2(p, ms, mc, (mpfr_ptr)nullptr);
+  mpfr_inits2(p + 8, arg, (mpfr_ptr) nullptr);
+  mpfr_inits2(p, ms, mc, (mpfr_ptr) nullptr);
   mpfr_const_pi(arg, MPFR_RNDN);
-  if constexpr (std::is_same_v<U, double>) mpfr_mul_d(arg, arg, x.value(), MPFR_RNDN);
-  else mpfr_mul(arg, arg, x.value().get(), MPFR_RNDN);
+  if constexpr (std::is_same_v<U, double>)
+    mpfr_mul_d(arg, arg, x.value(), MPFR_RNDN);
+  else
+    mpfr_mul(arg, arg, x.value().get(), MPFR_RNDN);
   mpfr_sin_cos(ms, mc, arg, MPFR_RNDN);
   U sv, cv;
-  if constexpr (std::is_same_v<U, double>) { sv = mpfr_get_d(ms, MPFR_RNDN); cv = mpfr_get_d(mc, MPFR_RNDN); }
-  else {
-    sv = U(mpq_class(0), p); cv = U(mpq_class(0), p);
+  if constexpr (std::is_same_v<U, double>) {
+    sv = mpfr_get_d(ms, MPFR_RNDN);
+    cv = mpfr_get_d(mc, MPFR_RNDN);
+  } else {
+    sv = U(mpq_class(0), p);
+    cv = U(mpq_class(0), p);
     mpfr_set(sv.get(), ms, MPFR_RNDN);
     mpfr_set(cv.get(), mc, MPFR_RNDN);
   }
-  mpfr_clears(arg, ms, mc, (mpfr_ptr)nullptr);
+  mpfr_clears(arg, ms, mc, (mpfr_ptr) nullptr);
   const E pi_up = E(3.1415926535897932385L) * (1 + E(0x1p-60));
   E e = pi_up * x.bound() + pi_up * B::mag(x.value()) * std::ldexp(E(1), -(p + 6)) + std::ldexp(E(1), -p);
   e = B::grow(B::grow(e));
@@ -105,8 +114,12 @@ Bounded<U> pi_enclosure(const Bounded<U>& like) {
   mpfr_init2(m, p);
   mpfr_const_pi(m, MPFR_RNDN);
   U v;
-  if constexpr (std::is_same_v<U, double>) v = mpfr_get_d(m, MPFR_RNDN);
-  else { v = U(mpq_class(0), p); mpfr_set(v.get(), m, MPFR_RNDN); }
+  if constexpr (std::is_same_v<U, double>)
+    v = mpfr_get_d(m, MPFR_RNDN);
+  else {
+    v = U(mpq_class(0), p);
+    mpfr_set(v.get(), m, MPFR_RNDN);
+  }
   mpfr_clear(m);
   return B(std::move(v), B::grow(typename B::E(4) * std::ldexp(typename B::E(1), -p)));
 }

@@ -94,7 +94,9 @@ struct scalar_traits<ForwardBound> {
     return v > 0 ? Sign::positive : Sign::negative;
   }
   static double to_double(const ForwardBound& x) { return x.value(); }
-  static ForwardBound abs(const ForwardBound& x) { return ForwardBound(std::fabs(x.value()), x.magnitude(), x.depth()); }
+  static ForwardBound abs(const ForwardBound& x) {
+    return ForwardBound(std::fabs(x.value()), x.magnitude(), x.depth());
+  }
   static int precision(const ForwardBound&) { return 53; }
   static std::string to_string(const ForwardBound& x) { return scalar_traits<double>::to_string(x.value()); }
 };

@@ -108,7 +108,8 @@ class HalvingStep<Bounded<Mpfr>> {
   // B::pow2(k), built from the bits of an x87 extended number where it is a normal one (the same value:
   // a power of two is exact), without B::pow2's table look-up and call.
   static E pow2(long k) {
-    constexpr bool x87 = std::numeric_limits<E>::digits == 64 && std::numeric_limits<E>::max_exponent == 16384 && sizeof(E) == 16;
+    constexpr bool x87 =
+        std::numeric_limits<E>::digits == 64 && std::numeric_limits<E>::max_exponent == 16384 && sizeof(E) == 16;
     if constexpr (x87) {
       if (k < -16382 || k > 16383) return B::pow2(k);
       struct Bits {

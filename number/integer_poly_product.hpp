@@ -81,7 +81,10 @@ inline void integer_poly_product(const mpz_class* x, std::size_t nx, const mpz_c
   mpz_class X, Y, Z;
   detail::kronecker_pack(X, x, nx, L);
   detail::kronecker_pack(Y, y, ny, L);
-  if (x == y && nx == ny) Z = X * X; else Z = X * Y;
+  if (x == y && nx == ny)
+    Z = X * X;
+  else
+    Z = X * Y;
   const int sZ = mpz_sgn(Z.get_mpz_t());
   if (!sZ) return;
   const std::size_t zs = mpz_size(Z.get_mpz_t());
@@ -119,7 +122,10 @@ inline std::vector<mpq_class> rational_poly_product(const std::vector<mpq_class>
     num.resize(p.size());
     const bool one = den == 1;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      if (one) { num[i] = p[i].get_num(); continue; }
+      if (one) {
+        num[i] = p[i].get_num();
+        continue;
+      }
       mpz_divexact(num[i].get_mpz_t(), den.get_mpz_t(), p[i].get_den_mpz_t());
       num[i] *= p[i].get_num();
     }

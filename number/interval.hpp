@@ -45,7 +45,9 @@ struct Interval {
 
   static double down(double x) { return x - (std::fabs(x) * 0x1p-51 + 0x1p-1073); }
   static double up(double x) { return x + (std::fabs(x) * 0x1p-51 + 0x1p-1073); }
-  static Interval entire() { return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}; }
+  static Interval entire() {
+    return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  }
 
   bool contains_zero() const { return lo <= 0 && hi >= 0; }
   double width() const { return hi - lo; }
@@ -64,13 +66,27 @@ struct Interval {
     // extremes of {x·y} are the two products named; two products instead of four.
     double lo, hi;
     if (a.lo >= 0) {
-      if (b.lo >= 0) { lo = a.lo * b.lo; hi = a.hi * b.hi; }
-      else if (b.hi <= 0) { lo = a.hi * b.lo; hi = a.lo * b.hi; }
-      else { lo = a.hi * b.lo; hi = a.hi * b.hi; }
+      if (b.lo >= 0) {
+        lo = a.lo * b.lo;
+        hi = a.hi * b.hi;
+      } else if (b.hi <= 0) {
+        lo = a.hi * b.lo;
+        hi = a.lo * b.hi;
+      } else {
+        lo = a.hi * b.lo;
+        hi = a.hi * b.hi;
+      }
     } else if (a.hi <= 0) {
-      if (b.lo >= 0) { lo = a.lo * b.hi; hi = a.hi * b.lo; }
-      else if (b.hi <= 0) { lo = a.hi * b.hi; hi = a.lo * b.lo; }
-      else { lo = a.lo * b.hi; hi = a.lo * b.lo; }
+      if (b.lo >= 0) {
+        lo = a.lo * b.hi;
+        hi = a.hi * b.lo;
+      } else if (b.hi <= 0) {
+        lo = a.hi * b.hi;
+        hi = a.lo * b.lo;
+      } else {
+        lo = a.lo * b.hi;
+        hi = a.lo * b.lo;
+      }
     } else {  // 0 inside a (or a NaN end point: every comparison false)
       const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
       if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4)) return entire();
@@ -81,7 +97,8 @@ struct Interval {
     return {down(lo), up(hi)};
   }
   friend Interval operator/(const Interval& a, const Interval& b) {
-    if (b.contains_zero() || std::isnan(b.lo) || std::isnan(b.hi) || std::isnan(a.lo) || std::isnan(a.hi)) return entire();
+    if (b.contains_zero() || std::isnan(b.lo) || std::isnan(b.hi) || std::isnan(a.lo) || std::isnan(a.hi))
+      return entire();
     double q1 = a.lo / b.lo, q2 = a.lo / b.hi, q3 = a.hi / b.lo, q4 = a.hi / b.hi;
     return {down(std::min({q1, q2, q3, q4})), up(std::max({q1, q2, q3, q4}))};
   }
@@ -149,7 +166,8 @@ inline std::optional<mpq_class> exact_point(const Interval& x) {
   return mpq_class(x.lo);
 }
 
-template <> struct scalar_traits<Interval> {
+template <>
+struct scalar_traits<Interval> {
   static constexpr bool is_exact = false;
   static Sign sign(const Interval& x) {
     if (std::isnan(x.lo) || std::isnan(x.hi)) return Sign::uncertain;

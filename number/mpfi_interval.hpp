@@ -36,15 +36,27 @@ class MpfiInterval {
  public:
   static constexpr mpfr_prec_t kConstBits = 128;
 
-  MpfiInterval() : prec_(0) { mpfi_init2(v_, kConstBits); mpfi_set_si(v_, 0); }
-  MpfiInterval(int k) : prec_(0) { mpfi_init2(v_, kConstBits); mpfi_set_si(v_, k); }  // NOLINT: constants, exact
-  MpfiInterval(const mpq_class& q, int bits) : prec_(bits) { mpfi_init2(v_, bits); mpfi_set_q(v_, q.get_mpq_t()); }
+  MpfiInterval() : prec_(0) {
+    mpfi_init2(v_, kConstBits);
+    mpfi_set_si(v_, 0);
+  }
+  MpfiInterval(int k) : prec_(0) {
+    mpfi_init2(v_, kConstBits);
+    mpfi_set_si(v_, k);
+  }  // NOLINT: constants, exact
+  MpfiInterval(const mpq_class& q, int bits) : prec_(bits) {
+    mpfi_init2(v_, bits);
+    mpfi_set_q(v_, q.get_mpq_t());
+  }
   // The hull [lo, hi] of two rationals (lo <= hi), rounded outwards.
   MpfiInterval(const mpq_class& lo, const mpq_class& hi, int bits) : prec_(bits) {
     mpfi_init2(v_, bits);
     mpfi_interv_q(v_, lo.get_mpq_t(), hi.get_mpq_t());
   }
-  MpfiInterval(const MpfiInterval& o) : prec_(o.prec_) { mpfi_init2(v_, mpfi_get_prec(o.v_)); mpfi_set(v_, o.v_); }
+  MpfiInterval(const MpfiInterval& o) : prec_(o.prec_) {
+    mpfi_init2(v_, mpfi_get_prec(o.v_));
+    mpfi_set(v_, o.v_);
+  }
   // A move steals the end points; the moved-from value may only be assigned to or destroyed.
   MpfiInterval(MpfiInterval&& o) noexcept : prec_(o.prec_) {
     v_[0] = o.v_[0];
@@ -53,8 +65,10 @@ class MpfiInterval {
   MpfiInterval& operator=(const MpfiInterval& o) {
     if (this != &o) {
       prec_ = o.prec_;
-      if (!v_[0].left._mpfr_d) mpfi_init2(v_, mpfi_get_prec(o.v_));
-      else mpfi_set_prec(v_, mpfi_get_prec(o.v_));
+      if (!v_[0].left._mpfr_d)
+        mpfi_init2(v_, mpfi_get_prec(o.v_));
+      else
+        mpfi_set_prec(v_, mpfi_get_prec(o.v_));
       mpfi_set(v_, o.v_);
     }
     return *this;
@@ -102,15 +116,35 @@ class MpfiInterval {
   friend MpfiInterval operator-(const MpfiInterval& a, const MpfiInterval& b) { return make(a, b, mpfi_sub); }
   friend MpfiInterval operator*(const MpfiInterval& a, const MpfiInterval& b) { return make(a, b, mpfi_mul); }
   friend MpfiInterval operator/(const MpfiInterval& a, const MpfiInterval& b) { return make(a, b, mpfi_div); }
-  friend MpfiInterval operator+(MpfiInterval&& a, const MpfiInterval& b) { a += b; return std::move(a); }
-  friend MpfiInterval operator-(MpfiInterval&& a, const MpfiInterval& b) { a -= b; return std::move(a); }
-  friend MpfiInterval operator*(MpfiInterval&& a, const MpfiInterval& b) { a *= b; return std::move(a); }
-  friend MpfiInterval operator/(MpfiInterval&& a, const MpfiInterval& b) { a /= b; return std::move(a); }
+  friend MpfiInterval operator+(MpfiInterval&& a, const MpfiInterval& b) {
+    a += b;
+    return std::move(a);
+  }
+  friend MpfiInterval operator-(MpfiInterval&& a, const MpfiInterval& b) {
+    a -= b;
+    return std::move(a);
+  }
+  friend MpfiInterval operator*(MpfiInterval&& a, const MpfiInterval& b) {
+    a *= b;
+    return std::move(a);
+  }
+  friend MpfiInterval operator/(MpfiInterval&& a, const MpfiInterval& b) {
+    a /= b;
+    return std::move(a);
+  }
   // Certainly less / greater for every pair of values.
-  friend bool operator<(const MpfiInterval& a, const MpfiInterval& b) { return mpfr_less_p(&a.v_[0].right, &b.v_[0].left); }
-  friend bool operator>(const MpfiInterval& a, const MpfiInterval& b) { return mpfr_greater_p(&a.v_[0].left, &b.v_[0].right); }
-  friend bool operator<=(const MpfiInterval& a, const MpfiInterval& b) { return mpfr_lessequal_p(&a.v_[0].right, &b.v_[0].left); }
-  friend bool operator>=(const MpfiInterval& a, const MpfiInterval& b) { return mpfr_greaterequal_p(&a.v_[0].left, &b.v_[0].right); }
+  friend bool operator<(const MpfiInterval& a, const MpfiInterval& b) {
+    return mpfr_less_p(&a.v_[0].right, &b.v_[0].left);
+  }
+  friend bool operator>(const MpfiInterval& a, const MpfiInterval& b) {
+    return mpfr_greater_p(&a.v_[0].left, &b.v_[0].right);
+  }
+  friend bool operator<=(const MpfiInterval& a, const MpfiInterval& b) {
+    return mpfr_lessequal_p(&a.v_[0].right, &b.v_[0].left);
+  }
+  friend bool operator>=(const MpfiInterval& a, const MpfiInterval& b) {
+    return mpfr_greaterequal_p(&a.v_[0].left, &b.v_[0].right);
+  }
 
  private:
   template <class Op>
@@ -145,7 +179,8 @@ inline MpfiInterval interval_hull(const mpq_class& lo, const mpq_class& hi, cons
 }
 inline std::optional<mpq_class> exact_point(const MpfiInterval& x) { return x.point(); }
 
-template <> struct scalar_traits<MpfiInterval> {
+template <>
+struct scalar_traits<MpfiInterval> {
   static constexpr bool is_exact = false;
   static Sign sign(const MpfiInterval& x) {
     mpfi_srcptr v = x.get();

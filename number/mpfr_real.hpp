@@ -26,27 +26,56 @@ class Mpfr {
  public:
   static constexpr mpfr_prec_t kConstBits = 128;
 
-  Mpfr() : prec_(0) { mpfr_init2(v_, kConstBits); mpfr_set_zero(v_, 1); }
-  Mpfr(int k) : prec_(0) { mpfr_init2(v_, kConstBits); mpfr_set_si(v_, k, MPFR_RNDN); }  // NOLINT: implicit by design
-  Mpfr(long k) : prec_(0) { mpfr_init2(v_, kConstBits); mpfr_set_si(v_, k, MPFR_RNDN); }  // NOLINT
-  Mpfr(const mpq_class& q, int bits) : prec_(bits) { mpfr_init2(v_, bits); mpfr_set_q(v_, q.get_mpq_t(), MPFR_RNDN); }
-  Mpfr(double d, int bits) : prec_(bits) { mpfr_init2(v_, bits); mpfr_set_d(v_, d, MPFR_RNDN); }
-  Mpfr(const Mpfr& o) : prec_(o.prec_) { mpfr_init2(v_, mpfr_get_prec(o.v_)); mpfr_set(v_, o.v_, MPFR_RNDN); }
+  Mpfr() : prec_(0) {
+    mpfr_init2(v_, kConstBits);
+    mpfr_set_zero(v_, 1);
+  }
+  Mpfr(int k) : prec_(0) {
+    mpfr_init2(v_, kConstBits);
+    mpfr_set_si(v_, k, MPFR_RNDN);
+  }  // NOLINT: implicit by design
+  Mpfr(long k) : prec_(0) {
+    mpfr_init2(v_, kConstBits);
+    mpfr_set_si(v_, k, MPFR_RNDN);
+  }  // NOLINT
+  Mpfr(const mpq_class& q, int bits) : prec_(bits) {
+    mpfr_init2(v_, bits);
+    mpfr_set_q(v_, q.get_mpq_t(), MPFR_RNDN);
+  }
+  Mpfr(double d, int bits) : prec_(bits) {
+    mpfr_init2(v_, bits);
+    mpfr_set_d(v_, d, MPFR_RNDN);
+  }
+  Mpfr(const Mpfr& o) : prec_(o.prec_) {
+    mpfr_init2(v_, mpfr_get_prec(o.v_));
+    mpfr_set(v_, o.v_, MPFR_RNDN);
+  }
   // A move steals the limbs (no allocation: half the cost of MPFR arithmetic
   // here was malloc/free); the moved-from value owns nothing and may only be
   // assigned to or destroyed.
-  Mpfr(Mpfr&& o) noexcept : prec_(o.prec_) { v_[0] = o.v_[0]; o.v_[0]._mpfr_d = nullptr; }
+  Mpfr(Mpfr&& o) noexcept : prec_(o.prec_) {
+    v_[0] = o.v_[0];
+    o.v_[0]._mpfr_d = nullptr;
+  }
   Mpfr& operator=(const Mpfr& o) {
     if (this != &o) {
       prec_ = o.prec_;
-      if (!v_[0]._mpfr_d) mpfr_init2(v_, mpfr_get_prec(o.v_));
-      else mpfr_set_prec(v_, mpfr_get_prec(o.v_));
+      if (!v_[0]._mpfr_d)
+        mpfr_init2(v_, mpfr_get_prec(o.v_));
+      else
+        mpfr_set_prec(v_, mpfr_get_prec(o.v_));
       mpfr_set(v_, o.v_, MPFR_RNDN);
     }
     return *this;
   }
-  Mpfr& operator=(Mpfr&& o) noexcept { prec_ = o.prec_; std::swap(v_[0], o.v_[0]); return *this; }
-  ~Mpfr() { if (v_[0]._mpfr_d) mpfr_clear(v_); }
+  Mpfr& operator=(Mpfr&& o) noexcept {
+    prec_ = o.prec_;
+    std::swap(v_[0], o.v_[0]);
+    return *this;
+  }
+  ~Mpfr() {
+    if (v_[0]._mpfr_d) mpfr_clear(v_);
+  }
 
   int precision() const { return int(prec_); }
   mpfr_srcptr get() const { return v_; }
@@ -56,12 +85,28 @@ class Mpfr {
   Mpfr& operator-=(const Mpfr& o) { return apply(o, mpfr_sub); }
   Mpfr& operator*=(const Mpfr& o) { return apply(o, mpfr_mul); }
   Mpfr& operator/=(const Mpfr& o) { return apply(o, mpfr_div); }
-  Mpfr operator-() const { Mpfr r(*this); mpfr_neg(r.v_, r.v_, MPFR_RNDN); return r; }
+  Mpfr operator-() const {
+    Mpfr r(*this);
+    mpfr_neg(r.v_, r.v_, MPFR_RNDN);
+    return r;
+  }
 
-  friend Mpfr operator+(Mpfr a, const Mpfr& b) { a += b; return a; }
-  friend Mpfr operator-(Mpfr a, const Mpfr& b) { a -= b; return a; }
-  friend Mpfr operator*(Mpfr a, const Mpfr& b) { a *= b; return a; }
-  friend Mpfr operator/(Mpfr a, const Mpfr& b) { a /= b; return a; }
+  friend Mpfr operator+(Mpfr a, const Mpfr& b) {
+    a += b;
+    return a;
+  }
+  friend Mpfr operator-(Mpfr a, const Mpfr& b) {
+    a -= b;
+    return a;
+  }
+  friend Mpfr operator*(Mpfr a, const Mpfr& b) {
+    a *= b;
+    return a;
+  }
+  friend Mpfr operator/(Mpfr a, const Mpfr& b) {
+    a /= b;
+    return a;
+  }
   friend bool operator<(const Mpfr& a, const Mpfr& b) { return mpfr_less_p(a.v_, b.v_); }
   friend bool operator>(const Mpfr& a, const Mpfr& b) { return mpfr_greater_p(a.v_, b.v_); }
   friend bool operator<=(const Mpfr& a, const Mpfr& b) { return mpfr_lessequal_p(a.v_, b.v_); }
@@ -86,7 +131,8 @@ class Mpfr {
   mpfr_t v_;
 };
 
-template <> struct scalar_traits<Mpfr> {
+template <>
+struct scalar_traits<Mpfr> {
   static constexpr bool is_exact = false;
   static Sign sign(const Mpfr& x) {
     if (mpfr_nan_p(x.get())) return Sign::uncertain;
@@ -96,7 +142,11 @@ template <> struct scalar_traits<Mpfr> {
   static Mpfr from_rational(const mpq_class& q, const Mpfr& like) {
     return Mpfr(q, like.precision() > 0 ? like.precision() : int(Mpfr::kConstBits));
   }
-  static Mpfr abs(const Mpfr& x) { Mpfr r(x); mpfr_abs(r.get(), r.get(), MPFR_RNDN); return r; }
+  static Mpfr abs(const Mpfr& x) {
+    Mpfr r(x);
+    mpfr_abs(r.get(), r.get(), MPFR_RNDN);
+    return r;
+  }
   static int precision(const Mpfr& x) { return x.precision(); }
   static std::string to_string(const Mpfr& x) {
     char* s = nullptr;

@@ -39,7 +39,8 @@ inline std::vector<mpq_class> rational_convolution(const std::vector<mpq_class>&
     }
     std::vector<mpz_class> r(x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {
-      if (mpz_cmp_ui(x[i].get_den_mpz_t(), 1) == 0) r[i] = x[i].get_num() * l;
+      if (mpz_cmp_ui(x[i].get_den_mpz_t(), 1) == 0)
+        r[i] = x[i].get_num() * l;
       else {
         mpz_divexact(r[i].get_mpz_t(), l.get_mpz_t(), x[i].get_den_mpz_t());
         r[i] *= x[i].get_num();

@@ -26,7 +26,10 @@ inline mpq_class rational_poly_eval(const std::vector<mpq_class>& c, const mpq_c
   const bool int_point = mpz_cmp_ui(t.get_den_mpz_t(), 1) == 0;
   mpz_class s, vp = 1, term;
   auto coeff = [&](int i, mpz_class& out) {  // C_i
-    if (int_coeffs) { mpz_set(out.get_mpz_t(), c[i].get_num_mpz_t()); return; }
+    if (int_coeffs) {
+      mpz_set(out.get_mpz_t(), c[i].get_num_mpz_t());
+      return;
+    }
     mpz_divexact(out.get_mpz_t(), d.get_mpz_t(), c[i].get_den_mpz_t());
     mpz_mul(out.get_mpz_t(), out.get_mpz_t(), c[i].get_num_mpz_t());
   };

@@ -14,7 +14,8 @@ namespace eccd {
 using Rational = mpq_class;
 using Integer = mpz_class;
 
-template <> struct scalar_traits<mpq_class> {
+template <>
+struct scalar_traits<mpq_class> {
   static constexpr bool is_exact = true;
   static Sign sign(const mpq_class& x) { return sign_of_int(sgn(x)); }
   // Display only.

@@ -49,7 +49,7 @@ class Bounded {
   using E = std::conditional_t<std::is_same_v<T, double>, double, long double>;
 
   Bounded() : v_(T(0)), e_(0) {}
-  Bounded(int k) : v_(T(k)), e_(0) {}  // NOLINT: small exact constants, as T(3) in templated code
+  Bounded(int k) : v_(T(k)), e_(0) {}   // NOLINT: small exact constants, as T(3) in templated code
   Bounded(long k) : v_(T(k)), e_(0) {}  // NOLINT
   Bounded(T v, E e) : v_(std::move(v)), e_(e) {}
 
@@ -57,7 +57,8 @@ class Bounded {
   E bound() const { return e_; }
 
   static E mag(const T& x) {
-    if constexpr (std::is_same_v<T, double>) return std::fabs(x);
+    if constexpr (std::is_same_v<T, double>)
+      return std::fabs(x);
     else {  // the leading 53 bits of the significand plus one unit in their last place, scaled: >= |x|
       mpfr_srcptr p = x.get();
       if (!mpfr_regular_p(p)) return mpfr_zero_p(p) ? E(0) : std::numeric_limits<E>::infinity();
@@ -69,7 +70,8 @@ class Bounded {
   // bounds the error of rounding to nearest (the exact result lies in x's binade or, when x = 2^(EXP-1), in
   // the one below, whose half unit is smaller). It needs only x's exponent.
   static E unit_mag(const T& x) {
-    if constexpr (std::is_same_v<T, double>) return unit(x) * mag(x);
+    if constexpr (std::is_same_v<T, double>)
+      return unit(x) * mag(x);
     else {
       mpfr_srcptr p = x.get();
       if (!mpfr_regular_p(p)) return mpfr_zero_p(p) ? E(0) : std::numeric_limits<E>::infinity();
@@ -88,7 +90,8 @@ class Bounded {
   // long double is a software routine, and was a third of an MPFR independent run's time). A table over
   // long double's exponent range (normal and subnormal), ldexp outside it.
   static E pow2(long k) {
-    if constexpr (std::is_same_v<E, double>) return std::ldexp(1.0, int(std::clamp<long>(k, -20000, 20000)));
+    if constexpr (std::is_same_v<E, double>)
+      return std::ldexp(1.0, int(std::clamp<long>(k, -20000, 20000)));
     else {
       constexpr long lo = std::numeric_limits<E>::min_exponent - std::numeric_limits<E>::digits - 1,
                      hi = std::numeric_limits<E>::max_exponent;
@@ -103,23 +106,36 @@ class Bounded {
   }
   // The unit roundoff of a result of x's precision.
   static E unit(const T& x) {
-    if constexpr (std::is_same_v<T, double>) { (void)x; return E(0x1p-53); }
-    else {
+    if constexpr (std::is_same_v<T, double>) {
+      (void)x;
+      return E(0x1p-53);
+    } else {
       int p = x.precision() > 0 ? x.precision() : int(Mpfr::kConstBits);
       return std::ldexp(E(1), -p);
     }
   }
   static E grow(E e) { return e + e * E(0x1p-50); }
   static E tiny() {
-    if constexpr (std::is_same_v<T, double>) return std::numeric_limits<double>::denorm_min();
-    else return E(0);
+    if constexpr (std::is_same_v<T, double>)
+      return std::numeric_limits<double>::denorm_min();
+    else
+      return E(0);
   }
 
-  Bounded& operator+=(const Bounded& o) { v_ += o.v_; e_ = grow(e_ + o.e_ + unit_mag(v_)); return *this; }
-  Bounded& operator-=(const Bounded& o) { v_ -= o.v_; e_ = grow(e_ + o.e_ + unit_mag(v_)); return *this; }
+  Bounded& operator+=(const Bounded& o) {
+    v_ += o.v_;
+    e_ = grow(e_ + o.e_ + unit_mag(v_));
+    return *this;
+  }
+  Bounded& operator-=(const Bounded& o) {
+    v_ -= o.v_;
+    e_ = grow(e_ + o.e_ + unit_mag(v_));
+    return *this;
+  }
   Bounded& operator*=(const Bounded& o) {
     E e;
-    if constexpr (std::is_same_v<T, double>) e = mag(v_) * o.e_ + mag(o.v_) * e_ + e_ * o.e_;
+    if constexpr (std::is_same_v<T, double>)
+      e = mag(v_) * o.e_ + mag(o.v_) * e_ + e_ * o.e_;
     else  // a term whose error factor is 0 is 0 (skipped: each mag reads an MPFR number; a non-finite
           // factor makes the product's unit_mag infinite below anyway)
       e = (o.e_ != 0 ? mag(v_) * o.e_ : E(0)) + (e_ != 0 ? mag(o.v_) * e_ + e_ * o.e_ : E(0));
@@ -130,16 +146,30 @@ class Bounded {
   Bounded& operator/=(const Bounded& o) {
     E a = mag(v_), b = mag(o.v_);
     v_ /= o.v_;
-    if (!(b > o.e_)) e_ = std::numeric_limits<E>::infinity();
-    else e_ = grow((a * o.e_ + b * e_) / (b * (b - o.e_)) + unit_mag(v_) + tiny());
+    if (!(b > o.e_))
+      e_ = std::numeric_limits<E>::infinity();
+    else
+      e_ = grow((a * o.e_ + b * e_) / (b * (b - o.e_)) + unit_mag(v_) + tiny());
     return *this;
   }
   Bounded operator-() const { return Bounded(-v_, e_); }
 
-  friend Bounded operator+(Bounded a, const Bounded& b) { a += b; return a; }
-  friend Bounded operator-(Bounded a, const Bounded& b) { a -= b; return a; }
-  friend Bounded operator*(Bounded a, const Bounded& b) { a *= b; return a; }
-  friend Bounded operator/(Bounded a, const Bounded& b) { a /= b; return a; }
+  friend Bounded operator+(Bounded a, const Bounded& b) {
+    a += b;
+    return a;
+  }
+  friend Bounded operator-(Bounded a, const Bounded& b) {
+    a -= b;
+    return a;
+  }
+  friend Bounded operator*(Bounded a, const Bounded& b) {
+    a *= b;
+    return a;
+  }
+  friend Bounded operator/(Bounded a, const Bounded& b) {
+    a /= b;
+    return a;
+  }
   friend bool operator<(const Bounded& a, const Bounded& b) { return a.v_ < b.v_; }
   friend bool operator>(const Bounded& a, const Bounded& b) { return a.v_ > b.v_; }
   friend bool operator<=(const Bounded& a, const Bounded& b) { return a.v_ <= b.v_; }
@@ -152,13 +182,22 @@ class Bounded {
   E e_;
 };
 
-template <class T> struct is_bounded : std::false_type {};
-template <class T> struct is_bounded<Bounded<T>> : std::true_type {};
-template <class T> inline constexpr bool has_error_bound_v = is_bounded<T>::value;
+template <class T>
+struct is_bounded : std::false_type {};
+template <class T>
+struct is_bounded<Bounded<T>> : std::true_type {};
+template <class T>
+inline constexpr bool has_error_bound_v = is_bounded<T>::value;
 
 // An evaluation point: the same value, error bound 0 (see the header prose).
-template <class T> inline T point_of(const T& x) { return x; }
-template <class T> inline Bounded<T> point_of(const Bounded<T>& x) { return Bounded<T>(x.value(), 0); }
+template <class T>
+inline T point_of(const T& x) {
+  return x;
+}
+template <class T>
+inline Bounded<T> point_of(const Bounded<T>& x) {
+  return Bounded<T>(x.value(), 0);
+}
 
 // The plain arithmetic under a running bound, for work whose result is a
 // point or a location and not a sign (a root's refinement, a witness's search,
@@ -180,8 +219,14 @@ struct PlainOf<Bounded<V>> {
 
 // The sign of the value held, ignoring the bound (for best-effort refinement
 // of something already proved, e.g. a simple root's location).
-template <class T> inline Sign value_sign(const T& x) { return sign(x); }
-template <class T> inline Sign value_sign(const Bounded<T>& x) { return sign(x.value()); }
+template <class T>
+inline Sign value_sign(const T& x) {
+  return sign(x);
+}
+template <class T>
+inline Sign value_sign(const Bounded<T>& x) {
+  return sign(x.value());
+}
 
 template <class T>
 struct scalar_traits<Bounded<T>> {
@@ -198,8 +243,10 @@ struct scalar_traits<Bounded<T>> {
   static B from_rational(const mpq_class& q, const B& like) {
     T v = scalar_traits<T>::from_rational(q, like.value());
     bool exact;
-    if constexpr (std::is_same_v<T, double>) exact = std::isfinite(v) && mpq_class(v) == q;
-    else exact = mpfr_number_p(v.get()) && mpfr_cmp_q(v.get(), q.get_mpq_t()) == 0;
+    if constexpr (std::is_same_v<T, double>)
+      exact = std::isfinite(v) && mpq_class(v) == q;
+    else
+      exact = mpfr_number_p(v.get()) && mpfr_cmp_q(v.get(), q.get_mpq_t()) == 0;
     typename B::E e = exact ? 0 : B::grow(B::unit_mag(v) + B::tiny());
     return B(std::move(v), e);
   }
@@ -208,11 +255,16 @@ struct scalar_traits<Bounded<T>> {
   static std::string to_string(const B& x) { return scalar_traits<T>::to_string(x.value()); }
 };
 
-template <class T> inline bool is_finite_value(const Bounded<T>& x) {
+template <class T>
+inline bool is_finite_value(const Bounded<T>& x) {
   return is_finite_value(x.value()) && std::isfinite(x.bound());
 }
-template <class T> inline long binary_exponent(const Bounded<T>& x) { return binary_exponent(x.value()); }
-template <class T> inline Bounded<T> times_pow2(const Bounded<T>& x, long k) {
+template <class T>
+inline long binary_exponent(const Bounded<T>& x) {
+  return binary_exponent(x.value());
+}
+template <class T>
+inline Bounded<T> times_pow2(const Bounded<T>& x, long k) {
   return Bounded<T>(times_pow2(x.value(), k), std::ldexp(x.bound(), int(std::clamp(k, -20000L, 20000L))));
 }
 

@@ -127,11 +127,16 @@ inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
     v = vh.data();
     e = eh.data();
   }
-  for (int i = 0; i <= n; ++i) { v[i] = w[i].value(); e[i] = w[i].bound(); }
+  for (int i = 0; i <= n; ++i) {
+    v[i] = w[i].value();
+    e[i] = w[i].bound();
+  }
   const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
   const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
   // The factor for an output reached after L levels; applied when it is final.
-  auto fin = [](double val, double bound, int levels) { return BD(val, bound * (1.0 + (8.0 * levels + 8.0) * 0x1p-51)); };
+  auto fin = [](double val, double bound, int levels) {
+    return BD(val, bound * (1.0 + (8.0 * levels + 8.0) * 0x1p-51));
+  };
   if (left) left[0] = w[0];
   double* __restrict vp = v;  // values and bounds in separate buffers (vectorisable rounds)
   double* __restrict ep = e;
@@ -163,13 +168,17 @@ inline void de_casteljau_rows(std::vector<std::vector<BD>>& f, const BD& s, cons
   v.resize(std::size_t(m + 1) * cols);
   e.resize(v.size());
   for (int i = 0; i <= m; ++i)
-    for (std::size_t j = 0; j < cols; ++j) { v[i * cols + j] = f[i][j].value(); e[i * cols + j] = f[i][j].bound(); }
+    for (std::size_t j = 0; j < cols; ++j) {
+      v[i * cols + j] = f[i][j].value();
+      e[i * cols + j] = f[i][j].bound();
+    }
   const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
   const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
   // Row d <- s row a + t row b, column by column (d is a or b: each column reads before it writes).
   auto step = [&](int d, int a, int b) {
     double *vd = v.data() + d * cols, *ed = e.data() + d * cols;
-    const double *va = v.data() + a * cols, *ea = e.data() + a * cols, *vb = v.data() + b * cols, *eb = e.data() + b * cols;
+    const double *va = v.data() + a * cols, *ea = e.data() + a * cols, *vb = v.data() + b * cols,
+                 *eb = e.data() + b * cols;
     for (std::size_t j = 0; j < cols; ++j) {
       const double x = sv * va[j], y = tv * vb[j], nw = x + y;
       const double ne = sa * ea[j] + se * (std::fabs(va[j]) + ea[j]) + ta * eb[j] + te * (std::fabs(vb[j]) + eb[j]) +
@@ -237,8 +246,10 @@ inline BD sum_of_ratios(const BD* a, const BD* c, const BD* d, int terms, const 
       E += pa * alpha[i] + ep * beta[i];
     } else {
       const double da = std::fabs(dv), de = d[i].bound();
-      if (!(da > de)) E = std::numeric_limits<double>::infinity();
-      else E += (pa * de + da * ep) / (da * (da - de));
+      if (!(da > de))
+        E = std::numeric_limits<double>::infinity();
+      else
+        E += (pa * de + da * ep) / (da * (da - de));
     }
     mu += std::fabs(q) + std::fabs(acc);
   }

@@ -36,17 +36,31 @@ inline Sign operator*(Sign a, Sign b) {
 }
 inline const char* to_string(Sign s) {
   switch (s) {
-    case Sign::negative: return "negative";
-    case Sign::zero: return "zero";
-    case Sign::positive: return "positive";
-    default: return "uncertain";
+    case Sign::negative:
+      return "negative";
+    case Sign::zero:
+      return "zero";
+    case Sign::positive:
+      return "positive";
+    default:
+      return "uncertain";
   }
 }
 
-template <class T> struct scalar_traits;  // specialised per arithmetic
+template <class T>
+struct scalar_traits;  // specialised per arithmetic
 
-template <class T> inline Sign sign(const T& x) { return scalar_traits<T>::sign(x); }
-template <class T> inline double to_double(const T& x) { return scalar_traits<T>::to_double(x); }
-template <class T> inline bool is_zero(const T& x) { return scalar_traits<T>::sign(x) == Sign::zero; }
+template <class T>
+inline Sign sign(const T& x) {
+  return scalar_traits<T>::sign(x);
+}
+template <class T>
+inline double to_double(const T& x) {
+  return scalar_traits<T>::to_double(x);
+}
+template <class T>
+inline bool is_zero(const T& x) {
+  return scalar_traits<T>::sign(x) == Sign::zero;
+}
 
 }  // namespace eccd

@@ -45,7 +45,11 @@ class Magnitude {
  public:
   constexpr Magnitude() = default;
   constexpr Magnitude(int k) : m_(k < 0 ? -double(k) : double(k)) {}  // NOLINT: small exact constants
-  static Magnitude leaf(double x) { Magnitude r; r.m_ = std::fabs(x); return r; }
+  static Magnitude leaf(double x) {
+    Magnitude r;
+    r.m_ = std::fabs(x);
+    return r;
+  }
   constexpr double value() const { return m_; }
   friend constexpr Magnitude operator+(Magnitude a, Magnitude b) { return raw(a.m_ + b.m_); }
   friend constexpr Magnitude operator-(Magnitude a, Magnitude b) { return raw(a.m_ + b.m_); }
@@ -54,7 +58,11 @@ class Magnitude {
   constexpr Magnitude operator-() const { return *this; }
 
  private:
-  static constexpr Magnitude raw(double m) { Magnitude r; r.m_ = m; return r; }
+  static constexpr Magnitude raw(double m) {
+    Magnitude r;
+    r.m_ = m;
+    return r;
+  }
   double m_ = 0;
 };
 
@@ -78,7 +86,11 @@ class ValueMagnitude {
  private:
   using U2 = long long __attribute__((vector_size(16)));
   static V2 flip0(V2 x) { return (V2)((U2)x ^ U2{(long long)(1ULL << 63), 0}); }
-  static ValueMagnitude raw(V2 x) { ValueMagnitude r; r.x_ = x; return r; }
+  static ValueMagnitude raw(V2 x) {
+    ValueMagnitude r;
+    r.x_ = x;
+    return r;
+  }
   V2 x_;
 };
 
@@ -95,15 +107,21 @@ class StaticDepth {
   constexpr StaticDepth operator-() const { return *this; }
 
  private:
-  static constexpr StaticDepth raw(int d) { StaticDepth r; r.d_ = d; return r; }
+  static constexpr StaticDepth raw(int d) {
+    StaticDepth r;
+    r.d_ = d;
+    return r;
+  }
   int d_ = 0;
 };
 
 // The leaf of a given double in each of the three runs.
 template <class T>
 inline T static_leaf(double x) {
-  if constexpr (std::is_same_v<T, double>) return x;
-  else return T::leaf(x);
+  if constexpr (std::is_same_v<T, double>)
+    return x;
+  else
+    return T::leaf(x);
 }
 
 }  // namespace eccd

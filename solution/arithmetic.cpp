@@ -7,23 +7,32 @@ namespace eccd {
 
 int Arithmetic::precision_bits() const {
   switch (kind) {
-    case Double: case Certified: return 53;
-    case Mpfr: return mpfr_bits;
-    default: return 0;
+    case Double:
+    case Certified:
+      return 53;
+    case Mpfr:
+      return mpfr_bits;
+    default:
+      return 0;
   }
 }
 
 std::string Arithmetic::name() const {
   switch (kind) {
-    case Double: return "double";
-    case Mpfr: return "mpfr:" + std::to_string(mpfr_bits);
+    case Double:
+      return "double";
+    case Mpfr:
+      return "mpfr:" + std::to_string(mpfr_bits);
     case Certified: {
       if (mpfi_rungs == std::vector<int>{256}) return "certified";
       std::string n = "certified:";
-      for (std::size_t i = 0; i < mpfi_rungs.size(); ++i) n.append(i ? "," : "").append(std::to_string(mpfi_rungs[i]));  // no const char* + string: GCC 12's false -Wrestrict
+      for (std::size_t i = 0; i < mpfi_rungs.size(); ++i)
+        n.append(i ? "," : "")
+            .append(std::to_string(mpfi_rungs[i]));  // no const char* + string: GCC 12's false -Wrestrict
       return mpfi_rungs.empty() ? n + "none" : n;
     }
-    default: return "exact";
+    default:
+      return "exact";
   }
 }
 
@@ -42,9 +51,19 @@ Arithmetic Arithmetic::certified(std::vector<int> rungs) {
 
 Arithmetic parse_arithmetic(const std::string& text) {
   Arithmetic a;
-  if (text == "double") { a.kind = Arithmetic::Double; return a; }
-  if (text == "exact") { a.kind = Arithmetic::Exact; return a; }
-  if (text == "certified") { a.kind = Arithmetic::Certified; a.mpfi_rungs = {256}; return a; }
+  if (text == "double") {
+    a.kind = Arithmetic::Double;
+    return a;
+  }
+  if (text == "exact") {
+    a.kind = Arithmetic::Exact;
+    return a;
+  }
+  if (text == "certified") {
+    a.kind = Arithmetic::Certified;
+    a.mpfi_rungs = {256};
+    return a;
+  }
   if (text.rfind("certified:", 0) == 0) {
     a.kind = Arithmetic::Certified;
     std::string list = text.substr(10);
@@ -54,7 +73,8 @@ Arithmetic parse_arithmetic(const std::string& text) {
       std::size_t comma = list.find(',', at);
       std::string b = list.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
       if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6)
-        throw std::invalid_argument("--arith " + text + ": expected certified:BITS[,BITS...] (MPFI rungs) or certified:none");
+        throw std::invalid_argument("--arith " + text +
+                                    ": expected certified:BITS[,BITS...] (MPFI rungs) or certified:none");
       int bits = std::stoi(b);
       if (bits < 54 || bits > 65536 || (!a.mpfi_rungs.empty() && bits <= a.mpfi_rungs.back()))
         throw std::invalid_argument("--arith " + text + ": MPFI rungs must increase, each between 54 and 65536 bits");

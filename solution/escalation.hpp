@@ -11,8 +11,8 @@
 namespace eccd {
 
 struct Escalation {
-  std::string rung;    // "interval", "mpfi:256", ...
-  std::string reason;  // why that rung gave up ("skipped: ..." when it was not tried)
+  std::string rung;      // "interval", "mpfi:256", ...
+  std::string reason;    // why that rung gave up ("skipped: ..." when it was not tried)
   double spent_ms = 0;   // the time the rung took before it gave up (0 when skipped)
   double budget_ms = 0;  // the time it was allowed (certified/ladder.hpp, "Cost guarantee"; 0: not tried)
 };

@@ -32,8 +32,8 @@ struct Solution {
   int dim = 2;
   Arithmetic arith;
   InputMode input = InputMode::prepared;  // what a floating run started from (exact and certified: prepared)
-  std::string basis;   // "power" | "bernstein" | "scaled-bernstein" | "exact"
-  std::string method;  // "cd-disc" (2D) | "projection" | "bezier" | "sampling:N" | "marching:N"
+  std::string basis;                      // "power" | "bernstein" | "scaled-bernstein" | "exact"
+  std::string method;                     // "cd-disc" (2D) | "projection" | "bezier" | "sampling:N" | "marching:N"
   Variant variant = Variant::answer;
   bool certified = false;  // every instant carries a proved rational bracket
   bool sampled = false;    // a sampled baseline: nothing is claimed between its instants
@@ -54,9 +54,16 @@ struct Solution {
   std::string projection = "discriminant";
   int projection_degree = -1;
   bool projection_identically_zero = false;
-  struct Critical { Instant t; Status status = Status::uncertain; int multiplicity = 0; };
+  struct Critical {
+    Instant t;
+    Status status = Status::uncertain;
+    int multiplicity = 0;
+  };
   std::vector<Critical> critical;
-  struct Cell { Instant sample; Status status = Status::uncertain; };
+  struct Cell {
+    Instant sample;
+    Status status = Status::uncertain;
+  };
   std::vector<Cell> cells;
   std::vector<std::string> undecided_reasons;
   std::vector<std::pair<std::string, long>> work;  // counters of the method
@@ -77,10 +84,14 @@ struct Solution {
 // 2D variant names as the JSON writes them.
 inline const char* variant_name(Variant v) {
   switch (v) {
-    case Variant::collides: return "collides";
-    case Variant::first_contact: return "first-contact";
-    case Variant::all_contacts: return "all-contacts";
-    default: return "answer";
+    case Variant::collides:
+      return "collides";
+    case Variant::first_contact:
+      return "first-contact";
+    case Variant::all_contacts:
+      return "all-contacts";
+    default:
+      return "answer";
   }
 }
 

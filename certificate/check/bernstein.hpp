@@ -26,14 +26,23 @@ namespace eccd::check {
 inline void lerp_from(mpq_class& d, const mpq_class& a, const mpq_class& x, const mpq_class&) { d = a + x * (d - a); }
 inline void lerp_to(mpq_class& d, const mpq_class& b, const mpq_class& x, const mpq_class&) { d = d + x * (b - d); }
 inline mpq_class one_minus(const mpq_class& x) { return 1 - x; }
-template <class T> void lerp_from(T& d, const T& a, const T& x, const T& y) { T::lerp_from(d, a, x, y); }
-template <class T> void lerp_to(T& d, const T& b, const T& x, const T& y) { T::lerp_to(d, b, x, y); }
-template <class T> T one_minus(const T& x) { return T::one_minus(x); }
+template <class T>
+void lerp_from(T& d, const T& a, const T& x, const T& y) {
+  T::lerp_from(d, a, x, y);
+}
+template <class T>
+void lerp_to(T& d, const T& b, const T& x, const T& y) {
+  T::lerp_to(d, b, x, y);
+}
+template <class T>
+T one_minus(const T& x) {
+  return T::one_minus(x);
+}
 
 template <class T>
 struct Net2 {
-  int m = 0, n = 0;     // degrees in u and t
-  std::vector<T> c;     // c[i * (n + 1) + j]
+  int m = 0, n = 0;  // degrees in u and t
+  std::vector<T> c;  // c[i * (n + 1) + j]
   T& at(int i, int j) { return c[std::size_t(i) * (n + 1) + j]; }
   const T& at(int i, int j) const { return c[std::size_t(i) * (n + 1) + j]; }
 
@@ -65,8 +74,10 @@ template <class T, class Make>
 Net2<T> restrict_to(const Net2<T>& f, int axis, const mpq_class& a, const mpq_class& b, Make&& make) {
   Net2<T> r = f;
   const int deg = axis == 0 ? f.m : f.n;
-  const std::size_t st = axis == 0 ? std::size_t(f.n + 1) : 1, lines = axis == 0 ? std::size_t(f.n + 1) : std::size_t(f.m + 1);
-  const bool cut_left = sgn(a) != 0, cut_right = b != 1;  // outside [0, 1] too: the subdivision is an identity of polynomials
+  const std::size_t st = axis == 0 ? std::size_t(f.n + 1) : 1,
+                    lines = axis == 0 ? std::size_t(f.n + 1) : std::size_t(f.m + 1);
+  const bool cut_left = sgn(a) != 0,
+             cut_right = b != 1;  // outside [0, 1] too: the subdivision is an identity of polynomials
   if (!cut_left && !cut_right) return r;
   const T ta = make(a);
   const T tb = make(cut_right ? mpq_class((b - a) / (1 - a)) : mpq_class(1));
@@ -83,7 +94,8 @@ template <class T>
 std::pair<Net2<T>, Net2<T>> split_half(const Net2<T>& f, int axis, const T& half) {
   std::pair<Net2<T>, Net2<T>> r{f, f};
   const int deg = axis == 0 ? f.m : f.n;
-  const std::size_t st = axis == 0 ? std::size_t(f.n + 1) : 1, lines = axis == 0 ? std::size_t(f.n + 1) : std::size_t(f.m + 1);
+  const std::size_t st = axis == 0 ? std::size_t(f.n + 1) : 1,
+                    lines = axis == 0 ? std::size_t(f.n + 1) : std::size_t(f.m + 1);
   for (std::size_t l = 0; l < lines; ++l) {
     const std::size_t base = axis == 0 ? l : l * (f.n + 1);
     keep_left(r.first.c, base, st, deg, half);

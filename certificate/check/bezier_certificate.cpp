@@ -44,8 +44,8 @@ namespace eccd::check {
 
 namespace {
 
-const std::size_t kMaxRationalBits = 1024, kMaxNetBits = 1 << 16, kMaxPieces = 200000, kMaxBoxes = 2000000, kMaxChain = 64,
-                  kMaxTreeNodes = 2 * 60000 + 1;
+const std::size_t kMaxRationalBits = 1024, kMaxNetBits = 1 << 16, kMaxPieces = 200000, kMaxBoxes = 2000000,
+                  kMaxChain = 64, kMaxTreeNodes = 2 * 60000 + 1;
 const int kMaxNetDegree = 400, kMaxTreeDepth = 40;
 
 std::string q(const mpq_class& x) { return x.get_str(); }
@@ -107,7 +107,9 @@ struct BezierChecker {
   long tree_leaves = 0, tree_mpfi = 0, boxes_mpfi = 0;
 
   MI mk(const mpq_class& x) const { return MI(x, bits); }
-  Net2<MI> enclose(const Net2<mpq_class>& f) const { return converted<MI>(f, [&](const mpq_class& x) { return mk(x); }); }
+  Net2<MI> enclose(const Net2<mpq_class>& f) const {
+    return converted<MI>(f, [&](const mpq_class& x) { return mk(x); });
+  }
   static Net2<DI> restrict_di(const Net2<DI>& f, int axis, const mpq_class& a, const mpq_class& b) {
     return restrict_to(f, axis, a, b, [](const mpq_class& x) { return DI::of(x); });
   }
@@ -119,17 +121,23 @@ struct BezierChecker {
     const json& s = at(cert, "scene", "certificate");
     for (const char* k : {"dim", "a", "b"})
       if (at(s, k, "scene") != sc.doc.at(k))
-        reject("scene", std::string("the certificate's \"") + k + "\" differs from the scene file's: it is a certificate for another scene");
-    if (s.contains("parameters") != sc.doc.contains("parameters") || (s.contains("parameters") && s["parameters"] != sc.doc["parameters"]))
-      reject("scene", "the certificate's \"parameters\" differs from the scene file's: it is a certificate for another scene");
+        reject("scene", std::string("the certificate's \"") + k +
+                            "\" differs from the scene file's: it is a certificate for another scene");
+    if (s.contains("parameters") != sc.doc.contains("parameters") ||
+        (s.contains("parameters") && s["parameters"] != sc.doc["parameters"]))
+      reject("scene",
+             "the certificate's \"parameters\" differs from the scene file's: it is a certificate for another scene");
     if (sc.dim != 3 || sc.independent || sc.cycloidal)
       reject("scene", "a Bézier certificate is for 3D scenes with shared parameters and rational motions");
     for (const CheckObject* o : {&sc.a, &sc.b}) {
       const QPoly d = motion_determinant(o->M);
       if (d.zero() || sgn(d(0)) == 0 || sgn(d(1)) == 0 || roots_between(d, 0, 1) != 0)
-        reject("scene", std::string("det M(t) of object ") + (o == &sc.a ? "a" : "b") + " vanishes in [0, 1]: the motion is not invertible there");
+        reject("scene", std::string("det M(t) of object ") + (o == &sc.a ? "a" : "b") +
+                            " vanishes in [0, 1]: the motion is not invertible there");
     }
-    checked.push_back("scene: dim, a, b and parameters are the scene file's; 3D, shared parameter; det M(t) has no root in [0, 1] (Sturm)");
+    checked.push_back(
+        "scene: dim, a, b and parameters are the scene file's; 3D, shared parameter; det M(t) has no root in [0, 1] "
+        "(Sturm)");
   }
 
   // A stated shape: a positive multiple of the scene's Q.
@@ -154,16 +162,20 @@ struct BezierChecker {
   // A stated inverse motion: N(t) M(t) = c(t) I with c(t) a polynomial without a root in [0, 1]
   // (then N^T Q N = c^2 M^-T Q M^-1 is the moving solid times a positive factor at every t of [0, 1]).
   PolyMatrix stated_inverse(const json& j, const std::string& place, const PolyMatrix& M) {
-    if (!j.is_array() || j.size() != 4) reject("certificate format", place + ": expected a 4 x 4 matrix of polynomials");
+    if (!j.is_array() || j.size() != 4)
+      reject("certificate format", place + ": expected a 4 x 4 matrix of polynomials");
     PolyMatrix N(4, std::vector<QPoly>(4));
     for (std::size_t r = 0; r < 4; ++r) {
-      if (!j[r].is_array() || j[r].size() != 4) reject("certificate format", place + ": expected a 4 x 4 matrix of polynomials");
+      if (!j[r].is_array() || j[r].size() != 4)
+        reject("certificate format", place + ": expected a 4 x 4 matrix of polynomials");
       for (std::size_t c = 0; c < 4; ++c) {
         const json& p = j[r][c];
         const std::string pl = place + "[" + std::to_string(r) + "][" + std::to_string(c) + "]";
-        if (!p.is_array() || p.size() > 65) reject("certificate format", pl + ": expected power-basis coefficients (degree at most 64)");
+        if (!p.is_array() || p.size() > 65)
+          reject("certificate format", pl + ": expected power-basis coefficients (degree at most 64)");
         std::vector<mpq_class> cs;
-        for (std::size_t k = 0; k < p.size(); ++k) cs.push_back(rational(p[k], pl + "[" + std::to_string(k) + "]", kMaxNetBits));
+        for (std::size_t k = 0; k < p.size(); ++k)
+          cs.push_back(rational(p[k], pl + "[" + std::to_string(k) + "]", kMaxNetBits));
         N[r][c] = QPoly(std::move(cs));
       }
     }
@@ -176,7 +188,8 @@ struct BezierChecker {
           mpq_class x = 0;
           for (int l = 0; l < 4; ++l) x += n[r][l] * m[l][c];
           if ((r != c && sgn(x) != 0) || (r == c && c > 0 && x != cv.back()))
-            reject("net", place + " times the scene's M(t) is not a multiple of the identity at t = " + std::to_string(k));
+            reject("net",
+                   place + " times the scene's M(t) is not a multiple of the identity at t = " + std::to_string(k));
           if (r == c && c == 0) cv.push_back(x);
         }
     }
@@ -191,14 +204,16 @@ struct BezierChecker {
     const long long m = whole(at(net, "degree_u", "net"), "net.degree_u", 4, 4);
     const long long n = whole(at(net, "degree_t", "net"), "net.degree_t", 0, kMaxNetDegree);
     const json& co = at(net, "coefficients", "net");
-    if (!co.is_array() || co.size() != std::size_t(m + 1)) reject("certificate format", "net.coefficients: expected 5 rows (u = 0 .. 4)");
+    if (!co.is_array() || co.size() != std::size_t(m + 1))
+      reject("certificate format", "net.coefficients: expected 5 rows (u = 0 .. 4)");
     F.m = int(m);
     F.n = int(n);
     for (std::size_t i = 0; i < co.size(); ++i) {
       if (!co[i].is_array() || co[i].size() != std::size_t(n + 1))
         reject("certificate format", "net.coefficients[" + std::to_string(i) + "]: expected degree_t + 1 rationals");
       for (std::size_t j = 0; j < co[i].size(); ++j)
-        F.c.push_back(rational(co[i][j], "net.coefficients[" + std::to_string(i) + "][" + std::to_string(j) + "]", kMaxNetBits));
+        F.c.push_back(
+            rational(co[i][j], "net.coefficients[" + std::to_string(i) + "][" + std::to_string(j) + "]", kMaxNetBits));
     }
     const QMatrix Qa = stated_shape(at(net, "shape_a", "net"), "net.shape_a", sc.a.Q);
     const QMatrix Qb = stated_shape(at(net, "shape_b", "net"), "net.shape_b", sc.b.Q);
@@ -237,13 +252,15 @@ struct BezierChecker {
           v += term;
         }
         if (v * s4 != mpq_class(determinant(P)))
-          reject("net", "the net differs from det((u - 1) A(t) - u B(t)) at u = " + std::to_string(i) + ", t = " + std::to_string(k) +
-                            ": it is not F for this scene");
+          reject("net", "the net differs from det((u - 1) A(t) - u B(t)) at u = " + std::to_string(i) +
+                            ", t = " + std::to_string(k) + ": it is not F for this scene");
       }
     }
-    checked.push_back("net: Q_a, Q_b positive multiples of the scene's shapes; N_a M_a, N_b M_b = c(t) I with c free of roots in [0, 1] "
-                      "(Sturm); F(u, t) = det((u - 1) N_a^T Q_a N_a - u N_b^T Q_b N_b) (degree 4 x " + std::to_string(F.n) + ", equal at " +
-                      std::to_string(5 * (D + 1)) + " rational points)");
+    checked.push_back(
+        "net: Q_a, Q_b positive multiples of the scene's shapes; N_a M_a, N_b M_b = c(t) I with c free of roots in [0, "
+        "1] "
+        "(Sturm); F(u, t) = det((u - 1) N_a^T Q_a N_a - u N_b^T Q_b N_b) (degree 4 x " +
+        std::to_string(F.n) + ", equal at " + std::to_string(5 * (D + 1)) + " rational points)");
     Fu = derivative(F, 0);
     mF = enclose(F);
     dF = converted<DI>(F, [](const mpq_class& x) { return DI::of(x); });
@@ -265,7 +282,8 @@ struct BezierChecker {
       return r;
     }
     for (int i = 0; i <= r.m; ++i)
-      for (int j = 0; j <= r.n; ++j) r.c.push_back(k * (axis == 0 ? f.at(i + 1, j) - f.at(i, j) : f.at(i, j + 1) - f.at(i, j)));
+      for (int j = 0; j <= r.n; ++j)
+        r.c.push_back(k * (axis == 0 ? f.at(i + 1, j) - f.at(i, j) : f.at(i, j + 1) - f.at(i, j)));
     return r;
   }
   template <class T>
@@ -280,7 +298,8 @@ struct BezierChecker {
   // to X once; F(c), F_u(c) at the centre c (1/2, 1/2 of the box) and the hulls of the derivative nets on the
   // box (the convex hull property) enclose f(c) and the Jacobian J(X) = [[F_u, F_t], [F_uu, F_ut]] on X.
   template <class T, class Make>
-  int krawczyk_in(const Net2<T>& Fn, const std::array<mpq_class, 4>& X, std::array<mpq_class, 4>& K, Make&& make) const {
+  int krawczyk_in(const Net2<T>& Fn, const std::array<mpq_class, 4>& X, std::array<mpq_class, 4>& K,
+                  Make&& make) const {
     if (X[0] >= 1 || X[2] >= 1) return -1;
     const Net2<T> G = restrict_to(restrict_to(Fn, 1, X[2], X[3], make), 0, X[0], X[1], make);
     const mpq_class su = X[1] - X[0], st = X[3] - X[2];
@@ -337,9 +356,10 @@ struct BezierChecker {
     const std::string& s;
     std::size_t pos = 0;
   };
-  void exclusion(Tree& tr, const Net2<DI>& f, const Net2<DI>& fu, const mpq_class& u0, const mpq_class& u1, const mpq_class& t0,
-                 const mpq_class& t1, int depth, const mpq_class& ku0, const mpq_class& ku1, std::optional<Net2<MI>>& strip_f,
-                 std::optional<Net2<MI>>& strip_fu, const mpq_class& lo, const mpq_class& hi, const std::string& claim) {
+  void exclusion(Tree& tr, const Net2<DI>& f, const Net2<DI>& fu, const mpq_class& u0, const mpq_class& u1,
+                 const mpq_class& t0, const mpq_class& t1, int depth, const mpq_class& ku0, const mpq_class& ku1,
+                 std::optional<Net2<MI>>& strip_f, std::optional<Net2<MI>>& strip_fu, const mpq_class& lo,
+                 const mpq_class& hi, const std::string& claim) {
     if (tr.pos >= tr.s.size()) reject(claim, "the exclusion tree ends early: part of [0, 1] x the run is not covered");
     const char ch = tr.s[tr.pos++];
     if (ch == '0') {
@@ -350,13 +370,15 @@ struct BezierChecker {
       if (!strip_f) strip_f = restrict_mi(mF, 1, lo, hi);
       if (!strip_fu) strip_fu = restrict_mi(mFu, 1, lo, hi);
       const Net2<MI> g = restrict_mi(restrict_mi(*strip_f, 1, (t0 - lo) / (hi - lo), (t1 - lo) / (hi - lo)), 0, u0, u1);
-      const Net2<MI> gu = restrict_mi(restrict_mi(*strip_fu, 1, (t0 - lo) / (hi - lo), (t1 - lo) / (hi - lo)), 0, u0, u1);
+      const Net2<MI> gu =
+          restrict_mi(restrict_mi(*strip_fu, 1, (t0 - lo) / (hi - lo), (t1 - lo) / (hi - lo)), 0, u0, u1);
       if (g.strict_sign() != 0 || gu.strict_sign() != 0) return;
       reject(claim, "the exclusion leaf u in [" + q(u0) + ", " + q(u1) + "], t in [" + q(t0) + ", " + q(t1) +
                         "]: neither F nor F_u is of one proved sign there (another zero of (F, F_u) is not excluded)");
     }
     if (ch != '1') reject("certificate format", claim + ": the exclusion tree must be a string of '0' and '1'");
-    if (depth >= kMaxTreeDepth) reject("certificate format", claim + ": the exclusion tree is deeper than " + std::to_string(kMaxTreeDepth));
+    if (depth >= kMaxTreeDepth)
+      reject("certificate format", claim + ": the exclusion tree is deeper than " + std::to_string(kMaxTreeDepth));
     const DI half(0.5, 0.5);
     const mpq_class um = (u0 + u1) / 2, tm = (t0 + t1) / 2;
     const bool split_t = depth % 2 == 1;
@@ -384,11 +406,12 @@ struct BezierChecker {
     return b;
   }
 
-  void end_piece(const json& it, const std::string& name, const std::string& claim, const mpq_class& lo, const mpq_class& hi,
-                 std::vector<BNode>& seq, long& excl) {
+  void end_piece(const json& it, const std::string& name, const std::string& claim, const mpq_class& lo,
+                 const mpq_class& hi, std::vector<BNode>& seq, long& excl) {
     const json& boxes = at(it, "boxes", name);
     if (!boxes.is_array() || boxes.empty() || boxes.size() > kMaxChain)
-      reject("certificate format", name + ": the Krawczyk chain (boxes) must list 1 to " + std::to_string(kMaxChain) + " boxes");
+      reject("certificate format",
+             name + ": the Krawczyk chain (boxes) must list 1 to " + std::to_string(kMaxChain) + " boxes");
     std::vector<std::array<mpq_class, 4>> Y;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       Y.push_back(box4(boxes[i], name + " box " + std::to_string(i + 1)));
@@ -412,25 +435,31 @@ struct BezierChecker {
     if (X[2] > lo || X[3] < hi) reject(claim, "the Krawczyk box's t-range does not cover the run");
     if (sgn(X[0]) < 0 || X[1] > 1) reject(claim, "the Krawczyk box's u-range is not inside [0, 1]");
     std::array<mpq_class, 4> K;
-    if (krawczyk(X, K, 1) != 1) reject(claim, "Krawczyk's K(X) is not inside the interior of X: the box is not proved to hold one zero");
+    if (krawczyk(X, K, 1) != 1)
+      reject(claim, "Krawczyk's K(X) is not inside the interior of X: the box is not proved to hold one zero");
     for (std::size_t i = 0; i + 1 < Y.size(); ++i) {
       auto keeps = [&](const std::array<mpq_class, 4>& K2) {
         for (int v = 0; v < 2; ++v)
-          if (Y[i + 1][2 * v] > std::max(Y[i][2 * v], K2[2 * v]) || Y[i + 1][2 * v + 1] < std::min(Y[i][2 * v + 1], K2[2 * v + 1])) return false;
+          if (Y[i + 1][2 * v] > std::max(Y[i][2 * v], K2[2 * v]) ||
+              Y[i + 1][2 * v + 1] < std::min(Y[i][2 * v + 1], K2[2 * v + 1]))
+            return false;
         return true;
       };
       std::array<mpq_class, 4> K2 = K;
       if (i > 0 && krawczyk_in(dF, Y[i], K2, [](const mpq_class& x) { return DI::of(x); }) < 0) K2 = {1, -1, 1, -1};
       if (K2[0] > K2[1] || !keeps(K2)) {  // in MPFI when doubles do not show it
-        if (krawczyk_in(mF, Y[i], K2, [&](const mpq_class& x) { return mk(x); }) < 0) reject(claim, "K(Y_" + std::to_string(i) + ") is not computable");
+        if (krawczyk_in(mF, Y[i], K2, [&](const mpq_class& x) { return mk(x); }) < 0)
+          reject(claim, "K(Y_" + std::to_string(i) + ") is not computable");
         if (!keeps(K2))
-          reject(claim, "chain box " + std::to_string(i + 1) + " does not contain Y_" + std::to_string(i) + " ∩ K(Y_" + std::to_string(i) + ")");
+          reject(claim, "chain box " + std::to_string(i + 1) + " does not contain Y_" + std::to_string(i) + " ∩ K(Y_" +
+                            std::to_string(i) + ")");
       }
     }
     // exclusion by the certificate's tree
     const json& ex = at(it, "exclusion", name);
     if (!ex.is_string() || ex.get_ref<const std::string&>().size() > kMaxTreeNodes)
-      reject("certificate format", name + ".exclusion: expected a string of at most " + std::to_string(kMaxTreeNodes) + " '0'/'1'");
+      reject("certificate format",
+             name + ".exclusion: expected a string of at most " + std::to_string(kMaxTreeNodes) + " '0'/'1'");
     Tree tr{ex.get_ref<const std::string&>()};
     const long before = tree_leaves;
     exclusion(tr, run_d, run_ud, 0, 1, lo, hi, 0, X[0], X[1], run, run_u, lo, hi, claim);
@@ -439,7 +468,8 @@ struct BezierChecker {
     // the bracket: inside the run, holding the run ∩ the last chain box's t-range
     const json& br = at(it, "bracket", name);
     if (!br.is_array() || br.size() != 2) reject("certificate format", name + ".bracket: expected [lo, hi]");
-    const mpq_class b0 = rational(br[0], name + ".bracket[0]", kMaxRationalBits), b1 = rational(br[1], name + ".bracket[1]", kMaxRationalBits);
+    const mpq_class b0 = rational(br[0], name + ".bracket[0]", kMaxRationalBits),
+                    b1 = rational(br[1], name + ".bracket[1]", kMaxRationalBits);
     const mpq_class need_lo = std::max(lo, Y.back()[2]), need_hi = std::min(hi, Y.back()[3]);
     if (need_lo > need_hi) reject(claim, "the last chain box misses the run");
     if (b0 > need_lo || b1 < need_hi || b0 < lo || b1 > hi || b0 > b1)
@@ -463,14 +493,16 @@ struct BezierChecker {
 
   void run() {
     const json& fmt = at(cert, "format", "certificate");
-    if (fmt != "eccd-bezier-certificate/2") reject("certificate format", "format: expected \"eccd-bezier-certificate/2\", got " + shown(fmt));
+    if (fmt != "eccd-bezier-certificate/2")
+      reject("certificate format", "format: expected \"eccd-bezier-certificate/2\", got " + shown(fmt));
     checked.push_back("certificate format: eccd-bezier-certificate/2");
     scene_claim();
     bits = int(whole(at(cert, "precision_bits", "certificate"), "precision_bits", 64, 1024));
     net_claim();
     const json& items = at(cert, "pieces", "certificate");
     if (!items.is_array() || items.empty() || items.size() > kMaxPieces)
-      reject("certificate format", "pieces: expected a non-empty list of at most " + std::to_string(kMaxPieces) + " pieces");
+      reject("certificate format",
+             "pieces: expected a non-empty list of at most " + std::to_string(kMaxPieces) + " pieces");
     mpq_class cursor = 0;
     std::size_t nboxes = 0, n_in = 0, n_out = 0, n_end = 0;
     long excl = 0;
@@ -480,10 +512,14 @@ struct BezierChecker {
       const json& it = items[k];
       const std::string name = "piece " + std::to_string(k + 1);
       const json& kind = at(it, "kind", name);
-      if (kind != "in" && kind != "out" && kind != "end") reject("certificate format", name + ": kind must be \"in\", \"out\" or \"end\"");
-      const mpq_class lo = rational(at(it, "lo", name), name + ".lo", kMaxRationalBits), hi = rational(at(it, "hi", name), name + ".hi", kMaxRationalBits);
+      if (kind != "in" && kind != "out" && kind != "end")
+        reject("certificate format", name + ": kind must be \"in\", \"out\" or \"end\"");
+      const mpq_class lo = rational(at(it, "lo", name), name + ".lo", kMaxRationalBits),
+                      hi = rational(at(it, "hi", name), name + ".hi", kMaxRationalBits);
       const std::string claim = name + " (" + kind.get<std::string>() + ", t in [" + q(lo) + ", " + q(hi) + "])";
-      if (lo != cursor) reject("coverage", claim + ": starts at " + q(lo) + ", the previous piece ends at " + q(cursor) + " (a gap or an overlap)");
+      if (lo != cursor)
+        reject("coverage",
+               claim + ": starts at " + q(lo) + ", the previous piece ends at " + q(cursor) + " (a gap or an overlap)");
       if (!(lo < hi) || hi > 1) reject("coverage", claim + ": not a range inside [0, 1]");
       cursor = hi;
       kinds.push_back(kind.get<std::string>());
@@ -497,7 +533,8 @@ struct BezierChecker {
       nboxes += boxes.size();
       if (nboxes > kMaxBoxes) reject("certificate format", "pieces: more than " + std::to_string(kMaxBoxes) + " boxes");
       const bool in = kind == "in";
-      // in intervals of doubles from the net in doubles; MPFI (the strip restricted at precision_bits) only where they do not decide
+      // in intervals of doubles from the net in doubles; MPFI (the strip restricted at precision_bits) only where they
+      // do not decide
       const Net2<DI> strip_d = restrict_di(dF, 1, lo, hi);
       std::optional<Net2<MI>> strip_m;
       std::map<std::pair<mpq_class, mpq_class>, Net2<DI>> by_t_d;
@@ -506,7 +543,8 @@ struct BezierChecker {
       for (std::size_t i = 0; i < boxes.size(); ++i) {
         const auto b = box4(boxes[i], name + " box " + std::to_string(i + 1));
         if (!(0 <= b[0] && b[0] < b[1] && b[1] <= 1 && lo <= b[2] && b[2] < b[3] && b[3] <= hi))
-          reject("certificate format", name + " box " + std::to_string(i + 1) + ": not [u0, u1, t0, t1] inside [0, 1] x [lo, hi]");
+          reject("certificate format",
+                 name + " box " + std::to_string(i + 1) + ": not [u0, u1, t0, t1] inside [0, 1] x [lo, hi]");
         const mpq_class t0 = (b[2] - lo) / (hi - lo), t1 = (b[3] - lo) / (hi - lo);
         // in intervals of doubles first (widened outwards: a proof too), in MPFI when they do not decide
         auto cd = by_t_d.find({t0, t1});
@@ -521,8 +559,8 @@ struct BezierChecker {
         if (cached == by_t.end()) cached = by_t.emplace(std::make_pair(t0, t1), restrict_mi(*strip_m, 1, t0, t1)).first;
         const Net2<MI> g = restrict_mi(cached->second, 0, b[0], b[1]);
         if (g.strict_sign() != (in ? -1 : 1))
-          reject(claim, "box " + std::to_string(i + 1) + " (u in [" + q(b[0]) + ", " + q(b[1]) + "], t in [" + q(b[2]) + ", " + q(b[3]) +
-                            "]): its control points are not all " + (in ? "< 0" : "> 0"));
+          reject(claim, "box " + std::to_string(i + 1) + " (u in [" + q(b[0]) + ", " + q(b[1]) + "], t in [" + q(b[2]) +
+                            ", " + q(b[3]) + "]): its control points are not all " + (in ? "< 0" : "> 0"));
         bx.push_back(b);
       }
       auto covers = [](std::vector<std::pair<mpq_class, mpq_class>> r, const mpq_class& a, const mpq_class& b) {
@@ -540,21 +578,25 @@ struct BezierChecker {
         for (const auto& b : bx) groups[{b[2], b[3]}].push_back({b[0], b[1]});
         for (const auto& [t, us] : groups) {
           if (auto c = covers(us, 0, 1))
-            reject(claim, "the boxes at t in [" + q(t.first) + ", " + q(t.second) + "]: their u-ranges do not cover [0, 1] (covered up to " + q(*c) + ")");
+            reject(claim, "the boxes at t in [" + q(t.first) + ", " + q(t.second) +
+                              "]: their u-ranges do not cover [0, 1] (covered up to " + q(*c) + ")");
           tr.push_back(t);
         }
       } else {
         for (const auto& b : bx) tr.push_back({b[2], b[3]});
       }
-      if (auto c = covers(tr, lo, hi)) reject(claim, "the boxes' t-ranges do not cover the piece (covered up to " + q(*c) + ")");
+      if (auto c = covers(tr, lo, hi))
+        reject(claim, "the boxes' t-ranges do not cover the piece (covered up to " + q(*c) + ")");
       ++(in ? n_in : n_out);
     }
     if (cursor != 1) reject("coverage", "the pieces end at t = " + q(cursor) + ", not 1");
     for (std::size_t k = 0; k < kinds.size(); ++k)
-      if (kinds[k] == "end" && (k == 0 || k + 1 == kinds.size() || kinds[k - 1] == "end" || kinds[k + 1] == "end" || kinds[k - 1] == kinds[k + 1]))
+      if (kinds[k] == "end" && (k == 0 || k + 1 == kinds.size() || kinds[k - 1] == "end" || kinds[k + 1] == "end" ||
+                                kinds[k - 1] == kinds[k + 1]))
         reject("coverage", "piece " + std::to_string(k + 1) + ": an end must lie between an in-piece and an out-piece");
-    checked.push_back("pieces: " + std::to_string(n_in) + " in and " + std::to_string(n_out) + " out (" + std::to_string(nboxes) +
-                      " boxes, signs proved, " + std::to_string(boxes_mpfi) + " in MPFI) and " + std::to_string(n_end) + " ends (faces, Krawczyk, exclusion tree of " +
+    checked.push_back("pieces: " + std::to_string(n_in) + " in and " + std::to_string(n_out) + " out (" +
+                      std::to_string(nboxes) + " boxes, signs proved, " + std::to_string(boxes_mpfi) +
+                      " in MPFI) and " + std::to_string(n_end) + " ends (faces, Krawczyk, exclusion tree of " +
                       std::to_string(excl) + " leaves, " + std::to_string(tree_mpfi) + " in MPFI) cover [0, 1]");
     // the timeline: 0, cell, end, cell, ..., 1; cells alternate between overlapping (in) and separate (out)
     std::vector<BNode> seq;

@@ -49,7 +49,8 @@ inline mpq_class rational(const json& j, const std::string& place, std::size_t m
   if (!j.is_string()) reject("certificate format", place + ": expected a rational \"p/q\", got " + shown(j));
   const std::string& s = j.get_ref<const std::string&>();
   const std::size_t max_chars = 2 * (max_bits * 30103 / 100000 + 2) + 2;
-  if (s.size() > max_chars) reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) + " bits");
+  if (s.size() > max_chars)
+    reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) + " bits");
   std::size_t i = s.size() && s[0] == '-' ? 1 : 0;
   const std::size_t slash = s.find('/');
   auto digits = [&](std::size_t a, std::size_t b) {
@@ -77,15 +78,20 @@ inline mpq_class rational(const json& j, const std::string& place, std::size_t m
 inline long long whole(const json& j, const std::string& place, long long lo, long long hi) {
   long long v = 0;
   bool ok = j.is_number_integer();
-  if (ok && j.is_number_unsigned()) ok = j.get<std::uint64_t>() <= std::uint64_t(std::max(hi, 0LL)), v = ok ? (long long)j.get<std::uint64_t>() : 0;
-  else if (ok) v = j.get<std::int64_t>();
+  if (ok && j.is_number_unsigned())
+    ok = j.get<std::uint64_t>() <= std::uint64_t(std::max(hi, 0LL)), v = ok ? (long long)j.get<std::uint64_t>() : 0;
+  else if (ok)
+    v = j.get<std::int64_t>();
   if (!ok || v < lo || v > hi)
-    reject("certificate format", place + ": expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + shown(j));
+    reject("certificate format", place + ": expected a whole number from " + std::to_string(lo) + " to " +
+                                     std::to_string(hi) + ", got " + shown(j));
   return v;
 }
 
 enum class St { separate, touching, overlapping };
-inline const char* name(St s) { return s == St::separate ? "separate" : s == St::touching ? "touching" : "overlapping"; }
+inline const char* name(St s) {
+  return s == St::separate ? "separate" : s == St::touching ? "touching" : "overlapping";
+}
 inline St status_named(const json& j, const std::string& place) {
   for (St s : {St::separate, St::touching, St::overlapping})
     if (j.is_string() && j.get<std::string>() == name(s)) return s;
@@ -112,7 +118,10 @@ inline bool read_decimal(const std::string& s, std::size_t max_chars, mpq_class&
   long places = 0;
   bool dot = false;
   for (; i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || (s[i] == '.' && !dot)); ++i) {
-    if (s[i] == '.') { dot = true; continue; }
+    if (s[i] == '.') {
+      dot = true;
+      continue;
+    }
     digits += s[i];
     if (dot) ++places;
   }
@@ -141,7 +150,8 @@ inline bool read_decimal(const std::string& s, std::size_t max_chars, mpq_class&
 }
 
 // An approx lies in its bracket; for a point [r, r], r rounded to its own last digit.
-inline void check_approx(const json& a, const mpq_class& lo, const mpq_class& hi, const std::string& claim, const std::string& place, std::size_t max_chars) {
+inline void check_approx(const json& a, const mpq_class& lo, const mpq_class& hi, const std::string& claim,
+                         const std::string& place, std::size_t max_chars) {
   mpq_class v, u;
   if (!a.is_string() || !read_decimal(a.get<std::string>(), max_chars, v, u))
     reject(claim, place + ": approx must be a decimal string, got " + shown(a));
@@ -149,14 +159,17 @@ inline void check_approx(const json& a, const mpq_class& lo, const mpq_class& hi
   if (!ok) reject(claim, place + ": approx " + shown(a) + " lies outside its bracket " + bracket_text(lo, hi));
 }
 
-inline void compare_answer(const json& cert, const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& intervals,
-                    const std::vector<std::pair<mpq_class, mpq_class>>& contacts,
-                    const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& contact_intervals,
-                    std::size_t max_bits, std::size_t approx_chars, std::vector<std::string>& checked) {
+inline void compare_answer(
+    const json& cert,
+    const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& intervals,
+    const std::vector<std::pair<mpq_class, mpq_class>>& contacts,
+    const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& contact_intervals,
+    std::size_t max_bits, std::size_t approx_chars, std::vector<std::string>& checked) {
   const json& a = at(cert, "answer", "certificate");
   if (!a.is_object()) reject("certificate format", "answer: expected an object");
   for (auto it = a.begin(); it != a.end(); ++it)
-    if (it.key() != "collides" && it.key() != "intervals" && it.key() != "first_contact" && it.key() != "contacts" && it.key() != "contact_intervals")
+    if (it.key() != "collides" && it.key() != "intervals" && it.key() != "first_contact" && it.key() != "contacts" &&
+        it.key() != "contact_intervals")
       reject("certificate format", "answer." + it.key() + ": not a key of the answer");
   const std::size_t chars = approx_chars;
   auto inst = [&](const json& j, const std::string& place, const std::pair<mpq_class, mpq_class>& want) {
@@ -164,15 +177,21 @@ inline void compare_answer(const json& cert, const std::vector<std::pair<std::pa
     for (auto it = j.begin(); it != j.end(); ++it)  // the answer is read back as an answer: nothing else may ride along
       if (it.key() != "approx" && it.key() != "lo" && it.key() != "hi")
         reject("certificate format", place + "." + it.key() + ": not a key of an instant (approx, lo, hi)");
-    const mpq_class lo = rational(at(j, "lo", place), place + ".lo", max_bits), hi = rational(at(j, "hi", place), place + ".hi", max_bits);
+    const mpq_class lo = rational(at(j, "lo", place), place + ".lo", max_bits),
+                    hi = rational(at(j, "hi", place), place + ".hi", max_bits);
     if (lo != want.first || hi != want.second)
-      reject("answer", place + ": the instant " + bracket_text(lo, hi) + " differs from the checked timeline's " + bracket_text(want.first, want.second));
+      reject("answer", place + ": the instant " + bracket_text(lo, hi) + " differs from the checked timeline's " +
+                           bracket_text(want.first, want.second));
     check_approx(at(j, "approx", place), lo, hi, "answer", place + ".approx", chars);
   };
   const json& col = at(a, "collides", "answer");
   const bool collides = !intervals.empty();
-  if (col != json(collides)) reject("answer", std::string("answer.collides is ") + shown(col) + " but the checked timeline proves " + (collides ? "a collision" : "there is none"));
-  auto pairs = [&](const char* key, const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& want, bool optional) {
+  if (col != json(collides))
+    reject("answer", std::string("answer.collides is ") + shown(col) + " but the checked timeline proves " +
+                         (collides ? "a collision" : "there is none"));
+  auto pairs = [&](const char* key,
+                   const std::vector<std::pair<std::pair<mpq_class, mpq_class>, std::pair<mpq_class, mpq_class>>>& want,
+                   bool optional) {
     const std::string place = std::string("answer.") + key;
     if (optional && !a.contains(key)) {
       if (!want.empty())
@@ -183,8 +202,11 @@ inline void compare_answer(const json& cert, const std::vector<std::pair<std::pa
     const json& l = at(a, key, "answer");
     if (!l.is_array()) reject("certificate format", place + ": expected an array");
     if (l.size() != want.size())
-      reject("answer", "the checked timeline gives " + std::to_string(want.size()) + " " + key + ", the certificate " + std::to_string(l.size()) +
-                           (std::string(key) == "contact_intervals" && l.size() < want.size() ? ": it would pass a continuous touch off as an overlap" : ""));
+      reject("answer", "the checked timeline gives " + std::to_string(want.size()) + " " + key + ", the certificate " +
+                           std::to_string(l.size()) +
+                           (std::string(key) == "contact_intervals" && l.size() < want.size()
+                                ? ": it would pass a continuous touch off as an overlap"
+                                : ""));
     for (std::size_t i = 0; i < l.size(); ++i) {
       const std::string p = place + "[" + std::to_string(i) + "]";
       if (!l[i].is_array() || l[i].size() != 2) reject("certificate format", p + ": expected [start, end]");
@@ -195,23 +217,30 @@ inline void compare_answer(const json& cert, const std::vector<std::pair<std::pa
   pairs("intervals", intervals, false);
   pairs("contact_intervals", contact_intervals, true);
   const json& fc = at(a, "first_contact", "answer");
-  if (intervals.empty() != fc.is_null()) reject("answer", "first_contact must be " + std::string(intervals.empty() ? "null" : "the start of the first interval"));
+  if (intervals.empty() != fc.is_null())
+    reject("answer",
+           "first_contact must be " + std::string(intervals.empty() ? "null" : "the start of the first interval"));
   if (!intervals.empty()) inst(fc, "answer.first_contact", intervals.front().first);
   const json& cs = at(a, "contacts", "answer");
   if (!cs.is_array()) reject("certificate format", "answer.contacts: expected an array");
-  if (cs.size() != contacts.size()) reject("answer", "the checked timeline gives " + std::to_string(contacts.size()) + " contact(s), the certificate " + std::to_string(cs.size()));
+  if (cs.size() != contacts.size())
+    reject("answer", "the checked timeline gives " + std::to_string(contacts.size()) + " contact(s), the certificate " +
+                         std::to_string(cs.size()));
   for (std::size_t i = 0; i < cs.size(); ++i) inst(cs[i], "answer.contacts[" + std::to_string(i) + "]", contacts[i]);
   checked.push_back("answer: assembled by the checker from the checked timeline, equal to the certificate's");
 }
 
 template <class N>
-void answer_claim(const json& cert, const std::vector<N>& seq, std::size_t max_bits, std::size_t approx_chars, std::vector<std::string>& checked) {
+void answer_claim(const json& cert, const std::vector<N>& seq, std::size_t max_bits, std::size_t approx_chars,
+                  std::vector<std::string>& checked) {
   // Assemble: runs of nodes in collision (touching, overlapping), contacts, contact intervals.
   auto in_c = [&](std::size_t k) { return seq[k].status != St::separate; };
   auto touching_cell = [&](std::size_t k) { return k < seq.size() && seq[k].cell && seq[k].status == St::touching; };
   for (std::size_t k = 1; k < seq.size(); k += 2)
     if (in_c(k) && (!in_c(k - 1) || !in_c(k + 1)))
-      reject("timeline", seq[k].name + " is in collision but a neighbouring instant is separate: the collision set would not be closed");
+      reject("timeline",
+             seq[k].name +
+                 " is in collision but a neighbouring instant is separate: the collision set would not be closed");
   using Br = std::pair<mpq_class, mpq_class>;
   std::vector<std::pair<Br, Br>> intervals, contact_intervals;
   std::vector<Br> contacts;
@@ -223,7 +252,8 @@ void answer_claim(const json& cert, const std::vector<N>& seq, std::size_t max_b
     k = e;
   }
   for (std::size_t k = 0; k < seq.size(); k += 2)
-    if (seq[k].status == St::touching && !touching_cell(k + 1) && !(k > 0 && touching_cell(k - 1))) contacts.push_back({seq[k].lo, seq[k].hi});
+    if (seq[k].status == St::touching && !touching_cell(k + 1) && !(k > 0 && touching_cell(k - 1)))
+      contacts.push_back({seq[k].lo, seq[k].hi});
   for (std::size_t k = 0; k < seq.size(); ++k) {
     if (!in_c(k)) continue;
     std::size_t e = k;
@@ -233,6 +263,5 @@ void answer_claim(const json& cert, const std::vector<N>& seq, std::size_t max_b
   }
   compare_answer(cert, intervals, contacts, contact_intervals, max_bits, approx_chars, checked);
 }
-
 
 }  // namespace eccd::check

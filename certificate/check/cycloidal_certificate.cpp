@@ -96,7 +96,10 @@ R trace_product(const M3<R>& x, const M3<R>& y) {
   bool first = true;
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k) {
-      if (first) { first = false; continue; }
+      if (first) {
+        first = false;
+        continue;
+      }
       t = t + x[i][k] * y[k][i];
     }
   return t;
@@ -137,7 +140,8 @@ struct CycloidalChecker {
       r.y0 = o.cycloid[4];
       r.y1 = o.cycloid[5];
     } else if (o.motion_type != "static") {
-      reject("scene", std::string("object ") + which + " has a " + o.motion_type + " motion beside a cycloidal one: only static and cycloidal motions combine");
+      reject("scene", std::string("object ") + which + " has a " + o.motion_type +
+                          " motion beside a cycloidal one: only static and cycloidal motions combine");
     }
     return r;
   }
@@ -159,7 +163,8 @@ struct CycloidalChecker {
     M3<R> QN, A;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        QN[i][j] = cy.konst(o.Q[i][0], tag) * N[0][j] + cy.konst(o.Q[i][1], tag) * N[1][j] + cy.konst(o.Q[i][2], tag) * N[2][j];
+        QN[i][j] = cy.konst(o.Q[i][0], tag) * N[0][j] + cy.konst(o.Q[i][1], tag) * N[1][j] +
+                   cy.konst(o.Q[i][2], tag) * N[2][j];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) A[i][j] = N[0][i] * QN[0][j] + N[1][i] * QN[1][j] + N[2][i] * QN[2][j];
     return A;
@@ -174,7 +179,8 @@ struct CycloidalChecker {
   template <class R>
   static R disc(const std::array<R, 4>& g) {
     const R &a = g[3], &b = g[2], &c = g[1], &d = g[0];
-    return b * b * c * c - small(4, b * b * b * d) - small(4, a * c * c * c) - small(27, a * a * d * d) + small(18, a * b * c * d);
+    return b * b * c * c - small(4, b * b * b * d) - small(4, a * c * c * c) - small(27, a * a * d * d) +
+           small(18, a * b * c * d);
   }
   template <class R>
   static R small(int n, const R& x) {  // n x by additions (exact)
@@ -191,8 +197,13 @@ struct CycloidalChecker {
     const std::array<DMI, 4> g = g_at(t);
     // Δ(g) in forward mode
     const DMI &A = g[3], &B = g[2], &C = g[1], &D = g[0];
-    auto sm = [](int n, const DMI& x) { DMI r = x; for (int i = 1; i < n; ++i) r = r + x; return r; };
-    const DMI d = B * B * C * C - sm(4, B * B * B * D) - sm(4, A * C * C * C) - sm(27, A * A * D * D) + sm(18, A * B * C * D);
+    auto sm = [](int n, const DMI& x) {
+      DMI r = x;
+      for (int i = 1; i < n; ++i) r = r + x;
+      return r;
+    };
+    const DMI d =
+        B * B * C * C - sm(4, B * B * B * D) - sm(4, A * C * C * C) - sm(27, A * A * D * D) + sm(18, A * B * C * D);
     return d.d;
   }
   MI mean_value(const mpq_class& a, const mpq_class& b) const {
@@ -204,7 +215,8 @@ struct CycloidalChecker {
     return l < h ? h : l;
   }
   mpq_class magnitude_upper(const mpq_class& a, const mpq_class& b) const {
-    if (!delta(range(a, b)).finite() || !mean_value(a, b).finite()) reject("instants", "no finite enclosure of Delta on [" + a.get_str() + ", " + b.get_str() + "]");
+    if (!delta(range(a, b)).finite() || !mean_value(a, b).finite())
+      reject("instants", "no finite enclosure of Delta on [" + a.get_str() + ", " + b.get_str() + "]");
     const mpq_class x = magnitude(delta(range(a, b))), y = magnitude(mean_value(a, b));
     return x < y ? x : y;
   }
@@ -240,17 +252,21 @@ struct CycloidalChecker {
 
   void run() {
     const json& fmt = at(cert, "format", "certificate");
-    if (fmt != "eccd-cycloidal-certificate/2") reject("certificate format", "format: expected \"eccd-cycloidal-certificate/2\", got " + shown(fmt));
+    if (fmt != "eccd-cycloidal-certificate/2")
+      reject("certificate format", "format: expected \"eccd-cycloidal-certificate/2\", got " + shown(fmt));
     checked.push_back("certificate format: eccd-cycloidal-certificate/2");
     const json& s = at(cert, "scene", "certificate");
     for (const char* k : {"dim", "a", "b"})
       if (at(s, k, "scene") != sc.doc.at(k))
-        reject("scene", std::string("the certificate's \"") + k + "\" differs from the scene file's: it is a certificate for another scene");
-    if (sc.dim != 2 || !sc.cycloidal || sc.independent) reject("scene", "a cycloidal certificate is for 2D scenes with a cycloidal motion and a shared parameter");
+        reject("scene", std::string("the certificate's \"") + k +
+                            "\" differs from the scene file's: it is a certificate for another scene");
+    if (sc.dim != 2 || !sc.cycloidal || sc.independent)
+      reject("scene", "a cycloidal certificate is for 2D scenes with a cycloidal motion and a shared parameter");
     oa = object(sc.a, "a");
     ob = object(sc.b, "b");
     checked.push_back("scene: dim, a and b are the scene file's; 2D, static and cycloidal motions");
-    cy.bits = int(whole(at(at(cert, "delta", "certificate"), "precision_bits", "delta"), "delta.precision_bits", 64, 1024));
+    cy.bits =
+        int(whole(at(at(cert, "delta", "certificate"), "precision_bits", "delta"), "delta.precision_bits", 64, 1024));
     cy.pi = cy.mk(0);
     mpfi_set_prec(cy.pi.get(), cy.bits);
     mpfi_const_pi(cy.pi.get());
@@ -258,7 +274,8 @@ struct CycloidalChecker {
     // Timeline
     const json& tl = at(cert, "timeline", "certificate");
     if (!tl.is_array() || tl.size() < 3 || tl.size() % 2 == 0 || tl.size() > kMaxTimeline)
-      reject("timeline", "expected instant, cell, instant, ..., instant (an odd number >= 3 of entries, at most " + std::to_string(kMaxTimeline) + ")");
+      reject("timeline", "expected instant, cell, instant, ..., instant (an odd number >= 3 of entries, at most " +
+                             std::to_string(kMaxTimeline) + ")");
     const std::size_t approx_chars = kMaxRationalBits * 30103 / 100000 + 64;
     std::vector<Node> nodes;
     for (std::size_t k = 0; k < tl.size(); ++k) {
@@ -294,15 +311,20 @@ struct CycloidalChecker {
       nodes.push_back(n);
     }
     const Node &first = nodes.front(), &last = nodes.back();
-    if (first.lo != 0 || (first.kind == "end" && first.hi != 0)) reject("timeline", "the first instant must start at 0 (an end [0, 0], or a stretch from 0)");
-    if (last.hi != 1 || (last.kind == "end" && last.lo != 1)) reject("timeline", "the last instant must end at 1 (an end [1, 1], or a stretch to 1)");
+    if (first.lo != 0 || (first.kind == "end" && first.hi != 0))
+      reject("timeline", "the first instant must start at 0 (an end [0, 0], or a stretch from 0)");
+    if (last.hi != 1 || (last.kind == "end" && last.lo != 1))
+      reject("timeline", "the last instant must end at 1 (an end [1, 1], or a stretch to 1)");
     for (std::size_t k = 0; k < nodes.size(); k += 2)
-      if (nodes[k].kind == "end" && k != 0 && k + 1 != nodes.size()) reject(nodes[k].name, "an interior instant cannot be of kind \"end\"");
+      if (nodes[k].kind == "end" && k != 0 && k + 1 != nodes.size())
+        reject(nodes[k].name, "an interior instant cannot be of kind \"end\"");
     for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
       if (!(nodes[k].hi < nodes[k + 1].lo))
         reject(nodes[k].cell ? nodes[k].name : nodes[k + 1].name,
-               "each cell sample must lie strictly between the brackets of its two instants, and brackets must be disjoint");
-    checked.push_back("timeline: " + std::to_string(nodes.size() / 2 + 1) + " instants and " + std::to_string(nodes.size() / 2) + " cells in order, brackets disjoint");
+               "each cell sample must lie strictly between the brackets of its two instants, and brackets must be "
+               "disjoint");
+    checked.push_back("timeline: " + std::to_string(nodes.size() / 2 + 1) + " instants and " +
+                      std::to_string(nodes.size() / 2) + " cells in order, brackets disjoint");
 
     // An incomplete certificate claims no more than it proves.
     std::size_t undecided = 0;
@@ -310,7 +332,8 @@ struct CycloidalChecker {
     const json& aj = at(cert, "answer", "certificate");
     if (undecided && aj.is_object() && aj.contains("collides") && aj["collides"] == false)
       reject("answer", "answer.collides is false but " + std::to_string(undecided) +
-                           " stretch(es) of the timeline are undecided: an incomplete certificate may claim a collision where one is proved "
+                           " stretch(es) of the timeline are undecided: an incomplete certificate may claim a "
+                           "collision where one is proved "
                            "(true), otherwise only null (unknown), never false");
 
     // Instants
@@ -320,48 +343,63 @@ struct CycloidalChecker {
       Node& n = nodes[k];
       if (n.kind == "end") {
         const auto st = status_at(n.lo);
-        if (!st) reject(n.name, "the static test at t = " + n.lo.get_str() + " is not proved at " + std::to_string(cy.bits) + " bits");
-        if (*st != n.status) reject(n.name, std::string("the static test gives ") + name(*st) + ", not " + name(n.status) + " as claimed");
+        if (!st)
+          reject(n.name,
+                 "the static test at t = " + n.lo.get_str() + " is not proved at " + std::to_string(cy.bits) + " bits");
+        if (*st != n.status)
+          reject(n.name, std::string("the static test gives ") + name(*st) + ", not " + name(n.status) + " as claimed");
       } else if (n.kind == "simple_root") {
         ++roots;
         const int sl = delta(point(n.lo)).sign(), sh = delta(point(n.hi)).sign();
         if (sl == 0 || sh == 0 || sl == sh) reject(n.name, "Delta at lo and hi are not proved of opposite signs");
-        if (delta_prime(n.lo, n.hi).sign() == 0) reject(n.name, "Delta' is not proved non-zero on the bracket: it may hold more than one root, or a multiple one");
+        if (delta_prime(n.lo, n.hi).sign() == 0)
+          reject(n.name,
+                 "Delta' is not proved non-zero on the bracket: it may hold more than one root, or a multiple one");
         const auto st = status_at_root(n.lo, n.hi);
         if (!st) reject(n.name, "the signs of P and D are not proved on the bracket");
-        if (*st != n.status) reject(n.name, std::string("P and D give ") + name(*st) + ", not " + name(n.status) + " as claimed");
+        if (*st != n.status)
+          reject(n.name, std::string("P and D give ") + name(*st) + ", not " + name(n.status) + " as claimed");
       } else {
         ++stretches;
         const json& ej = at(n.entry, "epsilon", n.place);
         mpq_class eps, unit;  // a decimal as the writer writes it (upper_decimal), or a rational "p/q"
-        if (!(ej.is_string() && read_decimal(ej.get<std::string>(), 400, eps, unit))) eps = rational(ej, n.place + ".epsilon", kMaxRationalBits);
+        if (!(ej.is_string() && read_decimal(ej.get<std::string>(), 400, eps, unit)))
+          eps = rational(ej, n.place + ".epsilon", kMaxRationalBits);
         if (sgn(eps) < 0) reject(n.name, "epsilon must not be negative");
         if (!whole_bound) whole_bound = magnitude_upper(0, 1);
         if (eps * 1024 > *whole_bound)
-          reject(n.name, "epsilon is not small: more than 2^-10 of the checker's bound of |Delta| on [0, 1]; an undecided stretch claims Delta near 0");
+          reject(n.name,
+                 "epsilon is not small: more than 2^-10 of the checker's bound of |Delta| on [0, 1]; an undecided "
+                 "stretch claims Delta near 0");
         const mpq_class bound = magnitude_upper(n.lo, n.hi);
         if (bound > eps)
-          reject(n.name, "|Delta| <= epsilon on the stretch is not proved (the checker's enclosure bounds it by " + decimal_text(bound) + ", epsilon is " +
-                             decimal_text(eps) + ")");
+          reject(n.name, "|Delta| <= epsilon on the stretch is not proved (the checker's enclosure bounds it by " +
+                             decimal_text(bound) + ", epsilon is " + decimal_text(eps) + ")");
       }
     }
-    checked.push_back("instants: " + std::to_string(roots) + " simple root(s) proved (opposite signs of Delta at the bracket ends, Delta' non-zero "
-                      "on it; status from P and D), the ends by the static test, " + std::to_string(stretches) +
-                      " undecided stretch(es) with |Delta| <= epsilon proved");
+    checked.push_back("instants: " + std::to_string(roots) +
+                      " simple root(s) proved (opposite signs of Delta at the bracket ends, Delta' non-zero "
+                      "on it; status from P and D), the ends by the static test, " +
+                      std::to_string(stretches) + " undecided stretch(es) with |Delta| <= epsilon proved");
 
     // Gaps
     const json& gp = at(cert, "gap_points", "certificate");
     const json& proofs = at(cert, "gap_proofs", "certificate");
-    if (!gp.is_array() || gp.size() > kMaxGapPoints) reject("certificate format", "gap_points: expected an array of at most " + std::to_string(kMaxGapPoints) + " points");
+    if (!gp.is_array() || gp.size() > kMaxGapPoints)
+      reject("certificate format",
+             "gap_points: expected an array of at most " + std::to_string(kMaxGapPoints) + " points");
     if (!proofs.is_array()) reject("certificate format", "gap_proofs: expected an array, one proof per gap piece");
     std::vector<mpq_class> pts;
-    for (std::size_t i = 0; i < gp.size(); ++i) pts.push_back(rational(gp[i], "gap_points[" + std::to_string(i) + "]", kMaxRationalBits));
+    for (std::size_t i = 0; i < gp.size(); ++i)
+      pts.push_back(rational(gp[i], "gap_points[" + std::to_string(i) + "]", kMaxRationalBits));
     std::size_t used = 0, pieces = 0;
     for (std::size_t k = 0; k + 2 < nodes.size(); k += 2) {
       const mpq_class a = nodes[k].hi, b = nodes[k + 2].lo;
       std::vector<mpq_class> cut{a};
       while (used < pts.size() && pts[used] < b) {
-        if (!(cut.back() < pts[used])) reject("gaps", "gap point " + pts[used].get_str() + " is not strictly inside a gap, or the points are not increasing");
+        if (!(cut.back() < pts[used]))
+          reject("gaps", "gap point " + pts[used].get_str() +
+                             " is not strictly inside a gap, or the points are not increasing");
         cut.push_back(pts[used++]);
       }
       cut.push_back(b);
@@ -376,26 +414,32 @@ struct CycloidalChecker {
           return delta_prime(cut[i], cut[i + 1]).sign() != 0 && sa != 0 && sa == sb;
         };
         if (how != "natural" && how != "mean_value" && how != "monotone")
-          reject("certificate format", "gap_proofs[" + std::to_string(pieces) + "]: expected \"natural\", \"mean_value\" or \"monotone\"");
+          reject("certificate format",
+                 "gap_proofs[" + std::to_string(pieces) + "]: expected \"natural\", \"mean_value\" or \"monotone\"");
         // the named proof first; the checker's enclosures are not the writer's, so the other two (a fixed, bounded
         // list, no subdivision) may stand in when the named one is not proved at this precision
         bool ok = holds(how.get<std::string>());
         for (const char* other : {"natural", "mean_value", "monotone"})
           if (!ok && how != other) ok = holds(other);
-        if (!ok) reject("gaps", "Delta is not proved root-free on " + where + " (the " + how.get<std::string>() + " proof the certificate names, nor another)");
+        if (!ok)
+          reject("gaps", "Delta is not proved root-free on " + where + " (the " + how.get<std::string>() +
+                             " proof the certificate names, nor another)");
       }
     }
     if (used != pts.size()) reject("gaps", "gap point " + pts[used].get_str() + " is not strictly inside a gap");
     if (pieces != proofs.size()) reject("certificate format", "gap_proofs: more proofs than gap pieces");
-    checked.push_back("gaps: Delta has no root in [0, 1] outside the brackets (" + std::to_string(pieces) + " piece(s), each proved root-free as named)");
+    checked.push_back("gaps: Delta has no root in [0, 1] outside the brackets (" + std::to_string(pieces) +
+                      " piece(s), each proved root-free as named)");
 
     // Cells
     for (std::size_t k = 1; k < nodes.size(); k += 2) {
       const auto st = status_at(nodes[k].lo);
       if (!st) reject(nodes[k].name, "the static test at the sample is not proved");
-      if (*st != nodes[k].status) reject(nodes[k].name, std::string("the static test gives ") + name(*st) + ", not " + name(nodes[k].status));
+      if (*st != nodes[k].status)
+        reject(nodes[k].name, std::string("the static test gives ") + name(*st) + ", not " + name(nodes[k].status));
     }
-    checked.push_back("cells: the static test at each of the " + std::to_string(nodes.size() / 2) + " sample(s) proves the claimed status");
+    checked.push_back("cells: the static test at each of the " + std::to_string(nodes.size() / 2) +
+                      " sample(s) proves the claimed status");
     answer(nodes, aj, approx_chars);
   }
 
@@ -420,7 +464,10 @@ struct CycloidalChecker {
       if (!touching_cell(k + 1) && !(k > 0 && touching_cell(k - 1))) contacts.push_back(br(k));
     };
     for (std::size_t k = 0; k < seq.size(); ++k) {
-      if (seq[k].undecided) { undecided.push_back(br(k)); continue; }
+      if (seq[k].undecided) {
+        undecided.push_back(br(k));
+        continue;
+      }
       if (!seq[k].cell && seq[k].status == St::touching) contact(k);
       if (!in_c(k)) continue;
       std::size_t e = k;
@@ -439,16 +486,22 @@ struct CycloidalChecker {
     const json want_collides = !intervals.empty() ? json(true) : undecided.empty() ? json(false) : json(nullptr);
     const json& col = at(aj, "collides", "answer");
     if (col != want_collides)
-      reject("answer", "answer.collides is " + shown(col) + " but the checked timeline proves " +
-                           (want_collides.is_null() ? std::string("neither: no collision is proved and a stretch is undecided, so collides must be null (unknown), never false")
-                                                    : want_collides == true ? std::string("a collision") : std::string("there is none")));
+      reject("answer",
+             "answer.collides is " + shown(col) + " but the checked timeline proves " +
+                 (want_collides.is_null() ? std::string("neither: no collision is proved and a stretch is undecided, "
+                                                        "so collides must be null (unknown), never false")
+                  : want_collides == true ? std::string("a collision")
+                                          : std::string("there is none")));
     auto inst = [&](const json& j, const std::string& place, const Br& want) {
       if (!j.is_object()) reject("certificate format", place + ": expected an instant {approx, lo, hi}");
       for (auto it = j.begin(); it != j.end(); ++it)
-        if (it.key() != "approx" && it.key() != "lo" && it.key() != "hi") reject("certificate format", place + "." + it.key() + ": not a key of an instant");
-      const mpq_class lo = rational(at(j, "lo", place), place + ".lo", kMaxRationalBits), hi = rational(at(j, "hi", place), place + ".hi", kMaxRationalBits);
+        if (it.key() != "approx" && it.key() != "lo" && it.key() != "hi")
+          reject("certificate format", place + "." + it.key() + ": not a key of an instant");
+      const mpq_class lo = rational(at(j, "lo", place), place + ".lo", kMaxRationalBits),
+                      hi = rational(at(j, "hi", place), place + ".hi", kMaxRationalBits);
       if (lo != want.first || hi != want.second)
-        reject("answer", place + ": the instant " + bracket_text(lo, hi) + " differs from the checked timeline's " + bracket_text(want.first, want.second));
+        reject("answer", place + ": the instant " + bracket_text(lo, hi) + " differs from the checked timeline's " +
+                             bracket_text(want.first, want.second));
       check_approx(at(j, "approx", place), lo, hi, "answer", place + ".approx", approx_chars);
     };
     auto list = [&](const char* key, std::size_t n, bool optional, auto&& each) {
@@ -459,7 +512,9 @@ struct CycloidalChecker {
       }
       const json& l = at(aj, key, "answer");
       if (!l.is_array()) reject("certificate format", place + ": expected an array");
-      if (l.size() != n) reject("answer", "the checked timeline gives " + std::to_string(n) + " " + key + ", the certificate " + std::to_string(l.size()));
+      if (l.size() != n)
+        reject("answer", "the checked timeline gives " + std::to_string(n) + " " + key + ", the certificate " +
+                             std::to_string(l.size()));
       for (std::size_t i = 0; i < n; ++i) each(l[i], place + "[" + std::to_string(i) + "]", i);
     };
     auto pair_of = [&](const std::vector<std::pair<Br, Br>>& v) {
@@ -471,15 +526,23 @@ struct CycloidalChecker {
     };
     list("intervals", intervals.size(), false, pair_of(intervals));
     list("contact_intervals", contact_intervals.size(), true, pair_of(contact_intervals));
-    list("contacts", contacts.size(), false, [&](const json& j, const std::string& p, std::size_t i) { inst(j, p, contacts[i]); });
-    list("undecided", undecided.size(), false, [&](const json& j, const std::string& p, std::size_t i) { inst(j, p, undecided[i]); });
+    list("contacts", contacts.size(), false,
+         [&](const json& j, const std::string& p, std::size_t i) { inst(j, p, contacts[i]); });
+    list("undecided", undecided.size(), false,
+         [&](const json& j, const std::string& p, std::size_t i) { inst(j, p, undecided[i]); });
     const json& fc = at(aj, "first_contact", "answer");
-    if (intervals.empty() != fc.is_null()) reject("answer", "first_contact must be " + std::string(intervals.empty() ? "null" : "the start of the first interval"));
+    if (intervals.empty() != fc.is_null())
+      reject("answer",
+             "first_contact must be " + std::string(intervals.empty() ? "null" : "the start of the first interval"));
     if (!intervals.empty()) inst(fc, "answer.first_contact", intervals.front().first);
     const json& complete = at(cert, "complete", "certificate");
-    if (complete != json(undecided.empty())) reject("answer", std::string("complete must be ") + (undecided.empty() ? "true" : "false: an undecided stretch is left"));
+    if (complete != json(undecided.empty()))
+      reject("answer",
+             std::string("complete must be ") + (undecided.empty() ? "true" : "false: an undecided stretch is left"));
     checked.push_back("answer: assembled by the checker from the checked timeline, equal to the certificate's" +
-                      std::string(undecided.empty() ? "" : " (" + std::to_string(undecided.size()) + " stretch(es) undecided: not a complete answer)"));
+                      std::string(undecided.empty() ? ""
+                                                    : " (" + std::to_string(undecided.size()) +
+                                                          " stretch(es) undecided: not a complete answer)"));
   }
 };
 

@@ -58,8 +58,8 @@ namespace eccd::check {
 
 namespace {
 
-const std::size_t kMaxRationalBits = 1024, kMaxNetBits = 1 << 16, kMaxStrips = 200000, kMaxBoxes = 2000000, kMaxChain = 64,
-                  kMaxTreeChars = 4000001;
+const std::size_t kMaxRationalBits = 1024, kMaxNetBits = 1 << 16, kMaxStrips = 200000, kMaxBoxes = 2000000,
+                  kMaxChain = 64, kMaxTreeChars = 4000001;
 const int kMaxNetDegree = 400, kMaxTreeDepth = 40;
 const char* const kFormat = "eccd-independent-certificate/3";
 
@@ -164,16 +164,22 @@ struct IndependentChecker {
   long mpfi_boxes = 0, tree_leaves = 0, tree_mpfi = 0;
 
   MI mk(const mpq_class& x) const { return MI(x, bits); }
-  auto mmake() const { return [this](const mpq_class& x) { return mk(x); }; }
+  auto mmake() const {
+    return [this](const mpq_class& x) { return mk(x); };
+  }
   static DI dmake(const mpq_class& x) { return DI::of(x); }
 
   void scene_claim() {
     const json& s = at(cert, "scene", "certificate");
     for (const char* k : {"dim", "a", "b", "parameters"}) {
       if (!sc.doc.contains(k) || at(s, k, "scene") != sc.doc.at(k))
-        reject("scene", std::string("the certificate's \"") + k + "\" differs from the scene file's: it is a certificate for another scene");
+        reject("scene", std::string("the certificate's \"") + k +
+                            "\" differs from the scene file's: it is a certificate for another scene");
     }
-    if (!sc.independent || sc.cycloidal) reject("scene", "an independent-motion certificate is for scenes with \"parameters\": \"independent\" and rational motions");
+    if (!sc.independent || sc.cycloidal)
+      reject(
+          "scene",
+          "an independent-motion certificate is for scenes with \"parameters\": \"independent\" and rational motions");
     checked.push_back("scene: dim, a, b and parameters are the scene file's; independent parameters, rational motions");
   }
 
@@ -182,13 +188,16 @@ struct IndependentChecker {
     const json& nj = at(cert, "net", "certificate");
     const json& deg = at(nj, "degrees", "net");
     if (!deg.is_array() || deg.size() != 3) reject("certificate format", "net.degrees: expected [u, s, t]");
-    net.n = {int(whole(deg[0], "net.degrees[0]", long(H), long(H))), int(whole(deg[1], "net.degrees[1]", 0, kMaxNetDegree)),
+    net.n = {int(whole(deg[0], "net.degrees[0]", long(H), long(H))),
+             int(whole(deg[1], "net.degrees[1]", 0, kMaxNetDegree)),
              int(whole(deg[2], "net.degrees[2]", 0, kMaxNetDegree))};
     const json& co = at(nj, "coefficients", "net");
     const std::size_t count = std::size_t(net.n[0] + 1) * (net.n[1] + 1) * (net.n[2] + 1);
     if (!co.is_array() || co.size() != count)
-      reject("certificate format", "net.coefficients: expected " + std::to_string(count) + " rationals ((u, s, t) in row-major order)");
-    for (std::size_t i = 0; i < count; ++i) net.c.push_back(rational(co[i], "net.coefficients[" + std::to_string(i) + "]", kMaxNetBits));
+      reject("certificate format",
+             "net.coefficients: expected " + std::to_string(count) + " rationals ((u, s, t) in row-major order)");
+    for (std::size_t i = 0; i < count; ++i)
+      net.c.push_back(rational(co[i], "net.coefficients[" + std::to_string(i) + "]", kMaxNetBits));
     const QMatrix Qa = stated_shape_h(at(nj, "shape_a", "net"), "net.shape_a", sc.a.Q, kMaxNetBits);
     const QMatrix Qb = stated_shape_h(at(nj, "shape_b", "net"), "net.shape_b", sc.b.Q, kMaxNetBits);
     const PolyMatrix Na = stated_inverse_h(at(nj, "inverse_a", "net"), "net.inverse_a", sc.a.M, kMaxNetBits);
@@ -197,14 +206,18 @@ struct IndependentChecker {
     if (!red.is_array() || red.size() > 2) reject("certificate format", "reduced: expected a list of \"s\" and \"t\"");
     bool still[2] = {false, false};
     for (const auto& r : red) {
-      if (r != "s" && r != "t") reject("certificate format", "reduced: expected a list of \"s\" and \"t\", got " + shown(r));
+      if (r != "s" && r != "t")
+        reject("certificate format", "reduced: expected a list of \"s\" and \"t\", got " + shown(r));
       still[r == "s" ? 0 : 1] = true;
     }
-    if (still[0] && !holds_still(Qa, Na)) reject("reduced", "A(s) is not c(s) A(0): body a moves as a set, so s cannot be reduced");
-    if (still[1] && !holds_still(Qb, Nb)) reject("reduced", "B(t) is not c(t) B(0): body b moves as a set, so t cannot be reduced");
+    if (still[0] && !holds_still(Qa, Na))
+      reject("reduced", "A(s) is not c(s) A(0): body a moves as a set, so s cannot be reduced");
+    if (still[1] && !holds_still(Qb, Nb))
+      reject("reduced", "B(t) is not c(t) B(0): body b moves as a set, so t cannot be reduced");
     const int Ds = std::max(net.n[1], still[0] ? 0 : 2 * int(H) * matrix_degree(Na));
     const int Dt = std::max(net.n[2], still[1] ? 0 : 2 * int(H) * matrix_degree(Nb));
-    if (double(Ds + 1) * double(Dt + 1) > 200000) reject("certificate format", "net: the motions' degrees are too large to check");
+    if (double(Ds + 1) * double(Dt + 1) > 200000)
+      reject("certificate format", "net: the motions' degrees are too large to check");
     const auto vals = net_on_grid(net, Ds, Dt);
     std::vector<QMatrix> A, B;
     for (int y = 0; y <= Ds; ++y) A.push_back(moving_quadric(Qa, Na, mpq_class(still[0] ? 0 : y)));
@@ -216,14 +229,19 @@ struct IndependentChecker {
           for (std::size_t i = 0; i < H; ++i)
             for (std::size_t j = 0; j < H; ++j) P[i][j] = (1 - x) * A[y][i][j] + x * B[z][i][j];
           if (vals[x][y][z] != determinant(P))
-            reject("net", "the net differs from det((1 - u) A(s) + u B(t)) at u = " + std::to_string(x) + ", s = " + std::to_string(y) +
-                              ", t = " + std::to_string(z) + ": it is not F for this scene");
+            reject("net", "the net differs from det((1 - u) A(s) + u B(t)) at u = " + std::to_string(x) + ", s = " +
+                              std::to_string(y) + ", t = " + std::to_string(z) + ": it is not F for this scene");
         }
-    checked.push_back("net: Q_a, Q_b positive multiples of the scene's shapes with det < 0; N_a M_a, N_b M_b = c I with c free of roots "
-                      "in [0, 1] (Sturm); F = det((1 - u) A(s) + u B(t)) (degrees " + std::to_string(net.n[0]) + " x " + std::to_string(net.n[1]) +
-                      " x " + std::to_string(net.n[2]) + ", equal on " + std::to_string((H + 1) * (Ds + 1) * (Dt + 1)) + " integer points)" +
-                      (red.empty() ? std::string("") : "; reduced " + red.dump() + ": the body does not move as a set (A(x) = c(x) A(0))"));
-    checked.push_back("faces: F(0, s, t) = det A(s) < 0 and F(1, s, t) = det B(t) < 0 (det Q < 0, N invertible on [0, 1])");
+    checked.push_back(
+        "net: Q_a, Q_b positive multiples of the scene's shapes with det < 0; N_a M_a, N_b M_b = c I with c free of "
+        "roots "
+        "in [0, 1] (Sturm); F = det((1 - u) A(s) + u B(t)) (degrees " +
+        std::to_string(net.n[0]) + " x " + std::to_string(net.n[1]) + " x " + std::to_string(net.n[2]) + ", equal on " +
+        std::to_string((H + 1) * (Ds + 1) * (Dt + 1)) + " integer points)" +
+        (red.empty() ? std::string("")
+                     : "; reduced " + red.dump() + ": the body does not move as a set (A(x) = c(x) A(0))"));
+    checked.push_back(
+        "faces: F(0, s, t) = det A(s) < 0 and F(1, s, t) = det B(t) < 0 (det Q < 0, N invertible on [0, 1])");
   }
 
   ProjNets nets_of(const Net3<mpq_class>& F) const {
@@ -232,7 +250,8 @@ struct IndependentChecker {
     p.Fu = deriv3(F, 0, mpq_class(1), [](const mpq_class& x) { return x; });
     p.Ft = deriv3(F, 2, mpq_class(1), [](const mpq_class& x) { return x; });
     p.Fuu = deriv3(p.Fu, 0, mpq_class(1), [](const mpq_class& x) { return x; });
-    p.dF = converted3<DI>(p.F, dmake), p.dFu = converted3<DI>(p.Fu, dmake), p.dFt = converted3<DI>(p.Ft, dmake), p.dFuu = converted3<DI>(p.Fuu, dmake);
+    p.dF = converted3<DI>(p.F, dmake), p.dFu = converted3<DI>(p.Fu, dmake), p.dFt = converted3<DI>(p.Ft, dmake),
+    p.dFuu = converted3<DI>(p.Fuu, dmake);
     p.mF = converted3<MI>(p.F, mmake()), p.mFu = converted3<MI>(p.Fu, mmake()), p.mFt = converted3<MI>(p.Ft, mmake()),
     p.mFuu = converted3<MI>(p.Fuu, mmake());
     p.quotient = {edge_quotient(F, 0), edge_quotient(F, 1)};
@@ -257,7 +276,8 @@ struct IndependentChecker {
 
   // The restriction of an MPFI net to a box (u, s, t ranges), its control points' common strict sign.
   int box_sign(const Net3<MI>& f, const std::array<mpq_class, 6>& b) const {
-    Net3<MI> g = restrict3(restrict3(restrict3(f, 1, b[2], b[3], mmake()), 2, b[4], b[5], mmake()), 0, b[0], b[1], mmake());
+    Net3<MI> g =
+        restrict3(restrict3(restrict3(f, 1, b[2], b[3], mmake()), 2, b[4], b[5], mmake()), 0, b[0], b[1], mmake());
     return g.strict_sign();
   }
 
@@ -271,27 +291,35 @@ struct IndependentChecker {
 
   // The exclusion tree over (u, t) at s in [lo, hi]: nets in doubles along the tree, MPFI from the strip at leaves
   // doubles do not decide.
-  void exclusion(Tree& tr, const std::array<Net3<DI>, 4>& f, const mpq_class& u0, const mpq_class& u1, const mpq_class& t0,
-                 const mpq_class& t1, int depth, const Keep& keep, std::optional<std::array<Net3<MI>, 4>>& strip, const ProjNets& P,
-                 const mpq_class& lo, const mpq_class& hi, const std::string& claim) {
-    if (tr.pos >= tr.s.size()) reject(claim, "the exclusion tree ends early: part of [0, 1]^2 x the strip is not covered");
+  void exclusion(Tree& tr, const std::array<Net3<DI>, 4>& f, const mpq_class& u0, const mpq_class& u1,
+                 const mpq_class& t0, const mpq_class& t1, int depth, const Keep& keep,
+                 std::optional<std::array<Net3<MI>, 4>>& strip, const ProjNets& P, const mpq_class& lo,
+                 const mpq_class& hi, const std::string& claim) {
+    if (tr.pos >= tr.s.size())
+      reject(claim, "the exclusion tree ends early: part of [0, 1]^2 x the strip is not covered");
     const char ch = tr.s[tr.pos++];
     if (ch == '0') {
       ++tree_leaves;
       if (u0 >= keep.u0 && u1 <= keep.u1 && t0 >= keep.t0 && t1 <= keep.t1) return;
       const bool inner = sgn(t0) > 0 && t1 < 1;
-      if (f[0].strict_sign() != 0 || f[1].strict_sign() != 0 || (inner && f[2].strict_sign() != 0 && f[3].strict_sign() != 0)) return;
+      if (f[0].strict_sign() != 0 || f[1].strict_sign() != 0 ||
+          (inner && f[2].strict_sign() != 0 && f[3].strict_sign() != 0))
+        return;
       ++tree_mpfi;
-      if (!strip) strip = std::array<Net3<MI>, 4>{restrict3(P.mF, 1, lo, hi, mmake()), restrict3(P.mFu, 1, lo, hi, mmake()),
-                                                  restrict3(P.mFt, 1, lo, hi, mmake()), restrict3(P.mFuu, 1, lo, hi, mmake())};
+      if (!strip)
+        strip = std::array<Net3<MI>, 4>{restrict3(P.mF, 1, lo, hi, mmake()), restrict3(P.mFu, 1, lo, hi, mmake()),
+                                        restrict3(P.mFt, 1, lo, hi, mmake()), restrict3(P.mFuu, 1, lo, hi, mmake())};
       std::array<int, 4> sg;
-      for (int i = 0; i < 4; ++i) sg[i] = restrict3(restrict3((*strip)[i], 2, t0, t1, mmake()), 0, u0, u1, mmake()).strict_sign();
+      for (int i = 0; i < 4; ++i)
+        sg[i] = restrict3(restrict3((*strip)[i], 2, t0, t1, mmake()), 0, u0, u1, mmake()).strict_sign();
       if (sg[0] != 0 || sg[1] != 0 || (inner && sg[2] != 0 && sg[3] != 0)) return;
       reject(claim, "the exclusion leaf u in [" + q(u0) + ", " + q(u1) + "], t in [" + q(t0) + ", " + q(t1) +
-                        "]: neither F nor F_u (nor F_t and F_uu inside (0, 1)) is of one proved sign there: another extreme point is not excluded");
+                        "]: neither F nor F_u (nor F_t and F_uu inside (0, 1)) is of one proved sign there: another "
+                        "extreme point is not excluded");
     }
     if (ch != '1') reject("certificate format", claim + ": the exclusion tree must be a string of '0' and '1'");
-    if (depth >= kMaxTreeDepth) reject("certificate format", claim + ": the exclusion tree is deeper than " + std::to_string(kMaxTreeDepth));
+    if (depth >= kMaxTreeDepth)
+      reject("certificate format", claim + ": the exclusion tree is deeper than " + std::to_string(kMaxTreeDepth));
     const DI half(0.5, 0.5);
     const mpq_class um = (u0 + u1) / 2, tm = (t0 + t1) / 2;
     std::array<Net3<DI>, 4> a, b;
@@ -307,18 +335,21 @@ struct IndependentChecker {
   }
 
   std::vector<mpq_class> rats(const json& j, std::size_t n, const std::string& place) const {
-    if (!j.is_array() || j.size() != n) reject("certificate format", place + ": expected " + std::to_string(n) + " rationals");
+    if (!j.is_array() || j.size() != n)
+      reject("certificate format", place + ": expected " + std::to_string(n) + " rationals");
     std::vector<mpq_class> r;
-    for (std::size_t i = 0; i < n; ++i) r.push_back(rational(j[i], place + "[" + std::to_string(i) + "]", kMaxRationalBits));
+    for (std::size_t i = 0; i < n; ++i)
+      r.push_back(rational(j[i], place + "[" + std::to_string(i) + "]", kMaxRationalBits));
     return r;
   }
 
   // An end item: the system, its chain, its side conditions, its exclusion tree and its bracket. Returns the bracket.
-  std::pair<mpq_class, mpq_class> end_item(const ProjNets& P, const json& it, const std::string& name, const std::string& claim,
-                                          const mpq_class& lo, const mpq_class& hi) {
+  std::pair<mpq_class, mpq_class> end_item(const ProjNets& P, const json& it, const std::string& name,
+                                           const std::string& claim, const mpq_class& lo, const mpq_class& hi) {
     const json& sj = at(it, "system", name);
     const std::string sys = sj.is_string() ? sj.get<std::string>() : "";
-    if (sys != "fold" && sys != "0" && sys != "1" && sys != "free") reject("certificate format", name + ": system must be \"fold\", \"0\", \"1\" or \"free\"");
+    if (sys != "fold" && sys != "0" && sys != "1" && sys != "free")
+      reject("certificate format", name + ": system must be \"fold\", \"0\", \"1\" or \"free\"");
     const bool fold = sys == "fold";
     if (sys == "free" && P.F.n[2] != 0) reject(claim, "system free needs F of degree 0 in the other parameter");
     const std::size_t m = fold ? 3 : 2;
@@ -328,19 +359,24 @@ struct IndependentChecker {
       reject("certificate format", name + ": chain must list 1 to " + std::to_string(kMaxChain) + " boxes");
     std::vector<KBox> Y;
     for (std::size_t i = 0; i < chain.size(); ++i) {
-      KBox b{rats(at(chain[i], "lo", name), m, name + ".chain lo"), rats(at(chain[i], "hi", name), m, name + ".chain hi")};
+      KBox b{rats(at(chain[i], "lo", name), m, name + ".chain lo"),
+             rats(at(chain[i], "hi", name), m, name + ".chain hi")};
       for (std::size_t v = 0; v < m; ++v)
-        if (!(b.lo[v] < b.hi[v])) reject("certificate format", name + ": chain box " + std::to_string(i) + " is empty in a coordinate");
+        if (!(b.lo[v] < b.hi[v]))
+          reject("certificate format", name + ": chain box " + std::to_string(i) + " is empty in a coordinate");
       Y.push_back(std::move(b));
     }
     const KBox& X = Y[0];
-    if (X.lo[1] > lo || X.hi[1] < hi) reject(claim, "the Krawczyk box's range of the proof's parameter does not cover the strip");
+    if (X.lo[1] > lo || X.hi[1] < hi)
+      reject(claim, "the Krawczyk box's range of the proof's parameter does not cover the strip");
     KBox K;
-    if (krawczyk(base, X, K, 1) != 1) reject(claim, "Krawczyk's K(X) is not inside the interior of X: the box is not proved to hold one zero");
+    if (krawczyk(base, X, K, 1) != 1)
+      reject(claim, "Krawczyk's K(X) is not inside the interior of X: the box is not proved to hold one zero");
     for (std::size_t i = 0; i + 1 < Y.size(); ++i) {
       auto keeps = [&](const KBox& K2) {
         for (std::size_t v = 0; v < m; ++v)
-          if (Y[i + 1].lo[v] > std::max(Y[i].lo[v], K2.lo[v]) || Y[i + 1].hi[v] < std::min(Y[i].hi[v], K2.hi[v])) return false;
+          if (Y[i + 1].lo[v] > std::max(Y[i].lo[v], K2.lo[v]) || Y[i + 1].hi[v] < std::min(Y[i].hi[v], K2.hi[v]))
+            return false;
         return true;
       };
       KBox K2;
@@ -350,7 +386,8 @@ struct IndependentChecker {
       for (std::size_t v = 0; v < m; ++v) inside_x = inside_x && Y[i + 1].lo[v] >= X.lo[v] && Y[i + 1].hi[v] <= X.hi[v];
       KBox K3;
       if (!inside_x || krawczyk(base, Y[i + 1], K3, 1) != 1)
-        reject(claim, "chain box " + std::to_string(i + 1) + " does not contain Y_" + std::to_string(i) + " ∩ K(Y_" + std::to_string(i) + ")");
+        reject(claim, "chain box " + std::to_string(i + 1) + " does not contain Y_" + std::to_string(i) + " ∩ K(Y_" +
+                          std::to_string(i) + ")");
     }
     // side conditions and the box the exclusion keeps
     Keep keep{X.lo[0], X.hi[0], 0, 1};
@@ -363,19 +400,23 @@ struct IndependentChecker {
       const auto& quo = P.quotient[sys == "0" ? 0 : 1];
       const bool ft = box_sign(P.mFt, region) != 0 || (quo && box_sign(converted3<MI>(*quo, mmake()), region) != 0);
       if (!ft || box_sign(P.mFuu, region) == 0)
-        reject(claim, "F_t (or F_t / t, F_t / (1 - t) where F_t vanishes on that face) or F_uu is not proved of one sign near that end of the path");
+        reject(claim,
+               "F_t (or F_t / t, F_t / (1 - t) where F_t vanishes on that face) or F_uu is not proved of one sign near "
+               "that end of the path");
     } else if (fold) {
       keep.t0 = X.lo[2];
       keep.t1 = X.hi[2];
-      if (sgn(keep.t0) <= 0 || keep.t1 >= 1 || box_sign(P.mFuu, {X.lo[0], X.hi[0], X.lo[1], X.hi[1], X.lo[2], X.hi[2]}) != -1)
+      if (sgn(keep.t0) <= 0 || keep.t1 >= 1 ||
+          box_sign(P.mFuu, {X.lo[0], X.hi[0], X.lo[1], X.hi[1], X.lo[2], X.hi[2]}) != -1)
         reject(claim, "F_uu is not proved < 0 on the box, or its t-range is not inside (0, 1)");
     }
     const json& ex = at(it, "exclusion", name);
     if (!ex.is_string() || ex.get_ref<const std::string&>().size() > kMaxTreeChars)
-      reject("certificate format", name + ".exclusion: expected a string of at most " + std::to_string(kMaxTreeChars) + " '0'/'1'");
+      reject("certificate format",
+             name + ".exclusion: expected a string of at most " + std::to_string(kMaxTreeChars) + " '0'/'1'");
     Tree tr{ex.get_ref<const std::string&>()};
-    const std::array<Net3<DI>, 4> strip{restrict3(P.dF, 1, lo, hi, dmake), restrict3(P.dFu, 1, lo, hi, dmake), restrict3(P.dFt, 1, lo, hi, dmake),
-                                        restrict3(P.dFuu, 1, lo, hi, dmake)};
+    const std::array<Net3<DI>, 4> strip{restrict3(P.dF, 1, lo, hi, dmake), restrict3(P.dFu, 1, lo, hi, dmake),
+                                        restrict3(P.dFt, 1, lo, hi, dmake), restrict3(P.dFuu, 1, lo, hi, dmake)};
     std::optional<std::array<Net3<MI>, 4>> mstrip;
     exclusion(tr, strip, 0, 1, 0, 1, 0, keep, mstrip, P, lo, hi, claim);
     if (tr.pos != tr.s.size()) reject("certificate format", name + ".exclusion: characters after the end of the tree");
@@ -389,8 +430,8 @@ struct IndependentChecker {
   }
 
   // An in- or out-strip: its boxes' signs and their coverage.
-  void strip_item(const ProjNets& P, const json& it, const std::string& name, const std::string& claim, const mpq_class& lo,
-                  const mpq_class& hi, bool in, std::size_t& nboxes) {
+  void strip_item(const ProjNets& P, const json& it, const std::string& name, const std::string& claim,
+                  const mpq_class& lo, const mpq_class& hi, bool in, std::size_t& nboxes) {
     const json& boxes = at(it, "boxes", name);
     if (!boxes.is_array() || boxes.empty()) reject("certificate format", name + ": boxes must be a non-empty list");
     nboxes += boxes.size();
@@ -411,18 +452,22 @@ struct IndependentChecker {
       ++mpfi_boxes;
       if (!sm) sm = restrict3(P.mF, 1, lo, hi, mmake());
       if (restrict3(restrict3(*sm, 2, b[2], b[3], mmake()), 0, b[0], b[1], mmake()).strict_sign() != (in ? -1 : 1))
-        reject(claim, "box " + std::to_string(i + 1) + " (u in [" + q(b[0]) + ", " + q(b[1]) + "], other parameter in [" + q(b[2]) + ", " +
-                          q(b[3]) + "]): its control points are not all " + (in ? "< 0" : "> 0"));
+        reject(claim, "box " + std::to_string(i + 1) + " (u in [" + q(b[0]) + ", " + q(b[1]) +
+                          "], other parameter in [" + q(b[2]) + ", " + q(b[3]) + "]): its control points are not all " +
+                          (in ? "< 0" : "> 0"));
     }
     const int ax = in ? 0 : 2;
     std::sort(bx.begin(), bx.end(), [&](const auto& a, const auto& b) { return a[ax] < b[ax]; });
     mpq_class c = 0;
     for (const auto& b : bx) {
-      if (in && (b[2] != bx[0][2] || b[3] != bx[0][3])) reject(claim, "the boxes of an in-strip must share one range of the other parameter");
+      if (in && (b[2] != bx[0][2] || b[3] != bx[0][3]))
+        reject(claim, "the boxes of an in-strip must share one range of the other parameter");
       if (b[ax] > c) break;
       c = std::max(c, b[ax + 1]);
     }
-    if (c != 1) reject(claim, std::string("the boxes' ") + (in ? "u" : "other parameter's") + " ranges do not cover [0, 1] (covered up to " + q(c) + ")");
+    if (c != 1)
+      reject(claim, std::string("the boxes' ") + (in ? "u" : "other parameter's") +
+                        " ranges do not cover [0, 1] (covered up to " + q(c) + ")");
   }
 
   using Br = std::pair<mpq_class, mpq_class>;
@@ -431,9 +476,13 @@ struct IndependentChecker {
   std::vector<std::pair<Br, Br>> projection(const Net3<mpq_class>& F, const json& items, const std::string& var) {
     const std::string P = var + "_proof";
     if (!items.is_array() || items.empty() || items.size() > kMaxStrips)
-      reject("certificate format", P + ": expected a non-empty list of at most " + std::to_string(kMaxStrips) + " strips and ends");
+      reject("certificate format",
+             P + ": expected a non-empty list of at most " + std::to_string(kMaxStrips) + " strips and ends");
     const ProjNets nets = nets_of(F);
-    struct Item { std::string kind; mpq_class lo, hi, blo, bhi; };
+    struct Item {
+      std::string kind;
+      mpq_class lo, hi, blo, bhi;
+    };
     std::vector<Item> seq;
     mpq_class cursor = 0;
     std::size_t nboxes = 0, n_in = 0, n_out = 0, n_end = 0;
@@ -442,10 +491,15 @@ struct IndependentChecker {
       const json& it = items[k];
       const std::string name = P + " item " + std::to_string(k + 1);
       const json& kind = at(it, "kind", name);
-      if (kind != "in" && kind != "out" && kind != "end") reject("certificate format", name + ": kind must be \"in\", \"out\" or \"end\"");
-      const mpq_class lo = rational(at(it, "lo", name), name + ".lo", kMaxRationalBits), hi = rational(at(it, "hi", name), name + ".hi", kMaxRationalBits);
-      const std::string claim = name + " (" + kind.get<std::string>() + ", " + var + " in [" + q(lo) + ", " + q(hi) + "])";
-      if (lo != cursor) reject("coverage", claim + ": starts at " + q(lo) + ", the previous item ends at " + q(cursor) + " (a gap or an overlap)");
+      if (kind != "in" && kind != "out" && kind != "end")
+        reject("certificate format", name + ": kind must be \"in\", \"out\" or \"end\"");
+      const mpq_class lo = rational(at(it, "lo", name), name + ".lo", kMaxRationalBits),
+                      hi = rational(at(it, "hi", name), name + ".hi", kMaxRationalBits);
+      const std::string claim =
+          name + " (" + kind.get<std::string>() + ", " + var + " in [" + q(lo) + ", " + q(hi) + "])";
+      if (lo != cursor)
+        reject("coverage",
+               claim + ": starts at " + q(lo) + ", the previous item ends at " + q(cursor) + " (a gap or an overlap)");
       if (!(lo < hi) || hi > 1) reject("coverage", claim + ": not a range inside [0, 1]");
       cursor = hi;
       if (kind == "end") {
@@ -460,19 +514,22 @@ struct IndependentChecker {
     }
     if (cursor != 1) reject("coverage", P + ": the items end at " + var + " = " + q(cursor) + ", not 1");
     for (std::size_t k = 0; k < seq.size(); ++k)
-      if (seq[k].kind == "end" && (k == 0 || k + 1 == seq.size() || seq[k - 1].kind == "end" || seq[k + 1].kind == "end" ||
-                                   seq[k - 1].kind == seq[k + 1].kind))
-        reject("coverage", P + " item " + std::to_string(k + 1) + ": an end must lie between an in-strip and an out-strip");
-    checked.push_back(P + ": " + std::to_string(n_in) + " in-strips and " + std::to_string(n_out) + " out-strips (" + std::to_string(nboxes) +
-                      " boxes, signs proved) and " + std::to_string(n_end) + " ends (Krawczyk, side conditions, exclusion trees of " +
-                      std::to_string(tree_leaves - leaves0) + " leaves) cover [0, 1]");
+      if (seq[k].kind == "end" && (k == 0 || k + 1 == seq.size() || seq[k - 1].kind == "end" ||
+                                   seq[k + 1].kind == "end" || seq[k - 1].kind == seq[k + 1].kind))
+        reject("coverage",
+               P + " item " + std::to_string(k + 1) + ": an end must lie between an in-strip and an out-strip");
+    checked.push_back(P + ": " + std::to_string(n_in) + " in-strips and " + std::to_string(n_out) + " out-strips (" +
+                      std::to_string(nboxes) + " boxes, signs proved) and " + std::to_string(n_end) +
+                      " ends (Krawczyk, side conditions, exclusion trees of " + std::to_string(tree_leaves - leaves0) +
+                      " leaves) cover [0, 1]");
     std::vector<std::pair<Br, Br>> iv;
     for (std::size_t k = 0; k < seq.size(); ++k) {
       if (seq[k].kind != "in") continue;
       std::size_t j = k;
       while (j + 1 < seq.size() && seq[j + 1].kind == "in") ++j;
       const Br a = k > 0 && seq[k - 1].kind == "end" ? Br{seq[k - 1].blo, seq[k - 1].bhi} : Br{seq[k].lo, seq[k].lo};
-      const Br b = j + 1 < seq.size() && seq[j + 1].kind == "end" ? Br{seq[j + 1].blo, seq[j + 1].bhi} : Br{seq[j].hi, seq[j].hi};
+      const Br b = j + 1 < seq.size() && seq[j + 1].kind == "end" ? Br{seq[j + 1].blo, seq[j + 1].bhi}
+                                                                  : Br{seq[j].hi, seq[j].hi};
       iv.emplace_back(a, b);
       k = j;
     }
@@ -480,51 +537,64 @@ struct IndependentChecker {
   }
 
   void answer_claim(const std::vector<std::pair<Br, Br>>& s_iv, const std::vector<std::pair<Br, Br>>& t_iv) {
-    if (s_iv.empty() != t_iv.empty()) reject("answer", "the s-proof and the t-proof disagree on whether the paths meet");
+    if (s_iv.empty() != t_iv.empty())
+      reject("answer", "the s-proof and the t-proof disagree on whether the paths meet");
     const json& a = at(cert, "answer", "certificate");
     if (!a.is_object()) reject("certificate format", "answer: expected an object");
     for (auto it = a.begin(); it != a.end(); ++it)
       if (it.key() != "collides" && it.key() != "s_intervals" && it.key() != "t_intervals")
-        reject("certificate format", "answer." + it.key() + ": not a key of a complete independent answer (collides, s_intervals, t_intervals)");
+        reject(
+            "certificate format",
+            "answer." + it.key() + ": not a key of a complete independent answer (collides, s_intervals, t_intervals)");
     const json& col = at(a, "collides", "answer");
     if (col != json(!s_iv.empty()))
-      reject("answer", "answer.collides is " + shown(col) + " but the checked proofs prove " + (s_iv.empty() ? "that the paths never meet" : "a meeting"));
+      reject("answer", "answer.collides is " + shown(col) + " but the checked proofs prove " +
+                           (s_iv.empty() ? "that the paths never meet" : "a meeting"));
     const std::size_t chars = kMaxRationalBits * 30103 / 100000 + 64;
     auto list = [&](const char* key, const std::vector<std::pair<Br, Br>>& want) {
       const std::string place = std::string("answer.") + key;
       const json& l = at(a, key, "answer");
       if (!l.is_array()) reject("certificate format", place + ": expected an array");
       if (l.size() != want.size())
-        reject("answer", "the checked proofs give " + std::to_string(want.size()) + " " + key + ", the certificate " + std::to_string(l.size()));
+        reject("answer", "the checked proofs give " + std::to_string(want.size()) + " " + key + ", the certificate " +
+                             std::to_string(l.size()));
       for (std::size_t i = 0; i < l.size(); ++i) {
-        if (!l[i].is_array() || l[i].size() != 2) reject("certificate format", place + "[" + std::to_string(i) + "]: expected [start, end]");
+        if (!l[i].is_array() || l[i].size() != 2)
+          reject("certificate format", place + "[" + std::to_string(i) + "]: expected [start, end]");
         for (int e = 0; e < 2; ++e) {
           const std::string p = place + "[" + std::to_string(i) + "][" + std::to_string(e) + "]";
           const json& j = l[i][e];
           if (!j.is_object()) reject("certificate format", p + ": expected an instant {approx, lo, hi}");
           for (auto k = j.begin(); k != j.end(); ++k)
-            if (k.key() != "approx" && k.key() != "lo" && k.key() != "hi") reject("certificate format", p + "." + k.key() + ": not a key of an instant");
-          const mpq_class lo = rational(at(j, "lo", p), p + ".lo", kMaxRationalBits), hi = rational(at(j, "hi", p), p + ".hi", kMaxRationalBits);
+            if (k.key() != "approx" && k.key() != "lo" && k.key() != "hi")
+              reject("certificate format", p + "." + k.key() + ": not a key of an instant");
+          const mpq_class lo = rational(at(j, "lo", p), p + ".lo", kMaxRationalBits),
+                          hi = rational(at(j, "hi", p), p + ".hi", kMaxRationalBits);
           const Br& w = e ? want[i].second : want[i].first;
           if (lo != w.first || hi != w.second)
-            reject("answer", p + ": the instant " + bracket_text(lo, hi) + " differs from the checked proofs' " + bracket_text(w.first, w.second));
+            reject("answer", p + ": the instant " + bracket_text(lo, hi) + " differs from the checked proofs' " +
+                                 bracket_text(w.first, w.second));
           // approx: a decimal rounding (to its own last digit) of a point of the bracket
           const json& ap = at(j, "approx", p);
           mpq_class v, unit;
           if (!ap.is_string() || !read_decimal(ap.get<std::string>(), chars, v, unit))
             reject("answer", p + ".approx: expected a decimal string, got " + shown(ap));
-          if (v + unit / 2 < lo || v - unit / 2 > hi) reject("answer", p + ".approx " + shown(ap) + " is not a rounding of a point of " + bracket_text(lo, hi));
+          if (v + unit / 2 < lo || v - unit / 2 > hi)
+            reject("answer", p + ".approx " + shown(ap) + " is not a rounding of a point of " + bracket_text(lo, hi));
         }
       }
     };
     list("s_intervals", s_iv);
     list("t_intervals", t_iv);
-    checked.push_back("answer: collides, s_intervals and t_intervals assembled by the checker from the checked proofs, equal to the certificate's");
+    checked.push_back(
+        "answer: collides, s_intervals and t_intervals assembled by the checker from the checked proofs, equal to the "
+        "certificate's");
   }
 
   void run() {
     const json& fmt = at(cert, "format", "certificate");
-    if (fmt != kFormat) reject("certificate format", std::string("format: expected \"") + kFormat + "\", got " + shown(fmt));
+    if (fmt != kFormat)
+      reject("certificate format", std::string("format: expected \"") + kFormat + "\", got " + shown(fmt));
     checked.push_back(std::string("certificate format: ") + kFormat);
     scene_claim();
     bits = int(whole(at(cert, "precision_bits", "certificate"), "precision_bits", 64, 1024));
@@ -532,8 +602,8 @@ struct IndependentChecker {
     const auto s_iv = projection(net, at(cert, "s_proof", "certificate"), "s");
     const auto t_iv = projection(swap_st(net), at(cert, "t_proof", "certificate"), "t");
     if (mpfi_boxes + tree_mpfi > 0)
-      checked.push_back("MPFI at " + std::to_string(bits) + " bits where doubles did not decide: " + std::to_string(mpfi_boxes) + " boxes, " +
-                        std::to_string(tree_mpfi) + " exclusion leaves");
+      checked.push_back("MPFI at " + std::to_string(bits) + " bits where doubles did not decide: " +
+                        std::to_string(mpfi_boxes) + " boxes, " + std::to_string(tree_mpfi) + " exclusion leaves");
     answer_claim(s_iv, t_iv);
   }
 };

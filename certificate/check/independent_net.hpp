@@ -46,7 +46,9 @@ template <class T>
 struct Net3 {
   std::array<int, 3> n{};  // degrees in u, s, t
   std::vector<T> c;        // c[(i (n[1] + 1) + j) (n[2] + 1) + k]
-  std::size_t stride(int axis) const { return axis == 2 ? 1 : axis == 1 ? std::size_t(n[2] + 1) : std::size_t(n[1] + 1) * (n[2] + 1); }
+  std::size_t stride(int axis) const {
+    return axis == 2 ? 1 : axis == 1 ? std::size_t(n[2] + 1) : std::size_t(n[1] + 1) * (n[2] + 1);
+  }
   std::size_t index(int i, int j, int k) const { return (std::size_t(i) * (n[1] + 1) + j) * (n[2] + 1) + k; }
   const T& at(int i, int j, int k) const { return c[index(i, j, k)]; }
   T& at(int i, int j, int k) { return c[index(i, j, k)]; }
@@ -64,7 +66,8 @@ struct Net3 {
   }
 };
 
-// The net restricted to [a, b] along `axis` (a != 1; outside [0, 1] too: an identity of polynomials), reparameterised to [0, 1].
+// The net restricted to [a, b] along `axis` (a != 1; outside [0, 1] too: an identity of polynomials), reparameterised
+// to [0, 1].
 template <class T, class Make>
 Net3<T> restrict3(const Net3<T>& f, int axis, const mpq_class& a, const mpq_class& b, Make&& make) {
   if (a == 1) throw std::domain_error("a box starting at 1 cannot be restricted to");
@@ -201,7 +204,8 @@ inline QMatrix stated_shape_h(const json& j, const std::string& place, const QMa
 // A stated inverse motion: N(x) M(x) = c(x) I with c free of roots in [0, 1] (Sturm).
 inline PolyMatrix stated_inverse_h(const json& j, const std::string& place, const PolyMatrix& M, std::size_t max_bits) {
   const std::size_t H = M.size();
-  const std::string want = place + ": expected a " + std::to_string(H) + " x " + std::to_string(H) + " matrix of polynomials";
+  const std::string want =
+      place + ": expected a " + std::to_string(H) + " x " + std::to_string(H) + " matrix of polynomials";
   if (!j.is_array() || j.size() != H) reject("certificate format", want);
   PolyMatrix N(H, std::vector<QPoly>(H));
   for (std::size_t r = 0; r < H; ++r) {
@@ -209,9 +213,11 @@ inline PolyMatrix stated_inverse_h(const json& j, const std::string& place, cons
     for (std::size_t c = 0; c < H; ++c) {
       const json& p = j[r][c];
       const std::string pl = place + "[" + std::to_string(r) + "][" + std::to_string(c) + "]";
-      if (!p.is_array() || p.size() > 65) reject("certificate format", pl + ": expected power-basis coefficients (degree at most 64)");
+      if (!p.is_array() || p.size() > 65)
+        reject("certificate format", pl + ": expected power-basis coefficients (degree at most 64)");
       std::vector<mpq_class> cs;
-      for (std::size_t k = 0; k < p.size(); ++k) cs.push_back(rational(p[k], pl + "[" + std::to_string(k) + "]", max_bits));
+      for (std::size_t k = 0; k < p.size(); ++k)
+        cs.push_back(rational(p[k], pl + "[" + std::to_string(k) + "]", max_bits));
       N[r][c] = QPoly(std::move(cs));
     }
   }
@@ -224,7 +230,8 @@ inline PolyMatrix stated_inverse_h(const json& j, const std::string& place, cons
         mpq_class x = 0;
         for (std::size_t l = 0; l < H; ++l) x += n[r][l] * m[l][c];
         if ((r != c && sgn(x) != 0) || (r == c && c > 0 && x != cv.back()))
-          reject("net", place + " times the scene's M(x) is not a multiple of the identity at x = " + std::to_string(k));
+          reject("net",
+                 place + " times the scene's M(x) is not a multiple of the identity at x = " + std::to_string(k));
         if (r == c && c == 0) cv.push_back(x);
       }
   }
@@ -271,17 +278,23 @@ inline std::vector<std::vector<std::vector<mpq_class>>> net_on_grid(const Net3<m
   const int H = f.n[0];
   const auto bu = basis(f.n[0], H), bs = basis(f.n[1], Ds), bt = basis(f.n[2], Dt);
   // contract t, then s, then u
-  std::vector<std::vector<std::vector<mpq_class>>> a(std::size_t(H + 1), std::vector<std::vector<mpq_class>>(std::size_t(f.n[1] + 1), std::vector<mpq_class>(std::size_t(Dt + 1))));
+  std::vector<std::vector<std::vector<mpq_class>>> a(
+      std::size_t(H + 1),
+      std::vector<std::vector<mpq_class>>(std::size_t(f.n[1] + 1), std::vector<mpq_class>(std::size_t(Dt + 1))));
   for (int i = 0; i <= f.n[0]; ++i)
     for (int j = 0; j <= f.n[1]; ++j)
       for (int z = 0; z <= Dt; ++z)
         for (int k = 0; k <= f.n[2]; ++k) a[i][j][z] += f.at(i, j, k) * bt[z][k];
-  std::vector<std::vector<std::vector<mpq_class>>> b(std::size_t(H + 1), std::vector<std::vector<mpq_class>>(std::size_t(Ds + 1), std::vector<mpq_class>(std::size_t(Dt + 1))));
+  std::vector<std::vector<std::vector<mpq_class>>> b(
+      std::size_t(H + 1),
+      std::vector<std::vector<mpq_class>>(std::size_t(Ds + 1), std::vector<mpq_class>(std::size_t(Dt + 1))));
   for (int i = 0; i <= f.n[0]; ++i)
     for (int y = 0; y <= Ds; ++y)
       for (int z = 0; z <= Dt; ++z)
         for (int j = 0; j <= f.n[1]; ++j) b[i][y][z] += a[i][j][z] * bs[y][j];
-  std::vector<std::vector<std::vector<mpq_class>>> r(std::size_t(H + 1), std::vector<std::vector<mpq_class>>(std::size_t(Ds + 1), std::vector<mpq_class>(std::size_t(Dt + 1))));
+  std::vector<std::vector<std::vector<mpq_class>>> r(
+      std::size_t(H + 1),
+      std::vector<std::vector<mpq_class>>(std::size_t(Ds + 1), std::vector<mpq_class>(std::size_t(Dt + 1))));
   for (int x = 0; x <= H; ++x)
     for (int y = 0; y <= Ds; ++y)
       for (int z = 0; z <= Dt; ++z)

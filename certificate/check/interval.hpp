@@ -29,25 +29,68 @@ namespace eccd::check {
 // ------------------------------------------------------------------ MPFI
 class MI {
  public:
-  MI() { mpfi_init2(v_, 64); mpfi_set_si(v_, 0); }
-  MI(const mpq_class& q, int bits) { mpfi_init2(v_, bits); mpfi_set_q(v_, q.get_mpq_t()); }
-  MI(const mpq_class& lo, const mpq_class& hi, int bits) { mpfi_init2(v_, bits); mpfi_interv_q(v_, lo.get_mpq_t(), hi.get_mpq_t()); }
-  MI(const MI& o) { mpfi_init2(v_, mpfi_get_prec(o.v_)); mpfi_set(v_, o.v_); }
-  MI(MI&& o) noexcept { mpfi_init2(v_, mpfi_get_prec(o.v_)); mpfi_swap(v_, o.v_); }
+  MI() {
+    mpfi_init2(v_, 64);
+    mpfi_set_si(v_, 0);
+  }
+  MI(const mpq_class& q, int bits) {
+    mpfi_init2(v_, bits);
+    mpfi_set_q(v_, q.get_mpq_t());
+  }
+  MI(const mpq_class& lo, const mpq_class& hi, int bits) {
+    mpfi_init2(v_, bits);
+    mpfi_interv_q(v_, lo.get_mpq_t(), hi.get_mpq_t());
+  }
+  MI(const MI& o) {
+    mpfi_init2(v_, mpfi_get_prec(o.v_));
+    mpfi_set(v_, o.v_);
+  }
+  MI(MI&& o) noexcept {
+    mpfi_init2(v_, mpfi_get_prec(o.v_));
+    mpfi_swap(v_, o.v_);
+  }
   MI& operator=(const MI& o) {
-    if (this != &o) { mpfi_set_prec(v_, mpfi_get_prec(o.v_)); mpfi_set(v_, o.v_); }
+    if (this != &o) {
+      mpfi_set_prec(v_, mpfi_get_prec(o.v_));
+      mpfi_set(v_, o.v_);
+    }
     return *this;
   }
-  MI& operator=(MI&& o) noexcept { mpfi_swap(v_, o.v_); return *this; }
+  MI& operator=(MI&& o) noexcept {
+    mpfi_swap(v_, o.v_);
+    return *this;
+  }
   ~MI() { mpfi_clear(v_); }
 
   int bits() const { return int(mpfi_get_prec(v_)); }
-  friend MI operator+(const MI& a, const MI& b) { MI r = a.blank(b); mpfi_add(r.v_, a.v_, b.v_); return r; }
-  friend MI operator-(const MI& a, const MI& b) { MI r = a.blank(b); mpfi_sub(r.v_, a.v_, b.v_); return r; }
-  friend MI operator*(const MI& a, const MI& b) { MI r = a.blank(b); mpfi_mul(r.v_, a.v_, b.v_); return r; }
-  MI& operator+=(const MI& b) { mpfi_add(v_, v_, b.v_); return *this; }
-  MI& operator-=(const MI& b) { mpfi_sub(v_, v_, b.v_); return *this; }
-  MI operator-() const { MI r = *this; mpfi_neg(r.v_, v_); return r; }
+  friend MI operator+(const MI& a, const MI& b) {
+    MI r = a.blank(b);
+    mpfi_add(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend MI operator-(const MI& a, const MI& b) {
+    MI r = a.blank(b);
+    mpfi_sub(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend MI operator*(const MI& a, const MI& b) {
+    MI r = a.blank(b);
+    mpfi_mul(r.v_, a.v_, b.v_);
+    return r;
+  }
+  MI& operator+=(const MI& b) {
+    mpfi_add(v_, v_, b.v_);
+    return *this;
+  }
+  MI& operator-=(const MI& b) {
+    mpfi_sub(v_, v_, b.v_);
+    return *this;
+  }
+  MI operator-() const {
+    MI r = *this;
+    mpfi_neg(r.v_, v_);
+    return r;
+  }
   // d = y a + x d and d = y d + x b, in place (y = 1 - x; de Casteljau's steps without an allocation;
   // with point weights this form does not widen: the width of the result is the weighted mean of the widths)
   static void lerp_from(MI& d, const MI& a, const MI& x, const MI& y) {
@@ -74,8 +117,16 @@ class MI {
     if (mpfr_sgn(&v_[0].right) < 0) return -1;
     return 0;
   }
-  mpq_class lower() const { mpq_class q; mpfr_get_q(q.get_mpq_t(), &v_[0].left); return q; }
-  mpq_class upper() const { mpq_class q; mpfr_get_q(q.get_mpq_t(), &v_[0].right); return q; }
+  mpq_class lower() const {
+    mpq_class q;
+    mpfr_get_q(q.get_mpq_t(), &v_[0].left);
+    return q;
+  }
+  mpq_class upper() const {
+    mpq_class q;
+    mpfr_get_q(q.get_mpq_t(), &v_[0].right);
+    return q;
+  }
   double lo_d() const { return mpfr_get_d(&v_[0].left, MPFR_RNDD); }
   double hi_d() const { return mpfr_get_d(&v_[0].right, MPFR_RNDU); }
   double mid() const { return 0.5 * (lo_d() + hi_d()); }
@@ -120,9 +171,11 @@ struct DI {
     return x + (std::fabs(x) * 0x1p-50 + 0x1p-1074);
   }
   static DI of(const mpq_class& q) {
-    const double d = mpq_get_d(q.get_mpq_t());  // truncated: the exact value lies between d and the next double away from 0
+    const double d =
+        mpq_get_d(q.get_mpq_t());  // truncated: the exact value lies between d and the next double away from 0
     if (!std::isfinite(d)) return DI(-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
-    return DI(std::nextafter(d, -std::numeric_limits<double>::infinity()), std::nextafter(d, std::numeric_limits<double>::infinity()));
+    return DI(std::nextafter(d, -std::numeric_limits<double>::infinity()),
+              std::nextafter(d, std::numeric_limits<double>::infinity()));
   }
   static DI of(const MI& x) { return DI(x.lo_d(), x.hi_d()); }  // MPFR rounds each end outwards
   friend DI operator+(const DI& a, const DI& b) { return DI(down(a.lo + b.lo), up(a.hi + b.hi)); }

@@ -22,11 +22,15 @@ using KindChecker = void (*)(const CheckScene& scene, const nlohmann::json& cert
 
 // "eccd-certificate/2": rational scenes, 2D and 3D (certificate/check/exact_certificate.cpp).
 void check_exact_certificate(const CheckScene& scene, const nlohmann::json& cert, std::vector<std::string>& checked);
-// "eccd-bezier-certificate/2": 3D, shared parameter, the interval Bézier proof (certificate/check/bezier_certificate.cpp).
+// "eccd-bezier-certificate/2": 3D, shared parameter, the interval Bézier proof
+// (certificate/check/bezier_certificate.cpp).
 void check_bezier_certificate(const CheckScene& scene, const nlohmann::json& cert, std::vector<std::string>& checked);
-// "eccd-cycloidal-certificate/2": 2D, static and cycloidal motions, MPFI enclosures (certificate/check/cycloidal_certificate.cpp).
-void check_cycloidal_certificate(const CheckScene& scene, const nlohmann::json& cert, std::vector<std::string>& checked);
+// "eccd-cycloidal-certificate/2": 2D, static and cycloidal motions, MPFI enclosures
+// (certificate/check/cycloidal_certificate.cpp).
+void check_cycloidal_certificate(const CheckScene& scene, const nlohmann::json& cert,
+                                 std::vector<std::string>& checked);
 // "eccd-independent-certificate/3": 2D and 3D, independent parameters (certificate/check/independent_certificate.cpp).
-void check_independent_certificate(const CheckScene& scene, const nlohmann::json& cert, std::vector<std::string>& checked);
+void check_independent_certificate(const CheckScene& scene, const nlohmann::json& cert,
+                                   std::vector<std::string>& checked);
 
 }  // namespace eccd::check

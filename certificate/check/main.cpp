@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   bool as_json = false;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--json") == 0) as_json = true;
+    if (std::strcmp(argv[i], "--json") == 0)
+      as_json = true;
     else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
       std::cout << "usage: eccd-check SCENE CERT [--json]\n"
                    "Checks an eccd certificate against its scene with its own exact algebra (no solver code).\n"
@@ -45,9 +46,12 @@ int main(int argc, char** argv) {
     std::cout << j.dump(2) << "\n";
   } else {
     for (const auto& line : v.checked) std::cout << "ok  " << line << "\n";
-    if (v.outcome == Outcome::valid) std::cout << "VALID\n";
-    else if (v.outcome == Outcome::rejected) std::cout << "REJECTED: " << v.claim << ": " << v.reason << "\n";
-    else std::cerr << "eccd-check: " << v.reason << "\n";
+    if (v.outcome == Outcome::valid)
+      std::cout << "VALID\n";
+    else if (v.outcome == Outcome::rejected)
+      std::cout << "REJECTED: " << v.claim << ": " << v.reason << "\n";
+    else
+      std::cerr << "eccd-check: " << v.reason << "\n";
   }
   return v.outcome == Outcome::valid ? 0 : v.outcome == Outcome::rejected ? 1 : 2;
 }

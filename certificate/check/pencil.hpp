@@ -37,7 +37,10 @@ inline mpq_class determinant(QMatrix m) {
     std::size_t p = c;
     while (p < n && sgn(m[p][c]) == 0) ++p;
     if (p == n) return 0;
-    if (p != c) { std::swap(m[p], m[c]); det = -det; }
+    if (p != c) {
+      std::swap(m[p], m[c]);
+      det = -det;
+    }
     det *= m[c][c];
     for (std::size_t r = c + 1; r < n; ++r) {
       if (sgn(m[r][c]) == 0) continue;
@@ -104,8 +107,10 @@ inline ZPoly product(const ZPoly& a, const ZPoly& b) {
 inline void add_to(ZPoly& acc, const ZPoly& p, int sign) {
   if (acc.size() < p.size()) acc.resize(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (sign > 0) acc[i] += p[i];
-    else acc[i] -= p[i];
+    if (sign > 0)
+      acc[i] += p[i];
+    else
+      acc[i] -= p[i];
   }
 }
 inline ZPoly determinant(const std::vector<std::vector<ZPoly>>& m) {
@@ -322,7 +327,8 @@ inline mpz_class subresultant_at(const std::vector<mpz_class>& c, int j, int i) 
   std::vector<mpz_class> d;
   for (int k = 1; k <= n; ++k) d.push_back(k * c[std::size_t(k)]);
   const int rows = n + m - 2 * j, top = n + m - j - 1;
-  std::vector<std::vector<mpz_class>> sq(static_cast<std::size_t>(rows), std::vector<mpz_class>(static_cast<std::size_t>(rows)));
+  std::vector<std::vector<mpz_class>> sq(static_cast<std::size_t>(rows),
+                                         std::vector<mpz_class>(static_cast<std::size_t>(rows)));
   for (int r = 0; r < rows; ++r) {
     const bool is_f = r < m - j;
     const std::vector<mpz_class>& p = is_f ? c : d;
@@ -370,9 +376,10 @@ inline mpq_class subresultant_at(const std::vector<mpq_class>& c, int j, int i) 
 inline mpz_class quartic_discriminant_at(const std::vector<mpz_class>& g) {
   const mpz_class &a = g[4], &b = g[3], &c = g[2], &d = g[1], &e = g[0];
   const mpz_class a2 = a * a, b2 = b * b, c2 = c * c, d2 = d * d, e2 = e * e;
-  return 256 * a2 * a * e2 * e - 192 * a2 * b * d * e2 - 128 * a2 * c2 * e2 + 144 * a2 * c * d2 * e - 27 * a2 * d2 * d2 +
-         144 * a * b2 * c * e2 - 6 * a * b2 * d2 * e - 80 * a * b * c2 * d * e + 18 * a * b * c * d2 * d + 16 * a * c2 * c2 * e -
-         4 * a * c2 * c * d2 - 27 * b2 * b2 * e2 + 18 * b2 * b * c * d * e - 4 * b2 * b * d2 * d - 4 * b2 * c2 * c * e + b2 * c2 * d2;
+  return 256 * a2 * a * e2 * e - 192 * a2 * b * d * e2 - 128 * a2 * c2 * e2 + 144 * a2 * c * d2 * e -
+         27 * a2 * d2 * d2 + 144 * a * b2 * c * e2 - 6 * a * b2 * d2 * e - 80 * a * b * c2 * d * e +
+         18 * a * b * c * d2 * d + 16 * a * c2 * c2 * e - 4 * a * c2 * c * d2 - 27 * b2 * b2 * e2 +
+         18 * b2 * b * c * d * e - 4 * b2 * b * d2 * d - 4 * b2 * c2 * c * e + b2 * c2 * d2;
 }
 
 // The discriminant of the cubic a λ³ + b λ² + c λ + d.

@@ -240,7 +240,10 @@ inline int descartes(const QPoly& p, const mpq_class& lo, const mpq_class& hi) {
   // D^n p((z + A) / D) then z = B y: D^n p(lo + w y).
   qpoly_impl::taylor_shift(a, A);
   mpz_class bp = 1;
-  for (auto& x : a) { x *= bp; bp *= B; }
+  for (auto& x : a) {
+    x *= bp;
+    bp *= B;
+  }
   // (1 + y)^n q(1 / (1 + y)): reverse, shift by 1.
   std::vector<mpz_class> r(a.rbegin(), a.rend());
   qpoly_impl::taylor_shift(r, 1);

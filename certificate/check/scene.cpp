@@ -45,7 +45,10 @@ bool parse_exact(const std::string& s, mpq_class& out) {
   long places = 0;
   bool dot = false, any = false;
   for (; i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || (s[i] == '.' && !dot)); ++i) {
-    if (s[i] == '.') { dot = true; continue; }
+    if (s[i] == '.') {
+      dot = true;
+      continue;
+    }
     digits += s[i];
     any = true;
     if (dot) ++places;
@@ -95,7 +98,8 @@ QPoly poly_of(const json& j, const std::string& label, const std::string& place)
     const json& b = member(j, "bernstein", label, place);
     if (!b.is_array() || b.empty()) fail(label, place + "/bernstein", "expected a non-empty array of coefficients");
     std::vector<mpq_class> c;
-    for (std::size_t i = 0; i < b.size(); ++i) c.push_back(scene_number(b[i], label, place + "/bernstein/" + std::to_string(i)));
+    for (std::size_t i = 0; i < b.size(); ++i)
+      c.push_back(scene_number(b[i], label, place + "/bernstein/" + std::to_string(i)));
     return bernstein_to_power(c);
   }
   if (j.is_array()) {
@@ -109,7 +113,8 @@ QPoly poly_of(const json& j, const std::string& label, const std::string& place)
 
 QMatrix shape_of(const json& j, int H, const std::string& label, const std::string& place) {
   QMatrix q(static_cast<std::size_t>(H), std::vector<mpq_class>(static_cast<std::size_t>(H)));
-  if (!j.is_object() || j.size() != 1) fail(label, place, "a shape takes exactly one of semi_axes, semi_axes_squared, matrix");
+  if (!j.is_object() || j.size() != 1)
+    fail(label, place, "a shape takes exactly one of semi_axes, semi_axes_squared, matrix");
   if (j.contains("semi_axes") || j.contains("semi_axes_squared")) {
     const bool squared = j.contains("semi_axes_squared");
     const json& v = j.begin().value();
@@ -129,11 +134,13 @@ QMatrix shape_of(const json& j, int H, const std::string& label, const std::stri
     if (!m[std::size_t(r)].is_array() || int(m[std::size_t(r)].size()) != H)
       fail(label, place + "/matrix/" + std::to_string(r), "expected " + std::to_string(H) + " entries");
     for (int c = 0; c < H; ++c)
-      q[std::size_t(r)][std::size_t(c)] = scene_number(m[std::size_t(r)][std::size_t(c)], label, place + "/matrix/" + std::to_string(r) + "/" + std::to_string(c));
+      q[std::size_t(r)][std::size_t(c)] = scene_number(
+          m[std::size_t(r)][std::size_t(c)], label, place + "/matrix/" + std::to_string(r) + "/" + std::to_string(c));
   }
   for (int r = 0; r < H; ++r)
     for (int c = 0; c < r; ++c)
-      if (q[std::size_t(r)][std::size_t(c)] != q[std::size_t(c)][std::size_t(r)]) fail(label, place + "/matrix", "not symmetric");
+      if (q[std::size_t(r)][std::size_t(c)] != q[std::size_t(c)][std::size_t(r)])
+        fail(label, place + "/matrix", "not symmetric");
   return q;
 }
 
@@ -143,7 +150,8 @@ PolyMatrix identity(int H) {
   return m;
 }
 
-void motion_of(const json& j, int H, CheckObject& o, bool& cycloidal, const std::string& label, const std::string& place) {
+void motion_of(const json& j, int H, CheckObject& o, bool& cycloidal, const std::string& label,
+               const std::string& place) {
   const json& type = member(j, "type", label, place);
   if (!type.is_string()) fail(label, place + "/type", "expected a string");
   o.motion_type = type.get<std::string>();
@@ -158,18 +166,23 @@ void motion_of(const json& j, int H, CheckObject& o, bool& cycloidal, const std:
       if (!m[std::size_t(r)].is_array() || int(m[std::size_t(r)].size()) != H)
         fail(label, place + "/m/" + std::to_string(r), "expected " + std::to_string(H) + " entries");
       for (int c = 0; c < H; ++c)
-        o.M[std::size_t(r)][std::size_t(c)] = P(m[std::size_t(r)][std::size_t(c)], place + "/m/" + std::to_string(r) + "/" + std::to_string(c));
+        o.M[std::size_t(r)][std::size_t(c)] =
+            P(m[std::size_t(r)][std::size_t(c)], place + "/m/" + std::to_string(r) + "/" + std::to_string(c));
     }
     for (int c = 0; c + 1 < H; ++c)
-      if (!o.M[std::size_t(H - 1)][std::size_t(c)].zero()) fail(label, place + "/m", "the last row must be (0, ..., 0, w(t))");
+      if (!o.M[std::size_t(H - 1)][std::size_t(c)].zero())
+        fail(label, place + "/m", "the last row must be (0, ..., 0, w(t))");
   } else if (o.motion_type == "kinematic") {
     if (H != 3) fail(label, place, "a kinematic motion is 2D only");
     const json& d = member(j, "d", label, place);
     if (!d.is_array() || d.size() != 4) fail(label, place + "/d", "expected 4 polynomials");
-    QPoly d0 = P(d[0], place + "/d/0"), d1 = P(d[1], place + "/d/1"), d2 = P(d[2], place + "/d/2"), d3 = P(d[3], place + "/d/3");
+    QPoly d0 = P(d[0], place + "/d/0"), d1 = P(d[1], place + "/d/1"), d2 = P(d[2], place + "/d/2"),
+          d3 = P(d[3], place + "/d/3");
     const mpq_class two = 2;
     QPoly c = d2 * d2 - d3 * d3, s = two * (d2 * d3);
-    o.M = {{c, s, two * (d0 * d3 - d1 * d2)}, {mpq_class(-1) * s, c, two * (d0 * d2 + d1 * d3)}, {QPoly(), QPoly(), d2 * d2 + d3 * d3}};
+    o.M = {{c, s, two * (d0 * d3 - d1 * d2)},
+           {mpq_class(-1) * s, c, two * (d0 * d2 + d1 * d3)},
+           {QPoly(), QPoly(), d2 * d2 + d3 * d3}};
   } else if (o.motion_type == "euler") {
     if (H != 4) fail(label, place, "an euler motion is 3D only");
     const json& ej = member(j, "e", label, place);
@@ -179,7 +192,9 @@ void motion_of(const json& j, int H, CheckObject& o, bool& cycloidal, const std:
     QPoly e[4], v[3];
     for (int i = 0; i < 4; ++i) e[i] = P(ej[std::size_t(i)], place + "/e/" + std::to_string(i));
     for (int i = 0; i < 3; ++i) v[i] = P(vj[std::size_t(i)], place + "/translation/" + std::to_string(i));
-    QPoly v3 = j.contains("translation_denominator") ? P(j["translation_denominator"], place + "/translation_denominator") : QPoly::constant(1);
+    QPoly v3 = j.contains("translation_denominator")
+                   ? P(j["translation_denominator"], place + "/translation_denominator")
+                   : QPoly::constant(1);
     const mpq_class two = 2;
     QPoly e00 = e[0] * e[0], e11 = e[1] * e[1], e22 = e[2] * e[2], e33 = e[3] * e[3];
     QPoly R[3][3] = {{e00 + e11 - e22 - e33, two * (e[1] * e[2] - e[0] * e[3]), two * (e[1] * e[3] + e[0] * e[2])},
@@ -199,11 +214,15 @@ void motion_of(const json& j, int H, CheckObject& o, bool& cycloidal, const std:
     const json& a = member(j, "angle_over_pi", label, place);
     const json& tr = member(j, "translation", label, place);
     if (!a.is_array() || a.size() != 2) fail(label, place + "/angle_over_pi", "expected [theta0, theta1]");
-    if (!tr.is_array() || tr.size() != 2 || !tr[0].is_array() || tr[0].size() != 2 || !tr[1].is_array() || tr[1].size() != 2)
+    if (!tr.is_array() || tr.size() != 2 || !tr[0].is_array() || tr[0].size() != 2 || !tr[1].is_array() ||
+        tr[1].size() != 2)
       fail(label, place + "/translation", "expected [[x0, x1], [y0, y1]]");
-    o.cycloid = {scene_number(a[0], label, place + "/angle_over_pi/0"), scene_number(a[1], label, place + "/angle_over_pi/1"),
-                 scene_number(tr[0][0], label, place + "/translation/0/0"), scene_number(tr[0][1], label, place + "/translation/0/1"),
-                 scene_number(tr[1][0], label, place + "/translation/1/0"), scene_number(tr[1][1], label, place + "/translation/1/1")};
+    o.cycloid = {scene_number(a[0], label, place + "/angle_over_pi/0"),
+                 scene_number(a[1], label, place + "/angle_over_pi/1"),
+                 scene_number(tr[0][0], label, place + "/translation/0/0"),
+                 scene_number(tr[0][1], label, place + "/translation/0/1"),
+                 scene_number(tr[1][0], label, place + "/translation/1/0"),
+                 scene_number(tr[1][1], label, place + "/translation/1/1")};
   } else {
     fail(label, place + "/type", "unknown motion type \"" + o.motion_type + "\"");
   }

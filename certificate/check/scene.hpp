@@ -45,9 +45,10 @@ using PolyMatrix = std::vector<std::vector<QPoly>>;
 
 struct CheckObject {
   QMatrix Q;
-  PolyMatrix M;            // empty for a cycloidal motion
+  PolyMatrix M;             // empty for a cycloidal motion
   std::string motion_type;  // static, matrix, kinematic, euler, cycloidal
-  std::vector<mpq_class> cycloid;  // cycloidal: θ0, θ1, x0, x1, y0, y1 (angle π(θ0 + θ1 t), translation (x0 + x1 t, y0 + y1 t))
+  std::vector<mpq_class>
+      cycloid;  // cycloidal: θ0, θ1, x0, x1, y0, y1 (angle π(θ0 + θ1 t), translation (x0 + x1 t, y0 + y1 t))
 };
 
 struct CheckScene {

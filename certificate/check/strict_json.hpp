@@ -48,7 +48,8 @@ class Builder {
   bool number_float(json::number_float_t, const std::string& text) {
     bool digits = !text.empty();
     for (std::size_t i = 0; i < text.size(); ++i)
-      if (!(std::isdigit(static_cast<unsigned char>(text[i])) || (i == 0 && text[i] == '-' && text.size() > 1))) digits = false;
+      if (!(std::isdigit(static_cast<unsigned char>(text[i])) || (i == 0 && text[i] == '-' && text.size() > 1)))
+        digits = false;
     return put(json(digits ? text : "json-float:" + text));
   }
   bool string(std::string& s) { return put(json(s)); }
@@ -135,7 +136,8 @@ inline StrictDocument parse_strict(const std::string& text, const std::string& l
   StrictDocument d;
   strict_json_impl::Builder b(d.value);
   const bool ok = nlohmann::json::sax_parse(text, &b);
-  if (!ok) throw JsonTextError(label + ": not valid JSON: " + (b.error().empty() ? std::string("parse error") : b.error()));
+  if (!ok)
+    throw JsonTextError(label + ": not valid JSON: " + (b.error().empty() ? std::string("parse error") : b.error()));
   d.structure_problem = b.problem;
   return d;
 }

@@ -16,8 +16,8 @@ namespace eccd::check {
 namespace {
 
 struct Kind {
-  const char* format;      // the format this checker covers
-  const char* replaces;    // an older version of it, refused with a message saying so ("" for none)
+  const char* format;    // the format this checker covers
+  const char* replaces;  // an older version of it, refused with a message saying so ("" for none)
   KindChecker check;
 };
 
@@ -51,7 +51,8 @@ bool covers_format(const std::string& format) {
   return false;
 }
 
-Verdict check_certificate_text(const std::string& scene_text, const std::string& scene_label, const std::string& cert_text, const std::string& cert_label) {
+Verdict check_certificate_text(const std::string& scene_text, const std::string& scene_label,
+                               const std::string& cert_text, const std::string& cert_label) {
   Verdict v;
   CheckScene sc;
   StrictDocument cert;
@@ -72,10 +73,12 @@ Verdict check_certificate_text(const std::string& scene_text, const std::string&
     const json& fmt = at(cert.value, "format", "certificate");
     const Kind* kind = nullptr;
     for (const Kind& k : kKinds) {
-      if (fmt == k.format) kind = &k;
+      if (fmt == k.format)
+        kind = &k;
       else if (*k.replaces && fmt == k.replaces)
         reject("certificate format", std::string("format: expected \"") + k.format + "\", got " + shown(fmt) +
-                                         " (an older version, no longer accepted: its checker needed the prover's code or a search; run `eccd certify` again)");
+                                         " (an older version, no longer accepted: its checker needed the prover's code "
+                                         "or a search; run `eccd certify` again)");
     }
     if (!kind) {
       v.outcome = Outcome::unreadable;
@@ -91,7 +94,8 @@ Verdict check_certificate_text(const std::string& scene_text, const std::string&
     v.reason = r.reason;
   } catch (const std::bad_alloc&) {
     throw;
-  } catch (const std::exception& e) {  // arithmetic refused (a division by zero in a forged input): rejected, not a crash
+  } catch (
+      const std::exception& e) {  // arithmetic refused (a division by zero in a forged input): rejected, not a crash
     v.outcome = Outcome::rejected;
     v.claim = "certificate format";
     v.reason = std::string("the certificate cannot be checked: ") + e.what();

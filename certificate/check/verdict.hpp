@@ -29,8 +29,8 @@ struct Verdict {
 bool covers_format(const std::string& format);
 
 // Checks the certificate text against the scene text (labels name the files in messages).
-Verdict check_certificate_text(const std::string& scene_text, const std::string& scene_label, const std::string& cert_text,
-                               const std::string& cert_label);
+Verdict check_certificate_text(const std::string& scene_text, const std::string& scene_label,
+                               const std::string& cert_text, const std::string& cert_label);
 
 // The same from two files (unreadable if either cannot be read).
 Verdict check_certificate_files(const std::string& scene_path, const std::string& cert_path);

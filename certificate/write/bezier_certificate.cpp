@@ -34,7 +34,11 @@ using krawczyk_method::restrict_axis;
 
 const int kBits = 160;
 
-std::string q(const mpq_class& x) { mpq_class y = x; y.canonicalize(); return y.get_str(); }
+std::string q(const mpq_class& x) {
+  mpq_class y = x;
+  y.canonicalize();
+  return y.get_str();
+}
 
 // F(u, t)'s net from the scene, exactly, as a tensor net (u, s, t) of degree 0 in s, and as rows b[u][t].
 BiBern<Rational> exact_bi(const Scene& scene) {
@@ -62,14 +66,18 @@ TriBern<Interval> to_double_intervals(const TriBern<I>& f) {
 // The exclusion of an end as the subdivision tree the checker replays (certificate/check/bezier_certificate.cpp):
 // preorder, '1' split / '0' leaf; u halved at every level, t at every second; a leaf lies in the Krawczyk box's
 // u-range [ku0, ku1] or has F or F_u of one proved sign.
-void exclusion_tree(const TriBern<Interval>& f, const TriBern<Interval>& fu, const mpq_class& u0, const mpq_class& u1, int depth,
-                    const mpq_class& ku0, const mpq_class& ku1, long& nodes, std::string& out) {
-  if (++nodes > kBezierMaxExclusionBoxes) throw CertificationError("the exclusion of an end needs more than " + std::to_string(kBezierMaxExclusionBoxes) + " boxes");
+void exclusion_tree(const TriBern<Interval>& f, const TriBern<Interval>& fu, const mpq_class& u0, const mpq_class& u1,
+                    int depth, const mpq_class& ku0, const mpq_class& ku1, long& nodes, std::string& out) {
+  if (++nodes > kBezierMaxExclusionBoxes)
+    throw CertificationError("the exclusion of an end needs more than " + std::to_string(kBezierMaxExclusionBoxes) +
+                             " boxes");
   if ((u0 >= ku0 && u1 <= ku1) || f.strict_sign() != 0 || fu.strict_sign() != 0) {
     out += '0';
     return;
   }
-  if (depth >= kBezierMaxExclusionDepth) throw CertificationError("the exclusion of an end does not close within " + std::to_string(kBezierMaxExclusionDepth) + " levels");
+  if (depth >= kBezierMaxExclusionDepth)
+    throw CertificationError("the exclusion of an end does not close within " +
+                             std::to_string(kBezierMaxExclusionDepth) + " levels");
   out += '1';
   const Interval half(0.5, 0.5);
   const mpq_class um = (u0 + u1) / 2;
@@ -96,7 +104,8 @@ json box_json(const BezierBox& b) { return json::array({q(b.u_lo), q(b.u_hi), q(
 
 json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* solved) {
   const auto start = std::chrono::steady_clock::now();
-  if (!bezier_certificate_scene(s)) throw CertificationError("a Bézier certificate is for 3D scenes with shared parameters");
+  if (!bezier_certificate_scene(s))
+    throw CertificationError("a Bézier certificate is for 3D scenes with shared parameters");
   BezierProofOptions po;
   po.record = true;
   po.bits = kBits;
@@ -104,13 +113,18 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
   if (!r.decided) throw CertificationError("the interval Bézier proof does not decide the scene: " + r.reason);
   json c;
   c["format"] = kBezierCertificateFormat;
-  c["scene"] = {{"path", s.path}, {"name", s.name}, {"dim", scene_doc.at("dim")}, {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")}};
+  c["scene"] = {{"path", s.path},
+                {"name", s.name},
+                {"dim", scene_doc.at("dim")},
+                {"a", scene_doc.at("a")},
+                {"b", scene_doc.at("b")}};
   if (scene_doc.contains("parameters")) c["scene"]["parameters"] = scene_doc["parameters"];
-  c["convention"] = "F(u, t) = det((u - 1) A(t) - u B(t)) in tensor Bernstein form on [0, 1]^2 (degree 4 in u), built exactly from "
-                    "the scene and given in net (rows u = 0..4, columns t = 0..degree_t); boxes are [u0, u1, t0, t1] in absolute "
-                    "coordinates; an end's boxes are its Krawczyk chain on (F, F_u) in (u, t) and its exclusion the subdivision "
-                    "tree of [0, 1] x [lo, hi] in preorder ('1' split: u halved at every level, t at every second; '0' leaf: in "
-                    "the chain box's u-range, or F or F_u of one sign); every sign is proved by outward-rounded intervals";
+  c["convention"] =
+      "F(u, t) = det((u - 1) A(t) - u B(t)) in tensor Bernstein form on [0, 1]^2 (degree 4 in u), built exactly from "
+      "the scene and given in net (rows u = 0..4, columns t = 0..degree_t); boxes are [u0, u1, t0, t1] in absolute "
+      "coordinates; an end's boxes are its Krawczyk chain on (F, F_u) in (u, t) and its exclusion the subdivision "
+      "tree of [0, 1] x [lo, hi] in preorder ('1' split: u halved at every level, t at every second; '0' leaf: in "
+      "the chain box's u-range, or F or F_u of one sign); every sign is proved by outward-rounded intervals";
   c["precision_bits"] = kBits;
   c["answer"] = answer_to_json(r.answer);
   // the net: F exactly (the checker verifies it against the scene at rational points, its own way)
@@ -121,7 +135,8 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
     for (const auto& x : row) r1.push_back(q(x));
     rows.push_back(r1);
   }
-  // the moving solids it is built from: A(t) = N_a(t)^T Q_a N_a(t), N_a a polynomial multiple of M_a(t)^-1 (the checker verifies both)
+  // the moving solids it is built from: A(t) = N_a(t)^T Q_a N_a(t), N_a a polynomial multiple of M_a(t)^-1 (the checker
+  // verifies both)
   const PreparedPair<4> prep = prepare_pair<4>(s);
   auto mat = [](const auto& m) {
     json r = json::array();
@@ -146,7 +161,8 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
     return r;
   };
   c["net"] = {{"degree_u", bi.degree_u()}, {"degree_t", bi.degree_t()}, {"coefficients", rows},
-              {"shape_a", mat(prep.qa)}, {"shape_b", mat(prep.qb)}, {"inverse_a", pmat(prep.na)}, {"inverse_b", pmat(prep.nb)}};
+              {"shape_a", mat(prep.qa)},   {"shape_b", mat(prep.qb)},   {"inverse_a", pmat(prep.na)},
+              {"inverse_b", pmat(prep.nb)}};
   const TriBern<Rational> exact = exact_net(bi);
   TriBern<I> F;
   F.n = exact.n;
@@ -156,7 +172,11 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
   for (const BezierPiece& p : r.pieces) {
     json boxes = json::array();
     for (const auto& b : p.boxes) boxes.push_back(box_json(b));
-    json item = {{"kind", p.kind == BezierPiece::out ? "out" : p.kind == BezierPiece::in ? "in" : "end"}, {"lo", q(p.lo)}, {"hi", q(p.hi)},
+    json item = {{"kind", p.kind == BezierPiece::out  ? "out"
+                          : p.kind == BezierPiece::in ? "in"
+                                                      : "end"},
+                 {"lo", q(p.lo)},
+                 {"hi", q(p.hi)},
                  {"boxes", boxes}};
     if (p.kind == BezierPiece::end) {
       item["bracket"] = {q(p.bracket_lo), q(p.bracket_hi)};
@@ -178,7 +198,8 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
   return c;
 }
 
-json make_certified_mode_certificate(const Scene& s, const json& scene_doc, std::string& route, std::string& why, Solution* solved) {
+json make_certified_mode_certificate(const Scene& s, const json& scene_doc, std::string& route, std::string& why,
+                                     Solution* solved) {
   why.clear();
   if (bezier_certificate_scene(s)) {
     try {

@@ -34,10 +34,10 @@ bool bezier_certificate_scene(const Scene& s);
 nlohmann::json make_bezier_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved = nullptr);
 
 // `eccd certify --arith certified`: the Bézier certificate when the scene is one and prove_bezier decides it,
-// else make_certificate's (certificate/write/exact_certificate.hpp: exact, cycloidal or independent). `route` receives "bezier",
-// "exact", "cycloidal" or "independent"; `why` why the Bézier route was not taken ("" when it was).
-nlohmann::json make_certified_mode_certificate(const Scene& s, const nlohmann::json& scene_doc, std::string& route, std::string& why,
-                                               Solution* solved = nullptr);
+// else make_certificate's (certificate/write/exact_certificate.hpp: exact, cycloidal or independent). `route` receives
+// "bezier", "exact", "cycloidal" or "independent"; `why` why the Bézier route was not taken ("" when it was).
+nlohmann::json make_certified_mode_certificate(const Scene& s, const nlohmann::json& scene_doc, std::string& route,
+                                               std::string& why, Solution* solved = nullptr);
 
 // The checker's verdict on `cert` for scene `s` (scene_doc: the scene file's JSON).
 CertificateCheck check_bezier_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
@@ -46,7 +46,8 @@ CertificateCheck check_bezier_certificate(const Scene& s, const nlohmann::json& 
 // 2000000 boxes, Krawczyk chains of at most 64 boxes, the exclusion tree of one end at most 60000 boxes, 40 levels deep
 // (the writer's; the checker's own bounds are in certificate/check/bezier_certificate.cpp).
 inline constexpr int kBezierMinBits = 64, kBezierMaxBits = 1024;
-inline constexpr std::size_t kBezierMaxRationalBits = 1024, kBezierMaxPieces = 200000, kBezierMaxBoxes = 2000000, kBezierMaxChain = 64;
+inline constexpr std::size_t kBezierMaxRationalBits = 1024, kBezierMaxPieces = 200000, kBezierMaxBoxes = 2000000,
+                             kBezierMaxChain = 64;
 inline constexpr long kBezierMaxExclusionBoxes = 60000;
 inline constexpr int kBezierMaxExclusionDepth = 40;
 

@@ -39,7 +39,8 @@ struct Reject {
 inline const json& at(const json& j, const std::string& key, const std::string& place, bool name_non_object = true) {
   if (!j.is_object()) {
     if (name_non_object)
-      reject("certificate format", place + ": expected an object with the key \"" + key + "\", got " + j.dump().substr(0, 40));
+      reject("certificate format",
+             place + ": expected an object with the key \"" + key + "\", got " + j.dump().substr(0, 40));
     reject("certificate format", place + ": missing \"" + key + "\"");
   }
   if (!j.contains(key)) reject("certificate format", place + ": missing \"" + key + "\"");
@@ -53,7 +54,8 @@ inline Rational read_rational(const json& j, const std::string& place, std::size
   const std::size_t max_chars = 2 * (max_bits * 30103 / 100000 + 2) + 8;
   auto too_big = [&]() {
     reject("certificate format", place + ": a rational of more than " + std::to_string(max_bits) +
-                                     " bits, beyond what any certificate of this scene needs (" + std::to_string(text.size()) + " characters)");
+                                     " bits, beyond what any certificate of this scene needs (" +
+                                     std::to_string(text.size()) + " characters)");
   };
   if (text.size() > max_chars) too_big();
   Rational q;
@@ -69,7 +71,8 @@ inline Rational read_rational(const json& j, const std::string& place, std::size
 // The same bound with the short messages of the interval certificates (cycloidal, independent, Bézier).
 inline mpq_class read_short_rational(const json& j, const std::string& place, std::size_t max_bits) {
   if (!j.is_string() || j.get_ref<const std::string&>().size() > 2 * max_bits)
-    reject("certificate format", place + ": expected a rational \"p/q\" of at most " + std::to_string(max_bits) + " bits");
+    reject("certificate format",
+           place + ": expected a rational \"p/q\" of at most " + std::to_string(max_bits) + " bits");
   mpq_class q;
   try {
     q = parse_rational(j.get<std::string>());
@@ -82,14 +85,17 @@ inline mpq_class read_short_rational(const json& j, const std::string& place, st
 }
 
 // n rationals (a JSON array of exactly n).
-inline std::vector<mpq_class> read_short_rationals(const json& j, std::size_t n, const std::string& place, std::size_t max_bits) {
-  if (!j.is_array() || j.size() != n) reject("certificate format", place + ": expected " + std::to_string(n) + " rationals");
+inline std::vector<mpq_class> read_short_rationals(const json& j, std::size_t n, const std::string& place,
+                                                   std::size_t max_bits) {
+  if (!j.is_array() || j.size() != n)
+    reject("certificate format", place + ": expected " + std::to_string(n) + " rationals");
   std::vector<mpq_class> r;
   for (std::size_t i = 0; i < n; ++i) r.push_back(read_short_rational(j[i], place, max_bits));
   return r;
 }
 
-// Runs check() (which appends to `checked`) into a verdict: VALID when it returns, the first failed claim when it throws.
+// Runs check() (which appends to `checked`) into a verdict: VALID when it returns, the first failed claim when it
+// throws.
 template <class Check>
 CertificateCheck run_checker(Check&& check, std::vector<std::string>& checked) {
   CertificateCheck out;
@@ -119,7 +125,8 @@ inline void require_same_intervals(const std::vector<std::pair<Instant, Instant>
                                    const std::vector<std::pair<Instant, Instant>>& y, const std::string& what,
                                    const std::string& source) {
   if (x.size() != y.size())
-    reject("answer", source + " give " + std::to_string(x.size()) + " " + what + ", the certificate " + std::to_string(y.size()));
+    reject("answer",
+           source + " give " + std::to_string(x.size()) + " " + what + ", the certificate " + std::to_string(y.size()));
   for (std::size_t i = 0; i < x.size(); ++i)
     if (!same_instant(x[i].first, y[i].first) || !same_instant(x[i].second, y[i].second))
       reject("answer", what + " " + std::to_string(i + 1) + " differs from the one " + source + " give");
@@ -130,12 +137,12 @@ inline void require_same_intervals(const std::vector<std::pair<Instant, Instant>
 // certificate (`self`) and never writes a claim it cannot re-prove; it stamps
 // the seconds taken and fills the proved run's Solution with what both proofs
 // share (the caller adds its own counters and details).
-inline void finish_proof_certificate(nlohmann::json& c, const CertificateCheck& self, const std::string& format, int bits,
-                                     const Answer& answer, const std::string& method,
+inline void finish_proof_certificate(nlohmann::json& c, const CertificateCheck& self, const std::string& format,
+                                     int bits, const Answer& answer, const std::string& method,
                                      std::chrono::steady_clock::time_point start, Solution* solved) {
   if (!self.valid)
-    throw CertificationError("internal: the " + format + " certificate does not pass its own check: " + self.failed_claim +
-                             ": " + self.reason);
+    throw CertificationError("internal: the " + format +
+                             " certificate does not pass its own check: " + self.failed_claim + ": " + self.reason);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   c["seconds"] = seconds;
   if (!solved) return;

@@ -20,7 +20,8 @@ namespace {
 using json = nlohmann::json;
 
 const char* const kConvention =
-    "f(lambda; t) = det(lambda A(t) - B(t)) = g3 lambda^3 + g2 lambda^2 + g1 lambda + g0 with A(t), B(t) of the scene's "
+    "f(lambda; t) = det(lambda A(t) - B(t)) = g3 lambda^3 + g2 lambda^2 + g1 lambda + g0 with A(t), B(t) of the "
+    "scene's "
     "static or cycloidal motions (kernel/cycloidal_motion.hpp, 003 section V); Delta = the discriminant of that cubic; "
     "every claim is proved by MPFI interval evaluation at precision_bits (outward rounding)";
 
@@ -46,17 +47,26 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
   Solution sol = run_certified_cycloidal(s, {}, Variant::answer);
   const int bits = decided_bits(sol);
   const CycloidalEnclosures enc(s, bits);
-  struct Stretch { mpq_class lo, hi; bool simple; };
+  struct Stretch {
+    mpq_class lo, hi;
+    bool simple;
+  };
   std::vector<Stretch> crit;
   for (const auto& c : sol.critical) {
     if (!c.t.certified()) throw CertificationError("a critical instant of the certified run has no bracket");
     crit.push_back({*c.t.lo, *c.t.hi, c.multiplicity == 1});
   }
   // The timeline's instants: 0, the stretches, 1 (a stretch reaching 0 or 1 replaces that end).
-  struct Inst { mpq_class lo, hi; std::string kind; Status status = Status::uncertain; json evidence; };
+  struct Inst {
+    mpq_class lo, hi;
+    std::string kind;
+    Status status = Status::uncertain;
+    json evidence;
+  };
   std::vector<Inst> inst;
   if (crit.empty() || crit.front().lo != 0) inst.push_back({0, 0, "end", Status::uncertain, json()});
-  for (const auto& c : crit) inst.push_back({c.lo, c.hi, c.simple ? "simple_root" : "undecided", Status::uncertain, json()});
+  for (const auto& c : crit)
+    inst.push_back({c.lo, c.hi, c.simple ? "simple_root" : "undecided", Status::uncertain, json()});
   if (crit.empty() || crit.back().hi != 1) inst.push_back({1, 1, "end", Status::uncertain, json()});
   // Gap covers first: every gap between consecutive instants cut into proved root-free pieces. An undecided
   // stretch at 0 or 1 comes from the certified run as the end point itself ([0, 0] or [1, 1]); its extent is
@@ -68,13 +78,20 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
     const bool grow_right = right.kind == "undecided" && right.lo == 1 && right.hi == 1;
     std::vector<mpq_class>& cuts = gap_cuts[k];
     // left to right (or right to left when the stretch at 1 grows), bisecting until each piece is root-free
-    std::function<void(const mpq_class&, const mpq_class&, int)> cover = [&](const mpq_class& x, const mpq_class& y, int depth) {
+    std::function<void(const mpq_class&, const mpq_class&, int)> cover = [&](const mpq_class& x, const mpq_class& y,
+                                                                             int depth) {
       if (enc.root_free(x, y)) return;
-      if (depth >= 64 && grow_left && x == left.hi) { left.hi = y; return; }
-      if (depth >= 64 && grow_right && y == right.lo) { right.lo = x; return; }
+      if (depth >= 64 && grow_left && x == left.hi) {
+        left.hi = y;
+        return;
+      }
+      if (depth >= 64 && grow_right && y == right.lo) {
+        right.lo = x;
+        return;
+      }
       if (depth >= 200 || cuts.size() >= kCycloidalMaxGapPoints)
-        throw CertificationError("no root-free cover of the gap [" + left.hi.get_str() + ", " + right.lo.get_str() + "] near t = " +
-                                 decimal_string(x, 12));
+        throw CertificationError("no root-free cover of the gap [" + left.hi.get_str() + ", " + right.lo.get_str() +
+                                 "] near t = " + decimal_string(x, 12));
       const mpq_class m = (x + y) / 2;
       if (grow_right) {
         cover(m, y, depth + 1);
@@ -102,20 +119,30 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
     json e;
     if (n.kind == "end") {
       n.status = enc.status_at(n.lo);
-      if (n.status == Status::uncertain) throw CertificationError("the static test at t = " + n.lo.get_str() + " is not proved in MPFI at " + std::to_string(bits) + " bits");
+      if (n.status == Status::uncertain)
+        throw CertificationError("the static test at t = " + n.lo.get_str() + " is not proved in MPFI at " +
+                                 std::to_string(bits) + " bits");
     } else if (n.kind == "simple_root") {
-      if (!enc.simple_root(n.lo, n.hi)) throw CertificationError("the bracket [" + n.lo.get_str() + ", " + n.hi.get_str() + "] is not proved to hold one simple root");
+      if (!enc.simple_root(n.lo, n.hi))
+        throw CertificationError("the bracket [" + n.lo.get_str() + ", " + n.hi.get_str() +
+                                 "] is not proved to hold one simple root");
       n.status = enc.status_at_root(n.lo, n.hi);
-      if (n.status == Status::uncertain) throw CertificationError("the status at the root in [" + n.lo.get_str() + ", " + n.hi.get_str() + "] is not proved");
-      e["evidence"] = {{"delta_at_lo", to_string(enc.delta_sign_at(n.lo))}, {"delta_at_hi", to_string(enc.delta_sign_at(n.hi))},
+      if (n.status == Status::uncertain)
+        throw CertificationError("the status at the root in [" + n.lo.get_str() + ", " + n.hi.get_str() +
+                                 "] is not proved");
+      e["evidence"] = {{"delta_at_lo", to_string(enc.delta_sign_at(n.lo))},
+                       {"delta_at_hi", to_string(enc.delta_sign_at(n.hi))},
                        {"delta_prime", to_string(enc.derivative_sign_over(n.lo, n.hi))}};
     } else {
       complete = false;
-      // twice the writer's bound: the checker's own enclosures (certificate/check/cycloidal_certificate.cpp) are not the same
+      // twice the writer's bound: the checker's own enclosures (certificate/check/cycloidal_certificate.cpp) are not
+      // the same
       e["epsilon"] = upper_decimal(mpq_class(2 * enc.magnitude_upper(n.lo, n.hi)));
-      e["claim"] = "touch or near miss within epsilon: |Delta(t)| <= epsilon on [lo, hi]; nothing else is claimed there";
+      e["claim"] =
+          "touch or near miss within epsilon: |Delta(t)| <= epsilon on [lo, hi]; nothing else is claimed there";
     }
-    Instant it = n.lo == n.hi ? bracketed_instant(n.lo, n.lo, n.hi) : bracketed_instant(mpq_class((n.lo + n.hi) / 2), n.lo, n.hi);
+    Instant it = n.lo == n.hi ? bracketed_instant(n.lo, n.lo, n.hi)
+                              : bracketed_instant(mpq_class((n.lo + n.hi) / 2), n.lo, n.hi);
     e["instant"] = instant_json(it);
     e["kind"] = n.kind;
     e["status"] = to_string(n.status);
@@ -124,10 +151,12 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
     if (k + 1 == inst.size()) break;
     // the cell to the next instant
     const mpq_class a = n.hi, b = inst[k + 1].lo;
-    if (!(a < b)) throw CertificationError("two critical stretches share an end at t = " + a.get_str() + ": no cell between them");
+    if (!(a < b))
+      throw CertificationError("two critical stretches share an end at t = " + a.get_str() + ": no cell between them");
     const mpq_class sample = (a + b) / 2;
     const Status cs = enc.status_at(sample);
-    if (cs == Status::uncertain) throw CertificationError("the static test at the cell sample " + sample.get_str() + " is not proved");
+    if (cs == Status::uncertain)
+      throw CertificationError("the static test at the cell sample " + sample.get_str() + " is not proved");
     timeline.push_back({{"cell_sample", sample.get_str()}, {"status", to_string(cs)}});
     seq.push_back({bracketed_instant(sample, sample, sample), cs, true});
     for (const auto& c : gap_cuts[k]) gaps.push_back(c.get_str());
@@ -137,7 +166,9 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
     cut.push_back(b);
     for (std::size_t i = 0; i + 1 < cut.size(); ++i) {
       const char* how = enc.root_free_by(cut[i], cut[i + 1]);
-      if (!how) throw CertificationError("the gap piece [" + cut[i].get_str() + ", " + cut[i + 1].get_str() + "] is not proved root-free");
+      if (!how)
+        throw CertificationError("the gap piece [" + cut[i].get_str() + ", " + cut[i + 1].get_str() +
+                                 "] is not proved root-free");
       proofs.push_back(how);
     }
   }
@@ -152,7 +183,11 @@ json make_cycloidal_certificate(const Scene& s, const json& scene_doc, Solution*
   for (const auto& u : ans.undecided) answer["undecided"].push_back(instant_json(u));
   json cert;
   cert["format"] = kCycloidalCertificateFormat;
-  cert["scene"] = {{"path", s.path}, {"name", s.name}, {"dim", scene_doc.at("dim")}, {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")}};
+  cert["scene"] = {{"path", s.path},
+                   {"name", s.name},
+                   {"dim", scene_doc.at("dim")},
+                   {"a", scene_doc.at("a")},
+                   {"b", scene_doc.at("b")}};
   cert["delta"] = {{"convention", kConvention}, {"precision_bits", bits}};
   cert["timeline"] = timeline;
   cert["gap_points"] = gaps;

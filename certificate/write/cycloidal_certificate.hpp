@@ -57,6 +57,7 @@ nlohmann::json make_cycloidal_certificate(const Scene& s, const nlohmann::json& 
 // Bounds (denial of service): precision 64..1024 bits, rationals of at most
 // 1024 bits, at most 20000 gap points and 4000 timeline entries.
 inline constexpr int kCycloidalMinBits = 64, kCycloidalMaxBits = 1024;
-inline constexpr std::size_t kCycloidalMaxRationalBits = 1024, kCycloidalMaxGapPoints = 20000, kCycloidalMaxTimeline = 4001;
+inline constexpr std::size_t kCycloidalMaxRationalBits = 1024, kCycloidalMaxGapPoints = 20000,
+                             kCycloidalMaxTimeline = 4001;
 
 }  // namespace eccd

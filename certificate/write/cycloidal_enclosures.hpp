@@ -32,7 +32,8 @@ namespace eccd {
 
 class CycloidalEnclosures {
  public:
-  CycloidalEnclosures(const Scene& s, int bits) : like_(mpq_class(0), bits), pair_(cycloidal_pair<MpfiInterval>(s, like_)) {}
+  CycloidalEnclosures(const Scene& s, int bits)
+      : like_(mpq_class(0), bits), pair_(cycloidal_pair<MpfiInterval>(s, like_)) {}
 
   Sign delta_sign_at(const mpq_class& t) const { return sign(cycloidal_delta<MpfiInterval>(pair_, point(t))); }
   Sign derivative_sign_over(const mpq_class& a, const mpq_class& b) const { return sign(derivative(a, b)); }
@@ -68,7 +69,8 @@ class CycloidalEnclosures {
   }
   Status status_at_root(const mpq_class& a, const mpq_class& b) const {
     auto g = cycloidal_g<MpfiInterval>(pair_, range(a, b));
-    return status_at_multiple_root(sign(double_root_numerator(g[3], g[2], g[1], g[0])), sign(double_root_denominator(g[3], g[2], g[1])));
+    return status_at_multiple_root(sign(double_root_numerator(g[3], g[2], g[1], g[0])),
+                                   sign(double_root_denominator(g[3], g[2], g[1])));
   }
   // max |Δ| over [a, b] from below by nothing: an upper bound, exact as a rational (an MPFR end point is dyadic).
   mpq_class magnitude_upper(const mpq_class& a, const mpq_class& b) const {
@@ -86,7 +88,8 @@ class CycloidalEnclosures {
   }
   MpfiInterval mean_value(const mpq_class& a, const mpq_class& b) const {
     const mpq_class m = (a + b) / 2;
-    return cycloidal_delta<MpfiInterval>(pair_, point(m)) + derivative(a, b) * range(mpq_class(a - m), mpq_class(b - m));
+    return cycloidal_delta<MpfiInterval>(pair_, point(m)) +
+           derivative(a, b) * range(mpq_class(a - m), mpq_class(b - m));
   }
   static mpq_class bound(const MpfiInterval& x) {
     mpq_class l, r;

@@ -63,11 +63,16 @@ void clear_gap(const Rational& a, const Rational& b, const std::vector<std::pair
                const Poly<Rational>& P, std::vector<Rational>& points, int depth) {
   bool clean = true;
   for (const auto& f : F)
-    if (descartes_variations(f.first, a, b) != 0) { clean = false; break; }
+    if (descartes_variations(f.first, a, b) != 0) {
+      clean = false;
+      break;
+    }
   if (clean) return;
-  if (depth > kMaxGapDepth) throw CertificationError("cannot certify: a gap between two roots could not be cleared by bisection");
+  if (depth > kMaxGapDepth)
+    throw CertificationError("cannot certify: a gap between two roots could not be cleared by bisection");
   Rational m = simplest_dyadic_between(Rational((2 * a + b) / 3), Rational((a + 2 * b) / 3));
-  if (sign(P(m)) == Sign::zero) throw std::logic_error("internal error: a root of the projection outside every bracket");
+  if (sign(P(m)) == Sign::zero)
+    throw std::logic_error("internal error: a root of the projection outside every bracket");
   clear_gap(a, m, F, P, points, depth + 1);
   points.push_back(m);
   clear_gap(m, b, F, P, points, depth + 1);
@@ -82,8 +87,8 @@ struct Bracketed {
 // Does Descartes' bound of every factor on (a, b) equal the number of its
 // bracketed roots there? Then the checker proves those brackets by their
 // sign changes alone (certificate/check/exact_certificate.cpp).
-bool piece_is_tight(const Rational& a, const Rational& b, const std::vector<Bracketed>& br, std::size_t i0, std::size_t i1,
-                    const std::vector<std::pair<Poly<Rational>, int>>& F) {
+bool piece_is_tight(const Rational& a, const Rational& b, const std::vector<Bracketed>& br, std::size_t i0,
+                    std::size_t i1, const std::vector<std::pair<Poly<Rational>, int>>& F) {
   for (std::size_t j = 0; j < F.size(); ++j) {
     int count = 0;
     for (std::size_t i = i0; i < i1; ++i) count += br[i].factor == int(j);
@@ -97,12 +102,15 @@ bool piece_is_tight(const Rational& a, const Rational& b, const std::vector<Brac
 // single bracket, closer to it on both sides; a piece without a bracket is
 // bisected. Returns false (and adds nothing) when depth runs out: that piece
 // is then proved bracket by bracket.
-bool tighten_piece(const Rational& a, const Rational& b, const std::vector<Bracketed>& br, std::size_t i0, std::size_t i1,
-                   const std::vector<std::pair<Poly<Rational>, int>>& F, std::vector<Rational>& points, int depth) {
+bool tighten_piece(const Rational& a, const Rational& b, const std::vector<Bracketed>& br, std::size_t i0,
+                   std::size_t i1, const std::vector<std::pair<Poly<Rational>, int>>& F, std::vector<Rational>& points,
+                   int depth) {
   if (piece_is_tight(a, b, br, i0, i1, F)) return true;
   if (depth > 24) return false;
   const std::size_t mark = points.size();
-  auto cut = [&](const Rational& lo, const Rational& hi) { return simplest_dyadic_between(Rational((2 * lo + hi) / 3), Rational((lo + 2 * hi) / 3)); };
+  auto cut = [&](const Rational& lo, const Rational& hi) {
+    return simplest_dyadic_between(Rational((2 * lo + hi) / 3), Rational((lo + 2 * hi) / 3));
+  };
   bool ok = false;
   if (i1 - i0 >= 2) {
     const std::size_t m = i0 + (i1 - i0) / 2;
@@ -132,8 +140,8 @@ bool tighten_piece(const Rational& a, const Rational& b, const std::vector<Brack
 // clear_gap left has 0 sign variations for every factor and a piece's parts
 // have at most its variations, so the brackets-and-gaps proof still holds as
 // well. Nothing is added if it would pass the checker's bound on gap points.
-void add_counting_points(const std::vector<RootWork>& roots, const std::vector<std::pair<Poly<Rational>, int>>& F, const Poly<Rational>& P,
-                         std::vector<Rational>& points) {
+void add_counting_points(const std::vector<RootWork>& roots, const std::vector<std::pair<Poly<Rational>, int>>& F,
+                         const Poly<Rational>& P, std::vector<Rational>& points) {
   std::vector<Bracketed> br;
   for (const auto& w : roots)  // the roots inside (0, 1): a root at 0 or 1 is an end instant, not in any piece
     if (w.root.lo > 0 && w.root.hi < 1) br.push_back({w.root.lo, w.root.hi, w.factor});
@@ -165,25 +173,34 @@ PipelineResult<Rational> run_exact_recording_isolation(const Scene& s, std::vect
 }  // namespace
 
 nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved) {
-  if (cycloidal_certificate_scene(s)) return make_cycloidal_certificate(s, scene_doc, solved);  // certificate/write/cycloidal_certificate.hpp
-  if (independent_certificate_scene(s)) return make_independent_certificate(s, scene_doc, solved);  // certificate/write/independent_certificate.hpp
+  if (cycloidal_certificate_scene(s))
+    return make_cycloidal_certificate(s, scene_doc, solved);  // certificate/write/cycloidal_certificate.hpp
+  if (independent_certificate_scene(s))
+    return make_independent_certificate(s, scene_doc, solved);  // certificate/write/independent_certificate.hpp
   auto start = std::chrono::steady_clock::now();
   std::vector<Isolation> record;
-  PipelineResult<Rational> res = s.dim == 2 ? run_exact_recording_isolation<3>(s, record) : run_exact_recording_isolation<4>(s, record);
+  PipelineResult<Rational> res =
+      s.dim == 2 ? run_exact_recording_isolation<3>(s, record) : run_exact_recording_isolation<4>(s, record);
   const CertificateAlgebra alg = certificate_algebra(s);
   if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
 
   nlohmann::json c;
   c["format"] = "eccd-certificate/2";
-  c["scene"] = {{"path", s.path}, {"name", s.name}, {"dim", scene_doc.at("dim")}, {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")}};
+  c["scene"] = {{"path", s.path},
+                {"name", s.name},
+                {"dim", scene_doc.at("dim")},
+                {"a", scene_doc.at("a")},
+                {"b", scene_doc.at("b")}};
   nlohmann::json g = nlohmann::json::array();
   for (const auto& gk : alg.g) {
     nlohmann::json row = nlohmann::json::array();
     for (const auto& x : gk.c) row.push_back(q_str(x));
     g.push_back(row);
   }
-  c["f"] = {{"convention", "f(lambda; t) = det(lambda A(t) - B(t)) = sum_k g_k(t) lambda^k; g_k in the power basis, lowest degree first"},
-            {"g", g}};
+  c["f"] = {
+      {"convention",
+       "f(lambda; t) = det(lambda A(t) - B(t)) = sum_k g_k(t) lambda^k; g_k in the power basis, lowest degree first"},
+      {"g", g}};
   nlohmann::json proj = {{"name", alg.projection_name}, {"vanishing", alg.vanishing}};
 
   if (alg.projection.is_zero()) {  // 2D, Δ ≡ 0: never separate (003 Corollary 7)
@@ -196,17 +213,22 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
     // the double root constant (certificate/write/prover_self_check.hpp).
     const Poly<Rational> PD = alg.evidence("P") * alg.evidence("D");
     const Rational half(1, 2);
-    nlohmann::json ct = {{"convention", PD.is_zero() ? "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D vanishes identically: the "
-                                                       "double root is 0 or triple, overlapping on all of [0, 1]"
-                                                     : "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D has no root in [0, 1] (gap "
-                                                       "points, Descartes), so the status (touching iff the double root P/(2D) is "
-                                                       "negative) is that of the sample on all of [0, 1]"},
-                         {"identically_zero", PD.is_zero()}, {"sample", q_str(half)}, {"status", to_string(alg.status_at(half))}};
+    nlohmann::json ct = {
+        {"convention", PD.is_zero()
+                           ? "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D vanishes identically: the "
+                             "double root is 0 or triple, overlapping on all of [0, 1]"
+                           : "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D has no root in [0, 1] (gap "
+                             "points, Descartes), so the status (touching iff the double root P/(2D) is "
+                             "negative) is that of the sample on all of [0, 1]"},
+        {"identically_zero", PD.is_zero()},
+        {"sample", q_str(half)},
+        {"status", to_string(alg.status_at(half))}};
     std::vector<Rational> pts;
     if (!PD.is_zero()) {
       if (sign(PD(Rational(0))) == Sign::zero || sign(PD(Rational(1))) == Sign::zero || res.cells.size() != 1)
-        throw CertificationError("cannot certify: the discriminant vanishes identically and the status changes inside [0, 1] "
-                                 "(P*D has a root there), which the certificate format does not cover");
+        throw CertificationError(
+            "cannot certify: the discriminant vanishes identically and the status changes inside [0, 1] "
+            "(P*D has a root there), which the certificate format does not cover");
       clear_gap(Rational(0), Rational(1), {{PD, 1}}, PD, pts, 0);
     }
     nlohmann::json ptj = nlohmann::json::array();
@@ -227,7 +249,8 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
   const Poly<Rational>& P = alg.projection;
   const auto F = square_free_factors(P);
   // The checker's size bound (certificate/write/exact_certificate.hpp), a few bits of slack for refine's rounding.
-  const int max_bits = std::min<int>(kMaxBits, int(certificate_max_bits(std::size_t(P.degree()), integer_coefficient_bits(P))) - 8);
+  const int max_bits =
+      std::min<int>(kMaxBits, int(certificate_max_bits(std::size_t(P.degree()), integer_coefficient_bits(P))) - 8);
   proj["identically_zero"] = false;
   proj["degree"] = P.degree();
   proj["coefficients"] = coeffs_json(P);
@@ -262,7 +285,8 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
         add("P");
         add("D");
       } else {
-        negative_multiple_root(alg.projection_index, [&](int j, int i) { return add(subresultant_evidence_name(j, i)); });
+        negative_multiple_root(alg.projection_index,
+                               [&](int j, int i) { return add(subresultant_evidence_name(j, i)); });
       }
     }
     for (int bits = 128; !bracket_proves(w, F, P); bits *= 2) {
@@ -277,7 +301,9 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
   auto refined = [&](const Instant& i) -> Instant {
     if (!i.certified()) throw std::logic_error("internal error: an exact instant without a bracket");
     for (const auto& w : roots)
-      if (w.old_lo == *i.lo && w.old_hi == *i.hi) return Instant{approx_in_bracket(w.root.lo, w.root.hi), w.root.lo, w.root.hi, nearest_double((w.root.lo + w.root.hi) / 2)};
+      if (w.old_lo == *i.lo && w.old_hi == *i.hi)
+        return Instant{approx_in_bracket(w.root.lo, w.root.hi), w.root.lo, w.root.hi,
+                       nearest_double((w.root.lo + w.root.hi) / 2)};
     return Instant{approx_in_bracket(*i.lo, *i.hi), *i.lo, *i.hi, nearest_double((*i.lo + *i.hi) / 2)};
   };
 
@@ -306,7 +332,8 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
       continue;
     }
     Instant t = refined(n.t);
-    nlohmann::json j = {{"instant", {{"approx", t.approx}, {"lo", q_str(*t.lo)}, {"hi", q_str(*t.hi)}}}, {"status", to_string(n.status)}};
+    nlohmann::json j = {{"instant", {{"approx", t.approx}, {"lo", q_str(*t.lo)}, {"hi", q_str(*t.hi)}}},
+                        {"status", to_string(n.status)}};
     const RootWork* w = nullptr;
     for (const auto& x : roots)
       if (x.root.lo == *t.lo && x.root.hi == *t.hi) w = &x;
@@ -326,9 +353,12 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
       } else {
         std::map<std::string, Sign> sg;
         for (const auto& e : w->evidence) sg[e.name] = e.sign;
-        Sign touch = negative_multiple_root(alg.projection_index, [&](int a, int b) { return sg.at(subresultant_evidence_name(a, b)); });
-        j["decided_by"] = touch == Sign::positive ? "subresultant signs at the root: a negative multiple root (touching)"
-                                                   : "subresultant signs at the root: no negative multiple root, so the status of the neighbouring cells";
+        Sign touch = negative_multiple_root(alg.projection_index,
+                                            [&](int a, int b) { return sg.at(subresultant_evidence_name(a, b)); });
+        j["decided_by"] =
+            touch == Sign::positive
+                ? "subresultant signs at the root: a negative multiple root (touching)"
+                : "subresultant signs at the root: no negative multiple root, so the status of the neighbouring cells";
       }
     }
     tl.push_back(j);
@@ -336,10 +366,16 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
   c["timeline"] = tl;
 
   Answer ans = res.answer;
-  for (auto& [a, b] : ans.intervals) { a = refined(a); b = refined(b); }
+  for (auto& [a, b] : ans.intervals) {
+    a = refined(a);
+    b = refined(b);
+  }
   if (ans.first_contact) ans.first_contact = refined(*ans.first_contact);
   for (auto& x : ans.contacts) x = refined(x);
-  for (auto& [a, b] : ans.contact_intervals) { a = refined(a); b = refined(b); }
+  for (auto& [a, b] : ans.contact_intervals) {
+    a = refined(a);
+    b = refined(b);
+  }
   ans.contact_points.clear();
   c["answer"] = answer_to_json(ans);
   c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

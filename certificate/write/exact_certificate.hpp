@@ -1,6 +1,7 @@
 #pragma once
 // The certificate of an exact answer: everything a simpler program needs to
-// re-check it without the solver (certificate/check/ checks it; certificate/write/prover_self_check.hpp is the prover-side self-check).
+// re-check it without the solver (certificate/check/ checks it; certificate/write/prover_self_check.hpp is the
+// prover-side self-check).
 //
 // Statement. The exact pipeline (exact/cd_disc_exact.hpp in 2D,
 // kernel/ccd_projection.hpp in 3D) decides the status of two moving objects
@@ -63,7 +64,6 @@ inline std::size_t certificate_max_bits(std::size_t n, std::size_t tau) {
   return std::min(by_size, by_work);
 }
 inline std::size_t certificate_max_gap_points(std::size_t n) { return 8 * n + 64; }
-
 
 // Runs the exact pipeline with the root isolation recorded and returns the
 // certificate (format "eccd-certificate/2": format 1 plus approx inside its

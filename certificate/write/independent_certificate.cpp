@@ -1,4 +1,5 @@
-// The independent-motion certificate's writer (certificate/write/independent_certificate.hpp); its checker is eccd-check's.
+// The independent-motion certificate's writer (certificate/write/independent_certificate.hpp); its checker is
+// eccd-check's.
 #include "certificate/write/independent_certificate.hpp"
 
 #include "certified/independent_proof.hpp"
@@ -33,22 +34,36 @@ TriBern<Rational> exact_net(const Scene& scene, std::array<bool, 2>& still) {
   Scene shared = scene;
   shared.independent = false;
   if (scene.dim == 3)
-    return independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(shared), Rational(1)), &still);
-  return independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(shared), Rational(1)), &still);
+    return independent_ellipsoid_function<Rational, 4>(
+        to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(shared), Rational(1)), &still);
+  return independent_ellipsoid_function<Rational, 3>(
+      to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(shared), Rational(1)), &still);
 }
 
-mpq_class dy_lo(const independent_subdivision::Dyadic& d) { return mpq_class(mpz_class(std::to_string(d.i)), mpz_class(1) << d.d); }
-mpq_class dy_hi(const independent_subdivision::Dyadic& d) { return mpq_class(mpz_class(std::to_string(d.i + 1)), mpz_class(1) << d.d); }
-std::string q(const mpq_class& x) { mpq_class y = x; y.canonicalize(); return y.get_str(); }
+mpq_class dy_lo(const independent_subdivision::Dyadic& d) {
+  return mpq_class(mpz_class(std::to_string(d.i)), mpz_class(1) << d.d);
+}
+mpq_class dy_hi(const independent_subdivision::Dyadic& d) {
+  return mpq_class(mpz_class(std::to_string(d.i + 1)), mpz_class(1) << d.d);
+}
+std::string q(const mpq_class& x) {
+  mpq_class y = x;
+  y.canonicalize();
+  return y.get_str();
+}
 
 // The exclusion of an end as the subdivision tree the checker replays (certificate/check/independent_certificate.cpp):
 // preorder over (u, t) in [0, 1]^2 at s in the strip, '1' split (u halved, then t, at every level; children u-low
 // t-low, u-low t-high, u-high t-low, u-high t-high), '0' a leaf inside the kept box or with F or F_u of one proved
 // sign, or with its t-range inside (0, 1) and F_t and F_uu of one sign (f: F, F_u, F_t, F_uu restricted to the strip).
-struct Keep { mpq_class u0, u1, t0, t1; };
-void exclusion_tree(const std::array<TriBern<I>, 4>& f, const mpq_class& u0, const mpq_class& u1, const mpq_class& t0, const mpq_class& t1,
-                    int depth, const Keep& k, const I& half, long& nodes, std::string& out) {
-  if (++nodes > long(kIndependentMaxBoxes)) throw CertificationError("the exclusion of an end needs more than " + std::to_string(kIndependentMaxBoxes) + " boxes");
+struct Keep {
+  mpq_class u0, u1, t0, t1;
+};
+void exclusion_tree(const std::array<TriBern<I>, 4>& f, const mpq_class& u0, const mpq_class& u1, const mpq_class& t0,
+                    const mpq_class& t1, int depth, const Keep& k, const I& half, long& nodes, std::string& out) {
+  if (++nodes > long(kIndependentMaxBoxes))
+    throw CertificationError("the exclusion of an end needs more than " + std::to_string(kIndependentMaxBoxes) +
+                             " boxes");
   const bool inner = sgn(t0) > 0 && t1 < 1;
   if ((u0 >= k.u0 && u1 <= k.u1 && t0 >= k.t0 && t1 <= k.t1) || f[0].strict_sign() != 0 || f[1].strict_sign() != 0 ||
       (inner && f[2].strict_sign() != 0 && f[3].strict_sign() != 0)) {
@@ -56,7 +71,8 @@ void exclusion_tree(const std::array<TriBern<I>, 4>& f, const mpq_class& u0, con
     return;
   }
   if (depth >= kIndependentMaxTreeDepth)
-    throw CertificationError("the exclusion of an end does not close within " + std::to_string(kIndependentMaxTreeDepth) + " levels");
+    throw CertificationError("the exclusion of an end does not close within " +
+                             std::to_string(kIndependentMaxTreeDepth) + " levels");
   out += '1';
   const mpq_class um = (u0 + u1) / 2, tm = (t0 + t1) / 2;
   std::array<TriBern<I>, 4> lo, hi;
@@ -90,7 +106,8 @@ json projection_json(const IndependentProjectionRecord& rec, const TriBern<I>& F
     if (p.status == Strip::unknown) {
       // the end proved in this run (the runs are unknown pieces between an in and an out strip)
       if (e >= rec.ends.size() || rec.ends[e].run_lo != p.lo || rec.ends[e].run_hi != p.hi)
-        throw CertificationError("internal: an unresolved run without its proved end at [" + q(p.lo) + ", " + q(p.hi) + "]");
+        throw CertificationError("internal: an unresolved run without its proved end at [" + q(p.lo) + ", " + q(p.hi) +
+                                 "]");
       const IndependentEndRecord& r = rec.ends[e++];
       json chain = json::array();
       for (std::size_t i = 0; i < r.chain_lo.size(); ++i) {
@@ -105,13 +122,19 @@ json projection_json(const IndependentProjectionRecord& rec, const TriBern<I>& F
       std::string tree;
       long nodes = 0;
       exclusion_tree(f, 0, 1, 0, 1, 0, kept_box(r.system, r.chain_lo[0], r.chain_hi[0]), half, nodes, tree);
-      items.push_back({{"kind", "end"}, {"lo", q(p.lo)}, {"hi", q(p.hi)}, {"system", r.system}, {"chain", chain},
-                       {"exclusion", tree}, {"bracket", {q(r.lo), q(r.hi)}}});
+      items.push_back({{"kind", "end"},
+                       {"lo", q(p.lo)},
+                       {"hi", q(p.hi)},
+                       {"system", r.system},
+                       {"chain", chain},
+                       {"exclusion", tree},
+                       {"bracket", {q(r.lo), q(r.hi)}}});
       continue;
     }
     json boxes = json::array();
     for (const auto& b : p.witness) boxes.push_back({q(dy_lo(b.u)), q(dy_hi(b.u)), q(dy_lo(b.t)), q(dy_hi(b.t))});
-    items.push_back({{"kind", p.status == Strip::in ? "in" : "out"}, {"lo", q(p.lo)}, {"hi", q(p.hi)}, {"boxes", boxes}});
+    items.push_back(
+        {{"kind", p.status == Strip::in ? "in" : "out"}, {"lo", q(p.lo)}, {"hi", q(p.hi)}, {"boxes", boxes}});
   }
   if (e != rec.ends.size()) throw CertificationError("internal: a proved end outside the runs");
   return items;
@@ -150,7 +173,8 @@ json net_json(const Scene& scene, const TriBern<Rational>& F) {
   const PreparedPair<H> p = prepare_pair<H>(shared);
   json co = json::array();
   for (const auto& x : F.c) co.push_back(q(x));
-  return {{"degrees", {F.n[0], F.n[1], F.n[2]}}, {"coefficients", co}, {"shape_a", matrix_json(p.qa)}, {"shape_b", matrix_json(p.qb)},
+  return {{"degrees", {F.n[0], F.n[1], F.n[2]}}, {"coefficients", co},
+          {"shape_a", matrix_json(p.qa)},        {"shape_b", matrix_json(p.qb)},
           {"inverse_a", poly_matrix_json(p.na)}, {"inverse_b", poly_matrix_json(p.nb)}};
 }
 
@@ -161,8 +185,9 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
   std::array<bool, 2> still{};
   const TriBern<Rational> F = exact_net(s, still);
   if (!(independent_net_reduced(F).c == F.c))
-    throw CertificationError("F has a factor of one sign along a parameter whose body moves: the proof runs on F divided by it, "
-                             "which the certificate's net claim does not cover");
+    throw CertificationError(
+        "F has a factor of one sign along a parameter whose body moves: the proof runs on F divided by it, "
+        "which the certificate's net claim does not cover");
   IndependentProofOptions po;
   po.bits = kBits;
   po.record = true;
@@ -174,14 +199,19 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
   }
   json c;
   c["format"] = kIndependentCertificateFormat;
-  c["scene"] = {{"path", s.path}, {"name", s.name}, {"dim", scene_doc.at("dim")}, {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")},
-                {"parameters", scene_doc.at("parameters")}};
-  c["convention"] = "F(u, s, t) = det((1 - u) A(s) + u B(t)) in tensor Bernstein form on [0, 1]^3 (degree H in u: 4 for ellipsoids, "
-                    "3 for ellipses), net.coefficients in row-major (u, s, t) order, A = N_a^T Q_a N_a and B = N_b^T Q_b N_b from the "
-                    "stated shapes and inverse motions; a parameter listed in reduced has its body held at 0 (it does not move as a "
-                    "set: A(s) = c(s) A(0)); boxes are [u0, u1, t0, t1] (for t_proof: [u0, u1, s0, s1]); chain boxes list (u, s, t) or "
-                    "(u, s) (the proof's own parameter second); an end's exclusion is the subdivision tree of (u, other parameter) in "
-                    "[0, 1]^2 in preorder ('1' split: both halved at every level; '0' leaf); every sign is proved by outward-rounded intervals";
+  c["scene"] = {{"path", s.path},         {"name", s.name},         {"dim", scene_doc.at("dim")},
+                {"a", scene_doc.at("a")}, {"b", scene_doc.at("b")}, {"parameters", scene_doc.at("parameters")}};
+  c["convention"] =
+      "F(u, s, t) = det((1 - u) A(s) + u B(t)) in tensor Bernstein form on [0, 1]^3 (degree H in u: 4 for ellipsoids, "
+      "3 for ellipses), net.coefficients in row-major (u, s, t) order, A = N_a^T Q_a N_a and B = N_b^T Q_b N_b from "
+      "the "
+      "stated shapes and inverse motions; a parameter listed in reduced has its body held at 0 (it does not move as a "
+      "set: A(s) = c(s) A(0)); boxes are [u0, u1, t0, t1] (for t_proof: [u0, u1, s0, s1]); chain boxes list (u, s, t) "
+      "or "
+      "(u, s) (the proof's own parameter second); an end's exclusion is the subdivision tree of (u, other parameter) "
+      "in "
+      "[0, 1]^2 in preorder ('1' split: both halved at every level; '0' leaf); every sign is proved by outward-rounded "
+      "intervals";
   json red = json::array();
   if (still[0]) red.push_back("s");
   if (still[1]) red.push_back("t");
@@ -195,8 +225,9 @@ json make_independent_certificate(const Scene& s, const json& scene_doc, Solutio
   c["s_proof"] = projection_json(r.s_record, FI);
   c["t_proof"] = projection_json(r.t_record, FI.swap_st());
   // the writer checks its own certificate with eccd-check's library: a claim it cannot re-prove is never written
-  certificate_json::finish_proof_certificate(c, check_independent_certificate(s, scene_doc, c), kIndependentCertificateFormat, kBits, r.answer,
-                           "bezier-independent-proved", start, solved);
+  certificate_json::finish_proof_certificate(c, check_independent_certificate(s, scene_doc, c),
+                                             kIndependentCertificateFormat, kBits, r.answer,
+                                             "bezier-independent-proved", start, solved);
   if (solved) {
     solved->dim = s.dim;
     solved->work = r.counters;

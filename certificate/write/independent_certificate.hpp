@@ -39,10 +39,12 @@ bool independent_certificate_scene(const Scene& s);
 
 // The certificate; `solved` receives the proved run's Solution. Throws CertificationError when the proof leaves a
 // range undecided (nothing is certified then).
-nlohmann::json make_independent_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved = nullptr);
+nlohmann::json make_independent_certificate(const Scene& s, const nlohmann::json& scene_doc,
+                                            Solution* solved = nullptr);
 
 // eccd-check's verdict on `cert` for scene `s` (scene_doc: the scene file's JSON).
-CertificateCheck check_independent_certificate(const Scene& s, const nlohmann::json& scene_doc, const nlohmann::json& cert);
+CertificateCheck check_independent_certificate(const Scene& s, const nlohmann::json& scene_doc,
+                                               const nlohmann::json& cert);
 
 // Bounds of the writer: at most this many exclusion boxes per end, trees at most this deep (eccd-check allows 40).
 inline constexpr std::size_t kIndependentMaxBoxes = 2000000;

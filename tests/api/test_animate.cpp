@@ -125,7 +125,9 @@ std::string spec_scene_text(const json& anim, std::size_t i, std::size_t j, std:
   const int dim = anim["dim"].get<int>();
   const json& a = anim["bodies"][i];
   const json& b = anim["bodies"][j];
-  json s = {{"format", "ellipse-ccd-scene/1"}, {"name", "reference"}, {"dim", dim},
+  json s = {{"format", "ellipse-ccd-scene/1"},
+            {"name", "reference"},
+            {"dim", dim},
             {"a", {{"shape", a["shape"]}, {"motion", spec_motion(a, k, dim)}}},
             {"b", {{"shape", b["shape"]}, {"motion", spec_motion(b, k, dim)}}}};
   return s.dump();
@@ -176,7 +178,7 @@ void check_against_reference(const std::string& text, bool all_intervals, bool c
   }
   REQUIRE((collisions > 0) == collides);  // the examples do collide (the near miss does not)
   REQUIRE(ex.continuous_test > 0);
-  REQUIRE(dropped > 0);     // and the bounding volumes do drop pairs
+  REQUIRE(dropped > 0);  // and the bounding volumes do drop pairs
   REQUIRE(ex.bounding_volumes > 0);
   REQUIRE(ex.bounding_volumes + ex.separating_plane == dropped);
 
@@ -282,17 +284,20 @@ TEST_CASE("animate: the bounding sphere contains the body over the frame", "[ani
   REQUIRE(swept_bounding_sphere(anim, 1, 0).radius == Rational(9, 10));
   // a matrix shape off its body's origin: the unit ball centred at (3, 0, 0) in the body frame,
   // (x - 3)^2 + y^2 + z^2 <= 1: every point within |x0| + 1 = 4 of the origin
-  doc["bodies"][1]["shape"] = {{"matrix", {{"1", "0", "0", "-3"}, {"0", "1", "0", "0"}, {"0", "0", "1", "0"}, {"-3", "0", "0", "8"}}}};
+  doc["bodies"][1]["shape"] = {
+      {"matrix", {{"1", "0", "0", "-3"}, {"0", "1", "0", "0"}, {"0", "0", "1", "0"}, {"-3", "0", "0", "8"}}}};
   REQUIRE(swept_bounding_sphere(animation_from_text(doc.dump(), "m"), 1, 0).radius == 4);
-  // a tilted ellipse: A = [[2, 1, 0], [1, 2, 0], [0, 0, 1]]: |x|^2 <= tr(A^-1) = 2/3 + 2/3 + 1 (the bound used), and the
-  // true radius 1 (along z; the tilted axes have 1/sqrt(1) and 1/sqrt(3)) lies below it
-  doc["bodies"][1]["shape"] = {{"matrix", {{"2", "1", "0", "0"}, {"1", "2", "0", "0"}, {"0", "0", "1", "0"}, {"0", "0", "0", "-1"}}}};
+  // a tilted ellipse: A = [[2, 1, 0], [1, 2, 0], [0, 0, 1]]: |x|^2 <= tr(A^-1) = 2/3 + 2/3 + 1 (the bound used), and
+  // the true radius 1 (along z; the tilted axes have 1/sqrt(1) and 1/sqrt(3)) lies below it
+  doc["bodies"][1]["shape"] = {
+      {"matrix", {{"2", "1", "0", "0"}, {"1", "2", "0", "0"}, {"0", "0", "1", "0"}, {"0", "0", "0", "-1"}}}};
   const Rational r = swept_bounding_sphere(animation_from_text(doc.dump(), "m"), 1, 0).radius;
   REQUIRE(r * r >= Rational(7, 3));
   REQUIRE(r < Rational(153, 100));  // sqrt(7/3) = 1.5275...
 }
 
-TEST_CASE("animate: a graze double cannot decide is undecided, never an event, and exact finds the touch", "[animation]") {
+TEST_CASE("animate: a graze double cannot decide is undecided, never an event, and exact finds the touch",
+          "[animation]") {
   // Two unit disks / balls; b passes a at centre distance 2 at tau = 1/2: an isolated touch at t = 1/2.
   for (int dim : {2, 3}) {
     json q = dim == 3 ? json::array({"1", "0", "0", "0"}) : json::array({"1", "0"});
@@ -302,9 +307,13 @@ TEST_CASE("animate: a graze double cannot decide is undecided, never an event, a
       return json{{"position", p}, {"orientation", q}};
     };
     json semi = dim == 3 ? json::array({"1", "1", "1"}) : json::array({"1", "1"});
-    json doc = {{"format", "ellipse-ccd-animation/1"}, {"name", "graze"}, {"dim", dim}, {"times", {"0", "1"}},
-                {"bodies", {{{"name", "a"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("0", "0"), at("0", "0")}}},
-                            {{"name", "b"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("-1", "2"), at("1", "2")}}}}}};
+    json doc = {{"format", "ellipse-ccd-animation/1"},
+                {"name", "graze"},
+                {"dim", dim},
+                {"times", {"0", "1"}},
+                {"bodies",
+                 {{{"name", "a"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("0", "0"), at("0", "0")}}},
+                  {{"name", "b"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("-1", "2"), at("1", "2")}}}}}};
     const Animation anim = animation_from_text(doc.dump(), "graze");
     AnimateOptions o;
     o.all_intervals = true;

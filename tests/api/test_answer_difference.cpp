@@ -43,7 +43,8 @@ bool mentions(const AnswerDifference& d, const std::string& s) {
 }
 }  // namespace
 
-TEST_CASE("answer difference: a missed touch, ends off, false and missed collisions, undecided", "[answer-difference]") {
+TEST_CASE("answer difference: a missed touch, ends off, false and missed collisions, undecided",
+          "[answer-difference]") {
   // Reference: an isolated touch at 0.2, then an interval [0.5, 0.6].
   Answer ref = answer(true, {{0.2, 0.2}, {0.5, 0.6}}, {0.2, 0.5, 0.6});
   SECTION("the touch at 0.2 is missed") {
@@ -93,17 +94,20 @@ TEST_CASE("answer difference: a missed touch, ends off, false and missed collisi
     CHECK(mentions(u, "undecided near t ≈ 0.3"));
   }
   SECTION("split and merged intervals") {
-    AnswerDifference s = answer_difference(answer(true, {{0.5, 0.54}, {0.56, 0.6}}, {0.5, 0.6}), answer(true, {{0.5, 0.6}}, {0.5, 0.6}));
+    AnswerDifference s =
+        answer_difference(answer(true, {{0.5, 0.54}, {0.56, 0.6}}, {0.5, 0.6}), answer(true, {{0.5, 0.6}}, {0.5, 0.6}));
     CHECK(s.split == 1);
     CHECK(mentions(s, "splits collision interval"));
-    AnswerDifference m = answer_difference(answer(true, {{0.5, 0.6}}, {0.5, 0.6}), answer(true, {{0.5, 0.54}, {0.56, 0.6}}, {0.5, 0.6}));
+    AnswerDifference m =
+        answer_difference(answer(true, {{0.5, 0.6}}, {0.5, 0.6}), answer(true, {{0.5, 0.54}, {0.56, 0.6}}, {0.5, 0.6}));
     CHECK(m.merged == 1);
   }
 }
 
-TEST_CASE("answer difference: certified brackets match exactly when they overlap, decimals within tol of a bracket", "[answer-difference]") {
+TEST_CASE("answer difference: certified brackets match exactly when they overlap, decimals within tol of a bracket",
+          "[answer-difference]") {
   Instant a = cert("1/3", "1/2"), b = cert("1/2", "2/3"), c = cert("2/3", "3/4");
-  CHECK(instants_match(a, b, 0));  // they share 1/2
+  CHECK(instants_match(a, b, 0));        // they share 1/2
   CHECK_FALSE(instants_match(a, c, 1));  // disjoint brackets never match, whatever the tolerance
   CHECK(instants_match(dec(0.5 + 1e-13), a, 1e-12));
   CHECK_FALSE(instants_match(dec(0.5 + 1e-11), a, 1e-12));

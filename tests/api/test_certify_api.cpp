@@ -12,8 +12,10 @@ const std::string kCases = std::string(ECCD_SOURCE_DIR) + "/cases/";
 bool overlaps(const eccd::Instant& a, const eccd::Instant& b) { return *a.lo <= *b.hi && *b.lo <= *a.hi; }
 }  // namespace
 
-TEST_CASE("certify returns the certificate and the certified Solution, and check_certificate accepts it and rejects a forgery",
-          "[api][certify]") {
+TEST_CASE(
+    "certify returns the certificate and the certified Solution, and check_certificate accepts it and rejects a "
+    "forgery",
+    "[api][certify]") {
   for (const char* file : {"paper003/example2.json", "spheres/spheres-touch.json"}) {
     INFO(file);
     eccd::Scene s = eccd::read_scene(kCases + file);

@@ -21,7 +21,9 @@
 using namespace eccd;
 
 namespace {
-std::string indep(const std::string& name) { return std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json"; }
+std::string indep(const std::string& name) {
+  return std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json";
+}
 
 std::string scene_text(const std::string& parameters, const std::string& answer = "") {
   std::string t = R"({"format": "ellipse-ccd-scene/1", "name": "x", "dim": 3,)";
@@ -44,7 +46,8 @@ std::string error_of(const std::string& text) {
 double end(const std::pair<Instant, Instant>& iv, int k) { return k ? iv.second.value : iv.first.value; }
 }  // namespace
 
-TEST_CASE("the reader takes \"parameters\": \"shared\" (default) or \"independent\" and nothing else", "[independent]") {
+TEST_CASE("the reader takes \"parameters\": \"shared\" (default) or \"independent\" and nothing else",
+          "[independent]") {
   CHECK_FALSE(parse_scene(scene_text(""), "f.json").independent);
   CHECK_FALSE(parse_scene(scene_text(R"("shared")"), "f.json").independent);
   CHECK(parse_scene(scene_text(R"("independent")"), "f.json").independent);
@@ -55,8 +58,11 @@ TEST_CASE("the reader takes \"parameters\": \"shared\" (default) or \"independen
 }
 
 TEST_CASE("an independent scene's answer is collides, s_intervals, t_intervals", "[independent]") {
-  const std::string iv = R"([[{"approx": "0.25", "lo": null, "hi": null}, {"approx": "0.5", "lo": "1/2", "hi": "1/2"}]])";
-  Scene s = parse_scene(scene_text(R"("independent")", R"({"collides": true, "s_intervals": )" + iv + R"(, "t_intervals": )" + iv + "}"), "f.json");
+  const std::string iv =
+      R"([[{"approx": "0.25", "lo": null, "hi": null}, {"approx": "0.5", "lo": "1/2", "hi": "1/2"}]])";
+  Scene s = parse_scene(
+      scene_text(R"("independent")", R"({"collides": true, "s_intervals": )" + iv + R"(, "t_intervals": )" + iv + "}"),
+      "f.json");
   REQUIRE(s.answer);
   CHECK(s.answer->independent);
   REQUIRE(s.answer->s_intervals.size() == 1);
@@ -66,14 +72,14 @@ TEST_CASE("an independent scene's answer is collides, s_intervals, t_intervals",
   CHECK(back.independent);
   CHECK(answer_difference(back, *s.answer).agrees);
   // keys of the other kind, and inconsistent lists, are errors at their place
-  CHECK(error_of(scene_text(R"("independent")", R"({"collides": true, "intervals": []})")).find("/answer/intervals: \"intervals\" does not apply to independent motions") !=
-        std::string::npos);
-  CHECK(error_of(scene_text("", R"({"collides": true, "s_intervals": )" + iv + "}")).find("/answer/s_intervals: \"s_intervals\" applies to independent motions only") !=
-        std::string::npos);
-  CHECK(error_of(scene_text(R"("independent")", R"({"collides": false, "t_intervals": )" + iv + "}")).find("collides is false but t_intervals is not empty") !=
-        std::string::npos);
-  CHECK(error_of(scene_text(R"("independent")", R"({"collides": true, "s_intervals": []})")).find("collides is true but s_intervals is empty") !=
-        std::string::npos);
+  CHECK(error_of(scene_text(R"("independent")", R"({"collides": true, "intervals": []})"))
+            .find("/answer/intervals: \"intervals\" does not apply to independent motions") != std::string::npos);
+  CHECK(error_of(scene_text("", R"({"collides": true, "s_intervals": )" + iv + "}"))
+            .find("/answer/s_intervals: \"s_intervals\" applies to independent motions only") != std::string::npos);
+  CHECK(error_of(scene_text(R"("independent")", R"({"collides": false, "t_intervals": )" + iv + "}"))
+            .find("collides is false but t_intervals is not empty") != std::string::npos);
+  CHECK(error_of(scene_text(R"("independent")", R"({"collides": true, "s_intervals": []})"))
+            .find("collides is true but s_intervals is empty") != std::string::npos);
 }
 
 TEST_CASE("answer_difference matches s- and t-intervals like intervals", "[independent]") {
@@ -101,7 +107,8 @@ TEST_CASE("F(u, s, t) on the diagonal s = t is the shared F(u, t), exactly", "[i
     sc.independent = false;
     const PreparedPair<4> p = prepare_pair<4>(sc);
     const Rational one(1);
-    const TriBern<Rational> F = independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(p, one));
+    const TriBern<Rational> F =
+        independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(p, one));
     const BiBern<Rational> G = ellipsoid_function(characteristic_bernstein<Rational, 4>(p, false, one), one);
     for (const Rational u : {Rational(1, 7), Rational(1, 2), Rational(5, 6)})
       for (const Rational t : {Rational(0), Rational(1, 3), Rational(3, 4), Rational(1)}) CHECK(F(u, t, t) == G(u, t));
@@ -115,7 +122,10 @@ TEST_CASE("double: the sphere cases' s- and t-intervals within 1e-9 of the analy
   SolveOptions o;
   o.arith = parse_arithmetic("double");
   const double r5 = std::sqrt(5.0);
-  struct Case { const char* name; double s0, s1, t0, t1; };
+  struct Case {
+    const char* name;
+    double s0, s1, t0, t1;
+  };
   for (const Case& c : {Case{"spheres-cross", 0.5 - r5 / 12, 0.5 + r5 / 12, 0.5 - r5 / 8, 0.5 + r5 / 8},
                         Case{"spheres-end", 1.0 / 3, 2.0 / 3, 0.0, (r5 - 1) / 8}}) {
     INFO(c.name);
@@ -169,14 +179,19 @@ TEST_CASE("exact: the sphere cases' brackets contain the analytic ends", "[indep
     check_exact(s.answer.s_intervals[0].first, Rational(1, 3));
     check_exact(s.answer.s_intervals[0].second, Rational(2, 3));
     check_exact(s.answer.t_intervals[0].first, Rational(0));
-    check_bracket(s.answer.t_intervals[0].second, RPoly(std::vector<Rational>{-1, 4, 16}), Rational(0), Rational(1, 2));  // (sqrt(5) - 1)/8
+    check_bracket(s.answer.t_intervals[0].second, RPoly(std::vector<Rational>{-1, 4, 16}), Rational(0),
+                  Rational(1, 2));  // (sqrt(5) - 1)/8
   }
 }
 
-TEST_CASE("exact and certified: a body turning in place (ball-turning, disc-turning) is answered on the static body's problem", "[independent]") {
+TEST_CASE(
+    "exact and certified: a body turning in place (ball-turning, disc-turning) is answered on the static body's "
+    "problem",
+    "[independent]") {
   // A turns about its own fixed centre (an euler motion in 3D, a rational rotation in 2D): it does not move as a
   // set, so every s meets B alike (s-intervals [0, 1]) and the t-ends are the static ball's:
-  // ball-turning 36 t^2 - 42 t + 11 = 0 ((7 -+ sqrt(5)) / 12), disc-turning 144 t^2 - 144 t + 31 = 0 (1/2 -+ sqrt(5)/12)
+  // ball-turning 36 t^2 - 42 t + 11 = 0 ((7 -+ sqrt(5)) / 12), disc-turning 144 t^2 - 144 t + 31 = 0 (1/2 -+
+  // sqrt(5)/12)
   const std::pair<const char*, RPoly> cases[] = {{"ball-turning", RPoly(std::vector<Rational>{11, -42, 36})},
                                                  {"disc-turning", RPoly(std::vector<Rational>{31, -144, 144})}};
   for (const auto& [name, p] : cases)
@@ -209,17 +224,20 @@ TEST_CASE("double and MPFR: ellipsoids on parallel paths never meet", "[independ
   }
 }
 
-TEST_CASE("independent scenes: certify and plot take them, the shared-parameter commands refuse them with exit 3", "[independent][cli]") {
+TEST_CASE("independent scenes: certify and plot take them, the shared-parameter commands refuse them with exit 3",
+          "[independent][cli]") {
   using namespace eccd::clitest;
   const std::string f = q(indep("spheres-end"));
   // (exact and certified solve them: tests/certified/test_independent_proof.cpp)
-  // certify writes eccd-independent-certificate/3 (certificate/write/independent_certificate.hpp; tests/certificate/test_independent_certificate.cpp)
+  // certify writes eccd-independent-certificate/3 (certificate/write/independent_certificate.hpp;
+  // tests/certificate/test_independent_certificate.cpp)
   TempDir w;  // (an output is never a device: certify refuses --out /dev/null)
   Run cert = run_eccd("certify " + f + " --out " + q((w.path / "c.json").string()));
   CHECK(cert.code == 0);
   CHECK(cert.out.find("s_intervals") != std::string::npos);
   // plot draws an independent scene (issue 20 point 5): where A(s) meets B(t) in the (s, t) square
-  const std::string png = (std::filesystem::temp_directory_path() / ("eccd-indep-plot-" + std::to_string(::getpid()) + ".png")).string();
+  const std::string png =
+      (std::filesystem::temp_directory_path() / ("eccd-indep-plot-" + std::to_string(::getpid()) + ".png")).string();
   Run plot = run_eccd("plot " + f + " --output " + q(png));
   CHECK(plot.code == 0);
   CHECK(std::filesystem::file_size(png) > 1000);

@@ -49,8 +49,8 @@ bool has(const std::vector<std::string>& v, const std::string& words) {
 }  // namespace
 
 TEST_CASE("judge: the exact answer and its decimals agree with the certified one", "[judge]") {
-  for (const char* f : {"cases/paper003/example2.json", "cases/paper002/example.json", "cases/spheres/spheres-crossing.json",
-                        "cases/rolling/circles-rolling.json"}) {
+  for (const char* f : {"cases/paper003/example2.json", "cases/paper002/example.json",
+                        "cases/spheres/spheres-crossing.json", "cases/rolling/circles-rolling.json"}) {
     INFO(f);
     Scene s = read_scene(src(f));
     Solution exact = solve(s);
@@ -130,7 +130,8 @@ TEST_CASE("judge: hand-edited wrong answers are reported with the right words an
 }
 
 TEST_CASE("judge: a missing contact interval is reported", "[judge]") {
-  Scene s = read_scene(src("cases/rolling/circles-rolling.json"));  // touching the whole time: one contact interval [0, 1]
+  Scene s =
+      read_scene(src("cases/rolling/circles-rolling.json"));  // touching the whole time: one contact interval [0, 1]
   Answer a = decimals_only(solve(s).answer);
   REQUIRE(a.contact_intervals.size() == 1);
   a.contact_intervals.clear();  // what an engine that cannot tell touching from overlapping writes
@@ -175,7 +176,8 @@ TEST_CASE("judge: reading the answer: bare object, scene file, solve report, and
   CHECK(judge(s, scene.answer).agrees);
 
   try {
-    answer_from_text(R"({"collides": true, "intervals": [[{"approx": "0.5"}, {"approx": "0.5", "lo": "1/2"}]]})", "mine.json");
+    answer_from_text(R"({"collides": true, "intervals": [[{"approx": "0.5"}, {"approx": "0.5", "lo": "1/2"}]]})",
+                     "mine.json");
     FAIL("a half bracket was accepted");
   } catch (const SceneError& e) {
     CHECK(std::string(e.what()).find("mine.json: /intervals/0/1") != std::string::npos);

@@ -30,7 +30,8 @@ void compare(const Animation& anim, std::size_t i, std::size_t j, std::size_t k,
   ex.arith = Arithmetic::exact();
   const PlaneCheck exact = plane_separates_on_frame(pair_frame_scene(anim, i, j, k), plane, ex);
   const FrameSides f = check.check(check.prepare(plane.normal, plane.offset), i, j, k);
-  INFO(anim.name << " bodies " << i << ", " << j << " frame " << k << ": interval " << int(f) << ", exact " << int(exact));
+  INFO(anim.name << " bodies " << i << ", " << j << " frame " << k << ": interval " << int(f) << ", exact "
+                 << int(exact));
   t.exact_separates += exact == PlaneCheck::separates;
   if (f == FrameSides::separates) {
     ++t.separates;
@@ -67,8 +68,9 @@ TEST_CASE("kept-plane check in intervals agrees with the exact check where it de
   run("bench/data/table1-0.1-1000.anim.json", 40, 1, kept, moved);
   run("bench/data/table1-1-1000.anim.json", 40, 1, kept, moved);
   run("bench/data/boxers-10.anim.json", 3, 24, kept, moved);
-  INFO("kept: " << kept.separates << " separate, " << kept.fails << " fail, " << kept.unknown << " unknown (exact separates "
-                << kept.exact_separates << "); moved: " << moved.separates << "/" << moved.fails << "/" << moved.unknown);
+  INFO("kept: " << kept.separates << " separate, " << kept.fails << " fail, " << kept.unknown
+                << " unknown (exact separates " << kept.exact_separates << "); moved: " << moved.separates << "/"
+                << moved.fails << "/" << moved.unknown);
   CHECK(kept.separates >= kept.exact_separates * 9 / 10);
   CHECK(kept.separates > 0);
   CHECK(moved.separates + moved.fails + moved.unknown > 0);

@@ -56,7 +56,8 @@ void check_against_truth(const Animation& anim, const PosesResult& r, Truth& t, 
   std::size_t undecided = 0;
   for (std::size_t k = 0; k < anim.times.size(); ++k)
     for (const auto& [a, b] : anim.pairs) {
-      INFO("pose " << k << " pair " << anim.bodies[a].name << " -- " << anim.bodies[b].name << " arith " << r.arithmetic);
+      INFO("pose " << k << " pair " << anim.bodies[a].name << " -- " << anim.bodies[b].name << " arith "
+                   << r.arithmetic);
       const Status want = get(a, b, k);
       auto it = seen.find(std::make_tuple(k, a, b));
       if (it == seen.end()) {  // dropped by the bounding spheres: must be separate
@@ -91,8 +92,9 @@ std::string table1_like(double rate, int keys, unsigned seed) {
       const double h = k * rate / 2, c = std::cos(h), s = std::sin(h);
       const double r[4] = {c, s * u[0] / nu, s * u[1] / nu, s * u[2] / nu};
       const double* p = q0;
-      double q[4] = {p[0] * r[0] - p[1] * r[1] - p[2] * r[2] - p[3] * r[3], p[0] * r[1] + p[1] * r[0] + p[2] * r[3] - p[3] * r[2],
-                     p[0] * r[2] - p[1] * r[3] + p[2] * r[0] + p[3] * r[1], p[0] * r[3] + p[1] * r[2] - p[2] * r[1] + p[3] * r[0]};
+      double q[4] = {
+          p[0] * r[0] - p[1] * r[1] - p[2] * r[2] - p[3] * r[3], p[0] * r[1] + p[1] * r[0] + p[2] * r[3] - p[3] * r[2],
+          p[0] * r[2] - p[1] * r[3] + p[2] * r[0] + p[3] * r[1], p[0] * r[3] + p[1] * r[2] - p[2] * r[1] + p[3] * r[0]};
       json o = json::array();
       for (double x : q) o.push_back(Rational(long(std::llround(x / nq * 1e6)), 1000000L).get_str());
       poses.push_back({{"position", {b ? "8" : "0", "0", "0"}}, {"orientation", o}});
@@ -101,7 +103,9 @@ std::string table1_like(double rate, int keys, unsigned seed) {
   }
   json times = json::array();
   for (int k = 0; k < keys; ++k) times.push_back(std::to_string(k));
-  return json{{"format", "ellipse-ccd-animation/1"}, {"name", "table1-like"}, {"dim", 3}, {"times", times}, {"bodies", bodies}}.dump();
+  return json{
+      {"format", "ellipse-ccd-animation/1"}, {"name", "table1-like"}, {"dim", 3}, {"times", times}, {"bodies", bodies}}
+      .dump();
 }
 
 AnimateOptions options(const char* arith, bool planes = true, int threads = 1) {
@@ -115,7 +119,8 @@ AnimateOptions options(const char* arith, bool planes = true, int threads = 1) {
 
 }  // namespace
 
-TEST_CASE("animate_poses: every pair-pose equals the exact static status, in double, certified and exact", "[animation][poses]") {
+TEST_CASE("animate_poses: every pair-pose equals the exact static status, in double, certified and exact",
+          "[animation][poses]") {
   for (const char* file : {"swarm-2d.json", "two-rows-3d.json"}) {
     const Animation anim = animation_from_text(shipped(file), file);
     Truth t;
@@ -130,7 +135,8 @@ TEST_CASE("animate_poses: every pair-pose equals the exact static status, in dou
   }
 }
 
-TEST_CASE("animate_poses: the table-1 set-up against the exact truth, and plane keeping changes no answer", "[animation][poses]") {
+TEST_CASE("animate_poses: the table-1 set-up against the exact truth, and plane keeping changes no answer",
+          "[animation][poses]") {
   const Animation anim = animation_from_text(table1_like(0.1, 300, 1), "t1");
   Truth t;
   for (const char* arith : {"double", "certified", "exact"}) {
@@ -148,7 +154,8 @@ TEST_CASE("animate_poses: the table-1 set-up against the exact truth, and plane 
   }
 }
 
-TEST_CASE("animate_poses: on a coherent animation the kept plane settles nearly every separate pair-pose", "[animation][poses]") {
+TEST_CASE("animate_poses: on a coherent animation the kept plane settles nearly every separate pair-pose",
+          "[animation][poses]") {
   // 000 section 4: at 0.01 rad per key the plane built at one pose nearly always still separates at the next.
   const Animation anim = animation_from_text(table1_like(0.01, 400, 3), "t1-slow");
   for (const char* arith : {"double", "certified"}) {
@@ -161,7 +168,7 @@ TEST_CASE("animate_poses: on a coherent animation the kept plane settles nearly 
     // every separate pair-pose either held its kept plane or built a new one (no construction failed here)
     REQUIRE(r.plane_build_failed == 0);
     REQUIRE(r.separating_plane + r.planes_built == separate);
-    REQUIRE(r.planes_built * 10 <= separate);          // at most a tenth rebuilt
+    REQUIRE(r.planes_built * 10 <= separate);                        // at most a tenth rebuilt
     REQUIRE(r.plane_checks <= r.separating_plane + r.planes_built);  // a check per pose that had a plane
   }
 }
@@ -180,7 +187,8 @@ TEST_CASE("animate_poses: threads do not change the answer, and bad options are 
   REQUIRE_THROWS_AS(animate_poses(anim, o), std::invalid_argument);
 }
 
-TEST_CASE("animate_poses: touching balls are undecided in double, never an event, and touching when exact", "[animation][poses]") {
+TEST_CASE("animate_poses: touching balls are undecided in double, never an event, and touching when exact",
+          "[animation][poses]") {
   for (int dim : {2, 3}) {
     json q = dim == 3 ? json::array({"1", "0", "0", "0"}) : json::array({"1", "0"});
     auto at = [&](const char* x, const char* y) {
@@ -189,9 +197,13 @@ TEST_CASE("animate_poses: touching balls are undecided in double, never an event
       return json{{"position", p}, {"orientation", q}};
     };
     json semi = dim == 3 ? json::array({"1", "1", "1"}) : json::array({"1", "1"});
-    json doc = {{"format", "ellipse-ccd-animation/1"}, {"name", "touch"}, {"dim", dim}, {"times", {"0", "1"}},
-                {"bodies", {{{"name", "a"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("0", "0"), at("0", "0")}}},
-                            {{"name", "b"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("2", "0"), at("3", "0")}}}}}};
+    json doc = {{"format", "ellipse-ccd-animation/1"},
+                {"name", "touch"},
+                {"dim", dim},
+                {"times", {"0", "1"}},
+                {"bodies",
+                 {{{"name", "a"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("0", "0"), at("0", "0")}}},
+                  {{"name", "b"}, {"shape", {{"semi_axes", semi}}}, {"poses", {at("2", "0"), at("3", "0")}}}}}};
     const Animation anim = animation_from_text(doc.dump(), "touch");
     INFO(dim);
     const PosesResult d = animate_poses(anim, options("double"));
@@ -206,7 +218,9 @@ TEST_CASE("animate_poses: touching balls are undecided in double, never an event
   }
 }
 
-TEST_CASE("sweep_and_prune: the pairs of overlapping intervals, as all pairs give them, looking at few on a sparse scene", "[animation][poses]") {
+TEST_CASE(
+    "sweep_and_prune: the pairs of overlapping intervals, as all pairs give them, looking at few on a sparse scene",
+    "[animation][poses]") {
   std::mt19937 gen(36);
   std::uniform_real_distribution<double> x(0, 100), w(0, 3);
   std::vector<SweepInterval> box(300);
@@ -226,8 +240,11 @@ TEST_CASE("sweep_and_prune: the pairs of overlapping intervals, as all pairs giv
   REQUIRE(examined * 10 < box.size() * (box.size() - 1) / 2);
 }
 
-TEST_CASE("animate_poses: the broad phase looks at far fewer than n²/2 pairs on a sparse scene, same answers as all pairs", "[animation][poses]") {
-  // n bodies on a grid in a plane (spacing 4, or 3 for the small one; radii up to 1.2, a wobble of up to 1.8), 3 keys; some pairs overlap.
+TEST_CASE(
+    "animate_poses: the broad phase looks at far fewer than n²/2 pairs on a sparse scene, same answers as all pairs",
+    "[animation][poses]") {
+  // n bodies on a grid in a plane (spacing 4, or 3 for the small one; radii up to 1.2, a wobble of up to 1.8), 3 keys;
+  // some pairs overlap.
   auto scene = [](int nx, int ny, int spacing) {
     std::mt19937 gen(11);
     std::uniform_int_distribution<int> jitter(-60, 60);
@@ -239,11 +256,19 @@ TEST_CASE("animate_poses: the broad phase looks at far fewer than n²/2 pairs on
           json poses = json::array();
           for (int k = 0; k < 3; ++k) {
             auto c = [&](int base) { return Rational(base * 100 + jitter(gen) * (k + 1), 100).get_str(); };
-            poses.push_back({{"position", {c(spacing * i), c(spacing * j), c(spacing * l)}}, {"orientation", {"1", Rational(jitter(gen), 100).get_str(), "0", "0"}}});
+            poses.push_back({{"position", {c(spacing * i), c(spacing * j), c(spacing * l)}},
+                             {"orientation", {"1", Rational(jitter(gen), 100).get_str(), "0", "0"}}});
           }
-          bodies.push_back({{"name", "b" + std::to_string(id)}, {"shape", {{"semi_axes", {"1.2", "0.8", "0.7"}}}}, {"poses", poses}});
+          bodies.push_back({{"name", "b" + std::to_string(id)},
+                            {"shape", {{"semi_axes", {"1.2", "0.8", "0.7"}}}},
+                            {"poses", poses}});
         }
-    return json{{"format", "ellipse-ccd-animation/1"}, {"name", "grid"}, {"dim", 3}, {"times", {"0", "1", "2"}}, {"bodies", bodies}}.dump();
+    return json{{"format", "ellipse-ccd-animation/1"},
+                {"name", "grid"},
+                {"dim", 3},
+                {"times", {"0", "1", "2"}},
+                {"bodies", bodies}}
+        .dump();
   };
   {  // sparse: 30·15 = 450 bodies in a layer, 101025 pairs per pose
     const Animation anim = animation_from_text(scene(30, 15, 4), "grid");

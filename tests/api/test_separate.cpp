@@ -30,9 +30,9 @@ using Vec = std::vector<Q>;
 using Mat = std::vector<Vec>;
 
 struct Body {
-  Vec axes;  // semi-axes
-  Mat R;     // rational rotation (orthogonal)
-  Vec c0, v; // centre c0 + t v
+  Vec axes;   // semi-axes
+  Mat R;      // rational rotation (orthogonal)
+  Vec c0, v;  // centre c0 + t v
 };
 
 Mat identity(int d) {
@@ -55,9 +55,12 @@ std::string motion_json(const Body& b) {
     m += i ? ", [" : "[";
     for (int j = 0; j <= d; ++j) {
       if (j) m += ", ";
-      if (i == d) m += j == d ? "\"1\"" : "\"0\"";
-      else if (j < d) m += str(b.R[i][j]);
-      else m += "[" + str(b.c0[i]) + ", " + str(b.v[i]) + "]";
+      if (i == d)
+        m += j == d ? "\"1\"" : "\"0\"";
+      else if (j < d)
+        m += str(b.R[i][j]);
+      else
+        m += "[" + str(b.c0[i]) + ", " + str(b.v[i]) + "]";
     }
     m += "]";
   }
@@ -104,8 +107,12 @@ SolveOptions arith(const char* name) {
 
 }  // namespace
 
-TEST_CASE("exact separating planes pass an independent exact check (3D and 2D, far and nearly touching)", "[separate]") {
-  struct Case { Body a, b; std::string name; };
+TEST_CASE("exact separating planes pass an independent exact check (3D and 2D, far and nearly touching)",
+          "[separate]") {
+  struct Case {
+    Body a, b;
+    std::string name;
+  };
   const Q eps6(1, 1000000), eps12("1/1000000000000");
   std::vector<Case> cases = {
       {Body{{3, 2, 1}, rot3a(), {0, 0, 0}, {0, 0, 0}}, Body{{1, 2, 3}, rot3b(), {7, 1, 0}, {-2, 0, 1}}, "rotated-3d"},
@@ -139,7 +146,8 @@ TEST_CASE("exact separating planes pass an independent exact check (3D and 2D, f
   CHECK(checked >= 30);
 }
 
-TEST_CASE("separate_at: touching and overlapping are stated exactly, and floating says undecided or proves", "[separate]") {
+TEST_CASE("separate_at: touching and overlapping are stated exactly, and floating says undecided or proves",
+          "[separate]") {
   const Body a{{3, 2, 1}, identity(3), {0, 0, 0}, {0, 0, 0}};
   Scene touch = scene_from_text(scene_json(a, ball(3, 1, {4, 0, 0}, {0, 0, 0}), "touch"), "touch");
   Scene over = scene_from_text(scene_json(a, ball(3, 1, {Q(7, 2), 0, 0}, {0, 0, 0}), "over"), "over");
@@ -156,8 +164,10 @@ TEST_CASE("separate_at: touching and overlapping are stated exactly, and floatin
     Separation f = separate_at(near, 0, arith(ar));
     INFO(ar << ": " << f.status << " " << f.why);
     CHECK((f.status == "separate" || f.status == "undecided"));
-    if (f.status == "separate") CHECK(separates_by_hand(a, b, 0, *f.plane));
-    else CHECK(!f.why.empty());
+    if (f.status == "separate")
+      CHECK(separates_by_hand(a, b, 0, *f.plane));
+    else
+      CHECK(!f.why.empty());
   }
   // Far apart: every arithmetic proves a plane, and it holds.
   const Body far = ball(3, 1, {6, 1, 0}, {0, 0, 0});
@@ -182,7 +192,11 @@ TEST_CASE("separate_at refuses what it cannot do", "[separate]") {
 
 TEST_CASE("plane_separates_on_frame: 000 section 4, decided on the whole frame", "[separate]") {
   for (int dim : {2, 3}) {
-    auto vec = [dim](Q x) { Vec v(dim, Q(0)); v[0] = x; return v; };
+    auto vec = [dim](Q x) {
+      Vec v(dim, Q(0));
+      v[0] = x;
+      return v;
+    };
     SeparatingPlane x0{vec(1), Q(0)};  // the plane x = 0, a on x < 0
     INFO("dim " << dim);
     // Two balls translating apart: the plane x = 0 separates for all t.
@@ -195,7 +209,8 @@ TEST_CASE("plane_separates_on_frame: 000 section 4, decided on the whole frame",
     for (int k = 0; k <= 16; ++k) CHECK(separates_by_hand(a1, b1, Q(k, 16), x0));  // by hand, on a grid
     // The same plane, flipped: b on the negative side: fails.
     SeparatingPlane flipped{vec(-1), Q(0)};
-    for (const char* ar : {"exact", "double"}) CHECK(plane_separates_on_frame(apart, flipped, arith(ar)) == PlaneCheck::fails);
+    for (const char* ar : {"exact", "double"})
+      CHECK(plane_separates_on_frame(apart, flipped, arith(ar)) == PlaneCheck::fails);
     // a goes through the plane and b: a collision; the plane fails.
     const Body a2 = ball(dim, 1, vec(-3), vec(6));
     Scene collide = scene_from_text(scene_json(a2, b1, "collide"), "collide");
@@ -230,7 +245,8 @@ TEST_CASE("plane_separates_on_frame: 000 section 4, decided on the whole frame",
   }
 }
 
-TEST_CASE("plane_separates_on_frame agrees with the hand check on rotating scenes (kept planes of 000 section 4)", "[separate]") {
+TEST_CASE("plane_separates_on_frame agrees with the hand check on rotating scenes (kept planes of 000 section 4)",
+          "[separate]") {
   // b rotates (a kinematic-free matrix motion: its rotation is fixed, its centre moves) towards a;
   // the plane made at t = 0 is kept; exact and certified agree, double never contradicts them.
   const Body a{{3, 2, 1}, rot3a(), {0, 0, 0}, {0, 0, 0}};
@@ -259,7 +275,8 @@ TEST_CASE("contact points and normals: 3D in every arithmetic, 2D with normals",
   for (const char* ar : {"exact", "certified", "double", "mpfr:128"}) {
     INFO(ar);
     Solution r = solve(s, arith(ar));
-    if (r.arith.floating() && r.answer.contacts.empty()) {  // a floating run may not see this touch: undecided, never a guess
+    if (r.arith.floating() &&
+        r.answer.contacts.empty()) {  // a floating run may not see this touch: undecided, never a guess
       CHECK(!r.answer.undecided.empty());
       continue;
     }
@@ -279,8 +296,8 @@ TEST_CASE("contact points and normals: 3D in every arithmetic, 2D with normals",
   }
   // b's outward normal there is G applied to (-1, 0, 0) (b's centre is G(4, 0, 0) at t = 1/2, make_touch3d.py):
   // the opposite of the reported one, so the normal checked above is the common normal.
-  // cases/touch3d/overlap-on-axis.json: contacts at t = 1/2 -+ sqrt(2)/4 (the ends of its collision interval), both at (3, 0, 0), a's normal (1, 0, 0)
-  // (its note); the floating runs find both.
+  // cases/touch3d/overlap-on-axis.json: contacts at t = 1/2 -+ sqrt(2)/4 (the ends of its collision interval), both at
+  // (3, 0, 0), a's normal (1, 0, 0) (its note); the floating runs find both.
   Scene axis = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/touch3d/overlap-on-axis.json");
   for (const char* ar : {"double", "mpfr:128", "exact"}) {
     INFO(ar);

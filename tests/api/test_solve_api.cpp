@@ -43,10 +43,11 @@ TEST_CASE("the README's C++ API example solves paper 002's example exactly: two 
   std::string text = out.str();
   CHECK(text.rfind("collides: true\n", 0) == 0);
   CHECK(std::count(text.begin(), text.end(), '\n') == 3);  // the line of collides and two intervals
-  CHECK(text.find("[0.1698797168") != std::string::npos);    // 002's first interval starts near t = 0.1699
+  CHECK(text.find("[0.1698797168") != std::string::npos);  // 002's first interval starts near t = 0.1699
 }
 
-TEST_CASE("solve: exact Solution matches the stored answer, every instant has a bracket and a value inside it", "[api]") {
+TEST_CASE("solve: exact Solution matches the stored answer, every instant has a bracket and a value inside it",
+          "[api]") {
   for (const char* file : {"paper002/example.json", "paper003/example2.json", "rolling/circles-rolling.json"}) {
     INFO(file);
     eccd::Scene s = eccd::read_scene(kCases + file);
@@ -69,7 +70,10 @@ TEST_CASE("solve: exact Solution matches the stored answer, every instant has a 
       CHECK(i.value >= i.lo->get_d() * (1 - 1e-15) - 1e-300);
       CHECK(i.value <= i.hi->get_d() * (1 + 1e-15) + 1e-300);
     };
-    for (const auto& [a, b] : r.answer.intervals) { check_value(a); check_value(b); }
+    for (const auto& [a, b] : r.answer.intervals) {
+      check_value(a);
+      check_value(b);
+    }
     for (const auto& c : r.answer.contacts) check_value(c);
     for (const auto& c : r.critical) check_value(c.t);
     // the stored answer's instants get their value from the approx text

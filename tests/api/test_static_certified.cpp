@@ -49,8 +49,10 @@ TEST_CASE("certified static test from two poses equals the exact status on rando
     INFO("trial " << trial);
     same_as_exact(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))},
                   Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))}, filtered2);
-    same_as_exact(Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))},
-                  Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))},
+    same_as_exact(Ellipsoid{{axis(rng), axis(rng), axis(rng)},
+                            pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))},
+                  Ellipsoid{{axis(rng), axis(rng), axis(rng)},
+                            pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))},
                   filtered3);
   }
   // The filter does its job: generic pairs are decided in double.
@@ -82,7 +84,10 @@ TEST_CASE("certified static test equals the exact status at and near touching po
       CHECK(std::string(to_string(static_status(sa, sb, kCertified))) == to_string(want));
       same_as_exact(ea, eb, f);
       same_as_exact(sa, sb, f);
-      if (eps == 0) { touches += 2; filtered += f; }
+      if (eps == 0) {
+        touches += 2;
+        filtered += f;
+      }
     }
   }
   CHECK(touches == 300);

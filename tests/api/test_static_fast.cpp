@@ -52,10 +52,16 @@ TEST_CASE("ForwardBound: a sign it claims is the exact sign of the same program 
       for (int k = 4; k >= 1; --k) p[k] = p[k] - z * p[k - 1];
     ForwardBound f[5];
     mpq_class q[5];
-    for (int k = 0; k < 5; ++k) { f[k] = ForwardBound::exact(p[k]); q[k] = mpq_class(p[k]); }
+    for (int k = 0; k < 5; ++k) {
+      f[k] = ForwardBound::exact(p[k]);
+      q[k] = mpq_class(p[k]);
+    }
     Sign s = sign(quartic_discriminant(f[0], f[1], f[2], f[3], f[4]));
     Sign e = sign(quartic_discriminant(q[0], q[1], q[2], q[3], q[4]));
-    if (s == Sign::uncertain) { ++uncertain; continue; }
+    if (s == Sign::uncertain) {
+      ++uncertain;
+      continue;
+    }
     ++certain;
     REQUIRE(s == e);
   }
@@ -70,14 +76,26 @@ TEST_CASE("quartic_sign_status equals the Sturm status in exact arithmetic, touc
   int seen[3] = {0, 0, 0};
   for (int trial = 0; trial < 300; ++trial) {
     mpq_class a[3], b[3];
-    for (int i = 0; i < 3; ++i) { a[i] = mpq_class(quarter(rng), 4); b[i] = mpq_class(quarter(rng), 4); }
-    if (trial % 3 == 0) { a[1] = a[2] = a[0]; b[1] = b[2] = b[0]; }  // spheres
+    for (int i = 0; i < 3; ++i) {
+      a[i] = mpq_class(quarter(rng), 4);
+      b[i] = mpq_class(quarter(rng), 4);
+    }
+    if (trial % 3 == 0) {
+      a[1] = a[2] = a[0];
+      b[1] = b[2] = b[0];
+    }  // spheres
     mpq_class c[3] = {mpq_class(off(rng), 8), mpq_class(off(rng), 8), mpq_class(off(rng), 8)};
-    if (trial % 3 == 0) { c[0] = a[0] + b[0]; c[1] = c[2] = 0; }  // exactly touching spheres
+    if (trial % 3 == 0) {
+      c[0] = a[0] + b[0];
+      c[1] = c[2] = 0;
+    }  // exactly touching spheres
     mpq_class R[3][3] = {{mpq_class(3, 5), mpq_class(-4, 5), 0}, {mpq_class(4, 5), mpq_class(3, 5), 0}, {0, 0, 1}};
-    if (trial % 3 == 0) for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) R[i][j] = i == j ? 1 : 0;
+    if (trial % 3 == 0)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) R[i][j] = i == j ? 1 : 0;
     mpq_class T[4][4], qb[4] = {1 / (b[0] * b[0]), 1 / (b[1] * b[1]), 1 / (b[2] * b[2]), -1};
-    for (int i = 0; i < 4; ++i) for (int j = 0; j < 4; ++j) T[i][j] = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) T[i][j] = 0;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) T[i][j] = R[j][i];
       T[i][3] = -(R[0][i] * c[0] + R[1][i] * c[1] + R[2][i] * c[2]);
@@ -100,7 +118,8 @@ TEST_CASE("quartic_sign_status equals the Sturm status in exact arithmetic, touc
   CHECK(seen[2] > 10);
 }
 
-TEST_CASE("fast double static test never disagrees with the exact status (random, touching, near-touching)", "[static]") {
+TEST_CASE("fast double static test never disagrees with the exact status (random, touching, near-touching)",
+          "[static]") {
   std::uint64_t seed = test::seed_from_env(210003);
   INFO("seed " << seed << " (set ECCD_TEST_SEED to repeat)");
   std::mt19937_64 rng(seed);
@@ -109,9 +128,10 @@ TEST_CASE("fast double static test never disagrees with the exact status (random
   const int n = 3000;
   for (int trial = 0; trial < n; ++trial) {
     INFO("trial " << trial);
-    decided3 += never_wrong(
-        Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))},
-        Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
+    decided3 += never_wrong(Ellipsoid{{axis(rng), axis(rng), axis(rng)},
+                                      pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))},
+                            Ellipsoid{{axis(rng), axis(rng), axis(rng)},
+                                      pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
     decided2 += never_wrong(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))},
                             Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))});
   }
@@ -135,7 +155,10 @@ TEST_CASE("fast double static test never disagrees with the exact status (random
       std::array<double, 3> ea{s1, s1, s1}, eb{s2, s2, s2};
       ea[(ax + 1) % 3] = s1 + 0.125;
       eb[(ax + 2) % 3] = s2 + 0.375;
-      if (spheres) { ea = {r1, r1, r1}; eb = {r2, r2, r2}; }
+      if (spheres) {
+        ea = {r1, r1, r1};
+        eb = {r2, r2, r2};
+      }
       ea[ax] = r1;
       eb[ax] = r2;
       Ellipsoid a{ea, pose3({1, 0, 0, 0}, 0, 0, 0)}, b{eb, pose3({1, 0, 0, 0}, c[0], c[1], c[2])};
@@ -147,7 +170,10 @@ TEST_CASE("fast double static test never disagrees with the exact status (random
         CHECK(d == Status::uncertain);  // a touch is a double root: double cannot prove it
       } else {
         CHECK((d == Status::uncertain || d == ex));
-        if (!spheres) { ++near_asymmetric; near_decided += d != Status::uncertain; }
+        if (!spheres) {
+          ++near_asymmetric;
+          near_decided += d != Status::uncertain;
+        }
       }
     }
   }
@@ -170,41 +196,46 @@ TEST_CASE("static_status_batch gives static_status pair by pair (double and cert
       b2.push_back(Ellipse{{0.75, 1.5}, pose2(0, 1.25, 0)});
       continue;
     }
-    a3.push_back(Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
-    b3.push_back(Ellipsoid{{axis(rng), axis(rng), axis(rng)}, pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
+    a3.push_back(Ellipsoid{{axis(rng), axis(rng), axis(rng)},
+                           pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
+    b3.push_back(Ellipsoid{{axis(rng), axis(rng), axis(rng)},
+                           pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng))});
     a2.push_back(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))});
     b2.push_back(Ellipse{{axis(rng), axis(rng)}, pose2(ang(rng), pos(rng), pos(rng))});
   }
-  // Every instruction set this CPU runs (issue 36: AVX2 beside AVX-512, and pair by pair), each giving the single pairs' answers.
+  // Every instruction set this CPU runs (issue 36: AVX2 beside AVX-512, and pair by pair), each giving the single
+  // pairs' answers.
   std::vector<simd::Isa> isas{simd::Isa::none};
   if (simd::has_avx2()) isas.push_back(simd::Isa::avx2);
   if (simd::has_avx512()) isas.push_back(simd::Isa::avx512);
   for (simd::Isa isa : isas)
-  for (const Arithmetic& arith : {Arithmetic::double_precision(), Arithmetic::certified()}) {
-    INFO(arith.name() << " " << simd::to_string(isa));
-    simd::set_static_batch_isa_limit(isa);
-    CHECK(simd::static_batch_isa() == isa);
-    std::vector<Status> o3(n), o2(n);
-    static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3), std::span<Status>(o3), arith);
-    static_status_batch(std::span<const Ellipse>(a2), std::span<const Ellipse>(b2), std::span<Status>(o2), arith);
-    for (int i = 0; i < n; ++i) {
-      INFO("pair " << i);
-      CHECK(o3[i] == static_status(a3[i], b3[i], arith));
-      CHECK(o2[i] == static_status(a2[i], b2[i], arith));
-      if (i % 10 == 3) {
-        CHECK(o3[i] == (arith.kind == Arithmetic::Double ? Status::uncertain : Status::touching));
-        CHECK(o2[i] == (arith.kind == Arithmetic::Double ? Status::uncertain : Status::touching));
+    for (const Arithmetic& arith : {Arithmetic::double_precision(), Arithmetic::certified()}) {
+      INFO(arith.name() << " " << simd::to_string(isa));
+      simd::set_static_batch_isa_limit(isa);
+      CHECK(simd::static_batch_isa() == isa);
+      std::vector<Status> o3(n), o2(n);
+      static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3), std::span<Status>(o3), arith);
+      static_status_batch(std::span<const Ellipse>(a2), std::span<const Ellipse>(b2), std::span<Status>(o2), arith);
+      for (int i = 0; i < n; ++i) {
+        INFO("pair " << i);
+        CHECK(o3[i] == static_status(a3[i], b3[i], arith));
+        CHECK(o2[i] == static_status(a2[i], b2[i], arith));
+        if (i % 10 == 3) {
+          CHECK(o3[i] == (arith.kind == Arithmetic::Double ? Status::uncertain : Status::touching));
+          CHECK(o2[i] == (arith.kind == Arithmetic::Double ? Status::uncertain : Status::touching));
+        }
       }
     }
-  }
   simd::set_static_batch_isa_limit(simd::Isa::avx512);
   CHECK(simd::static_batch_isa() == simd::cpu_isa());
   // Bad input: sizes, and a bad pair named by its index, nothing written.
   std::vector<Status> out(n, Status::separate);
-  CHECK_THROWS_AS(static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3).first(5), std::span<Status>(out)),
+  CHECK_THROWS_AS(static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3).first(5),
+                                      std::span<Status>(out)),
                   std::invalid_argument);
   b3[7].semi_axes[1] = -1;
-  CHECK_THROWS_WITH(static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3), std::span<Status>(out)),
-                    Catch::Contains("pair 7"));
+  CHECK_THROWS_WITH(
+      static_status_batch(std::span<const Ellipsoid>(a3), std::span<const Ellipsoid>(b3), std::span<Status>(out)),
+      Catch::Contains("pair 7"));
   CHECK(out[0] == Status::separate);
 }

@@ -33,19 +33,25 @@ M4 random_affine(std::mt19937_64& rng, double spread) {
   std::uniform_real_distribution<double> q(-1, 1), pos(-spread, spread), scale(0.25, 4);
   M4 p = pose3({q(rng), q(rng), q(rng), q(rng)}, pos(rng), pos(rng), pos(rng));
   switch (rng() % 4) {
-    case 0: break;
+    case 0:
+      break;
     case 1:
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) p[i][j] *= scale(rng);
       break;
-    case 2: p[rng() % 3][rng() % 3] = 1e-17 * q(rng); break;
-    case 3: p[rng() % 3][rng() % 3] = 0; break;
+    case 2:
+      p[rng() % 3][rng() % 3] = 1e-17 * q(rng);
+      break;
+    case 3:
+      p[rng() % 3][rng() % 3] = 0;
+      break;
   }
   return p;
 }
 
 // The exact coefficients of the same program on the given doubles.
-std::array<Rational, 5> exact_coefficients(const std::array<double, 3>& xa, const M4& pa, const std::array<double, 3>& xb, const M4& pb) {
+std::array<Rational, 5> exact_coefficients(const std::array<double, 3>& xa, const M4& pa,
+                                           const std::array<double, 3>& xb, const M4& pb) {
   auto leaf = static_leaves(xa, pa, xb, pb);
   return unit_ball_coefficients<Rational>([&](int k) { return Rational(leaf(k)); });
 }
@@ -130,7 +136,8 @@ TEST_CASE("static filter 3D: the ranges, and a status only where the exact one a
       M4 pa = pose3({1, 0, 0, 0}, 0, 0, 0), pb = pose3({1, 0, 0, 0}, c[0], c[1], c[2]);
       Status f = static_filter3d(ea, pa, eb, pb);
       Status want = eps == 0 ? Status::touching : eps > 0 ? Status::separate : Status::overlapping;
-      REQUIRE(std::string(to_string(static_status(Ellipsoid{ea, pa}, Ellipsoid{eb, pb}, Arithmetic::exact()))) == to_string(want));
+      REQUIRE(std::string(to_string(static_status(Ellipsoid{ea, pa}, Ellipsoid{eb, pb}, Arithmetic::exact()))) ==
+              to_string(want));
       INFO("trial " << trial << " eps " << eps << " filter " << to_string(f));
       if (eps == 0) {
         ++touches;
@@ -161,10 +168,11 @@ TEST_CASE("ValueMagnitude: the value lane is the double run and the magnitude la
   for (int trial = 0; trial < 500; ++trial) {
     double g[5];
     for (double& v : g) v = x(rng);
-    ValueMagnitude d = quartic_discriminant(ValueMagnitude::leaf(g[4]), ValueMagnitude::leaf(g[3]), ValueMagnitude::leaf(g[2]),
-                                            ValueMagnitude::leaf(g[1]), ValueMagnitude::leaf(g[0]));
-    Magnitude m = quartic_discriminant(Magnitude::leaf(g[4]), Magnitude::leaf(g[3]), Magnitude::leaf(g[2]), Magnitude::leaf(g[1]),
-                                       Magnitude::leaf(g[0]));
+    ValueMagnitude d =
+        quartic_discriminant(ValueMagnitude::leaf(g[4]), ValueMagnitude::leaf(g[3]), ValueMagnitude::leaf(g[2]),
+                             ValueMagnitude::leaf(g[1]), ValueMagnitude::leaf(g[0]));
+    Magnitude m = quartic_discriminant(Magnitude::leaf(g[4]), Magnitude::leaf(g[3]), Magnitude::leaf(g[2]),
+                                       Magnitude::leaf(g[1]), Magnitude::leaf(g[0]));
     CHECK(d.value() == quartic_discriminant(g[4], g[3], g[2], g[1], g[0]));
     CHECK(d.magnitude() == m.value());
     CHECK(m.value() >= std::fabs(d.value()));
@@ -185,25 +193,31 @@ TEST_CASE("static test 3D: bad input is refused with the reason although the fil
   for (const Arithmetic& arith : {Arithmetic::double_precision(), Arithmetic::certified(), Arithmetic::exact()}) {
     INFO(arith.name());
     CHECK(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, far}, arith) == Status::separate);
-    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, singular}, arith), Catch::Contains("object b: the pose is singular"));
-    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, singular}, Ellipsoid{bx, id}, arith), Catch::Contains("object a: the pose is singular"));
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, singular}, arith),
+                      Catch::Contains("object b: the pose is singular"));
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, singular}, Ellipsoid{bx, id}, arith),
+                      Catch::Contains("object a: the pose is singular"));
     CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, nan}, arith), Catch::Contains("not finite"));
     CHECK_THROWS_WITH(static_status(Ellipsoid{ax, inf}, Ellipsoid{bx, id}, arith), Catch::Contains("not finite"));
-    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, projective}, arith), Catch::Contains("not affine"));
+    CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{bx, projective}, arith),
+                      Catch::Contains("not affine"));
     for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
       std::array<double, 3> b2 = bx;
       b2[1] = bad;
-      CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{b2, far}, arith), Catch::Contains("object b: semi-axis"));
+      CHECK_THROWS_WITH(static_status(Ellipsoid{ax, id}, Ellipsoid{b2, far}, arith),
+                        Catch::Contains("object b: semi-axis"));
     }
     std::vector<Ellipsoid> as{Ellipsoid{ax, id}, Ellipsoid{ax, id}}, bs{Ellipsoid{bx, far}, Ellipsoid{bx, singular}};
     std::vector<Status> out(2, Status::touching);
-    CHECK_THROWS_WITH(static_status_batch(std::span<const Ellipsoid>(as), std::span<const Ellipsoid>(bs), std::span<Status>(out), arith),
+    CHECK_THROWS_WITH(static_status_batch(std::span<const Ellipsoid>(as), std::span<const Ellipsoid>(bs),
+                                          std::span<Status>(out), arith),
                       Catch::Contains("pair 1"));
     CHECK(out[0] == Status::touching);  // nothing written
   }
 }
 
-TEST_CASE("static filter 3D: the vector lanes (number/lane_vector.hpp) give the one-pair codes, edge inputs included", "[static]") {
+TEST_CASE("static filter 3D: the vector lanes (number/lane_vector.hpp) give the one-pair codes, edge inputs included",
+          "[static]") {
   // Issue 36: the AVX2 batch runs the program on explicit 4-lane vectors; here the same template at widths 2 and 4
   // (compiled for this build's baseline), against the one-pair program, on random pairs and on inputs the ranges
   // refuse (NaN, infinity, a pose entry above 2^12, a semi-axis below 2^-12, zero) and exactly touching spheres.
@@ -217,13 +231,29 @@ TEST_CASE("static filter 3D: the vector lanes (number/lane_vector.hpp) give the 
       std::array<double, 3> xa{axis(rng), axis(rng), axis(rng)}, xb{axis(rng), axis(rng), axis(rng)};
       M4 pa = random_affine(rng, 3), pb = random_affine(rng, 3);
       switch ((trial * L + l) % 23) {
-        case 1: pb[1][2] = std::nan(""); break;
-        case 2: pa[0][3] = HUGE_VAL; break;
-        case 3: pb[2][3] = 5000; break;
-        case 4: xa[1] = 1e-4; break;
-        case 5: xb[0] = 0; break;
-        case 6: xa = {0.5, 0.5, 0.5}; xb = {0.75, 0.75, 0.75}; pa = pose3({1, 0, 0, 0}, 0, 0, 0); pb = pose3({1, 0, 0, 0}, 1.25, 0, 0); break;
-        default: break;
+        case 1:
+          pb[1][2] = std::nan("");
+          break;
+        case 2:
+          pa[0][3] = HUGE_VAL;
+          break;
+        case 3:
+          pb[2][3] = 5000;
+          break;
+        case 4:
+          xa[1] = 1e-4;
+          break;
+        case 5:
+          xb[0] = 0;
+          break;
+        case 6:
+          xa = {0.5, 0.5, 0.5};
+          xb = {0.75, 0.75, 0.75};
+          pa = pose3({1, 0, 0, 0}, 0, 0, 0);
+          pb = pose3({1, 0, 0, 0}, 1.25, 0, 0);
+          break;
+        default:
+          break;
       }
       auto leaf = static_leaves(xa, pa, xb, pb);
       for (int k = 0; k < kStaticInputs; ++k) in[k][l] = leaf(k);

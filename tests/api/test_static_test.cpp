@@ -36,7 +36,8 @@ Tally compare(const Shape& a, const Shape& b, Status& exact_out) {
   exact_out = ex;
   REQUIRE(ex != Status::uncertain);  // exact always decides
   Tally t;
-  if (db == Status::uncertain) ++t.uncertain;
+  if (db == Status::uncertain)
+    ++t.uncertain;
   else {
     ++t.decided;
     CHECK(to_string(db) == std::string(to_string(ex)));
@@ -46,7 +47,8 @@ Tally compare(const Shape& a, const Shape& b, Status& exact_out) {
 
 }  // namespace
 
-TEST_CASE("static test from two poses in 2D: double agrees with exact or says uncertain, on random poses", "[api][static]") {
+TEST_CASE("static test from two poses in 2D: double agrees with exact or says uncertain, on random poses",
+          "[api][static]") {
   std::uint64_t seed = test::seed_from_env(160016);
   INFO("seed " << seed << " (set ECCD_TEST_SEED to repeat)");
   std::mt19937_64 rng(seed);
@@ -69,7 +71,8 @@ TEST_CASE("static test from two poses in 2D: double agrees with exact or says un
   CHECK(all.decided >= 2950);
 }
 
-TEST_CASE("static test from two poses in 3D: 001 Appendix A in double agrees with exact or says uncertain", "[api][static]") {
+TEST_CASE("static test from two poses in 3D: 001 Appendix A in double agrees with exact or says uncertain",
+          "[api][static]") {
   std::uint64_t seed = test::seed_from_env(160017);
   INFO("seed " << seed << " (set ECCD_TEST_SEED to repeat)");
   std::mt19937_64 rng(seed);
@@ -77,8 +80,10 @@ TEST_CASE("static test from two poses in 3D: 001 Appendix A in double agrees wit
   Tally all;
   int separate = 0, overlapping = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    Ellipsoid a{{axis(rng), axis(rng), axis(rng)}, pose3({u(rng), u(rng), u(rng), u(rng)}, pos(rng), pos(rng), pos(rng))};
-    Ellipsoid b{{axis(rng), axis(rng), axis(rng)}, pose3({u(rng), u(rng), u(rng), u(rng)}, pos(rng), pos(rng), pos(rng))};
+    Ellipsoid a{{axis(rng), axis(rng), axis(rng)},
+                pose3({u(rng), u(rng), u(rng), u(rng)}, pos(rng), pos(rng), pos(rng))};
+    Ellipsoid b{{axis(rng), axis(rng), axis(rng)},
+                pose3({u(rng), u(rng), u(rng), u(rng)}, pos(rng), pos(rng), pos(rng))};
     INFO("trial " << trial);
     Status ex;
     Tally t = compare(a, b, ex);
@@ -92,8 +97,9 @@ TEST_CASE("static test from two poses in 3D: 001 Appendix A in double agrees wit
   CHECK(all.decided >= 1950);
 }
 
-TEST_CASE("static test near and at a touch: exact says touching at the tangent pose, double never gives the wrong status",
-          "[api][static]") {
+TEST_CASE(
+    "static test near and at a touch: exact says touching at the tangent pose, double never gives the wrong status",
+    "[api][static]") {
   // Axis-aligned shapes side by side along x: a's extreme point (a1, 0) meets
   // b's (-b1, 0) when the centres are a1 + b1 apart (both tangent to x = a1,
   // on opposite sides): touching; eps > 0 apart separate, eps < 0 overlapping.
@@ -132,12 +138,14 @@ TEST_CASE("static test from two poses: bad shapes and poses are refused with the
   Ellipse projective{{1, 1}, {{{1, 0, 0}, {0, 1, 0}, {0.5, 0, 1}}}};
   CHECK_THROWS_WITH(static_status(ok, flat), Catch::Contains("object b: semi-axis"));
   CHECK_THROWS_WITH(static_status(singular, ok), Catch::Contains("object a: the pose is singular"));
-  CHECK_THROWS_WITH(static_status(ok, singular, Arithmetic::exact()), Catch::Contains("object b: the pose is singular"));
+  CHECK_THROWS_WITH(static_status(ok, singular, Arithmetic::exact()),
+                    Catch::Contains("object b: the pose is singular"));
   CHECK_THROWS_WITH(static_status(projective, ok), Catch::Contains("not affine"));
   CHECK_THROWS_AS(static_status(ok, ok, Arithmetic::mpfr(128)), std::invalid_argument);
 }
 
-TEST_CASE("status of a scene at an instant: exact equals the exact pipeline's cells, double agrees or is uncertain", "[api][static]") {
+TEST_CASE("status of a scene at an instant: exact equals the exact pipeline's cells, double agrees or is uncertain",
+          "[api][static]") {
   for (const char* file : {"paper003/example2.json", "paper002/example.json", "spheres/spheres-crossing.json"}) {
     INFO(file);
     Scene s = read_scene(kCases + file);

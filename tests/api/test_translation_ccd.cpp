@@ -26,7 +26,8 @@ namespace {
 std::string q(long num, long den) { return std::to_string(num) + "/" + std::to_string(den); }
 
 // One body: semi-axes, a constant quaternion, and a translation c + t v (each given as num/den strings).
-std::string body(const std::string (&axes)[3], const long (&e)[4], const std::string (&c)[3], const std::string (&v)[3]) {
+std::string body(const std::string (&axes)[3], const long (&e)[4], const std::string (&c)[3],
+                 const std::string (&v)[3]) {
   std::string s = R"({"shape": {"semi_axes": [")" + axes[0] + R"(", ")" + axes[1] + R"(", ")" + axes[2] +
                   R"("]}, "motion": {"type": "euler", "e": [)";
   for (int i = 0; i < 4; ++i) s += (i ? ", \"" : "\"") + std::to_string(e[i]) + "\"";
@@ -36,8 +37,9 @@ std::string body(const std::string (&axes)[3], const long (&e)[4], const std::st
 }
 
 Scene scene_of(const std::string& a, const std::string& b, const std::string& name) {
-  return scene_from_text(R"({"format": "ellipse-ccd-scene/1", "name": ")" + name + R"(", "dim": 3, "a": )" + a + ", \"b\": " + b + "}",
-                         name);
+  return scene_from_text(
+      R"({"format": "ellipse-ccd-scene/1", "name": ")" + name + R"(", "dim": 3, "a": )" + a + ", \"b\": " + b + "}",
+      name);
 }
 
 // A random pair whose paths pass near each other around a random instant.
@@ -85,10 +87,13 @@ void check_faces(const Scene& s, bool published_exact, Tally& tally) {
     o.guard = g;
     const Solution got = solve(s, o);
     ++tally.runs;
-    if (g == Guard::bound) tally.shortcut += got.method == "translation";
-    else CHECK(got.method != "translation");
+    if (g == Guard::bound)
+      tally.shortcut += got.method == "translation";
+    else
+      CHECK(got.method != "translation");
     const AnswerDifference d = answer_difference(got.answer, exact.answer);
-    INFO(s.name << " guard " << to_string(g) << " method " << got.method << ": " << (d.differences.empty() ? "" : d.differences[0]));
+    INFO(s.name << " guard " << to_string(g) << " method " << got.method << ": "
+                << (d.differences.empty() ? "" : d.differences[0]));
     if (g == Guard::bound) {
       if (got.decided()) {
         ++tally.decided;

@@ -43,9 +43,9 @@ inline void spit(const std::filesystem::path& p, const std::string& text) {
 }
 
 struct Run {
-  int code = -1;          // exit status; 124/137: killed by timeout; -1: no normal exit
+  int code = -1;  // exit status; 124/137: killed by timeout; -1: no normal exit
   bool timed_out = false;
-  std::string out, err;   // stderr cut at 1 MB (a flood would be seen by its size)
+  std::string out, err;  // stderr cut at 1 MB (a flood would be seen by its size)
   std::size_t err_bytes = 0;
   double seconds = 0;      // wall-clock: for messages only
   double cpu_seconds = 0;  // user + system time of the shell, `timeout` and eccd (all waited for)
@@ -61,10 +61,10 @@ inline double children_cpu_seconds() {
 // Runs `args` (after the eccd binary) in folder `cwd` under `timeout SECONDS`.
 inline Run run_eccd(const std::string& args, double seconds = 60, const std::string& cwd = "") {
   Run r;
-  auto tmp = std::filesystem::temp_directory_path() / ("eccd_cli_err_" + std::to_string(getpid()) + "_" +
-                                                       std::to_string(std::random_device{}()));
-  std::string cmd = (cwd.empty() ? "" : "cd " + q(cwd) + " && ") + "timeout -k 5 " + std::to_string(int(seconds)) + " " + exe() +
-                    " " + args + " 2>" + q(tmp.string());
+  auto tmp = std::filesystem::temp_directory_path() /
+             ("eccd_cli_err_" + std::to_string(getpid()) + "_" + std::to_string(std::random_device{}()));
+  std::string cmd = (cwd.empty() ? "" : "cd " + q(cwd) + " && ") + "timeout -k 5 " + std::to_string(int(seconds)) +
+                    " " + exe() + " " + args + " 2>" + q(tmp.string());
   auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = children_cpu_seconds();
   FILE* p = popen(cmd.c_str(), "r");
@@ -101,7 +101,9 @@ struct TempDir {
     std::error_code ec;
     std::filesystem::permissions(path, std::filesystem::perms::owner_all, std::filesystem::perm_options::add, ec);
     for (auto& e : std::filesystem::recursive_directory_iterator(path, ec))
-      if (e.is_directory(ec)) std::filesystem::permissions(e.path(), std::filesystem::perms::owner_all, std::filesystem::perm_options::add, ec);
+      if (e.is_directory(ec))
+        std::filesystem::permissions(e.path(), std::filesystem::perms::owner_all, std::filesystem::perm_options::add,
+                                     ec);
     std::filesystem::remove_all(path, ec);
   }
   std::string str() const { return path.string(); }

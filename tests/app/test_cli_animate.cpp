@@ -27,7 +27,8 @@ TEST_CASE("eccd animate --json prints the animation answer object", "[app][cli][
   REQUIRE(j["events"].size() > 0);
   REQUIRE(j["undecided"].empty());
   const json& st = j["stages"];
-  REQUIRE(st["bounding_volumes"].get<int>() + st["separating_plane"].get<int>() + st["continuous_test"].get<int>() == 200);
+  REQUIRE(st["bounding_volumes"].get<int>() + st["separating_plane"].get<int>() + st["continuous_test"].get<int>() ==
+          200);
   REQUIRE(j["separating_plane_stage"] == "built");  // api/separate.hpp is part of the build (000 section 4)
   std::size_t last_frame = 0;
   for (const auto& e : j["events"]) {
@@ -36,13 +37,14 @@ TEST_CASE("eccd animate --json prints the animation answer object", "[app][cli][
     REQUIRE(e["answer"]["first_contact"]["lo"].is_string());  // exact: certified brackets
     // global t = t_k + tau (t_{k+1} - t_k) with t_k = k/20 here: the local bracket maps exactly
     const std::size_t k = e["frame"].get<std::size_t>();
-    mpq_class lo_t(e["answer"]["first_contact"]["lo"].get<std::string>()), lo_tau(e["local_answer"]["first_contact"]["lo"].get<std::string>());
+    mpq_class lo_t(e["answer"]["first_contact"]["lo"].get<std::string>()),
+        lo_tau(e["local_answer"]["first_contact"]["lo"].get<std::string>());
     lo_t.canonicalize();
     lo_tau.canonicalize();
     mpq_class t_k(long(k), 20);
     t_k.canonicalize();
     REQUIRE(lo_t == t_k + lo_tau / 20);
-    REQUIRE(e["frame"].get<std::size_t>() >= last_frame);    // ordered by frame
+    REQUIRE(e["frame"].get<std::size_t>() >= last_frame);  // ordered by frame
     last_frame = e["frame"].get<std::size_t>();
   }
   // double: no brackets
@@ -66,7 +68,8 @@ TEST_CASE("eccd animate: bad file, bad options, and nothing written on error", "
   TempDir dir;
   const std::string out = dir.str() + "/answer.json";
   // a bad animation: exit 2, the file and place named, no output file
-  spit(dir.path / "bad.json", R"({"format": "ellipse-ccd-animation/1", "name": "x", "dim": 2, "times": ["0", "0"], "bodies": []})");
+  spit(dir.path / "bad.json",
+       R"({"format": "ellipse-ccd-animation/1", "name": "x", "dim": 2, "times": ["0", "0"], "bodies": []})");
   Run r = run_eccd("animate " + q(dir.str() + "/bad.json") + " --out " + q(out));
   REQUIRE(r.code == 2);
   REQUIRE(r.err.find("bad.json: /times/1: times must be strictly increasing") != std::string::npos);

@@ -55,8 +55,10 @@ std::string bad_path(const char* file) { return std::string(ECCD_SOURCE_DIR) + "
 std::string shell_quote(const std::string& s) {
   std::string r = "'";
   for (char c : s) {
-    if (c == '\'') r += "'\\''";
-    else r += c;
+    if (c == '\'')
+      r += "'\\''";
+    else
+      r += c;
   }
   return r + "'";
 }

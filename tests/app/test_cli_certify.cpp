@@ -37,7 +37,10 @@ void save(const fs::path& p, const json& j) {
 }
 }  // namespace
 
-TEST_CASE("certify paper 002's example: both intervals certified, verdicts, a certificate the checker accepts and tampering it fails", "[cli][certify]") {
+TEST_CASE(
+    "certify paper 002's example: both intervals certified, verdicts, a certificate the checker accepts and tampering "
+    "it fails",
+    "[cli][certify]") {
   fs::path dir = temp_dir("certify");
   std::string scene = src + "/cases/paper002/example.json";
   fs::path cert = dir / "example.cert.json";
@@ -79,7 +82,8 @@ TEST_CASE("certify paper 002's example: both intervals certified, verdicts, a ce
       CHECK(v["agrees"] == false);
       // Off on the second interval, or (with the running error bound of issue 14) undecided there.
       const std::string d = v["differences"].dump();
-      CHECK((d.find("collision interval 2 start off by") != std::string::npos || d.find("collision interval 2 end off by") != std::string::npos ||
+      CHECK((d.find("collision interval 2 start off by") != std::string::npos ||
+             d.find("collision interval 2 end off by") != std::string::npos ||
              d.find("undecided") != std::string::npos));
     }
   }
@@ -98,7 +102,7 @@ TEST_CASE("certify paper 002's example: both intervals certified, verdicts, a ce
   }
   SECTION("one bracket moved off its root") {
     c["timeline"][k]["instant"]["lo"] = "5/32";
-    c["timeline"][k]["instant"]["hi"] = "21/128";  // inside (1/8, 0.1698...): holds no root
+    c["timeline"][k]["instant"]["hi"] = "21/128";    // inside (1/8, 0.1698...): holds no root
     c["timeline"][k]["instant"]["approx"] = "0.16";  // consistent with the moved bracket (approx is checked too)
     save(dir / "t.json", c);
     CHECK(run(exe + " check-certificate " + scene + " " + (dir / "t.json").string(), out) == 1);
@@ -144,11 +148,14 @@ TEST_CASE("check-certificate: unreadable or malformed files exit 2 with the file
   CHECK(run(exe + " check-certificate " + ind + " " + (dir / "i.json").string(), out) == 0);
   CHECK(out.find("VALID") != std::string::npos);
   // ... but not against another scene's file
-  CHECK(run(exe + " check-certificate " + src + "/cases/independent/ellipsoids-apart.json " + (dir / "i.json").string(), out) != 0);
+  CHECK(run(exe + " check-certificate " + src + "/cases/independent/ellipsoids-apart.json " + (dir / "i.json").string(),
+            out) != 0);
   fs::remove_all(dir);
 }
 
-TEST_CASE("regress cases/: every stored answer is reproduced and certified, and one edited endpoint fails and names the case", "[cli][regress]") {
+TEST_CASE(
+    "regress cases/: every stored answer is reproduced and certified, and one edited endpoint fails and names the case",
+    "[cli][regress]") {
   std::string out;
   int rc = run(exe + " regress " + src + "/cases --certify", out);
   INFO(out);

@@ -21,7 +21,8 @@ using namespace eccd::clitest;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kScene2d = src("cases/paper003/example2.json");  // 003 Example 2: exact touch at t = 1/2, stored answer
+const std::string kScene2d =
+    src("cases/paper003/example2.json");  // 003 Example 2: exact touch at t = 1/2, stored answer
 const std::string kScene3d = src("cases/paper002/example.json");
 }  // namespace
 
@@ -56,12 +57,15 @@ TEST_CASE("every command exits 2 for a bad option or a bad option value", "[cli]
   TempDir t;
   const std::string cert = (t.path / "c.json").string();
   for (const std::string args :
-       {"solve " + q(kScene2d) + " --basis quartic", "solve " + q(kScene2d) + " --variant 7", "solve " + q(kScene2d) + " --arith quad",
-        "solve " + q(kScene2d) + " --method marching:x", "solve " + q(kScene2d) + " --input cooked", "solve " + q(kScene2d) + " --bogus",
-        "solve " + q(kScene3d) + " --arith double --basis scaled-bernstein",  // a combination no 3D method takes: a bad option, not a refusal
+       {"solve " + q(kScene2d) + " --basis quartic", "solve " + q(kScene2d) + " --variant 7",
+        "solve " + q(kScene2d) + " --arith quad", "solve " + q(kScene2d) + " --method marching:x",
+        "solve " + q(kScene2d) + " --input cooked", "solve " + q(kScene2d) + " --bogus",
+        "solve " + q(kScene3d) + " --arith double --basis scaled-bernstein",  // a combination no 3D method takes: a bad
+                                                                              // option, not a refusal
         "table " + q(t.str()) + " --mpfr 12", "certify " + q(kScene2d) + " --out " + q(cert) + " --mpfr-bits 10",
         "check-certificate " + q(kScene2d) + " " + q(cert) + " --bogus", "regress " + q(t.str()) + " --tol -1",
-        "generate --out " + q(t.str()) + " --degrees 9", std::string("report --mpfr 7"), "plot " + q(kScene2d) + " --instants 51", "plot " + q(kScene2d) + " --arith quad",
+        "generate --out " + q(t.str()) + " --degrees 9", std::string("report --mpfr 7"),
+        "plot " + q(kScene2d) + " --instants 51", "plot " + q(kScene2d) + " --arith quad",
         "--time-limit -3 solve " + q(kScene2d)}) {
     INFO(args);
     Run r = run_eccd(args);
@@ -200,8 +204,12 @@ mpq_class decimal_value(const std::string& a) {
   int frac = 0;
   bool after_point = false;
   for (char c : m) {
-    if (c == '.') after_point = true;
-    else if (c >= '0' && c <= '9') { digits += c; frac += after_point; }
+    if (c == '.')
+      after_point = true;
+    else if (c >= '0' && c <= '9') {
+      digits += c;
+      frac += after_point;
+    }
   }
   int exp10 = (e == std::string::npos ? 0 : std::stoi(a.substr(e + 1))) - frac;
   mpz_class ten_k;
@@ -243,7 +251,8 @@ TEST_CASE("an instant's approx carries the digits its bracket or precision suppo
   REQUIRE(m.code == 0);
   auto mj = nlohmann::json::parse(m.out);
   int longest = 0;
-  for (const auto& c : mj["critical_instants"]) longest = std::max(longest, significant_digits(c["t"]["approx"].get<std::string>()));
+  for (const auto& c : mj["critical_instants"])
+    longest = std::max(longest, significant_digits(c["t"]["approx"].get<std::string>()));
   for (const auto& iv : mj["intervals"])
     for (const auto& i : iv) longest = std::max(longest, significant_digits(i["approx"].get<std::string>()));
   CHECK(longest <= 40);

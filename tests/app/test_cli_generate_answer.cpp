@@ -64,7 +64,8 @@ void check_stored_answer(const std::string& file) {
 }
 }  // namespace
 
-TEST_CASE("eccd generate --answer stores the exact answer, and without it there is none", "[app][cli][generator][generate-answer]") {
+TEST_CASE("eccd generate --answer stores the exact answer, and without it there is none",
+          "[app][cli][generator][generate-answer]") {
   TempDir t;
   const std::string exe = ECCD_EXE;
   std::string out;
@@ -100,9 +101,11 @@ TEST_CASE("eccd generate --answer stores the exact answer, and without it there 
   CHECK(without > 0);         // free and near-miss scenes
   // Existing files are not overwritten without --force, with or without --answer.
   CHECK(run(exe + " generate --out-dir " + (t.path / "without").string() + plans[1] + " --answer", out) == 2);
-  for (const auto& e : fs::directory_iterator(t.path / "without")) CHECK(!eccd::read_scene_file(e.path().string()).answer);
+  for (const auto& e : fs::directory_iterator(t.path / "without"))
+    CHECK(!eccd::read_scene_file(e.path().string()).answer);
   // With --force the answer is added in place.
-  REQUIRE(run(exe + " generate --out-dir " + (t.path / "without").string() + plans[1] + " --answer --force --json", out) == 0);
+  REQUIRE(run(exe + " generate --out-dir " + (t.path / "without").string() + plans[1] + " --answer --force --json",
+              out) == 0);
   const nlohmann::json forced = nlohmann::json::parse(out);
   for (const auto& f : forced["files"]) check_stored_answer(f.get<std::string>());
 }

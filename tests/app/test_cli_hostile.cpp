@@ -1,7 +1,6 @@
-// The command line against hostile input and output paths: bytes that are not UTF-8 give a clear error and valid JSON, never an
-// abort; an output path that is a special file, a symbolic link, an input or
-// an existing file without --force is refused (exit 2) and its bytes do not
-// change; a FIFO or device given as an input is refused at once instead of
+// The command line against hostile input and output paths: bytes that are not UTF-8 give a clear error and valid JSON,
+// never an abort; an output path that is a special file, a symbolic link, an input or an existing file without --force
+// is refused (exit 2) and its bytes do not change; a FIFO or device given as an input is refused at once instead of
 // blocking; judge checks its numbers; regress walks past loops and dangling
 // links. Every run is bounded by `timeout` (minutes, a busy machine's margin).
 #include "tests/app/cli_run.hpp"
@@ -42,10 +41,10 @@ TEST_CASE("bytes that are not UTF-8 give exit 2 and valid JSON under --json, nev
   spit(ff, std::string("{\xff", 2));
   const std::string cert = (w.path / "c.json").string();
   spit(cert, std::string("{\"format\": \"\xfe\"}", 16));
-  for (const std::string cmd : {"solve " + q(ff) + " --json", "animate " + q(ff) + " --json",
-                                "check-certificate " + q(kScene) + " " + q(ff) + " --json",
-                                "check-certificate " + q(kScene) + " " + q(cert) + " --json",
-                                "judge " + q(kScene) + " " + q(ff) + " --json"}) {
+  for (const std::string cmd :
+       {"solve " + q(ff) + " --json", "animate " + q(ff) + " --json",
+        "check-certificate " + q(kScene) + " " + q(ff) + " --json",
+        "check-certificate " + q(kScene) + " " + q(cert) + " --json", "judge " + q(kScene) + " " + q(ff) + " --json"}) {
     INFO(cmd);
     Run r = run_eccd(cmd, 240);
     INFO("stderr: " << r.err << "\nstdout: " << r.out);
@@ -57,7 +56,8 @@ TEST_CASE("bytes that are not UTF-8 give exit 2 and valid JSON under --json, nev
     }
     CHECK(r.code == 2);
     CHECK(j["exit_code"] == 2);
-    CHECK(contains(j["error"].get<std::string>(), cmd.rfind("check-certificate", 0) == 0 && contains(cmd, "c.json") ? "c.json" : "ff.json"));
+    CHECK(contains(j["error"].get<std::string>(),
+                   cmd.rfind("check-certificate", 0) == 0 && contains(cmd, "c.json") ? "c.json" : "ff.json"));
   }
   // standard input of two bytes that are not UTF-8
   {
@@ -88,7 +88,8 @@ TEST_CASE("bytes that are not UTF-8 give exit 2 and valid JSON under --json, nev
   }
 }
 
-TEST_CASE("an output path that is not a new name or a regular file is refused and left as it was", "[cli][hostile][outputs]") {
+TEST_CASE("an output path that is not a new name or a regular file is refused and left as it was",
+          "[cli][hostile][outputs]") {
   TempDir w;
   const std::string decoy_text = "decoy: these bytes must not change\n";
   const fs::path decoy = w.path / "decoy.txt";
@@ -143,7 +144,8 @@ TEST_CASE("a file size limit (SIGXFSZ) leaves no temporary file and exits 2", "[
   Run r = run_eccd("certify " + q(kScene) + " --no-floating --out " + q((w.path / "c.json").string()), 240, w.str());
   REQUIRE(r.code == 0);  // without the limit: fine
   fs::remove(w.path / "c.json");
-  std::string cmd = "cd " + q(w.str()) + " && (ulimit -f 1; " + exe() + " certify " + q(kScene) + " --no-floating --out c.json) 2>&1";
+  std::string cmd =
+      "cd " + q(w.str()) + " && (ulimit -f 1; " + exe() + " certify " + q(kScene) + " --no-floating --out c.json) 2>&1";
   std::string out;
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p != nullptr);
@@ -187,9 +189,9 @@ TEST_CASE("a FIFO or a device as an input is refused at once, never waited on", 
   TempDir w;
   const fs::path fifo = w.path / "f";
   REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
-  for (const std::string cmd : {"solve " + q(fifo.string()), "judge " + q(kScene) + " " + q(fifo.string()),
-                                "animate " + q(fifo.string()), "check-certificate " + q(kScene) + " " + q(fifo.string()),
-                                std::string("solve /dev/zero")}) {
+  for (const std::string cmd :
+       {"solve " + q(fifo.string()), "judge " + q(kScene) + " " + q(fifo.string()), "animate " + q(fifo.string()),
+        "check-certificate " + q(kScene) + " " + q(fifo.string()), std::string("solve /dev/zero")}) {
     INFO(cmd);
     Run r = run_eccd(cmd, 240);
     INFO("stderr: " << r.err << "\nprocessor " << r.cpu_seconds << " s");
@@ -215,7 +217,8 @@ TEST_CASE("judge checks the numbers of an answer as the scene reader does", "[cl
   }
 }
 
-TEST_CASE("regress reports symbolic link loops, dangling links and skipped names, and checks the rest", "[cli][hostile][regress]") {
+TEST_CASE("regress reports symbolic link loops, dangling links and skipped names, and checks the rest",
+          "[cli][hostile][regress]") {
   TempDir w;
   fs::copy_file(src("cases/spheres/spheres-free.json"), w.path / "good.json");
   fs::create_symlink(w.path / "loop-a.json", w.path / "loop-b.json");

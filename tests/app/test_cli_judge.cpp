@@ -30,11 +30,13 @@ TEST_CASE("eccd judge: a wrong answer differs (exit 1) with each difference in w
   Run r = run_eccd("judge " + crossing + " " + answer("wrong-end.json") + " --name mysim");
   CHECK(r.code == 1);
   CHECK(r.out.find("verdict: differs: 1 difference(s)") != std::string::npos);
-  CHECK(r.out.find("collision interval 1 end off by 0.001 (certified 0.8684320663, mysim 0.8694320663)") != std::string::npos);
+  CHECK(r.out.find("collision interval 1 end off by 0.001 (certified 0.8684320663, mysim 0.8694320663)") !=
+        std::string::npos);
   // A coarser tolerance accepts it.
   CHECK(run_eccd("judge " + crossing + " " + answer("wrong-end.json") + " --tol 0.01").code == 0);
 
-  Run t = run_eccd("judge " + q(src("cases/touch3d/touch-and-separate.json")) + " " + answer("fcl-sampled-touch-and-separate-7.json"));
+  Run t = run_eccd("judge " + q(src("cases/touch3d/touch-and-separate.json")) + " " +
+                   answer("fcl-sampled-touch-and-separate-7.json"));
   CHECK(t.code == 1);
   CHECK(t.out.find("verdict: wrong collides") != std::string::npos);
   CHECK(t.out.find("collides: certified true, yours false") != std::string::npos);
@@ -44,7 +46,8 @@ TEST_CASE("eccd judge --json: the judgement's keys", "[cli-judge]") {
   Run r = run_eccd("judge " + crossing + " " + answer("fcl-sampled-spheres-crossing-10.json") + " --name fcl --json");
   REQUIRE(r.code == 1);
   nlohmann::json j = nlohmann::json::parse(r.out);
-  for (const char* k : {"format", "scene", "engine", "agrees", "verdict", "differences", "counts", "certified_answer", "tolerance"})
+  for (const char* k :
+       {"format", "scene", "engine", "agrees", "verdict", "differences", "counts", "certified_answer", "tolerance"})
     CHECK(j.contains(k));
   CHECK(j["format"] == "eccd-judgement/1");
   CHECK(j["scene"] == "spheres-crossing");

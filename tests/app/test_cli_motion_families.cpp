@@ -12,9 +12,11 @@
 
 using namespace eccd::clitest;
 
-TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 2D and 3D independent scenes", "[cli][cycloidal][independent]") {
+TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 2D and 3D independent scenes",
+          "[cli][cycloidal][independent]") {
   TempDir d;
-  Run r = run_eccd("generate --out-dir " + q((d.path / "g").string()) + " --families cycloidal,independent --count 3 --json");
+  Run r = run_eccd("generate --out-dir " + q((d.path / "g").string()) +
+                   " --families cycloidal,independent --count 3 --json");
   INFO(r.err);
   REQUIRE(r.code == 0);
   int cyc = 0, indep2 = 0, indep3 = 0;

@@ -32,8 +32,9 @@ std::vector<nlohmann::json> json_lines(const std::string& out) {
 }  // namespace
 
 TEST_CASE("a parser error starts with eccd: like every other error", "[cli][names]") {
-  for (const std::string& args : std::vector<std::string>{"solve " + q(kScene2d) + " --bogus", "table --mpfr-bits 12",
-                                                           "report --no-such-option", "generate --out-dir", "nosuchcommand"}) {
+  for (const std::string& args :
+       std::vector<std::string>{"solve " + q(kScene2d) + " --bogus", "table --mpfr-bits 12", "report --no-such-option",
+                                "generate --out-dir", "nosuchcommand"}) {
     INFO(args);
     Run r = run_eccd(args);
     CHECK(r.code == 2);
@@ -68,11 +69,11 @@ TEST_CASE("each command's --help lists the current names only", "[cli][names]") 
     std::string command;
     std::vector<std::string> listed, hidden;
   };
-  for (const Want& w : {Want{"report", {"--mpfr-bits", "--out-dir", "--jobs", "--shard"}, {"--mpfr ", "--out ", "--threads"}},
-                        Want{"table", {"--mpfr-bits"}, {"--mpfr "}},
-                        Want{"generate", {"--out-dir"}, {"--out "}},
-                        Want{"animate", {"--jobs", "--frame-block", "--out"}, {"--threads", "--shard"}},
-                        Want{"plot", {"--out"}, {"--output", "-o,"}}}) {
+  for (const Want& w :
+       {Want{"report", {"--mpfr-bits", "--out-dir", "--jobs", "--shard"}, {"--mpfr ", "--out ", "--threads"}},
+        Want{"table", {"--mpfr-bits"}, {"--mpfr "}}, Want{"generate", {"--out-dir"}, {"--out "}},
+        Want{"animate", {"--jobs", "--frame-block", "--out"}, {"--threads", "--shard"}},
+        Want{"plot", {"--out"}, {"--output", "-o,"}}}) {
     INFO(w.command);
     Run r = run_eccd(w.command + " --help");
     CHECK(r.code == 0);
@@ -94,12 +95,13 @@ TEST_CASE("generate: --out-dir, and --out as an alias that warns", "[cli][names]
   REQUIRE(a["files"].size() == 1);
   REQUIRE(b["files"].size() == 1);
   CHECK(slurp(a["files"][0].get<std::string>()) == slurp(b["files"][0].get<std::string>()));  // the same scene
-  Run none = run_eccd("generate" + plan);  // no folder at all
+  Run none = run_eccd("generate" + plan);                                                     // no folder at all
   CHECK(none.code == 2);
   CHECK(has(none.err, "eccd: generate: --out-dir DIR is required"));
 }
 
-TEST_CASE("animate: --jobs and --frame-block, --threads and --shard as aliases that warn, and arith as in solve", "[cli][names]") {
+TEST_CASE("animate: --jobs and --frame-block, --threads and --shard as aliases that warn, and arith as in solve",
+          "[cli][names]") {
   const std::string swarm = q(src("cases/animations/swarm-2d.json"));
   Run now = run_eccd("animate " + swarm + " --arith double --json --jobs 1 --frame-block 0/2", 120);
   Run old = run_eccd("animate " + swarm + " --arith double --json --threads 1 --shard 0/2", 120);

@@ -42,7 +42,10 @@ struct TempDir {
     REQUIRE(mkdtemp(tmpl.data()) != nullptr);
     path = tmpl;
   }
-  ~TempDir() { std::error_code ec; fs::remove_all(path, ec); }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
   std::vector<std::string> files() const {
     std::vector<std::string> v;
     for (auto& e : fs::directory_iterator(path)) v.push_back(e.path().filename().string());
@@ -71,11 +74,13 @@ nlohmann::json solve_json(const std::string& scene) {
 
 }  // namespace
 
-TEST_CASE("eccd plot draws a 2D scene: default output name, PNG, data with solve's critical instants", "[plot][app][cli]") {
+TEST_CASE("eccd plot draws a 2D scene: default output name, PNG, data with solve's critical instants",
+          "[plot][app][cli]") {
   TempDir dir;
   const std::string scene = source("cases/paper003/example2.json");
   std::string out;
-  REQUIRE(run("cd " + quote(dir.path.string()) + " && " + exe() + " plot " + quote(scene) + " --data data.json", out) == 0);
+  REQUIRE(run("cd " + quote(dir.path.string()) + " && " + exe() + " plot " + quote(scene) + " --data data.json", out) ==
+          0);
   CHECK(out.find("wrote example2.png") != std::string::npos);
   CHECK(dir.files() == std::vector<std::string>{"data.json", "example2.png"});  // no temporary left behind
   CHECK(is_png(dir.path / "example2.png"));
@@ -99,12 +104,14 @@ TEST_CASE("eccd plot draws a 2D scene: default output name, PNG, data with solve
   CHECK(data["contacts"][0]["point"][1].get<double>() == Approx(0).margin(1e-9));
 }
 
-TEST_CASE("eccd plot - reads the scene from standard input and names the PNG after the scene", "[plot][app][cli][conventions]") {
+TEST_CASE("eccd plot - reads the scene from standard input and names the PNG after the scene",
+          "[plot][app][cli][conventions]") {
   TempDir dir;
   const std::string scene = source("cases/paper003/example2.json");
   const std::string name = read_json(scene)["name"].get<std::string>();
   std::string out;
-  REQUIRE(run("cd " + quote(dir.path.string()) + " && " + exe() + " plot - --data data.json < " + quote(scene), out) == 0);
+  REQUIRE(run("cd " + quote(dir.path.string()) + " && " + exe() + " plot - --data data.json < " + quote(scene), out) ==
+          0);
   CHECK(out.find("wrote " + name + ".png") != std::string::npos);
   CHECK(dir.files() == std::vector<std::string>{"data.json", name + ".png"});
   CHECK(is_png(dir.path / (name + ".png")));
@@ -118,7 +125,8 @@ TEST_CASE("eccd plot - reads the scene from standard input and names the PNG aft
   CHECK(bad.files().empty());
 }
 
-TEST_CASE("eccd plot draws a 3D scene: the zero set of F(u,t), with solve's critical instants", "[plot][app][cli][ccd3]") {
+TEST_CASE("eccd plot draws a 3D scene: the zero set of F(u,t), with solve's critical instants",
+          "[plot][app][cli][ccd3]") {
   TempDir dir;
   const std::string scene = source("cases/paper002/example.json");
   const fs::path png = dir.path / "example3d.png", data_file = dir.path / "d.json";
@@ -152,15 +160,21 @@ TEST_CASE("eccd plot fails cleanly and writes nothing", "[plot][app][cli]") {
   const fs::path png = dir.path / "out.png";
   std::string out;
   // A bad scene: the scene reader's error, exit 2.
-  CHECK(run(exe() + " plot " + quote(source("tests/data/bad/hyperbola.json")) + " -o " + quote(png.string()) + " --data " +
-                quote((dir.path / "d.json").string()),
+  CHECK(run(exe() + " plot " + quote(source("tests/data/bad/hyperbola.json")) + " -o " + quote(png.string()) +
+                " --data " + quote((dir.path / "d.json").string()),
             out) == 2);
   CHECK(out.empty());
   // A bad option: exit 2.
-  CHECK(run(exe() + " plot " + quote(source("cases/paper003/example2.json")) + " -o " + quote(png.string()) + " --instants 99", out) == 2);
-  CHECK(run(exe() + " plot " + quote(source("cases/paper003/example2.json")) + " -o " + quote(png.string()) + " --arith quad", out) == 2);
+  CHECK(run(exe() + " plot " + quote(source("cases/paper003/example2.json")) + " -o " + quote(png.string()) +
+                " --instants 99",
+            out) == 2);
+  CHECK(run(exe() + " plot " + quote(source("cases/paper003/example2.json")) + " -o " + quote(png.string()) +
+                " --arith quad",
+            out) == 2);
   // A cycloidal motion in exact arithmetic: a refusal (exit 3).
-  CHECK(run(exe() + " plot " + quote(source("tests/data/bad/cycloidal_exact.json")) + " -o " + quote(png.string()) + " --arith exact", out) == 3);
+  CHECK(run(exe() + " plot " + quote(source("tests/data/bad/cycloidal_exact.json")) + " -o " + quote(png.string()) +
+                " --arith exact",
+            out) == 3);
   CHECK(out.empty());
   CHECK(dir.files().empty());
 }

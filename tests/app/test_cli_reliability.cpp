@@ -89,7 +89,8 @@ TEST_CASE("report --out refuses paths with .. and folders it did not write", "[c
 
 // ---- items 2 and 3: bounded time, memory and input ---------------------------------
 
-TEST_CASE("CGAL's prime exhaustion cannot happen: a 10000-digit shape entry is beyond the input limits", "[cli][reliability][item2]") {
+TEST_CASE("CGAL's prime exhaustion cannot happen: a 10000-digit shape entry is beyond the input limits",
+          "[cli][reliability][item2]") {
   const std::string f = bad("huge_digits_matrix.json");
   for (const std::string arith : {"exact", "certified", "double"}) {
     INFO("arith " << arith);
@@ -210,7 +211,9 @@ TEST_CASE("output paths that cannot be written exit 2 with the path and the reas
     for (auto& e : fs::directory_iterator(w.path)) CHECK(!contains(e.path().filename().string(), ".tmp"));
   }
   {
-    Run r = run_eccd("generate --out " + q((w.path / "afile" / "sub").string()) + " --count 1 --dims 2 --degrees 2 --families free", 60);
+    Run r = run_eccd(
+        "generate --out " + q((w.path / "afile" / "sub").string()) + " --count 1 --dims 2 --degrees 2 --families free",
+        60);
     INFO("stderr: " << r.err);
     CHECK(r.code == 2);
     CHECK(contains(r.err, "afile"));
@@ -274,7 +277,9 @@ void make_shards(const TempDir& w) {
   fs::copy_file(src("cases/spheres/spheres-free.json"), w.path / "c" / "a.json");
   fs::copy_file(src("cases/spheres/spheres-touch.json"), w.path / "c" / "b.json");
   for (int i = 0; i < 2; ++i) {
-    Run r = run_eccd("report --name p --count 0 --cases c --no-map --no-figures --jobs 1 --shard " + std::to_string(i) + "/2", 300, w.str());
+    Run r = run_eccd(
+        "report --name p --count 0 --cases c --no-map --no-figures --jobs 1 --shard " + std::to_string(i) + "/2", 300,
+        w.str());
     INFO("stderr: " << r.err);
     REQUIRE(r.code == 0);
   }
@@ -297,14 +302,19 @@ TEST_CASE("report --merge validates each part", "[cli][reliability][item8]") {
   };
   const std::string meta0 = slurp(w.path / part(0) / "meta.json");
   const std::string csv1 = slurp(w.path / part(1) / "results.csv");
-  struct Case { std::string what; std::function<void()> make; std::string phrase; };
+  struct Case {
+    std::string what;
+    std::function<void()> make;
+    std::string phrase;
+  };
   std::vector<Case> cases{
       {"shard -1/2", [&] { edit_meta(0, [](auto& j) { j["shard"] = "-1/2"; }); }, "is not i/n"},
       {"shard 5/2", [&] { edit_meta(0, [](auto& j) { j["shard"] = "5/2"; }); }, "is not i/n"},
       {"shard x/2", [&] { edit_meta(0, [](auto& j) { j["shard"] = "x/2"; }); }, "is not i/n"},
       {"relabelled duplicate", [&] { edit_meta(0, [](auto& j) { j["shard"] = "1/2"; }); }, "given twice"},
       {"truncated meta", [&] { spit(w.path / part(0) / "meta.json", meta0.substr(0, meta0.size() / 2)); }, "meta.json"},
-      {"truncated csv", [&] { spit(w.path / part(1) / "results.csv", csv1.substr(0, csv1.size() - 7)); }, "results.csv"},
+      {"truncated csv", [&] { spit(w.path / part(1) / "results.csv", csv1.substr(0, csv1.size() - 7)); },
+       "results.csv"},
   };
   for (const auto& c : cases) {
     INFO(c.what);
@@ -373,7 +383,9 @@ TEST_CASE("generate validates its arguments before any work", "[cli][reliability
   CHECK(e.code == 2);
   CHECK(contains(e.err, "euler"));
   CHECK(fs::is_empty(w.path));
-  Run d = run_eccd("generate --out " + q((w.path / "d1").string()) + " --degrees 1 --dims 2 --families free --count 1 --answer", 120);
+  Run d = run_eccd(
+      "generate --out " + q((w.path / "d1").string()) + " --degrees 1 --dims 2 --families free --count 1 --answer",
+      120);
   INFO("stderr: " << d.err);
   CHECK((d.code == 0 || d.code == 2));
   if (d.code == 0) {
@@ -392,10 +404,12 @@ TEST_CASE("generate validates its arguments before any work", "[cli][reliability
   CHECK(rs.code == 2);
 }
 
-TEST_CASE("SIGINT stops report's workers and keeps its unfinished output only for --resume", "[cli][reliability][item8][budget]") {
+TEST_CASE("SIGINT stops report's workers and keeps its unfinished output only for --resume",
+          "[cli][reliability][item8][budget]") {
   TempDir w;
   // a run long enough to interrupt: the failure map
-  std::string cmd = "cd " + q(w.str()) + " && (" + exe() + " report --name big --count 2 --cases '' --map-size 16 --no-figures --jobs 2 " +
+  std::string cmd = "cd " + q(w.str()) + " && (" + exe() +
+                    " report --name big --count 2 --cases '' --map-size 16 --no-figures --jobs 2 " +
                     "2>/dev/null & echo $! > pid; wait)";
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p != nullptr);
@@ -422,6 +436,7 @@ TEST_CASE("SIGINT stops report's workers and keeps its unfinished output only fo
   const std::string before = sizes();
   usleep(1000000);
   CHECK(sizes() == before);
-  if (fs::exists(w.path / "reports" / "big.partial")) CHECK(fs::is_regular_file(w.path / "reports" / "big.partial" / "plan.json"));
+  if (fs::exists(w.path / "reports" / "big.partial"))
+    CHECK(fs::is_regular_file(w.path / "reports" / "big.partial" / "plan.json"));
   CHECK(!fs::exists(w.path / "reports" / "big"));
 }

@@ -75,14 +75,15 @@ TEST_CASE("eccd generate writes the same scenes for the same seed and refuses to
 TEST_CASE("eccd report: two shards joined by --merge give the table of one run", "[app][cli][report]") {
   TempDir t;
   const std::string exe = ECCD_EXE;
-  const std::string plan = " --dims 2,3 --degrees 2 --families touch,free --count 1 --mpfr-bits 64 --grid 16 --cases '' "
-                           "--map-size 2 --seed 9 --no-figures";
+  const std::string plan =
+      " --dims 2,3 --degrees 2 --families touch,free --count 1 --mpfr-bits 64 --grid 16 --cases '' "
+      "--map-size 2 --seed 9 --no-figures";
   std::string out;
   REQUIRE(run(exe + " report --out-dir " + (t.path / "whole").string() + plan, out) == 0);
   REQUIRE(run(exe + " report --out-dir " + (t.path / "p0").string() + plan + " --shard 0/2 --jobs 1", out) == 0);
   REQUIRE(run(exe + " report --out-dir " + (t.path / "p1").string() + plan + " --shard 1/2 --jobs 1", out) == 0);
-  REQUIRE(run(exe + " report --out-dir " + (t.path / "joined").string() + " --no-figures --merge " + (t.path / "p0").string() +
-                  " " + (t.path / "p1").string(),
+  REQUIRE(run(exe + " report --out-dir " + (t.path / "joined").string() + " --no-figures --merge " +
+                  (t.path / "p0").string() + " " + (t.path / "p1").string(),
               out) == 0);
   std::string whole = slurp(t.path / "whole" / "results.csv");
   CHECK(without_time(whole) == without_time(slurp(t.path / "joined" / "results.csv")));
@@ -91,13 +92,16 @@ TEST_CASE("eccd report: two shards joined by --merge give the table of one run",
   // free, affine touch, affine free) x (exact + (4 double + 1 mpfr) x 2 input modes x 2 faces), and on every scene
   // the peers: certified, and with FCL built in fcl/sample:10,100,1000 (no fcl/ccd: none of these motions is a pure
   // linear translation) -> header + 6 * (21 + 1 + 3) lines.
-  CHECK(std::count(whole.begin(), whole.end(), '\n') == 1 + 6 * (21 + 1 + (eccd::fcl_availability().available ? 3 : 0)));
+  CHECK(std::count(whole.begin(), whole.end(), '\n') ==
+        1 + 6 * (21 + 1 + (eccd::fcl_availability().available ? 3 : 0)));
   auto meta = nlohmann::json::parse(slurp(t.path / "joined" / "meta.json"));
   CHECK(meta["shards"] == 2);
   CHECK(meta["seed"] == 9);
   CHECK(!fs::exists(t.path / "joined.partial"));
   // A missing part, a bad shard and a part from another run are refused, and nothing is written.
-  CHECK(run(exe + " report --out-dir " + (t.path / "bad").string() + " --no-figures --merge " + (t.path / "p0").string(), out) == 2);
+  CHECK(
+      run(exe + " report --out-dir " + (t.path / "bad").string() + " --no-figures --merge " + (t.path / "p0").string(),
+          out) == 2);
   CHECK(run(exe + " report --out-dir " + (t.path / "bad").string() + plan + " --shard 2/2", out) == 2);
   CHECK(run(exe + " report --out-dir " + (t.path / "bad").string() + plan + " --shard x", out) == 2);
   CHECK(!fs::exists(t.path / "bad"));
@@ -179,8 +183,9 @@ std::vector<std::string> operator+(std::vector<std::string> a, const std::vector
 }
 // A tiny plan: 3 2D and 6 3D scenes of degree 2 and 9 map cells, one worker,
 // no run near its time budget (so the rows do not depend on timing).
-const std::string kTinyPlan = "--dims 2,3 --degrees 2 --families touch,free,colliding --count 1 --mpfr-bits 64 --grid 16 --cases '' "
-                              "--map-size 3 --no-figures --jobs 1";
+const std::string kTinyPlan =
+    "--dims 2,3 --degrees 2 --families touch,free,colliding --count 1 --mpfr-bits 64 --grid 16 --cases '' "
+    "--map-size 3 --no-figures --jobs 1";
 constexpr int kTinyTasks = 3 + 6 + 9;
 
 }  // namespace
@@ -208,7 +213,8 @@ TEST_CASE("report's time left: weighted by the measured cost per kind, within a 
         truth += tasks[j].second;
       }
       double weighted = *est.wall(queued, {}, 1), plain = done_s / double(i) * double(tasks.size() - i);
-      INFO("after " << i << " tasks: true rest " << truth << " s, weighted " << weighted << " s, plain average " << plain << " s");
+      INFO("after " << i << " tasks: true rest " << truth << " s, weighted " << weighted << " s, plain average "
+                    << plain << " s");
       CHECK(weighted < 2 * truth);
       CHECK(weighted > truth / 2);
       CHECK(plain > 5 * truth);  // the issue's symptom: the plain average overestimates many times over
@@ -222,9 +228,9 @@ TEST_CASE("report's time left: weighted by the measured cost per kind, within a 
   eccd::TimeLeft two({1, 1});
   two.add(0, 4);
   two.add(1, 1);
-  CHECK(*two.wall({0, 0}, {{0, 1.0}}, 2) == Approx(3.0));              // one running kind-0 task, 3 s to go
-  CHECK(*two.wall({0, 4}, {}, 2) == Approx(2.0));                      // 4 x 1 s on 2 workers
-  CHECK(*two.wall({0, 4}, {{0, 10.0}}, 2) == Approx(4.0 / 2));         // overdue running task: no negative rest
+  CHECK(*two.wall({0, 0}, {{0, 1.0}}, 2) == Approx(3.0));       // one running kind-0 task, 3 s to go
+  CHECK(*two.wall({0, 4}, {}, 2) == Approx(2.0));               // 4 x 1 s on 2 workers
+  CHECK(*two.wall({0, 4}, {{0, 10.0}}, 2) == Approx(4.0 / 2));  // overdue running task: no negative rest
   CHECK(*two.wall({0, 0}, {}, 2) == 0);
   // A kind not measured yet costs at least as long as its running task has run: 3 more queued of kind 1
   // (prior-scaled 1 s each) behind one that has run 5 s count 5 s each (kind 0 measured at 1 s).
@@ -237,7 +243,8 @@ TEST_CASE("report's time left: weighted by the measured cost per kind, within a 
 TEST_CASE("eccd report --resume after a killed run gives the table of an uninterrupted one", "[cli][report][resume]") {
   eccd::clitest::TempDir t;
   const auto plan = words(kTinyPlan + " --seed 9");
-  auto whole = eccd::clitest::run_eccd("report --out-dir " + (t.path / "whole").string() + " " + kTinyPlan + " --seed 9", 300);
+  auto whole =
+      eccd::clitest::run_eccd("report --out-dir " + (t.path / "whole").string() + " " + kTinyPlan + " --seed 9", 300);
   REQUIRE(whole.code == 0);
   // Killed (SIGKILL: no clean-up at all) once 3 of the 18 tasks are in the worker files.
   const fs::path partial = t.path / "cut.partial";
@@ -267,7 +274,8 @@ TEST_CASE("eccd report --resume after a killed run gives the table of an uninter
   CHECK(meta["version"].is_string());
   CHECK(!fs::exists(partial));
   CHECK(!fs::exists(t.path / "cut" / "plan.json"));  // the resumable state is not part of the report
-  for (const auto& e : fs::directory_iterator(t.path / "cut")) CHECK(e.path().filename().string().rfind("worker-", 0) != 0);
+  for (const auto& e : fs::directory_iterator(t.path / "cut"))
+    CHECK(e.path().filename().string().rfind("worker-", 0) != 0);
 }
 
 TEST_CASE("eccd report --resume refuses another plan and a missing partial folder", "[cli][report][resume]") {
@@ -284,7 +292,8 @@ TEST_CASE("eccd report --resume refuses another plan and a missing partial folde
   CHECK(other.code == 2);
   CHECK(other.err.find("seed") != std::string::npos);
   CHECK(other.err.find("r.partial") != std::string::npos);
-  auto mpfr = eccd::clitest::run_eccd("report --out-dir r " + kTinyPlan + " --seed 9 --mpfr-bits 128 --resume", 120, t.str());
+  auto mpfr =
+      eccd::clitest::run_eccd("report --out-dir r " + kTinyPlan + " --seed 9 --mpfr-bits 128 --resume", 120, t.str());
   CHECK(mpfr.code == 2);
   CHECK(mpfr.err.find("mpfr_bits") != std::string::npos);
   CHECK(slurp(partial / "plan.json") == before);
@@ -303,7 +312,8 @@ TEST_CASE("eccd report --resume refuses another plan and a missing partial folde
   CHECK(alien.err.find("format") != std::string::npos);
 }
 
-TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes one with nothing to resume", "[cli][report][interrupt]") {
+TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes one with nothing to resume",
+          "[cli][report][interrupt]") {
   eccd::clitest::TempDir t;
   SECTION("some tasks finished: kept, with the command that resumes") {
     pid_t pid = spawn_report(words(kTinyPlan + " --seed 9 --out-dir k"), t.path, t.path / "err.txt");
@@ -335,9 +345,10 @@ TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes on
   }
   SECTION("before any task finished: removed") {
     // One 3D scene of motion degree 6 (seconds of work): interrupted as soon as its plan file exists.
-    pid_t pid = spawn_report(words("--dims 3 --degrees 6 --families touch --motions euler --count 1 --mpfr-bits 64 --budget 1 "
-                                   "--cases '' --no-map --no-figures --jobs 1 --out-dir z"),
-                             t.path, t.path / "err.txt");
+    pid_t pid =
+        spawn_report(words("--dims 3 --degrees 6 --families touch --motions euler --count 1 --mpfr-bits 64 --budget 1 "
+                           "--cases '' --no-map --no-figures --jobs 1 --out-dir z"),
+                     t.path, t.path / "err.txt");
     REQUIRE(wait_for(pid, t.path / "z.partial", 0));
     kill(pid, SIGINT);
     CHECK(wait_code(pid) == 130);
@@ -349,13 +360,15 @@ TEST_CASE("eccd report on SIGINT keeps a resumable partial folder and removes on
   }
 }
 
-TEST_CASE("eccd report without --name writes a new folder and leaves reports/default alone, and --quiet prints no progress",
-          "[cli][report][folders]") {
+TEST_CASE(
+    "eccd report without --name writes a new folder and leaves reports/default alone, and --quiet prints no progress",
+    "[cli][report][folders]") {
   eccd::clitest::TempDir t;
   fs::create_directories(t.path / "reports" / "default");
   eccd::clitest::spit(t.path / "reports" / "default" / "report.md", "the checked-in example\n");
   eccd::clitest::spit(t.path / "reports" / "default" / ".eccd-report", "written by eccd report\n");
-  const std::string plan = "--dims 2 --degrees 2 --families touch --count 1 --mpfr-bits 64 --cases '' --map-size 2 --no-figures --seed 3";
+  const std::string plan =
+      "--dims 2 --degrees 2 --families touch --count 1 --mpfr-bits 64 --cases '' --map-size 2 --no-figures --seed 3";
   auto first = eccd::clitest::run_eccd("report " + plan, 120, t.str());
   REQUIRE(first.code == 0);
   auto second = eccd::clitest::run_eccd("report " + plan + " --quiet", 120, t.str());
@@ -410,9 +423,12 @@ TEST_CASE("eccd report --cases: animation files under the folder are left out, a
   // (scripts/run-main.sh) once stopped on the first one, reading it as a scene.
   eccd::clitest::TempDir t;
   fs::create_directories(t.path / "c" / "animations");
-  fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "spheres" / "spheres-crossing.json", t.path / "c" / "crossing.json");
-  fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "animations" / "swarm-2d.json", t.path / "c" / "animations" / "swarm-2d.json");
-  const std::string plan = "--dims 2 --degrees 2 --families touch --count 1 --mpfr-bits 64 --map-size 2 --no-figures --seed 3 --jobs 1";
+  fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "spheres" / "spheres-crossing.json",
+                t.path / "c" / "crossing.json");
+  fs::copy_file(fs::path(ECCD_SOURCE_DIR) / "cases" / "animations" / "swarm-2d.json",
+                t.path / "c" / "animations" / "swarm-2d.json");
+  const std::string plan =
+      "--dims 2 --degrees 2 --families touch --count 1 --mpfr-bits 64 --map-size 2 --no-figures --seed 3 --jobs 1";
   auto ok = eccd::clitest::run_eccd("report " + plan + " --cases c --out-dir r", 300, t.str());
   INFO(ok.err);
   REQUIRE(ok.code == 0);

@@ -35,10 +35,12 @@ std::vector<std::map<std::string, std::string>> read_results(const fs::path& p) 
 
 }  // namespace
 
-TEST_CASE("eccd report --external judges an engine's answer files against the exact answers", "[app][cli][report][external]") {
+TEST_CASE("eccd report --external judges an engine's answer files against the exact answers",
+          "[app][cli][report][external]") {
   TempDir t;
   const fs::path scenes = t.path / "scenes", answers = t.path / "answers", out = t.path / "out";
-  Run g = run_eccd("generate --out-dir " + q(scenes.string()) + " --dims 2 --degrees 2 --families colliding,free,near-miss "
+  Run g = run_eccd("generate --out-dir " + q(scenes.string()) +
+                   " --dims 2 --degrees 2 --families colliding,free,near-miss "
                    "--separations 3 --count 2 --seed 41 --json");
   REQUIRE(g.code == 0);
   std::vector<std::string> names;
@@ -55,9 +57,12 @@ TEST_CASE("eccd report --external judges an engine's answer files against the ex
   Run s1 = run_eccd("solve " + q((scenes / (names[1] + ".json")).string()) + " --arith exact --json");
   REQUIRE(s1.code == 0);
   const bool collides1 = nlohmann::json::parse(s1.out)["collides"].get<bool>();
-  nlohmann::json wrong = collides1
-      ? nlohmann::json{{"collides", false}, {"intervals", nlohmann::json::array()}, {"first_contact", nullptr}, {"contacts", nlohmann::json::array()}}
-      : nlohmann::json::parse(R"({"collides": true, "intervals": [[{"approx": "0.25"}, {"approx": "0.5"}]],
+  nlohmann::json wrong =
+      collides1 ? nlohmann::json{{"collides", false},
+                                 {"intervals", nlohmann::json::array()},
+                                 {"first_contact", nullptr},
+                                 {"contacts", nlohmann::json::array()}}
+                : nlohmann::json::parse(R"({"collides": true, "intervals": [[{"approx": "0.25"}, {"approx": "0.5"}]],
                                   "first_contact": {"approx": "0.25"}, "contacts": []})");
   wrong["time_us"] = 12.5;
   spit(answers / (names[1] + ".json"), wrong.dump());
@@ -65,8 +70,10 @@ TEST_CASE("eccd report --external judges an engine's answer files against the ex
   spit(answers / (names[2] + ".json"), R"({"collides": "maybe"})");
   // names[3..]: no file.
 
-  Run r = run_eccd("report --scenes " + q(scenes.string()) + " --cases '' --no-map --mpfr-bits 64 --input rounded --budget 2 "
-                   "--external " + q("mine=" + answers.string()) + " --out " + q(out.string()),
+  Run r = run_eccd("report --scenes " + q(scenes.string()) +
+                       " --cases '' --no-map --mpfr-bits 64 --input rounded --budget 2 "
+                       "--external " +
+                       q("mine=" + answers.string()) + " --out " + q(out.string()),
                    300);
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -98,7 +105,8 @@ TEST_CASE("eccd report --external judges an engine's answer files against the ex
 TEST_CASE("eccd report --external: a bad NAME=DIR is exit 2 before any work", "[app][cli][report][external]") {
   TempDir t;
   const fs::path out = t.path / "out";
-  for (const std::string spec : std::vector<std::string>{"mine", "=" + t.path.string(), "mine=" + (t.path / "none").string(), "a b=" + t.path.string()}) {
+  for (const std::string spec : std::vector<std::string>{
+           "mine", "=" + t.path.string(), "mine=" + (t.path / "none").string(), "a b=" + t.path.string()}) {
     INFO(spec);
     Run r = run_eccd("report --dims 2 --degrees 2 --families free --count 1 --cases '' --no-map --external " + q(spec) +
                      " --out " + q(out.string()));
@@ -106,8 +114,9 @@ TEST_CASE("eccd report --external: a bad NAME=DIR is exit 2 before any work", "[
     CHECK(r.err.find("--external") != std::string::npos);
     CHECK(!fs::exists(out));
   }
-  Run twice = run_eccd("report --dims 2 --degrees 2 --families free --count 1 --cases '' --no-map --external " +
-                       q("x=" + t.path.string()) + " --external " + q("x=" + t.path.string()) + " --out " + q(out.string()));
+  Run twice =
+      run_eccd("report --dims 2 --degrees 2 --families free --count 1 --cases '' --no-map --external " +
+               q("x=" + t.path.string()) + " --external " + q("x=" + t.path.string()) + " --out " + q(out.string()));
   CHECK(twice.code == 2);
   CHECK(twice.err.find("given twice") != std::string::npos);
   CHECK(!fs::exists(out));

@@ -32,7 +32,8 @@ json animate(const std::string& file, const std::string& arith, const std::strin
 
 std::map<Key, json> events(const json& j) {
   std::map<Key, json> m;
-  for (const auto& e : j["events"]) m[{e["frame"].get<int>(), e["pair"][0].get<std::string>(), e["pair"][1].get<std::string>()}] = e["answer"];
+  for (const auto& e : j["events"])
+    m[{e["frame"].get<int>(), e["pair"][0].get<std::string>(), e["pair"][1].get<std::string>()}] = e["answer"];
   return m;
 }
 
@@ -51,7 +52,8 @@ void check(const std::string& file, int frames, int pairs, bool no_planes_too) {
     REQUIRE((*j)["pairs_per_frame"] == pairs);
     REQUIRE((*j)["per_frame"].size() == std::size_t(frames));
     const json& st = (*j)["stages"];
-    REQUIRE(st["bounding_volumes"].get<int>() + st["separating_plane"].get<int>() + st["continuous_test"].get<int>() == frames * pairs);
+    REQUIRE(st["bounding_volumes"].get<int>() + st["separating_plane"].get<int>() + st["continuous_test"].get<int>() ==
+            frames * pairs);
   }
   REQUIRE(ex["undecided"].empty());
   REQUIRE(ce["undecided"].empty());
@@ -66,7 +68,8 @@ void check(const std::string& file, int frames, int pairs, bool no_planes_too) {
   }
   // double: every decided pair-frame classified as exact does
   std::set<Key> und;
-  for (const auto& u : db["undecided"]) und.insert({u["frame"].get<int>(), u["pair"][0].get<std::string>(), u["pair"][1].get<std::string>()});
+  for (const auto& u : db["undecided"])
+    und.insert({u["frame"].get<int>(), u["pair"][0].get<std::string>(), u["pair"][1].get<std::string>()});
   for (const auto& [k, a] : d) REQUIRE(e.count(k) == 1);
   for (const auto& [k, a] : e) REQUIRE((d.count(k) == 1 || und.count(k) == 1));
   if (!no_planes_too) return;
@@ -95,7 +98,8 @@ TEST_CASE("paper reproductions: the 000 Table 2 generator through eccd animate",
   const std::string f = d.str() + "/t2.json";
   generate(d, "table2 --frames 6 --radius 5.49 --scenes " + q(d.str() + "/scenes") + " " + q(f));
   check(f, 6, 1, true);
-  // at angle 0 the sphere (r = 1, centre 5.49 from the origin) reaches into the 4.5 end: every one of these frames collides
+  // at angle 0 the sphere (r = 1, centre 5.49 from the origin) reaches into the 4.5 end: every one of these frames
+  // collides
   REQUIRE(animate(f, "exact")["events"].size() == 6);
   // the per-frame scenes for eccd fcl are the animation's pair-frames: eccd solve agrees on frame 0
   Run s = run_eccd("solve " + q(d.str() + "/scenes/frame-0.json") + " --arith exact --json", 60);

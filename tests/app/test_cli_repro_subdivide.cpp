@@ -36,7 +36,8 @@ TEST_CASE("make_repro.py boxers --subdivide samples the same motion more finely"
     INFO(a["bodies"][i]["name"]);
     REQUIRE(a["bodies"][i]["name"] == b["bodies"][i]["name"]);
     for (int m = 0; m <= 3; ++m) CHECK(b["bodies"][i]["poses"][4 * m] == a["bodies"][i]["poses"][m]);
-    differ += b["bodies"][i]["poses"][1] != a["bodies"][i]["poses"][0] && b["bodies"][i]["poses"][1] != a["bodies"][i]["poses"][1];
+    differ += b["bodies"][i]["poses"][1] != a["bodies"][i]["poses"][0] &&
+              b["bodies"][i]["poses"][1] != a["bodies"][i]["poses"][1];
   }
   CHECK(differ > 20);  // the limbs move: key 1/4 is neither key 0 nor key 1
   CHECK(make_repro("boxers --frames 3 --subdivide 0 " + q(bad)) != 0);

@@ -21,7 +21,10 @@ const char* kScene = R"({"format": "ellipse-ccd-scene/1", "name": "cli-separate"
 bool strictly(const std::vector<mpq_class>& n, const mpq_class& o, const std::vector<mpq_class>& c,
               const std::vector<mpq_class>& axes, int want_sign) {
   mpq_class side = o, spread = 0;
-  for (int i = 0; i < 3; ++i) { side += n[i] * c[i]; spread += axes[i] * axes[i] * n[i] * n[i]; }
+  for (int i = 0; i < 3; ++i) {
+    side += n[i] * c[i];
+    spread += axes[i] * axes[i] * n[i] * n[i];
+  }
   return sgn(side) == want_sign && side * side > spread;
 }
 

@@ -63,7 +63,8 @@ std::vector<std::string> sorted_lines(const fs::path& file) {
 // A tiny plan: 2D degree 2, one touch and one free scene, MPFR 64, a 2 x 2 failure map, and the
 // scene of 003 example 2 renamed with a comma and quotes (a case), so that quoting goes through the merge.
 std::string tiny_plan(const fs::path& cases) {
-  return "--dims 2 --degrees 2 --families touch,free --count 1 --mpfr-bits 64 --map-size 2 --seed 9 --budget 2 --no-figures --cases " +
+  return "--dims 2 --degrees 2 --families touch,free --count 1 --mpfr-bits 64 --map-size 2 --seed 9 --budget 2 "
+         "--no-figures --cases " +
          q(cases.string());
 }
 
@@ -80,8 +81,10 @@ void write_cases(const fs::path& dir) {
 TEST_CASE("the GNU parallel recipe (2 shards, then --merge) gives the rows of one unsharded run", "[cli][parallel]") {
   std::string out;
   if (shell("command -v parallel", out) != 0)
-    FAIL("GNU parallel is not installed: the recipe scripts/report-parallel.sh needs it (Debian: apt-get install parallel; "
-         "scripts/bootstrap.sh installs it)");
+    FAIL(
+        "GNU parallel is not installed: the recipe scripts/report-parallel.sh needs it (Debian: apt-get install "
+        "parallel; "
+        "scripts/bootstrap.sh installs it)");
   TempDir t;
   write_cases(t.path / "my cases");  // a space: the arguments must reach eccd as given
   const std::string plan = tiny_plan(t.path / "my cases");
@@ -90,7 +93,8 @@ TEST_CASE("the GNU parallel recipe (2 shards, then --merge) gives the rows of on
   REQUIRE(whole.code == 0);
 
   const std::string env = "ECCD=" + q(ECCD_EXE) + " ";
-  int rc = shell(env + q(src("scripts/report-parallel.sh")) + " 2 " + q((t.path / "joined").string()) + " " + plan, out);
+  int rc =
+      shell(env + q(src("scripts/report-parallel.sh")) + " 2 " + q((t.path / "joined").string()) + " " + plan, out);
   INFO(out);
   REQUIRE(rc == 0);
   CHECK(fs::exists(t.path / "joined.parts" / "shard-0" / "results.csv"));
@@ -109,7 +113,8 @@ TEST_CASE("the GNU parallel recipe (2 shards, then --merge) gives the rows of on
   CHECK(!fs::exists(t.path / "x"));
 }
 
-TEST_CASE("the Slurm job-array script parses, and its task and merge modes run as Slurm would run them", "[cli][parallel]") {
+TEST_CASE("the Slurm job-array script parses, and its task and merge modes run as Slurm would run them",
+          "[cli][parallel]") {
   std::string out;
   const std::string script = q(src("scripts/report-slurm.sh"));
   REQUIRE(shell("bash -n " + script, out) == 0);
@@ -119,7 +124,9 @@ TEST_CASE("the Slurm job-array script parses, and its task and merge modes run a
   const std::string env = "ECCD=" + q(ECCD_EXE) + " ";
   const std::string dest = q((t.path / "slurm").string());
   for (int i : {0, 1}) {
-    int rc = shell(env + "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " SLURM_CPUS_PER_TASK=1 " + script + " task 2 " + dest + " " + plan, out);
+    int rc = shell(env + "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " SLURM_CPUS_PER_TASK=1 " + script + " task 2 " +
+                       dest + " " + plan,
+                   out);
     INFO(out);
     REQUIRE(rc == 0);
   }

@@ -16,13 +16,14 @@ using namespace eccd;
 using namespace eccd::clitest;
 namespace fs = std::filesystem;
 
-TEST_CASE("ProgressCadence: a log gets one line per step of 5 %, a terminal a redraw at most every 0.5 s", "[progress]") {
+TEST_CASE("ProgressCadence: a log gets one line per step of 5 %, a terminal a redraw at most every 0.5 s",
+          "[progress]") {
   ProgressCadence log(false, 200);
   int lines = 0;
   for (long done = 0; done <= 200; ++done)
     if (log.due(done, 0.01 * double(done))) ++lines;  // 2 s in all: no heartbeat
-  CHECK(lines == 21);                                  // 0 %, 5 %, ..., 100 %
-  CHECK_FALSE(log.due(200, 3.0));                      // the end is printed once
+  CHECK(lines == 21);                                 // 0 %, 5 %, ..., 100 %
+  CHECK_FALSE(log.due(200, 3.0));                     // the end is printed once
   CHECK(std::string(log.begin()).empty());
   CHECK(std::string(log.end(false)) == "\n");
 
@@ -36,7 +37,7 @@ TEST_CASE("ProgressCadence: a log gets one line per step of 5 %, a terminal a re
   int redraws = 0;
   for (long done = 0; done < 1000; ++done)
     if (tty.due(done, 0.001 * double(done))) ++redraws;  // 1 s of 1000 steps
-  CHECK(redraws == 2);                                     // at 0 s and 0.5 s
+  CHECK(redraws == 2);                                   // at 0 s and 0.5 s
   CHECK(std::string(tty.begin()) == "\r");
 }
 
@@ -59,7 +60,8 @@ TEST_CASE("time left: unknown until a task has finished, then from the measured 
   CHECK(*est.wall_by_rate({0, 1}, {1}, 1.0) == Approx(15.0));
 }
 
-TEST_CASE("eccd table prints each row when its scene is done, with progress on stderr, one line per scene in a log", "[progress][cli]") {
+TEST_CASE("eccd table prints each row when its scene is done, with progress on stderr, one line per scene in a log",
+          "[progress][cli]") {
   TempDir t;
   for (const char* f : {"example2.json", "example2-away-1e-3.json", "example2-towards-1e-3.json"})
     fs::copy_file(src(std::string("cases/paper003/") + f), t.path / f);

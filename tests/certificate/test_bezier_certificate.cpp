@@ -68,8 +68,12 @@ TEST_CASE("bezier certificate: spheres-crossing is VALID and proves the closed-f
   REQUIRE(iv.size() == 1);
   for (int e = 0; e < 2; ++e) {
     const mpq_class lo = rq(iv[0][e]["lo"]), hi = rq(iv[0][e]["hi"]);
-    // r = 1/2 -+ sqrt(139)/32 in [lo, hi] iff (32 (x - 1/2))^2 - 139 changes sign over it (monotone on each side of 1/2)
-    auto p = [](const mpq_class& x) { mpq_class y = 32 * (x - mpq_class(1, 2)); return mpq_class(y * y - 139); };
+    // r = 1/2 -+ sqrt(139)/32 in [lo, hi] iff (32 (x - 1/2))^2 - 139 changes sign over it (monotone on each side of
+    // 1/2)
+    auto p = [](const mpq_class& x) {
+      mpq_class y = 32 * (x - mpq_class(1, 2));
+      return mpq_class(y * y - 139);
+    };
     INFO("end " << e << ": [" << lo.get_d() << ", " << hi.get_d() << "]");
     CHECK(sgn(p(lo)) * sgn(p(hi)) < 0);
     CHECK(hi - lo < mpq_class(1, 1000000000));
@@ -124,7 +128,8 @@ TEST_CASE("bezier certificate: every kind of tampering is rejected naming the cl
     t["pieces"].erase(t["pieces"].end() - 1);
     rejected(c, t, "coverage");
   }
-  {  // a Krawczyk box shrunk: X's u-range cut to its left twentieth, which misses the zero (Newton's point is X's centre)
+  {  // a Krawczyk box shrunk: X's u-range cut to its left twentieth, which misses the zero (Newton's point is X's
+     // centre)
     json t = cert;
     json& X = t["pieces"][end]["boxes"][0];
     const mpq_class u0 = rq(X[0]), u1 = rq(X[1]);
@@ -142,7 +147,8 @@ TEST_CASE("bezier certificate: every kind of tampering is rejected naming the cl
   {  // the Krawczyk box's t-range shrunk so that it no longer covers the run
     json t = cert;
     json& X = t["pieces"][end]["boxes"][0];
-    X[2] = mpq_class(rq(t["pieces"][end]["lo"]) + (rq(t["pieces"][end]["hi"]) - rq(t["pieces"][end]["lo"])) / 2).get_str();
+    X[2] =
+        mpq_class(rq(t["pieces"][end]["lo"]) + (rq(t["pieces"][end]["hi"]) - rq(t["pieces"][end]["lo"])) / 2).get_str();
     rejected(c, t, "piece " + std::to_string(end + 1) + " (end", "does not cover the run");
   }
   {  // the answer changed: the second end's bracket replaced by the first's
@@ -157,7 +163,8 @@ TEST_CASE("bezier certificate: every kind of tampering is rejected naming the cl
   }
   {  // the answer changed: no collision
     json t = cert;
-    t["answer"] = {{"collides", false}, {"intervals", json::array()}, {"first_contact", nullptr}, {"contacts", json::array()}};
+    t["answer"] = {
+        {"collides", false}, {"intervals", json::array()}, {"first_contact", nullptr}, {"contacts", json::array()}};
     rejected(c, t, "answer", "collides");
   }
   {  // an oversized number (denial of service): refused before it is parsed
@@ -176,7 +183,8 @@ TEST_CASE("bezier certificate: every kind of tampering is rejected naming the cl
     t["scene"]["b"]["shape"]["semi_axes"][0] = "3";
     rejected(c, t, "scene");
   }
-  {  // format 2's own claims (eccd-check: certificate/check/bezier_certificate.cpp): the net changed by one in one coefficient
+  {  // format 2's own claims (eccd-check: certificate/check/bezier_certificate.cpp): the net changed by one in one
+     // coefficient
     json t = cert;
     json& x = t["net"]["coefficients"][2][0];
     x = mpq_class(rq(x) + 1).get_str();
@@ -225,8 +233,9 @@ TEST_CASE("bezier certificate: a free and an overlapping-at-start scene", "[bezi
   }
 }
 
-TEST_CASE("bezier certificate: a touch is not decided by the proof, the certified route falls back to the exact certificate",
-          "[bezier-certificate]") {
+TEST_CASE(
+    "bezier certificate: a touch is not decided by the proof, the certified route falls back to the exact certificate",
+    "[bezier-certificate]") {
   const Scene s = read_scene(src + "/cases/spheres/spheres-touch.json");
   const json doc = parse_json_document(s.source_text, s.path);
   CHECK_THROWS_AS(make_bezier_certificate(s, doc), CertificationError);
@@ -247,7 +256,8 @@ TEST_CASE("cli: certify --arith certified writes a VALID Bezier certificate, say
   const std::string scene = src + "/cases/spheres/spheres-crossing.json";
   const fs::path cert = dir / "c.json";
   std::string out;
-  REQUIRE(eccd::test::run(exe + " certify " + scene + " --arith certified --no-floating --json --out " + cert.string(), out) == 0);
+  REQUIRE(eccd::test::run(exe + " certify " + scene + " --arith certified --no-floating --json --out " + cert.string(),
+                          out) == 0);
   const json r = json::parse(out);
   CHECK(r["route"] == "bezier");
   CHECK(r["answer"]["intervals"].size() == 1);
@@ -263,23 +273,28 @@ TEST_CASE("cli: certify --arith certified writes a VALID Bezier certificate, say
   }
   // text output names the route; a 2D scene takes the exact route
   const std::string scene2d = src + "/cases/paper003/example2-away-1e-12.json";
-  REQUIRE(eccd::test::run(exe + " certify " + scene2d + " --arith certified --no-floating --out " + (dir / "d2.json").string(), out) == 0);
+  REQUIRE(eccd::test::run(
+              exe + " certify " + scene2d + " --arith certified --no-floating --out " + (dir / "d2.json").string(),
+              out) == 0);
   CHECK(out.find("route: exact") != std::string::npos);
   // an unknown --arith: refused, nothing written
   const fs::path none = dir / "none.json";
   CHECK(eccd::test::run(exe + " certify " + scene + " --arith double --out " + none.string(), out) != 0);
   CHECK_FALSE(fs::exists(none));
   // an unreadable scene: exit 2, nothing written
-  CHECK(eccd::test::run(exe + " certify " + (dir / "missing.json").string() + " --arith certified --out " + none.string(), out) == 2);
+  CHECK(eccd::test::run(
+            exe + " certify " + (dir / "missing.json").string() + " --arith certified --out " + none.string(), out) ==
+        2);
   CHECK_FALSE(fs::exists(none));
   fs::remove_all(dir);
 }
 
-TEST_CASE("bezier certificate: generated colliding 3D cases and paper 002's example, end to end against their stored answers",
-          "[bezier-certificate]") {
-  for (const char* rel : {"cases/generated/3d-affine/3d-deg2-colliding-affine-2295206434708192.json",
-                          "cases/generated/3d-euler/3d-deg4-colliding-euler-4706106488671681.json",
-                          "cases/paper002/example.json"}) {
+TEST_CASE(
+    "bezier certificate: generated colliding 3D cases and paper 002's example, end to end against their stored answers",
+    "[bezier-certificate]") {
+  for (const char* rel :
+       {"cases/generated/3d-affine/3d-deg2-colliding-affine-2295206434708192.json",
+        "cases/generated/3d-euler/3d-deg4-colliding-euler-4706106488671681.json", "cases/paper002/example.json"}) {
     const Scene s = read_scene(src + "/" + rel);
     const json doc = parse_json_document(s.source_text, s.path);
     std::string route, why;
@@ -309,8 +324,9 @@ TEST_CASE("bezier certificate: generated colliding 3D cases and paper 002's exam
   }
 }
 
-TEST_CASE("cli: regress --arith certified --certify certifies each scene by the certified route, every certificate VALID",
-          "[bezier-certificate][cli]") {
+TEST_CASE(
+    "cli: regress --arith certified --certify certifies each scene by the certified route, every certificate VALID",
+    "[bezier-certificate][cli]") {
   const std::string exe = ECCD_EXE;
   std::string out;
   REQUIRE(eccd::test::run(exe + " regress " + src + "/cases/spheres --arith certified --certify --json", out) == 0);
@@ -324,7 +340,8 @@ TEST_CASE("cli: regress --arith certified --certify certifies each scene by the 
     bezier += row["certificate"]["route"] == "bezier";
     exact += row["certificate"]["route"] == "exact";
   }
-  // the two touches (spheres-touch, spheres-touch-at-start) are not decided by intervals: exact route; the rest by the proof
+  // the two touches (spheres-touch, spheres-touch-at-start) are not decided by intervals: exact route; the rest by the
+  // proof
   CHECK(bezier == 5);
   CHECK(exact == 2);
 }

@@ -50,13 +50,16 @@ fs::path temp_dir(const std::string& tag) {
 }
 }  // namespace
 
-TEST_CASE("Every certificate forgery of tests/data/cert is rejected in bounded time, naming the claim and the JSON place", "[certificate][forgery]") {
+TEST_CASE(
+    "Every certificate forgery of tests/data/cert is rejected in bounded time, naming the claim and the JSON place",
+    "[certificate][forgery]") {
   const json manifest = json::parse(read_file_bytes(data + "forgeries.json"));
   REQUIRE(manifest["forgeries"].size() >= 19);
   for (const auto& v : manifest["valid"]) {
     INFO(v["file"].get<std::string>());
     SceneAndDoc sd = scene_of(v["scene"]);
-    CertificateCheck r = check_certificate_text(sd.s, sd.doc, read_file_bytes(data + v["file"].get<std::string>()), v["file"]);
+    CertificateCheck r =
+        check_certificate_text(sd.s, sd.doc, read_file_bytes(data + v["file"].get<std::string>()), v["file"]);
     INFO(r.failed_claim << ": " << r.reason);
     CHECK(r.valid);
   }
@@ -77,14 +80,16 @@ TEST_CASE("Every certificate forgery of tests/data/cert is rejected in bounded t
   }
 }
 
-TEST_CASE("approx: the writer's decimal lies in its bracket and the checker reads it back exactly", "[certificate][approx]") {
+TEST_CASE("approx: the writer's decimal lies in its bracket and the checker reads it back exactly",
+          "[certificate][approx]") {
   auto q = [](const char* s) {
     Rational r(s);
     r.canonicalize();
     return r;
   };
-  for (auto [lo, hi] : {std::pair{"3133727659586372973/18446744073709551616", "1566863829793186487/9223372036854775808"},
-                        std::pair{"1/3", "1/2"}, std::pair{"0", "1/1000000"}, std::pair{"999999/1000000", "1"}}) {
+  for (auto [lo, hi] :
+       {std::pair{"3133727659586372973/18446744073709551616", "1566863829793186487/9223372036854775808"},
+        std::pair{"1/3", "1/2"}, std::pair{"0", "1/1000000"}, std::pair{"999999/1000000", "1"}}) {
     std::string a = approx_in_bracket(q(lo), q(hi));
     auto v = read_approx(a, 200);
     REQUIRE(v);
@@ -100,7 +105,8 @@ TEST_CASE("approx: the writer's decimal lies in its bracket and the checker read
   REQUIRE(t);
   CHECK(abs(Rational(t->value - q("1/3"))) * 2 <= t->unit);
   // Read back: plain decimals only.
-  for (const char* bad : {"not a number", "1/2", "", ".", "0x1p-3", "inf", "1e", "1e999999", "--1", "0.5 "}) CHECK_FALSE(read_approx(bad, 200));
+  for (const char* bad : {"not a number", "1/2", "", ".", "0x1p-3", "inf", "1e", "1e999999", "--1", "0.5 "})
+    CHECK_FALSE(read_approx(bad, 200));
   REQUIRE(read_approx("1.25e-2", 200));
   CHECK(read_approx("1.25e-2", 200)->value == q("1/80"));
   CHECK(read_approx("1.25e-2", 200)->unit == q("1/10000"));
@@ -108,7 +114,9 @@ TEST_CASE("approx: the writer's decimal lies in its bracket and the checker read
   CHECK_FALSE(read_approx(std::string(300, '1'), 200));
 }
 
-TEST_CASE("A duplicate key anywhere in a certificate is rejected at its JSON place, and malformed JSON is an unreadable file", "[certificate][forgery]") {
+TEST_CASE(
+    "A duplicate key anywhere in a certificate is rejected at its JSON place, and malformed JSON is an unreadable file",
+    "[certificate][forgery]") {
   SceneAndDoc sd = scene_of("rolling/circles-rolling.json");
   std::string text = read_file_bytes(data + "valid-rolling2d.cert.json");
   REQUIRE(check_certificate_text(sd.s, sd.doc, text, "c.json").valid);
@@ -122,10 +130,14 @@ TEST_CASE("A duplicate key anywhere in a certificate is rejected at its JSON pla
   CHECK(r.failed_claim == "certificate format");
   CHECK(r.reason.find("/continuous_touching/status: duplicate key") != std::string::npos);
   CHECK_THROWS_AS(check_certificate_text(sd.s, sd.doc, text.substr(0, text.size() / 2), "c.json"), SceneError);
-  CHECK_THROWS_WITH(check_certificate_text(sd.s, sd.doc, std::string(64, '\0'), "c.json"), Catch::StartsWith("c.json: "));
+  CHECK_THROWS_WITH(check_certificate_text(sd.s, sd.doc, std::string(64, '\0'), "c.json"),
+                    Catch::StartsWith("c.json: "));
 }
 
-TEST_CASE("Continuous touching is in the certified answer: circles and spheres rolling in contact, concentric circles overlapping", "[certificate][continuous]") {
+TEST_CASE(
+    "Continuous touching is in the certified answer: circles and spheres rolling in contact, concentric circles "
+    "overlapping",
+    "[certificate][continuous]") {
   for (const char* rel : {"rolling/circles-rolling.json", "rolling/spheres-rolling.json"}) {
     INFO(rel);
     SceneAndDoc sd = scene_of(rel);
@@ -150,13 +162,14 @@ TEST_CASE("Continuous touching is in the certified answer: circles and spheres r
     REQUIRE(d.size() == 1);
     CHECK(d[0].find("contact_intervals: stored 0, recomputed 1") == 0);
   }
-  // Concentric circles moving together: Δ ≡ 0 but one inside the other, overlapping (003 section VI-B): no contact interval,
-  // and a certificate that claims one is rejected.
+  // Concentric circles moving together: Δ ≡ 0 but one inside the other, overlapping (003 section VI-B): no contact
+  // interval, and a certificate that claims one is rejected.
   Scene s = parse_scene(R"({"format": "ellipse-ccd-scene/1", "name": "concentric", "dim": 2,
     "a": {"shape": {"semi_axes": ["1", "1"]}, "motion": {"type": "matrix", "m": [["1", "0", ["0", "1"]], ["0", "1", "0"], ["0", "0", "1"]]}},
     "b": {"shape": {"semi_axes": ["2", "2"]}, "motion": {"type": "matrix", "m": [["1", "0", ["0", "1"]], ["0", "1", "0"], ["0", "0", "1"]]}}})",
                         "concentric");
-  json doc = json::parse(R"({"dim": 2, "a": {"shape": {"semi_axes": ["1", "1"]}, "motion": {"type": "matrix", "m": [["1", "0", ["0", "1"]], ["0", "1", "0"], ["0", "0", "1"]]}},
+  json doc = json::parse(
+      R"({"dim": 2, "a": {"shape": {"semi_axes": ["1", "1"]}, "motion": {"type": "matrix", "m": [["1", "0", ["0", "1"]], ["0", "1", "0"], ["0", "0", "1"]]}},
     "b": {"shape": {"semi_axes": ["2", "2"]}, "motion": {"type": "matrix", "m": [["1", "0", ["0", "1"]], ["0", "1", "0"], ["0", "0", "1"]]}}})");
   json cert = make_certificate(s, doc);
   CHECK(cert["continuous_touching"]["status"] == "overlapping");
@@ -170,9 +183,13 @@ TEST_CASE("Continuous touching is in the certified answer: circles and spheres r
   CHECK(r.failed_claim == "continuous touching");
 }
 
-TEST_CASE("check-certificate and certify read each file once: a FIFO serving two scenes cannot pair them, and a directory is exit 2", "[certificate][cli]") {
+TEST_CASE(
+    "check-certificate and certify read each file once: a FIFO serving two scenes cannot pair them, and a directory is "
+    "exit 2",
+    "[certificate][cli]") {
   fs::path dir = temp_dir("cert-once");
-  const std::string x = src + "/cases/paper003/example2-towards-1e-9.json", y = src + "/cases/paper003/example2-away-1e-12.json";
+  const std::string x = src + "/cases/paper003/example2-towards-1e-9.json",
+                    y = src + "/cases/paper003/example2-away-1e-12.json";
   std::string out;
   // The forgery: X's certificate relabelled as a certificate of Y (Y's dim, a, b).
   json cert = json::parse(read_file_bytes(data + "valid-2d.cert.json"));
@@ -186,8 +203,8 @@ TEST_CASE("check-certificate and certify read each file once: a FIFO serving two
   // Through a FIFO that serves X to the first reader and Y to the second.
   const fs::path fifo = dir / "scene.json";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-  const std::string serve =
-      "(timeout 20 sh -c 'cat " + x + " > " + fifo.string() + "; cat " + y + " > " + fifo.string() + "' >/dev/null 2>&1 &) ; ";
+  const std::string serve = "(timeout 20 sh -c 'cat " + x + " > " + fifo.string() + "; cat " + y + " > " +
+                            fifo.string() + "' >/dev/null 2>&1 &) ; ";
   // The one read sees X alone (the forgery is then rejected: another scene), or X
   // and Y run together when the second writer opens before the reader sees the
   // end (then the bytes are not one JSON document: exit 2). Never VALID.

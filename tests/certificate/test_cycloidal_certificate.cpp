@@ -33,7 +33,8 @@ TEST_CASE("cycloidal certificate: 003 Example 1 round trip and tampering", "[cyc
   // the paper's four roots of Δ (003 Example 1: 0.226, 0.393, 0.600, 0.731), each a proved simple root
   std::vector<double> roots;
   for (const auto& n : cert["timeline"])
-    if (n.contains("kind") && n["kind"] == "simple_root") roots.push_back(parse_rational(n["instant"]["lo"].get<std::string>()).get_d());
+    if (n.contains("kind") && n["kind"] == "simple_root")
+      roots.push_back(parse_rational(n["instant"]["lo"].get<std::string>()).get_d());
   REQUIRE(roots.size() == 4);
   const double paper[] = {0.226, 0.393, 0.600, 0.731};
   for (int i = 0; i < 4; ++i) CHECK(std::abs(roots[i] - paper[i]) < 5e-4);
@@ -100,7 +101,8 @@ TEST_CASE("cycloidal certificate: 003 Example 1 round trip and tampering", "[cyc
   }
 }
 
-TEST_CASE("cycloidal certificate: a touch is stated as 'touch or near miss within epsilon', and epsilon is checked", "[cycloidal][certify]") {
+TEST_CASE("cycloidal certificate: a touch is stated as 'touch or near miss within epsilon', and epsilon is checked",
+          "[cycloidal][certify]") {
   // Two circles, B static, A passing at distance r_A + r_B at t = 1/2 (compare/motion_families.hpp, kind touch)
   const std::string text = R"({"format": "ellipse-ccd-scene/1", "name": "cyc-touch", "dim": 2,
     "a": {"shape": {"semi_axes": ["1", "1"]}, "motion": {"type": "cycloidal", "angle_over_pi": ["0", "1"], "translation": [["-2", "4"], ["2", "0"]]}},
@@ -115,7 +117,8 @@ TEST_CASE("cycloidal certificate: a touch is stated as 'touch or near miss withi
   while (!cert["timeline"][k].contains("kind") || cert["timeline"][k]["kind"] != "undecided") ++k;
   const json& n = cert["timeline"][k];
   CHECK(n["status"] == "uncertain");
-  const mpq_class lo = parse_rational(n["instant"]["lo"].get<std::string>()), hi = parse_rational(n["instant"]["hi"].get<std::string>());
+  const mpq_class lo = parse_rational(n["instant"]["lo"].get<std::string>()),
+                  hi = parse_rational(n["instant"]["hi"].get<std::string>());
   CHECK(lo <= mpq_class(1, 2));
   CHECK(mpq_class(1, 2) <= hi);
   CHECK(cert["answer"]["undecided"].size() == 1);
@@ -131,7 +134,8 @@ TEST_CASE("cycloidal certificate: a touch is stated as 'touch or near miss withi
   CHECK_FALSE(check(s, t).valid);
 }
 
-TEST_CASE("cycloidal certificate: a touch at t = 0 makes the first instant an undecided stretch from 0", "[cycloidal][certify]") {
+TEST_CASE("cycloidal certificate: a touch at t = 0 makes the first instant an undecided stretch from 0",
+          "[cycloidal][certify]") {
   // as in tests/certified/test_cycloidal.cpp: A slides off B, touching at t = 0 only
   const std::string text = R"({"format": "ellipse-ccd-scene/1", "name": "touch0", "dim": 2,
     "a": {"shape": {"semi_axes": ["2", "1"]},

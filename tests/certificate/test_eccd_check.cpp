@@ -37,10 +37,12 @@ fs::path temp_dir(const std::string& tag) {
 }
 }  // namespace
 
-TEST_CASE("eccd-check: VALID (exit 0) on genuine certificates, 2D, 3D and continuous touching", "[eccd-check][certificate]") {
+TEST_CASE("eccd-check: VALID (exit 0) on genuine certificates, 2D, 3D and continuous touching",
+          "[eccd-check][certificate]") {
   const json manifest = json::parse(read_file_bytes(data + "forgeries.json"));
   for (const auto& v : manifest["valid"]) {
-    const std::string scene = src + "/cases/" + v["scene"].get<std::string>(), cert = data + v["file"].get<std::string>();
+    const std::string scene = src + "/cases/" + v["scene"].get<std::string>(),
+                      cert = data + v["file"].get<std::string>();
     INFO(cert);
     std::string out;
     CHECK(run(q(checker) + " " + q(scene) + " " + q(cert), out) == 0);
@@ -51,25 +53,30 @@ TEST_CASE("eccd-check: VALID (exit 0) on genuine certificates, 2D, 3D and contin
   }
 }
 
-TEST_CASE("eccd-check: REJECTED (exit 1) names the claim, and every shipped forgery of eccd-certificate/2 is rejected", "[eccd-check][certificate][forgery]") {
+TEST_CASE("eccd-check: REJECTED (exit 1) names the claim, and every shipped forgery of eccd-certificate/2 is rejected",
+          "[eccd-check][certificate][forgery]") {
   const json manifest = json::parse(read_file_bytes(data + "forgeries.json"));
   for (const auto& f : manifest["forgeries"]) {
-    const std::string scene = src + "/cases/" + f["scene"].get<std::string>(), cert = data + f["file"].get<std::string>();
+    const std::string scene = src + "/cases/" + f["scene"].get<std::string>(),
+                      cert = data + f["file"].get<std::string>();
     INFO(cert);
     std::string out;
     CHECK(run(q(checker) + " " + q(scene) + " " + q(cert) + " --json", out) == 1);
     const json j = json::parse(out);
     CHECK(j["verdict"] == "REJECTED");
     CHECK(j["failed_claim"].get<std::string>().rfind(f["claim"].get<std::string>(), 0) == 0);
-    CHECK((j["failed_claim"].get<std::string>() + ": " + j["reason"].get<std::string>()).find(f["place"].get<std::string>()) != std::string::npos);
+    CHECK((j["failed_claim"].get<std::string>() + ": " + j["reason"].get<std::string>())
+              .find(f["place"].get<std::string>()) != std::string::npos);
   }
   // A certificate checked against another scene.
   std::string out;
-  CHECK(run(q(checker) + " " + q(src + "/cases/paper003/example2.json") + " " + q(data + "valid-3d.cert.json"), out) == 1);
+  CHECK(run(q(checker) + " " + q(src + "/cases/paper003/example2.json") + " " + q(data + "valid-3d.cert.json"), out) ==
+        1);
   CHECK(out.find("REJECTED: scene:") != std::string::npos);
 }
 
-TEST_CASE("eccd-check: a changed claim is rejected by name (f, projection, a cell status, the answer)", "[eccd-check][certificate]") {
+TEST_CASE("eccd-check: a changed claim is rejected by name (f, projection, a cell status, the answer)",
+          "[eccd-check][certificate]") {
   const std::string scene_path = src + "/cases/paper003/example2-towards-1e-9.json";
   const std::string scene = read_file_bytes(scene_path);
   const json cert = json::parse(read_file_bytes(data + "valid-2d.cert.json"));
@@ -99,7 +106,8 @@ TEST_CASE("eccd-check: a changed claim is rejected by name (f, projection, a cel
   CHECK(v.reason.find("collides") != std::string::npos);
 }
 
-TEST_CASE("eccd-check: exit 2 for an unreadable file, malformed JSON, bad arguments or a format it does not cover", "[eccd-check][certificate]") {
+TEST_CASE("eccd-check: exit 2 for an unreadable file, malformed JSON, bad arguments or a format it does not cover",
+          "[eccd-check][certificate]") {
   const fs::path d = temp_dir("eccd-check");
   const std::string scene = src + "/cases/paper003/example2-towards-1e-9.json";
   std::ofstream(d / "broken.json") << "{\"format\": ";
@@ -109,7 +117,8 @@ TEST_CASE("eccd-check: exit 2 for an unreadable file, malformed JSON, bad argume
   CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "missing.json").string()), out) == 2);
   CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "broken.json").string()), out) == 2);
   CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "cycloidal.json").string()), out) == 2);
-  CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "cycloidal-1.json").string()), out) == 1);  // an older version: refused, saying so
+  CHECK(run(q(checker) + " " + q(scene) + " " + q((d / "cycloidal-1.json").string()), out) ==
+        1);  // an older version: refused, saying so
   CHECK(out.find("older version") != std::string::npos);
   CHECK(run(q(checker) + " " + q(scene), out) == 2);
   CHECK(run(q(checker) + " --bogus " + q(scene) + " " + q(data + "valid-2d.cert.json"), out) == 2);
@@ -120,19 +129,24 @@ TEST_CASE("eccd-check: exit 2 for an unreadable file, malformed JSON, bad argume
   CHECK_FALSE(check::covers_format("eccd-independent-certificate/2"));
   {  // the independent kind's older version: refused by name
     std::ofstream(d / "independent-2.json") << "{\"format\": \"eccd-independent-certificate/2\"}";
-    CHECK(run(q(checker) + " " + q(src + "/cases/independent/discs-end.json") + " " + q((d / "independent-2.json").string()), out) == 1);
+    CHECK(run(q(checker) + " " + q(src + "/cases/independent/discs-end.json") + " " +
+                  q((d / "independent-2.json").string()),
+              out) == 1);
     CHECK(out.find("older version") != std::string::npos);
   }
   fs::remove_all(d);
 }
 
-TEST_CASE("An incomplete cycloidal certificate never claims collides: false (the two forgeries of 003 Example 1)", "[eccd-check][certificate][cycloidal][forgery]") {
+TEST_CASE("An incomplete cycloidal certificate never claims collides: false (the two forgeries of 003 Example 1)",
+          "[eccd-check][certificate][cycloidal][forgery]") {
   const std::string path = src + "/cases/paper003/example1.json";
-  for (const char* file : {"cycloidal-incomplete-collides-false-epsilon-1e300.cert.json", "cycloidal-collision-hidden-in-undecided-stretch.cert.json"}) {
+  for (const char* file : {"cycloidal-incomplete-collides-false-epsilon-1e300.cert.json",
+                           "cycloidal-collision-hidden-in-undecided-stretch.cert.json"}) {
     INFO(file);
     std::string out;
     CHECK(run(q(exe) + " check-certificate " + q(path) + " " + q(data + file), out) == 1);
-    CHECK(out.find("REJECTED: answer: answer.collides is false but 1 stretch(es) of the timeline are undecided") != std::string::npos);
+    CHECK(out.find("REJECTED: answer: answer.collides is false but 1 stretch(es) of the timeline are undecided") !=
+          std::string::npos);
     // With collides null (unknown) the claim about the stretch must still be proved: epsilon is bounded.
     json c = json::parse(read_file_bytes(data + file));
     c["answer"]["collides"] = nullptr;
@@ -145,7 +159,10 @@ TEST_CASE("An incomplete cycloidal certificate never claims collides: false (the
   }
 }
 
-TEST_CASE("collides_claim: true where a collision is proved, null where a stretch is undecided and none is, false only when complete", "[certificate][answer]") {
+TEST_CASE(
+    "collides_claim: true where a collision is proved, null where a stretch is undecided and none is, false only when "
+    "complete",
+    "[certificate][answer]") {
   Answer a;
   CHECK(collides_claim(a) == std::optional<bool>(false));
   a.undecided.push_back(Instant{"0.5", std::nullopt, std::nullopt, 0.5});
@@ -154,7 +171,8 @@ TEST_CASE("collides_claim: true where a collision is proved, null where a stretc
   CHECK(collides_claim(a) == std::optional<bool>(true));
 }
 
-TEST_CASE("The solver's JSON says collides null when nothing is proved and a stretch is undecided, and reads it back", "[certificate][answer]") {
+TEST_CASE("The solver's JSON says collides null when nothing is proved and a stretch is undecided, and reads it back",
+          "[certificate][answer]") {
   Solution s;
   s.answer.undecided.push_back(Instant{"0.25", std::nullopt, std::nullopt, 0.25});
   json j = solution_to_json(s);

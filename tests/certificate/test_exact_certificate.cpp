@@ -67,9 +67,10 @@ TEST_CASE("Descartes' rule on an interval: 0 proves no root, 1 proves exactly on
 }
 
 TEST_CASE("Certificates of the shipped 2D and 3D cases pass the checker", "[certificate]") {
-  for (const char* rel : {"paper003/example2.json", "paper003/example2-towards-1e-9.json", "paper003/example2-away-1e-12.json",
-                          "spheres/spheres-crossing.json", "spheres/spheres-touch.json", "touch3d/touch-and-separate.json",
-                          "touch3d/overlap-on-axis.json"}) {
+  for (const char* rel :
+       {"paper003/example2.json", "paper003/example2-towards-1e-9.json", "paper003/example2-away-1e-12.json",
+        "spheres/spheres-crossing.json", "spheres/spheres-touch.json", "touch3d/touch-and-separate.json",
+        "touch3d/overlap-on-axis.json"}) {
     INFO(rel);
     Certified c = certify(rel);
     CertificateCheck r = check_certificate(c.s, c.doc, c.cert);
@@ -111,7 +112,8 @@ TEST_CASE("A tampered 2D certificate is rejected and the failing claim is named"
     Rational nlo = (prev + lo) / 2, nhi = nlo + w;  // same width, between the sample and the old bracket
     t["timeline"][k]["instant"]["lo"] = nlo.get_str();
     t["timeline"][k]["instant"]["hi"] = nhi.get_str();
-    t["timeline"][k]["instant"]["approx"] = approx_in_bracket(nlo, nhi);  // a consistent forgery: approx in the new bracket
+    t["timeline"][k]["instant"]["approx"] =
+        approx_in_bracket(nlo, nhi);  // a consistent forgery: approx in the new bracket
     CertificateCheck r = check_certificate(c.s, c.doc, t);
     CHECK_FALSE(r.valid);
     CHECK(r.failed_claim.rfind("instant 1 ", 0) == 0);
@@ -132,7 +134,8 @@ TEST_CASE("A tampered 2D certificate is rejected and the failing claim is named"
     CertificateCheck r = check_certificate(c.s, c.doc, t);
     CHECK_FALSE(r.valid);
     CHECK(r.failed_claim == "projection");
-    CHECK(r.reason.find("not a constant multiple") != std::string::npos);  // compared by values at integers (certificate/check/)
+    CHECK(r.reason.find("not a constant multiple") !=
+          std::string::npos);  // compared by values at integers (certificate/check/)
   }
   SECTION("an evidence sign flipped") {
     json t = c.cert;

@@ -40,7 +40,8 @@ std::vector<mpz_class> quartic_with_roots(long k, long r1, long r2, long r3, lon
 
 }  // namespace
 
-TEST_CASE("eccd-check: the quartic's closed-form discriminant is Res(f, f') / g_4, zero exactly at a double root", "[eccd-check][exact-routes]") {
+TEST_CASE("eccd-check: the quartic's closed-form discriminant is Res(f, f') / g_4, zero exactly at a double root",
+          "[eccd-check][exact-routes]") {
   std::mt19937 rng(20261201);
   std::uniform_int_distribution<long> d(-40, 40);
   for (int trial = 0; trial < 200; ++trial) {
@@ -56,7 +57,8 @@ TEST_CASE("eccd-check: the quartic's closed-form discriminant is Res(f, f') / g_
   CHECK(check::quartic_discriminant_at(quartic_with_roots(1, 1, 2, 3, 4)) == 144);
 }
 
-TEST_CASE("eccd-check: the pencil's coefficients on integers are H! times the rational route's", "[eccd-check][exact-routes]") {
+TEST_CASE("eccd-check: the pencil's coefficients on integers are H! times the rational route's",
+          "[eccd-check][exact-routes]") {
   std::mt19937 rng(7);
   std::uniform_int_distribution<long> d(-9, 9);
   for (std::size_t H : {3u, 4u}) {
@@ -105,17 +107,20 @@ TEST_CASE("eccd-check: N = adj(M) / the gcd of its entries, on integer polynomia
   CHECK(c == det);
   CHECK(check::matrix_degree(N) == 4);
   // The identity times 1 + t²: adj = (1 + t²)² I, the common factor (1 + t²)² divided out, N a constant matrix.
-  const check::PolyMatrix S{{poly({1, 0, 1}), poly({}), poly({})}, {poly({}), poly({1, 0, 1}), poly({})}, {poly({}), poly({}), poly({1, 0, 1})}};
+  const check::PolyMatrix S{{poly({1, 0, 1}), poly({}), poly({})},
+                            {poly({}), poly({1, 0, 1}), poly({})},
+                            {poly({}), poly({}), poly({1, 0, 1})}};
   CHECK(check::matrix_degree(check::primitive_inverse(S)) == 0);
 }
 
 TEST_CASE("eccd-check: a sign on a bracket by the mean value theorem, or no answer", "[eccd-check][exact-routes]") {
-  const std::vector<mpz_class> p{mpz_class(-1), mpz_class(3)};  // 3t - 1, root 1/3
-  CHECK(check::sign_on_bracket(p, mpq_class(1, 2), mpq_class(6, 10)) == 1);   // |p(1/2)| = 1/2 > (1/10) · 3
-  CHECK(check::sign_on_bracket(p, mpq_class(1, 2), mpq_class(3, 4)) == 0);   // no root, but 1/2 < (1/4) · 3: cannot tell
+  const std::vector<mpz_class> p{mpz_class(-1), mpz_class(3)};               // 3t - 1, root 1/3
+  CHECK(check::sign_on_bracket(p, mpq_class(1, 2), mpq_class(6, 10)) == 1);  // |p(1/2)| = 1/2 > (1/10) · 3
+  CHECK(check::sign_on_bracket(p, mpq_class(1, 2), mpq_class(3, 4)) == 0);  // no root, but 1/2 < (1/4) · 3: cannot tell
   CHECK(check::sign_on_bracket(p, mpq_class(0), mpq_class(1, 4)) == -1);
-  CHECK(check::sign_on_bracket(p, mpq_class(0), mpq_class(1, 2)) == 0);          // the root is inside
-  CHECK(check::sign_on_bracket(p, mpq_class(3334, 10000), mpq_class(1, 2)) == 0);  // no root, but |p(lo)| is too small to tell
+  CHECK(check::sign_on_bracket(p, mpq_class(0), mpq_class(1, 2)) == 0);  // the root is inside
+  CHECK(check::sign_on_bracket(p, mpq_class(3334, 10000), mpq_class(1, 2)) ==
+        0);  // no root, but |p(lo)| is too small to tell
   const std::vector<mpz_class> q{mpz_class(1), mpz_class(0), mpz_class(-4)};  // 1 - 4t², roots ±1/2
   CHECK(check::sign_on_bracket(q, mpq_class(1, 2) + mpq_class(1, 1000), mpq_class(1)) == 0);
   CHECK(check::sign_on_bracket(q, mpq_class(-1, 20), mpq_class(1, 20)) == 1);  // q(lo) = 0.99 > (1/10) · 8
@@ -123,9 +128,12 @@ TEST_CASE("eccd-check: a sign on a bracket by the mean value theorem, or no answ
   CHECK(check::sign_at(q, mpq_class(-3, 4)) == -1);
 }
 
-TEST_CASE("eccd-check: the writer's gap points let every piece count its roots, and a root given to the wrong factor is rejected",
-          "[eccd-check][exact-routes][certificate]") {
-  for (const std::string rel : {"paper003/example2.json", "paper002/example.json", "generated/2d/2d-deg6-colliding-kinematic-793321409713674.json"}) {
+TEST_CASE(
+    "eccd-check: the writer's gap points let every piece count its roots, and a root given to the wrong factor is "
+    "rejected",
+    "[eccd-check][exact-routes][certificate]") {
+  for (const std::string rel : {"paper003/example2.json", "paper002/example.json",
+                                "generated/2d/2d-deg6-colliding-kinematic-793321409713674.json"}) {
     const std::string path = src + "/cases/" + rel, text = read_file_bytes(path);
     const Scene s = parse_scene(text, path);
     const json cert = make_certificate(s, parse_json_document(text, path));

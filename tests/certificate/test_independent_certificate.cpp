@@ -50,8 +50,10 @@ TEST_CASE("independent certificate: spheres-end round trip and tampering", "[ind
       for (int e = 0; e < 2; ++e) {
         const Instant& want = e ? stored[i].second : stored[i].first;
         const json& got = cert["answer"][k][i][e];
-        const mpq_class lo = parse_rational(got["lo"].get<std::string>()), hi = parse_rational(got["hi"].get<std::string>());
-        INFO(k << " " << i << " end " << e << ": stored " << want.approx << ", certified [" << lo.get_d() << ", " << hi.get_d() << "]");
+        const mpq_class lo = parse_rational(got["lo"].get<std::string>()),
+                        hi = parse_rational(got["hi"].get<std::string>());
+        INFO(k << " " << i << " end " << e << ": stored " << want.approx << ", certified [" << lo.get_d() << ", "
+               << hi.get_d() << "]");
         CHECK(hi - lo < mpq_class(1, 1000000));
         CHECK(std::abs(want.value - lo.get_d()) < 1e-6);
       }
@@ -69,7 +71,8 @@ TEST_CASE("independent certificate: spheres-end round trip and tampering", "[ind
   {  // a moved bracket: shifted by its run's width, it leaves the run
     json t = cert;
     json& e = t["s_proof"][end];
-    const mpq_class lo = parse_rational(e["bracket"][0].get<std::string>()), hi = parse_rational(e["bracket"][1].get<std::string>());
+    const mpq_class lo = parse_rational(e["bracket"][0].get<std::string>()),
+                    hi = parse_rational(e["bracket"][1].get<std::string>());
     const mpq_class w = parse_rational(e["hi"].get<std::string>()) - parse_rational(e["lo"].get<std::string>());
     e["bracket"] = {mpq_class(lo + w).get_str(), mpq_class(hi + w).get_str()};
     rejected(s, t, "s_proof item " + std::to_string(end + 1) + " (");
@@ -143,7 +146,8 @@ TEST_CASE("independent certificate: ellipsoids-apart (no meeting) round trip", "
   }
 }
 
-TEST_CASE("independent certificate: 2D scenes (discs-end, ellipse-static) round trip, the free system and the format", "[independent][certificate]") {
+TEST_CASE("independent certificate: 2D scenes (discs-end, ellipse-static) round trip, the free system and the format",
+          "[independent][certificate]") {
   // discs-end: two discs on lines whose meeting ends where B's path stops (edge systems "0", "1");
   // ellipse-static: B does not move, so the ends of P_s are proved on F = F_u = 0 in (u, s) (system "free").
   for (const char* name : {"discs-end", "ellipse-static"}) {
@@ -166,7 +170,8 @@ TEST_CASE("independent certificate: 2D scenes (discs-end, ellipse-static) round 
       for (std::size_t i = 0; i < stored.size(); ++i)
         for (int e = 0; e < 2; ++e) {
           const json& got = cert["answer"][k][i][e];
-          const mpq_class lo = parse_rational(got["lo"].get<std::string>()), hi = parse_rational(got["hi"].get<std::string>());
+          const mpq_class lo = parse_rational(got["lo"].get<std::string>()),
+                          hi = parse_rational(got["hi"].get<std::string>());
           CHECK(lo <= hi);
           CHECK(hi - lo < mpq_class(1, 1000000));
           CHECK(std::abs((e ? stored[i].second : stored[i].first).value - lo.get_d()) < 1e-6);
@@ -209,11 +214,13 @@ TEST_CASE("independent certificate: 2D scenes (discs-end, ellipse-static) round 
   }
 }
 
-TEST_CASE("independent certificate: a body turning in place (disc-turning 2D, ball-turning 3D) round trip", "[independent][certificate]") {
+TEST_CASE("independent certificate: a body turning in place (disc-turning 2D, ball-turning 3D) round trip",
+          "[independent][certificate]") {
   // A turns about its fixed centre: A(s) = c(s) A(0), so the net holds A at s = 0 (reduced ["s"]), P_s = [0, 1] and
   // the ends of P_t are proved on F = F_u = 0 in (u, t) (system "free" in the t-proof); analytic t-ends:
   // disc-turning 144 t^2 - 144 t + 31 = 0, ball-turning 36 t^2 - 42 t + 11 = 0
-  const std::pair<const char*, std::vector<int>> cases[] = {{"disc-turning", {31, -144, 144}}, {"ball-turning", {11, -42, 36}}};
+  const std::pair<const char*, std::vector<int>> cases[] = {{"disc-turning", {31, -144, 144}},
+                                                            {"ball-turning", {11, -42, 36}}};
   for (const auto& [name, p] : cases) {
     INFO(name);
     const Scene s = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json");
@@ -231,7 +238,8 @@ TEST_CASE("independent certificate: a body turning in place (disc-turning 2D, ba
     REQUIRE(cert["answer"]["t_intervals"].size() == 1);
     for (int e = 0; e < 2; ++e) {  // each bracket holds a sign change of the quadratic
       const json& got = cert["answer"]["t_intervals"][0][e];
-      const mpq_class lo = parse_rational(got["lo"].get<std::string>()), hi = parse_rational(got["hi"].get<std::string>());
+      const mpq_class lo = parse_rational(got["lo"].get<std::string>()),
+                      hi = parse_rational(got["hi"].get<std::string>());
       auto f = [&](const mpq_class& x) { return sgn(mpq_class(p[0] + p[1] * x + p[2] * x * x)); };
       CHECK(f(lo) * f(hi) <= 0);
       CHECK(hi - lo < mpq_class(1, 1000000));
@@ -247,7 +255,10 @@ TEST_CASE("independent certificate: a body turning in place (disc-turning 2D, ba
     {  // an exclusion tree cut short
       json t = cert;
       for (auto& it : t["t_proof"])
-        if (it["kind"] == "end") { it["exclusion"] = "1"; break; }
+        if (it["kind"] == "end") {
+          it["exclusion"] = "1";
+          break;
+        }
       const CertificateCheck r = check(s, t);
       CHECK_FALSE(r.valid);
       CHECK(r.reason.find("exclusion tree ends early") != std::string::npos);

@@ -76,7 +76,10 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
       break;
     case 1: {  // an end moved: a bracket end of the timeline or of the answer
       std::vector<json::json_pointer> ends;
-      collect(c, json::json_pointer(), [](const json& j) { return j.is_object() && j.contains("lo") && j.contains("hi") && j.contains("approx"); }, ends);
+      collect(
+          c, json::json_pointer(),
+          [](const json& j) { return j.is_object() && j.contains("lo") && j.contains("hi") && j.contains("approx"); },
+          ends);
       const auto p = ends[pick(ends.size())];
       json& in = c[p];
       const char* key = pick(2) ? "lo" : "hi";
@@ -89,7 +92,8 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
       mpq_class v = (key[0] == 'l' ? lo : hi) + shift[pick(6)];
       in[key] = v.get_str();
       m.what = std::string("end moved: ") + p.to_string() + "/" + key;
-      m.may_stay_valid = p.to_string().rfind("/timeline", 0) == 0;  // a wider or narrower bracket may still prove the same root
+      m.may_stay_valid =
+          p.to_string().rfind("/timeline", 0) == 0;  // a wider or narrower bracket may still prove the same root
       break;
     }
     case 2: {  // an interval dropped or added
@@ -98,14 +102,19 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
         iv.erase(iv.begin() + long(pick(iv.size())));
         m.what = "interval dropped";
       } else {
-        iv.push_back(json::array({{{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}, {{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}}));
+        iv.push_back(
+            json::array({{{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}, {{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}}));
         m.what = "interval added";
       }
       break;
     }
     case 3: {  // a root dropped or added (an instant and its cell)
       if (!has_timeline || tl.size() < 5 || pick(2)) {
-        if (!has_timeline) { c["answer"]["contacts"].push_back({{"approx", "0.5"}, {"lo", "1/2"}, {"hi", "1/2"}}); m.what = "contact added"; break; }
+        if (!has_timeline) {
+          c["answer"]["contacts"].push_back({{"approx", "0.5"}, {"lo", "1/2"}, {"hi", "1/2"}});
+          m.what = "contact added";
+          break;
+        }
         const std::size_t k = 1 + 2 * pick(tl.size() / 2);  // a cell
         json cell = tl[k], inst = tl[k - 1];
         tl.insert(tl.begin() + long(k), cell);
@@ -120,16 +129,21 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     }
     case 4: {  // an integer changed by one
       std::vector<json::json_pointer> nums;
-      collect(c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
+      collect(
+          c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
       const auto p = nums[pick(nums.size())];
       const int d = pick(2) ? 1 : -1;
-      if (c[p].is_number_integer()) c[p] = c[p].get<long long>() + d;
-      else c[p] = plus_one(c[p].get<std::string>(), d);
+      if (c[p].is_number_integer())
+        c[p] = c[p].get<long long>() + d;
+      else
+        c[p] = plus_one(c[p].get<std::string>(), d);
       m.what = "integer changed by one at " + p.to_string();
       const std::string top = p.to_string().substr(0, p.to_string().find('/', 1));
-      m.may_stay_valid = top == "/gap_points" || (top == "/continuous_touching" && p.to_string().find("gap_points") != std::string::npos) ||
+      m.may_stay_valid = top == "/gap_points" ||
+                         (top == "/continuous_touching" && p.to_string().find("gap_points") != std::string::npos) ||
                          p.to_string().find("/cell_sample") != std::string::npos ||
-                         (top == "/timeline" && p.to_string().find("/instant/") != std::string::npos);  // a bracket may still prove its root
+                         (top == "/timeline" &&
+                          p.to_string().find("/instant/") != std::string::npos);  // a bracket may still prove its root
       break;
     }
     case 5:
@@ -149,7 +163,11 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
       return m;
     }
     case 7: {  // a bracket widened past its neighbour
-      if (!has_timeline) { c["answer"]["first_contact"] = json(); m.what = "first contact dropped"; break; }
+      if (!has_timeline) {
+        c["answer"]["first_contact"] = json();
+        m.what = "first contact dropped";
+        break;
+      }
       const std::size_t k = 2 * pick(tl.size() / 2 + 1);
       json& in = tl[k]["instant"];
       if (k + 1 < tl.size() && (k == 0 || pick(2))) {
@@ -166,7 +184,9 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     }
     case 8: {  // a status flipped
       std::vector<json::json_pointer> st;
-      collect(c, json::json_pointer(), [](const json& j) { return j.is_object() && j.contains("status") && j["status"].is_string(); }, st);
+      collect(
+          c, json::json_pointer(),
+          [](const json& j) { return j.is_object() && j.contains("status") && j["status"].is_string(); }, st);
       const auto p = st[pick(st.size())];
       const std::string old = c[p]["status"];
       const std::string others[] = {"separate", "touching", "overlapping"};
@@ -178,8 +198,14 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     }
     case 9: {  // an evidence sign flipped
       std::vector<json::json_pointer> ev;
-      collect(c, json::json_pointer(), [](const json& j) { return j.is_object() && j.contains("sign") && j.contains("poly"); }, ev);
-      if (ev.empty()) { c["answer"]["collides"] = !c["answer"]["collides"].get<bool>(); m.what = "collides flipped"; break; }
+      collect(
+          c, json::json_pointer(),
+          [](const json& j) { return j.is_object() && j.contains("sign") && j.contains("poly"); }, ev);
+      if (ev.empty()) {
+        c["answer"]["collides"] = !c["answer"]["collides"].get<bool>();
+        m.what = "collides flipped";
+        break;
+      }
       const auto p = ev[pick(ev.size())];
       const std::string old = c[p]["sign"];
       c[p]["sign"] = old == "positive" ? "negative" : "positive";
@@ -188,7 +214,11 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     }
     default: {  // a gap point dropped
       json& gp = has_timeline ? c["gap_points"] : c["continuous_touching"]["gap_points"];
-      if (gp.empty()) { c["answer"]["intervals"] = json::array(); m.what = "intervals emptied"; break; }
+      if (gp.empty()) {
+        c["answer"]["intervals"] = json::array();
+        m.what = "intervals emptied";
+        break;
+      }
       gp.erase(gp.begin() + long(pick(gp.size())));
       m.what = "gap point dropped";
       m.may_stay_valid = true;  // the next piece may still be root-free
@@ -224,11 +254,13 @@ bool prover_algebra_valid(const Base& b, const Mutant& m) {
 void campaign(std::size_t per_kind) {
   std::uint64_t seed = std::random_device{}();
   if (const char* s = std::getenv("ECCD_MUTATION_SEED")) seed = std::strtoull(s, nullptr, 10);
-  std::cout << "mutation campaign: seed " << seed << " (ECCD_MUTATION_SEED=" << seed << " repeats it), " << per_kind << " mutations per kind\n";
+  std::cout << "mutation campaign: seed " << seed << " (ECCD_MUTATION_SEED=" << seed << " repeats it), " << per_kind
+            << " mutations per kind\n";
   std::mt19937_64 rng(seed);
-  const std::vector<Base> kinds = {base("eccd-certificate/2 2D", "paper003/example2-away-1e-3.json", "paper003/example2.json"),
-                                   base("eccd-certificate/2 3D", "touch3d/touch-and-separate.json", "touch3d/touch-then-overlap.json"),
-                                   base("eccd-certificate/2 2D continuous", "rolling/circles-rolling.json", "paper003/example2.json")};
+  const std::vector<Base> kinds = {
+      base("eccd-certificate/2 2D", "paper003/example2-away-1e-3.json", "paper003/example2.json"),
+      base("eccd-certificate/2 3D", "touch3d/touch-and-separate.json", "touch3d/touch-then-overlap.json"),
+      base("eccd-certificate/2 2D continuous", "rolling/circles-rolling.json", "paper003/example2.json")};
   for (const Base& b : kinds) {
     INFO(b.name << " (seed " << seed << ")");
     REQUIRE(independent_valid(b, Mutant{"none", b.cert.dump(), b.scene_text, true}));
@@ -242,17 +274,20 @@ void campaign(std::size_t per_kind) {
         CHECK_FALSE(v1);
         CHECK_FALSE(v2);
       }
-      if (!v1 && !v2) ++rejected;
-      else ++neutral_valid;
+      if (!v1 && !v2)
+        ++rejected;
+      else
+        ++neutral_valid;
     }
-    std::cout << "  " << b.name << ": " << per_kind << " mutations, " << rejected << " rejected by both checkers, " << neutral_valid
-              << " valid in one or both with the answer and scene unchanged\n";
+    std::cout << "  " << b.name << ": " << per_kind << " mutations, " << rejected << " rejected by both checkers, "
+              << neutral_valid << " valid in one or both with the answer and scene unchanged\n";
   }
 }
 
 }  // namespace
 
-TEST_CASE("Mutation campaign: no answer-changing mutation of an eccd-certificate/2 is VALID in either checker", "[mutation][certificate]") {
+TEST_CASE("Mutation campaign: no answer-changing mutation of an eccd-certificate/2 is VALID in either checker",
+          "[mutation][certificate]") {
   campaign(500);
 }
 

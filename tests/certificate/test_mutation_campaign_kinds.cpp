@@ -97,9 +97,10 @@ using eccd::test::Mutant;
 
 // Where a changed number may leave a true claim (the answer unchanged): boxes, gap points, timeline brackets, samples.
 bool harmless_place(const std::string& p) {
-  return p.find("/boxes/") != std::string::npos || p.rfind("/gap_points", 0) == 0 || p.find("/cell_sample") != std::string::npos ||
-         (p.rfind("/timeline", 0) == 0 && p.find("/instant/") != std::string::npos) || p.find("/epsilon") != std::string::npos ||
-         p == "/precision_bits" || p == "/delta/precision_bits";
+  return p.find("/boxes/") != std::string::npos || p.rfind("/gap_points", 0) == 0 ||
+         p.find("/cell_sample") != std::string::npos ||
+         (p.rfind("/timeline", 0) == 0 && p.find("/instant/") != std::string::npos) ||
+         p.find("/epsilon") != std::string::npos || p == "/precision_bits" || p == "/delta/precision_bits";
 }
 
 Mutant mutate(const Base& b, std::mt19937_64& rng) {
@@ -117,7 +118,10 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     }
     case 1: {  // an end moved
       std::vector<json::json_pointer> ends;
-      collect(c, json::json_pointer(), [](const json& j) { return j.is_object() && j.contains("lo") && j.contains("hi") && j["lo"].is_string(); }, ends);
+      collect(
+          c, json::json_pointer(),
+          [](const json& j) { return j.is_object() && j.contains("lo") && j.contains("hi") && j["lo"].is_string(); },
+          ends);
       const auto p = ends[pick(ends.size())];
       json& in = c[p];
       const char* key = pick(2) ? "lo" : "hi";
@@ -136,7 +140,8 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
         iv.erase(iv.begin() + long(pick(iv.size())));
         m.what = "interval dropped";
       } else {
-        iv.push_back(json::array({{{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}, {{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}}));
+        iv.push_back(
+            json::array({{{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}, {{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}}));
         m.what = "interval added";
       }
       break;
@@ -169,10 +174,12 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     }
     case 4: {  // an integer changed by one
       std::vector<json::json_pointer> nums;
-      collect(c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
+      collect(
+          c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
       const auto p = nums[pick(nums.size())];
       const int d = pick(2) ? 1 : -1;
-      if (c[p].is_number_integer()) c[p] = c[p].get<long long>() + d;
+      if (c[p].is_number_integer())
+        c[p] = c[p].get<long long>() + d;
       else {
         const std::string s = c[p].get<std::string>();
         const std::size_t slash = s.find('/');
@@ -203,14 +210,18 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     case 7: {  // a bracket widened past its neighbour
       if (b.bezier) {
         const std::size_t k = pick(seq.size());
-        if (k + 1 < seq.size()) seq[k]["hi"] = mpq_class(rq(seq[k + 1]["hi"]) + mpq_class(1, 1 << 30)).get_str();
-        else seq[k]["lo"] = mpq_class(rq(seq[k - 1]["lo"]) - mpq_class(1, 1 << 30)).get_str();
+        if (k + 1 < seq.size())
+          seq[k]["hi"] = mpq_class(rq(seq[k + 1]["hi"]) + mpq_class(1, 1 << 30)).get_str();
+        else
+          seq[k]["lo"] = mpq_class(rq(seq[k - 1]["lo"]) - mpq_class(1, 1 << 30)).get_str();
         m.what = "piece " + std::to_string(k) + " widened past its neighbour";
       } else {
         const std::size_t k = 2 * pick(seq.size() / 2 + 1);
         json& in = seq[k]["instant"];
-        if (k + 1 < seq.size() && (k == 0 || pick(2))) in["hi"] = mpq_class(rq(seq[k + 2]["instant"]["lo"]) + mpq_class(1, 1 << 30)).get_str();
-        else in["lo"] = mpq_class(rq(seq[k - 2]["instant"]["hi"]) - mpq_class(1, 1 << 30)).get_str();
+        if (k + 1 < seq.size() && (k == 0 || pick(2)))
+          in["hi"] = mpq_class(rq(seq[k + 2]["instant"]["lo"]) + mpq_class(1, 1 << 30)).get_str();
+        else
+          in["lo"] = mpq_class(rq(seq[k - 2]["instant"]["hi"]) - mpq_class(1, 1 << 30)).get_str();
         m.what = "bracket " + std::to_string(k / 2) + " widened past its neighbour";
       }
       break;
@@ -240,7 +251,11 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
         m.what = "net coefficient changed";
       } else {
         json& gp = c["gap_proofs"];
-        if (gp.empty()) { c["complete"] = !c["complete"].get<bool>(); m.what = "complete flipped"; break; }
+        if (gp.empty()) {
+          c["complete"] = !c["complete"].get<bool>();
+          m.what = "complete flipped";
+          break;
+        }
         json& x = gp[pick(gp.size())];
         x = x == "natural" ? "monotone" : "natural";
         m.what = "gap proof renamed";
@@ -253,7 +268,11 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
         std::vector<std::size_t> ends;
         for (std::size_t k = 0; k < seq.size(); ++k)
           if (seq[k]["kind"] == "end") ends.push_back(k);
-        if (ends.empty()) { c["answer"]["contacts"].push_back({{"approx", "0.5"}, {"lo", "1/2"}, {"hi", "1/2"}}); m.what = "contact added"; break; }
+        if (ends.empty()) {
+          c["answer"]["contacts"].push_back({{"approx", "0.5"}, {"lo", "1/2"}, {"hi", "1/2"}});
+          m.what = "contact added";
+          break;
+        }
         json& e = seq[ends[pick(ends.size())]]["exclusion"];
         std::string t = e.get<std::string>();
         const std::size_t i = pick(t.size());
@@ -263,7 +282,11 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
         m.may_stay_valid = true;  // a finer tree may still exclude
       } else {
         json& gp = c["gap_points"];
-        if (gp.empty()) { c["answer"]["intervals"] = json::array(); m.what = "intervals emptied"; break; }
+        if (gp.empty()) {
+          c["answer"]["intervals"] = json::array();
+          m.what = "intervals emptied";
+          break;
+        }
         const std::size_t i = pick(gp.size());
         gp.erase(gp.begin() + long(i));
         c["gap_proofs"].erase(c["gap_proofs"].begin() + long(i));
@@ -274,21 +297,25 @@ Mutant mutate(const Base& b, std::mt19937_64& rng) {
     }
   }
   m.text = c.dump();
-  if (c["answer"] != b.cert["answer"] || m.scene_text != b.scene_text || c.value("net", json()) != b.cert.value("net", json()) || c["format"] != b.cert["format"])
+  if (c["answer"] != b.cert["answer"] || m.scene_text != b.scene_text ||
+      c.value("net", json()) != b.cert.value("net", json()) || c["format"] != b.cert["format"])
     m.may_stay_valid = false;
   return m;
 }
 
 // Mutations 9 and 10 of an independent-motion certificate: the net or the reduction, an end's tree or system.
-void mutate_independent_proof(json& c, json& seq, json& ans, const char* list, Mutant& m, std::mt19937_64& rng, int which) {
+void mutate_independent_proof(json& c, json& seq, json& ans, const char* list, Mutant& m, std::mt19937_64& rng,
+                              int which) {
   auto pick = [&](std::size_t n) { return std::size_t(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)); };
   switch (which) {
     case 4: {  // an integer changed by one
       std::vector<json::json_pointer> nums;
-      collect(c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
+      collect(
+          c, json::json_pointer(), [](const json& j) { return is_rational_text(j) || j.is_number_integer(); }, nums);
       const auto p = nums[pick(nums.size())];
       const int d = pick(2) ? 1 : -1;
-      if (c[p].is_number_integer()) c[p] = c[p].get<long long>() + d;
+      if (c[p].is_number_integer())
+        c[p] = c[p].get<long long>() + d;
       else {
         const std::string t = c[p].get<std::string>();
         const std::size_t slash = t.find('/');
@@ -297,15 +324,17 @@ void mutate_independent_proof(json& c, json& seq, json& ans, const char* list, M
         c[p] = n.get_str() + (slash == std::string::npos ? "" : t.substr(slash));
       }
       m.what = "integer changed by one at " + p.to_string();
-      m.may_stay_valid = p.to_string().find("/boxes/") != std::string::npos || p.to_string().find("/chain/") != std::string::npos ||
-                         p.to_string() == "/precision_bits";
+      m.may_stay_valid = p.to_string().find("/boxes/") != std::string::npos ||
+                         p.to_string().find("/chain/") != std::string::npos || p.to_string() == "/precision_bits";
       break;
     }
     case 9: {  // the net, or the bodies held still
       if (pick(4) == 0) {
         json& r = c["reduced"];
-        if (r.empty()) r.push_back(pick(2) ? "s" : "t");
-        else r.erase(r.begin());
+        if (r.empty())
+          r.push_back(pick(2) ? "s" : "t");
+        else
+          r.erase(r.begin());
         m.what = "reduced changed";
       } else {
         json& co = c["net"]["coefficients"];
@@ -319,7 +348,11 @@ void mutate_independent_proof(json& c, json& seq, json& ans, const char* list, M
       std::vector<std::size_t> ends;
       for (std::size_t k = 0; k < seq.size(); ++k)
         if (seq[k]["kind"] == "end") ends.push_back(k);
-      if (ends.empty()) { ans[list] = json::array(); m.what = std::string(list) + " emptied"; break; }
+      if (ends.empty()) {
+        ans[list] = json::array();
+        m.what = std::string(list) + " emptied";
+        break;
+      }
       json& e = seq[ends[pick(ends.size())]];
       if (pick(3) == 0) {
         const std::string names[] = {"fold", "0", "1", "free"};
@@ -358,7 +391,10 @@ Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
       break;
     case 1: {  // an end moved: an item's, an answer instant's or a bracket's
       std::vector<json::json_pointer> ends;
-      collect(c, json::json_pointer(), [](const json& j) { return j.is_object() && j.contains("lo") && j.contains("hi") && j["lo"].is_string(); }, ends);
+      collect(
+          c, json::json_pointer(),
+          [](const json& j) { return j.is_object() && j.contains("lo") && j.contains("hi") && j["lo"].is_string(); },
+          ends);
       const auto p = ends[pick(ends.size())];
       json& in = c[p];
       const char* key = pick(2) ? "lo" : "hi";
@@ -375,7 +411,8 @@ Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
         iv.erase(iv.begin() + long(pick(iv.size())));
         m.what = std::string(list) + ": interval dropped";
       } else {
-        iv.push_back(json::array({{{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}, {{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}}));
+        iv.push_back(
+            json::array({{{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}, {{"approx", "1"}, {"lo", "1"}, {"hi", "1"}}}));
         m.what = std::string(list) + ": interval added";
       }
       break;
@@ -415,9 +452,12 @@ Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
     }
     case 7: {  // an item widened past its neighbour
       const std::size_t k = pick(seq.size());
-      if (k + 1 < seq.size()) seq[k]["hi"] = mpq_class(rq(seq[k + 1]["hi"]) + mpq_class(1, 1 << 30)).get_str();
-      else if (k > 0) seq[k]["lo"] = mpq_class(rq(seq[k - 1]["lo"]) - mpq_class(1, 1 << 30)).get_str();
-      else seq[k]["hi"] = "2";
+      if (k + 1 < seq.size())
+        seq[k]["hi"] = mpq_class(rq(seq[k + 1]["hi"]) + mpq_class(1, 1 << 30)).get_str();
+      else if (k > 0)
+        seq[k]["lo"] = mpq_class(rq(seq[k - 1]["lo"]) - mpq_class(1, 1 << 30)).get_str();
+      else
+        seq[k]["hi"] = "2";
       m.what = std::string(proof) + " item " + std::to_string(k) + " widened past its neighbour";
       break;
     }
@@ -431,9 +471,10 @@ Mutant mutate_independent(const Base& b, std::mt19937_64& rng) {
     default:
       mutate_independent_proof(c, seq, ans, list, m, rng, int(which));
       break;
-}
+  }
   m.text = c.dump();
-  if (c["answer"] != b.cert["answer"] || m.scene_text != b.scene_text || c["net"] != b.cert["net"] || c["reduced"] != b.cert["reduced"])
+  if (c["answer"] != b.cert["answer"] || m.scene_text != b.scene_text || c["net"] != b.cert["net"] ||
+      c["reduced"] != b.cert["reduced"])
     m.may_stay_valid = false;
   return m;
 }
@@ -445,8 +486,8 @@ bool valid(const Mutant& m) {
 void campaign(std::size_t per_kind) {
   std::uint64_t seed = std::random_device{}();
   if (const char* s = std::getenv("ECCD_MUTATION_SEED")) seed = std::strtoull(s, nullptr, 10);
-  std::cout << "mutation campaign (Bezier, independent, cycloidal): seed " << seed << " (ECCD_MUTATION_SEED=" << seed << " repeats it), " << per_kind
-            << " mutations per kind\n";
+  std::cout << "mutation campaign (Bezier, independent, cycloidal): seed " << seed << " (ECCD_MUTATION_SEED=" << seed
+            << " repeats it), " << per_kind << " mutations per kind\n";
   std::mt19937_64 rng(seed);
   const std::vector<Base> kinds = {bezier_base("spheres/spheres-crossing.json", "paper002/example.json"),
                                    independent_base("independent/discs-end.json", "independent/disc-turning.json"),
@@ -464,8 +505,10 @@ void campaign(std::size_t per_kind) {
       const bool v = valid(m);
       INFO("mutation " << i << ": " << m.what);
       if (!m.may_stay_valid) CHECK_FALSE(v);
-      if (!v) ++rejected;
-      else ++neutral_valid;
+      if (!v)
+        ++rejected;
+      else
+        ++neutral_valid;
     }
     std::cout << "  " << b.name << ": " << per_kind << " mutations, " << rejected << " rejected, " << neutral_valid
               << " valid with the answer, scene and net unchanged\n";
@@ -474,8 +517,12 @@ void campaign(std::size_t per_kind) {
 
 }  // namespace
 
-TEST_CASE("Mutation campaign: no answer-changing mutation of a Bezier, independent or cycloidal certificate is VALID", "[mutation][certificate]") {
+TEST_CASE("Mutation campaign: no answer-changing mutation of a Bezier, independent or cycloidal certificate is VALID",
+          "[mutation][certificate]") {
   campaign(500);
 }
 
-TEST_CASE("Mutation campaign, Bezier, independent and cycloidal, long: 10^5 mutations per kind", "[.long][mutation-long]") { campaign(100000); }
+TEST_CASE("Mutation campaign, Bezier, independent and cycloidal, long: 10^5 mutations per kind",
+          "[.long][mutation-long]") {
+  campaign(100000);
+}

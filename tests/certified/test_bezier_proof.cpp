@@ -169,9 +169,10 @@ TEST_CASE("whenever the Bézier proof decides a generated 3D scene, it agrees wi
 }
 
 TEST_CASE("the Bézier proof decides easy 3D scenes, with proved ends and pieces covering [0, 1]", "[bezier]") {
-  for (const char* rel : {"spheres/spheres-crossing.json", "spheres/spheres-free.json", "spheres/spheres-overlap-end.json",
-                          "generated/3d-euler/3d-deg4-colliding-euler-8020579862790034.json",
-                          "generated/3d-euler/3d-deg4-free-euler-638809522882267.json", "paper002/example.json"}) {
+  for (const char* rel :
+       {"spheres/spheres-crossing.json", "spheres/spheres-free.json", "spheres/spheres-overlap-end.json",
+        "generated/3d-euler/3d-deg4-colliding-euler-8020579862790034.json",
+        "generated/3d-euler/3d-deg4-free-euler-638809522882267.json", "paper002/example.json"}) {
     INFO(rel);
     Scene s = read_scene_file(kCases + rel);
     REQUIRE(s.answer);
@@ -197,7 +198,8 @@ TEST_CASE("the Bézier proof decides easy 3D scenes, with proved ends and pieces
   }
 }
 
-TEST_CASE("paper 002's example (two intervals): first contact stops after the first interval, as exact does", "[bezier]") {
+TEST_CASE("paper 002's example (two intervals): first contact stops after the first interval, as exact does",
+          "[bezier]") {
   Scene s = read_scene_file(kCases + "paper002/example.json");
   PreparedPair<4> p = prepare_pair<4>(s);
   BezierProofOptions o;
@@ -211,7 +213,8 @@ TEST_CASE("paper 002's example (two intervals): first contact stops after the fi
 }
 
 TEST_CASE("the Bézier proof does not decide a touch, the ladder still returns exact's answer", "[bezier]") {
-  for (const char* rel : {"touch3d/touch-and-separate.json", "generated/3d-euler/3d-deg4-touch-euler-2609545266629497.json"}) {
+  for (const char* rel :
+       {"touch3d/touch-and-separate.json", "generated/3d-euler/3d-deg4-touch-euler-2609545266629497.json"}) {
     INFO(rel);
     Scene s = read_scene_file(kCases + rel);
     REQUIRE(s.answer);
@@ -228,7 +231,8 @@ TEST_CASE("the Bézier proof does not decide a touch, the ladder still returns e
   }
 }
 
-TEST_CASE("the Bézier rung keeps its budget B_Z, the caller's deadline still ends a 3D certified run", "[bezier][cost]") {
+TEST_CASE("the Bézier rung keeps its budget B_Z, the caller's deadline still ends a 3D certified run",
+          "[bezier][cost]") {
   Scene s = read_scene_file(kCases + "spheres/spheres-crossing.json");
   REQUIRE(s.answer);
   PreparedPair<4> p = prepare_pair<4>(s);

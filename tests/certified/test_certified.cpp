@@ -34,7 +34,8 @@ Answer answer_of(const nlohmann::json& r) {
 TEST_CASE("Interval operations enclose the exact rational results", "[certified][interval]") {
   SeededRng rng{20261121};
   for (int k = 0; k < 2000; ++k) {
-    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)), b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
+    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)),
+             b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
     Interval A = interval_of(a), B = interval_of(b);
     INFO(a << " " << b);
     REQUIRE(contains(A, a));
@@ -56,7 +57,8 @@ TEST_CASE("Interval operations enclose the exact rational results", "[certified]
 TEST_CASE("MPFI intervals enclose the exact rational results and carry their precision", "[certified][interval]") {
   SeededRng rng{20261122};
   for (int k = 0; k < 500; ++k) {
-    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)), b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
+    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)),
+             b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
     MpfiInterval A(a, 80), B(b, 200);
     INFO(a << " " << b);
     REQUIRE(contains(A, a));
@@ -78,10 +80,12 @@ TEST_CASE("MPFI intervals enclose the exact rational results and carry their pre
     }
     CHECK(contains(acc, exact));
   }
-  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(Rational(1, 3), 300) - MpfiInterval(Rational(1, 3), 300)) == Sign::uncertain);
+  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(Rational(1, 3), 300) - MpfiInterval(Rational(1, 3), 300)) ==
+        Sign::uncertain);
   CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(0)) == Sign::zero);
   CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(Rational(-1, 7), 60)) == Sign::negative);
-  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(1) / (MpfiInterval(Rational(1, 3), 60) - MpfiInterval(Rational(1, 3), 60))) == Sign::uncertain);
+  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(1) / (MpfiInterval(Rational(1, 3), 60) -
+                                                             MpfiInterval(Rational(1, 3), 60))) == Sign::uncertain);
   CHECK(exact_point(MpfiInterval(Rational(3, 8), 60)) == Rational(3, 8));
   CHECK(!exact_point(MpfiInterval(Rational(1, 3), 60)));
 }
@@ -97,14 +101,16 @@ TEST_CASE("certified arithmetic names its ladder of MPFI rungs", "[certified]") 
   CHECK_THROWS_AS(parse_arithmetic("certified:abc"), std::invalid_argument);
 }
 
-TEST_CASE("a scene that intervals of doubles cannot decide is decided by the MPFI rung, with the exact answer", "[certified]") {
+TEST_CASE("a scene that intervals of doubles cannot decide is decided by the MPFI rung, with the exact answer",
+          "[certified]") {
   // 2D degree-4 colliding scene whose Δ is too ill-conditioned for intervals
   // of doubles near t = 0.8 (found by `eccd regress cases --arith certified`).
   // The MPFI rung decides it when its budget allows (issue 18: by default all
   // MPFI rungs together get at most the interval rung's time, which is far
   // less than this rung needs, so `--arith certified` goes on to exact:
   // tests/certified/test_certified_cost.cpp).
-  Scene s = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/generated/2d/2d-deg4-colliding-kinematic-572211152701880.json");
+  Scene s = read_scene_file(std::string(ECCD_SOURCE_DIR) +
+                            "/cases/generated/2d/2d-deg4-colliding-kinematic-572211152701880.json");
   LadderBudget wide;
   wide.mpfi_factor = 1e6;
   Solution sol = run_certified<3>(prepare_pair<3>(s), {256}, Variant::answer, false, wide);
@@ -125,7 +131,9 @@ TEST_CASE("a scene that intervals of doubles cannot decide is decided by the MPF
   CHECK(regress_differences(*s.answer, answer_of(e)).empty());
 }
 
-TEST_CASE("certified mode gives the stored exact answers on the 2D corpus and decides most non-touch scenes in intervals", "[certified]") {
+TEST_CASE(
+    "certified mode gives the stored exact answers on the 2D corpus and decides most non-touch scenes in intervals",
+    "[certified]") {
   SolveOptions opt;
   opt.arith = parse_arithmetic("certified");
   int in_intervals = 0, non_touch = 0, touch_escalated = 0, touch = 0;
@@ -138,21 +146,29 @@ TEST_CASE("certified mode gives the stored exact answers on the 2D corpus and de
     CHECK(regress_differences(*s.answer, answer_of(r)).empty());
     bool is_touch = s.note.find("family=touch") != std::string::npos;
     bool esc = r["escalated"].get<bool>();
-    if (is_touch) { ++touch; touch_escalated += esc; }
-    else { ++non_touch; in_intervals += !esc; }
+    if (is_touch) {
+      ++touch;
+      touch_escalated += esc;
+    } else {
+      ++non_touch;
+      in_intervals += !esc;
+    }
     if (!esc) {  // decided in intervals: every instant of the answer has a proper bracket
       for (const auto& iv : r["intervals"])
         for (const auto& end : iv) CHECK(end["lo"].is_string());
     }
   }
-  std::printf("certified 2D corpus: %d of %d non-touch scenes decided in interval arithmetic; %d of %d touch scenes escalated\n",
-              in_intervals, non_touch, touch_escalated, touch);
+  std::printf(
+      "certified 2D corpus: %d of %d non-touch scenes decided in interval arithmetic; %d of %d touch scenes "
+      "escalated\n",
+      in_intervals, non_touch, touch_escalated, touch);
   // A touch-and-separate instant is a double root of Δ: interval isolation cannot prove it, so it must escalate.
   CHECK(touch_escalated == touch);
   CHECK(in_intervals * 2 > non_touch);
 }
 
-TEST_CASE("certified mode on paper 002's example keeps both intervals, decided by the Bézier proof in intervals", "[certified]") {
+TEST_CASE("certified mode on paper 002's example keeps both intervals, decided by the Bézier proof in intervals",
+          "[certified]") {
   // The projection (degree 72 and more) is too wide in intervals of doubles and used to escalate to exact;
   // the Bézier rung (certified/bezier_proof.hpp) proves the four ends without it.
   SolveOptions opt;

@@ -78,7 +78,8 @@ void check_accounting(const Solution& s, const LadderBudget& b = {}) {
     CHECK(e.budget_ms > 0);
     CHECK(e.budget_ms <= b.mpfi_factor * first.spent_ms - mpfi_spent + 1e-9);
     mpfi_spent += e.spent_ms;
-    stop = e.reason.find("budget exhausted") != std::string::npos || e.reason.find("not converging") != std::string::npos;
+    stop =
+        e.reason.find("budget exhausted") != std::string::npos || e.reason.find("not converging") != std::string::npos;
   }
   CHECK((s.decided_in == "exact" || s.decided_in.rfind("mpfi:", 0) == 0));
   for (const Escalation& e : s.escalations) CHECK(e.rung != s.decided_in);  // the deciding rung did not give up
@@ -86,8 +87,9 @@ void check_accounting(const Solution& s, const LadderBudget& b = {}) {
 
 }  // namespace
 
-TEST_CASE("the short-overlap scene that ran for ten minutes is answered as exact answers it, within the ladder's budgets",
-          "[certified][cost]") {
+TEST_CASE(
+    "the short-overlap scene that ran for ten minutes is answered as exact answers it, within the ladder's budgets",
+    "[certified][cost]") {
   // Issue 18: "a 3D degree-2 Euler pair with a short overlap (depth about 1e-9,
   // an interval about 1e-5 long) — `--arith certified` was still running after
   // 10 minutes". The interval rung looped in the cell sampling: two root
@@ -137,7 +139,8 @@ TEST_CASE("a rung that runs out of its budget sends the ladder straight to exact
   CHECK(regress_differences(*s.answer, d.answer).empty());
 }
 
-TEST_CASE("the MPFI rungs share a budget of f times the interval rung's time, and f = 0 skips them", "[certified][cost]") {
+TEST_CASE("the MPFI rungs share a budget of f times the interval rung's time, and f = 0 skips them",
+          "[certified][cost]") {
   // A 2D degree-4 scene whose Δ is too ill-conditioned for intervals of
   // doubles near t = 0.8 (tests/certified/test_certified.cpp): the interval
   // rung gives up on precision, and the MPFI rung is tried.
@@ -162,15 +165,18 @@ TEST_CASE("the MPFI rungs share a budget of f times the interval rung's time, an
   check_accounting(w, wide);
 }
 
-TEST_CASE("the caller's deadline still ends a certified run (no rung turns it into an escalation)", "[certified][cost]") {
+TEST_CASE("the caller's deadline still ends a certified run (no rung turns it into an escalation)",
+          "[certified][cost]") {
   Scene s = read_scene_file(kCases + "paper003/example2.json");
   PreparedPair<3> p = prepare_pair<3>(s);
   ScopedDeadline caller(1e-9);
   CHECK_THROWS_AS(run_certified<3>(p, {256}, Variant::answer, false), BudgetExhausted);
 }
 
-TEST_CASE("certified equals exact on a sample of short overlaps, near misses and grazes (2D and 3D, degrees 1-4), "
-          "within the ladder's budgets", "[certified][cost]") {
+TEST_CASE(
+    "certified equals exact on a sample of short overlaps, near misses and grazes (2D and 3D, degrees 1-4), "
+    "within the ladder's budgets",
+    "[certified][cost]") {
   // The generator's families (compare/scene_generator.hpp): near-miss (gap
   // 10^-e at t0, never colliding; degrees 2..), overlap (linear translations,
   // depth 10^-e) and graze (touch at t0 only); e = 3, 6, 9, 12.
@@ -217,5 +223,6 @@ TEST_CASE("certified equals exact on a sample of short overlaps, near misses and
     check_accounting(c);
     ++decided_in[c.decided_in];
   }
-  for (const auto& [rung, n] : decided_in) std::printf("certified cost sample: %d scene(s) decided in %s\n", n, rung.c_str());
+  for (const auto& [rung, n] : decided_in)
+    std::printf("certified cost sample: %d scene(s) decided in %s\n", n, rung.c_str());
 }

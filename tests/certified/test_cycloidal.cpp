@@ -78,8 +78,10 @@ TEST_CASE("003 Example 1: double, mpfr:128 and certified reproduce the paper's r
   }
 }
 
-TEST_CASE("003 Example 1, certified: proved brackets, containing the paper's printed values as printed, and the floating "
-          "approximations", "[cycloidal][certified]") {
+TEST_CASE(
+    "003 Example 1, certified: proved brackets, containing the paper's printed values as printed, and the floating "
+    "approximations",
+    "[cycloidal][certified]") {
   const Scene s = read_scene(kExample1);
   Solution c = solve_in(s, Arithmetic::certified());
   REQUIRE(c.certified);
@@ -121,7 +123,7 @@ TEST_CASE("cycloidal: a true touch (a double root of Δ) is never claimed, it is
   for (Arithmetic a : {Arithmetic::double_precision(), Arithmetic::mpfr(128), Arithmetic::certified()}) {
     INFO(a.name());
     Solution r = solve_in(s, a);
-    CHECK(r.answer.contacts.empty());   // no claimed touch
+    CHECK(r.answer.contacts.empty());  // no claimed touch
     CHECK(!r.certified);
     REQUIRE(r.answer.undecided.size() >= 1);
     bool near_half = false;
@@ -133,7 +135,8 @@ TEST_CASE("cycloidal: a true touch (a double root of Δ) is never claimed, it is
   }
 }
 
-TEST_CASE("cycloidal: a touch at t = 0 leaves t = 0 undecided, and the rest of [0, 1] is decided", "[cycloidal][certified]") {
+TEST_CASE("cycloidal: a touch at t = 0 leaves t = 0 undecided, and the rest of [0, 1] is decided",
+          "[cycloidal][certified]") {
   // As above with A at (2t, 3): touching at t = 0, separate after.
   const std::string text = R"({"format": "ellipse-ccd-scene/1", "name": "touch0", "dim": 2,
     "a": {"shape": {"semi_axes": ["2", "1"]},
@@ -162,7 +165,8 @@ TEST_CASE("cycloidal: exact arithmetic refuses, pointing to what solves it", "[c
   }
 }
 
-TEST_CASE("cycloidal: status_at agrees with the cells of 003 Example 1 in double, mpfr:128 and certified", "[cycloidal][api]") {
+TEST_CASE("cycloidal: status_at agrees with the cells of 003 Example 1 in double, mpfr:128 and certified",
+          "[cycloidal][api]") {
   const Scene s = read_scene(kExample1);
   for (Arithmetic a : {Arithmetic::double_precision(), Arithmetic::mpfr(128), Arithmetic::certified()}) {
     INFO(a.name());

@@ -44,8 +44,10 @@ std::string object(int dim, std::vector<std::string> axes, std::vector<std::stri
   for (int i = 0; i <= dim; ++i) {
     m += i ? ", [" : "[";
     for (int j = 0; j < dim; ++j) m += std::string(j ? ", " : "") + (i == j ? "\"1\"" : "\"0\"");
-    if (i < dim) m += ", [\"" + c0[i] + "\", \"" + d[i] + "\"]]";
-    else m += ", \"1\"]";
+    if (i < dim)
+      m += ", [\"" + c0[i] + "\", \"" + d[i] + "\"]]";
+    else
+      m += ", \"1\"]";
   }
   return R"({"shape": {"semi_axes": )" + a + R"(]}, "motion": {"type": "matrix", "m": )" + m + "]}}";
 }
@@ -97,7 +99,8 @@ void check_end(const Instant& i, const End& e, bool proved) {
   }
 }
 
-void check_intervals(const std::vector<std::pair<Instant, Instant>>& got, const std::vector<std::pair<End, End>>& want, bool proved) {
+void check_intervals(const std::vector<std::pair<Instant, Instant>>& got, const std::vector<std::pair<End, End>>& want,
+                     bool proved) {
   REQUIRE(got.size() == want.size());
   for (std::size_t k = 0; k < got.size(); ++k) {
     check_end(got[k].first, want[k].first, proved);
@@ -116,7 +119,8 @@ void check_kind(int dim, const Kind& k) {
     CHECK(s.dim == dim);
     CHECK(s.answer.independent);
     const bool proved = std::string(arith) != "double";
-    if (proved) CHECK(s.answer.undecided.empty());
+    if (proved)
+      CHECK(s.answer.undecided.empty());
     else  // double may leave an end located to within a few 2^-34 (said so), never more
       for (const auto& r : s.undecided_reasons) CHECK(r.find("is only located in this range") != std::string::npos);
     CHECK(s.answer.collides == !k.s.empty());
@@ -129,14 +133,20 @@ void check_kind(int dim, const Kind& k) {
 // dim-free descriptions: objects take their dim when the scene is made
 struct Maker {
   int dim;
-  std::string disc(const std::string& r, std::vector<std::string> c0, std::vector<std::string> d) const { return object(dim, {r, r}, c0, d); }
-  std::string ellipse(std::vector<std::string> ax, std::vector<std::string> c0, std::vector<std::string> d) const { return object(dim, ax, c0, d); }
-  // a disc (ball) of radius r at the origin turning about z by the rational rotation (1 - x^2, 2x) / (1 + x^2), 0 to 90 degrees
+  std::string disc(const std::string& r, std::vector<std::string> c0, std::vector<std::string> d) const {
+    return object(dim, {r, r}, c0, d);
+  }
+  std::string ellipse(std::vector<std::string> ax, std::vector<std::string> c0, std::vector<std::string> d) const {
+    return object(dim, ax, c0, d);
+  }
+  // a disc (ball) of radius r at the origin turning about z by the rational rotation (1 - x^2, 2x) / (1 + x^2), 0 to 90
+  // degrees
   std::string turning_disc(const std::string& r) const {
     const std::string w = R"(["1", "0", "1"])", a = R"(["1", "0", "-1"])";
-    const std::string m = dim == 2 ? "[[" + a + R"(, ["0", "-2"], "0"], [["0", "2"], )" + a + R"(, "0"], ["0", "0", )" + w + "]]"
-                                   : "[[" + a + R"(, ["0", "-2"], "0", "0"], [["0", "2"], )" + a + R"(, "0", "0"], ["0", "0", )" + w +
-                                         R"(, "0"], ["0", "0", "0", )" + w + "]]";
+    const std::string m =
+        dim == 2 ? "[[" + a + R"(, ["0", "-2"], "0"], [["0", "2"], )" + a + R"(, "0"], ["0", "0", )" + w + "]]"
+                 : "[[" + a + R"(, ["0", "-2"], "0", "0"], [["0", "2"], )" + a + R"(, "0", "0"], ["0", "0", )" + w +
+                       R"(, "0"], ["0", "0", "0", )" + w + "]]";
     std::string axes = "[\"" + r + "\", \"" + r + "\"" + (dim == 3 ? ", \"" + r + "\"" : std::string("")) + "]";
     return R"({"shape": {"semi_axes": )" + axes + R"(}, "motion": {"type": "matrix", "m": )" + m + "}}";
   }
@@ -146,43 +156,60 @@ std::vector<Kind> kinds(const Maker& m) {
   const Rational one(1);
   return {
       // R = 1; c_A(s) = (2, -3 + 6s), c_B(t) = (6t - 1, 0): |6s - 3| <= 1 and |6t - 3| <= 1
-      {"crossing", m.disc("1/2", {"2", "-3"}, {"0", "6"}), m.disc("1/2", {"-1", "0"}, {"6", "0"}),
+      {"crossing",
+       m.disc("1/2", {"2", "-3"}, {"0", "6"}),
+       m.disc("1/2", {"-1", "0"}, {"6", "0"}),
        {{at(Rational(1, 3)), at(Rational(2, 3))}},
        {{at(Rational(1, 3)), at(Rational(2, 3))}}},
       // parallel paths 3 apart, R = 1: never
       {"parallel, apart", m.disc("1/2", {"-3", "0"}, {"6", "0"}), m.disc("1/2", {"-3", "3"}, {"6", "0"}), {}, {}},
       // parallel lanes 1/2 apart, R = 1: every s meets some t and back
-      {"parallel lanes", m.disc("1/2", {"-3", "0"}, {"6", "0"}), m.disc("1/2", {"-3", "1/2"}, {"6", "0"}),
+      {"parallel lanes",
+       m.disc("1/2", {"-3", "0"}, {"6", "0"}),
+       m.disc("1/2", {"-3", "1/2"}, {"6", "0"}),
        {{at(Rational(0)), at(one)}},
        {{at(Rational(0)), at(one)}}},
       // only near the ends: c_A(s) = (3s, 0), c_B(t) = (7/2, 3t), R = 1: 7/2 - 3s <= 1, s >= 5/6;
       // (1/2)^2 + (3t)^2 <= 1, 12 t^2 - 1 <= 0, t <= sqrt(3)/6
-      {"meeting only near the ends", m.disc("1/2", {"0", "0"}, {"3", "0"}), m.disc("1/2", {"7/2", "0"}, {"0", "3"}),
+      {"meeting only near the ends",
+       m.disc("1/2", {"0", "0"}, {"3", "0"}),
+       m.disc("1/2", {"7/2", "0"}, {"0", "3"}),
        {{at(Rational(5, 6)), at(one)}},
        {{at(Rational(0)), root({-1, 0, 12}, Rational(1, 4), Rational(3, 10))}}},
       // partial overlap of collinear paths: c_A(s) = (4s, 0), c_B(t) = (2 + 4t, 0), R = 1/3:
       // 4s >= 2 - 1/3, s >= 5/12; 2 + 4t <= 4 + 1/3, t <= 7/12
-      {"partial overlap of paths", m.disc("1/6", {"0", "0"}, {"4", "0"}), m.disc("1/6", {"2", "0"}, {"4", "0"}),
+      {"partial overlap of paths",
+       m.disc("1/6", {"0", "0"}, {"4", "0"}),
+       m.disc("1/6", {"2", "0"}, {"4", "0"}),
        {{at(Rational(5, 12)), at(one)}},
        {{at(Rational(0)), at(Rational(7, 12))}}},
       // collinear lanes, opposite directions: c_A(s) = (4s, 0), c_B(t) = (5 - 4t, 0), R = 1/3:
       // 4s >= 1 - 1/3, s >= 1/6; 5 - 4t <= 4 + 1/3, t >= 1/6
-      {"collinear lanes", m.disc("1/6", {"0", "0"}, {"4", "0"}), m.disc("1/6", {"5", "0"}, {"-4", "0"}),
+      {"collinear lanes",
+       m.disc("1/6", {"0", "0"}, {"4", "0"}),
+       m.disc("1/6", {"5", "0"}, {"-4", "0"}),
        {{at(Rational(1, 6)), at(one)}},
        {{at(Rational(1, 6)), at(one)}}},
       // a static body: c_A(s) = (6s - 3, 1/2), B at the origin, R = 1: (6s - 3)^2 <= 3/4, 48 s^2 - 48 s + 11 <= 0
-      {"a static disc", m.disc("1/2", {"-3", "1/2"}, {"6", "0"}), m.disc("1/2", {"0", "0"}, {"0", "0"}),
+      {"a static disc",
+       m.disc("1/2", {"-3", "1/2"}, {"6", "0"}),
+       m.disc("1/2", {"0", "0"}, {"0", "0"}),
        {{root({11, -48, 48}, Rational(1, 3), Rational(1, 2)), root({11, -48, 48}, Rational(1, 2), Rational(2, 3))}},
        {{at(Rational(0)), at(one)}}},
       // a static ellipse (2, 1) and a disc r = 1/2 along its minor axis: c_A(s) = (0, 9s - 5), |9s - 5| <= 3/2
-      {"a static ellipse", m.disc("1/2", {"0", "-5"}, {"0", "9"}), m.ellipse({"2", "1"}, {"0", "0"}, {"0", "0"}),
+      {"a static ellipse",
+       m.disc("1/2", {"0", "-5"}, {"0", "9"}),
+       m.ellipse({"2", "1"}, {"0", "0"}, {"0", "0"}),
        {{at(Rational(7, 18)), at(Rational(13, 18))}},
        {{at(Rational(0)), at(one)}}},
       // a body turning in place (it does not move as a set): a disc r = 1 turning about its centre, the origin;
       // c_B(t) = (6t - 3, 1), R = 3/2: (6t - 3)^2 + 1 <= 9/4, 144 t^2 - 144 t + 31 <= 0; every s alike
-      {"a body turning in place", m.turning_disc("1"), m.disc("1/2", {"-3", "1"}, {"6", "0"}),
+      {"a body turning in place",
+       m.turning_disc("1"),
+       m.disc("1/2", {"-3", "1"}, {"6", "0"}),
        {{at(Rational(0)), at(one)}},
-       {{root({31, -144, 144}, Rational(1, 4), Rational(1, 2)), root({31, -144, 144}, Rational(1, 2), Rational(3, 4))}}},
+       {{root({31, -144, 144}, Rational(1, 4), Rational(1, 2)),
+         root({31, -144, 144}, Rational(1, 2), Rational(3, 4))}}},
   };
 }
 
@@ -203,16 +230,19 @@ TEST_CASE("independent kinds in 3D: exact, certified and double against the anal
 #include "number/double_traits.hpp"
 #include "number/running_error.hpp"
 
-TEST_CASE("as published and guarded: plain double and Bounded<double> give the 2D crossing's ends", "[independent][kinds]") {
+TEST_CASE("as published and guarded: plain double and Bounded<double> give the 2D crossing's ends",
+          "[independent][kinds]") {
   // the floating pipeline is one template: plain T (as published) and Bounded<T> (guarded) on the same F
   const Maker m{2};
-  Scene sc = scene_from_text(scene(2, m.disc("1/2", {"2", "-3"}, {"0", "6"}), m.disc("1/2", {"-1", "0"}, {"6", "0"})), "crossing");
+  Scene sc = scene_from_text(scene(2, m.disc("1/2", {"2", "-3"}, {"0", "6"}), m.disc("1/2", {"-1", "0"}, {"6", "0"})),
+                             "crossing");
   sc.independent = false;  // prepare_pair is the shared-parameter preparation; F takes A's parameter as s, B's as t
   const PreparedPair<3> p = prepare_pair<3>(sc);
-  const IndependentResult plain = ccd_independent(independent_ellipsoid_function<double, 3>(to_arithmetic_bernstein<double, 3>(p, 1.0)), 1.0);
+  const IndependentResult plain =
+      ccd_independent(independent_ellipsoid_function<double, 3>(to_arithmetic_bernstein<double, 3>(p, 1.0)), 1.0);
   const Bounded<double> one(1.0, 0);
-  const IndependentResult guarded =
-      ccd_independent(independent_ellipsoid_function<Bounded<double>, 3>(to_arithmetic_bernstein<Bounded<double>, 3>(p, one)), one);
+  const IndependentResult guarded = ccd_independent(
+      independent_ellipsoid_function<Bounded<double>, 3>(to_arithmetic_bernstein<Bounded<double>, 3>(p, one)), one);
   for (const IndependentResult* r : {&plain, &guarded}) {
     CHECK(r->answer.collides);
     CHECK(r->answer.undecided.empty());
@@ -225,12 +255,17 @@ TEST_CASE("as published and guarded: plain double and Bounded<double> give the 2
   }
 }
 
-TEST_CASE("F(u, s, t) of ellipses has the ellipsoids' sign convention: F(0) = det A < 0, F(1) = det B < 0, > 0 where apart", "[independent][kinds]") {
-  // discs r = 1/2 at (2, -3 + 6s) and (6t - 1, 0): apart at s = t = 0 (distance > 1), overlapping at s = t = 1/2 (same centre)
+TEST_CASE(
+    "F(u, s, t) of ellipses has the ellipsoids' sign convention: F(0) = det A < 0, F(1) = det B < 0, > 0 where apart",
+    "[independent][kinds]") {
+  // discs r = 1/2 at (2, -3 + 6s) and (6t - 1, 0): apart at s = t = 0 (distance > 1), overlapping at s = t = 1/2 (same
+  // centre)
   const Maker m{2};
-  Scene sc = scene_from_text(scene(2, m.disc("1/2", {"2", "-3"}, {"0", "6"}), m.disc("1/2", {"-1", "0"}, {"6", "0"})), "crossing");
+  Scene sc = scene_from_text(scene(2, m.disc("1/2", {"2", "-3"}, {"0", "6"}), m.disc("1/2", {"-1", "0"}, {"6", "0"})),
+                             "crossing");
   sc.independent = false;
-  const TriBern<Rational> F = independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)));
+  const TriBern<Rational> F = independent_ellipsoid_function<Rational, 3>(
+      to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)));
   const Rational h(1, 2), z(0), o(1);
   CHECK(sgn(F(z, h, h)) < 0);
   CHECK(sgn(F(o, h, h)) < 0);
@@ -238,15 +273,19 @@ TEST_CASE("F(u, s, t) of ellipses has the ellipsoids' sign convention: F(0) = de
   for (int k = 1; k < 8; ++k) CHECK(sgn(F(Rational(k, 8), h, h)) < 0);  // the same disc twice: overlap, F < 0 on (0, 1)
 }
 
-TEST_CASE("hold_still: a disc or ball turning about its centre is held at s = 0, a moving or turning ellipse is not", "[independent][kinds]") {
+TEST_CASE("hold_still: a disc or ball turning about its centre is held at s = 0, a moving or turning ellipse is not",
+          "[independent][kinds]") {
   for (const int dim : {2, 3}) {
     INFO(dim << "D");
     const Maker m{dim};
     auto net = [&](const std::string& a, std::array<bool, 2>& still) {
       Scene sc = scene_from_text(scene(dim, a, m.disc("1/2", {"-3", "1"}, {"6", "0"})), "still");
       sc.independent = false;
-      if (dim == 2) return independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)), &still);
-      return independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(sc), Rational(1)), &still);
+      if (dim == 2)
+        return independent_ellipsoid_function<Rational, 3>(
+            to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)), &still);
+      return independent_ellipsoid_function<Rational, 4>(
+          to_arithmetic_bernstein<Rational, 4>(prepare_pair<4>(sc), Rational(1)), &still);
     };
     std::array<bool, 2> still{};
     // turning in place: degree 0 in s, and F held at s = 0 equals the static disc's F exactly
@@ -272,7 +311,8 @@ TEST_CASE("hold_still: a disc or ball turning about its centre is held at s = 0,
   std::array<bool, 2> still{};
   Scene sc = read_scene(std::string(ECCD_SOURCE_DIR) + "/cases/independent/ellipses-turning.json");
   sc.independent = false;
-  const TriBern<Rational> F = independent_ellipsoid_function<Rational, 3>(to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)), &still);
+  const TriBern<Rational> F = independent_ellipsoid_function<Rational, 3>(
+      to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)), &still);
   CHECK_FALSE(still[0]);
   CHECK(F.n[1] > 0);
 }

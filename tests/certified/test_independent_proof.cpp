@@ -22,7 +22,9 @@
 using namespace eccd;
 
 namespace {
-std::string indep(const std::string& name) { return std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json"; }
+std::string indep(const std::string& name) {
+  return std::string(ECCD_SOURCE_DIR) + "/cases/independent/" + name + ".json";
+}
 
 SolveOptions certified() {
   SolveOptions o;
@@ -46,7 +48,8 @@ void check_holds(const Instant& i, const Rational& x) {
 }
 }  // namespace
 
-TEST_CASE("proved route: the sphere cases' brackets hold the analytic ends and overlap the stored exact ones", "[independent]") {
+TEST_CASE("proved route: the sphere cases' brackets hold the analytic ends and overlap the stored exact ones",
+          "[independent]") {
   {
     const Scene sc = read_scene(indep("spheres-cross"));
     const Solution s = solve(sc, certified());
@@ -69,7 +72,7 @@ TEST_CASE("proved route: the sphere cases' brackets hold the analytic ends and o
     const Solution s = solve(sc, certified());
     CHECK(s.certified);
     CHECK(s.answer.undecided.empty());
-    REQUIRE(s.proofs.size() == 3);  // t = 0 is the end of [0, 1]: exact, nothing to prove
+    REQUIRE(s.proofs.size() == 3);                             // t = 0 is the end of [0, 1]: exact, nothing to prove
     CHECK(s.proofs[0].find("on t = 0") != std::string::npos);  // A's ends meet B where B's path starts
     REQUIRE(s.answer.s_intervals.size() == 1);
     REQUIRE(s.answer.t_intervals.size() == 1);
@@ -77,7 +80,8 @@ TEST_CASE("proved route: the sphere cases' brackets hold the analytic ends and o
     check_holds(s.answer.s_intervals[0].second, Rational(2, 3));
     CHECK(*s.answer.t_intervals[0].first.lo == 0);
     CHECK(*s.answer.t_intervals[0].first.hi == 0);
-    check_root_bracket(s.answer.t_intervals[0].second, RPoly(std::vector<Rational>{-1, 4, 16}), Rational(0), Rational(1, 2));
+    check_root_bracket(s.answer.t_intervals[0].second, RPoly(std::vector<Rational>{-1, 4, 16}), Rational(0),
+                       Rational(1, 2));
     REQUIRE(sc.answer);
     CHECK(regress_differences(*sc.answer, s.answer).empty());
   }
@@ -116,8 +120,8 @@ TEST_CASE("proved route: a touch is never claimed, it is undecided with where an
   bool said = false;
   for (const auto& w : s.undecided_reasons) {
     // the touch said as such, or the run's work bound said where it stopped (a touch costs the localisation most)
-    if (w.rfind("s in [", 0) != 0 ||
-        (w.find("a touch cannot be proved by enclosure") == std::string::npos && w.find("not examined, the run stopped") == std::string::npos))
+    if (w.rfind("s in [", 0) != 0 || (w.find("a touch cannot be proved by enclosure") == std::string::npos &&
+                                      w.find("not examined, the run stopped") == std::string::npos))
       continue;
     // the range "s in [a, b]" holds the touch s = 1/2
     const double a = std::stod(w.substr(6)), b = std::stod(w.substr(w.find(", ") + 2));

@@ -63,11 +63,21 @@ TEST_CASE("interval_of is MPFR's tightest enclosure on every path", "[certified]
   for (int trial = 0; trial < 20000; ++trial) {
     mpq_class q;
     switch (trial % 5) {
-      case 0: q = mpq_class(random_int(rng, big(rng))); break;                                 // integers, up to past 2^1024
-      case 1: q = mpq_class(random_int(rng, bits(rng)), random_int(rng, bits(rng)) + 1); break;  // around the 53-bit edge
-      case 2: q = mpq_class(random_int(rng, small(rng)), random_int(rng, small(rng) * 9) + 1); break;  // up to subnormal
-      case 3: q = mpq_class(random_int(rng, bits(rng)), mpz_class(1) << bits(rng)); break;     // dyadics: points
-      default: q = mpq_class(random_int(rng, small(rng)), (mpz_class(1) << (1000 + bits(rng))) + 3); break;  // underflow
+      case 0:
+        q = mpq_class(random_int(rng, big(rng)));
+        break;  // integers, up to past 2^1024
+      case 1:
+        q = mpq_class(random_int(rng, bits(rng)), random_int(rng, bits(rng)) + 1);
+        break;  // around the 53-bit edge
+      case 2:
+        q = mpq_class(random_int(rng, small(rng)), random_int(rng, small(rng) * 9) + 1);
+        break;  // up to subnormal
+      case 3:
+        q = mpq_class(random_int(rng, bits(rng)), mpz_class(1) << bits(rng));
+        break;  // dyadics: points
+      default:
+        q = mpq_class(random_int(rng, small(rng)), (mpz_class(1) << (1000 + bits(rng))) + 3);
+        break;  // underflow
     }
     q.canonicalize();
     if (rng() & 1) q = -q;
@@ -81,8 +91,8 @@ TEST_CASE("interval_of is MPFR's tightest enclosure on every path", "[certified]
   }
   CHECK(points > 4000);
   // The edges of the fast paths, one by one.
-  for (const char* s : {"9007199254740993", "-9007199254740993", "9007199254740992", "1/3", "-1/3", "9007199254740991/9007199254740992",
-                        "1/9007199254740991", "9007199254740993/3", "0", "-5/1"}) {
+  for (const char* s : {"9007199254740993", "-9007199254740993", "9007199254740992", "1/3", "-1/3",
+                        "9007199254740991/9007199254740992", "1/9007199254740991", "9007199254740993/3", "0", "-5/1"}) {
     mpq_class q(s);
     q.canonicalize();
     const auto [lo, hi] = mpfr_enclosure(q);

@@ -33,7 +33,8 @@ RPoly random_poly(std::mt19937_64& rng, int degree, int bits) {
     mpz_class n = 0, d = 1;
     for (int k = 0; k < bits; k += 30) n = (n << 30) + mpz_class(std::to_string(rng() & ((1u << 30) - 1)));
     if (coin(rng) == 0) n = -n;
-    if (coin(rng) == 1) for (int k = 0; k < bits; k += 30) d = (d << 30) + mpz_class(std::to_string(1 + (rng() & 0xffff)));
+    if (coin(rng) == 1)
+      for (int k = 0; k < bits; k += 30) d = (d << 30) + mpz_class(std::to_string(1 + (rng() & 0xffff)));
     x = Rational(n, d);
     x.canonicalize();
   }
@@ -50,9 +51,15 @@ void plain_content(PolyMatrix<Rational, H>& n) {
       if (!e.is_zero()) g = g.is_zero() ? gcd(e, e) : gcd(g, e);
   if (g.degree() > 0)
     for (auto& row : n)
-      for (auto& e : row) { RPoly q, r; divide(e, g, q, r); e = q; }
+      for (auto& e : row) {
+        RPoly q, r;
+        divide(e, g, q, r);
+        e = q;
+      }
   std::vector<Rational*> all;
-  for (auto& row : n) for (auto& e : row) for (auto& c : e.c) all.push_back(&c);
+  for (auto& row : n)
+    for (auto& e : row)
+      for (auto& c : e.c) all.push_back(&c);
   make_primitive(all);
 }
 template <int H>
@@ -79,7 +86,8 @@ PreparedPair<H> plain_prepare(const Scene& s) {
     mpz_class two = 1;
     two <<= std::abs(k);
     Rational f = k > 0 ? Rational(1) / Rational(two) : Rational(two);
-    for (auto& row : p.qb) for (auto& x : row) x *= f;
+    for (auto& row : p.qb)
+      for (auto& x : row) x *= f;
   }
   return p;
 }
@@ -107,8 +115,8 @@ TEST_CASE("coprime_mod_p never claims coprime for a common factor", "[certified]
   // The prime itself in a denominator or in the leading numerator: not proved, never a wrong claim.
   const mpz_class p = mpz_class(1) << 61;
   const Rational pr(p - 1);
-  RPoly x({Rational(1), Rational(1) / pr});   // 1 + t/p
-  RPoly y({Rational(2), pr});                 // 2 + p t
+  RPoly x({Rational(1), Rational(1) / pr});  // 1 + t/p
+  RPoly y({Rational(2), pr});                // 2 + p t
   CHECK_FALSE(coprime_mod_p(x, y));
   CHECK_FALSE(coprime_mod_p(y, RPoly({Rational(1), Rational(1)})));
   // Constants: a non-zero constant is coprime to anything non-zero; zero is coprime to nothing.
@@ -157,7 +165,8 @@ TEST_CASE("prepare_pair with the shortcuts equals the plain preparation on cases
   CHECK(checked3 >= 20);
 }
 
-TEST_CASE("rational polynomial products over common denominators are the coefficient-wise products", "[certified][interval-speed]") {
+TEST_CASE("rational polynomial products over common denominators are the coefficient-wise products",
+          "[certified][interval-speed]") {
   std::mt19937_64 rng(2026);
   for (int trial = 0; trial < 400; ++trial) {
     const int bits = trial % 4 == 0 ? 300 : 30;

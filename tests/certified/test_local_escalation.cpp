@@ -73,8 +73,10 @@ void check_projection_sign(const std::string& file, unsigned seed) {
   const std::vector<Poly<Interval>> gi = characteristic_of(to_arithmetic<Interval, H>(p, Interval(0)));
   const std::vector<Poly<Rational>> ge = characteristic_of(to_arithmetic<Rational, H>(p, Rational(1)));
   auto formula = [](const auto& G) {
-    if constexpr (H == 3) return cubic_discriminant(G[3], G[2], G[1], G[0]);
-    else return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]);
+    if constexpr (H == 3)
+      return cubic_discriminant(G[3], G[2], G[1], G[0]);
+    else
+      return quartic_discriminant(G[4], G[3], G[2], G[1], G[0]);
   };
   const auto q = pol.build(gi, formula);
   REQUIRE(bool(q.exact));
@@ -141,7 +143,8 @@ long local_count(const Solution& s, const std::string& kind) {
 }
 }  // namespace
 
-TEST_CASE("a 3D short overlap that left the interval rung on uncertain cell statuses is decided in it locally", "[local]") {
+TEST_CASE("a 3D short overlap that left the interval rung on uncertain cell statuses is decided in it locally",
+          "[local]") {
   // Without the oracle the interval rung leaves the statuses of the cells
   // inside the 1e-5-long overlap (depth 1e-9) uncertain and the scene goes
   // to exact; with it, each of those statuses is decided exactly at its

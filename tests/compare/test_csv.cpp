@@ -31,8 +31,11 @@ TEST_CASE("csv_field quotes a field with a comma, quote or line break and double
 }
 
 TEST_CASE("csv_records reads what csv_line writes, line breaks inside quotes included", "[csv]") {
-  const std::vector<std::vector<std::string>> rows{
-      {"scene", "reason"}, {"a,\"b\"", "time budget: 2 s, then killed"}, {"two\nlines", ""}, {"", "\"quoted\""}, {"last", "x"}};
+  const std::vector<std::vector<std::string>> rows{{"scene", "reason"},
+                                                   {"a,\"b\"", "time budget: 2 s, then killed"},
+                                                   {"two\nlines", ""},
+                                                   {"", "\"quoted\""},
+                                                   {"last", "x"}};
   std::string text;
   for (const auto& r : rows) text += eccd::csv_line(r) + "\n";
   auto recs = eccd::csv_records(text, "t.csv");
@@ -57,7 +60,8 @@ TEST_CASE("csv_records names the file and line of malformed quoting", "[csv]") {
     }
     return std::string("no error");
   };
-  CHECK(message("h\nok\n\"open,never closed\n") == "parts/results.csv: line 3: a quoted field is not closed (truncated?)");
+  CHECK(message("h\nok\n\"open,never closed\n") ==
+        "parts/results.csv: line 3: a quoted field is not closed (truncated?)");
   CHECK(message("h\n\"a\"b,c\n").find("parts/results.csv: line 2: text after the closing quote") == 0);
   CHECK(message("h\na\"b,c\n").find("parts/results.csv: line 2: a quote inside an unquoted field") == 0);
 }
@@ -79,8 +83,8 @@ TEST_CASE("a scene named with commas and quotes goes through eccd report intact"
   write_named_scene(t.path / "scenes" / "s.json", name);
   const std::string out = (t.path / "out").string();
   // the whole report, report_figures.py included (it reads results.csv with the csv module)
-  Run r = run_eccd("report --scenes " + q((t.path / "scenes").string()) + " --cases '' --no-map --mpfr 64 --budget 2 --jobs 1 --out " +
-                       q(out),
+  Run r = run_eccd("report --scenes " + q((t.path / "scenes").string()) +
+                       " --cases '' --no-map --mpfr 64 --budget 2 --jobs 1 --out " + q(out),
                    300);
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -94,8 +98,9 @@ TEST_CASE("a scene named with commas and quotes goes through eccd report intact"
     CHECK(recs[k].fields[0] == name);
   }
   // Python's csv module (the reader of compare/plots/report_figures.py)
-  const std::string py = "import csv, json, sys; r = list(csv.reader(open(sys.argv[1], newline=''))); "
-                         "print(json.dumps({'names': sorted({x[0] for x in r[1:]}), 'widths': sorted({len(x) for x in r})}))";
+  const std::string py =
+      "import csv, json, sys; r = list(csv.reader(open(sys.argv[1], newline=''))); "
+      "print(json.dumps({'names': sorted({x[0] for x in r[1:]}), 'widths': sorted({len(x) for x in r})}))";
   FILE* p = popen(("python3 -c " + q(py) + " " + q(out + "/results.csv")).c_str(), "r");
   REQUIRE(p != nullptr);
   std::string text;
@@ -125,13 +130,15 @@ TEST_CASE("the report step's failure says what failed, matplotlib only when its 
                            " --cases '' --no-map --mpfr 64 --budget 2 --jobs 1 --out " + q((t.path / "out").string());
   SECTION("a script that fails for another reason: its stderr, no word of matplotlib") {
     spit(t.path / "plots" / "report_figures.py",
-         "import sys\nprint('report_figures.py: results.csv line 7: something else is wrong', file=sys.stderr)\nsys.exit(2)\n");
+         "import sys\nprint('report_figures.py: results.csv line 7: something else is wrong', "
+         "file=sys.stderr)\nsys.exit(2)\n");
     Run r = run_eccd(args, 300);
     INFO(r.err);
     CHECK(r.code != 0);
     CHECK(r.err.find("the report step failed") != std::string::npos);
     CHECK(r.err.find("exit status 2") != std::string::npos);
-    CHECK(r.err.find("stderr ends with:\nreport_figures.py: results.csv line 7: something else is wrong") != std::string::npos);
+    CHECK(r.err.find("stderr ends with:\nreport_figures.py: results.csv line 7: something else is wrong") !=
+          std::string::npos);
     CHECK(r.err.find("matplotlib") == std::string::npos);
   }
   SECTION("a script whose import of matplotlib fails") {
@@ -158,9 +165,11 @@ int run_report_figures(const fs::path& dir, std::string& log) {
 }
 }  // namespace
 
-TEST_CASE("report_figures.py reads quoted fields with the csv module and names the line of a broken quote", "[csv][report-figures]") {
+TEST_CASE("report_figures.py reads quoted fields with the csv module and names the line of a broken quote",
+          "[csv][report-figures]") {
   TempDir t;
-  for (const char* f : {"results.csv", "meta.json", "failure_map.csv"}) fs::copy_file(src("tests/data/report/") + f, t.path / f);
+  for (const char* f : {"results.csv", "meta.json", "failure_map.csv"})
+    fs::copy_file(src("tests/data/report/") + f, t.path / f);
   const std::string text = slurp(t.path / "results.csv");
   auto recs = eccd::csv_records(text, "results.csv");
   REQUIRE(recs.size() > 3);

@@ -88,7 +88,8 @@ TEST_CASE("FCL pose: radii, rotation and centre give back the quadric A(t) in do
       for (const FclPose* x : {&p.a, &p.b}) {
         // a proper rotation: R^T R = I, det +1 (FCL's Transform3d needs one)
         const auto& R = x->rotation;
-        const double det = R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) - R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0]) +
+        const double det = R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) -
+                           R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0]) +
                            R[0][2] * (R[1][0] * R[2][1] - R[1][1] * R[2][0]);
         CHECK(det == Approx(1).margin(1e-12));
         for (int i = 0; i < 3; ++i)
@@ -122,10 +123,12 @@ TEST_CASE("fcl/ccd expresses constant shapes translating linearly, nothing else"
   o.dim = 2;
   CHECK(fcl_ccd_inexpressible(scene_from_text(generate_scene(o).doc.dump(), "overlap-2d")).empty());
   // Rotating bodies are refused, with the reason.
-  std::string why = fcl_ccd_inexpressible(shipped("cases/generated/2d/2d-deg2-colliding-kinematic-4575131933740715.json"));
+  std::string why =
+      fcl_ccd_inexpressible(shipped("cases/generated/2d/2d-deg2-colliding-kinematic-4575131933740715.json"));
   CHECK(why.find("not expressible by FCL's translation motion") != std::string::npos);
   CHECK(why.find("(kinematic): ") != std::string::npos);  // names the object and its motion
-  CHECK_FALSE(fcl_ccd_inexpressible(shipped("cases/generated/3d-euler/3d-deg2-colliding-euler-3526122894755803.json")).empty());
+  CHECK_FALSE(
+      fcl_ccd_inexpressible(shipped("cases/generated/3d-euler/3d-deg2-colliding-euler-3526122894755803.json")).empty());
   CHECK_FALSE(fcl_ccd_inexpressible(shipped("cases/paper003/example2.json")).empty());
   // The first-contact view keeps what fcl/ccd claims.
   Answer ex = solve(lin).answer;
@@ -138,9 +141,10 @@ TEST_CASE("fcl/ccd expresses constant shapes translating linearly, nothing else"
 
 TEST_CASE("eccd fcl: a bad option or scene is exit 2, with or without FCL", "[fcl][cli-fcl]") {
   const std::string crossing = q(src("cases/spheres/spheres-crossing.json"));
-  for (const std::string args : {"fcl " + crossing + " --samples 0", "fcl " + crossing + " --ccd 1",
-                                 "fcl " + crossing + " --samples 5 --ccd 5", "fcl " + crossing + " --bogus",
-                                 "fcl " + q(src("tests/data/judge/malformed.json")), std::string("fcl /nonexistent/scene.json")}) {
+  for (const std::string args :
+       {"fcl " + crossing + " --samples 0", "fcl " + crossing + " --ccd 1", "fcl " + crossing + " --samples 5 --ccd 5",
+        "fcl " + crossing + " --bogus", "fcl " + q(src("tests/data/judge/malformed.json")),
+        std::string("fcl /nonexistent/scene.json")}) {
     INFO(args);
     Run r = run_eccd(args);
     CHECK(r.code == 2);
@@ -155,7 +159,8 @@ TEST_CASE("fcl/sample agrees with the exact static test at its samples on clear 
   REQUIRE(fcl_availability().available);
   CHECK(fcl_availability().version == "0.7.0");
   CHECK(fcl_tolerances().find("gjk_tolerance 1e-06") != std::string::npos);
-  const char* cases[] = {"cases/spheres/spheres-crossing.json", "cases/spheres/spheres-free.json",
+  const char* cases[] = {"cases/spheres/spheres-crossing.json",
+                         "cases/spheres/spheres-free.json",
                          "cases/generated/2d/2d-deg2-colliding-kinematic-4575131933740715.json",
                          "cases/generated/2d/2d-deg2-free-kinematic-2054184850131159.json",
                          "cases/generated/3d-euler/3d-deg2-colliding-euler-3526122894755803.json",
@@ -187,7 +192,8 @@ TEST_CASE("fcl/ccd on a linear translation: collides as the exact answer on a cl
   CHECK(a.intervals.empty());
   // its contact time is a sample i/999 at or after the certified first contact, within one step
   if (a.collides) CHECK(std::abs(a.first_contact->value - ex.first_contact->value) <= 1.0 / 999 + 1e-12);
-  CHECK_THROWS_AS(fcl_ccd(shipped("cases/generated/2d/2d-deg2-colliding-kinematic-4575131933740715.json"), 10), std::invalid_argument);
+  CHECK_THROWS_AS(fcl_ccd(shipped("cases/generated/2d/2d-deg2-colliding-kinematic-4575131933740715.json"), 10),
+                  std::invalid_argument);
 }
 
 TEST_CASE("harness: certified and fcl rows, fcl/ccd only where expressible", "[fcl]") {
@@ -255,7 +261,8 @@ TEST_CASE("eccd fcl | eccd judge: the verdict judge computes, and FCL misses a s
   // the answer as judge reads it, judged through the API ...
   Judgement api = judge(read_scene(crossing), answer_from_text(f.out, "fcl.json").answer);
   // ... and through the command line, piped
-  Run p = run_eccd("fcl " + q(crossing) + " --samples 10 | " + exe() + " judge " + q(crossing) + " - --name fcl --json");
+  Run p =
+      run_eccd("fcl " + q(crossing) + " --samples 10 | " + exe() + " judge " + q(crossing) + " - --name fcl --json");
   REQUIRE((p.code == 0 || p.code == 1));
   nlohmann::json v = nlohmann::json::parse(p.out);
   CHECK(v["verdict"] == api.verdict);

@@ -53,8 +53,8 @@ TEST_CASE("fcl gjk_tolerance reaches fcl::collide: a shallow overlap FCL misses 
   REQUIRE(status_at(s, mpq_class(0), Arithmetic::exact()) == Status::overlapping);  // the exact answer
   FclOptions tight;
   tight.gjk_tolerance = 1e-12;
-  CHECK_FALSE(fcl_collides_at(s, 0));     // default tolerance: missed
-  CHECK(fcl_collides_at(s, 0, tight));    // tight: found, as the exact test says
+  CHECK_FALSE(fcl_collides_at(s, 0));   // default tolerance: missed
+  CHECK(fcl_collides_at(s, 0, tight));  // tight: found, as the exact test says
   CHECK_FALSE(fcl_sample(s, 1).collides);
   CHECK(fcl_sample(s, 1, tight).collides);
 }

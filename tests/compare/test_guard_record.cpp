@@ -63,8 +63,9 @@ void check_scene(const Scene& s, Tally& t) {
   SolveOptions ex;
   ex.arith = Arithmetic::exact();
   const Solution exact = solve(s, ex);
-  const std::vector<Basis> bases = s.dim == 2 ? std::vector<Basis>{Basis::power, Basis::bernstein, Basis::scaled_bernstein}
-                                              : std::vector<Basis>{Basis::bernstein, Basis::power};
+  const std::vector<Basis> bases = s.dim == 2
+                                       ? std::vector<Basis>{Basis::power, Basis::bernstein, Basis::scaled_bernstein}
+                                       : std::vector<Basis>{Basis::bernstein, Basis::power};
   for (Basis b : bases)
     for (InputMode m : {InputMode::rounded, InputMode::prepared}) {
       const Solution pub = solve(s, options("double", b, m, Guard::none));
@@ -92,8 +93,10 @@ void check_scene(const Scene& s, Tally& t) {
       const std::string where = s.name + " double/" + to_string(b) + " input " + to_string(m);
       if (pub_wrong) {
         ++t.published_errors;
-        if (grd_undecided) ++t.caught;
-        else if (dg.agrees) ++t.right_anyway;
+        if (grd_undecided)
+          ++t.caught;
+        else if (dg.agrees)
+          ++t.right_anyway;
       } else if (dp.agrees && grd_undecided) {
         ++t.false_alarms;
         if (std::getenv("ECCD_GUARD_VERBOSE")) {
@@ -103,16 +106,17 @@ void check_scene(const Scene& s, Tally& t) {
         }
       }
       // The guard is never confidently wrong, whatever the published face said.
-      if (grd_wrong) t.misses.push_back(where + ": guarded differs: " + diff_text(dg) + " (as published: " +
-                                        (dp.agrees ? "right" : diff_text(dp)) + ")");
+      if (grd_wrong)
+        t.misses.push_back(where + ": guarded differs: " + diff_text(dg) +
+                           " (as published: " + (dp.agrees ? "right" : diff_text(dp)) + ")");
     }
 }
 
 std::uint64_t guard_seed() {
   const char* env = std::getenv("ECCD_GUARD_SEED");
   const std::uint64_t seed = env ? std::stoull(env) : 20261127;
-  std::cout << "[guard-record] seed " << seed << (env ? " (from ECCD_GUARD_SEED)" : " (default; set ECCD_GUARD_SEED to change)")
-            << std::endl;
+  std::cout << "[guard-record] seed " << seed
+            << (env ? " (from ECCD_GUARD_SEED)" : " (default; set ECCD_GUARD_SEED to change)") << std::endl;
   return seed;
 }
 
@@ -130,7 +134,8 @@ TEST_CASE("the guard flags every as-published error on the paper 003 cases", "[g
   const std::string dir = std::string(ECCD_SOURCE_DIR) + "/cases/paper003";
   std::vector<std::string> files;
   for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".json" && e.path().filename().string().rfind("example2", 0) == 0) files.push_back(e.path().string());
+    if (e.path().extension() == ".json" && e.path().filename().string().rfind("example2", 0) == 0)
+      files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
   REQUIRE(files.size() >= 5);
   for (const auto& f : files) check_scene(read_scene_file(f), t);
@@ -199,12 +204,14 @@ TEST_CASE("the guard flags every as-published error on the generated families", 
 }
 
 // A scene the guard once missed: the Bézier method with f set up in power form, rounded input, decided
-// "overlapping" at sample instants of a scene that never collides (tests/data/float/guard-miss-bezier-power-keyframe.json,
-// its note says how it was found). "Overlapping" now needs every control point of F(., t0) surely negative, so the
-// as-published error must be flagged.
-TEST_CASE("the guard flags the as-published error on a 3D keyframe scene, Bezier method with the power-form setup", "[guard-record][guard-miss]") {
+// "overlapping" at sample instants of a scene that never collides
+// (tests/data/float/guard-miss-bezier-power-keyframe.json, its note says how it was found). "Overlapping" now needs
+// every control point of F(., t0) surely negative, so the as-published error must be flagged.
+TEST_CASE("the guard flags the as-published error on a 3D keyframe scene, Bezier method with the power-form setup",
+          "[guard-record][guard-miss]") {
   Tally t;
-  check_scene(read_scene_file(std::string(ECCD_SOURCE_DIR) + "/tests/data/float/guard-miss-bezier-power-keyframe.json"), t);
+  check_scene(read_scene_file(std::string(ECCD_SOURCE_DIR) + "/tests/data/float/guard-miss-bezier-power-keyframe.json"),
+              t);
   report("tests/data/float/guard-miss-bezier-power-keyframe.json", t);
   for (const auto& m : t.misses) UNSCOPED_INFO(m);
   CHECK(t.misses.empty());

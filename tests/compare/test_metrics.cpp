@@ -15,10 +15,11 @@ namespace {
 Poly<mpq_class> qpoly(std::vector<mpq_class> c) { return Poly<mpq_class>(std::move(c)); }
 }  // namespace
 
-TEST_CASE("normwise relative error of one perturbed coefficient is the perturbation over the largest coefficient", "[metrics]") {
+TEST_CASE("normwise relative error of one perturbed coefficient is the perturbation over the largest coefficient",
+          "[metrics]") {
   std::vector<mpq_class> exact{1, -2, 8, 3};
   std::vector<mpq_class> approx = exact;
-  approx[1] += mpq_class(1, 1024);  // one coefficient off by 2^-10
+  approx[1] += mpq_class(1, 1024);                                        // one coefficient off by 2^-10
   CHECK(normwise_relative_error(approx, exact) == std::ldexp(1.0, -13));  // 2^-10 / 8
   CHECK(normwise_relative_error(exact, exact) == 0.0);
   // An all-zero exact list: the absolute error.
@@ -27,7 +28,8 @@ TEST_CASE("normwise relative error of one perturbed coefficient is the perturbat
 
 TEST_CASE("coefficient error of g in power form: one double coefficient perturbed by a known amount", "[metrics]") {
   std::vector<Poly<mpq_class>> g{qpoly({3, 0, -5}), qpoly({1, 2}), qpoly({0, 0, 0, 10})};
-  std::vector<Poly<double>> gd{Poly<double>({3.0, 0.0, -5.0}), Poly<double>({1.0, 2.0}), Poly<double>({0.0, 0.0, 0.0, 10.0})};
+  std::vector<Poly<double>> gd{Poly<double>({3.0, 0.0, -5.0}), Poly<double>({1.0, 2.0}),
+                               Poly<double>({0.0, 0.0, 0.0, 10.0})};
   CHECK(coefficient_error(gd, g) == 0.0);
   gd[1].c[0] = 1.0 + std::ldexp(1.0, -20);
   CHECK(coefficient_error(gd, g) == Approx(std::ldexp(1.0, -20) / 10.0).epsilon(1e-15));
@@ -56,7 +58,8 @@ TEST_CASE("coefficient error in Bernstein form compares after exact degree eleva
 
 // The answer comparison itself: tests/api/test_answer_difference.cpp.
 
-TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first, errors ordered by precision", "[metrics][harness]") {
+TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first, errors ordered by precision",
+          "[metrics][harness]") {
   GeneratorSpec sp;
   sp.dim = 2;
   sp.degree = 3;
@@ -67,7 +70,7 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
   HarnessOptions o;
   o.mpfr_bits = {64, 256};
   o.inputs = {"prepared"};  // coefficient errors are measured for this mode; one mode: labels without suffix
-  o.fcl = false;  // fcl/ccd has no row for this rotating scene (tests/compare/test_fcl_engine.cpp)
+  o.fcl = false;            // fcl/ccd has no row for this rotating scene (tests/compare/test_fcl_engine.cpp)
   auto rows = run_scene(s, scene_info(s, "generated"), o);
   REQUIRE(rows.size() == harness_pipelines(2, o).size());
   CHECK(rows[0].pipeline == "exact");
@@ -90,7 +93,8 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
   for (const auto& r : rows) {
     if (r.pipeline == "exact") continue;
     INFO(r.pipeline);
-    if (r.arith == "certified") {  // the certified ladder holds intervals or rationals: no floating coefficients to measure
+    if (r.arith ==
+        "certified") {  // the certified ladder holds intervals or rationals: no floating coefficients to measure
       CHECK(!r.coef_err);
       CHECK(!r.coef_err_common);
       continue;
@@ -105,7 +109,10 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
     CHECK((*by[p]->coef_err == 0) == (*by[p]->coef_err_common == 0));
   // Both faces of every floating pipeline: the guarded row keeps the label, its as-published twin is marked.
   for (const auto& r : rows) {
-    if (r.arith != "double" && r.arith != "mpfr") { CHECK(r.guard.empty()); continue; }
+    if (r.arith != "double" && r.arith != "mpfr") {
+      CHECK(r.guard.empty());
+      continue;
+    }
     INFO(r.pipeline);
     const bool published = r.pipeline.find("/published") != std::string::npos;
     CHECK(r.guard == (published ? "none" : "bound"));
@@ -118,7 +125,8 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
   }
   const std::string head = results_csv_header();
   CHECK(std::count(head.begin(), head.end(), ',') == 30);
-  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common,guard").size()) == ",reason,coef_err_common,guard");
+  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common,guard").size()) ==
+        ",reason,coef_err_common,guard");
 }
 
 TEST_CASE("coefficient error in the common basis: power coefficients changed exactly to Bernstein form", "[metrics]") {
@@ -147,7 +155,8 @@ TEST_CASE("harness: both input modes are rows of their own where the solver has 
   auto pipes = harness_pipelines(2, o);
   int prepared = 0, rounded = 0;
   for (const auto& p : pipes) {
-    if (p.arith != "double" && p.arith != "mpfr") continue;  // exact, and the peers certified and fcl have one input each
+    if (p.arith != "double" && p.arith != "mpfr")
+      continue;  // exact, and the peers certified and fcl have one input each
     (p.input == "prepared" ? prepared : rounded)++;
     if (solver_has_input_modes()) CHECK((p.input == "prepared") == (p.label.find("@prepared") != std::string::npos));
   }
@@ -180,6 +189,8 @@ TEST_CASE("harness: a run that does not stop is killed and recorded as a time-ou
   INFO("processor " << r.cpu_s << " s, wall " << r.wall_s << " s, " << r.reason);
   CHECK(r.cpu_s < 2 * 0.2 + 1 + 0.1);
   CHECK(r.wall_s < 10 * (2 * 0.2 + 1) + 120);
-  if (r.timed_out) CHECK(r.reason.rfind("time budget", 0) == 0);
-  else CHECK(r.got.has_value());
+  if (r.timed_out)
+    CHECK(r.reason.rfind("time budget", 0) == 0);
+  else
+    CHECK(r.got.has_value());
 }

@@ -76,7 +76,8 @@ TEST_CASE("cycloidal family: each kind is what the certified pipeline proves", "
   }
 }
 
-TEST_CASE("independent family: each kind is what the exact (balls) or double (ellipsoids) pipeline finds", "[independent][report]") {
+TEST_CASE("independent family: each kind is what the exact (balls) or double (ellipsoids) pipeline finds",
+          "[independent][report]") {
   auto scenes = one_per_kind("independent", 3, 6);
   CHECK_THROWS_AS(generate_scene(GeneratorSpec{4, 1, "independent", "translation", 0, 0, 1}), std::invalid_argument);
   SolveOptions exact;
@@ -100,8 +101,10 @@ TEST_CASE("independent family: each kind is what the exact (balls) or double (el
         REQUIRE(r.answer.t_intervals.size() == 1);
         const auto& [s0, s1] = r.answer.s_intervals[0];
         const auto& [t0, t1] = r.answer.t_intervals[0];
-        CHECK(*s0.lo <= at("s*=")); CHECK(at("s*=") <= *s1.hi);
-        CHECK(*t0.lo <= at("t*=")); CHECK(at("t*=") <= *t1.hi);
+        CHECK(*s0.lo <= at("s*="));
+        CHECK(at("s*=") <= *s1.hi);
+        CHECK(*t0.lo <= at("t*="));
+        CHECK(at("t*=") <= *t1.hi);
         CHECK(*s1.hi - *s0.lo < mpq_class(1, 1000000));
       }
     } else {
@@ -128,8 +131,10 @@ TEST_CASE("independent family in 2D: each kind is what the exact pipeline finds"
     const bool meets = kind == "discs-colliding" || kind == "ellipses-colliding" || kind == "discs-touch";
     if (kind == "ellipses-colliding" || kind == "ellipses-free") {
       // the proved route (certified/independent_proof.hpp): what it decides agrees with the construction
-      if (r.answer.undecided.empty()) CHECK(r.answer.collides == meets);
-      else CHECK_FALSE(kind == "ellipses-free");  // a separation by a line with a gap is always proved
+      if (r.answer.undecided.empty())
+        CHECK(r.answer.collides == meets);
+      else
+        CHECK_FALSE(kind == "ellipses-free");  // a separation by a line with a gap is always proved
       continue;
     }
     CHECK(r.answer.undecided.empty());  // two discs on lines: exact/independent_balls.hpp
@@ -144,15 +149,18 @@ TEST_CASE("independent family in 2D: each kind is what the exact pipeline finds"
       REQUIRE(r.answer.t_intervals.size() == 1);
       const auto& [s0, s1] = r.answer.s_intervals[0];
       const auto& [t0, t1] = r.answer.t_intervals[0];
-      CHECK(*s0.lo <= 1); CHECK(*s1.hi == 1);
+      CHECK(*s0.lo <= 1);
+      CHECK(*s1.hi == 1);
       CHECK(*s1.hi - *s0.lo < mpq_class(1, 1000000));
-      CHECK(*t0.lo <= ts); CHECK(ts <= *t1.hi);
+      CHECK(*t0.lo <= ts);
+      CHECK(ts <= *t1.hi);
       CHECK(*t1.hi - *t0.lo < mpq_class(1, 1000000));
     }
   }
 }
 
-TEST_CASE("harness rows of the motion families: ground truth certified / exact, or no ground truth", "[cycloidal][independent][report]") {
+TEST_CASE("harness rows of the motion families: ground truth certified / exact, or no ground truth",
+          "[cycloidal][independent][report]") {
   HarnessOptions o;
   o.mpfr_bits = {};  // double only: the MPFR rows are the same code at another precision (and cost seconds each)
   o.isolate = false;

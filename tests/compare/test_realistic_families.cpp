@@ -38,7 +38,8 @@ Solution solve_exact(const Scene& s) {
 std::uint64_t seed_from(const char* var, std::uint64_t fallback) {
   const char* env = std::getenv(var);
   std::uint64_t seed = env ? std::stoull(env) : fallback;
-  std::cout << "[families] seed " << seed << (env ? std::string(" (from ") + var + ")" : std::string(" (default; set ") + var + " to change)")
+  std::cout << "[families] seed " << seed
+            << (env ? std::string(" (from ") + var + ")" : std::string(" (default; set ") + var + " to change)")
             << std::endl;
   return seed;
 }
@@ -146,7 +147,8 @@ TEST_CASE("overlap and graze scenes have the answer their construction promises"
   }
 }
 
-TEST_CASE("realistic-input scenes are decimals, readable, reproducible and of the requested degree", "[generator][families]") {
+TEST_CASE("realistic-input scenes are decimals, readable, reproducible and of the requested degree",
+          "[generator][families]") {
   GeneratePlan plan;
   plan.families = {"decimal", "keyframe"};
   plan.degrees = {2, 3, 4, 5, 6};
@@ -215,8 +217,10 @@ TEST_CASE("keyframed motions follow the animation-format interpolation rule", "[
               q1.push_back(parse_rational(e["bernstein"][1].get<std::string>()));
             }
           } else {  // d2 = w, d3 = -z
-            q0 = {parse_rational(m["d"][2]["bernstein"][0].get<std::string>()), -parse_rational(m["d"][3]["bernstein"][0].get<std::string>())};
-            q1 = {parse_rational(m["d"][2]["bernstein"][1].get<std::string>()), -parse_rational(m["d"][3]["bernstein"][1].get<std::string>())};
+            q0 = {parse_rational(m["d"][2]["bernstein"][0].get<std::string>()),
+                  -parse_rational(m["d"][3]["bernstein"][0].get<std::string>())};
+            q1 = {parse_rational(m["d"][2]["bernstein"][1].get<std::string>()),
+                  -parse_rational(m["d"][3]["bernstein"][1].get<std::string>())};
           }
           Rational dot = 0;
           for (std::size_t k = 0; k < q0.size(); ++k) dot += q0[k] * q1[k];
@@ -291,14 +295,16 @@ void check_overlap_family(bool baselines) {
     }
   }
   std::cout << "[families] overlap family" << (baselines ? " (baselines)" : "") << ": " << scenes << " scenes, " << runs
-            << " floating runs, seed " << seed << "\n" << log.str() << std::flush;
+            << " floating runs, seed " << seed << "\n"
+            << log.str() << std::flush;
   INFO("seed " << seed << "\n" << log.str());
   CHECK(scenes >= 12);
   CHECK(missed.empty());
 }
 }  // namespace
 
-TEST_CASE("on the overlap family no floating pipeline is confidently collision-free where exact collides", "[families][overlap-family][budget]") {
+TEST_CASE("on the overlap family no floating pipeline is confidently collision-free where exact collides",
+          "[families][overlap-family][budget]") {
   check_overlap_family(false);
 }
 
@@ -316,7 +322,8 @@ std::vector<GeneratorSpec> realistic_plan(std::uint64_t seed, int dim, int count
   const int digits[] = {6, 9, 12, 15};
   const std::vector<std::pair<std::string, std::string>> fm =
       dim == 2 ? std::vector<std::pair<std::string, std::string>>{{"decimal", "kinematic"}, {"keyframe", "kinematic"}}
-               : std::vector<std::pair<std::string, std::string>>{{"decimal", "euler"}, {"decimal", "affine"}, {"keyframe", "euler"}};
+               : std::vector<std::pair<std::string, std::string>>{
+                     {"decimal", "euler"}, {"decimal", "affine"}, {"keyframe", "euler"}};
   for (int i = 0; int(out.size()) < count; ++i) {
     GeneratorSpec s;
     s.dim = dim;
@@ -361,10 +368,14 @@ void check_realistic(int dim, int count, bool heavy) {
       // setup of the stage it is in) before the harness kills it at 2 x budget + 1 s of its processor time (the
       // budget is processor time, so a busy machine changes nothing here: kernel/budget.hpp). An answer that comes
       // back after the budget is not used: it counts as undecided, like a run stopped by its deadline.
-      if (r.killed) kind = "did not stop within 2 x budget + 1 s of processor time";
-      else if (!r.error.empty()) kind = "error";
-      else if (r.timed_out) ++undecided;
-      else if (confident(r.got) && r.got->answer.collides != ex.answer.collides) kind = "confidently wrong";
+      if (r.killed)
+        kind = "did not stop within 2 x budget + 1 s of processor time";
+      else if (!r.error.empty())
+        kind = "error";
+      else if (r.timed_out)
+        ++undecided;
+      else if (confident(r.got) && r.got->answer.collides != ex.answer.collides)
+        kind = "confidently wrong";
       else if (!confident(r.got)) {
         ++undecided;
         if (r.got && r.got->sampled && r.got->answer.collides != ex.answer.collides)
@@ -374,21 +385,24 @@ void check_realistic(int dim, int count, bool heavy) {
         ++fails[p.label][kind];
         ++fam_fail[sp.family + "/" + kind];
         if (log.str().size() < 20000)
-          log << "  " << p.label << " on " << g.name << ": " << kind << (r.reason.empty() ? "" : " (" + r.reason.substr(0, 120) + ")") << "\n";
+          log << "  " << p.label << " on " << g.name << ": " << kind
+              << (r.reason.empty() ? "" : " (" + r.reason.substr(0, 120) + ")") << "\n";
       }
     }
   }
   std::ostringstream sum;
   sum << "[families] realistic input " << dim << "D: " << scenes << " scenes (degrees";
   for (auto [d, n] : per_degree) sum << " " << d << ":" << n;
-  sum << "), " << runs << " floating runs, " << undecided << " undecided, budget " << budget << " s, seed " << seed << "\n";
+  sum << "), " << runs << " floating runs, " << undecided << " undecided, budget " << budget << " s, seed " << seed
+      << "\n";
   for (const auto& [p, kinds] : fails) {
     sum << "  FAIL " << p << ":";
     for (const auto& [k, n] : kinds) sum << " " << n << " " << k << ";";
     sum << "\n";
   }
   for (const auto& [k, n] : fam_fail) sum << "  by family: " << k << " " << n << "\n";
-  for (const auto& [p, n] : sampled_wrong) sum << "  sampled baseline " << p << ": wrong collides on " << n << " scene(s) (no claim between samples)\n";
+  for (const auto& [p, n] : sampled_wrong)
+    sum << "  sampled baseline " << p << ": wrong collides on " << n << " scene(s) (no claim between samples)\n";
   std::cout << sum.str() << std::flush;
   INFO(sum.str() << log.str());
   CHECK(fails.empty());
@@ -399,10 +413,12 @@ void check_realistic(int dim, int count, bool heavy) {
 // 200 scenes in all (150 2D + 50 3D): every floating pipeline and method returns within its budget and is
 // never confidently wrong (issue 14, "Done when"). Needs floating pipelines that start from the rounded input,
 // scale by powers of two, bound their work and say undecided from an error bound.
-TEST_CASE("realistic-input scenes 2D: every floating pipeline returns within budget and is never confidently wrong", "[families][realistic-input][budget]") {
+TEST_CASE("realistic-input scenes 2D: every floating pipeline returns within budget and is never confidently wrong",
+          "[families][realistic-input][budget]") {
   check_realistic(2, 150, false);
 }
-TEST_CASE("realistic-input scenes 3D: every floating pipeline returns within budget and is never confidently wrong", "[families][realistic-input][budget]") {
+TEST_CASE("realistic-input scenes 3D: every floating pipeline returns within budget and is never confidently wrong",
+          "[families][realistic-input][budget]") {
   check_realistic(3, 50, false);
 }
 // The long run: 400 scenes per dimension, 3D degrees 4-6 with 12 and 15 digits too.
@@ -415,7 +431,8 @@ TEST_CASE("realistic-input scenes, long run", "[.realistic-long]") {
 // answered "collides: no" after 33 shots (a converged shot whose G(0) rounded to <= 0 was read as a miss,
 // floating/bezier_ccd.hpp). Every Bézier setup in double and mpfr:64 must now see it, or say undecided there.
 TEST_CASE("the Bezier method finds the collision of issue 14's scene missed-0.021", "[families][overlap-family]") {
-  const std::string text = R"({"format":"ellipse-ccd-scene/1","name":"missed-0.021","dim":3,"a":{"shape":{"semi_axes":["1845/1000","1156/1000","682/1000"]},"motion":{"type":"euler","e":["9","0","8","7"],"translation":[["847/1000","-1949/1000"],["361/1000","795/1000"],["-449/1000","427/1000"]],"translation_denominator":"1"}},"b":{"shape":{"semi_axes":["676/1000","1660/1000","1454/1000"]},"motion":{"type":"euler","e":["2","1","-3","0"],"translation":[["-634450599237978188179/1000000000000000000000","515222857830281712583/200000000000000000000"],["1540186683275002448023/2500000000000000000000","17306096437427776020047/10000000000000000000000"],["850681931231624518787/250000000000000000000","-2800476784914803542613/1000000000000000000000"]],"translation_denominator":"1"}}})";
+  const std::string text =
+      R"({"format":"ellipse-ccd-scene/1","name":"missed-0.021","dim":3,"a":{"shape":{"semi_axes":["1845/1000","1156/1000","682/1000"]},"motion":{"type":"euler","e":["9","0","8","7"],"translation":[["847/1000","-1949/1000"],["361/1000","795/1000"],["-449/1000","427/1000"]],"translation_denominator":"1"}},"b":{"shape":{"semi_axes":["676/1000","1660/1000","1454/1000"]},"motion":{"type":"euler","e":["2","1","-3","0"],"translation":[["-634450599237978188179/1000000000000000000000","515222857830281712583/200000000000000000000"],["1540186683275002448023/2500000000000000000000","17306096437427776020047/10000000000000000000000"],["850681931231624518787/250000000000000000000","-2800476784914803542613/1000000000000000000000"]],"translation_denominator":"1"}}})";
   Scene s = parse_scene(text, "missed-0.021");
   Solution ex = solve_exact(s);
   REQUIRE(ex.answer.collides);

@@ -30,8 +30,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kFigures[] = {"coef_error_vs_degree.png", "coef_error_hist.png", "misclassification_vs_d.png",
-                                "min_mpfr_bits_vs_degree.png", "time_vs_degree.png", "failure_map.png"};
+const char* const kFigures[] = {"coef_error_vs_degree.png",    "coef_error_hist.png", "misclassification_vs_d.png",
+                                "min_mpfr_bits_vs_degree.png", "time_vs_degree.png",  "failure_map.png"};
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -187,7 +187,11 @@ std::vector<std::string> split_commas(const std::string& line) {  // the fixture
   std::vector<std::string> f;
   std::string cur;
   for (char c : line) {
-    if (c == ',') { f.push_back(cur); cur.clear(); } else cur += c;
+    if (c == ',') {
+      f.push_back(cur);
+      cur.clear();
+    } else
+      cur += c;
   }
   f.push_back(cur);
   return f;
@@ -204,9 +208,15 @@ std::vector<std::string> verdict_of(const std::vector<std::string>& lines, std::
                                     const std::string& heading = "## Verdict") {
   start = end = lines.size();
   for (std::size_t i = 0; i < lines.size(); ++i)
-    if (lines[i] == heading) { start = i; break; }
+    if (lines[i] == heading) {
+      start = i;
+      break;
+    }
   for (std::size_t i = start + 1; i < lines.size(); ++i)
-    if (lines[i].rfind("## ", 0) == 0) { end = i; break; }
+    if (lines[i].rfind("## ", 0) == 0) {
+      end = i;
+      break;
+    }
   std::vector<std::string> v;
   for (std::size_t i = start; i < end && i < lines.size(); ++i) v.push_back(lines[i]);
   return v;
@@ -252,8 +262,9 @@ void add_published_rows(const fs::path& dir) {
 }
 
 // Rewrites the fixture with the optional columns (input, digits, reason, coef_err_common) and adds, per scene, rows
-// of three more engines made from its exact row (and gives mpfr:128/power's undecided row a time-out reason): `certified` (always right), `fcl/sample:10` (misses every
-// collision) and `ext:mine` (says the opposite of the exact answer: wrong on every scene, the most wrong of all).
+// of three more engines made from its exact row (and gives mpfr:128/power's undecided row a time-out reason):
+// `certified` (always right), `fcl/sample:10` (misses every collision) and `ext:mine` (says the opposite of the exact
+// answer: wrong on every scene, the most wrong of all).
 void add_engine_rows(const fs::path& dir) {
   auto lines = lines_of(slurp(dir / "results.csv"));
   std::string out = lines[0] + ",input,digits,reason,coef_err_common\n";
@@ -296,8 +307,9 @@ void set_meta_fcl(const fs::path& dir, const std::string& fcl_json) {
 
 int run_check_figures(const fs::path& dir, std::string& log) {
   const std::string logfile = dir.string() + ".log";
-  const std::string cmd = "python3 '" + std::string(ECCD_SOURCE_DIR) + "/compare/plots/report_figures.py' --check-figures '" +
-                          dir.string() + "' >'" + logfile + "' 2>&1";
+  const std::string cmd = "python3 '" + std::string(ECCD_SOURCE_DIR) +
+                          "/compare/plots/report_figures.py' --check-figures '" + dir.string() + "' >'" + logfile +
+                          "' 2>&1";
   const int st = std::system(cmd.c_str());
   log = slurp(logfile);
   return (st != -1 && WIFEXITED(st)) ? WEXITSTATUS(st) : -1;
@@ -316,8 +328,8 @@ TEST_CASE("report.md opens with a short verdict, then every aspect named, each p
   std::size_t start = 0, end = 0;
   const auto short_verdict = verdict_of(lines, start, end);
   REQUIRE(!short_verdict.empty());
-  CHECK(start < 5);   // right under the title
-  CHECK(end <= 20);   // the first screen
+  CHECK(start < 5);  // right under the title
+  CHECK(end <= 20);  // the first screen
   CHECK(words_of(short_verdict) <= 150);
   // This fixture has no as-published rows (no guard column: an older run, the guarded face only).
   CHECK(md.find("No as-published rows") != std::string::npos);
@@ -325,9 +337,9 @@ TEST_CASE("report.md opens with a short verdict, then every aspect named, each p
   REQUIRE(!verdict.empty());
   std::string v;
   for (const auto& l : verdict) v += l + "\n";
-  for (const char* aspect : {"**Confidently wrong**", "**Families**", "**Touch**", "**Separations**", "**Degrees**",
-                             "**Input modes**", "**Bernstein vs power**", "**Coefficient error**", "**MPFR bits**",
-                             "**Other engines**"}) {
+  for (const char* aspect :
+       {"**Confidently wrong**", "**Families**", "**Touch**", "**Separations**", "**Degrees**", "**Input modes**",
+        "**Bernstein vs power**", "**Coefficient error**", "**MPFR bits**", "**Other engines**"}) {
     INFO(aspect);
     CHECK(v.find(aspect) != std::string::npos);
   }
@@ -357,7 +369,10 @@ TEST_CASE("report.md opens with a short verdict, then every aspect named, each p
   CHECK(v.find("- **2D:** double was confidently wrong") != std::string::npos);
   std::string first;
   for (const auto& l : verdict)
-    if (l.rfind("- **Confidently wrong**", 0) == 0) { first = l; break; }
+    if (l.rfind("- **Confidently wrong**", 0) == 0) {
+      first = l;
+      break;
+    }
   REQUIRE(!first.empty());
   CHECK(first.find("double/power (2D, double): 2 false positives, 1 false negative") != std::string::npos);
   CHECK(first.find("mpfr:64/power (2D, mpfr): 3 false positives") != std::string::npos);
@@ -370,7 +385,8 @@ TEST_CASE("report_figures.py: certified, FCL and external rows in the trust tabl
           "[report-figures]") {
   FixtureCopy fx("engines");
   add_engine_rows(fx.dir);
-  set_meta_fcl(fx.dir, R"({"available": true, "version": "0.7.0", "tolerances": "default", "skipped": {"fcl/ccd:10": 3}})");
+  set_meta_fcl(fx.dir,
+               R"({"available": true, "version": "0.7.0", "tolerances": "default", "skipped": {"fcl/ccd:10": 3}})");
   std::string log;
   REQUIRE(run_script(fx.dir, log) == 0);
   INFO(log);
@@ -383,7 +399,10 @@ TEST_CASE("report_figures.py: certified, FCL and external rows in the trust tabl
   // wrong answers, so it leads the verdict's first point, before double/power (3 wrong).
   std::string first;
   for (const auto& l : verdict)
-    if (l.rfind("- **Confidently wrong**", 0) == 0) { first = l; break; }
+    if (l.rfind("- **Confidently wrong**", 0) == 0) {
+      first = l;
+      break;
+    }
   INFO(first);
   const auto ext = first.find("ext:mine");
   const auto dbl = first.find("double/power");
@@ -395,7 +414,9 @@ TEST_CASE("report_figures.py: certified, FCL and external rows in the trust tabl
   // The trust table has a column for each engine, next to double and MPFR.
   bool header = false;
   for (const auto& l : lines)
-    if (l.rfind("| dim | family | input | scenes | double | mpfr:64 | mpfr:128 | certified | fcl/sample:10 | ext:mine |", 0) == 0)
+    if (l.rfind(
+            "| dim | family | input | scenes | double | mpfr:64 | mpfr:128 | certified | fcl/sample:10 | ext:mine |",
+            0) == 0)
       header = true;
   CHECK(header);
   // FCL rows exist: no "not available" sentence; its version, tolerances and skipped scenes are shown.
@@ -430,7 +451,8 @@ TEST_CASE("report_figures.py says FCL was not available when meta.json says so",
   CHECK(md.find("apt-get install libfcl-dev") != std::string::npos);
 }
 
-TEST_CASE("report_figures.py figures: at most 8 series per panel, no two sharing colour and marker", "[report-figures]") {
+TEST_CASE("report_figures.py figures: at most 8 series per panel, no two sharing colour and marker",
+          "[report-figures]") {
   FixtureCopy fx("figs");
   add_engine_rows(fx.dir);
   std::string log;
@@ -452,16 +474,21 @@ TEST_CASE("report_figures.py figures: at most 8 series per panel, no two sharing
     series += std::string(i ? "," : "") + "{\"label\": \"s" + std::to_string(i) + "\", \"color\": \"#" +
               std::to_string(100000 + i) + "\", \"marker\": \"o\", \"linestyle\": \"-\", \"merged\": 1}";
   std::ofstream(fx.dir / "figures.json", std::ios::trunc)
-      << "{\"format\": \"eccd-report-figures/1\", \"version\": 1, \"max_series_per_panel\": 8, \"figures\": {\"a.png\": "
-         "[{\"panel\": \"p\", \"series\": [" + series + "]}], \"b.png\": [{\"panel\": \"q\", \"series\": ["
-         "{\"label\": \"x\", \"color\": \"#1f77b4\", \"marker\": \"o\", \"linestyle\": \"-\", \"merged\": 1},"
-         "{\"label\": \"y\", \"color\": \"#1f77b4\", \"marker\": \"o\", \"linestyle\": \"--\", \"merged\": 1}]}]}}\n";
+      << "{\"format\": \"eccd-report-figures/1\", \"version\": 1, \"max_series_per_panel\": 8, \"figures\": "
+         "{\"a.png\": "
+         "[{\"panel\": \"p\", \"series\": [" +
+             series +
+             "]}], \"b.png\": [{\"panel\": \"q\", \"series\": ["
+             "{\"label\": \"x\", \"color\": \"#1f77b4\", \"marker\": \"o\", \"linestyle\": \"-\", \"merged\": 1},"
+             "{\"label\": \"y\", \"color\": \"#1f77b4\", \"marker\": \"o\", \"linestyle\": \"--\", \"merged\": "
+             "1}]}]}}\n";
   CHECK(run_check_figures(fx.dir, clog) == 1);
   CHECK(clog.find("a.png / p: 9 series") != std::string::npos);
   CHECK(clog.find("b.png / q: 'y' and 'x' share colour and marker") != std::string::npos);
 }
 
-TEST_CASE("report_figures.py: both faces - the as-published table, the guard's record and the verdict", "[report-figures]") {
+TEST_CASE("report_figures.py: both faces - the as-published table, the guard's record and the verdict",
+          "[report-figures]") {
   FixtureCopy fx("faces");
   add_published_rows(fx.dir);
   std::string log;
@@ -477,17 +504,20 @@ TEST_CASE("report_figures.py: both faces - the as-published table, the guard's r
   // 3 of the 10 as-published runs wrong (degrees 2 and 4, near misses from 1e-08); the guard flagged 2 of 3.
   CHECK(v.find("**2D, as published:** double was wrong on 3/10 (30%) runs. Wrong at degree 2–4; near misses from d = "
                "1e-08 down.") != std::string::npos);
-  CHECK(v.find("Guarded: it missed 1 of 3 errors (a bug of the guard). Undecided 1/10 (10%), of which 0 false alarms.") !=
-        std::string::npos);
+  CHECK(
+      v.find("Guarded: it missed 1 of 3 errors (a bug of the guard). Undecided 1/10 (10%), of which 0 false alarms.") !=
+      std::string::npos);
   // The as-published table: per degree 1 of 4 (an FP) and 2 of 6 (an FP, a wrong structure).
   CHECK(md.find("## The published algorithms as published: misclassification") != std::string::npos);
-  CHECK(md.find("| 2D | double/bernstein | 1/4 (1 FP) | 2/6 (1 FP, 1 struct) | 3/10 (2 FP, 1 struct) |") != std::string::npos);
+  CHECK(md.find("| 2D | double/bernstein | 1/4 (1 FP) | 2/6 (1 FP, 1 struct) | 3/10 (2 FP, 1 struct) |") !=
+        std::string::npos);
   // The guard's record, 2D all: runs, errors, caught, right anyway, missed, flagged, false alarms, of undecided.
   CHECK(md.find("| **2D, all** | 10 | 3 | 1 | 1 | 1 | 66.7% | 0 | 0/1 (0%) |") != std::string::npos);
   CHECK(md.find("**Missed by the guard** (1): s4-nm-1e-8 double/bernstein (false_positive).") != std::string::npos);
   // The claims: Bernstein wrong at d = 1e-08 as published (prepared input): 003's robustness to 1e-12 refuted.
-  CHECK(md.find("| 003 VI-C: Bernstein form robust to d = 1e-12 | 2D near-miss, double/bernstein as published; prepared: "
-                "wrong 2/5 (largest d wrong 1e-08) | refuted (run) |") != std::string::npos);
+  CHECK(
+      md.find("| 003 VI-C: Bernstein form robust to d = 1e-12 | 2D near-miss, double/bernstein as published; prepared: "
+              "wrong 2/5 (largest d wrong 1e-08) | refuted (run) |") != std::string::npos);
   // The other sections still read the guarded face only: double/bernstein's row in the degree table is unchanged.
   const auto degree_table = verdict_of(lines, start, end, "## Results per dimension and degree");
   REQUIRE(!degree_table.empty());

@@ -22,8 +22,10 @@ RP pow(const RP& p, int k) {
 }
 Q two_pow(int e) {  // 2^e, e may be negative
   Q r(1);
-  if (e >= 0) mpq_mul_2exp(r.get_mpq_t(), r.get_mpq_t(), e);
-  else mpq_div_2exp(r.get_mpq_t(), r.get_mpq_t(), -e);
+  if (e >= 0)
+    mpq_mul_2exp(r.get_mpq_t(), r.get_mpq_t(), e);
+  else
+    mpq_div_2exp(r.get_mpq_t(), r.get_mpq_t(), -e);
   return r;
 }
 Q width(const AlgebraicRoot& r) { return r.hi - r.lo; }
@@ -67,7 +69,8 @@ void check_isolation(const RP& p, const std::vector<AlgebraicRoot>& roots, const
 
 }  // namespace
 
-TEST_CASE("real_roots: irrational roots in [0, 1] get disjoint certified brackets of width 2^-64", "[exact][algebraic_roots]") {
+TEST_CASE("real_roots: irrational roots in [0, 1] get disjoint certified brackets of width 2^-64",
+          "[exact][algebraic_roots]") {
   // (2t^2 - 1)(3t^2 - 1)(t - 2): roots ±1/√2, ±1/√3, 2; in [0, 1]: 1/√3 < 1/√2.
   RP p = poly({-1, 0, 2}) * poly({-1, 0, 3}) * poly({-2, 1});
   auto roots = real_roots(p, Q(0), Q(1), 64);
@@ -103,7 +106,8 @@ TEST_CASE("real_roots: multiplicities, and rational roots written exactly", "[ex
   check_isolation(p, all, Q(-2), Q(2), 64);
 }
 
-TEST_CASE("real_roots: roots at the ends of the range are exact and included, outside ones are not", "[exact][algebraic_roots]") {
+TEST_CASE("real_roots: roots at the ends of the range are exact and included, outside ones are not",
+          "[exact][algebraic_roots]") {
   // t (t - 1) (2t^2 - 1) (t - 3/2) (t + 1/5)
   RP p = poly({0, 1}) * poly({-1, 1}) * poly({-1, 0, 2}) * poly({Q(-3, 2), 1}) * poly({Q(1, 5), 1});
   auto roots = real_roots(p, Q(0), Q(1), 64);
@@ -158,14 +162,16 @@ TEST_CASE("real_roots: a degree-60 product with 30 roots in [0, 1]", "[exact][al
   check_isolation(p, coarse, Q(0), Q(1), 8);
 }
 
-TEST_CASE("sign_at: zero, positive and negative at algebraic numbers, also when the value is tiny", "[exact][algebraic_roots]") {
+TEST_CASE("sign_at: zero, positive and negative at algebraic numbers, also when the value is tiny",
+          "[exact][algebraic_roots]") {
   RP p = poly({-1, 0, 2}) * poly({-2, 1});  // root 1/√2 in [0, 1]
   auto roots = real_roots(p, Q(0), Q(1), 64);
   REQUIRE(roots.size() == 1);
   const AlgebraicRoot& r = roots[0];
-  CHECK(sign_at(poly({-1, 0, 2}) * poly({5, 1}), r) == Sign::zero);   // shares the root
-  CHECK(sign_at(poly({-1, 0, 2, 0, 0, 1}) * poly({0, 1, 1}) - poly({0, 1, 1}) * poly({0, 0, 0, 0, 0, 1}), r) == Sign::zero);
-  CHECK(sign_at(poly({-1, 0, 3}), r) == Sign::positive);            // 3/2 - 1
+  CHECK(sign_at(poly({-1, 0, 2}) * poly({5, 1}), r) == Sign::zero);  // shares the root
+  CHECK(sign_at(poly({-1, 0, 2, 0, 0, 1}) * poly({0, 1, 1}) - poly({0, 1, 1}) * poly({0, 0, 0, 0, 0, 1}), r) ==
+        Sign::zero);
+  CHECK(sign_at(poly({-1, 0, 3}), r) == Sign::positive);  // 3/2 - 1
   CHECK(sign_at(poly({1, 0, -3}), r) == Sign::negative);
   CHECK(sign_at(poly({7}), r) == Sign::positive);
   CHECK(sign_at(RP(), r) == Sign::zero);
@@ -173,7 +179,7 @@ TEST_CASE("sign_at: zero, positive and negative at algebraic numbers, also when 
   // 2^-64 cannot decide, refinement must.
   // c = 1/√2 to 210 bits: floor(2^210 / √2) / 2^210 by integer square root
   mpz_class s;
-  mpz_class n = mpz_class(1) << 419;  // (2^210)^2 / 2
+  mpz_class n = mpz_class(1) << 419;       // (2^210)^2 / 2
   mpz_sqrt(s.get_mpz_t(), n.get_mpz_t());  // floor(2^209.5)
   Q below(s, mpz_class(1) << 210), above(s + 1, mpz_class(1) << 210);
   below.canonicalize();
@@ -190,7 +196,8 @@ TEST_CASE("sign_at: zero, positive and negative at algebraic numbers, also when 
   CHECK(width(r) > two_pow(-128));
 }
 
-TEST_CASE("sign_at: polynomials whose power-basis coefficients cancel heavily near the root", "[exact][algebraic_roots]") {
+TEST_CASE("sign_at: polynomials whose power-basis coefficients cancel heavily near the root",
+          "[exact][algebraic_roots]") {
   // (2t - 1)^60 at 1/√2 is (√2 - 1)^60 ≈ 2^-76, its coefficients up to ~2^117
   // (the mean-value bound on a 2^-64 bracket cannot decide; Taylor terms can).
   RP p = poly({-1, 0, 2}) * poly({-3, 1});
@@ -229,7 +236,8 @@ TEST_CASE("sign_at and refine at rational roots", "[exact][algebraic_roots]") {
   CHECK(x.hi == Q(1, 3));
 }
 
-TEST_CASE("refine: narrower brackets of the same root, from dyadic and from arbitrary rational brackets", "[exact][algebraic_roots]") {
+TEST_CASE("refine: narrower brackets of the same root, from dyadic and from arbitrary rational brackets",
+          "[exact][algebraic_roots]") {
   RP p = poly({-1, 0, 2}) * poly({-1, 0, 3});
   auto roots = real_roots(p, Q(0), Q(1), 64);
   REQUIRE(roots.size() == 2);
@@ -272,7 +280,8 @@ TEST_CASE("square_free_factors and polynomial_gcd", "[exact][algebraic_roots]") 
   CHECK(polynomial_gcd(p, a * poly({5, 1})) == a);
 }
 
-TEST_CASE("real_roots on [0, 1] (square-free fast path) agrees with the general isolation on random products", "[exact][algebraic_roots]") {
+TEST_CASE("real_roots on [0, 1] (square-free fast path) agrees with the general isolation on random products",
+          "[exact][algebraic_roots]") {
   // Products of linear factors k t - m (roots in and around [0, 1], including
   // 0, 1 and dyadic midpoints that the bisection hits exactly), k t^2 - m
   // (irrational roots), t^2 + 1 and roots < 0, scaled by a big rational;
@@ -281,17 +290,30 @@ TEST_CASE("real_roots on [0, 1] (square-free fast path) agrees with the general 
   // root, the general path's on q(s) = p(s / 2) over [0, 2] (the same roots,
   // doubled: the general path runs for every range other than [0, 1]).
   std::uint64_t state = 12345;
-  auto next = [&state](std::uint64_t m) { state = state * 6364136223846793005ull + 1442695040888963407ull; return (state >> 33) % m; };
+  auto next = [&state](std::uint64_t m) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return (state >> 33) % m;
+  };
   for (int trial = 0; trial < 60; ++trial) {
     RP p = poly({Q(1)});
     const int factors = 2 + int(next(6));
     for (int f = 0; f < factors; ++f) {
       switch (next(5)) {
-        case 0: p = p * poly({Q(-long(next(9)), 8), 1}); break;                                // m/8: 0, 1/2, 1, ... exact
-        case 1: p = p * poly({Q(-long(next(2001))), Q(long(1 + next(1000)))}); break;          // m/k in [0, 2]
-        case 2: p = p * poly({Q(-long(1 + next(97)), long(1 + next(97))), 0, 1}); break;       // t^2 - c
-        case 3: p = p * poly({1, 0, 1}); break;                                                // ±i
-        default: p = p * poly({Q(long(3 + next(5))), 1}); break;                               // a root < 0
+        case 0:
+          p = p * poly({Q(-long(next(9)), 8), 1});
+          break;  // m/8: 0, 1/2, 1, ... exact
+        case 1:
+          p = p * poly({Q(-long(next(2001))), Q(long(1 + next(1000)))});
+          break;  // m/k in [0, 2]
+        case 2:
+          p = p * poly({Q(-long(1 + next(97)), long(1 + next(97))), 0, 1});
+          break;  // t^2 - c
+        case 3:
+          p = p * poly({1, 0, 1});
+          break;  // ±i
+        default:
+          p = p * poly({Q(long(3 + next(5))), 1});
+          break;  // a root < 0
       }
     }
     if (next(4) == 0) p = p * poly({Q(-1, 3), 1}) * poly({Q(-1, 3), 1});  // a double root at 1/3

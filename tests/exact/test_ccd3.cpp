@@ -62,7 +62,11 @@ TEST_CASE("Paper 002's example: exactly two intervals, the first is the paper's 
 }
 
 TEST_CASE("Sphere-sphere: the projection is psc_1 and the brackets hold the analytic instants", "[ccd3][exact]") {
-  struct Case { const char* file; RPoly q; int roots; };
+  struct Case {
+    const char* file;
+    RPoly q;
+    int roots;
+  };
   // D(t) = |c_A - c_B|² - (r_A + r_B)², from each scene's note (cases/spheres/make_spheres.py)
   for (const Case& c : {Case{"spheres/spheres-crossing.json", rp({117, -1024, 1024}), 2},
                         Case{"spheres/spheres-overlap-start.json", rp({-7, 8, 16}), 1},
@@ -125,7 +129,8 @@ TEST_CASE("Double Bézier gives the exact intervals to within 1e-6 on every 3D c
   WARN("double Bezier: largest endpoint error against the stored exact answers " << worst);
 }
 
-TEST_CASE("First-contact mode agrees with the first interval of the full answer in every arithmetic", "[ccd3][bezier][exact]") {
+TEST_CASE("First-contact mode agrees with the first interval of the full answer in every arithmetic",
+          "[ccd3][bezier][exact]") {
   for (const auto& file : cases_3d()) {
     INFO(file);
     Scene s = read_scene_file(file);
@@ -145,7 +150,8 @@ TEST_CASE("First-contact mode agrees with the first interval of the full answer 
   }
 }
 
-TEST_CASE("Random 3D scenes of motion degree 2 and 4: the exact answer agrees with exact Sturm counts", "[ccd3][exact][random]") {
+TEST_CASE("Random 3D scenes of motion degree 2 and 4: the exact answer agrees with exact Sturm counts",
+          "[ccd3][exact][random]") {
   const std::uint64_t seed = seed_from_env(20261121);
   std::mt19937_64 rng(seed);
   WARN("random 3D scenes: seed " << seed << " (set ECCD_TEST_SEED to change it)");
@@ -174,7 +180,10 @@ TEST_CASE("Random 3D scenes of motion degree 2 and 4: the exact answer agrees wi
     if (!b.answer.undecided.empty()) continue;
     std::vector<double> ends;
     for (const Answer* a : {&b.answer, &r.answer})
-      for (const auto& [x, y] : a->intervals) { ends.push_back(approx(x)); ends.push_back(approx(y)); }
+      for (const auto& [x, y] : a->intervals) {
+        ends.push_back(approx(x));
+        ends.push_back(approx(y));
+      }
     for (int i = 0; i <= 60; ++i) {
       const double t = i / 60.0;
       bool near = false;

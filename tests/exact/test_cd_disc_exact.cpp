@@ -34,13 +34,14 @@ TEST_CASE("003 Example 2: the exact pipeline proves a single isolated touch at t
   CHECK(std::abs(std::stod(a.contact_points[0].x[1])) < 1e-9);
 }
 
-TEST_CASE("003 Example 2: f's λ³ coefficient is the paper's up to a constant, and Δ has degree 96", "[exact][paper003]") {
+TEST_CASE("003 Example 2: f's λ³ coefficient is the paper's up to a constant, and Δ has degree 96",
+          "[exact][paper003]") {
   Scene s = read_scene_file(case_path("paper003/example2.json"));
   auto r = solve_exact(s);
   // 003 section VI-C prints g3(t) = -4096t^24 + 49152t^23 - ... + 24t - 1.
-  const long printed[] = {-1, 24, -288, 2288, -13464, 62304, -235136, 741312, -1984752, 4564736, -9090048, 15754752, -23835904,
-                          31509504, -36360192, 36517888, -31756032, 23721984, -15048704, 7974912, -3446784, 1171456, -294912,
-                          49152, -4096};
+  const long printed[] = {-1,        24,       -288,     2288,      -13464,   62304,     -235136,  741312,    -1984752,
+                          4564736,   -9090048, 15754752, -23835904, 31509504, -36360192, 36517888, -31756032, 23721984,
+                          -15048704, 7974912,  -3446784, 1171456,   -294912,  49152,     -4096};
   const RPoly& g3 = r.g[3];
   REQUIRE(g3.degree() == 24);
   Q factor = g3.c[0] / Q(printed[0]);
@@ -62,7 +63,8 @@ TEST_CASE("003 Table I: Δ has degree 8 for linear translations", "[exact][paper
   CHECK(r.projection_degree == 8);
 }
 
-TEST_CASE("003 Example 2 shifted by d: away is collision-free, towards is one short overlap around 1/2", "[exact][paper003]") {
+TEST_CASE("003 Example 2 shifted by d: away is collision-free, towards is one short overlap around 1/2",
+          "[exact][paper003]") {
   for (const char* e : {"3", "6", "9", "12", "15"}) {
     std::string away = case_path(std::string("paper003/example2-away-1e-") + e + ".json");
     std::string toward = case_path(std::string("paper003/example2-towards-1e-") + e + ".json");
@@ -80,7 +82,8 @@ TEST_CASE("003 Example 2 shifted by d: away is collision-free, towards is one sh
   }
 }
 
-TEST_CASE("identical disks on identical motions: Δ ≡ 0 is handled, the collision set is [0, 1]", "[exact][degenerate]") {
+TEST_CASE("identical disks on identical motions: Δ ≡ 0 is handled, the collision set is [0, 1]",
+          "[exact][degenerate]") {
   Scene s = translation_scene(3, 2, rp({0, 5}), rp({1}), 3, 2, rp({0, 5}), rp({1}));
   auto r = solve_exact(s);
   CHECK(r.projection_identically_zero);
@@ -109,7 +112,8 @@ TEST_CASE("concentric circles: a root of Δ that is not a contact (003 VI-B)", "
   CHECK(r.answer.contacts.size() == 2);
 }
 
-TEST_CASE("random 2D scenes: the exact answer agrees with exact Sturm counts at many rational instants", "[exact][random]") {
+TEST_CASE("random 2D scenes: the exact answer agrees with exact Sturm counts at many rational instants",
+          "[exact][random]") {
   std::uint64_t seed = seed_from_env(0xeccd0002ull);
   std::cout << "random 2D scenes: seed " << seed << " (set ECCD_TEST_SEED to replay)\n";
   std::mt19937_64 rng(seed);

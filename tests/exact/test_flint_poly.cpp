@@ -69,12 +69,13 @@ TEST_CASE("flint_square_free_factors and flint_gcd on a product with known facto
   CHECK(F[2].first == std::vector<mpz_class>{1, 1, 1});
   CHECK(F[3].first == std::vector<mpz_class>{0, 1});
   CHECK(flint_gcd(primitive_integer_multiple(p), primitive_integer_multiple(a * poly({5, 1}) * b)) ==
-        std::vector<mpz_class>{1, -3, -2, 6});  // (2t^2 - 1)(3t - 1) = 6t^3 - 2t^2 - 3t + 1
+        std::vector<mpz_class>{1, -3, -2, 6});                     // (2t^2 - 1)(3t - 1) = 6t^3 - 2t^2 - 3t + 1
   CHECK(flint_gcd({1, 1}, {-1, 1}) == std::vector<mpz_class>{1});  // coprime
   CHECK(square_free_factors(p) == square_free_factors_cgal(p));
 }
 
-TEST_CASE("FLINT's square-free factorisation and gcds equal CGAL's on every projection polynomial of cases/", "[exact][flint_poly]") {
+TEST_CASE("FLINT's square-free factorisation and gcds equal CGAL's on every projection polynomial of cases/",
+          "[exact][flint_poly]") {
   int compared = 0, not_square_free = 0;
   for_each_case_algebra([&](const std::string& path, const CertificateAlgebra& alg) {
     if (alg.projection.is_zero() || alg.projection.degree() < 1) return;
@@ -97,7 +98,9 @@ TEST_CASE("FLINT's square-free factorisation and gcds equal CGAL's on every proj
   CHECK(not_square_free >= 1);
 }
 
-TEST_CASE("FlintQPoly gives the very Poly<Rational> of each formula: random rationals and the g of every scene of cases/", "[exact][flint_poly]") {
+TEST_CASE(
+    "FlintQPoly gives the very Poly<Rational> of each formula: random rationals and the g of every scene of cases/",
+    "[exact][flint_poly]") {
   auto via_flint = [](const std::vector<RP>& g, auto formula) {
     std::vector<FlintQPoly> G;
     for (const auto& p : g) G.emplace_back(p);
@@ -120,7 +123,8 @@ TEST_CASE("FlintQPoly gives the very Poly<Rational> of each formula: random rati
       for (auto [j, i] : {std::pair{1, 1}, std::pair{1, 0}, std::pair{2, 2}, std::pair{2, -1}, std::pair{3, 3}}) {
         auto s = [j = j, i = i](const auto& G) { return subresultant_evidence(G, j, i); };
         const RP fl = via_flint(g, s), ref = s(g);
-        INFO("s(" << j << "," << i << "): degrees " << fl.degree() << " and " << ref.degree() << ", leading " << (fl.c.empty() ? Q(0) : fl.c.back()) << " and " << (ref.c.empty() ? Q(0) : ref.c.back()));
+        INFO("s(" << j << "," << i << "): degrees " << fl.degree() << " and " << ref.degree() << ", leading "
+                  << (fl.c.empty() ? Q(0) : fl.c.back()) << " and " << (ref.c.empty() ? Q(0) : ref.c.back()));
         CHECK(fl == ref);
         ++n;
       }
@@ -129,7 +133,10 @@ TEST_CASE("FlintQPoly gives the very Poly<Rational> of each formula: random rati
   };
   // random rational coefficients (denominators: the fmpq_poly path with a common denominator), some zero polynomials
   std::uint64_t state = 99;
-  auto next = [&state](std::uint64_t m) { state = state * 6364136223846793005ull + 1442695040888963407ull; return (state >> 33) % m; };
+  auto next = [&state](std::uint64_t m) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return (state >> 33) % m;
+  };
   int formulas = 0;
   for (int trial = 0; trial < 20; ++trial) {
     const std::size_t k = trial % 2 ? 4 : 5;
@@ -154,15 +161,16 @@ TEST_CASE("FlintQPoly gives the very Poly<Rational> of each formula: random rati
   CHECK(formulas >= 100);
 }
 
-TEST_CASE("FLINT's square-free factorisation and gcds give the same results from several threads at once", "[exact][flint_poly]") {
+TEST_CASE("FLINT's square-free factorisation and gcds give the same results from several threads at once",
+          "[exact][flint_poly]") {
   // eccd animate decides pair-frames on a thread pool; FLINT (Debian's is built with thread-local storage) must
   // answer each thread as it answers one: paper 002's projection F1 · F2^12 and 2D Δ's, four threads, eight rounds.
   std::vector<RP> polys;
-  for (const char* f : {"/cases/paper002/example.json", "/cases/paper003/example2.json", "/cases/paper003/example1.json"}) {
+  for (const char* f :
+       {"/cases/paper002/example.json", "/cases/paper003/example2.json", "/cases/paper003/example1.json"}) {
     try {
       polys.push_back(certificate_algebra(read_scene_file(std::string(ECCD_SOURCE_DIR) + f)).projection);
-    } catch (const std::exception&) {
-    }
+    } catch (const std::exception&) {}
   }
   REQUIRE(polys.size() >= 2);
   std::vector<std::vector<std::pair<RP, int>>> ref;

@@ -48,7 +48,8 @@ std::uint64_t base_seed() {
   static bool printed = false;
   if (!printed) {
     std::cout << "metamorphic: base seed=" << seed
-              << (std::getenv("ECCD_METAMORPHIC_SEED") ? " (from ECCD_METAMORPHIC_SEED)" : " (default; set ECCD_METAMORPHIC_SEED to change)")
+              << (std::getenv("ECCD_METAMORPHIC_SEED") ? " (from ECCD_METAMORPHIC_SEED)"
+                                                       : " (default; set ECCD_METAMORPHIC_SEED to change)")
               << "\n";
     printed = true;
   }
@@ -64,9 +65,7 @@ struct Rng : SeededRng {
   }
 };
 
-Answer exact_answer(const Scene& s) {
-  return s.dim == 2 ? solve_exact(s).answer : solve_exact_3d(s).answer;
-}
+Answer exact_answer(const Scene& s) { return s.dim == 2 ? solve_exact(s).answer : solve_exact_3d(s).answer; }
 
 // A random rational rotation (Pythagorean triple in 2D, integer quaternion
 // in 3D) followed by a translation of degree `tdeg` in t.
@@ -123,7 +122,7 @@ Scene multi_pass_scene(int dim, std::uint64_t seed, int k) {
     if (ok) ts.push_back(v);
   }
   RPoly x = RPoly::constant(Rational(r.uniform(3000, 5000)) * (r.uniform(0, 1) ? 1 : -1));
-  for (long u : ts) x = x * RPoly(std::vector<Rational>{Rational(-u, 10) , Rational(1)});
+  for (long u : ts) x = x * RPoly(std::vector<Rational>{Rational(-u, 10), Rational(1)});
   for (auto& c : x.c) c.canonicalize();
   auto shape = [&]() {
     std::vector<std::vector<Rational>> q(dim + 1, std::vector<Rational>(dim + 1, Rational(0)));
@@ -145,7 +144,10 @@ Scene multi_pass_scene(int dim, std::uint64_t seed, int k) {
   };
   if (dim == 2) {
     KinematicMotion km;
-    do { km.d[2] = rot(); km.d[3] = rot(); } while (vanishes_on_unit_interval(km.d[2] * km.d[2] + km.d[3] * km.d[3]));
+    do {
+      km.d[2] = rot();
+      km.d[3] = rot();
+    } while (vanishes_on_unit_interval(km.d[2] * km.d[2] + km.d[3] * km.d[3]));
     km.d[0] = Rational(1, 2) * (centre[0] * km.d[3] + centre[1] * km.d[2]);
     km.d[1] = Rational(1, 2) * (centre[1] * km.d[3] - centre[0] * km.d[2]);
     s.b = {shape(), Motion(km)};
@@ -235,7 +237,10 @@ void run_case(SceneCase c, int index) {
     auto t_start = std::chrono::steady_clock::now();
     Answer got = exact_answer(t.scene);
     double t_sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-    if (t_sec > slowest_sec) { slowest_sec = t_sec; slowest = t.name; }
+    if (t_sec > slowest_sec) {
+      slowest_sec = t_sec;
+      slowest = t.name;
+    }
     std::string why = answer_mismatch(t.mirrored ? mirror_answer(original) : original, got);
     INFO("transform " << t.name << ": answer " << answer_text(got));
     CHECK(why == "");
@@ -288,15 +293,17 @@ void run_combinations(const std::vector<Combination>& combos) {
 
 }  // namespace
 
-TEST_CASE("metamorphic: 2D generated scenes keep their exact answer under swap, rigid motions, scaling and time reversal",
-          "[metamorphic][exact]") {
+TEST_CASE(
+    "metamorphic: 2D generated scenes keep their exact answer under swap, rigid motions, scaling and time reversal",
+    "[metamorphic][exact]") {
   run_combinations({{2, "kinematic", {2, 3, 4}, {"colliding", "free", "touch", "near-miss"}, 3, true},
                     {2, "kinematic", {2, 4}, {"random"}, 4, true},
                     {2, "kinematic", {3, 5}, {"multi-pass"}, 4, true}});
 }
 
-TEST_CASE("metamorphic: 3D generated scenes keep their exact answer under swap, rigid motions, scaling and time reversal",
-          "[metamorphic][exact]") {
+TEST_CASE(
+    "metamorphic: 3D generated scenes keep their exact answer under swap, rigid motions, scaling and time reversal",
+    "[metamorphic][exact]") {
   run_combinations({{3, "euler", {2, 3, 4}, {"colliding", "free", "touch", "near-miss"}, 1, true},
                     {3, "affine", {1}, {"colliding", "free"}, 1, true},
                     {3, "affine", {2}, {"colliding", "free", "touch"}, 1, true},
@@ -377,8 +384,8 @@ TEST_CASE("metamorphic: the comparisons can fail", "[metamorphic][exact]") {
   for (auto& iv : no_swap.intervals) std::swap(iv.first, iv.second);
   no_swap.first_contact = no_swap.intervals.front().first;
   CHECK(answer_mismatch(no_swap, m_rev) != "");
-  std::cout << "metamorphic: non-vacuity check on multi-pass dim=2 seed=" << mp_seed << " intervals=" << m_orig.intervals.size()
-            << " ok" << std::endl;
+  std::cout << "metamorphic: non-vacuity check on multi-pass dim=2 seed=" << mp_seed
+            << " intervals=" << m_orig.intervals.size() << " ok" << std::endl;
 }
 
 // Not run by default (hidden tag; minutes): the same relations on larger

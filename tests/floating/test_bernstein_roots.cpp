@@ -76,9 +76,11 @@ TEST_CASE("double roots of Δ agree with exact isolation on the generated 2D cas
       bool near = false;
       for (const auto& r : c.dbl) near = near || (e.lo.get_d() - 1e-6 <= r.hi && r.lo <= e.hi.get_d() + 1e-6);
       if (e.multiplicity == 1) CHECK(near);
-      // A simple exact root at least 1e-3 from the others: one simple double root, to 1e-9 (the tests' double tolerance).
+      // A simple exact root at least 1e-3 from the others: one simple double root, to 1e-9 (the tests' double
+      // tolerance).
       bool alone = e.multiplicity == 1;
-      for (const auto& o : c.exact) if (&o != &e) alone = alone && std::fabs(mid(o) - mid(e)) > 1e-3;
+      for (const auto& o : c.exact)
+        if (&o != &e) alone = alone && std::fabs(mid(o) - mid(e)) > 1e-3;
       if (!alone) continue;
       int found = 0;
       for (const auto& r : c.dbl)

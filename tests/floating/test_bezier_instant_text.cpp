@@ -28,8 +28,14 @@ namespace {
 template <class T>
 int check_texts(const PipelineResult<T>& r, bool exact) {
   std::vector<const Instant*> all;
-  for (const auto& iv : r.answer.intervals) { all.push_back(&iv.first); all.push_back(&iv.second); }
-  for (const auto& iv : r.answer.contact_intervals) { all.push_back(&iv.first); all.push_back(&iv.second); }
+  for (const auto& iv : r.answer.intervals) {
+    all.push_back(&iv.first);
+    all.push_back(&iv.second);
+  }
+  for (const auto& iv : r.answer.contact_intervals) {
+    all.push_back(&iv.first);
+    all.push_back(&iv.second);
+  }
   for (const auto& i : r.answer.contacts) all.push_back(&i);
   for (const auto& i : r.answer.undecided) all.push_back(&i);
   if (r.answer.first_contact) all.push_back(&*r.answer.first_contact);
@@ -39,15 +45,18 @@ int check_texts(const PipelineResult<T>& r, bool exact) {
     INFO("instant with value " << i->value);
     REQUIRE_FALSE(i->approx.empty());
     const double back = std::stod(i->approx);
-    if (exact) CHECK(back == i->value);
-    else CHECK(std::fabs(back - i->value) <= 0x1p-52 * std::fmax(1.0, std::fabs(i->value)));
+    if (exact)
+      CHECK(back == i->value);
+    else
+      CHECK(std::fabs(back - i->value) <= 0x1p-52 * std::fmax(1.0, std::fabs(i->value)));
   }
   return int(all.size());
 }
 
 }  // namespace
 
-TEST_CASE("the Bezier pipeline's answer, cells and critical instants all have their text", "[floating][bezier][speed21]") {
+TEST_CASE("the Bezier pipeline's answer, cells and critical instants all have their text",
+          "[floating][bezier][speed21]") {
   std::uint64_t seed = test::seed_from_env(2111);
   INFO("seed " << seed);
   std::mt19937_64 rng(seed);

@@ -40,14 +40,17 @@ std::vector<R> by_column_sets(const std::array<std::array<R, H>, H>& a, const st
       for (int j = 0; j < H; ++j) c[i][j] = (mask >> j & 1u) ? a[i][j] : b[i][j];
     const int k = std::popcount(mask);
     R d = ring_det(c, zero);
-    if ((H - k) % 2) g[k] = g[k] - d; else g[k] = g[k] + d;
+    if ((H - k) % 2)
+      g[k] = g[k] - d;
+    else
+      g[k] = g[k] + d;
   }
   return g;
 }
 
 template <class T, int H>
-void random_matrices(std::mt19937_64& rng, std::array<std::array<Bern<T>, H>, H>& a, std::array<std::array<Bern<T>, H>, H>& b,
-                     auto make) {
+void random_matrices(std::mt19937_64& rng, std::array<std::array<Bern<T>, H>, H>& a,
+                     std::array<std::array<Bern<T>, H>, H>& b, auto make) {
   std::normal_distribution<double> nd(0.0, 1.0);
   std::uniform_int_distribution<int> deg(0, 2), zero_one(0, 5);
   for (auto* m : {&a, &b})
@@ -85,7 +88,8 @@ TEST_CASE("g_k by the shared expansion equal the 2^H determinants bit for bit", 
     {  // Bounded<double>, 4x4: values and running error bounds
       std::uniform_real_distribution<double> err(0.0, 1e-15);
       std::array<std::array<Bern<Bounded<double>>, 4>, 4> a, b;
-      random_matrices<Bounded<double>, 4>(rng, a, b, [&](double x) { return Bounded<double>(x, x == 0 ? 0.0 : err(rng)); });
+      random_matrices<Bounded<double>, 4>(rng, a, b,
+                                          [&](double x) { return Bounded<double>(x, x == 0 ? 0.0 : err(rng)); });
       const Bern<Bounded<double>> zero(std::vector<Bounded<double>>{Bounded<double>(0.0, 0.0)});
       const auto got = characteristic_coefficients_in<Bern<Bounded<double>>, 4>(a, b, zero);
       const auto want = by_column_sets<Bern<Bounded<double>>, 4>(a, b, zero);
@@ -111,7 +115,8 @@ TEST_CASE("g_k by the shared expansion equal the 2^H determinants bit for bit", 
   CHECK(compared > 1000);
 }
 
-TEST_CASE("the peak of F(., t0) from a half-precision witness u is the peak to double's noise", "[floating][bezier][speed21]") {
+TEST_CASE("the peak of F(., t0) from a half-precision witness u is the peak to double's noise",
+          "[floating][bezier][speed21]") {
   std::uint64_t seed = test::seed_from_env(5021);
   INFO("seed " << seed);
   std::mt19937_64 rng(seed);

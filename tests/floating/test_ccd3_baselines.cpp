@@ -21,15 +21,27 @@ using Q = mpq_class;
 
 namespace {
 
-template <class T> T base_like();
-template <> double base_like<double>() { return 1.0; }
-template <> Mpfr base_like<Mpfr>() { return Mpfr(Q(1), 128); }
-template <> Q base_like<Q>() { return Q(1); }
+template <class T>
+T base_like();
+template <>
+double base_like<double>() {
+  return 1.0;
+}
+template <>
+Mpfr base_like<Mpfr>() {
+  return Mpfr(Q(1), 128);
+}
+template <>
+Q base_like<Q>() {
+  return Q(1);
+}
 
 Scene sphere_scene(const std::string& name) { return read_scene_file(case_path("spheres/" + name + ".json")); }
 
 template <class T>
-MovingPair3<T> pair_in(const Scene& s) { return to_arithmetic<T, H_3D>(prepare_pair<H_3D>(s), base_like<T>()); }
+MovingPair3<T> pair_in(const Scene& s) {
+  return to_arithmetic<T, H_3D>(prepare_pair<H_3D>(s), base_like<T>());
+}
 
 PipelineResult<Rational> exact_3d(const Scene& s, bool first_contact = false) {
   ExactPolicy pol;
@@ -39,7 +51,10 @@ PipelineResult<Rational> exact_3d(const Scene& s, bool first_contact = false) {
 
 // An exact instant as a double: the midpoint of its bracket (width <= 2^-64).
 double value(const Instant& i) {
-  if (i.certified()) { Q m = (*i.lo + *i.hi) / 2; return m.get_d(); }
+  if (i.certified()) {
+    Q m = (*i.lo + *i.hi) / 2;
+    return m.get_d();
+  }
   return std::stod(i.approx);
 }
 
@@ -75,38 +90,38 @@ TEST_CASE("the exact ground truth reproduces the analytic answer of spheres-cros
   CHECK(ex.answer.contacts.size() == 2);
 }
 
-TEMPLATE_TEST_CASE("sampling:100 and sampling:1000 find the exact intervals, each endpoint inside and within 1/N", "[baseline3d][sampling]",
-                   double, Mpfr) {
+TEMPLATE_TEST_CASE("sampling:100 and sampling:1000 find the exact intervals, each endpoint inside and within 1/N",
+                   "[baseline3d][sampling]", double, Mpfr) {
   using T = TestType;
   for (const int N : {100, 1000})
-  for (const auto& name : kWellSeparatedEvents) {
-    INFO(name << ", N = " << N);
-    Scene s = sphere_scene(name);
-    auto ex = exact_3d(s);
-    auto sa = ccd_sampling(pair_in<T>(s), N, false);
-    INFO("exact " << brief(ex.answer) << "   sampling " << brief(sa.answer));
-    CHECK(sa.variant == Variant::answer);
-    CHECK(sa.status_at_0 == ex.status_at_0);
-    CHECK(sa.cells.size() == std::size_t(N + 1));
-    CHECK(sa.answer.undecided.empty());
-    CHECK(sa.answer.collides == ex.answer.collides);
-    REQUIRE(sa.answer.intervals.size() == ex.answer.intervals.size());
-    CHECK(max_endpoint_error(sa.answer, ex.answer) < 1.0 / N);
-    // the reported run lies inside the true interval: a start is a colliding
-    // sample at or after the true start, an end one at or before the true end
-    for (std::size_t i = 0; i < ex.answer.intervals.size(); ++i) {
-      CHECK(value(sa.answer.intervals[i].first) >= value(ex.answer.intervals[i].first));
-      CHECK(value(sa.answer.intervals[i].second) <= value(ex.answer.intervals[i].second));
+    for (const auto& name : kWellSeparatedEvents) {
+      INFO(name << ", N = " << N);
+      Scene s = sphere_scene(name);
+      auto ex = exact_3d(s);
+      auto sa = ccd_sampling(pair_in<T>(s), N, false);
+      INFO("exact " << brief(ex.answer) << "   sampling " << brief(sa.answer));
+      CHECK(sa.variant == Variant::answer);
+      CHECK(sa.status_at_0 == ex.status_at_0);
+      CHECK(sa.cells.size() == std::size_t(N + 1));
+      CHECK(sa.answer.undecided.empty());
+      CHECK(sa.answer.collides == ex.answer.collides);
+      REQUIRE(sa.answer.intervals.size() == ex.answer.intervals.size());
+      CHECK(max_endpoint_error(sa.answer, ex.answer) < 1.0 / N);
+      // the reported run lies inside the true interval: a start is a colliding
+      // sample at or after the true start, an end one at or before the true end
+      for (std::size_t i = 0; i < ex.answer.intervals.size(); ++i) {
+        CHECK(value(sa.answer.intervals[i].first) >= value(ex.answer.intervals[i].first));
+        CHECK(value(sa.answer.intervals[i].second) <= value(ex.answer.intervals[i].second));
+      }
+      // every run end with a separate neighbour is a transition: 2 for crossing, 1 for overlap-start/end
+      std::size_t inner_ends = 0;
+      for (const auto& [a, b] : ex.answer.intervals) inner_ends += (value(a) > 0) + (value(b) < 1);
+      CHECK(sa.critical.size() == inner_ends);
     }
-    // every run end with a separate neighbour is a transition: 2 for crossing, 1 for overlap-start/end
-    std::size_t inner_ends = 0;
-    for (const auto& [a, b] : ex.answer.intervals) inner_ends += (value(a) > 0) + (value(b) < 1);
-    CHECK(sa.critical.size() == inner_ends);
-  }
 }
 
-TEMPLATE_TEST_CASE("marching:100 finds the exact intervals, endpoints within 1/N of the truth", "[baseline3d][marching]",
-                   double, Mpfr) {
+TEMPLATE_TEST_CASE("marching:100 finds the exact intervals, endpoints within 1/N of the truth",
+                   "[baseline3d][marching]", double, Mpfr) {
   // The asserted bound is the grid spacing h = 1/N. A refined instant lies
   // in the strip [t_j, t_j + h] where the row status changes; when every row
   // has its true status (checked below against the exact static test at the
@@ -145,8 +160,8 @@ TEMPLATE_TEST_CASE("marching:100 finds the exact intervals, endpoints within 1/N
   }
 }
 
-TEMPLATE_TEST_CASE("sampling sees the isolated touch of spheres-touch only when 1/2 is a sample (even N)", "[baseline3d][sampling]",
-                   double, Mpfr) {
+TEMPLATE_TEST_CASE("sampling sees the isolated touch of spheres-touch only when 1/2 is a sample (even N)",
+                   "[baseline3d][sampling]", double, Mpfr) {
   // A documented property of sampling, not a bug: the collision set is {1/2}.
   using T = TestType;
   Scene s = sphere_scene("spheres-touch");
@@ -173,7 +188,8 @@ TEMPLATE_TEST_CASE("sampling sees the isolated touch of spheres-touch only when 
   }
 }
 
-TEMPLATE_TEST_CASE("marching sees the isolated touch only through a grid row at 1/2", "[baseline3d][marching]", double, Mpfr) {
+TEMPLATE_TEST_CASE("marching sees the isolated touch only through a grid row at 1/2", "[baseline3d][marching]", double,
+                   Mpfr) {
   // With N odd no row is at 1/2 and both rows around it are separate: missed.
   // With N even the row at 1/2 has F(., 1/2) <= 0 with its maximum 0 between
   // grid points, so it is in collision, and the refined transitions on both
@@ -207,7 +223,8 @@ TEMPLATE_TEST_CASE("marching sees the isolated touch only through a grid row at 
   }
 }
 
-TEMPLATE_TEST_CASE("first-contact-only stops after the first interval, with the same first contact", "[baseline3d]", double, Mpfr) {
+TEMPLATE_TEST_CASE("first-contact-only stops after the first interval, with the same first contact", "[baseline3d]",
+                   double, Mpfr) {
   using T = TestType;
   Scene s = sphere_scene("spheres-crossing");
   auto pair = pair_in<T>(s);
@@ -228,7 +245,8 @@ TEMPLATE_TEST_CASE("first-contact-only stops after the first interval, with the 
   CHECK(first_m.cells.size() < full_m.cells.size());
 }
 
-TEST_CASE("the baselines in exact arithmetic: sampling's run ends are proved inside the collision set", "[baseline3d][exact]") {
+TEST_CASE("the baselines in exact arithmetic: sampling's run ends are proved inside the collision set",
+          "[baseline3d][exact]") {
   const int N = 64;
   for (const auto& name : kWellSeparatedEvents) {
     INFO(name);
@@ -258,12 +276,17 @@ TEST_CASE("the baselines reject a grid without cells", "[baseline3d]") {
 // in the power basis, are wrong at the 1e-2 level near t = 0.86 by
 // cancellation, which moves double's endpoints whatever N is: the report
 // measures that, it is not a property to assert.)
-TEST_CASE("paper002's example in MPFR 128: sampling and marching within 1/N of the exact intervals", "[baseline3d][paper002]") {
+TEST_CASE("paper002's example in MPFR 128: sampling and marching within 1/N of the exact intervals",
+          "[baseline3d][paper002]") {
   Scene s = read_scene_file(case_path("paper002/example.json"));
   auto ex = exact_3d(s);
   REQUIRE(ex.answer.intervals.size() == 2);
   const auto pm = pair_in<Mpfr>(s);
-  struct Run { const char* method; int N; PipelineResult<Mpfr> r; };
+  struct Run {
+    const char* method;
+    int N;
+    PipelineResult<Mpfr> r;
+  };
   std::vector<Run> runs;
   runs.push_back({"sampling", 100, ccd_sampling(pm, 100, false)});
   runs.push_back({"sampling", 1000, ccd_sampling(pm, 1000, false)});

@@ -8,7 +8,6 @@
 
 #include <catch2/catch.hpp>
 
-
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -31,8 +30,10 @@ TEST_CASE("double (every basis) reproduces the exact intervals on a well-conditi
     auto fl = solve_floating<double>(s, b, 53, 1.0);
     REQUIRE(fl.answer.intervals.size() == ex.answer.intervals.size());
     for (std::size_t i = 0; i < ex.answer.intervals.size(); ++i) {
-      CHECK(std::abs(std::stod(fl.answer.intervals[i].first.approx) - std::stod(ex.answer.intervals[i].first.approx)) < 1e-9);
-      CHECK(std::abs(std::stod(fl.answer.intervals[i].second.approx) - std::stod(ex.answer.intervals[i].second.approx)) < 1e-9);
+      CHECK(std::abs(std::stod(fl.answer.intervals[i].first.approx) - std::stod(ex.answer.intervals[i].first.approx)) <
+            1e-9);
+      CHECK(std::abs(std::stod(fl.answer.intervals[i].second.approx) -
+                     std::stod(ex.answer.intervals[i].second.approx)) < 1e-9);
     }
     CHECK(fl.answer.contacts.size() == ex.answer.contacts.size());
   }
@@ -68,7 +69,10 @@ TEST_CASE("MPFR at 1024 bits agrees with exact on 003 Example 2 and all its shif
     // double root of Δ at an isolated touch into two touches ~1e-100 apart.)
     auto ends = [](const Answer& a) {
       std::vector<double> e;
-      for (const auto& [x, y] : a.intervals) { e.push_back(std::stod(x.approx)); e.push_back(std::stod(y.approx)); }
+      for (const auto& [x, y] : a.intervals) {
+        e.push_back(std::stod(x.approx));
+        e.push_back(std::stod(y.approx));
+      }
       return e;
     };
     auto covered = [](const std::vector<double>& xs, const std::vector<double>& ys) {
@@ -111,8 +115,9 @@ double relative_coefficient_error(const Bern<double>& b, const Bern<Q>& e) {
 // Bernstein form "numerically more stable" (and 002 IV). Measured here on the
 // coefficients root isolation works on: Δ built in double from the same g_k
 // (prepared input) in each basis, against the exact Δ in Bernstein form.
-TEST_CASE("003 Example 2 family: Δ built in double has a smaller coefficient error in Bernstein form than in power form",
-          "[floating][paper003][coefficient_error]") {
+TEST_CASE(
+    "003 Example 2 family: Δ built in double has a smaller coefficient error in Bernstein form than in power form",
+    "[floating][paper003][coefficient_error]") {
   for (const auto& n : example2_family()) {
     INFO(n);
     Scene s = read_scene_file(case_path("paper003/" + n + ".json"));
@@ -122,8 +127,10 @@ TEST_CASE("003 Example 2 family: Δ built in double has a smaller coefficient er
     ExactPolicy ex;
     const Poly<Q> dq = discriminant_of(gq, ex);
     const Bern<Q> exact = to_bernstein(dq);
-    const double power = relative_coefficient_error(discriminant_of(gd, FloatingPolicy<double>(Basis::power, 53, 1.0)), exact);
-    const double bern = relative_coefficient_error(discriminant_of(gd, FloatingPolicy<double>(Basis::bernstein, 53, 1.0)), exact);
+    const double power =
+        relative_coefficient_error(discriminant_of(gd, FloatingPolicy<double>(Basis::power, 53, 1.0)), exact);
+    const double bern =
+        relative_coefficient_error(discriminant_of(gd, FloatingPolicy<double>(Basis::bernstein, 53, 1.0)), exact);
     INFO("relative coefficient error of Δ: power " << power << ", bernstein " << bern);
     CHECK(bern < power);
     CHECK(bern < 1e-6);
@@ -134,7 +141,8 @@ TEST_CASE("003 Example 2 family: Δ built in double has a smaller coefficient er
 // the workbench measures: 003 saw collisions reported for d < 1e-6); what must
 // hold is that MPFR at 128 bits in Bernstein form, well above what these
 // shifts need, agrees with the exact answer wherever it claims one.
-TEST_CASE("003 Example 2 family: MPFR 128 (Bernstein) never contradicts the exact collides", "[floating][mpfr][paper003]") {
+TEST_CASE("003 Example 2 family: MPFR 128 (Bernstein) never contradicts the exact collides",
+          "[floating][mpfr][paper003]") {
   for (const auto& n : example2_family()) {
     INFO(n);
     Scene s = read_scene_file(case_path("paper003/" + n + ".json"));
@@ -142,7 +150,9 @@ TEST_CASE("003 Example 2 family: MPFR 128 (Bernstein) never contradicts the exac
     auto m128 = solve_floating<Mpfr>(s, Basis::bernstein, 128, Mpfr(Q(1), 128));
     INFO("exact " << brief(ex.answer) << "; mpfr:128 " << brief(m128.answer));
     // a collision found is a claim; "free" is one only when nothing is left undecided
-    if (m128.answer.collides) CHECK(ex.answer.collides);
-    else if (m128.answer.undecided.empty()) CHECK_FALSE(ex.answer.collides);
+    if (m128.answer.collides)
+      CHECK(ex.answer.collides);
+    else if (m128.answer.undecided.empty())
+      CHECK_FALSE(ex.answer.collides);
   }
 }

@@ -44,13 +44,14 @@ std::string confidently_wrong(const nlohmann::json& fl, const nlohmann::json& ex
   if (fl["intervals"].size() != ex["intervals"].size()) return "number of intervals differs";
   for (std::size_t i = 0; i < ex["intervals"].size(); ++i)
     for (int k = 0; k < 2; ++k)
-      if (std::abs(approx(fl["intervals"][i][k]) - approx(ex["intervals"][i][k])) > tol) return "an interval end is off by more than tol";
+      if (std::abs(approx(fl["intervals"][i][k]) - approx(ex["intervals"][i][k])) > tol)
+        return "an interval end is off by more than tol";
   return "";
 }
 
 // Runs arith under a deadline; checks it ended within the deadline (plus slack) and is not confidently wrong.
-void check_run(const Scene& s, const nlohmann::json& ex, const std::string& arith, const std::string& method, double budget,
-               InputMode input = InputMode::rounded) {
+void check_run(const Scene& s, const nlohmann::json& ex, const std::string& arith, const std::string& method,
+               double budget, InputMode input = InputMode::rounded) {
   INFO(s.name << " " << arith << " " << method << " input " << to_string(input));
   // the budget and the bound are processor time of this thread (kernel/budget.hpp): a busy machine changes neither
   const double t0 = thread_cpu_seconds();
@@ -72,8 +73,9 @@ void check_run(const Scene& s, const nlohmann::json& ex, const std::string& arit
 
 }  // namespace
 
-TEST_CASE("a degree-2 kinematic scene written with 6 significant digits: double and MPFR answer, never confidently wrong",
-          "[float-input][floating][budget]") {
+TEST_CASE(
+    "a degree-2 kinematic scene written with 6 significant digits: double and MPFR answer, never confidently wrong",
+    "[float-input][floating][budget]") {
   Scene s = read_scene_file(kData + "kinematic-deg2-colliding-6digits.json");
   nlohmann::json ex = solve_with(s, "exact");
   REQUIRE(ex["collides"] == true);
@@ -97,7 +99,8 @@ TEST_CASE("003 Example 2 in rounded input (Δ of degree 192): an answer within t
   CHECK(solve_with(s, "double", "bezier", InputMode::prepared)["projection_degree"] == 96);
 }
 
-TEST_CASE("003 Example 2 with a semi-axis 1.333333333333 and a shape entry -1e-300 terminates", "[float-input][floating][budget]") {
+TEST_CASE("003 Example 2 with a semi-axis 1.333333333333 and a shape entry -1e-300 terminates",
+          "[float-input][floating][budget]") {
   Scene s = read_scene_file(kData + "paper003-example2-tiny-entries.json");
   nlohmann::json ex = solve_with(s, "exact");
   for (const char* a : {"double", "mpfr:53", "mpfr:128"}) {
@@ -115,7 +118,8 @@ TEST_CASE("the issue's 3D translating pair: every floating method ends within it
   check_run(s, ex, "mpfr:64", "projection", 5.0);
 }
 
-TEST_CASE("a deadline that has passed ends every floating method with undecided, never an answer", "[float-input][floating]") {
+TEST_CASE("a deadline that has passed ends every floating method with undecided, never an answer",
+          "[float-input][floating]") {
   Scene s2 = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/paper003/example2.json");
   Scene s3 = read_scene_file(kData + "missed-0.021-3d.json");
   ScopedDeadline d(1e-9);
@@ -130,7 +134,8 @@ TEST_CASE("a deadline that has passed ends every floating method with undecided,
   CHECK(!r["undecided"].empty());
 }
 
-TEST_CASE("numbers beyond double's range: overflow is reported as undecided with the reason", "[float-input][floating]") {
+TEST_CASE("numbers beyond double's range: overflow is reported as undecided with the reason",
+          "[float-input][floating]") {
   Scene s = read_scene_file(kData + "kinematic-deg2-colliding-6digits.json");
   // Scale object b's motion coefficients to 1e200: N(t) then has entries ~1e400, beyond double.
   auto& k = std::get<KinematicMotion>(s.b.motion);
@@ -147,8 +152,9 @@ TEST_CASE("numbers beyond double's range: overflow is reported as undecided with
   CHECK(confidently_wrong(m, ex) == "");
 }
 
-TEST_CASE("Bounded<double>: the value is plain double's, the bound covers the true error, and cancellation is uncertain",
-          "[float-input][running-error]") {
+TEST_CASE(
+    "Bounded<double>: the value is plain double's, the bound covers the true error, and cancellation is uncertain",
+    "[float-input][running-error]") {
   using B = Bounded<double>;
   B one(1.0, 0);
   auto in = [&](const char* q) { return scalar_traits<B>::from_rational(mpq_class(q), one); };

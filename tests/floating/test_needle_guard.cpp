@@ -26,7 +26,8 @@ Scene scene_of(const NeedleSpec& sp) {
 
 // "" if `got` (no undecided instant) agrees with `ex` (collides, the intervals' ends within tol), else what differs.
 std::string confident_difference(const Answer& got, const Answer& ex, double tol) {
-  if (got.collides != ex.collides) return std::string("collides ") + (got.collides ? "true" : "false") + ", exact " + (ex.collides ? "true" : "false");
+  if (got.collides != ex.collides)
+    return std::string("collides ") + (got.collides ? "true" : "false") + ", exact " + (ex.collides ? "true" : "false");
   if (got.intervals.size() != ex.intervals.size())
     return std::to_string(got.intervals.size()) + " interval(s), exact " + std::to_string(ex.intervals.size());
   for (std::size_t i = 0; i < got.intervals.size(); ++i)
@@ -35,8 +36,8 @@ std::string confident_difference(const Answer& got, const Answer& ex, double tol
       const double b = k ? ex.intervals[i].second.value : ex.intervals[i].first.value;
       if (!(std::fabs(a - b) <= tol)) {
         std::ostringstream o;
-        o << "interval " << i << " [" << got.intervals[i].first.approx << ", " << got.intervals[i].second.approx << "], exact ["
-          << ex.intervals[i].first.approx << ", " << ex.intervals[i].second.approx << "]";
+        o << "interval " << i << " [" << got.intervals[i].first.approx << ", " << got.intervals[i].second.approx
+          << "], exact [" << ex.intervals[i].first.approx << ", " << ex.intervals[i].second.approx << "]";
         return o.str();
       }
     }
@@ -55,7 +56,8 @@ Solution run(const Scene& s, const std::string& arith, double cpu_budget) {
 
 TEST_CASE("needle family: the scenes are what their construction says (exact pipeline)", "[needle][generator]") {
   for (const auto& sp : needle_family_plan()) {
-    if (sp.r_exponent != 0 && sp.r_exponent != 20 && sp.r_exponent != 300) continue;  // the construction does not depend on R
+    if (sp.r_exponent != 0 && sp.r_exponent != 20 && sp.r_exponent != 300)
+      continue;  // the construction does not depend on R
     const Scene s = scene_of(sp);
     INFO(s.name);
     SolveOptions o;
@@ -80,7 +82,8 @@ TEST_CASE("needle family: the hard cases are undecided or right, never collides 
   {
     const Scene s = scene_of({3, 20, "miss", 3});
     const Solution d = run(s, "double", 20);
-    INFO("double: collides " << d.answer.collides << ", " << d.answer.intervals.size() << " interval(s), " << d.answer.undecided.size() << " undecided");
+    INFO("double: collides " << d.answer.collides << ", " << d.answer.intervals.size() << " interval(s), "
+                             << d.answer.undecided.size() << " undecided");
     CHECK((!d.answer.collides || !d.answer.undecided.empty()));
     CHECK(d.answer.intervals.empty());
   }
@@ -112,7 +115,10 @@ TEST_CASE("needle family: every guarded answer agrees with exact or is undecided
     for (const std::string arith : {"double", "mpfr:128", "mpfr:256"}) {
       const Solution got = run(s, arith, 10);
       ++runs;
-      if (!got.answer.undecided.empty()) { ++undecided; continue; }
+      if (!got.answer.undecided.empty()) {
+        ++undecided;
+        continue;
+      }
       const std::string why = confident_difference(got.answer, ex, 1e-6);
       if (!why.empty()) wrong << "  " << s.name << " " << arith << ": " << why << "\n";
     }

@@ -20,8 +20,8 @@
 TEST_CASE("fuzz: the animation reader gives an animation or a clear SceneError on mutated files", "[fuzz][animation]") {
   const std::uint64_t seed = eccd::test::fuzz_seed();
   const double budget = eccd::test::fuzz_seconds() / 2;
-  std::fprintf(stderr, "fuzz animation reader: seed %llu (ECCD_FUZZ_SEED=%llu to repeat), %.0f s\n", (unsigned long long)seed,
-               (unsigned long long)seed, budget);
+  std::fprintf(stderr, "fuzz animation reader: seed %llu (ECCD_FUZZ_SEED=%llu to repeat), %.0f s\n",
+               (unsigned long long)seed, (unsigned long long)seed, budget);
   INFO("ECCD_FUZZ_SEED=" << seed);
   std::vector<std::string> corpus;
   for (auto& e : std::filesystem::directory_iterator(std::filesystem::path(ECCD_SOURCE_DIR) / "cases/animations")) {
@@ -48,9 +48,12 @@ TEST_CASE("fuzz: the animation reader gives an animation or a clear SceneError o
     } catch (const eccd::SceneError& e) {
       ++rejected;
       const std::string msg = e.what();
-      if (msg.rfind(label + ": ", 0) != 0) unexpected = "SceneError without the file label: " + msg.substr(0, 300);
-      else if (msg.size() > 4000) unexpected = "a message of " + std::to_string(msg.size()) + " characters";
-      else if (msg.find("internal error") != std::string::npos) unexpected = "internal error: " + msg.substr(0, 300);
+      if (msg.rfind(label + ": ", 0) != 0)
+        unexpected = "SceneError without the file label: " + msg.substr(0, 300);
+      else if (msg.size() > 4000)
+        unexpected = "a message of " + std::to_string(msg.size()) + " characters";
+      else if (msg.find("internal error") != std::string::npos)
+        unexpected = "internal error: " + msg.substr(0, 300);
     } catch (const std::exception& e) {
       unexpected = std::string("an exception other than SceneError: ") + e.what();
     }

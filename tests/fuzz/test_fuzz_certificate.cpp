@@ -1,12 +1,10 @@
 // Fuzz: the certificate checker (certificate/check_certificate.hpp) on mutated
-// certificates of a few corpus scenes (one of them a Bézier certificate from --arith certified). The certificate text is mutated, then
-// parsed (a text that is not JSON is an unreadable file: exit 2 at the command
-// line, not the checker's business) and checked. Every mutant must give a
-// verdict (VALID or REJECTED with the claim named), never an exception that
-// the command line would call an internal error (json exceptions,
-// std::logic_error, ...), never take long; and a VALID verdict must certify
-// the genuine answer (a mutant cannot forge another one). Runs
-// ECCD_FUZZ_SECONDS (default 10) from ECCD_FUZZ_SEED (default random; printed).
+// certificates of a few corpus scenes (one of them a Bézier certificate from --arith certified). The certificate text
+// is mutated, then parsed (a text that is not JSON is an unreadable file: exit 2 at the command line, not the checker's
+// business) and checked. Every mutant must give a verdict (VALID or REJECTED with the claim named), never an exception
+// that the command line would call an internal error (json exceptions, std::logic_error, ...), never take long; and a
+// VALID verdict must certify the genuine answer (a mutant cannot forge another one). Runs ECCD_FUZZ_SECONDS (default
+// 10) from ECCD_FUZZ_SEED (default random; printed).
 #include "compare/regress.hpp"
 #include "certificate/write/bezier_certificate.hpp"
 #include "certificate/write/exact_certificate.hpp"
@@ -44,7 +42,8 @@ std::string slurp(const std::string& p) {
 TEST_CASE("fuzz: the certificate checker gives a verdict on mutated certificates", "[fuzz][certificate]") {
   const std::uint64_t seed = eccd::test::fuzz_seed();
   const double budget = eccd::test::fuzz_seconds();
-  std::fprintf(stderr, "fuzz certificate checker: seed %llu (ECCD_FUZZ_SEED=%llu to repeat), %.0f s (ECCD_FUZZ_SECONDS)\n",
+  std::fprintf(stderr,
+               "fuzz certificate checker: seed %llu (ECCD_FUZZ_SEED=%llu to repeat), %.0f s (ECCD_FUZZ_SECONDS)\n",
                (unsigned long long)seed, (unsigned long long)seed, budget);
   INFO("ECCD_FUZZ_SEED=" << seed);
   std::vector<Genuine> genuine;
@@ -81,7 +80,10 @@ TEST_CASE("fuzz: the certificate checker gives a verdict on mutated certificates
     std::string how;
     std::string text = m.pick(3) == 0 ? m.mutate(g.text, how) : m.mutate_value(g.text, how);
     nlohmann::json cert = nlohmann::json::parse(text, nullptr, false);
-    if (cert.is_discarded()) { ++unparsable; continue; }
+    if (cert.is_discarded()) {
+      ++unparsable;
+      continue;
+    }
     ++runs;
     const double t0 = eccd::thread_cpu_seconds();  // processor time: a busy machine does not make an input slow
     std::string problem;
@@ -122,7 +124,8 @@ TEST_CASE("fuzz: the certificate checker gives a verdict on mutated certificates
     INFO(p.first << " time(s): " << p.second);
     CHECK(false);
   }
-  std::fprintf(stderr, "fuzz certificate checker: %ld checked (%ld VALID, %ld REJECTED), %ld not JSON, slowest %.3f s\n", runs, valid,
-               rejected, unparsable, slowest);
+  std::fprintf(stderr,
+               "fuzz certificate checker: %ld checked (%ld VALID, %ld REJECTED), %ld not JSON, slowest %.3f s\n", runs,
+               valid, rejected, unparsable, slowest);
   CHECK(runs > 0);
 }

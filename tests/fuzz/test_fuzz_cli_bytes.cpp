@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::vector<std::string> kBadBytes = {
-    "\xff", "\xfe", "\x80", "\xc0\xaf", "\xe0\x80\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xc3", "\xe2\x82", "\xf0\x9f\x98"};
+    "\xff", "\xfe",     "\x80",        "\xc0\xaf", "\xe0\x80\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80",
+    "\xc3", "\xe2\x82", "\xf0\x9f\x98"};
 
 std::string insert_bad(std::mt19937_64& rng, std::string text) {
   const int k = 1 + int(rng() % 3);
@@ -33,8 +34,10 @@ std::string insert_bad(std::mt19937_64& rng, std::string text) {
     const std::string& b = kBadBytes[rng() % kBadBytes.size()];
     std::size_t at;
     const std::size_t quote = text.find('"', rng() % (text.size() + 1));
-    if (quote != std::string::npos && rng() % 2) at = quote + 1;  // inside a string (a key or a value)
-    else at = rng() % (text.size() + 1);
+    if (quote != std::string::npos && rng() % 2)
+      at = quote + 1;  // inside a string (a key or a value)
+    else
+      at = rng() % (text.size() + 1);
     text.insert(at, b);
   }
   return text;
@@ -42,8 +45,9 @@ std::string insert_bad(std::mt19937_64& rng, std::string text) {
 
 }  // namespace
 
-TEST_CASE("fuzz: bytes that are not UTF-8 in every reader's input and in file names give valid JSON and a table exit code",
-          "[fuzz][cli][utf8]") {
+TEST_CASE(
+    "fuzz: bytes that are not UTF-8 in every reader's input and in file names give valid JSON and a table exit code",
+    "[fuzz][cli][utf8]") {
   const std::uint64_t seed = eccd::test::fuzz_seed();
   long runs = 48;
   if (const char* s = std::getenv("ECCD_FUZZ_CLI_RUNS")) runs = std::strtol(s, nullptr, 10);
@@ -92,8 +96,7 @@ TEST_CASE("fuzz: bytes that are not UTF-8 in every reader's input and in file na
     bool ok = false;
     try {
       ok = nlohmann::json::parse(run.out).is_object();
-    } catch (const std::exception&) {
-    }
+    } catch (const std::exception&) {}
     CHECK(ok);
     fs::remove(file);
   }

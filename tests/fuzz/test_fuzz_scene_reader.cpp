@@ -62,9 +62,12 @@ TEST_CASE("fuzz: the scene reader gives a scene or a clear SceneError on mutated
     } catch (const eccd::SceneError& e) {
       ++rejected;
       const std::string msg = e.what();
-      if (msg.rfind(label + ": ", 0) != 0) unexpected = "SceneError without the file label: " + msg.substr(0, 300);
-      else if (msg.size() > 4000) unexpected = "a message of " + std::to_string(msg.size()) + " characters";
-      else if (msg.find("internal error") != std::string::npos) unexpected = "internal error: " + msg.substr(0, 300);
+      if (msg.rfind(label + ": ", 0) != 0)
+        unexpected = "SceneError without the file label: " + msg.substr(0, 300);
+      else if (msg.size() > 4000)
+        unexpected = "a message of " + std::to_string(msg.size()) + " characters";
+      else if (msg.find("internal error") != std::string::npos)
+        unexpected = "internal error: " + msg.substr(0, 300);
     } catch (const std::exception& e) {
       unexpected = std::string("an exception other than SceneError: ") + e.what();
     }
@@ -77,7 +80,8 @@ TEST_CASE("fuzz: the scene reader gives a scene or a clear SceneError on mutated
       FAIL((unexpected.empty() ? std::string("one input took more than 10 s") : unexpected));
     }
   }
-  std::fprintf(stderr, "fuzz scene reader: %ld inputs (%ld accepted, %ld rejected), slowest %.3f s\n", runs, accepted, rejected, slowest);
+  std::fprintf(stderr, "fuzz scene reader: %ld inputs (%ld accepted, %ld rejected), slowest %.3f s\n", runs, accepted,
+               rejected, slowest);
   CHECK(runs > 0);
   CHECK(rejected > 0);
 }

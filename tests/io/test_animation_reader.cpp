@@ -18,17 +18,25 @@ namespace {
 json good3d() {
   json pose0 = {{"position", {"0", "0", "0"}}, {"orientation", {"1", "0", "0", "0"}}};
   json pose1 = {{"position", {"1/2", "0", "0"}}, {"orientation", {"0.9", "0.1", "0", "0"}}};
-  json pose2 = {{"position", {"1", "0", "0"}}, {"orientation", {"0.8", "0.2", "0", "0"}},
+  json pose2 = {{"position", {"1", "0", "0"}},
+                {"orientation", {"0.8", "0.2", "0", "0"}},
                 {"deformation", {{"1.1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}}}};
-  json body = {{"name", "a"}, {"group", "g1"}, {"shape", {{"semi_axes", {"1", "0.5", "0.5"}}}}, {"poses", {pose0, pose1, pose2}}};
+  json body = {{"name", "a"},
+               {"group", "g1"},
+               {"shape", {{"semi_axes", {"1", "0.5", "0.5"}}}},
+               {"poses", {pose0, pose1, pose2}}};
   json b2 = body;
   b2["name"] = "b";
   b2["group"] = "g2";
   json b3 = body;
   b3["name"] = "c";
   b3["group"] = "g2";
-  return {{"format", "ellipse-ccd-animation/1"}, {"name", "t"}, {"dim", 3}, {"times", {"0", "1/30", "2/30"}},
-          {"bodies", {body, b2, b3}}, {"pairs", "between-groups"}};
+  return {{"format", "ellipse-ccd-animation/1"},
+          {"name", "t"},
+          {"dim", 3},
+          {"times", {"0", "1/30", "2/30"}},
+          {"bodies", {body, b2, b3}},
+          {"pairs", "between-groups"}};
 }
 
 // The message of reading `j` (dumped), or "" if it reads.
@@ -87,8 +95,8 @@ TEST_CASE("animation reader: format, malformed JSON, unknown keys", "[animation]
   require_error(j, "/bodies/0/poses/1/velocity", "unknown key \"velocity\" in a pose");
   REQUIRE(error_of(std::string("{\"format\": ")).find("anim.json: line 1") == 0);
   // duplicate keys, as in scenes
-  REQUIRE(error_of(std::string("{\"format\": \"ellipse-ccd-animation/1\", \"name\": \"x\", \"name\": \"y\"}")).find("duplicate key") !=
-          std::string::npos);
+  REQUIRE(error_of(std::string("{\"format\": \"ellipse-ccd-animation/1\", \"name\": \"x\", \"name\": \"y\"}"))
+              .find("duplicate key") != std::string::npos);
 }
 
 TEST_CASE("animation reader: a JSON number with a fraction part", "[animation]") {

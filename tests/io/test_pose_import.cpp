@@ -70,7 +70,8 @@ TEST_CASE("a CSV of poses becomes a valid animation, times in order", "[pose_imp
 }
 
 TEST_CASE("CSV errors name the file, the line and the column", "[pose_import]") {
-  CHECK(csv_error("0,mover,0,0,0,1,0,0,0\n0,rest,0,0,0,1,0,0,0\n1,mover,0,0,x,1,0,0,0\n").rfind("p.csv: line 3, column 5 (z): ", 0) == 0);
+  CHECK(csv_error("0,mover,0,0,0,1,0,0,0\n0,rest,0,0,0,1,0,0,0\n1,mover,0,0,x,1,0,0,0\n")
+            .rfind("p.csv: line 3, column 5 (z): ", 0) == 0);
   CHECK(csv_error("0,mover,0,0,0,1,0,0,0\n0,rest,0,0\n").rfind("p.csv: line 2: expected 9 columns", 0) == 0);
   CHECK(csv_error("0,ghost,0,0,0,1,0,0,0\n").rfind("p.csv: line 1, column 2 (body): \"ghost\"", 0) == 0);
   CHECK(csv_error("0,mover,0,0,0,1,0,0,0\n0,mover,0,0,0,1,0,0,0\n") ==
@@ -78,6 +79,7 @@ TEST_CASE("CSV errors name the file, the line and the column", "[pose_import]") 
   CHECK(csv_error("0,mover,0,0,0,1,0,0,0\n0,rest,0,0,0,1,0,0,0\n1,mover,0,0,0,1,0,0,0\n") ==
         "p.csv: body \"rest\" has no pose at time 1 (every body needs one pose at every time of the file)");
   CHECK(csv_error("0,mover,0,0,0,0,0,0,0\n").rfind("p.csv: line 1, columns 6-9", 0) == 0);
-  CHECK(csv_error(std::string("0,mover,0,0,0,1,0,0,0\n0,rest\0,0,0,0,1,0,0,0\n", 44)).rfind("p.csv: line 2: a NUL byte", 0) == 0);
+  CHECK(csv_error(std::string("0,mover,0,0,0,1,0,0,0\n0,rest\0,0,0,0,1,0,0,0\n", 44))
+            .rfind("p.csv: line 2: a NUL byte", 0) == 0);
   CHECK_THROWS_WITH(shapes_from_text(R"({"dim": 4, "bodies": []})", "s.json"), Catch::StartsWith("s.json: /dim: "));
 }

@@ -95,14 +95,13 @@ TEST_CASE("parse_rational reads exact values", "[scene_reader]") {
   CHECK(eccd::parse_rational("5.") == Rational(5));
   CHECK(eccd::parse_rational("0.1") == Rational(1, 10));
   CHECK(eccd::parse_rational("-0") == Rational(0));
-  CHECK(eccd::parse_rational("123456789012345678901234567890") ==
-        Rational("123456789012345678901234567890"));
+  CHECK(eccd::parse_rational("123456789012345678901234567890") == Rational("123456789012345678901234567890"));
   CHECK(eccd::parse_rational("1e-30") == Rational(mpz_class(1), mpz_class("1000000000000000000000000000000")));
 }
 
 TEST_CASE("parse_rational rejects bad text with a reason", "[scene_reader]") {
-  for (const char* bad : {"1/0", "abc", "1.2.3", "", " 1", "1 ", "1/-2", "1.5/2", "/3", "3/", ".", "e5", "1e", "0x10",
-                          "inf", "nan", "--1", "1e100000", "1,5", "½"}) {
+  for (const char* bad : {"1/0", "abc", "1.2.3", "",     " 1",  "1 ",  "1/-2", "1.5/2",    "/3",  "3/",
+                          ".",   "e5",  "1e",    "0x10", "inf", "nan", "--1",  "1e100000", "1,5", "½"}) {
     INFO("text: \"" << bad << "\"");
     CHECK_THROWS_AS(eccd::parse_rational(bad), std::invalid_argument);
   }
@@ -141,9 +140,9 @@ TEST_CASE("Bernstein coefficients are converted exactly to power form", "[scene_
   REQUIRE(std::holds_alternative<eccd::MatrixMotion>(s.b.motion));
   const auto& m = std::get<eccd::MatrixMotion>(s.b.motion).m;
   CHECK(m[0][0] == P({"1"}));
-  CHECK(m[0][2] == P({"0", "1"}));             // t
-  CHECK(m[1][1] == P({"1", "-1", "1"}));       // (1-t)^2 + t(1-t) + t^2 = 1 - t + t^2
-  CHECK(m[1][2] == P({"0", "0", "1"}));        // t^2
+  CHECK(m[0][2] == P({"0", "1"}));        // t
+  CHECK(m[1][1] == P({"1", "-1", "1"}));  // (1-t)^2 + t(1-t) + t^2 = 1 - t + t^2
+  CHECK(m[1][2] == P({"0", "0", "1"}));   // t^2
   CHECK(m[2][2] == P({"1"}));
 }
 
@@ -157,8 +156,8 @@ TEST_CASE("a valid 3D scene is read into exact data", "[scene_reader]") {
   CHECK(s.dim == 3);
   CHECK(s.note.empty());
   using Row = std::vector<Rational>;
-  CHECK(s.a.Q ==
-        std::vector<Row>{{Rational(1, 5), 0, 0, 0}, {0, Rational(1, 8), 0, 0}, {0, 0, Rational(1, 10), 0}, {0, 0, 0, -1}});
+  CHECK(s.a.Q == std::vector<Row>{
+                     {Rational(1, 5), 0, 0, 0}, {0, Rational(1, 8), 0, 0}, {0, 0, Rational(1, 10), 0}, {0, 0, 0, -1}});
   CHECK(s.b.Q == std::vector<Row>{{Rational(1, 4), 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, -1}, {0, 0, -1, 0}});
   REQUIRE(std::holds_alternative<eccd::EulerMotion>(s.b.motion));
   const auto& em = std::get<eccd::EulerMotion>(s.b.motion);
@@ -193,8 +192,8 @@ TEST_CASE("other valid forms: general matrix shape, cycloidal, string dim, null 
   json j = base2d();
   // Rotated, shifted ellipse: 2x^2 + 2xy + 2y^2 - 2x - 1 <= 0 (scaled arbitrarily).
   j["a"]["shape"] = matrix_shape({{"4", "2", "-2"}, {"2", "4", "0"}, {"-2", "0", "-2"}});
-  j["b"]["motion"] = json::parse(
-      R"({"type": "cycloidal", "angle_over_pi": ["0", "1/2"], "translation": [["1", "-2"], ["0.5", 3]]})");
+  j["b"]["motion"] =
+      json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0", "1/2"], "translation": [["1", "-2"], ["0.5", 3]]})");
   j["dim"] = "2";
   j["answer"] = nullptr;
   eccd::Scene s = eccd::parse_scene(j.dump(), kLabel);
@@ -260,7 +259,14 @@ TEST_CASE("missing required keys are named", "[scene_reader]") {
 TEST_CASE("unknown keys are named, with the allowed ones", "[scene_reader]") {
   json j = base2d();
   j["colour"] = "red";
-  expect_error(j, "/colour", "unknown key \"colour\" in a scene; allowed keys: format, name, dim, a, b, note, parameters, answer");  // parameters: issue 20 (scene-format.md, independent motions)
+  expect_error(
+      j, "/colour",
+      "unknown key \"colour\" in a scene; allowed keys: format, name, dim, a, b, note, parameters, answer");  // parameters:
+                                                                                                              // issue
+                                                                                                              // 20
+                                                                                                              // (scene-format.md,
+                                                                                                              // independent
+                                                                                                              // motions)
   j = base2d();
   j["a"]["velocity"] = "1";
   expect_error(j, "/a/velocity", "unknown key \"velocity\" in object a; allowed keys: shape, motion");
@@ -361,7 +367,10 @@ TEST_CASE("matrix shapes: size and symmetry", "[scene_reader]") {
 }
 
 TEST_CASE("matrix shapes: conics that are not real ellipses are named", "[scene_reader]") {
-  struct Case { std::initializer_list<std::initializer_list<const char*>> m; const char* phrase; };
+  struct Case {
+    std::initializer_list<std::initializer_list<const char*>> m;
+    const char* phrase;
+  };
   const Case cases[] = {
       {{{"1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}}, "is an imaginary ellipse"},
       {{{"1", "0", "0"}, {"0", "2", "0"}, {"0", "0", "0"}}, "is a single point"},
@@ -370,7 +379,8 @@ TEST_CASE("matrix shapes: conics that are not real ellipses are named", "[scene_
       {{{"1", "0", "0"}, {"0", "-1", "0"}, {"0", "0", "0"}}, "is degenerate (det Q = 0)"},
       {{{"1", "0", "0"}, {"0", "0", "0"}, {"0", "0", "-1"}}, "is degenerate (det Q = 0)"},
       {{{"0", "0", "1"}, {"0", "0", "0"}, {"1", "0", "-1"}}, "is degenerate (det Q = 0)"},
-      {{{"-1", "0", "0"}, {"0", "-1", "0"}, {"0", "0", "1"}}, "has the wrong sign: X^T Q X > 0 inside; negate the matrix"},
+      {{{"-1", "0", "0"}, {"0", "-1", "0"}, {"0", "0", "1"}},
+       "has the wrong sign: X^T Q X > 0 inside; negate the matrix"},
       {{{"-1", "0", "0"}, {"0", "-1", "0"}, {"0", "0", "-1"}}, "is an imaginary ellipse"},
       // Rotated: 2x^2 + 2xy + 2y^2 + 1 has no real point.
       {{{"2", "1", "0"}, {"1", "2", "0"}, {"0", "0", "1"}}, "is an imaginary ellipse"},
@@ -386,17 +396,27 @@ TEST_CASE("matrix shapes: conics that are not real ellipses are named", "[scene_
 }
 
 TEST_CASE("matrix shapes: quadrics that are not real ellipsoids are named", "[scene_reader]") {
-  struct Case { std::initializer_list<std::initializer_list<const char*>> m; const char* phrase; };
+  struct Case {
+    std::initializer_list<std::initializer_list<const char*>> m;
+    const char* phrase;
+  };
   const Case cases[] = {
-      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "1", "0"}, {"0", "0", "0", "1"}}, "is an imaginary ellipsoid"},
+      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "1", "0"}, {"0", "0", "0", "1"}},
+       "is an imaginary ellipsoid"},
       {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "1", "0"}, {"0", "0", "0", "0"}}, "is a single point"},
-      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "-1", "0"}, {"0", "0", "0", "-1"}}, "hyperboloid of one sheet"},
-      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "-1", "0"}, {"0", "0", "0", "1"}}, "hyperboloid of two sheets"},
+      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "-1", "0"}, {"0", "0", "0", "-1"}},
+       "hyperboloid of one sheet"},
+      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "-1", "0"}, {"0", "0", "0", "1"}},
+       "hyperboloid of two sheets"},
       {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "-1", "0"}, {"0", "0", "0", "0"}}, "a cone"},
-      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "0", "-1"}, {"0", "0", "-1", "0"}}, "elliptic paraboloid"},
-      {{{"1", "0", "0", "0"}, {"0", "-1", "0", "0"}, {"0", "0", "0", "-1"}, {"0", "0", "-1", "0"}}, "hyperbolic paraboloid"},
-      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "0", "0"}, {"0", "0", "0", "-1"}}, "is degenerate (det Q = 0)"},
-      {{{"-1", "0", "0", "0"}, {"0", "-1", "0", "0"}, {"0", "0", "-1", "0"}, {"0", "0", "0", "1"}}, "negate the matrix"},
+      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "0", "-1"}, {"0", "0", "-1", "0"}},
+       "elliptic paraboloid"},
+      {{{"1", "0", "0", "0"}, {"0", "-1", "0", "0"}, {"0", "0", "0", "-1"}, {"0", "0", "-1", "0"}},
+       "hyperbolic paraboloid"},
+      {{{"1", "0", "0", "0"}, {"0", "1", "0", "0"}, {"0", "0", "0", "0"}, {"0", "0", "0", "-1"}},
+       "is degenerate (det Q = 0)"},
+      {{{"-1", "0", "0", "0"}, {"0", "-1", "0", "0"}, {"0", "0", "-1", "0"}, {"0", "0", "0", "1"}},
+       "negate the matrix"},
   };
   for (const auto& c : cases) {
     json j = base3d();
@@ -409,7 +429,8 @@ TEST_CASE("matrix shapes: quadrics that are not real ellipsoids are named", "[sc
 TEST_CASE("motion types: unknown, missing, wrong dimension", "[scene_reader]") {
   json j = base2d();
   j["a"]["motion"]["type"] = "spline";
-  expect_error(j, "/a/motion/type", "unknown motion type \"spline\"; allowed types: static, matrix, kinematic, euler, cycloidal");
+  expect_error(j, "/a/motion/type",
+               "unknown motion type \"spline\"; allowed types: static, matrix, kinematic, euler, cycloidal");
   j["a"]["motion"]["type"] = 3;
   expect_error(j, "/a/motion/type", "must be a string");
   j["a"]["motion"] = json::parse(R"({"type": "euler", "e": ["1", "0", "0", "0"], "translation": ["0", "0", "0"]})");
@@ -417,13 +438,16 @@ TEST_CASE("motion types: unknown, missing, wrong dimension", "[scene_reader]") {
   j = base3d();
   j["a"]["motion"] = json::parse(R"({"type": "kinematic", "d": ["0", "0", "1", "0"]})");
   expect_error(j, "/a/motion/type", "motion type \"kinematic\" is for dim 2 only, but this scene has dim 3");
-  j["a"]["motion"] = json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0", "1"], "translation": [["0", "0"], ["0", "0"]]})");
+  j["a"]["motion"] =
+      json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0", "1"], "translation": [["0", "0"], ["0", "0"]]})");
   expect_error(j, "/a/motion/type", "motion type \"cycloidal\" is for dim 2 only");
 }
 
 TEST_CASE("matrix motions: size, last row, w(t), affine block", "[scene_reader]") {
   json j = base2d();
-  auto set_m = [&](const char* m) { j["b"]["motion"] = json::parse(std::string(R"({"type": "matrix", "m": )") + m + "}"); };
+  auto set_m = [&](const char* m) {
+    j["b"]["motion"] = json::parse(std::string(R"({"type": "matrix", "m": )") + m + "}");
+  };
   set_m(R"([["1", "0"], ["0", "1"]])");
   expect_error(j, "/b/motion/m", "must be a 3x3 array");
   set_m(R"([["1", "0", "0"], ["0", "1", "0"], ["0", "0"]])");
@@ -476,9 +500,11 @@ TEST_CASE("kinematic and euler denominators must not vanish", "[scene_reader]") 
 
 TEST_CASE("cycloidal motions: sizes", "[scene_reader]") {
   json j = base2d();
-  j["b"]["motion"] = json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0"], "translation": [["0", "0"], ["0", "0"]]})");
+  j["b"]["motion"] =
+      json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0"], "translation": [["0", "0"], ["0", "0"]]})");
   expect_error(j, "/b/motion/angle_over_pi", "must have 2 entries");
-  j["b"]["motion"] = json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0", "1"], "translation": [["0", "0"], ["0"]]})");
+  j["b"]["motion"] =
+      json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0", "1"], "translation": [["0", "0"], ["0"]]})");
   expect_error(j, "/b/motion/translation/1", "must have 2 entries");
   j["b"]["motion"] = json::parse(R"({"type": "cycloidal", "angle_over_pi": ["0", "1"]})");
   expect_error(j, "/b/motion", "missing required key \"translation\"");
@@ -576,7 +602,7 @@ TEST_CASE("truncated or mangled files give SceneError, never anything else", "[s
     }
   };
   for (std::size_t n = 0; n < text.size(); ++n) attempt(text.substr(0, n));  // every prefix
-  for (std::size_t i = 0; i < text.size(); ++i) {                             // every one-character change
+  for (std::size_t i = 0; i < text.size(); ++i) {                            // every one-character change
     std::string t = text;
     t.erase(i, 1);
     attempt(t);
@@ -588,5 +614,5 @@ TEST_CASE("truncated or mangled files give SceneError, never anything else", "[s
   }
   CHECK(errors > int(text.size()));
   attempt(std::string(200, '[') + std::string(200, ']'));  // deep nesting
-  attempt(std::string("\xff\xfe{}", 4));                     // not UTF-8
+  attempt(std::string("\xff\xfe{}", 4));                   // not UTF-8
 }

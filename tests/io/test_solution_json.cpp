@@ -39,8 +39,12 @@ TEST_CASE("solution JSON round trip, an undecided independent run with s- but no
   CHECK(*back.answer.undecided[0].lo == mpq_class(3, 4));
 }
 
-TEST_CASE("solution JSON, a decided independent run with collides true and an empty list is still refused", "[solution-json]") {
-  nlohmann::json j = {{"collides", true}, {"s_intervals", nlohmann::json::array()}, {"t_intervals", nlohmann::json::array()},
-                      {"dim", 3}, {"arith", "exact"}};
+TEST_CASE("solution JSON, a decided independent run with collides true and an empty list is still refused",
+          "[solution-json]") {
+  nlohmann::json j = {{"collides", true},
+                      {"s_intervals", nlohmann::json::array()},
+                      {"t_intervals", nlohmann::json::array()},
+                      {"dim", 3},
+                      {"arith", "exact"}};
   CHECK_THROWS_WITH(solution_from_json(j, "bad"), Catch::Contains("collides is true but s_intervals is empty"));
 }

@@ -23,7 +23,10 @@ std::pair<mpq_class, mpq_class> exact_value(const std::vector<double>& b, const 
   const int n = int(b.size()) - 1;
   std::vector<mpq_class> tp(n + 1, mpq_class(1)), up(n + 1, mpq_class(1));
   const mpq_class u = 1 - t;
-  for (int i = 1; i <= n; ++i) { tp[i] = tp[i - 1] * t; up[i] = up[i - 1] * u; }
+  for (int i = 1; i <= n; ++i) {
+    tp[i] = tp[i - 1] * t;
+    up[i] = up[i - 1] * u;
+  }
   mpz_class c = 1;  // C(n, i)
   mpq_class v = 0, cond = 0;
   for (int i = 0; i <= n; ++i) {
@@ -89,7 +92,8 @@ TEST_CASE("BernsteinHorner in Bounded<double>: the running bound contains the ex
     for (double t : points(rng)) {
       const mpq_class v = exact_value(bd, mpq_class(t)).first;
       const Bounded<double> got = h(Bounded<double>(t, 0.0));
-      INFO("n = " << n << ", t = " << t << ", value " << got.value() << " ± " << got.bound() << ", exact " << v.get_d());
+      INFO("n = " << n << ", t = " << t << ", value " << got.value() << " ± " << got.bound() << ", exact "
+                  << v.get_d());
       REQUIRE(std::isfinite(got.bound()));
       CHECK(abs(mpq_class(got.value()) - v) <= mpq_class(got.bound()));
       // and the bound is not vacuous: within a factor 100 of the double bound checked above

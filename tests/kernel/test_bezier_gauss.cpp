@@ -93,19 +93,19 @@ TEST_CASE("Gaussian-circle test by cross-product signs decides exactly", "[kerne
     ++total;
   }
   CHECK(agree == total);
-  CHECK(yes > total / 10);        // both answers occur often
+  CHECK(yes > total / 10);  // both answers occur often
   CHECK(yes < total - total / 10);
   CHECK(clear_of_boundary > total / 2);
   // fixed cases
   CHECK(bezier_detail::pointed(Pts{}));
   CHECK(bezier_detail::pointed(Pts{{1, 0}}));
-  CHECK_FALSE(bezier_detail::pointed(Pts{{1, 0}, {-1, 0}}));        // opposite: no open half-plane
+  CHECK_FALSE(bezier_detail::pointed(Pts{{1, 0}, {-1, 0}}));  // opposite: no open half-plane
   CHECK(bezier_detail::pointed(Pts{{1, 1}, {1, -1}, {2, 0.5}}));
   CHECK_FALSE(bezier_detail::pointed(Pts{{1, 0}, {-1, 1}, {-1, -1}}));
   CHECK_FALSE(bezier_detail::pointed(Pts{{1, 0}, {0, 0}}));
   CHECK(bezier_detail::pointed(Pts{{-1, 0.0}, {-1, -0.0}, {-1, 0.5}}));  // around the cut at ±π
-  CHECK(bezier_detail::pointed(Pts{{-1, 0.0}, {-1, -0.0}}));  // one direction (signed zeros)
-  CHECK_FALSE(bezier_detail::pointed(Pts{{NAN, 1}, {1, 1}}));  // not shown loop-free: the caller subdivides
+  CHECK(bezier_detail::pointed(Pts{{-1, 0.0}, {-1, -0.0}}));             // one direction (signed zeros)
+  CHECK_FALSE(bezier_detail::pointed(Pts{{NAN, 1}, {1, 1}}));            // not shown loop-free: the caller subdivides
   CHECK_FALSE(bezier_detail::pointed(Pts{{INFINITY, 1}, {1, 1}}));
   // exactly opposite points whose products round: the fma term decides
   CHECK_FALSE(bezier_detail::pointed(Pts{{0.1, 0.7}, {-0.1, -0.7}}));
@@ -115,7 +115,8 @@ TEST_CASE("Gaussian-circle test by cross-product signs decides exactly", "[kerne
   CHECK_FALSE(bezier_detail::pointed(Pts{{1, 0}, {-1, 0}, {0, 1}}));
   // points outside 2^±400 are scaled by powers of two: directions kept exactly
   CHECK(bezier_detail::pointed(Pts{{1e300, 1e299}, {-1e300, 1e299}, {1e-300, 1e300}}));
-  CHECK_FALSE(bezier_detail::pointed(Pts{{std::ldexp(3.0, 900), std::ldexp(7.0, 900)}, {std::ldexp(-3.0, -900), std::ldexp(-7.0, -900)}}));
+  CHECK_FALSE(bezier_detail::pointed(
+      Pts{{std::ldexp(3.0, 900), std::ldexp(7.0, 900)}, {std::ldexp(-3.0, -900), std::ldexp(-7.0, -900)}}));
   const Pts near_opposite{{3e300, 7e300}, {-3e-300, -7e-300}};
   CHECK(bezier_detail::pointed(near_opposite) == by_definition(near_opposite));
 }

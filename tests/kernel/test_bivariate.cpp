@@ -14,7 +14,8 @@ using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
 
-TEMPLATE_TEST_CASE("bivariate Bernstein: conversion, evaluation and subdivision in u and t", "[kernel][bivariate]", double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE("bivariate Bernstein: conversion, evaluation and subdivision in u and t", "[kernel][bivariate]",
+                   double, Mpfr, mpq_class) {
   using T = TestType;
   std::uint64_t seed = seed_from_env(99);
   INFO("seed " << seed);
@@ -23,7 +24,10 @@ TEMPLATE_TEST_CASE("bivariate Bernstein: conversion, evaluation and subdivision 
   for (int i = 0; i <= 3; ++i) a.push_back(random_poly(rng, 4));
   auto exact = [&](const Q& u, const Q& t) {
     Q s = 0, ui = 1;
-    for (const auto& p : a) { s += ui * p(t); ui *= u; }
+    for (const auto& p : a) {
+      s += ui * p(t);
+      ui *= u;
+    }
     return s;
   };
   std::vector<Poly<T>> at;
@@ -50,12 +54,16 @@ TEMPLATE_TEST_CASE("bivariate Bernstein: conversion, evaluation and subdivision 
   CHECK(one.strict_sign() == 1);
 }
 
-TEST_CASE("4x4 characteristic polynomial: two spheres always have the double root λ = 1 (003 VII, 002)", "[kernel][characteristic]") {
+TEST_CASE("4x4 characteristic polynomial: two spheres always have the double root λ = 1 (003 VII, 002)",
+          "[kernel][characteristic]") {
   // x²+y²+z²-1 at the origin; x²+y²+z²-4 translated by (3t, 0, 0) (with
   // this normalisation of the two spheres the double root is λ = 1):
   // N(t) = [[1,0,0,-3t],[0,1,0,0],[0,0,1,0],[0,0,0,1]].
   Matrix<Q, 4> qa{}, qb{};
-  for (int i = 0; i < 3; ++i) { qa[i][i] = 1; qb[i][i] = 1; }
+  for (int i = 0; i < 3; ++i) {
+    qa[i][i] = 1;
+    qb[i][i] = 1;
+  }
   qa[3][3] = -1;
   qb[3][3] = -4;
   PolyMatrix<Q, 4> na = identity_poly_matrix<Q, 4>(), nb = identity_poly_matrix<Q, 4>();
@@ -64,22 +72,28 @@ TEST_CASE("4x4 characteristic polynomial: two spheres always have the double roo
   REQUIRE(g.size() == 5);
   for (Q t : {Q(0), Q(1, 3), Q(1)}) {
     Q f1 = 0, df1 = 0;
-    for (int k = 0; k <= 4; ++k) { f1 += g[k](t); df1 += k * g[k](t); }
+    for (int k = 0; k <= 4; ++k) {
+      f1 += g[k](t);
+      df1 += k * g[k](t);
+    }
     CHECK(f1 == 0);   // f(1) = 0
     CHECK(df1 == 0);  // f'(1) = 0: a double root
   }
   CHECK(g[4].degree() == 0);  // det A, constant
 }
 
-TEMPLATE_TEST_CASE("split_u and split_t in place equal split() of every column and row", "[kernel][bivariate]", double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE("split_u and split_t in place equal split() of every column and row", "[kernel][bivariate]", double,
+                   Mpfr, mpq_class) {
   using T = TestType;
   std::mt19937_64 rng(seed_from_env(2718));
   std::vector<Poly<T>> at;
   for (int i = 0; i <= 4; ++i) at.push_back(from_q<T>(random_poly(rng, 9)));
   BiBern<T> f = to_bibernstein(at, 4, 9);
   auto same = [](const T& a, const T& b) {
-    if constexpr (std::is_same_v<T, Mpfr>) return a.precision() == b.precision() && mpfr_equal_p(a.get(), b.get());
-    else return a == b;
+    if constexpr (std::is_same_v<T, Mpfr>)
+      return a.precision() == b.precision() && mpfr_equal_p(a.get(), b.get());
+    else
+      return a == b;
   };
   for (Q tq : {Q(1, 2), Q(3, 11)}) {
     const T tau = from_q<T>(tq);

@@ -18,12 +18,14 @@
 
 using namespace eccd;
 
-TEST_CASE("truncated_double reads n / d as mpq_get_d does, without reducing the fraction", "[kernel][contact_point_integer]") {
+TEST_CASE("truncated_double reads n / d as mpq_get_d does, without reducing the fraction",
+          "[kernel][contact_point_integer]") {
   std::mt19937_64 rng(7);
   int checked = 0;
   for (int k = 0; k < 2000; ++k) {
     mpz_class n, d, f;
-    mpz_class r1 = mpz_class(std::to_string(rng())), r2 = mpz_class(std::to_string(rng() | 1)), r3 = mpz_class(std::to_string(rng() % 1000 + 1));
+    mpz_class r1 = mpz_class(std::to_string(rng())), r2 = mpz_class(std::to_string(rng() | 1)),
+              r3 = mpz_class(std::to_string(rng() % 1000 + 1));
     n = r1 << static_cast<unsigned long>(rng() % 300);
     d = r2 << static_cast<unsigned long>(rng() % 300);
     f = r3 << static_cast<unsigned long>(rng() % 5);
@@ -38,12 +40,15 @@ TEST_CASE("truncated_double reads n / d as mpq_get_d does, without reducing the 
     ++checked;
   }
   double r;
-  CHECK_FALSE(contact_integer_detail::truncated_double(mpz_class(1), mpz_class(1) << 1200, r));  // below 2^-1000: reduced instead
-  CHECK(contact_integer_detail::to_double_of(mpz_class(3), mpz_class(3) << 1200) == mpq_class(mpz_class(1), mpz_class(1) << 1200).get_d());
+  CHECK_FALSE(contact_integer_detail::truncated_double(mpz_class(1), mpz_class(1) << 1200,
+                                                       r));  // below 2^-1000: reduced instead
+  CHECK(contact_integer_detail::to_double_of(mpz_class(3), mpz_class(3) << 1200) ==
+        mpq_class(mpz_class(1), mpz_class(1) << 1200).get_d());
   CHECK(checked == 2000);
 }
 
-TEST_CASE("contact_point_integer prints what contact_point<mpq_class> prints, on the 2D scenes of cases/", "[kernel][contact_point_integer]") {
+TEST_CASE("contact_point_integer prints what contact_point<mpq_class> prints, on the 2D scenes of cases/",
+          "[kernel][contact_point_integer]") {
   namespace fs = std::filesystem;
   int scenes = 0, points = 0;
   std::mt19937_64 rng(11);

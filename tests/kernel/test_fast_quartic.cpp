@@ -43,7 +43,8 @@ Q random_rational(std::mt19937_64& rng, int lo, int hi) {
 
 // det(λA - B) by the generic expansion, for constant matrices: g_k as numbers.
 template <class T>
-std::vector<T> generic_coefficients(const std::array<std::array<T, 4>, 4>& a, const std::array<std::array<T, 4>, 4>& b) {
+std::vector<T> generic_coefficients(const std::array<std::array<T, 4>, 4>& a,
+                                    const std::array<std::array<T, 4>, 4>& b) {
   PolyMatrix<T, 4> pa{}, pb{};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -58,8 +59,12 @@ std::vector<T> generic_coefficients(const std::array<std::array<T, 4>, 4>& a, co
 
 QMat diag_a(const Q& ea, const Q& eb, const Q& ec) {
   QMat a{};
-  for (auto& row : a) for (auto& x : row) x = 0;
-  a[0][0] = ea; a[1][1] = eb; a[2][2] = ec; a[3][3] = -1;
+  for (auto& row : a)
+    for (auto& x : row) x = 0;
+  a[0][0] = ea;
+  a[1][1] = eb;
+  a[2][2] = ec;
+  a[3][3] = -1;
   return a;
 }
 
@@ -82,10 +87,20 @@ QMat translated_ellipsoid(const Q& a, const Q& b, const Q& c, const std::array<Q
   return r;
 }
 
-template <class T> T prec_like();
-template <> double prec_like<double>() { return 1.0; }
-template <> Mpfr prec_like<Mpfr>() { return Mpfr(Q(1), 128); }
-template <> Q prec_like<Q>() { return Q(1); }
+template <class T>
+T prec_like();
+template <>
+double prec_like<double>() {
+  return 1.0;
+}
+template <>
+Mpfr prec_like<Mpfr>() {
+  return Mpfr(Q(1), 128);
+}
+template <>
+Q prec_like<Q>() {
+  return Q(1);
+}
 
 template <class T>
 std::array<std::array<T, 4>, 4> convert(const QMat& m) {
@@ -125,7 +140,8 @@ TEST_CASE("001 Appendix A: the 40-multiplication coefficients equal det(λA - B)
   }
 }
 
-TEST_CASE("001 Appendix A in double agrees with the exact coefficients to 1e-12 of their norm", "[static3d][fast_quartic]") {
+TEST_CASE("001 Appendix A in double agrees with the exact coefficients to 1e-12 of their norm",
+          "[static3d][fast_quartic]") {
   std::uint64_t seed = seed_from_env(77031);
   INFO("seed " << seed << " (set ECCD_TEST_SEED to repeat)");
   std::mt19937_64 rng(seed);
@@ -157,8 +173,8 @@ TEST_CASE("001 Appendix A in double agrees with the exact coefficients to 1e-12 
   std::cout << "Appendix A in double: worst coefficient error / norm over 500 trials = " << worst << "\n";
 }
 
-TEMPLATE_TEST_CASE("quartic_contact_status on static spheres and ellipsoids: separate, overlapping", "[static3d][quartic_status]",
-                   double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE("quartic_contact_status on static spheres and ellipsoids: separate, overlapping",
+                   "[static3d][quartic_status]", double, Mpfr, mpq_class) {
   using T = TestType;
   // spheres of radii 1 and 2 along x: touching at distance 3
   QMat s1 = translated_ellipsoid(1, 1, 1, {0, 0, 0});
@@ -179,19 +195,27 @@ TEMPLATE_TEST_CASE("quartic_contact_status on static spheres and ellipsoids: sep
   // off both centres, along a general rational direction of length 1: (2, 3, 6)/7
   QMat a = translated_ellipsoid(1, 1, 1, {Q(1, 3), Q(-1, 2), Q(1, 5)});
   auto at = [](const Q& dist) {
-    return translated_ellipsoid(2, 2, 2, {Q(1, 3) + dist * Q(2, 7), Q(-1, 2) + dist * Q(3, 7), Q(1, 5) + dist * Q(6, 7)});
+    return translated_ellipsoid(2, 2, 2,
+                                {Q(1, 3) + dist * Q(2, 7), Q(-1, 2) + dist * Q(3, 7), Q(1, 5) + dist * Q(6, 7)});
   };
   CHECK(static_status<T>(a, at(Q(16, 5))) == Status::separate);
   CHECK(static_status<T>(a, at(Q(14, 5))) == Status::overlapping);
 }
 
-TEMPLATE_TEST_CASE("quartic_contact_status at exact external tangency", "[static3d][quartic_status]", double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE("quartic_contact_status at exact external tangency", "[static3d][quartic_status]", double, Mpfr,
+                   mpq_class) {
   using T = TestType;
-  struct Pair { const char* what; QMat a, b; };
+  struct Pair {
+    const char* what;
+    QMat a, b;
+  };
   std::vector<Pair> pairs{
-      {"spheres r = 1, 2 at distance 3 along x", translated_ellipsoid(1, 1, 1, {0, 0, 0}), translated_ellipsoid(2, 2, 2, {3, 0, 0})},
-      {"ellipsoids (2,1,1), (1,3,2) at x = 3", translated_ellipsoid(2, 1, 1, {0, 0, 0}), translated_ellipsoid(1, 3, 2, {3, 0, 0})},
-      {"ellipsoids (1,3,2), (2,1,1) swapped", translated_ellipsoid(1, 3, 2, {3, 0, 0}), translated_ellipsoid(2, 1, 1, {0, 0, 0})},
+      {"spheres r = 1, 2 at distance 3 along x", translated_ellipsoid(1, 1, 1, {0, 0, 0}),
+       translated_ellipsoid(2, 2, 2, {3, 0, 0})},
+      {"ellipsoids (2,1,1), (1,3,2) at x = 3", translated_ellipsoid(2, 1, 1, {0, 0, 0}),
+       translated_ellipsoid(1, 3, 2, {3, 0, 0})},
+      {"ellipsoids (1,3,2), (2,1,1) swapped", translated_ellipsoid(1, 3, 2, {3, 0, 0}),
+       translated_ellipsoid(2, 1, 1, {0, 0, 0})},
       {"spheres r = 1, 2 at distance 3 along (2,3,6)/7", translated_ellipsoid(1, 1, 1, {Q(1, 3), Q(-1, 2), Q(1, 5)}),
        translated_ellipsoid(2, 2, 2, {Q(1, 3) + Q(6, 7), Q(-1, 2) + Q(9, 7), Q(1, 5) + Q(18, 7)})},
       {"ellipsoids (1,2,2), (3,3,1) along z at distance 3", translated_ellipsoid(1, 2, 2, {0, 0, 0}),

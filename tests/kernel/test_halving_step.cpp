@@ -27,8 +27,10 @@ mpq_class exact_of(const Mpfr& x) {
   mpz_class m;
   const long e = long(mpfr_get_z_2exp(m.get_mpz_t(), x.get()));
   mpq_class q(m);
-  if (e >= 0) q *= mpq_class(mpz_class(1) << e);
-  else q /= mpq_class(mpz_class(1) << -e);
+  if (e >= 0)
+    q *= mpq_class(mpz_class(1) << e);
+  else
+    q /= mpq_class(mpz_class(1) << -e);
   return q;
 }
 
@@ -38,15 +40,18 @@ mpq_class exact_of(long double e) {  // a long double bound as a rational, exact
   const mpz_class m(static_cast<unsigned long>(std::ldexp(f, 64)));
   ex -= 64;
   mpq_class q(m);
-  if (ex >= 0) q *= mpq_class(mpz_class(1) << ex);
-  else q /= mpq_class(mpz_class(1) << -ex);
+  if (ex >= 0)
+    q *= mpq_class(mpz_class(1) << ex);
+  else
+    q /= mpq_class(mpz_class(1) << -ex);
   return q;
 }
 
 bool same(const BM& a, const BM& b) {
-  return a.value().precision() == b.value().precision() && mpfr_get_prec(a.value().get()) == mpfr_get_prec(b.value().get()) &&
-         mpfr_equal_p(a.value().get(), b.value().get()) && mpfr_signbit(a.value().get()) == mpfr_signbit(b.value().get()) &&
-         a.bound() == b.bound();
+  return a.value().precision() == b.value().precision() &&
+         mpfr_get_prec(a.value().get()) == mpfr_get_prec(b.value().get()) &&
+         mpfr_equal_p(a.value().get(), b.value().get()) &&
+         mpfr_signbit(a.value().get()) == mpfr_signbit(b.value().get()) && a.bound() == b.bound();
 }
 
 // A random value of `bits` precision: exact (bound 0), or a rounded product or sum (bound > 0), or zero.
@@ -96,7 +101,10 @@ TEST_CASE("guarded MPFR halving step: the written-out steps' value and bound, bi
   }
 }
 
-TEST_CASE("guarded MPFR TriBern halves: as the written-out steps, reused storage alike, and within their bounds of the exact halves", "[independent][halving]") {
+TEST_CASE(
+    "guarded MPFR TriBern halves: as the written-out steps, reused storage alike, and within their bounds of the exact "
+    "halves",
+    "[independent][halving]") {
   std::mt19937_64 rng(7);
   const int bits = 128;
   const BM half = scalar_traits<BM>::from_rational(mpq_class(1, 2), BM(Mpfr(mpq_class(1), bits), 0));

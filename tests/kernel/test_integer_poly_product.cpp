@@ -28,8 +28,15 @@ mpz_class random_int(std::mt19937_64& rng, int max_bits) {
   std::uniform_int_distribution<int> nb(0, max_bits);
   int bits = nb(rng);
   mpz_class x = 0;
-  for (int i = 0; i < bits; i += 32) { x <<= 32; x += static_cast<unsigned long>(rng() & 0xffffffffu); }
-  if (bits > 0) { mpz_class m = 1; m <<= bits; x %= m; }
+  for (int i = 0; i < bits; i += 32) {
+    x <<= 32;
+    x += static_cast<unsigned long>(rng() & 0xffffffffu);
+  }
+  if (bits > 0) {
+    mpz_class m = 1;
+    m <<= bits;
+    x %= m;
+  }
   if (rng() & 1) x = -x;
   if (rng() % 7 == 0) x = 0;
   return x;
@@ -96,7 +103,10 @@ TEST_CASE("Integer Horner at a rational point equals Horner in rationals", "[int
     t.canonicalize();
     if (trial % 10 == 0) t = mpq_class(random_int(rng, 20));  // an integer point
     mpq_class want = p.back();
-    for (int i = int(p.size()) - 2; i >= 0; --i) { want *= t; want += p[i]; }
+    for (int i = int(p.size()) - 2; i >= 0; --i) {
+      want *= t;
+      want += p[i];
+    }
     INFO("trial " << trial);
     REQUIRE(rational_poly_eval(p, t) == want);
     REQUIRE(Poly<Rational>(p)(t) == want);  // Poly's Horner goes through it

@@ -22,8 +22,10 @@ void check_inverse(const Motion& m) {
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
       INFO("entry " << i << "," << j);
-      if (i == j) CHECK(P[i][j] == P[0][0]);
-      else CHECK(P[i][j].is_zero());
+      if (i == j)
+        CHECK(P[i][j] == P[0][0]);
+      else
+        CHECK(P[i][j].is_zero());
     }
 }
 }  // namespace

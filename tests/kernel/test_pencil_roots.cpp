@@ -30,7 +30,10 @@ Poly<Mpfr> from_roots(const std::vector<mpq_class>& roots, const mpq_class& lead
   std::vector<mpq_class> c{lead};
   for (const mpq_class& r : roots) {
     std::vector<mpq_class> n(c.size() + 1, mpq_class(0));
-    for (std::size_t i = 0; i < c.size(); ++i) { n[i + 1] += c[i]; n[i] -= r * c[i]; }
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      n[i + 1] += c[i];
+      n[i] -= r * c[i];
+    }
     c = n;
   }
   std::vector<Mpfr> m;

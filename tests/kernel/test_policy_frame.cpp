@@ -41,7 +41,8 @@ TEST_CASE("sign variations report an uncertain sign instead of skipping it", "[k
   CHECK(sign_variations(ys).is(2));
 }
 
-TEST_CASE("the certified policy does not take an uncertain count for one root", "[kernel][sign_variations][certified]") {
+TEST_CASE("the certified policy does not take an uncertain count for one root",
+          "[kernel][sign_variations][certified]") {
   // The middle coefficients' signs stay unknown on every piece: the policy
   // must escalate, never report a bracket it has not proved.
   Bern<Interval> q({Interval(1), Interval(-1.0, 1.0), Interval(-1.0, 1.0), Interval(-1)});

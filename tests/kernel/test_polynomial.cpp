@@ -77,7 +77,8 @@ TEST_CASE("exact Bernstein arithmetic is exact", "[kernel][bernstein][exact]") {
   }
 }
 
-TEST_CASE("the cubic discriminant vanishes exactly on a double root, in every representation", "[kernel][discriminant]") {
+TEST_CASE("the cubic discriminant vanishes exactly on a double root, in every representation",
+          "[kernel][discriminant]") {
   std::mt19937_64 rng(seed_from_env(11));
   for (int trial = 0; trial < 10; ++trial) {
     // f(λ) = (λ - r(t))² (λ - s(t)) with r, s polynomials in t: Δ ≡ 0.
@@ -96,7 +97,8 @@ TEST_CASE("the cubic discriminant vanishes exactly on a double root, in every re
   CHECK(cubic_discriminant(Q(1), Q(-6), Q(11), Q(-6)) == 4);
 }
 
-TEMPLATE_TEST_CASE("Sturm counts distinct real roots of a square-free polynomial", "[kernel][sturm]", double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE("Sturm counts distinct real roots of a square-free polynomial", "[kernel][sturm]", double, Mpfr,
+                   mpq_class) {
   using T = TestType;
   // (t - 1/3) (t - 1/2) (t + 2) (t - 3/2)
   Poly<Q> p = Poly<Q>({Q(-1, 3), Q(1)}) * Poly<Q>({Q(-1, 2), Q(1)}) * Poly<Q>({Q(2), Q(1)}) * Poly<Q>({Q(-3, 2), Q(1)});
@@ -134,16 +136,20 @@ std::vector<T> pascal_row_uncached(int n, const T& like) {
 // Same value and, for Mpfr, same precision: bit for bit what the uncached code computed.
 template <class T>
 bool same(const T& a, const T& b) {
-  if constexpr (std::is_same_v<T, Mpfr>) return a.precision() == b.precision() && mpfr_equal_p(a.get(), b.get());
-  else return a == b;
+  if constexpr (std::is_same_v<T, Mpfr>)
+    return a.precision() == b.precision() && mpfr_equal_p(a.get(), b.get());
+  else
+    return a == b;
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("binomial rows from the per-thread cache equal Pascal's rule afresh, degrees and precisions interleaved",
-                   "[kernel][binomial]", double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE(
+    "binomial rows from the per-thread cache equal Pascal's rule afresh, degrees and precisions interleaved",
+    "[kernel][binomial]", double, Mpfr, mpq_class) {
   using T = TestType;
   std::vector<T> likes{like<T>()};
-  if constexpr (std::is_same_v<T, Mpfr>) likes = {Mpfr(mpq_class(1), 64), Mpfr(mpq_class(1), 200), Mpfr(3), Mpfr(mpq_class(1), 64)};
+  if constexpr (std::is_same_v<T, Mpfr>)
+    likes = {Mpfr(mpq_class(1), 64), Mpfr(mpq_class(1), 200), Mpfr(3), Mpfr(mpq_class(1), 64)};
   for (int n : {60, 3, 0, 150, 57, 1, 149, 200, 56}) {
     for (const T& lk : likes) {
       INFO("n = " << n << ", precision " << scalar_traits<T>::precision(lk));
@@ -161,8 +167,9 @@ TEMPLATE_TEST_CASE("binomial rows from the per-thread cache equal Pascal's rule 
   CHECK(to_double(r10[5]) == 252.0);
 }
 
-TEMPLATE_TEST_CASE("de Casteljau in place (bernstein_value, keep_left, keep_right, split) equals the triangle step by step",
-                   "[kernel][bernstein]", double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE(
+    "de Casteljau in place (bernstein_value, keep_left, keep_right, split) equals the triangle step by step",
+    "[kernel][bernstein]", double, Mpfr, mpq_class) {
   using T = TestType;
   std::mt19937_64 rng(seed_from_env(424242));
   for (int n : {0, 1, 4, 36, 63, 64, 100}) {
@@ -177,7 +184,11 @@ TEMPLATE_TEST_CASE("de Casteljau in place (bernstein_value, keep_left, keep_righ
       right[n] = w[n];
       T s = T(1) - tau;
       for (int r = 1; r <= n; ++r) {
-        for (int i = 0; i + r <= n; ++i) { T x = s * w[i]; T y = tau * w[i + 1]; w[i] = x + y; }
+        for (int i = 0; i + r <= n; ++i) {
+          T x = s * w[i];
+          T y = tau * w[i + 1];
+          w[i] = x + y;
+        }
         left[r] = w[0];
         right[n - r] = w[n - r];
       }
@@ -194,18 +205,22 @@ TEMPLATE_TEST_CASE("de Casteljau in place (bernstein_value, keep_left, keep_righ
   }
 }
 
-TEMPLATE_TEST_CASE("fixed-capacity Sturm (count_roots_inline) counts as the Poly<T> version", "[kernel][sturm]", double, Mpfr, mpq_class) {
+TEMPLATE_TEST_CASE("fixed-capacity Sturm (count_roots_inline) counts as the Poly<T> version", "[kernel][sturm]", double,
+                   Mpfr, mpq_class) {
   using T = TestType;
   std::mt19937_64 rng(seed_from_env(31337));
   for (int trial = 0; trial < 200; ++trial) {
     Poly<Q> pq = random_poly(rng, trial % 5);
-    if (trial % 7 == 0) pq = Poly<Q>({Q(-1, 3), Q(1)}) * Poly<Q>({Q(-1, 3), Q(1)}) * random_poly(rng, trial % 3);  // a double root
+    if (trial % 7 == 0)
+      pq = Poly<Q>({Q(-1, 3), Q(1)}) * Poly<Q>({Q(-1, 3), Q(1)}) * random_poly(rng, trial % 3);  // a double root
     std::vector<T> c;
     for (int i = 0; i <= 4; ++i) c.push_back(from_q<T>(pq.coeff(i)));  // zero leading coefficients included
     Poly<T> p(c);
     INFO("trial " << trial << ", degree " << pq.degree());
-    for (auto [a, b] : {std::pair<std::optional<Q>, std::optional<Q>>{std::nullopt, Q(0)}, {std::nullopt, std::nullopt},
-                        {Q(-1), Q(1, 3)}, {Q(0), Q(1)}}) {
+    for (auto [a, b] : {std::pair<std::optional<Q>, std::optional<Q>>{std::nullopt, Q(0)},
+                        {std::nullopt, std::nullopt},
+                        {Q(-1), Q(1, 3)},
+                        {Q(0), Q(1)}}) {
       std::optional<T> at = a ? std::optional<T>(from_q<T>(*a)) : std::nullopt;
       std::optional<T> bt = b ? std::optional<T>(from_q<T>(*b)) : std::nullopt;
       CHECK(count_roots_inline<5, T>(std::span<const T>(c), at, bt) == count_roots(p, at, bt));

@@ -26,9 +26,23 @@ std::string general_rule(double x) { return round_decimal(scalar_traits<double>:
 
 TEST_CASE("rounded_instant of a double gives the general rule's text exactly", "[answer][bezier]") {
   static_assert(prints_as_double<double>() && prints_as_double<Bounded<double>>());
-  std::vector<double> xs = {0.0, -0.0, 1.0, 0.5, 0.1, 0.25, 1e-5, 1e-300, 1e300, 1e16, 1e17, 1e21, 123456789012345678.0,
-                            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-                            std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::denorm_min(),
+  std::vector<double> xs = {0.0,
+                            -0.0,
+                            1.0,
+                            0.5,
+                            0.1,
+                            0.25,
+                            1e-5,
+                            1e-300,
+                            1e300,
+                            1e16,
+                            1e17,
+                            1e21,
+                            123456789012345678.0,
+                            std::numeric_limits<double>::infinity(),
+                            -std::numeric_limits<double>::infinity(),
+                            std::numeric_limits<double>::quiet_NaN(),
+                            std::numeric_limits<double>::denorm_min(),
                             std::numeric_limits<double>::max()};
   for (int e = -1074; e < 1024; ++e) {
     xs.push_back(std::ldexp(1.0, e));

@@ -66,14 +66,21 @@ void check_contains(const std::vector<BD>& got, const std::vector<mpq_class>& ex
 std::vector<BD> generic_convolution(const std::vector<BD>& x, const std::vector<BD>& y) {
   std::vector<BD> r(x.size() + y.size() - 1, BD(0));
   for (std::size_t i = 0; i < x.size(); ++i)
-    for (std::size_t j = 0; j < y.size(); ++j) { BD p = x[i] * y[j]; r[i + j] = r[i + j] + p; }
+    for (std::size_t j = 0; j < y.size(); ++j) {
+      BD p = x[i] * y[j];
+      r[i + j] = r[i + j] + p;
+    }
   return r;
 }
 std::vector<BD> generic_right_piece(std::vector<BD> w, const BD& t) {
   BD s = BD(1) - t;
   const int n = int(w.size()) - 1;
   for (int r = 1; r <= n; ++r)
-    for (int i = 0; i + r <= n; ++i) { BD x = s * w[i]; BD y = t * w[i + 1]; w[i] = x + y; }
+    for (int i = 0; i + r <= n; ++i) {
+      BD x = s * w[i];
+      BD y = t * w[i + 1];
+      w[i] = x + y;
+    }
   return w;
 }
 void check_same_bounds(const std::vector<BD>& fused, const std::vector<BD>& generic) {
@@ -88,7 +95,8 @@ void check_same_bounds(const std::vector<BD>& fused, const std::vector<BD>& gene
 
 }  // namespace
 
-TEST_CASE("running_error_loops: the one-pass bounds are those of Bounded's operators, to rounding", "[running-error-loops]") {
+TEST_CASE("running_error_loops: the one-pass bounds are those of Bounded's operators, to rounding",
+          "[running-error-loops]") {
   std::mt19937_64 rng(34);
   for (int m : {0, 4, 36, 72})
     for (int n : {0, 9, 36}) {
@@ -107,7 +115,8 @@ TEST_CASE("running_error_loops: the one-pass bounds are those of Bounded's opera
   }
 }
 
-TEST_CASE("running_error_loops: Bernstein products hold the plain values and their bounds contain the exact product", "[running-error-loops]") {
+TEST_CASE("running_error_loops: Bernstein products hold the plain values and their bounds contain the exact product",
+          "[running-error-loops]") {
   std::mt19937_64 rng(30);
   for (int m : {0, 1, 5, 24, 36, 60, 144})
     for (int n : {0, 3, 24, 36, 50}) {
@@ -177,7 +186,8 @@ TEST_CASE("running_error_loops: de Casteljau values and subdivision contain the 
   }
 }
 
-TEST_CASE("running_error_loops: the power-to-Bernstein conversion contains the exact coefficients", "[running-error-loops]") {
+TEST_CASE("running_error_loops: the power-to-Bernstein conversion contains the exact coefficients",
+          "[running-error-loops]") {
   std::mt19937_64 rng(33);
   for (int n : {0, 1, 12, 36, 56, 57, 80, 144}) {
     INFO("degree " << n);
@@ -192,7 +202,8 @@ TEST_CASE("running_error_loops: the power-to-Bernstein conversion contains the e
 // The conversion's bounds against Bounded's operators term by term (a product, a division by C(n, i) and a
 // sum each): equal to rounding, for exact binomial rows (n <= 56) and rounded ones with bounds of their own
 // (n > 56, where each quotient's bound takes the divisor's error), and for a polynomial of lower degree.
-TEST_CASE("running_error_loops: the conversion's bounds are those of Bounded's operators, to rounding", "[running-error-loops]") {
+TEST_CASE("running_error_loops: the conversion's bounds are those of Bounded's operators, to rounding",
+          "[running-error-loops]") {
   std::mt19937_64 rng(35);
   for (int n : {1, 12, 56, 57, 100, 144})
     for (int deg : {n, n / 3}) {
@@ -205,13 +216,17 @@ TEST_CASE("running_error_loops: the conversion's bounds are those of Bounded's o
       std::vector<BD> generic(n + 1, BD(0));
       for (int k = 0; k <= n; ++k) {
         const std::vector<BD>& ck = binomial_row(k, like);
-        for (int i = 0; i <= k && i <= p.degree(); ++i) { BD term = ck[i] * p.c[i] / cn[i]; generic[k] = generic[k] + term; }
+        for (int i = 0; i <= k && i <= p.degree(); ++i) {
+          BD term = ck[i] * p.c[i] / cn[i];
+          generic[k] = generic[k] + term;
+        }
       }
       check_same_bounds(fused.b, generic);
     }
 }
 
-TEST_CASE("running_error_loops: binomial rows of Bounded<double> are exact below 2^53 and contain C(n, k) above", "[running-error-loops]") {
+TEST_CASE("running_error_loops: binomial rows of Bounded<double> are exact below 2^53 and contain C(n, k) above",
+          "[running-error-loops]") {
   const BD like(1.0, 0);
   for (int n : {10, 56, 57, 100, 200}) {
     const std::vector<BD>& row = binomial_row(n, like);
@@ -261,7 +276,8 @@ int misses(const BiBern<BD>& got, const BiBern<mpq_class>& exact, const BiBern<d
 
 }  // namespace
 
-TEST_CASE("running_error_loops: a net's subdivision in u holds the plain values and contains the exact net", "[running-error-loops]") {
+TEST_CASE("running_error_loops: a net's subdivision in u holds the plain values and contains the exact net",
+          "[running-error-loops]") {
   std::mt19937_64 rng(35);
   int weakened_misses = 0;
   for (int m : {1, 4, 12, 30})
@@ -275,15 +291,25 @@ TEST_CASE("running_error_loops: a net's subdivision in u holds the plain values 
           BiBern<BD> f = net.b;
           BiBern<mpq_class> fe = net.exact;
           BiBern<double> fp = net.plain;
-          if (left) { keep_u_left(f, t); keep_u_left(fe, mpq_class(tau)); keep_u_left(fp, tau); }
-          else { keep_u_right(f, t); keep_u_right(fe, mpq_class(tau)); keep_u_right(fp, tau); }
+          if (left) {
+            keep_u_left(f, t);
+            keep_u_left(fe, mpq_class(tau));
+            keep_u_left(fp, tau);
+          } else {
+            keep_u_right(f, t);
+            keep_u_right(fe, mpq_class(tau));
+            keep_u_right(fp, tau);
+          }
           CHECK(misses(f, fe, fp, 1.0) == 0);
           weakened_misses += misses(f, fe, fp, 0x1p-8);
           // Column by column through the univariate one-pass loop: the same values, bounds equal to rounding.
           for (std::size_t j = 0; j < net.b.b[0].size(); ++j) {
             std::vector<BD> col;
             for (const auto& row : net.b.b) col.push_back(row[j]);
-            if (left) keep_left(std::span<BD>(col), t); else keep_right(std::span<BD>(col), t);
+            if (left)
+              keep_left(std::span<BD>(col), t);
+            else
+              keep_right(std::span<BD>(col), t);
             for (std::size_t i = 0; i < col.size(); ++i) {
               CHECK(f.b[i][j].value() == col[i].value());
               CHECK(f.b[i][j].bound() >= col[i].bound());

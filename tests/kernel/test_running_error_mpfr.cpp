@@ -26,8 +26,10 @@ mpq_class exact_of(const Mpfr& x) {
   mpz_class m;
   const long e = long(mpfr_get_z_2exp(m.get_mpz_t(), x.get()));
   mpq_class q(m);
-  if (e >= 0) q *= mpq_class(mpz_class(1) << e);
-  else q /= mpq_class(mpz_class(1) << -e);
+  if (e >= 0)
+    q *= mpq_class(mpz_class(1) << e);
+  else
+    q /= mpq_class(mpz_class(1) << -e);
   return q;
 }
 mpq_class exact_of(long double e) {  // a long double bound as a rational, exactly (64-bit significand)
@@ -36,14 +38,17 @@ mpq_class exact_of(long double e) {  // a long double bound as a rational, exact
   const mpz_class m(static_cast<unsigned long>(std::ldexp(f, 64)));
   ex -= 64;
   mpq_class q(m);
-  if (ex >= 0) q *= mpq_class(mpz_class(1) << ex);
-  else q /= mpq_class(mpz_class(1) << -ex);
+  if (ex >= 0)
+    q *= mpq_class(mpz_class(1) << ex);
+  else
+    q /= mpq_class(mpz_class(1) << -ex);
   return q;
 }
 
 }  // namespace
 
-TEST_CASE("Bounded<Mpfr>: mag is at least |x| and within 2^-52 of it, and unit_mag bounds rounding to nearest", "[running-error][mpfr]") {
+TEST_CASE("Bounded<Mpfr>: mag is at least |x| and within 2^-52 of it, and unit_mag bounds rounding to nearest",
+          "[running-error][mpfr]") {
   std::mt19937_64 rng(33);
   std::uniform_int_distribution<long> num(-(1L << 62), 1L << 62);
   std::uniform_int_distribution<int> shift(-300, 300), op(0, 2);
@@ -81,7 +86,8 @@ TEST_CASE("Bounded<Mpfr>: mag is at least |x| and within 2^-52 of it, and unit_m
   CHECK(over_half > checks / 10);
 }
 
-TEST_CASE("Bounded<Mpfr>: the running bound of a short computation contains the exact result", "[running-error][mpfr]") {
+TEST_CASE("Bounded<Mpfr>: the running bound of a short computation contains the exact result",
+          "[running-error][mpfr]") {
   std::mt19937_64 rng(34);
   std::uniform_int_distribution<long> num(-1000000, 1000000);
   for (int bits : {53, 128}) {

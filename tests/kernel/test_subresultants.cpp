@@ -32,14 +32,16 @@ TEST_CASE("The first non-zero psc gives the gcd degree, and S_j is the gcd", "[s
   std::vector<Rational> f = mul(mul(mul({2, 1}, {2, 1}), {-1, 1}), {-3, 1});
   auto fp = lambda_derivative(f);
   CHECK(subresultant_coefficient(f, fp, 0, 0, Rational(0)) == 0);
-  Rational s11 = subresultant_coefficient(f, fp, 1, 1, Rational(0)), s10 = subresultant_coefficient(f, fp, 1, 0, Rational(0));
+  Rational s11 = subresultant_coefficient(f, fp, 1, 1, Rational(0)),
+           s10 = subresultant_coefficient(f, fp, 1, 0, Rational(0));
   REQUIRE(s11 != 0);
   CHECK(-s10 / s11 == -2);  // the double root
   // f = (λ-1)² (λ+1)²: gcd of degree 2, psc_1 = 0, S_2 ∝ λ² - 1
   std::vector<Rational> h = mul(mul({-1, 1}, {-1, 1}), mul({1, 1}, {1, 1}));
   auto hp = lambda_derivative(h);
   CHECK(subresultant_coefficient(h, hp, 1, 1, Rational(0)) == 0);
-  Rational a = subresultant_coefficient(h, hp, 2, 2, Rational(0)), b = subresultant_coefficient(h, hp, 2, 1, Rational(0)),
+  Rational a = subresultant_coefficient(h, hp, 2, 2, Rational(0)),
+           b = subresultant_coefficient(h, hp, 2, 1, Rational(0)),
            c0 = subresultant_coefficient(h, hp, 2, 0, Rational(0));
   REQUIRE(a != 0);
   CHECK(b == 0);

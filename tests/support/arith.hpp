@@ -11,17 +11,34 @@
 
 namespace eccd::test {
 
-template <class T> T like();
-template <> inline double like<double>() { return 1.0; }
-template <> inline Mpfr like<Mpfr>() { return Mpfr(mpq_class(1), 200); }
-template <> inline mpq_class like<mpq_class>() { return mpq_class(1); }
+template <class T>
+T like();
+template <>
+inline double like<double>() {
+  return 1.0;
+}
+template <>
+inline Mpfr like<Mpfr>() {
+  return Mpfr(mpq_class(1), 200);
+}
+template <>
+inline mpq_class like<mpq_class>() {
+  return mpq_class(1);
+}
 
-template <class T> T from_q(const mpq_class& q) { return scalar_traits<T>::from_rational(q, like<T>()); }
-template <class T> Poly<T> from_q(const Poly<mpq_class>& p) {
+template <class T>
+T from_q(const mpq_class& q) {
+  return scalar_traits<T>::from_rational(q, like<T>());
+}
+template <class T>
+Poly<T> from_q(const Poly<mpq_class>& p) {
   return map_coeffs<T>(p, [](const mpq_class& q) { return from_q<T>(q); });
 }
 // A tolerance per arithmetic for comparisons against the exact oracle.
-template <class T> double tolerance() { return scalar_traits<T>::is_exact ? 0.0 : (std::is_same_v<T, double> ? 1e-9 : 1e-40); }
+template <class T>
+double tolerance() {
+  return scalar_traits<T>::is_exact ? 0.0 : (std::is_same_v<T, double> ? 1e-9 : 1e-40);
+}
 
 inline Poly<mpq_class> random_poly(std::mt19937_64& rng, int degree, int range = 9) {
   std::uniform_int_distribution<int> d(-range, range);

@@ -42,7 +42,11 @@ inline bool is_rational_text(const nlohmann::json& j) {
   if (s.empty() || s.size() > 4000) return false;
   std::size_t slash = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s[i] == '/') { if (slash || i == 0) return false; slash = i; continue; }
+    if (s[i] == '/') {
+      if (slash || i == 0) return false;
+      slash = i;
+      continue;
+    }
     if (!(std::isdigit(static_cast<unsigned char>(s[i])) || (i == 0 && s[i] == '-'))) return false;
   }
   return true;

@@ -67,9 +67,12 @@ inline PolyRows world_matrix(const Motion& m, int dim) {
   auto copy = [&](const auto& pm) {
     for (const auto& row : pm) out.emplace_back(row.begin(), row.end());
   };
-  if (dim == 2) copy(motion_matrix<Rational, 3>(m, id));
-  else if (dim == 3) copy(motion_matrix<Rational, 4>(m, id));
-  else throw std::invalid_argument("metamorphic: dimension must be 2 or 3");
+  if (dim == 2)
+    copy(motion_matrix<Rational, 3>(m, id));
+  else if (dim == 3)
+    copy(motion_matrix<Rational, 4>(m, id));
+  else
+    throw std::invalid_argument("metamorphic: dimension must be 2 or 3");
   return out;
 }
 
@@ -98,7 +101,10 @@ inline RPoly rows_det(const PolyRows& a) {
       sub.push_back(row);
     }
     RPoly term = a[0][j] * rows_det(sub);
-    if (j % 2) d -= term; else d += term;
+    if (j % 2)
+      d -= term;
+    else
+      d += term;
   }
   return d;
 }
@@ -127,7 +133,8 @@ inline void check_motion_rows(const PolyRows& m, int dim, const std::string& wha
   PolyRows L(dim, std::vector<RPoly>(dim));
   for (int i = 0; i < dim; ++i)
     for (int j = 0; j < dim; ++j) L[i][j] = m[i][j];
-  if (vanishes_on_unit_interval(rows_det(L))) throw std::invalid_argument(what + ": the linear part is singular on [0, 1]");
+  if (vanishes_on_unit_interval(rows_det(L)))
+    throw std::invalid_argument(what + ": the linear part is singular on [0, 1]");
 }
 
 // True iff m is a rational rigid motion up to its weight: with L the
@@ -157,13 +164,18 @@ inline bool is_rigid_motion(const PolyRows& m, int dim) {
 inline PolyRows rigid_2d(long a, long b, const RPoly& x, const RPoly& y) {
   mpz_class c2 = mpz_class(a) * a + mpz_class(b) * b, c;
   mpz_sqrt(c.get_mpz_t(), c2.get_mpz_t());
-  if (c * c != c2 || c == 0) throw std::invalid_argument("rigid_2d: (a, b) is not the leg pair of a Pythagorean triple");
+  if (c * c != c2 || c == 0)
+    throw std::invalid_argument("rigid_2d: (a, b) is not the leg pair of a Pythagorean triple");
   Rational co(mpz_class(a), c), si(mpz_class(b), c);
   co.canonicalize();
   si.canonicalize();
   PolyRows g(3, std::vector<RPoly>(3));
-  g[0][0] = RPoly::constant(co); g[0][1] = RPoly::constant(Rational(-si)); g[0][2] = x;
-  g[1][0] = RPoly::constant(si); g[1][1] = RPoly::constant(co);            g[1][2] = y;
+  g[0][0] = RPoly::constant(co);
+  g[0][1] = RPoly::constant(Rational(-si));
+  g[0][2] = x;
+  g[1][0] = RPoly::constant(si);
+  g[1][1] = RPoly::constant(co);
+  g[1][2] = y;
   g[2][2] = RPoly::constant(Rational(1));
   return g;
 }
@@ -173,7 +185,10 @@ inline PolyRows rigid_2d(long a, long b, const RPoly& x, const RPoly& y) {
 inline PolyRows rigid_3d(const std::array<long, 4>& e, const std::array<RPoly, 3>& v) {
   Poly<Rational> q[4];
   Rational E = 0;
-  for (int i = 0; i < 4; ++i) { q[i] = RPoly::constant(Rational(e[i])); E += Rational(e[i]) * Rational(e[i]); }
+  for (int i = 0; i < 4; ++i) {
+    q[i] = RPoly::constant(Rational(e[i]));
+    E += Rational(e[i]) * Rational(e[i]);
+  }
   if (E == 0) throw std::invalid_argument("rigid_3d: zero quaternion");
   PolyMatrix<Rational, 4> r = quaternion_matrix(q);  // E R
   PolyRows g(4, std::vector<RPoly>(4));
@@ -318,7 +333,8 @@ inline std::string answer_mismatch(const Answer& expected, const Answer& got) {
   if (expected.intervals.size() != got.intervals.size()) return "number of intervals differs";
   if (expected.contacts.size() != got.contacts.size()) return "number of contacts differs";
   if (expected.contact_intervals.size() != got.contact_intervals.size()) return "number of contact intervals differs";
-  if (expected.first_contact.has_value() != got.first_contact.has_value()) return "first contact present in one answer only";
+  if (expected.first_contact.has_value() != got.first_contact.has_value())
+    return "first contact present in one answer only";
   for (std::size_t i = 0; i < expected.intervals.size(); ++i)
     if (!pair_ok("interval start", i, expected.intervals[i].first, got.intervals[i].first) ||
         !pair_ok("interval end", i, expected.intervals[i].second, got.intervals[i].second))
@@ -329,7 +345,8 @@ inline std::string answer_mismatch(const Answer& expected, const Answer& got) {
     if (!pair_ok("contact interval start", i, expected.contact_intervals[i].first, got.contact_intervals[i].first) ||
         !pair_ok("contact interval end", i, expected.contact_intervals[i].second, got.contact_intervals[i].second))
       return o.str();
-  if (expected.first_contact && !pair_ok("first contact", 0, *expected.first_contact, *got.first_contact)) return o.str();
+  if (expected.first_contact && !pair_ok("first contact", 0, *expected.first_contact, *got.first_contact))
+    return o.str();
   return "";
 }
 

@@ -49,8 +49,12 @@ class Mutator {
     int rounds = 1 + int(pick(3));
     for (int r = 0; r < rounds; ++r) {
       switch (pick(3)) {
-        case 0: huge_number(text, how); break;
-        default: structural(text, how); break;
+        case 0:
+          huge_number(text, how);
+          break;
+        default:
+          structural(text, how);
+          break;
       }
     }
     return text;
@@ -62,14 +66,30 @@ class Mutator {
     int rounds = 1 + int(pick(3));
     for (int r = 0; r < rounds; ++r) {
       switch (pick(9)) {
-        case 0: flip(text, how); break;
-        case 1: truncate(text, how); break;
-        case 2: splice(text, how); break;
-        case 3: blowup(text, how); break;
-        case 4: duplicate_key(text, how); break;
-        case 5: huge_number(text, how); break;
-        case 6: deep_nesting(text, how); break;
-        default: structural(text, how); break;
+        case 0:
+          flip(text, how);
+          break;
+        case 1:
+          truncate(text, how);
+          break;
+        case 2:
+          splice(text, how);
+          break;
+        case 3:
+          blowup(text, how);
+          break;
+        case 4:
+          duplicate_key(text, how);
+          break;
+        case 5:
+          huge_number(text, how);
+          break;
+        case 6:
+          deep_nesting(text, how);
+          break;
+        default:
+          structural(text, how);
+          break;
       }
     }
     return text;
@@ -142,12 +162,24 @@ class Mutator {
       if (t[i] != '"') continue;
       std::size_t j = t.find('"', i + 1);
       if (j == std::string::npos) break;
-      if (j > i + 1 && (std::isdigit(static_cast<unsigned char>(t[i + 1])) || t[i + 1] == '-')) strs.push_back({i, j + 1 - i});
+      if (j > i + 1 && (std::isdigit(static_cast<unsigned char>(t[i + 1])) || t[i + 1] == '-'))
+        strs.push_back({i, j + 1 - i});
       i = j;
     }
-    static const std::vector<std::string> odd = {"\"1e9999\"", "\"-1e-9999\"", "\"1/0\"", "\"1e100000\"", "\"0/0\"",
-                                                 "\"-0\"", "\"1e-10000\"", "\"4294967296\"", "\"18446744073709551617\"",
-                                                 "99999999999999999999999999", "-1", "1.5e308", "\"nan\"", "\"inf\""};
+    static const std::vector<std::string> odd = {"\"1e9999\"",
+                                                 "\"-1e-9999\"",
+                                                 "\"1/0\"",
+                                                 "\"1e100000\"",
+                                                 "\"0/0\"",
+                                                 "\"-0\"",
+                                                 "\"1e-10000\"",
+                                                 "\"4294967296\"",
+                                                 "\"18446744073709551617\"",
+                                                 "99999999999999999999999999",
+                                                 "-1",
+                                                 "1.5e308",
+                                                 "\"nan\"",
+                                                 "\"inf\""};
     std::string rep = pick(3) == 0 ? "\"" + std::string(1 + pick(max_blowup_), char('1' + pick(9))) + "/" +
                                          std::string(1 + pick(max_blowup_), char('1' + pick(9))) + "\""
                                    : odd[pick(odd.size())];
@@ -161,7 +193,10 @@ class Mutator {
     std::string v = pick(2) ? std::string(depth, '[') + std::string(depth, ']') : std::string(depth, '[');
     std::size_t colon = t.find(':', pick(t.size() + 1));
     if (colon == std::string::npos) colon = t.find(':');
-    if (colon == std::string::npos) { t += v; return; }
+    if (colon == std::string::npos) {
+      t += v;
+      return;
+    }
     t.insert(colon + 1, v + (pick(2) ? "," : ""));
     how += "deep(" + std::to_string(depth) + ");";
   }
@@ -176,17 +211,34 @@ class Mutator {
       case 8:  // a copy of another value of the document in its place (wrong type or wrong number)
         n = nlohmann::ordered_json(*nodes[pick(nodes.size())]);
         break;
-      case 0: n = nullptr; break;
-      case 1: n = ""; break;
-      case 2: n = nlohmann::ordered_json::array(); break;
-      case 3: n = nlohmann::ordered_json::object(); break;
-      case 4: n = std::uint64_t(1) << 63; break;
-      case 5: n = "not a number"; break;
-      case 6: n = pick(2) ? nlohmann::ordered_json(-1) : nlohmann::ordered_json(4294967297ull); break;
+      case 0:
+        n = nullptr;
+        break;
+      case 1:
+        n = "";
+        break;
+      case 2:
+        n = nlohmann::ordered_json::array();
+        break;
+      case 3:
+        n = nlohmann::ordered_json::object();
+        break;
+      case 4:
+        n = std::uint64_t(1) << 63;
+        break;
+      case 5:
+        n = "not a number";
+        break;
+      case 6:
+        n = pick(2) ? nlohmann::ordered_json(-1) : nlohmann::ordered_json(4294967297ull);
+        break;
       default:
-        if (n.is_array() && !n.empty()) n.erase(n.begin() + long(pick(n.size())));
-        else if (n.is_object() && !n.empty()) n.erase(std::next(n.begin(), long(pick(n.size()))));
-        else if (n.is_array()) n.push_back(n.is_array() ? nlohmann::ordered_json(1) : nlohmann::ordered_json());
+        if (n.is_array() && !n.empty())
+          n.erase(n.begin() + long(pick(n.size())));
+        else if (n.is_object() && !n.empty())
+          n.erase(std::next(n.begin(), long(pick(n.size()))));
+        else if (n.is_array())
+          n.push_back(n.is_array() ? nlohmann::ordered_json(1) : nlohmann::ordered_json());
         break;
     }
     t = j.dump(pick(2) ? 1 : -1);

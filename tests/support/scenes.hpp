@@ -36,13 +36,16 @@ inline RPoly rp(std::initializer_list<long> c) {
 
 // Two ellipses with semi-axes (a0, a1), (b0, b1), each under a translation
 // M = [[1, 0, x(t)], [0, 1, y(t)], [0, 0, 1]].
-inline Scene translation_scene(Rational a0, Rational a1, RPoly xa, RPoly ya, Rational b0, Rational b1, RPoly xb, RPoly yb) {
+inline Scene translation_scene(Rational a0, Rational a1, RPoly xa, RPoly ya, Rational b0, Rational b1, RPoly xb,
+                               RPoly yb) {
   Scene s;
   s.name = "translations";
   s.dim = 2;
   auto shape = [](Rational u, Rational v) {
     std::vector<std::vector<Rational>> q(3, std::vector<Rational>(3, Rational(0)));
-    q[0][0] = 1 / (u * u); q[1][1] = 1 / (v * v); q[2][2] = -1;
+    q[0][0] = 1 / (u * u);
+    q[1][1] = 1 / (v * v);
+    q[2][2] = -1;
     return q;
   };
   auto motion = [](RPoly x, RPoly y) {
@@ -69,7 +72,9 @@ inline Scene random_kinematic_scene(std::mt19937_64& rng, int k) {
   auto shape = [&]() {
     std::vector<std::vector<Rational>> q(3, std::vector<Rational>(3, Rational(0)));
     Rational u = axis(rng), v = axis(rng);
-    q[0][0] = 1 / (u * u); q[1][1] = 1 / (v * v); q[2][2] = -1;
+    q[0][0] = 1 / (u * u);
+    q[1][1] = 1 / (v * v);
+    q[2][2] = -1;
     return q;
   };
   auto motion = [&]() {
@@ -96,8 +101,10 @@ inline int negative_root_count(const Scene& s, const Rational& t) {
     auto id = [](const Rational& q) { return q; };
     PolyMatrix<Rational, 3> m = motion_matrix<Rational, 3>(o.motion, id);
     Rational M[3][3], inv[3][3], A[3][3];
-    for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) M[i][j] = m[i][j](t);
-    Rational det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) M[i][j] = m[i][j](t);
+    Rational det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
+                   M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
                    M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
@@ -107,7 +114,8 @@ inline int negative_root_count(const Scene& s, const Rational& t) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         Rational acc = 0;
-        for (int k = 0; k < 3; ++k) for (int l = 0; l < 3; ++l) acc += inv[k][i] * o.Q[k][l] * inv[l][j];
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) acc += inv[k][i] * o.Q[k][l] * inv[l][j];
         A[i][j] = acc;
       }
     return std::vector<Rational>{A[0][0], A[0][1], A[0][2], A[1][0], A[1][1], A[1][2], A[2][0], A[2][1], A[2][2]};
@@ -116,7 +124,8 @@ inline int negative_root_count(const Scene& s, const Rational& t) {
   auto f = [&](const Rational& lam) {
     Rational m[9];
     for (int i = 0; i < 9; ++i) m[i] = lam * a[i] - b[i];
-    Rational d = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
+    Rational d =
+        m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
     return d;
   };
   // Lagrange interpolation through λ = 0, 1, 2, 3 into power form.
@@ -125,7 +134,10 @@ inline int negative_root_count(const Scene& s, const Rational& t) {
     RPoly basis = rp({1});
     Rational den = 1;
     for (int j = 0; j < 4; ++j)
-      if (j != i) { basis = basis * rp({-j, 1}); den *= (i - j); }
+      if (j != i) {
+        basis = basis * rp({-j, 1});
+        den *= (i - j);
+      }
     poly += (f(Rational(i)) / den) * basis;
   }
   return count_roots<Rational>(poly, std::optional<Rational>(), std::optional<Rational>(Rational(0)));

@@ -45,7 +45,10 @@ inline Scene random_euler_scene(std::mt19937_64& rng, int k) {
   };
   auto shape = [&]() {
     std::vector<std::vector<Rational>> q(4, std::vector<Rational>(4, Rational(0)));
-    for (int i = 0; i < 3; ++i) { Rational a = axis(rng); q[i][i] = 1 / (a * a); }
+    for (int i = 0; i < 3; ++i) {
+      Rational a = axis(rng);
+      q[i][i] = 1 / (a * a);
+    }
     q[3][3] = -1;
     return q;
   };
@@ -72,18 +75,25 @@ inline Scene random_euler_scene(std::mt19937_64& rng, int k) {
 template <int N>
 std::array<std::array<Rational, N>, N> inverse(std::array<std::array<Rational, N>, N> m) {
   std::array<std::array<Rational, N>, N> inv{};
-  for (int i = 0; i < N; ++i) for (int j = 0; j < N; ++j) inv[i][j] = i == j ? 1 : 0;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) inv[i][j] = i == j ? 1 : 0;
   for (int c = 0; c < N; ++c) {
     int p = c;
     while (m[p][c] == 0) ++p;
     std::swap(m[p], m[c]);
     std::swap(inv[p], inv[c]);
     Rational d = m[c][c];
-    for (int j = 0; j < N; ++j) { m[c][j] /= d; inv[c][j] /= d; }
+    for (int j = 0; j < N; ++j) {
+      m[c][j] /= d;
+      inv[c][j] /= d;
+    }
     for (int r = 0; r < N; ++r)
       if (r != c && m[r][c] != 0) {
         Rational f = m[r][c];
-        for (int j = 0; j < N; ++j) { m[r][j] -= f * m[c][j]; inv[r][j] -= f * inv[c][j]; }
+        for (int j = 0; j < N; ++j) {
+          m[r][j] -= f * m[c][j];
+          inv[r][j] -= f * inv[c][j];
+        }
       }
   }
   return inv;
@@ -92,7 +102,9 @@ std::array<std::array<Rational, N>, N> inverse(std::array<std::array<Rational, N
 // Exact determinant (Gaussian elimination over the rationals): the kernel's,
 // which no pipeline decision uses (it only balances the pencil).
 template <int N>
-Rational det_rational(const std::array<std::array<Rational, N>, N>& m) { return field_det<Rational, N>(m); }
+Rational det_rational(const std::array<std::array<Rational, N>, N>& m) {
+  return field_det<Rational, N>(m);
+}
 
 // Distinct negative roots of det(λA(t) - B(t)) with A(t) = M(t)^-T Q M(t)^-1
 // from the motion matrix itself, f interpolated at λ = 0..4, exact Sturm count.
@@ -102,12 +114,14 @@ inline int negative_root_count_3d(const Scene& s, const Rational& t) {
     auto id = [](const Rational& q) { return q; };
     PolyMatrix<Rational, 4> m = motion_matrix<Rational, 4>(o.motion, id);
     M4 M{}, A{};
-    for (int i = 0; i < 4; ++i) for (int j = 0; j < 4; ++j) M[i][j] = m[i][j](t);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) M[i][j] = m[i][j](t);
     M4 inv = inverse<4>(M);
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) {
         Rational acc = 0;
-        for (int k = 0; k < 4; ++k) for (int l = 0; l < 4; ++l) acc += inv[k][i] * o.Q[k][l] * inv[l][j];
+        for (int k = 0; k < 4; ++k)
+          for (int l = 0; l < 4; ++l) acc += inv[k][i] * o.Q[k][l] * inv[l][j];
         A[i][j] = acc;
       }
     return A;
@@ -116,11 +130,15 @@ inline int negative_root_count_3d(const Scene& s, const Rational& t) {
   RPoly poly;
   for (int i = 0; i <= 4; ++i) {
     M4 m{};
-    for (int r = 0; r < 4; ++r) for (int c = 0; c < 4; ++c) m[r][c] = Rational(i) * a[r][c] - b[r][c];
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) m[r][c] = Rational(i) * a[r][c] - b[r][c];
     RPoly basis = rp({1});
     Rational den = 1;
     for (int j = 0; j <= 4; ++j)
-      if (j != i) { basis = basis * rp({-j, 1}); den *= (i - j); }
+      if (j != i) {
+        basis = basis * rp({-j, 1});
+        den *= (i - j);
+      }
     poly += (det_rational<4>(m) / den) * basis;
   }
   return count_roots<Rational>(poly, std::optional<Rational>(), std::optional<Rational>(Rational(0)));
