@@ -25,7 +25,7 @@
 //     of doubles around the exact C (a proof; an uncertain sign is a miss);
 //     exact: in rationals. A plane is trusted for the pose it was checked on.
 //  3. otherwise the static test (f(λ) = det(λA − B), 002 Theorem 1 / 003
-//     Theorem 6: api/static_test.hpp's rules): double: api/static_test.hpp's
+//     Theorem 6: api/static_status.hpp's rules): double: api/static_status.hpp's
 //     static_status from the semi-axes and the pose rounded to doubles (as
 //     `eccd solve --arith double` rounds a scene) when the shape is
 //     axis-aligned and centred, otherwise f's coefficients in intervals; a

@@ -1,7 +1,7 @@
 // Separating planes at an instant and over a frame (api/separate.hpp).
 #include "api/separate.hpp"
 
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "floating/rounded_input.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/plane_frame_check.hpp"

@@ -2,7 +2,7 @@
 // The 3D static filter (kernel/static_filter3d.hpp) compiled for AVX-512
 // (F, DQ, VL) with AVX2 and FMA in its own translation unit,
 // api/static_filter_simd.cpp, which CMakeLists.txt builds with those flags;
-// api/static_test.cpp calls it only when __builtin_cpu_supports says the CPU
+// api/static_status.cpp calls it only when __builtin_cpu_supports says the CPU
 // has all of them, and the default build otherwise (issue 21). AVX-512, not
 // AVX2: GCC 12 if-converts and vectorises the lane loop's compares with
 // AVX-512's mask registers only (with -mavx2 -mfma: "control flow in loop").
@@ -29,7 +29,7 @@
 namespace eccd::simd {
 
 inline constexpr int kSimdLanes = 8;
-bool has_avx512();  // the CPU runs this unit's code (defined in api/static_test.cpp, compiled for any CPU)
+bool has_avx512();  // the CPU runs this unit's code (defined in api/static_status.cpp, compiled for any CPU)
 bool has_avx2();    // the CPU runs api/static_filter_avx2.cpp's code (AVX2 and FMA)
 void static_filter3d_lanes_avx512(const double (&in)[30][kSimdLanes], double (&code)[kSimdLanes]);
 void static_filter3d_lanes_avx2(const double (&in)[30][kSimdLanes], double (&code)[kSimdLanes]);

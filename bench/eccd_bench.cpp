@@ -92,7 +92,7 @@
 //                         (the report runs a missed target's row so under perf)
 #include "bench/groups.hpp"
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "api/separate.hpp"
 #include "api/animate.hpp"
 #include "certified/ladder.hpp"

@@ -1,4 +1,4 @@
-// The certified static test (issue 18 point 5, api/static_test.hpp): the
+// The certified static test (issue 18 point 5, api/static_status.hpp): the
 // filtered predicate (double with its error bound, exact only where that is
 // uncertain) next to the double test, on the same batches of random pairs as
 // static2d / static3d. Baseline: the double test through the API.

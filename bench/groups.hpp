@@ -4,7 +4,7 @@
 // rows and what each row answered, the timing loop, lazily built inputs, the summaries of a CCD
 // run, and the scenes several groups use.
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "api/separate.hpp"
 #include "api/animate.hpp"
 #include "certified/ladder.hpp"

@@ -30,7 +30,7 @@
 #include "api/separate.hpp"
 #include "api/solve.hpp"
 #include "api/static_filter_simd.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "bench/fcl_side.hpp"
 #include "compare/fcl_engine.hpp"
 #include "io/animation_reader.hpp"

@@ -275,7 +275,7 @@ template <bool kLanes, class D = double, class Leaf>
 }  // namespace static_filter_detail
 
 // The status a filter code stands for (1 separate, 2 overlapping, anything else
-// uncertain: the filter did not decide); api/static_test.cpp reads the batch's codes with it.
+// uncertain: the filter did not decide); api/static_status.cpp reads the batch's codes with it.
 inline Status static_filter_status(double c) {
   return c == 1.0 ? Status::separate : c == 2.0 ? Status::overlapping : Status::uncertain;
 }

@@ -1,5 +1,5 @@
-// Static tests from a scene at an instant or from two poses (api/static_test.hpp).
-#include "api/static_test.hpp"
+// Static tests from a scene at an instant or from two poses (api/static_status.hpp).
+#include "api/static_status.hpp"
 
 #include "api/static_filter_simd.hpp"
 
