@@ -20,7 +20,7 @@ void register_static3d() {
       "(kernel/fast_quartic.hpp, 40 multiplications + det B by cofactors); status from the Sturm count of the "
       "negative roots (kernel/quartic_status.hpp). Rows 'coefficients only' and 'status only' split the time.",
       "001: the whole static procedure (motion matrices of degree 4 included) in under 1 µs on a 3 GHz Pentium IV; "
-      "issue 21 target: at most 40 ns per pair (batched: 15 ns per pair)");
+      "speed target: at most 40 ns per pair (batched: 15 ns per pair)");
   auto all3 = [](auto status_of) {
     const Static3D& s = static3d.get();
     std::vector<Status> v;
@@ -57,7 +57,7 @@ void register_static3d() {
         timed(st, "static3d/Appendix A + Sturm", f,
               [&](Status) { return all3([&](int k) { return static_status(s.pa[k], s.pb[k]); }); });
       });
-  // Issue 21: the batched API, 64 pairs per iteration (the figure per pair is the median / 64; target 15 ns per pair).
+  // The batched API, 64 pairs per iteration (the figure per pair is the median / 64; target 15 ns per pair).
   row("static3d", "static_status_batch (API, 64 pairs per iteration)", false, Cost::fast,
       "eccd::static_status_batch over 64 pairs from two poses (blocks of 8 lanes in structure of arrays through the "
       "static "
