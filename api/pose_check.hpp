@@ -1,5 +1,5 @@
 #pragma once
-// The papers' per-pose mode (issue 36 point 1): every checked pair of an
+// The papers' per-pose mode (000 section 5, 001 section 5): every checked pair of an
 // animation at every key pose, by the static test, keeping the separating
 // plane from pose to pose (paper 000 section 4; docs/animation-format.md,
 // "The per-pose mode").

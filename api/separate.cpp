@@ -271,7 +271,7 @@ Separation separate_floating(const Scene& scene, const mpq_class& t, const Arith
   return s;
 }
 
-// Certified (issue 21): 000's construction in double from the scene rounded to double; its plane (the exact
+// Certified: 000's construction in double from the scene rounded to double; its plane (the exact
 // rationals of the doubles) is proved by the four inequalities of check_at evaluated in Bounded<double>, whose
 // running error bounds hold against the same formulas on the scene's exact numbers (number/running_error.hpp):
 // each certainly-signed value has the exact value's sign, so the plane provably separates a and b at t. When the

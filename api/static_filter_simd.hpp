@@ -3,7 +3,7 @@
 // (F, DQ, VL) with AVX2 and FMA in its own translation unit,
 // api/static_filter_simd.cpp, which CMakeLists.txt builds with those flags;
 // api/static_status.cpp calls it only when __builtin_cpu_supports says the CPU
-// has all of them, and the default build otherwise (issue 21). AVX-512, not
+// has all of them, and the default build otherwise. AVX-512, not
 // AVX2: GCC 12 if-converts and vectorises the lane loop's compares with
 // AVX-512's mask registers only (with -mavx2 -mfma: "control flow in loop").
 // Why a translation unit and not target attributes: GCC does not inline a
@@ -18,7 +18,7 @@
 // ValueMagnitude is the double run, lane 1 the Magnitude run), so the batch
 // decides exactly the pairs static_status decides (contraction would keep the
 // bounds, number/static_bound.hpp, but could move a pair at a bound's edge).
-// Issue 36: the same lanes compiled for AVX2 + FMA (no AVX-512) in
+// The same lanes compiled for AVX2 + FMA (no AVX-512) in
 // api/static_filter_avx2.cpp, written with explicit 4-lane vectors
 // (number/lane_vector.hpp) since GCC's vectoriser does not take this loop under
 // AVX2; same flags otherwise (-ffp-contract=off: each lane rounds as the one

@@ -7,7 +7,7 @@
 // set of F(u,t) = det((u-1)A(t) - uB(t)) in the (u,t) square (001 section 4,
 // 002 section III), with the critical instants, collision intervals and
 // contacts that `eccd solve` reports in the chosen arithmetic. Independent
-// motions ("parameters": "independent", 001 section 4; issue 20): one panel,
+// motions ("parameters": "independent", 001 section 4): one panel,
 // where A(s) meets B(t) on a grid of the (s, t) square (add_st_grid below),
 // whose boundary is the zero set of F(u, s, t) projected on (s, t), with the
 // answer's s- and t-intervals drawn along the axes (exact by default, double
@@ -573,7 +573,7 @@ std::string find_python(std::string& tried) {
   return "";
 }
 
-// Independent motions (001 section 4; issue 20 point 5): where A(s) and B(t) meet, on an n x n grid of the
+// Independent motions (001 section 4): where A(s) and B(t) meet, on an n x n grid of the
 // (s, t) square, by the double static test (api/static_status.hpp, status_at: 001 Appendix A with its error
 // bound) on the shared-parameter scene with A fixed at A(s), and the exact static test where double's error
 // bound cannot decide (two balls: f always has a double root): 1 meets (touching or overlapping), 0 separate. The zero

@@ -106,7 +106,7 @@ inline double nearest_double(const mpq_class& q) {
   return d;
 }
 
-// How many significant digits an instant's approx carries (issue 19): what
+// How many significant digits an instant's approx carries: what
 // the instant supports, no more. This is the one rule; every pipeline makes
 // its instants through bracketed_instant or rounded_instant below.
 //  - An instant with a bracket [lo, hi] (exact, certified): the digits the
@@ -160,7 +160,7 @@ inline Instant bracketed_instant(const mpq_class& mid, const mpq_class& lo, cons
 
 // A floating instant (no bracket) at t computed in T: approx to
 // precision_digits of T's precision, value the double nearest t.
-// Cost (issue 21): for T = double or a double with a running error bound
+// Cost: for T = double or a double with a running error bound
 // (its to_string prints the value with "%.17g"), the text already has the 17
 // significant digits precision_digits(53) asks for, and round_decimal gives it
 // back unchanged (checked over every power of two, its predecessor and 4

@@ -13,12 +13,12 @@
 //     003 Table I (e.g. Δ of degree 96 for 003 Example 2, not 192);
 //   - Q and N are scaled by positive rationals to primitive integer entries.
 // Both steps multiply A(t) by a positive function and change no root of
-// f(λ;t) (design.md). Every pipeline (double, MPFR, exact) then starts from
+// f(λ;t) (docs/architecture.md, "Use the adjugate"). Every pipeline (double, MPFR, exact) then starts from
 // these same coefficients, rounded to its own arithmetic; all later work
 // (A(t), f, Δ, roots, decisions) is done in that arithmetic, which is what
 // the harness measures. Requirements on T: scalar_traits<T>::from_rational.
 //
-// Input modes (issue 14). This exact preparation is the start of the exact
+// Input modes (api/options.hpp, InputMode). This exact preparation is the start of the exact
 // and certified pipelines, and of the floating ones in input mode `prepared`.
 // No user's program works this way, so the floating pipelines' default is
 // `rounded` (floating/rounded_input.hpp): each number of the scene rounded to

@@ -1,6 +1,6 @@
 #pragma once
 // The static test of two ellipsoids from two poses in plain double with
-// a-priori error bounds (issue 21): a straight-line program with no bound
+// a-priori error bounds: a straight-line program with no bound
 // object inside it, its magnitude run and a depth fixed at compile time
 // (number/static_bound.hpp), then the sign rule. It says `uncertain` where a
 // bound cannot decide (touching, near-touching, symmetric shapes, inputs
