@@ -8,7 +8,7 @@
 // exactly one sign change and whose end values have opposite strict signs
 // holds exactly one simple root (Descartes' rule for the Bernstein basis), and
 // is refined by modified regula falsi to the working precision: from degree 16
-// on each step's value is O(n) (Horner in t/(1-t):
+// upward each step's value is O(n) (Horner in t/(1-t):
 // kernel/bernstein_horner.hpp), the first point is where the control polygon
 // crosses zero and the damping is Anderson-Björck's; below degree 16 the steps
 // are Illinois' from the ends on de Casteljau values. The
