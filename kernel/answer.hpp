@@ -18,6 +18,7 @@
 // true (the spec: touching counts as collision); its instants are not listed
 // in `contacts`, which keeps the isolated instants of external tangency.
 // Without contact_intervals a continuous touch would read as an overlap.
+#include "number/double_traits.hpp"
 #include "number/scalar_traits.hpp"
 
 #include <gmpxx.h>
@@ -95,16 +96,9 @@ inline std::string decimal_string(const mpq_class& q, int digits = 20) {
   return out;
 }
 
-// The double nearest to an exact rational (MPFR rounding to nearest), for
-// Instant::value: display and reports only, never a decision.
-inline double nearest_double(const mpq_class& q) {
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
-  double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  return d;
-}
+// The double nearest to an exact rational (rounded to nearest: scalar_traits<double>::from_rational, the one
+// conversion), for Instant::value: display and reports only, never a decision.
+inline double nearest_double(const mpq_class& q) { return scalar_traits<double>::from_rational(q); }
 
 // How many significant digits an instant's approx carries: what
 // the instant supports, no more. This is the one rule; every pipeline makes

@@ -178,9 +178,8 @@ inline void refuse_independent(const Scene& s, const std::string& who = "this pi
   if (s.independent)
     throw IndependentMotionsRefused(
         "the scene has independent motions (\"parameters\": \"independent\": A(s), B(t)); " + who +
-        " treats one shared t; independent scenes are answered by `eccd solve` only (--arith exact or certified: "
-        "proved "
-        "answers; double or mpfr:BITS)");
+        " treats one shared t; independent scenes are solved by eccd::solve (`eccd solve`, `regress`, `report`, "
+        "`plot`; --arith exact or certified: proved answers; double or mpfr:BITS) and certified by `eccd certify`");
 }
 
 // Throws NotRationalMotion for a motion that has no polynomial form (cycloidal),
