@@ -6,7 +6,7 @@
 // by the keyframe rule (kernel/keyframe_motion.hpp), so each pair is one
 // scene of scene-format.md in the local time τ = (t − t_k)/(t_{k+1} − t_k)
 // (pair_frame_scene). animate() runs, frame by frame:
-//  1. bounding volumes (issue 17; paper 001 section 5 uses bounding spheres):
+//  1. bounding volumes (paper 001 section 5 uses bounding spheres):
 //     for each body a sphere containing its swept volume over the frame:
 //     centre m = (c_k + c_{k+1})/2, radius ρ = |c_{k+1} − c_k|/2 + r·δ, with r
 //     a bound on |x| over the body's shape in its own frame and δ a bound on

@@ -1,5 +1,5 @@
 #pragma once
-// The one comparison of two answers (issue 16): how an answer differs from a
+// The one comparison of two answers: how an answer differs from a
 // reference answer, counted and in words. Every place that compares answers
 // uses it: the report's metrics (compare/metrics.hpp), the verdicts of
 // `eccd certify` and `eccd regress --floating` (compare/verdict.hpp), the
@@ -26,7 +26,7 @@
 // touching (contact_intervals, docs/answer-format.md): the counts must agree
 // and then their ends match. Every undecided instant of the answer is a
 // difference. The answers agree iff there is no difference.
-// Independent motions (Answer::independent, issue 20): answers of different
+// Independent motions (Answer::independent): answers of different
 // kinds never agree; the s_intervals and then the t_intervals are matched
 // exactly as collision intervals are ("s-interval 1 end off by ..."), and
 // `intervals` / `reference_intervals` count both lists.

@@ -94,7 +94,7 @@ void add_contact_points_3d(const Scene& scene, Solution& s, const PreparedPair<4
     }
     auto run = [&](const auto& like) {
       using T = std::decay_t<decltype(like)>;
-      // The rounded pair is made once per scene, not once per contact (issue 21).
+      // The rounded pair is made once per scene, not once per contact.
       static_assert(std::is_same_v<T, double> || std::is_same_v<T, Mpfr>);
       std::optional<MovingPair<T, 4>>& cached = rounded_pair_cache<T>(double_pair, mpfr_pair);
       std::string& trouble = std::is_same_v<T, double> ? double_trouble : mpfr_trouble;

@@ -1,5 +1,5 @@
 #pragma once
-// Contact points and normals of a solved 3D scene (issue 17 point 4).
+// Contact points and normals of a solved 3D scene.
 //
 // Statement. For each external contact of the answer (an isolated instant
 // t* of external tangency) the contact point is the null vector of
@@ -21,7 +21,7 @@ namespace eccd {
 
 // Fills solution.answer.contact_points (one per contact) for a 3D scene whose run left them out.
 // prepared: the scene's exactly prepared pair when the caller has it already (an exact or certified run), so
-// that it is not prepared a second time (issue 18: a tenth of a certified 3D query); null: prepared here if needed.
+// that it is not prepared a second time (that costs a tenth of a certified 3D query); null: prepared here if needed.
 void add_contact_points_3d(const Scene& scene, Solution& solution, const PreparedPair<4>* prepared = nullptr);
 
 }  // namespace eccd

@@ -1,5 +1,5 @@
 #pragma once
-// Judge any engine's answer against the certified one (issue 19, point 2):
+// Judge any engine's answer against the certified one:
 // an answer in the scene format (scene-format.md "The answer",
 // docs/answer-format.md) from FCL, from the user's simulator or from one of
 // eccd's floating pipelines, compared with the scene's certified answer.

@@ -23,7 +23,7 @@ namespace eccd {
 // floating point; the sampled baselines of 002 IV on a grid of N instants).
 enum class Method { bezier, projection, sampling, marching };
 
-// The two faces of a floating run (design.md "two faces"): `none` runs the
+// The two faces of a floating run (docs/architecture.md, "Two faces"): `none` runs the
 // published algorithm in plain T (double or MPFR), nothing added, so its
 // errors are the algorithm's; `bound` runs the same templates in Bounded<T>
 // (number/running_error.hpp), where a sign the error bound cannot decide

@@ -1,7 +1,7 @@
 // The per-pose mode (see api/pose_check.hpp for the statement).
 #include "api/pose_check.hpp"
 
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "api/sweep_and_prune.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/keyframe_motion.hpp"
@@ -428,7 +428,7 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
             c.ai = world_at_pose<Interval, H>(c.mi, Qi[b], diag[b]);
           c.have |= 4;
         }
-        if ((what & 8) && !(c.have & 8)) {  // M = M'/W rounded to doubles, for api/static_test.hpp
+        if ((what & 8) && !(c.have & 8)) {  // M = M'/W rounded to doubles, for api/static_status.hpp
           c.pose = {};
           for (int i = 0; i < d; ++i)
             for (int j = 0; j <= d; ++j) c.pose[i][j] = (c.mi[i][j] / c.mi[d][d]).mid();

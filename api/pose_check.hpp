@@ -1,5 +1,5 @@
 #pragma once
-// The papers' per-pose mode (issue 36 point 1): every checked pair of an
+// The papers' per-pose mode (000 section 5, 001 section 5): every checked pair of an
 // animation at every key pose, by the static test, keeping the separating
 // plane from pose to pose (paper 000 section 4; docs/animation-format.md,
 // "The per-pose mode").
@@ -25,7 +25,7 @@
 //     of doubles around the exact C (a proof; an uncertain sign is a miss);
 //     exact: in rationals. A plane is trusted for the pose it was checked on.
 //  3. otherwise the static test (f(λ) = det(λA − B), 002 Theorem 1 / 003
-//     Theorem 6: api/static_test.hpp's rules): double: api/static_test.hpp's
+//     Theorem 6: api/static_status.hpp's rules): double: api/static_status.hpp's
 //     static_status from the semi-axes and the pose rounded to doubles (as
 //     `eccd solve --arith double` rounds a scene) when the shape is
 //     axis-aligned and centred, otherwise f's coefficients in intervals; a

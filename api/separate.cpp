@@ -1,7 +1,7 @@
 // Separating planes at an instant and over a frame (api/separate.hpp).
 #include "api/separate.hpp"
 
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "floating/rounded_input.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/plane_frame_check.hpp"
@@ -271,7 +271,7 @@ Separation separate_floating(const Scene& scene, const mpq_class& t, const Arith
   return s;
 }
 
-// Certified (issue 21): 000's construction in double from the scene rounded to double; its plane (the exact
+// Certified: 000's construction in double from the scene rounded to double; its plane (the exact
 // rationals of the doubles) is proved by the four inequalities of check_at evaluated in Bounded<double>, whose
 // running error bounds hold against the same formulas on the scene's exact numbers (number/running_error.hpp):
 // each certainly-signed value has the exact value's sign, so the plane provably separates a and b at t. When the

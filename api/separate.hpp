@@ -5,7 +5,7 @@
 //
 // Statement.
 //  - separate_at(scene, t, o): the status at t by the static test
-//    (api/static_test.hpp). When separate: 000's construction
+//    (api/static_status.hpp). When separate: 000's construction
 //    (kernel/separating_plane.hpp: eigenvectors of the pencil, the polar line
 //    V0V1, the tangent points P_R^A, P_L^B) and a plane n·x + o = 0 with a on
 //    the negative side, b on the positive side.

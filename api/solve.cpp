@@ -500,9 +500,8 @@ Solution solve(const Scene& scene, const SolveOptions& opt) {
   s.dim = scene.dim;
   s.arith = opt.arith;
   s.input = floating ? opt.input : InputMode::prepared;
-  add_contact_points_3d(
-      scene, s,
-      prepared3 ? &*prepared3 : nullptr);  // issue 17 point 4: 3D contact points and normals (api/contact_points.hpp)
+  add_contact_points_3d(scene, s,
+                        prepared3 ? &*prepared3 : nullptr);  // 3D contact points and normals (api/contact_points.hpp)
   return s;
 }
 

@@ -13,8 +13,8 @@
 // Solution::decided_in says where it was decided).
 // Errors: SceneError (io/scene_reader.hpp) "FILE: PLACE: what is wrong" for a
 // bad scene; std::invalid_argument for a request the pipelines refuse (a
-// cycloidal motion in floating arithmetic, scaled-bernstein outside the 3D
-// projection, a bad grid, ...). A floating run never throws for lack of time or
+// cycloidal motion in exact arithmetic or with --guard none: double, MPFR and certified solve it;
+// scaled-bernstein outside the 3D projection, a bad grid, ...). A floating run never throws for lack of time or
 // precision: what it cannot decide is in answer.undecided with the reasons.
 #include "api/options.hpp"
 #include "api/solution.hpp"

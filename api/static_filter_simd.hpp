@@ -2,8 +2,8 @@
 // The 3D static filter (kernel/static_filter3d.hpp) compiled for AVX-512
 // (F, DQ, VL) with AVX2 and FMA in its own translation unit,
 // api/static_filter_simd.cpp, which CMakeLists.txt builds with those flags;
-// api/static_test.cpp calls it only when __builtin_cpu_supports says the CPU
-// has all of them, and the default build otherwise (issue 21). AVX-512, not
+// api/static_status.cpp calls it only when __builtin_cpu_supports says the CPU
+// has all of them, and the default build otherwise. AVX-512, not
 // AVX2: GCC 12 if-converts and vectorises the lane loop's compares with
 // AVX-512's mask registers only (with -mavx2 -mfma: "control flow in loop").
 // Why a translation unit and not target attributes: GCC does not inline a
@@ -18,7 +18,7 @@
 // ValueMagnitude is the double run, lane 1 the Magnitude run), so the batch
 // decides exactly the pairs static_status decides (contraction would keep the
 // bounds, number/static_bound.hpp, but could move a pair at a bound's edge).
-// Issue 36: the same lanes compiled for AVX2 + FMA (no AVX-512) in
+// The same lanes compiled for AVX2 + FMA (no AVX-512) in
 // api/static_filter_avx2.cpp, written with explicit 4-lane vectors
 // (number/lane_vector.hpp) since GCC's vectoriser does not take this loop under
 // AVX2; same flags otherwise (-ffp-contract=off: each lane rounds as the one
@@ -29,7 +29,7 @@
 namespace eccd::simd {
 
 inline constexpr int kSimdLanes = 8;
-bool has_avx512();  // the CPU runs this unit's code (defined in api/static_test.cpp, compiled for any CPU)
+bool has_avx512();  // the CPU runs this unit's code (defined in api/static_status.cpp, compiled for any CPU)
 bool has_avx2();    // the CPU runs api/static_filter_avx2.cpp's code (AVX2 and FMA)
 void static_filter3d_lanes_avx512(const double (&in)[30][kSimdLanes], double (&code)[kSimdLanes]);
 void static_filter3d_lanes_avx2(const double (&in)[30][kSimdLanes], double (&code)[kSimdLanes]);

@@ -9,7 +9,7 @@
 // with the boxes j after it in that order whose lo_j <= hi_i; every pair whose
 // intervals intersect is one of them, and each is looked at once. The number
 // of pairs looked at is returned in `examined` (the work count the tests
-// assert on: issue 36 point 3), and equals the number of overlapping pairs.
+// assert on, tests/api), and equals the number of overlapping pairs.
 // Output: the pairs (i, j), i < j, in the sweep's order (a function of the
 // intervals only; callers sort what survives their own tests).
 // Requirements: finite doubles (callers round outwards, so an interval that

@@ -1,6 +1,6 @@
 #pragma once
 // Output files and folders that a failure never leaves half-written, and that
-// never replace anything the command did not write itself (issue 15, item 1).
+// never replace anything the command did not write itself.
 //
 //  - write_text_atomically(PATH, text): the text goes to a fresh temporary
 //    sibling PATH.tmp-XXXXXX (created exclusively, so a user's file of that

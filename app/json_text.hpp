@@ -3,8 +3,8 @@
 // each polynomial (an array of strings or numbers only) and each instant
 // object ({"approx": ..., "lo": ..., "hi": ...}) on one line. The JSON library
 // formats every value (strings, numbers); this only chooses the line breaks,
-// walking the document (no regular expressions: issue 15 item 4, a regex over
-// a 30 000-digit number overflowed the stack). The output parses back to the
+// walking the document (no regular expressions: a regex over
+// a 30 000-digit number overflows the stack). The output parses back to the
 // same document. Requirements: nlohmann::ordered_json (key order kept).
 #include <nlohmann/json.hpp>
 

@@ -24,7 +24,7 @@
 // at configure time; --quiet (of eccd and every sub-command) keeps progress
 // and warnings off stderr (errors are still printed).
 //
-// Resource budget (issue 15): --time-limit SECONDS per pipeline run (default
+// Resource budget: --time-limit SECONDS per pipeline run (default
 // 300), --memory-limit MIB for the process (setrlimit RLIMIT_AS, default 4096),
 // --max-file-bytes / --max-digits / --max-degree for scene files
 // (io/scene_reader.hpp InputLimits). They are options of `eccd` and of
@@ -217,7 +217,7 @@ int run_main(int argc, char** argv) {
                                 add_judge_command(app),
                                 add_fcl_command(app),
                                 add_animate_command(app)};
-  commands.push_back(add_separate_command(app));      // app/separate.cpp (issue 17)
+  commands.push_back(add_separate_command(app));      // app/separate.cpp
   commands.push_back(add_import_poses_command(app));  // app/import_poses.cpp
 
   // Under --json a failure is also one JSON object on stdout (README "Exit codes").

@@ -7,7 +7,7 @@
 // set of F(u,t) = det((u-1)A(t) - uB(t)) in the (u,t) square (001 section 4,
 // 002 section III), with the critical instants, collision intervals and
 // contacts that `eccd solve` reports in the chosen arithmetic. Independent
-// motions ("parameters": "independent", 001 section 4; issue 20): one panel,
+// motions ("parameters": "independent", 001 section 4): one panel,
 // where A(s) meets B(t) on a grid of the (s, t) square (add_st_grid below),
 // whose boundary is the zero set of F(u, s, t) projected on (s, t), with the
 // answer's s- and t-intervals drawn along the axes (exact by default, double
@@ -45,7 +45,7 @@
 #include "app/commands.hpp"
 #include "app/option_names.hpp"
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "io/solution_json.hpp"
 #include "number/double_traits.hpp"
 #include "kernel/characteristic_polynomial.hpp"
@@ -573,8 +573,8 @@ std::string find_python(std::string& tried) {
   return "";
 }
 
-// Independent motions (001 section 4; issue 20 point 5): where A(s) and B(t) meet, on an n x n grid of the
-// (s, t) square, by the double static test (api/static_test.hpp, status_at: 001 Appendix A with its error
+// Independent motions (001 section 4): where A(s) and B(t) meet, on an n x n grid of the
+// (s, t) square, by the double static test (api/static_status.hpp, status_at: 001 Appendix A with its error
 // bound) on the shared-parameter scene with A fixed at A(s), and the exact static test where double's error
 // bound cannot decide (two balls: f always has a double root): 1 meets (touching or overlapping), 0 separate. The zero
 // set of F(u, s, t) = det((u-1)A(s) - uB(t)) projected on (s, t) is the boundary of that region (F > 0 for some u iff

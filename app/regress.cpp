@@ -43,7 +43,7 @@ struct RegressArgs {
 
 std::string answer_summary(const Answer& a) {
   std::string s = a.collides ? "collides" : "free";
-  if (a.independent)  // independent motions (issue 20): s- and t-intervals
+  if (a.independent)  // independent motions: s- and t-intervals
     return s + ", " + std::to_string(a.s_intervals.size()) + " s-interval(s), " + std::to_string(a.t_intervals.size()) +
            " t-interval(s)";
   if (a.collides) s += ", " + std::to_string(a.intervals.size()) + " interval(s)";
@@ -229,7 +229,7 @@ Command add_regress_command(CLI::App& app) {
           row["arith"] = "certified";
           row["arith_reason"] = "cycloidal motion: no exact answer, the ground truth is the certified one";
         }
-        // independent motions (issue 20): exact is their certified pipeline (certificate:
+        // independent motions: exact is their certified pipeline (certificate:
         // certificate/write/independent_certificate.hpp)
         if (sc.independent) opt.arith = Arithmetic::exact();
         const Solution sol = solve(sc, opt);

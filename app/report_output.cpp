@@ -461,7 +461,7 @@ nlohmann::json report_meta(const ReportArgs& a, const std::string& name, const s
   meta["shard"] = shard_n > 1 ? nlohmann::json(a.shard) : nlohmann::json(nullptr);
   meta["scene_count"] = generated + from_cases;
   meta["failed"] = failures;
-  meta["no_ground_truth"] = no_ground_truth_meta(rows);  // issue 20: scenes whose ground truth is refused or undecided
+  meta["no_ground_truth"] = no_ground_truth_meta(rows);  // scenes whose ground truth is refused or undecided
   meta["result_rows"] = rows.size();                     // --merge checks a part's row counts against these
   meta["map_rows"] = cells.size();
   {

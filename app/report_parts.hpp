@@ -123,7 +123,7 @@ std::string signal_name();
 
 // Output folders: every folder `report` writes carries this marker, and only
 // a folder with it (or an older report folder holding nothing but report files)
-// is ever replaced or removed (issue 15, item 1).
+// is ever replaced or removed (app/atomic_write.hpp).
 const char* const kMarker = ".eccd-report";
 
 // NAME.partial/plan.json: what decides a run's results, written before the

@@ -1,6 +1,6 @@
 #pragma once
-// Which *.json files under a folder are scenes (issue 15: never skip a scene
-// silently; issue 17: cases/ also holds animations, whose "format" is
+// Which *.json files under a folder are scenes (never skip a scene
+// silently; cases/ also holds animations, whose "format" is
 // ellipse-ccd-animation/1). Used by `eccd regress`, `eccd report` (the cases
 // and --scenes folders) and `eccd table`.
 //

@@ -1,6 +1,6 @@
 #pragma once
-// Time left of a run of tasks of several kinds (`eccd report`'s progress line;
-// issue 19, point 5).
+// Time left of a run of tasks of several kinds (`eccd report`'s progress
+// line).
 //
 // A report's tasks differ in cost by two orders of magnitude (a 3D scene of
 // motion degree 6 takes about 20 s, a failure-map cell about 0.4 s), so the

@@ -1,5 +1,5 @@
-// eccd_bench: the performance benchmark of the workbench (issue 6, parts 1
-// and 3). Separate from the tests: built only by `cmake --build B --target
+// eccd_bench: the performance benchmark of the workbench (its rows and the
+// report of them). Separate from the tests: built only by `cmake --build B --target
 // eccd_bench` (bench/ is added with EXCLUDE_FROM_ALL) and run by
 // scripts/run-benchmarks.sh, which turns its summary into
 // reports/performance.md (bench/performance_report.py).
@@ -55,7 +55,7 @@
 //        Anchor: CORE about 7 ms on a random degree-200 integer polynomial.
 //   phases-*        the pipelines of the targets split into their public
 //        steps, each timed alone on the same inputs (what dominates).
-//   product-*       the target rows (issue 30): eccd::solve from the scene, what
+//   product-*       the target rows: eccd::solve from the scene, what
 //        a user waits for, on the 2D degree-6 scene (Variant 3) and paper
 //        002's example; double as published and guarded, rounded and
 //        prepared input, certified and exact. Baseline: double as published,
@@ -63,14 +63,14 @@
 //   solve_scene-*   rows through eccd::solve_scene (what `eccd solve` runs,
 //        JSON building included), from a table of (label, SolveOptions),
 //        kSolveSceneRows below: double, MPFR, exact and the certified interval
-//        mode (`--arith certified`, issue 6 part 2; its rows go there).
-//   plane-check, animate-boxers  issue 17: the kept plane's check over one
+//        mode (`--arith certified`; its rows go there).
+//   plane-check, animate-boxers  the kept plane's check over one
 //        frame per pair-frame (baseline: the continuous test in double) and
 //        the boxers' animation per frame in double, double without planes and
 //        certified (baseline: double); with static-certified-2d/3d (the
 //        static test from two poses) they form the report's "Animations"
-//        section (bench/performance_report.py ANIMATION_GROUPS).
-//   fcl-static3d, fcl-table2-main, fcl-table2-graze  issue 21: FCL side by
+//        section (bench/perf_report/sections.py ANIMATION_GROUPS).
+//   fcl-static3d, fcl-table2-main, fcl-table2-graze  FCL side by
 //        side in the same process: fcl::collide on the static3d pairs (per
 //        pair, against eccd::static_status), and per frame of 000 Table 2's
 //        orbit (bench/data/table2-*-40.anim.json): eccd::animate double and
@@ -92,7 +92,7 @@
 //                         (the report runs a missed target's row so under perf)
 #include "bench/groups.hpp"
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "api/separate.hpp"
 #include "api/animate.hpp"
 #include "certified/ladder.hpp"
@@ -118,7 +118,7 @@
 #include "kernel/quartic_status.hpp"
 #include "io/scene_reader.hpp"
 #include "compare/scene_generator.hpp"
-#include "independent.hpp"  // issue 33
+#include "independent.hpp"
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -145,13 +145,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#ifndef ECCD_SOURCE_DIR
-#define ECCD_SOURCE_DIR "."
-#endif
-#ifndef ECCD_BUILD_TYPE
-#define ECCD_BUILD_TYPE "unknown"
-#endif
 
 using namespace eccd;
 using json = nlohmann::json;
@@ -284,7 +277,7 @@ void print_ratios(const json& s) {
 
 }  // namespace
 
-// The hooks of bench/speed_targets.hpp (issue 36's rows).
+// The hooks of bench/speed_targets.hpp (the speed target rows).
 void eccd_bench::add_group(const std::string& id, const std::string& title, const std::string& description,
                            const std::string& anchor) {
   group(id, title, description, anchor);
@@ -343,20 +336,20 @@ int main(int argc, char** argv) {
   register_certified_sets();
   register_static_certified();
   register_certified_cost();
-  register_translation3d();  // issue 21: one degree-1 translating 3D query
-  register_product();        // issue 30: eccd::solve from the scene, both faces and input modes (the target rows)
-  register_planes();         // 000 section 4: the plane check per pair-frame (issue 17)
-  register_animation();      // 001 section 5 in spirit: the boxers per frame, double and certified (issue 17)
-  register_fcl_static();     // issue 21: FCL's static ellipsoid test on the static3d pairs
-  register_fcl_table2();     // issue 21: per frame of 000 Table 2, eccd and FCL, misclassified frames
+  register_translation3d();  // one degree-1 translating 3D query
+  register_product();        // eccd::solve from the scene, both faces and input modes (the target rows)
+  register_planes();         // 000 section 4: the plane check per pair-frame
+  register_animation();      // 001 section 5 in spirit: the boxers per frame, double and certified
+  register_fcl_static();     // FCL's static ellipsoid test on the static3d pairs
+  register_fcl_table2();     // per frame of 000 Table 2, eccd and FCL, misclassified frames
   eccd_bench::register_poses({group,
                               [](const std::string& g, const std::string& l, bool b, const std::string& n,
                                  std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
                               [](const std::string& k, const json& j) { g_results[k] = j; },
-                              ECCD_SOURCE_DIR});  // issue 36
+                              ECCD_SOURCE_DIR});  // the per-pose mode (bench/poses.cpp)
   eccd_bench::register_table1_frames();           // 000 Table 1 as an animation, per frame (bench/table1_frames.cpp)
-  eccd_bench::register_speed_targets();           // issue 36: the targets on the product path (bench/speed_targets.cpp)
-  eccd_bench::register_independent({group,  // issue 33: cases/independent in four arithmetics (bench/independent.cpp)
+  eccd_bench::register_speed_targets();           // the speed targets on the product path (bench/speed_targets.cpp)
+  eccd_bench::register_independent({group,        // cases/independent in four arithmetics (bench/independent.cpp)
                                     [](auto& g, auto& l, bool b, bool heavy, auto& n, auto fn) {
                                       row(g, l, b, heavy ? Cost::heavy : Cost::slow, n, fn);
                                     },

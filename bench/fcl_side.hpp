@@ -1,6 +1,6 @@
 #pragma once
 // FCL's static ellipsoid test, called directly, for the side-by-side rows of
-// bench/eccd_bench.cpp (issue 21: groups "fcl-static3d" and "fcl-table2-*").
+// bench/group_fcl.cpp (groups "fcl-static3d" and "fcl-table2-*").
 //
 // What is measured. fcl::collide(&Ellipsoidd, Transform3d, &Ellipsoidd,
 // Transform3d, request, result) on bodies built once (not timed) from their

@@ -1,4 +1,4 @@
-// Reproduction (c) of issue 17 (paper 001 section 5 in spirit): the boxers,
+// Reproduction (c) of the animation benchmarks (paper 001 section 5 in spirit): the boxers,
 // two figures of 24 ellipsoids (make_repro.py boxers), 576 pairs per frame,
 // through eccd::animate (api/animate.hpp: bounding spheres, the kept plane,
 // the continuous test), one thread. The input is bench/data/boxers-10.anim.json

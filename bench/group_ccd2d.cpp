@@ -53,12 +53,11 @@ void register_2d() {
   for (int k : {2, 4, 6}) {
     for (int v : {1, 2, 3, 0}) {
       std::string grp = "ccd2d-deg" + std::to_string(k) + "-v" + std::to_string(v);
-      std::string anchor =
-          k == 6 ? (v == 1   ? "003 Fig. 8: under 1 ms (degree 6, 2.2 GHz Intel)"
-                    : v == 2 ? "003 Fig. 8: under 5 ms"
-                    : v == 3 ? "003 Fig. 8: under 7 ms; issue 21 target: double at most 50 µs (issue 6: 0.5 ms)"
-                             : "issue 21 target: exact certified answer at most 5 ms (issue 6: 50 ms)")
-                 : "003 Fig. 8 (curves for degrees 2 and 4 lie below the degree-6 figures)";
+      std::string anchor = k == 6 ? (v == 1   ? "003 Fig. 8: under 1 ms (degree 6, 2.2 GHz Intel)"
+                                     : v == 2 ? "003 Fig. 8: under 5 ms"
+                                     : v == 3 ? "003 Fig. 8: under 7 ms; speed target: double at most 50 µs"
+                                              : "speed target: exact certified answer at most 5 ms")
+                                  : "003 Fig. 8 (curves for degrees 2 and 4 lie below the degree-6 figures)";
       group(grp, "2D CCD, motion degree " + std::to_string(k) + ", " + variant_title(v),
             "CD-DISC on a colliding pair of ellipses under general rational Euclidean motions of degree " +
                 std::to_string(k) + " (Δ of degree " + std::to_string(24 * k) +

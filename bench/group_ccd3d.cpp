@@ -17,8 +17,7 @@ void register_3d() {
               S{&s3d_deg4_affine, "ccd3d-deg4-affine", "3D CCD, motion degree 4 (affine deformation), colliding",
                 "001 Fig. 3: degree-4 affine pair, all four intervals 3.7 ms, first contact 0.9 ms (3 GHz Pentium IV)"},
               S{&s3d_paper002, "ccd3d-paper002", "3D CCD, paper 002's example (degree 4, projection of degree 216)",
-                "issue 21 targets: double at most 0.3 ms, exact at most 25 ms, certified at most 3x double (issue 6: 2 "
-                "ms, 1 s); "
+                "speed targets: double at most 0.3 ms, exact at most 25 ms, certified at most 3x double; "
                 "001: 3.7 ms for a degree-4 affine pair; 002: 4.7 s (Table I, degree 4)"}}) {
     group(
         s.id, s.title,
@@ -61,7 +60,7 @@ void register_3d() {
     }
     std::string grp = s.id;
     Lazy<Scene3D>* sc = s.sc;
-    // Issue 21: the certified mode on paper 002's example, from the same prepared pair as the double rows
+    // The certified mode on paper 002's example, from the same prepared pair as the double rows
     // (run_certified, what solve runs for --arith certified after prepare_pair; no JSON), so that
     // certified / double bezier is a ratio of like with like.
     if (sc == &s3d_paper002)

@@ -1,9 +1,9 @@
-// The certified ladder's cost guarantee (issue 18 point 1,
-// certified/ladder.hpp): certified against exact on the same scene, over a
+// The certified ladder's cost guarantee (certified/ladder.hpp,
+// "Cost guarantee"): certified against exact on the same scene, over a
 // sample of short overlaps, near misses and grazes (the generator's families
 // near-miss, overlap and graze at gap / depth 1e-3 ... 1e-12, 2D degrees 2, 4,
-// 6 and 3D degrees 2, 4; the short-overlap cases of issue 18) and the corpus
-// scenes where the MPFI rung used to cost more than exact. Per scene a row
+// 6 and 3D degrees 2, 4; the short-overlap cases, cases/short-overlap) and the corpus
+// scenes where an MPFI rung without a budget costs more than exact. Per scene a row
 // `SCENE exact` and a row `SCENE certified`, both through solve_scene; the
 // report gives the ratio certified / exact per scene, its median, and the
 // ratio to the guarantee's bound exact + 2 x (interval rung).
@@ -51,7 +51,8 @@ void register_certified_cost() {
       "Per scene, `eccd::solve_scene` with --arith exact and with --arith certified (the ladder with its budgets: "
       "certified/ladder.hpp, \"Cost guarantee\"). The report gives each scene's ratio certified / exact, their median, "
       "and certified / (exact + 2 x the interval rung's time), the guarantee's bound (at most 1 up to a constant).",
-      "issue 18: the certified ladder never costs much more than exact (guarantee: exact + 2 x the interval rung + c)");
+      "the ladder's cost guarantee: the certified ladder never costs much more than exact (guarantee: exact + 2 x the "
+      "interval rung + c)");
   bool first = true;
   for (const auto& [name, sc] : scenes) {
     for (const char* arith : {"exact", "certified"}) {

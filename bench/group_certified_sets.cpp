@@ -1,10 +1,10 @@
-// The certified mode's own target (issue 6): its median cost against the
+// The certified mode's own target: its median cost against the
 // double pipeline over the degree-4 generated sets of the corpus. One group per
 // set; per scene a row `SCENE double` (what `eccd solve` runs by default: 2D
 // double Bernstein CD-DISC, 3D double Bézier) and a row `SCENE certified`
 // (`--arith certified`, through solve_scene). The report takes the per-scene
 // ratio certified / double and its median over the set
-// (bench/performance_report.py, SET_TARGETS).
+// (bench/perf_report/targets.py, SET_TARGETS).
 #include "bench/groups.hpp"
 
 namespace eccd_bench::groups {
@@ -39,7 +39,7 @@ void register_certified_sets() {
         "with --arith double (2D: CD-DISC with Δ in Bernstein form; 3D: the Bézier method) and with --arith certified "
         "(intervals of doubles, escalating to MPFI and then exact where a sign is uncertain). The report gives each "
         "scene's ratio certified / double and their median.",
-        "issue 6 target: median cost of the certified mode at most 3x the double pipeline");
+        "the certified mode's cost target: median cost of the certified mode at most 3x the double pipeline");
     bool first = true;
     for (const std::string& rel : files) {
       std::string name = std::filesystem::path(rel).stem().string();

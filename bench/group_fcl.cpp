@@ -1,4 +1,4 @@
-// Issue 21: side by side with FCL (Debian libfcl-dev 0.7) in the same process.
+// Side by side with FCL (Debian libfcl-dev 0.7) in the same process.
 //
 // (1) fcl-static3d: the static test per pair on the 1024 random pairs of the
 // static3d group: eccd::static_status from two poses in double (the baseline)
@@ -71,7 +71,8 @@ void register_fcl_static() {
       "ellipsoids and poses (fcl::Ellipsoidd and Transform3d built once, not timed; FCL's default CollisionRequestd: "
       "GJK solver libccd, gjk_tolerance 1e-6, as compare/fcl_engine.cpp calls it; and the same request with FCL's own "
       "GJK, GST_INDEP). Result: per row the pairs whose answer differs from eccd's certified static test.",
-      "issue 21: eccd 144 ns against 549 ns for FCL's fastest ellipsoid test (measured side by side before issue 21)");
+      "the FCL comparison's anchor: eccd 144 ns against 549 ns for FCL's fastest ellipsoid test (measured side by "
+      "side)");
   // The certified answers, once: collides = not separate.
   static Lazy<std::vector<bool>> reference([] {
     const Static3D& s = static3d.get();
@@ -243,7 +244,8 @@ void register_fcl_table2() {
             "with 1000 "
             "samples (FCL's naive continuous collision, CCDM_TRANS). One iteration is the 40 frames. Result: frames in "
             "collision and frames misclassified against the certified animation (counted once, after the timing).",
-        "000 Table 2: EECD 2.12 µs per frame, GJK on polyhedra 15.2 to 54.3 µs per frame (Pentium 4); issue 21: FCL's "
+        "000 Table 2: EECD 2.12 µs per frame, GJK on polyhedra 15.2 to 54.3 µs per frame (Pentium 4); the FCL "
+        "comparison's anchor: FCL's "
         "continuous test of a translating pair (1000 samples) 0.39 ms");
     auto data = std::make_shared<Lazy<Data>>([rel] {
       Data d{read_animation(src(rel)), {}, {}};

@@ -64,7 +64,7 @@ void register_isolation() {
           "CORE::BigInt called directly (all real roots) and by MPSolve (isolating discs for all complex "
           "roots). Process CPU time (all threads).",
           grp == "isolation-random200"
-              ? "issue 6: CGAL with CORE about 7 ms on a random degree-200 integer polynomial (this machine)"
+              ? "anchor: CGAL with CORE about 7 ms on a random degree-200 integer polynomial (this machine)"
               : "the workbench's own isolation (baseline)");
     Lazy<IsoPoly>* poly = pp.poly;
     row(

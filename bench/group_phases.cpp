@@ -110,14 +110,14 @@ void register_phases_2d() {
   group("phases-2d-deg6-double-v3", "Where the time goes: 2D degree 6, Variant 3, double",
         "The steps of cd_disc timed one by one on the same inputs; the remainder (static tests at the samples, "
         "contact points, answer assembly) is the total minus the steps.",
-        "issue 21 target for the total: at most 50 µs (issue 6: 0.5 ms)");
+        "speed target for the total: at most 50 µs");
   add_phases_2d<double, FloatingPolicy<double>>(
       "phases-2d-deg6-double-v3", &s2d_deg6, Variant::all_contacts,
       [] { return FloatingPolicy<double>(Basis::bernstein, 53, 1.0); }, [] { return 1.0; });
   group("phases-2d-deg6-exact-v0", "Where the time goes: 2D degree 6, full answer, exact",
         "The steps of cd_disc with ExactPolicy timed one by one on the same inputs (roots: the square-free "
         "part by FLINT, CGAL's isolation and refinement; signs: exact signs at algebraic numbers).",
-        "issue 21 target for the total: at most 5 ms (issue 6: 50 ms)");
+        "speed target for the total: at most 5 ms");
   add_phases_2d<Rational, ExactPolicy>(
       "phases-2d-deg6-exact-v0", &s2d_deg6, Variant::answer, [] { return ExactPolicy(); }, [] { return Rational(1); });
 }
@@ -131,7 +131,7 @@ void register_phases_paper002_double() {
         "F(u, t) = det((u-1)A - uB) as a bivariate Bernstein polynomial (BezierZeroSet's constructor), and the "
         "analysis (static tests at 33 samples, shooting, subdivision, Gaussian-circle tests); the remainder is "
         "ccd_bezier's answer assembly.",
-        "issue 21 target for the total: at most 0.3 ms (issue 6: 2 ms)");
+        "speed target for the total: at most 0.3 ms");
   auto g002 = std::make_shared<Lazy<std::vector<Bern<double>>>>(
       [] { return characteristic_bernstein<double, 4>(s3d_paper002.get().p, false, 1.0); });
   row(grp, "total pipeline", true, Cost::slow, "characteristic_bernstein + ccd_bezier", [grp](benchmark::State& st) {
@@ -188,7 +188,7 @@ void register_phases_paper002_exact() {
         "ccd_projection with ExactPolicy split: the exact g_k, the discriminant of the quartic (degree 216, built in "
         "FLINT), its isolation on [0, 1] (square-free factors by FLINT, isolation by CGAL), and the rest (exact Sturm "
         "counts in the cells, subresultant signs at the roots).",
-        "issue 21 target for the total: at most 25 ms (issue 6: 1 s)");
+        "speed target for the total: at most 25 ms");
   auto gx = std::make_shared<Lazy<std::vector<Poly<Rational>>>>(
       [] { return characteristic_of(to_arithmetic<Rational, 4>(s3d_paper002.get().p, Rational(1))); });
   auto projx = std::make_shared<Lazy<Poly<Rational>>>([gx] {

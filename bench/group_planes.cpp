@@ -1,4 +1,4 @@
-// The plane check of 000 section 4 (issue 17): per pair-frame cost of
+// The plane check of 000 section 4: per pair-frame cost of
 // eccd::plane_separates_on_frame (api/separate.hpp) on a 000 Table 1 pair
 // (semi-axes 3, 3, 5, centres 8 apart, each rotating about its own axis by
 // about 0.1 rad over the frame: quaternions (1, t/20, 0, 0) and (1, 0, t/20, 0),

@@ -1,4 +1,4 @@
-// The product path (issue 30): what a user waits for, eccd::solve(scene,
+// The product path: what a user waits for, eccd::solve(scene,
 // options) from the read scene to the typed answer (preparation, the
 // pipeline, contact points; no JSON), on the 2D degree-6 scene (Variant 3,
 // all external contacts) and paper 002's example. Each floating row names its
@@ -36,12 +36,13 @@ void register_product() {
       "floating "
       "row names its face and input mode. Baseline: double as published, rounded input; the guarded row's ratio is the "
       "guard's cost.",
-      "issue 21: double at most 50 µs; issue 30: guarded / as published at most ×1.5 (median)");
+      "speed target: double at most 50 µs; the guard's cost target: guarded / as published at most ×1.5 (median)");
   group("product-paper002", "eccd::solve on paper 002's example (degree 4, 3D), as a user runs it",
         "eccd::solve(scene, options) from the read scene: preparation, the Bézier method (001 section 4) or the exact "
         "projection, contact points and normals; each floating row names its face and input mode. Baseline: double as "
         "published, rounded input.",
-        "issue 21: double at most 0.3 ms, exact 25 ms; issue 30: guarded / as published at most ×1.5 (median)");
+        "speed targets: double at most 0.3 ms, exact 25 ms; the guard's cost target: guarded / as published at most "
+        "×1.5 (median)");
   for (int dim : {2, 3}) {
     const std::string grp = dim == 2 ? "product-2d-deg6-v3" : "product-paper002";
     bool first = true;

@@ -1,11 +1,10 @@
 // Rows through eccd::solve_scene: a table of (label, SolveOptions).
 //
-// >>> ISSUE 6 part 2: the certified interval mode (`--arith certified`,
-// >>> certified/certified_policy.hpp and api/solve.cpp) is measured HERE, through
-// >>> solve_scene, like `eccd solve` runs it (it may escalate to exact; the JSON
-// >>> says so and the row's result shows it). More of its rows go into
-// >>> kSolveSceneRows below; a target for it goes into TARGETS in
-// >>> bench/performance_report.py.
+// The certified interval mode (`--arith certified`, certified/ladder.hpp and
+// api/solve.cpp) is measured here, through solve_scene, as `eccd solve` runs it
+// (it may escalate to exact; the JSON says so and the row's result shows it).
+// More of its rows go into kSolveSceneRows below; a target for it goes into
+// TARGETS in bench/perf_report/targets.py.
 #include "bench/groups.hpp"
 
 namespace eccd_bench::groups {

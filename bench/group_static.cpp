@@ -9,7 +9,7 @@ void register_static3d() {
       "static3d", "3D static separation test in double (per pair)",
       "A batch of 1024 random ellipsoid pairs, A in standard position (diag(1/a², 1/b², 1/c², -1)), B rotated and "
       "translated into A's frame; one pair per iteration. The target row 'Appendix A + Sturm' times the API, "
-      "eccd::static_status from the two ellipsoids' semi-axes and poses (api/static_test.hpp: both shapes as unit "
+      "eccd::static_status from the two ellipsoids' semi-axes and poses (api/static_status.hpp: both shapes as unit "
       "balls "
       "under their axis-scaled poses, the relative pose by the adjugate and 001 Appendix A in plain double with static "
       "error bounds, Descartes and the discriminant's sign, kernel/static_filter3d.hpp; the running-bound Sturm test "
@@ -20,7 +20,7 @@ void register_static3d() {
       "(kernel/fast_quartic.hpp, 40 multiplications + det B by cofactors); status from the Sturm count of the "
       "negative roots (kernel/quartic_status.hpp). Rows 'coefficients only' and 'status only' split the time.",
       "001: the whole static procedure (motion matrices of degree 4 included) in under 1 µs on a 3 GHz Pentium IV; "
-      "issue 21 target: at most 40 ns per pair (batched: 15 ns per pair)");
+      "speed target: at most 40 ns per pair (batched: 15 ns per pair)");
   auto all3 = [](auto status_of) {
     const Static3D& s = static3d.get();
     std::vector<Status> v;
@@ -41,7 +41,7 @@ void register_static3d() {
           });
         });
       });
-  // The target row: what a user's program runs, eccd::static_status (api/static_test.hpp) from the two
+  // The target row: what a user's program runs, eccd::static_status (api/static_status.hpp) from the two
   // ellipsoids' semi-axes and poses: B's pose relative to A's, 001 Appendix A and the Sturm count, in
   // Bounded<double> (uncertain where double's error bound is not decisive).
   row("static3d", "Appendix A + Sturm", false, Cost::fast,
@@ -57,7 +57,7 @@ void register_static3d() {
         timed(st, "static3d/Appendix A + Sturm", f,
               [&](Status) { return all3([&](int k) { return static_status(s.pa[k], s.pb[k]); }); });
       });
-  // Issue 21: the batched API, 64 pairs per iteration (the figure per pair is the median / 64; target 15 ns per pair).
+  // The batched API, 64 pairs per iteration (the figure per pair is the median / 64; target 15 ns per pair).
   row("static3d", "static_status_batch (API, 64 pairs per iteration)", false, Cost::fast,
       "eccd::static_status_batch over 64 pairs from two poses (blocks of 8 lanes in structure of arrays through the "
       "static "
@@ -138,7 +138,7 @@ void register_static2d() {
       "iteration. Coefficients g0..g3 of the cubic f(λ) = det(λA - B) by the generic determinant expansion "
       "(2^3 column choices), status by 003 Theorem 6 from signs only (discriminant, Descartes; "
       "kernel/contact_status.hpp). Row 'static_status (API, two poses)' is what a user's program runs: "
-      "eccd::static_status from the semi-axes and poses (api/static_test.hpp: B relative to A, the 3x3 analogue "
+      "eccd::static_status from the semi-axes and poses (api/static_status.hpp: B relative to A, the 3x3 analogue "
       "of 001 Appendix A, with double's error bound).",
       "003 gives no static timing; 000: about 8 µs per static 3D test with root solving (for scale)");
   auto all2 = [](auto status_of) {

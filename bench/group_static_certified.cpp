@@ -1,4 +1,4 @@
-// The certified static test (issue 18 point 5, api/static_test.hpp): the
+// The certified static test (api/static_status.hpp): the
 // filtered predicate (double with its error bound, exact only where that is
 // uncertain) next to the double test, on the same batches of random pairs as
 // static2d / static3d. Baseline: the double test through the API.
@@ -19,7 +19,7 @@ void register_static_certified() {
               "and exact signs — only where the double one is uncertain). The result column counts the statuses and "
               "how many "
               "pairs went to the exact test.",
-          "issue 18: the certified static test costs at most 1.5x the double static test on random pairs");
+          "the certified static test's cost target: at most 1.5x the double static test on random pairs");
     for (const char* arith : {"double", "certified"}) {
       std::string label = std::string(arith) + " static_status (API, two poses)";
       Arithmetic a = std::string(arith) == "double" ? Arithmetic::double_precision() : Arithmetic::certified();

@@ -1,4 +1,4 @@
-// Issue 21: one 3D continuous query of two ellipsoids translating linearly
+// One 3D continuous query of two ellipsoids translating linearly
 // (motion degree 1; B also turned by a fixed rotation), colliding on about
 // [0.32, 0.67], through eccd::solve in double (the default 3D method, the
 // Bézier zero-set analysis, with everything `eccd solve` does per call:
@@ -17,7 +17,7 @@ void register_translation3d() {
       "translating towards each other along x, colliding on about [0.32, 0.67]: the default 3D method (001 section 4, "
       "the Bézier zero-set analysis). Baseline: the same call. Rows certified: the same call with --arith certified, "
       "and the certified ladder (run_certified) from the prepared pair.",
-      "issue 21: double at most 50 µs, certified at most 150 µs; FCL's continuous test (1000 samples) 0.39 ms");
+      "speed targets: double at most 50 µs, certified at most 150 µs; FCL's continuous test (1000 samples) 0.39 ms");
   static Lazy<Scene3D> sc([] {
     Scene s = scene_from_text(R"({"format": "ellipse-ccd-scene/1", "name": "deg1-translating-pair", "dim": 3,
       "a": {"shape": {"semi_axes": ["1", "2", "3"]}, "motion": {"type": "euler", "e": ["1", "0", "0", "0"], "translation": [["-4", "8"], "0", "0"]}},
@@ -25,7 +25,7 @@ void register_translation3d() {
                               "deg1-translating-pair");
     Scene3D out{"deg1-translating-pair", s, prepare_pair<4>(s), json::object()};
     out.info = {{"dim", 3},
-                {"file", "(inline, bench/eccd_bench.cpp)"},
+                {"file", "(inline, bench/group_translation3d.cpp)"},
                 {"what", "two ellipsoids translating linearly, colliding"}};
     return out;
   });
@@ -40,7 +40,7 @@ void register_translation3d() {
               return json{{"collides", c}};
             });
       });
-  // Issue 21: the certified query, target 150 µs: the same call with --arith certified, and the ladder alone.
+  // The certified query, target 150 µs: the same call with --arith certified, and the ladder alone.
   row(grp, "certified solve (API)", false, Cost::slow,
       "eccd::solve(scene, certified): the certified ladder (interval Bézier proof first)", [grp](benchmark::State& st) {
         SolveOptions o;
@@ -57,7 +57,7 @@ void register_translation3d() {
             [&] { return run_certified<4>(sc.get().p, rungs, Variant::answer, false); },
             [](const Solution& r) { return summarise_solution(r); });
       });
-  // Issue 21's anchor (FCL's continuous test of such a pair, 1000 samples, 0.39 ms) in the same run.
+  // The anchor (FCL's continuous test of such a pair, 1000 samples, 0.39 ms) in the same run.
   row(grp, "FCL continuous, 1000 samples (fcl_ccd)", false, Cost::slow,
       "compare/fcl_engine fcl_ccd(scene, 1000): fcl::continuousCollide, CCDC_NAIVE, CCDM_TRANS (first contact only)",
       [grp](benchmark::State& st) {

@@ -4,7 +4,7 @@
 // rows and what each row answered, the timing loop, lazily built inputs, the summaries of a CCD
 // run, and the scenes several groups use.
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "api/separate.hpp"
 #include "api/animate.hpp"
 #include "certified/ladder.hpp"
@@ -30,7 +30,7 @@
 #include "kernel/quartic_status.hpp"
 #include "io/scene_reader.hpp"
 #include "compare/scene_generator.hpp"
-#include "independent.hpp"  // issue 33
+#include "independent.hpp"  // bench/independent.cpp
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -298,15 +298,14 @@ inline Scene2D select_2d(int degree, bool apart, std::uint64_t seed) {
     if (e.answer.collides != d.answer.collides || e.answer.contacts.size() != d.answer.contacts.size()) continue;
     if (e.status_at_0 != Status::separate) continue;
     Scene2D out{sc.name, sc, p, json::object()};
-    out.info = {
-        {"dim", 2},
-        {"motion_degree", degree},
-        {"family", apart ? "free" : "colliding"},
-        {"seed", seed},
-        {"tries", tries + 1},
-        {"projection_degree", e.projection_degree},
-        {"exact_answer", summarise_ccd(e)},
-        {"source", "generated in-process (bench/eccd_bench.cpp kinematic_scene), general kinematic-image motion"}};
+    out.info = {{"dim", 2},
+                {"motion_degree", degree},
+                {"family", apart ? "free" : "colliding"},
+                {"seed", seed},
+                {"tries", tries + 1},
+                {"projection_degree", e.projection_degree},
+                {"exact_answer", summarise_ccd(e)},
+                {"source", "generated in-process (bench/groups.hpp kinematic_scene), general kinematic-image motion"}};
     return out;
   }
   throw std::runtime_error("no 2D scene of degree " + std::to_string(degree) + " found");

@@ -33,7 +33,7 @@ void register_independent(const IndependentHooks& h) {
             "certified the "
             "proofs of certified/independent_proof.hpp (exact: exact/independent_balls.hpp for two balls or discs on "
             "lines). "
-            "Baseline double: the mpfr row's ratio is MPFR / double on the same scene (issue 33: at most 20).",
+            "Baseline double: the mpfr row's ratio is MPFR / double on the same scene (target: at most 20).",
             "the mpfr:128 row's ratio (target <= 20) and the exact and certified times (target <= 5 s)");
     auto scene = std::make_shared<std::pair<std::once_flag, Scene>>();
     for (const char* a : {"double", "mpfr:128", "exact", "certified"}) {
@@ -73,7 +73,7 @@ void register_independent_rotating(const IndependentHooks& h) {
           "--count 4 --seed 7` "
           "with \"parameters\": \"independent\" (A moves with s, B with t); eccd::solve in exact and certified "
           "arithmetic, one row "
-          "per scene (issue 33: at most 5 s each). Baseline: double on all four.",
+          "per scene (target: at most 5 s each). Baseline: double on all four.",
           "the exact and certified rows (target <= 5 s each)");
   auto scenes = std::make_shared<std::pair<std::once_flag, std::vector<Scene>>>();
   auto load = [scenes] {

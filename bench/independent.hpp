@@ -1,10 +1,10 @@
 #pragma once
-// The benchmark group of independent motions (issue 33 point 3): eccd::solve
+// The benchmark group of independent motions: eccd::solve
 // on every scene of cases/independent in double, mpfr:128, exact and
 // certified; baseline double, so the report's ratio of the mpfr row is
-// MPFR / double on the same scene (the issue's target: at most 20).
-// Registered from bench/eccd_bench.cpp through the hooks below (its registry
-// lives in that file's anonymous namespace).
+// MPFR / double on the same scene (target: at most 20).
+// Registered from bench/eccd_bench.cpp through the hooks below (the registry
+// lives in bench/groups.hpp).
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 

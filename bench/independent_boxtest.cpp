@@ -1,6 +1,6 @@
 // The cost of one box test of the independent-motion subdivision
 // (floating/independent_ccd.hpp), guarded double against guarded mpfr:128, on
-// the 3D scenes of cases/independent. The ratio (MPFR at most 20x
+// the 3D scenes of cases/independent. The target ratio (MPFR at most 20x
 // double) is per box test: the two arithmetics run the same walk, but a run
 // under the default budget stops at a different place in each. Here F's net is
 // built once (as eccd::solve builds it: the pair prepared exactly, a body that

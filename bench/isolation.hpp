@@ -1,6 +1,6 @@
 #pragma once
 // Real root isolation by other libraries, behind one small interface, for the
-// side-by-side comparison in bench/eccd_bench.cpp (group "isolation-*").
+// side-by-side comparison in bench/group_isolation.cpp (group "isolation-*").
 //
 // What is measured. The same integer polynomial (a positive multiple of the
 // exact Δ(t) of a 2D scene, of the projection polynomial of a 3D scene, or a
@@ -11,7 +11,7 @@
 //     refinement to 2^-64, no restriction to [0, 1]);
 //   - the same kernel over CORE::BigInt (CORE's BigInt/BigFloat, shipped
 //     inside CGAL's headers; anchor: about 7 ms for a random degree-200
-//     integer polynomial, measured on this machine for issue 6);
+//     integer polynomial, measured on this machine);
 //   - MPSolve 3 (Debian libmps-dev), output goal "isolate": pairwise disjoint
 //     inclusion discs for all complex roots.
 // Each prepare_* converts the coefficients once (not timed); run() does one

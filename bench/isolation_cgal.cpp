@@ -8,11 +8,11 @@
 // multiplicities) on a polynomial converted once beforehand, from a freshly
 // constructed kernel each run (so no state of an earlier run helps):
 //   - Algebraic_kernel_d_1<CGAL::Gmpz> with CGAL_USE_MPFI (GMP integers, MPFI
-//     bigfloat intervals): the kernel the workbench used until issue 6;
+//     bigfloat intervals): the other kernel CGAL offers, for comparison;
 //   - Algebraic_kernel_d_1<CORE::BigInt> (CORE's BigInt / BigFloat arithmetic
 //     kernel, header-only inside CGAL 5.5; anchor: about 7 ms for a random
-//     degree-200 integer polynomial on this machine, issue 6): the kernel the
-//     workbench uses now. The difference to the workbench's row
+//     degree-200 integer polynomial on this machine): the kernel the
+//     workbench uses. The difference to the workbench's row
 //     (eccd::real_roots, baseline of each isolation group) is the workbench's
 //     own work around it: Poly<Rational> -> integer conversion, the roots that
 //     can lie in [0, 1] refined to width 2^-64 (quadratic interval

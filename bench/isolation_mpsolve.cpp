@@ -11,7 +11,7 @@
 // cores, so the benchmark charges it process CPU time (all threads) and also
 // reports wall time. Anchor: the workbench's own isolation (CGAL
 // Algebraic_kernel_d_1 over GMP + MPFI) on the same polynomial, in the same
-// process (bench/eccd_bench.cpp, group isolation-*).
+// process (bench/group_isolation.cpp, group isolation-*).
 #include "bench/isolation.hpp"
 
 #include <mps/mps.h>

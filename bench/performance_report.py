@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Runs the benchmark program and writes reports/performance.md (issue 6, part 3).
+"""Runs the benchmark program and writes reports/performance.md.
 
 Called by scripts/run-benchmarks.sh after it has built eccd_bench; standard
 library only. Steps:
@@ -8,8 +8,8 @@ library only. Steps:
   2. one run of eccd_bench: Google Benchmark's JSON (--benchmark_out) and the
      program's summary (--eccd_summary: groups, rows, medians over the
      repetitions, ratios to each group's baseline, what each row answered);
-  3. the targets (issue 21's limits, which replaced issue 6's; the certified
-     mode's set and ratio targets of issues 6, 18 and 21), each against its
+  3. the targets (the speed limits per row; the certified mode's set and
+     ratio targets; the guard's cost), each against its
      anchor (a paper's figure, FCL, or the flop count): met, or missed by how much;
   4. for each missed target, what dominates the time: the target's phase group
      (the pipeline's public steps timed one by one in the same run) and, when
@@ -17,7 +17,7 @@ library only. Steps:
      (eccd_bench --benchmark_filter=ROW --eccd_profile_seconds=S under
      `perf record`; flat profile by symbol and by shared object);
   5. reports/performance.md: the machine, the targets, the animations, FCL side
-     by side (issue 21: static test per pair, per frame of 000 Table 2 with the
+     by side (static test per pair, per frame of 000 Table 2 with the
      misclassified frames), the profiles, one table per group, the scenes, and
      what was left out.
 Raw outputs stay in the work directory (--work, default build-bench/bench-results).

@@ -1,4 +1,4 @@
-// Benchmark group "poses" (issue 36 points 1-2): eccd::animate_poses
+// Benchmark group "poses": eccd::animate_poses
 // (api/pose_check.hpp), the papers' per-pose mode, per pair-pose, in double
 // and certified, on paper 000's Table 1 animations (make_repro.py table1
 // --seed 1, 0.1 and 1 rad per key, 1001 keys), Table 2's orbit
@@ -29,7 +29,7 @@ void register_poses(const PosesBenchHooks& h) {
       "576 pairs). One iteration is the whole animation; per pair-pose = median / pair_poses (every stage: bounding "
       "spheres, the kept plane's check, the static test, building planes). plane_share: pair-poses past the bounding "
       "spheres settled by the kept plane. Baseline: double, Table 1 at 0.1 rad.",
-      "issue 36: at most 0.5 µs per pair-pose in double and 1 µs certified; 000 Tables 1-2: 2.1-5 µs per frame "
+      "speed target: at most 0.5 µs per pair-pose in double and 1 µs certified; 000 Tables 1-2: 2.1-5 µs per frame "
       "(one pair, static pose per frame)");
   struct R {
     const char* label;

@@ -1,6 +1,6 @@
 #pragma once
-// The per-pose mode's benchmark group (bench/poses.cpp, issue 36 points 1-2),
-// registered from eccd_bench.cpp through these hooks (its registry lives there).
+// The per-pose mode's benchmark group (bench/poses.cpp), registered from
+// eccd_bench.cpp through these hooks (the registry lives in bench/groups.hpp).
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-// Issue 36 point 2: the speed targets on the path users run (scene ->
+// The speed targets on the path users run (scene ->
 // eccd::solve / eccd::animate, or the static test from two poses), each group
 // with FCL beside it where FCL has a counterpart, all in the same process as
 // the rest of eccd_bench (bench/speed_targets.hpp: registered through its
@@ -30,7 +30,7 @@
 #include "api/separate.hpp"
 #include "api/solve.hpp"
 #include "api/static_filter_simd.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "bench/fcl_side.hpp"
 #include "compare/fcl_engine.hpp"
 #include "io/animation_reader.hpp"
@@ -77,11 +77,11 @@ const char* kDeg1Scene = R"({"format": "ellipse-ccd-scene/1", "name": "deg1-tran
 void register_deg1() {
   const std::string grp = "speed-deg1";
   add_group(
-      grp, "Issue 36: one degree-1 translating 3D pair through eccd::solve, FCL beside",
+      grp, "Speed target: one degree-1 translating 3D pair through eccd::solve, FCL beside",
       "eccd::solve(scene) from the scene of ccd3d-deg1-translation (two ellipsoids translating linearly, B turned by a "
       "fixed rotation, colliding on about [0.32, 0.67]): guarded double (the default of `eccd solve`; baseline) and "
       "certified; FCL's continuous test with 1000 samples (compare/fcl_engine fcl_ccd, first contact only).",
-      "issue 36: guarded double at most 30 µs (×3.4 faster than FCL's 1000 samples)");
+      "speed target: guarded double at most 30 µs (×3.4 faster than FCL's 1000 samples)");
   static Scene scene = scene_from_text(kDeg1Scene, "deg1-translating-pair");
   for (const char* a : {"double", "certified"}) {
     const std::string label =
@@ -172,14 +172,15 @@ json status_counts(const std::vector<Status>& v) {
 void register_static() {
   const std::string grp = "speed-static";
   add_group(
-      grp, "Issue 36: the 3D static test from two poses, one pair and batched per instruction set, FCL beside",
+      grp, "Speed target: the 3D static test from two poses, one pair and batched per instruction set, FCL beside",
       "1024 random ellipsoid pairs given as semi-axes and poses (the API's input). eccd::static_status one pair per "
       "iteration (baseline); eccd::static_status_batch on 64 pairs per iteration with the batch's instruction set "
       "limited to the one the label names (api/static_filter_simd.hpp: AVX-512 lanes, AVX2 lanes on explicit "
       "4-lane vectors, or pair by pair); a row whose instruction set this CPU lacks is skipped. fcl::collide on the "
       "same pairs (GJK libccd, default request; bench/fcl_side.hpp), one pair per iteration. Per pair: the batch "
       "rows' median / 64.",
-      "issue 36: at most 40 ns one pair, 15 ns per pair batched (960 ns per iteration); the batch never slower than "
+      "speed target: at most 40 ns one pair, 15 ns per pair batched (960 ns per iteration); the batch never slower "
+      "than "
       "single pairs (64 x the baseline)");
   add_row(grp, "static_status one pair (baseline)", true, 0, "eccd::static_status(a, b), double",
           [grp](benchmark::State& st) {
@@ -257,11 +258,11 @@ void register_paper002() {
   const std::string grp = "speed-paper002";
   const std::string rel = "cases/paper002/example.json";
   add_group(
-      grp, "Issue 36: paper 002's example from its scene file through eccd::solve",
+      grp, "Speed target: paper 002's example from its scene file through eccd::solve",
       "eccd::read_scene(" + rel +
           ") once, then eccd::solve(scene) per iteration: guarded double, rounded input (the "
           "default of `eccd solve`; baseline) and exact.",
-      "issue 36: guarded double at most 0.5 ms, exact at most 20 ms; 001: 3.7 ms for a degree-4 affine pair (3 GHz "
+      "speed target: guarded double at most 0.5 ms, exact at most 20 ms; 001: 3.7 ms for a degree-4 affine pair (3 GHz "
       "Pentium 4)");
   for (const char* a : {"double", "exact"}) {
     const bool base = std::string(a) == "double";
@@ -280,12 +281,12 @@ void register_paper002() {
 void register_frames() {
   const std::string grp = "speed-frame";
   add_group(
-      grp, "Issue 36: per pair-frame (000 Table 1's pair, kept plane) and per frame (the boxers, 576 pairs)",
+      grp, "Speed target: per pair-frame (000 Table 1's pair, kept plane) and per frame (the boxers, 576 pairs)",
       "000 Table 1's pair-frame as in the plane-check group (semi-axes 3, 3, 5, centres 8 apart, rotations of about "
       "0.1 rad per frame): eccd::solve double guarded (baseline), eccd::plane_separates_on_frame double with the plane "
       "of t = 0 (separate_at exact, once); eccd::animate on bench/data/boxers-10.anim.json (ten frames per iteration, "
       "threads 1, process CPU time; per frame: the median / 10) in double and certified.",
-      "issue 36: kept-plane check at most 2 µs per pair-frame; boxers at most 1 ms per frame double (10 ms per "
+      "speed target: kept-plane check at most 2 µs per pair-frame; boxers at most 1 ms per frame double (10 ms per "
       "iteration), 2 ms certified (20 ms per iteration); 001 section 5: 3.4 ms per frame (3 GHz Pentium 4)");
   static const Scene table1 = scene_from_text(R"({"format": "ellipse-ccd-scene/1", "name": "table1-pair", "dim": 3,
       "a": {"shape": {"semi_axes": ["3", "3", "5"]}, "motion": {"type": "euler", "e": ["1", ["0", "1/20"], "0", "0"], "translation": ["-4", "0", "0"]}},

@@ -1,7 +1,7 @@
 #pragma once
-// Issue 36's target rows (bench/speed_targets.cpp), registered through
-// bench/eccd_bench.cpp's registry (groups, rows, the results of the last
-// iteration) by the three hooks below, which eccd_bench.cpp defines.
+// The speed target rows (bench/speed_targets.cpp), registered through the
+// registry of bench/groups.hpp (groups, rows, the results of the last
+// iteration) by the three hooks below, which bench/eccd_bench.cpp defines.
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 

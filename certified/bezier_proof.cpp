@@ -209,8 +209,8 @@ class Engine {
   }
 
   // argmax over u of the double mid-point net at t and the value there (a witness only: 127 samples).
-  // The 127 de Casteljau evaluations run side by side (issue 21: a sixth of the degree-1 certified query): the
-  // same products and sums as bernstein_value at each u, in the same order, so the same values bit for bit.
+  // The 127 de Casteljau evaluations run side by side (one by one they cost a sixth of the degree-1 certified query):
+  // the same products and sums as bernstein_value at each u, in the same order, so the same values bit for bit.
   std::pair<double, double> witness(double t) const {
     Bern<double> col;
     for (const auto& row : Fd_.b) col.b.push_back(bernstein_value(std::span<const double>(row), t));
@@ -283,7 +283,7 @@ class Engine {
         return true;
       }
       const double um = 0.5 * (u0 + u1);
-      // only the half that holds u* is computed (issue 18: split_u was a sixth of a certified 3D query)
+      // only the half that holds u* is computed (both halves cost a sixth of a certified 3D query)
       if (ustar < um) {
         keep_u_left(g, Interval(0.5, 0.5));
         u1 = um;
@@ -328,7 +328,7 @@ class Engine {
     s.lo = lo;
     s.hi = hi;
     const auto [ustar, top] = witness(tm);
-    // A box test that must fail is skipped (issue 21: the strips that hold an end failed their box tests at
+    // A box test that must fail is skipped (the strips that hold an end fail their box tests at
     // every depth): F(u*, lo) or F(u*, hi) surely < 0 (every u-box around u* then has F <= 0 somewhere, so not
     // every control point is > 0), or F(u, lo) or F(u, hi) surely > 0 for some u (not every control point of
     // every u-piece is < 0). "Surely": the double value beyond sure_margin_ (see the constructor). The strip is

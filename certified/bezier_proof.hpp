@@ -1,6 +1,6 @@
 #pragma once
 // Proved answers of 3D scenes by 001's Bézier zero-set analysis in interval
-// arithmetic (issue 18 point 3): the certified method that decides typical
+// arithmetic: the certified method that decides typical
 // 3D scenes without the projection polynomial.
 //
 // Statement. Paper 001, section 4: with F(u, t) = det((u - 1)A(t) - uB(t))

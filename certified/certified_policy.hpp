@@ -25,7 +25,7 @@
 // ask the running thread's deadline at every piece and every bisection step
 // (check_deadline, kernel/budget.hpp): the ladder gives each rung a budget.
 //
-// Local decisions (issue 18 point 2). With an exact oracle at rational
+// Local decisions (certified/ladder.hpp). With an exact oracle at rational
 // instants (certified/point_oracle.hpp, `oracle`; the ladder sets it), one
 // uncertain sign at one rational point is decided there exactly instead of
 // escalating the scene: every polynomial built carries its formula, and its
@@ -36,7 +36,7 @@
 //   - "split_sign": at a split point of the isolation where the interval value
 //     is uncertain at all five candidate dyadics, the exact sign at the first
 //     candidate where it is non-zero (only at depth < 12: deeper, the piece is
-//     next to a multiple root or a cluster, and the scene escalates as before,
+//     next to a multiple root or a cluster, and the scene escalates to the next rung,
 //     so touches cost what they cost without the oracle); the sign of a piece's
 //     end value is then the exact one, not the interval's. At most
 //     max_local_splits (4) exact evaluations per run go to this: a polynomial whose interval
@@ -50,7 +50,7 @@
 //     kernel/pipeline_policy.hpp).
 // Every exact evaluation is between two looks at the deadline, so the rung's
 // budget still bounds its time (certified/ladder.hpp: δ includes one exact
-// evaluation at a point). Without an oracle the policy is as before.
+// evaluation at a point). Without an oracle every uncertain sign escalates.
 // Requirements on T: Interval or MpfiInterval — scalar_traits<T> whose sign()
 // is certain-or-uncertain and whose operations enclose exact results, plus
 // interval_hull(lo, hi, like) and exact_point(x) (number/interval.hpp,
@@ -120,7 +120,7 @@ struct CertifiedPolicy {
   long max_local_splits = 4;  // exact split-point evaluations allowed per run (beyond: escalate as without the oracle)
   mutable long local_split_evaluations = 0;
   mutable std::map<std::string, long> local;  // decisions made locally with the oracle, by kind (see above)
-  // Seconds spent in the oracle's exact evaluations (issue 21: the ladder's MPFI budget leaves them out).
+  // Seconds spent in the oracle's exact evaluations (the ladder's MPFI budget leaves them out).
   mutable double local_seconds = 0;
   struct LocalClock {  // adds its lifetime to a counter
     double& total;
@@ -370,8 +370,8 @@ struct CertifiedPolicy {
   mutable bool local_in_isolation = false;  // roots() used a local decision (end or split sign)
   // g_0..g_N in Bernstein form, as build_in_basis(bernstein) converts them,
   // kept for the next build with the same g: the same end points bit for bit
-  // (compared, not assumed), hence the same conversion (issue 18: the three
-  // builds of Δ, P and D converted g three times).
+  // (compared, not assumed), hence the same conversion (so the three
+  // builds of Δ, P and D convert g once, not three times).
   mutable std::vector<Poly<T>> g_seen;
   mutable std::vector<Bern<T>> g_bern;
   const std::vector<Bern<T>>& bernstein_g(const std::vector<Poly<T>>& g) const {

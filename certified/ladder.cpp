@@ -164,8 +164,8 @@ Solution run_certified(const PreparedPair<N>& p, const std::vector<int>& mpfi_ru
   const double interval_s = seconds_since(t);
   escalations.push_back({"interval", reason, interval_s * 1e3, budget.interval_s * 1e3});
   // The MPFI rungs share one budget: mpfi_factor x the interval rung's time
-  // without its local exact evaluations (issue 21: they decided nothing on the
-  // degree-1 graze and overlap rows and doubled the MPFI rung's allowance), so
+  // without its local exact evaluations (they decide nothing on the
+  // degree-1 graze and overlap rows and would double the MPFI rung's allowance), so
   // that all of them together cost at most that much; each rung gets what is left.
   const double mpfi_total_s = budget.mpfi_factor * std::max(0.0, interval_s - local_s);
   double mpfi_spent_s = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// The certified ladder (`--arith certified`): in 3D first the Bézier proof
+// The certified ladder (`--arith certified`, the arithmetic: docs/architecture.md): in 3D first the Bézier proof
 // (certified/bezier_proof.hpp: 001 section 4 in intervals, no projection
 // polynomial; decided_in "bezier"), then the 2D or 3D projection
 // pipeline (kernel/cd_disc.hpp, kernel/ccd_projection.hpp) in interval
@@ -10,7 +10,7 @@
 // Solution is certified whichever rung decided; decided_in names that rung,
 // escalations why each lower rung gave up, its time and its budget.
 //
-// Cost guarantee (issue 18). Let I be the time the interval rung took, X the
+// Cost guarantee. Let I be the time the interval rung took, X the
 // time of the exact pipeline on the same prepared pair (run_exact below: what
 // `--arith exact` runs after preparing the scene), and δ the longest stretch
 // of one rung between two looks at its deadline (one polynomial product or
@@ -23,7 +23,7 @@
 //     I <= B_I + δ;
 //   - all MPFI rungs together have the budget f·I' (LadderBudget::mpfi_factor,
 //     f = 1; I' <= I the interval rung's time without its local exact
-//     evaluations, issue 21), each rung what is left; a
+//     evaluations), each rung what is left; a
 //     rung that meets a multiple root, runs out of budget, or gives up with the
 //     same reason as the rung below (the same sign still uncertain after the
 //     precision raise: not converging) sends the ladder straight to exact;
@@ -36,7 +36,7 @@
 // decides is never cut short by the guarantee (its answer is certified), and
 // the caller's deadline still ends the whole run (BudgetExhausted).
 //
-// Local decisions (issue 18 point 2). The interval and MPFI rungs carry an
+// Local decisions. The interval and MPFI rungs carry an
 // exact oracle at rational instants (certified/point_oracle.hpp, filled here
 // from the PreparedPair): one sign or one status that the rung's intervals
 // leave uncertain at one rational point (an end of [0, 1], a split point of
@@ -49,10 +49,10 @@
 // (t = 0, t = 1, a split point: kind rational_root, straight to exact like a
 // multiple root), and a sign at an irrational root (a touch rule's sign, a
 // cell boundary's status) that the intervals cannot decide. The guarantee
-// above is unchanged: each exact evaluation (f's coefficients at the point
+// above still holds: each exact evaluation (f's coefficients at the point
 // from the motions' rationals, then one formula of them: a few hundred
 // products of rationals) runs between two looks at the rung's deadline, so
-// it is part of that rung's time and budget; δ now also covers one such
+// it is part of that rung's time and budget; δ also covers one such
 // evaluation. Split-point evaluations are capped at max_local_splits (4) per run,
 // and an identically-zero test of degree d makes at most d + 1.
 // Requirements: a prepared pair (kernel/prepared_scene.hpp), N = 3 (2D) or 4 (3D).
@@ -71,7 +71,7 @@ struct LadderBudget {
   double bezier_s = 0.25;    // B_Z: the Bézier rung's budget in 3D (seconds; <= 0: none)
   double interval_s = 1.0;   // B_I: the interval rung's budget (seconds; <= 0: none)
   double mpfi_factor = 1.0;  // f: all MPFI rungs together at most f x the interval rung's time
-  bool local = true;  // local decisions with the exact oracle at rational instants (false: as before issue 18 point 2)
+  bool local = true;         // local decisions with the exact oracle at rational instants (false: escalate the scene)
 };
 
 template <int N>

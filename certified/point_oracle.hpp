@@ -1,5 +1,5 @@
 #pragma once
-// The exact oracle at a rational instant (issue 18 point 2: escalate one
+// The exact oracle at a rational instant (certified/ladder.hpp: escalate one
 // decision, not the scene).
 //
 // Statement. At a rational instant t the motions of a prepared pair are

@@ -1,5 +1,5 @@
 #pragma once
-// External engines in the report (issue 19, point 2): `eccd report --external
+// External engines in the report: `eccd report --external
 // NAME=DIR` gives a user's engine (FCL driven by their own code, their
 // simulator, another library) its own rows in every table and plot, judged
 // against the exact answer like eccd's own pipelines.

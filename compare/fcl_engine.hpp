@@ -2,7 +2,7 @@
 // FCL as a peer engine: what a robotics user gets from FCL 0.7 (the Flexible
 // Collision Library, Debian libfcl-dev) on a scene, as an answer in the scene
 // format, so that the harness and `eccd judge` can hold it against the
-// certified answer (issue 19, point 3).
+// certified answer.
 //
 // Statement. FCL is used as a user's program uses it, in double:
 //  * The pose at an instant t (a double). Each body's world quadric
@@ -47,7 +47,7 @@
 //    ADVANCEMENT) is not implemented for ellipsoids; CCDM_LINEAR (InterpMotion)
 //    was measured to give different answers from run to run on the same
 //    input, and CCDM_SCREW moves a pure translation by |dT| dT instead of dT
-//    (issue 19); they would measure FCL's bugs, not its arithmetic.
+//    (found by the harness); they would measure FCL's bugs, not its arithmetic.
 // Availability: FCL is optional at build time (CMake package fcl, defining
 // ECCD_HAVE_FCL for this layer); without it fcl_availability() says why and
 // fcl_sample / fcl_ccd throw FclUnavailable. No FCL or Eigen header is
@@ -71,7 +71,7 @@ struct FclAvailability {
 };
 FclAvailability fcl_availability();
 
-// What a caller may change in FCL's collision request (issue 17 point 2).
+// What a caller may change in FCL's collision request.
 // gjk_tolerance: fcl::CollisionRequestd::gjk_tolerance, which fcl::collide
 // passes to the libccd solver as its collision_tolerance (the MPR/GJK
 // termination tolerance; fcl/narrowphase/collision-inl.h); 0 keeps FCL's

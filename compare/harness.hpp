@@ -25,12 +25,12 @@
 // ellipsoid_function), in the pipeline's arithmetic.
 // Coefficient errors are measured for the prepared input mode only (they are
 // recomputed from the prepared scene); rounded rows leave them empty.
-// Every run is bounded (issue 14, point 3): each floating run under a
+// Every run is bounded: each floating run under a
 // ScopedDeadline of `budget_s` (kernel/budget.hpp); a run that hits it, or
 // comes back later than it, is recorded as undecided with the reason "time
 // budget". The exact run has its own, larger budget; when it is exhausted the
 // scene has no ground truth and run_scene throws BudgetExhausted.
-// Input modes (issue 14, point 1): each floating pipeline runs once per mode
+// Input modes: each floating pipeline runs once per mode
 // in `inputs`: "rounded" (the scene's numbers rounded to the arithmetic, as a
 // user's program holds them) and "prepared" (coefficients prepared exactly,
 // then rounded). The row's `input` is what the pipeline's JSON says it used
@@ -38,7 +38,7 @@
 // then only "prepared" rows are written. Rows of the mode "prepared" carry the
 // label suffix "@prepared" when both modes are run, so that the report can put
 // the error of rounding the input apart from the error of the computation.
-// Peer pipelines (issue 19, point 3): `certified` (api/solve.hpp with
+// Peer pipelines: `certified` (api/solve.hpp with
 // Arithmetic::certified(): interval arithmetic climbing to exact,
 // certified/ladder.hpp) runs like a floating run, bounded by the same
 // budget_s (a time-out is undecided, not a failure of the scene); bits 0,
@@ -53,7 +53,7 @@
 // and its structure_ok means collides and the first contact agree. A scene
 // whose motions FCL's translation motion cannot express gets no fcl/ccd row
 // (fcl_skipped counts them from the rows).
-// Faces (design.md "two faces"): every double and MPFR pipeline runs in each
+// Faces (docs/architecture.md, "Two faces"): every double and MPFR pipeline runs in each
 // face of HarnessOptions::guards, "none" (the algorithm as published, in plain
 // T: its errors are the measurement) and "bound" (guarded by the running error
 // bound: an unsure sign makes the place undecided). The row's `guard` says
@@ -63,7 +63,7 @@
 // external rows have no face (guard empty). Cycloidal pipelines exist in the
 // guarded face only (api/solve.cpp).
 // Scenes of the motion families (a cycloidal motion, or "parameters":
-// "independent"; issue 20) have their own pipelines and ground truth:
+// "independent") have their own pipelines and ground truth:
 // compare/harness_families.hpp (run_scene hands them over).
 // Requirements: none beyond a scene the reader accepted.
 #include "api/solve.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The harness on scenes of the motion families (issue 20): a cycloidal motion
+// The harness on scenes of the motion families: a cycloidal motion
 // (003 section V) or independent motions A(s), B(t) (001 section 4). Their
 // pipelines and ground truth differ from the rational shared-parameter
 // scenes of compare/harness.hpp, which hands them over (run_scene).

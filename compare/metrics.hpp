@@ -3,7 +3,7 @@
 // coefficients and answer are from the exact ones.
 //
 // Statement.
-//  * Coefficient error (design.md, job 1; 003 VI-C and 002 IV measure the
+//  * Coefficient error (docs/architecture.md, "What the workbench measures"; 003 VI-C and 002 IV measure the
 //    same loss): the normwise relative error  max_i |ã_i - a_i| / max_i |a_i|
 //    of a list of coefficients ã against the exact list a in the same basis,
 //    computed exactly in rationals (every double and MPFR value is a dyadic
@@ -12,7 +12,7 @@
 //    different degrees are compared after exact degree elevation of the lower
 //    one (elevation does not change the polynomial). If the exact list is
 //    all zero the error is the absolute max |ã_i|.
-//  * Coefficient error in a common basis (issue 19, `coef_err_common`): the
+//  * Coefficient error in a common basis (`coef_err_common`): the
 //    error above depends on the basis it is measured in, so the errors of a
 //    power-form and a Bernstein-form pipeline are not comparable (a power
 //    coefficient a_i and a Bernstein coefficient b_k are different numbers,
@@ -206,7 +206,7 @@ inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, doub
   AnswerDifference d = answer_difference(*got, exact, o);
   m.collides = got->collides;
   m.intervals = d.intervals;
-  m.exact_intervals = d.reference_intervals;  // independent motions: s- and t-intervals together (issue 20)
+  m.exact_intervals = d.reference_intervals;  // independent motions: s- and t-intervals together
   if (!got->undecided.empty())
     m.outcome = "undecided";
   else if (!d.collides_differs)

@@ -1,5 +1,5 @@
 #pragma once
-// The generator families of issue 20 (point "report"): scenes whose motions
+// The generator families cycloidal and independent: scenes whose motions
 // are not the shared-parameter rational motions of the other families.
 //
 // Statement. Both families are seeded like the others (compare/

@@ -1,7 +1,7 @@
 #pragma once
 // Regression against stored exact answers (eccd regress, and the CI test).
 //
-// Statement (issue 5): a stored answer and a recomputed exact answer agree
+// Statement: a stored answer and a recomputed exact answer agree
 // when api/answer_difference.hpp (the one comparison of answers) finds no
 // difference between them: the same `collides`, the collision intervals one
 // to one with matching ends, the same external contacts and contact

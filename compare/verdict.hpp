@@ -11,7 +11,7 @@
 // names the pipeline and its face (as published or guarded: the label of an
 // as-published pipeline ends in "/published", compare/harness.hpp), keeps its
 // time and its failure, and counts what the tables count. "agrees" iff there is no difference. This is reporting, not
-// deciding: doubles are fine here (design.md).
+// deciding: doubles are fine here (docs/architecture.md, "Doubles for display only").
 #include "api/answer_difference.hpp"
 #include "kernel/answer.hpp"
 

@@ -6,12 +6,12 @@
 // root of Δ(t) or of a projection polynomial: a real algebraic number) in a
 // rational bracket that provably holds it and no other root, and must decide
 // signs of polynomials at t0 exactly, never by evaluating near t0 in floating
-// point (design.md, "Mathematics the code must get right"). Isolation of
+// point (docs/architecture.md, "Exact at a critical instant"). Isolation of
 // every real root (Descartes' method) is CGAL's Algebraic_kernel_d_1 over CORE::BigInt (CORE ships inside CGAL's
-// headers; issue 6 measured it 1.5-4x faster than the kernel over CGAL::Gmpz with MPFI on the workbench's polynomials).
+// headers; measured 1.5-4x faster than the kernel over CGAL::Gmpz with MPFI on the workbench's polynomials).
 // On [0, 1] (what the pipelines ask for) only the roots there are isolated, by Descartes' bisection of (0, 1) in GMP
 // integers, after a modular certificate that the polynomial is square-free (else after FLINT's square-free
-// factorisation, exact/flint_poly.hpp, which also does the gcds), issue 21; other ranges use CGAL's isolation of every
+// factorisation, exact/flint_poly.hpp, which also does the gcds); other ranges use CGAL's isolation of every
 // real root. What follows isolation is done in exact/algebraic_roots.cpp on the isolating intervals, with integers
 // only: refinement by quadratic interval refinement (Abbott, "Quadratic interval refinement for real roots", 2006;
 // exact signs of the square-free factor at dyadic points), exact comparison with the ends of the range, and signs at a
@@ -62,7 +62,7 @@ void refine(AlgebraicRoot& r, int bits);
 std::vector<std::pair<Poly<Rational>, int>> square_free_factors(const Poly<Rational>& p);
 // gcd(p, q) as a primitive integer polynomial with positive leading coefficient.
 Poly<Rational> polynomial_gcd(const Poly<Rational>& p, const Poly<Rational>& q);
-// The same two by CGAL's modular gcd (the path before issue 21: FLINT's now,
+// The same two by CGAL's modular gcd (FLINT computes them in the pipelines,
 // exact/flint_poly.hpp), kept as the reference the tests compare them with.
 std::vector<std::pair<Poly<Rational>, int>> square_free_factors_cgal(const Poly<Rational>& p);
 Poly<Rational> polynomial_gcd_cgal(const Poly<Rational>& p, const Poly<Rational>& q);

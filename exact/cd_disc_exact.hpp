@@ -35,7 +35,7 @@ struct ExactPolicy {
   std::vector<Isolation>* record = nullptr;
 
   // The formula in the power basis, kept in power form: nothing is rounded, so the basis does not matter
-  // (kernel/basis_build.hpp). Computed in FLINT's rational polynomials (exact/flint_poly.hpp, issue 21):
+  // (kernel/basis_build.hpp). Computed in FLINT's rational polynomials (exact/flint_poly.hpp):
   // the very polynomial the formula gives in Poly<Rational>, faster.
   template <class F>
   Poly<Rational> build(const std::vector<Poly<Rational>>& g, F formula) const {

@@ -11,9 +11,9 @@
 // (Debian libflint-dev, version 2.9) computes fmpz_poly_gcd by heuristic and
 // multimodular gcds whose candidates are checked by exact division over Z
 // (a proof, not a probability), and fmpz_poly_factor_squarefree is Yun's
-// algorithm on those gcds. Issue 21: CGAL's modular gcd
-// (Polynomial<Residue>::euclidean_division) was a fifth of the exact 2D and
-// 3D pipelines; exact/algebraic_roots.cpp now asks these instead
+// algorithm on those gcds. Measured: CGAL's modular gcd
+// (Polynomial<Residue>::euclidean_division) took a fifth of the exact 2D and
+// 3D pipelines; exact/algebraic_roots.cpp asks these instead
 // (tests/exact/test_flint_poly.cpp compares them with CGAL's on every
 // polynomial of cases/).
 // FlintQPoly: a rational polynomial in FLINT's fmpq_poly (one integer
@@ -23,7 +23,7 @@
 // (+, -, *, int *, is_zero). Exact: it converts back to the very Poly<Rational>
 // the same formula gives in Poly<Rational> (GMP's rationals are canonical too),
 // so ExactPolicy (exact/cd_disc_exact.hpp) builds Δ, the projection and
-// s(j,i) in it (issue 21: those builds were a third of paper 002's exact run).
+// s(j,i) in it (in Poly<Rational> those builds take a third of paper 002's exact run).
 // Only exact/flint_poly.cpp includes FLINT (its headers define macros such as
 // `ulong`); this header uses GMP's C++ numbers and an opaque handle only.
 // Requirements: integer coefficients (mpz_class) with the leading one non-zero

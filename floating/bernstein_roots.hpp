@@ -8,10 +8,10 @@
 // exactly one sign change and whose end values have opposite strict signs
 // holds exactly one simple root (Descartes' rule for the Bernstein basis), and
 // is refined by modified regula falsi to the working precision: from degree 16
-// on (issue 21) each step's value is O(n) (Horner in t/(1-t):
+// upward each step's value is O(n) (Horner in t/(1-t):
 // kernel/bernstein_horner.hpp), the first point is where the control polygon
 // crosses zero and the damping is Anderson-Björck's; below degree 16 the steps
-// are Illinois' from the ends on de Casteljau values, as before. The
+// are Illinois' from the ends on de Casteljau values. The
 // subdivision stays de Casteljau. A piece narrower than
 // `cluster_width` that is neither is reported as a root cluster (a double
 // root, as at a touch, or roots closer than the arithmetic can separate);
@@ -19,7 +19,7 @@
 // (Variant 2). Nothing here is certified: with rounded coefficients a
 // reported root may be spurious and a double root may be missed; that is what
 // the harness measures against the exact pipeline.
-// Work bound (issue 14): at most `max_pieces` pieces are examined, and the
+// Work bound: at most `max_pieces` pieces are examined, and the
 // run's deadline (kernel/budget.hpp) is asked once per piece and once per
 // refinement step of a simple root (a root whose refinement it stops is
 // reported unresolved, with its piece). When either is
@@ -156,7 +156,7 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
   const T one = scalar_traits<T>::from_rational(mpq_class(1), like);
   // 2^e as a T of the run's precision: 1 scaled by a power of two, exact in
   // every rounded T, so the same value (and zero error bound) as converting
-  // the rational 2^e, without a GMP conversion per constant (issue 21: the
+  // the rational 2^e, without a GMP conversion per constant (the
   // Bézier method calls this for every static test).
   auto pow2 = [&](int e) { return T(times_pow2(one, long(e))); };
   // Below this width a piece that still may hold roots is a cluster: roots

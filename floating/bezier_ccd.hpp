@@ -21,9 +21,9 @@
 //     start F(û, t) is computed twice (the peak over u at t, and G(0) after
 //     restricting F(û, .) to [t, b]); as t converges onto a contact both are
 //     at the noise level and may differ in sign. An empty root list with
-//     G(0) <= 0 was once read as a miss (issue 14's scene "missed-0.021":
-//     both shots converged, the one from the far end then "missed", and a
-//     collision of 2 % of [0, 1] was reported separate). Now a non-positive
+//     G(0) <= 0 must not be read as a miss (in the scene "missed-0.021"
+//     both shots converge, the one from the far end would then "miss", and a
+//     collision of 2 % of [0, 1] would be reported separate). A non-positive
 //     G(0) means the shot has converged at t;
 //  3. between two overlapping samples (case 2): all control points of F over
 //     (0, 1) x [a, b] negative = overlap on [a, b]; else subdivide in t;
@@ -40,7 +40,7 @@
 // (2^-min(p/2, 30), where a double root's instant is only known to ~sqrt(eps)) is
 // reported as a touch if both sides are separate, or `uncertain`. The exact
 // 3D pipeline is the projection (kernel/ccd_projection.hpp), not this method.
-// Termination and honesty (issue 14): g is scaled by a power of two first
+// Termination and honesty: g is scaled by a power of two first
 // and a non-finite coefficient or control point makes [0, 1] undecided with
 // the reason; when the subdivision cap (max_subdivisions) or the run's
 // deadline is hit, every gap not yet resolved is an undecided cell (never a
@@ -60,12 +60,12 @@
 // gradients' control points rounded to double).
 // Cost: the inner loops (static tests, shooting, Gaussian test) restrict and
 // subdivide F in place and use the constants 0, 1, 1/2 made once per run
-// (zero_, one_, half_) instead of converting rationals each time. Issue 21:
+// (zero_, one_, half_) instead of converting rationals each time. Speed:
 // the Gaussian test's u-pieces are made in buffers kept per depth (no heap
 // in its recursion), the deadline is read on every 16th poll only (a poll
 // comes once per shot iteration or gap, so a run overshoots its deadline by
 // at most 15 of those), and only the instants that reach the answer or a
-// cell are formatted as text (the others, about half, were %.17g-printed and
+// cell are formatted as text (the others, about half, would be %.17g-printed and
 // thrown away).
 #include "floating/bernstein_roots.hpp"
 #include "kernel/budget.hpp"
@@ -141,9 +141,9 @@ BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
 // only to 2^-(bits/2 + 6) of its piece. Near a simple maximum u* of f,
 // f(u) = f(u*) - O(|f''| (u - u*)^2), so a witness that close gives the peak's
 // value to within |f''| 2^-(bits + 12), below the rounding of its evaluation
-// (n(n-1) = 12 for the quartic F(., t0)); refining further (to 2^-50, as the
-// first version did at every static test and shot) changed nothing but the last
-// bits of u and cost a third of a 3D query (issue 21). Clusters (a multiple
+// (n(n-1) = 12 for the quartic F(., t0)); refining further (to 2^-50 at
+// every static test and shot) changes nothing but the last
+// bits of u and costs a third of a 3D query. Clusters (a multiple
 // root of f', an inflection) are still found at the full precision.
 template <class U>
 struct Peak {
@@ -205,8 +205,8 @@ inline bool same_way(double x1, double y1, double x2, double y2) {
 
 // All points strictly inside one open half-plane through the origin (001
 // section 4's Gaussian-circle test: the gradients' directions cover less than
-// a half circle). Decided by the signs of cross products, no angles (atan2 was
-// 15 % of paper 002's double query, issue 21): the points are taken in order
+// a half circle). Decided by the signs of cross products, no angles (atan2 costs
+// 15 % of paper 002's double query): the points are taken in order
 // and the cone [lo, hi] (counter-clockwise from lo to hi, narrower than π)
 // spanned by those seen so far is kept; a point inside it changes nothing, a
 // point less than π counter-clockwise of lo and beyond hi becomes hi (the
@@ -296,7 +296,7 @@ class BezierZeroSet {
     } else {
       Bern<T> f = ellipsoid_function_at(F_, t0);
       if constexpr (has_error_bound_v<T>) {
-        // Before the peak (issue 21: its root finding was a quarter of a query),
+        // Before the peak (its root finding would be a quarter of a query),
         // two decisions that need none: every control point surely negative
         // (then F(., t0) < 0 on [0, 1] by the convex hull, and no peak could be
         // surely positive), or F surely positive at the abscissa i/m of the
@@ -373,7 +373,7 @@ class BezierZeroSet {
   static constexpr long kUPieces = 1024;
   // f is F(., t0) on [u0, u1] (dyadic ends); `witness` receives the u of a
   // surely positive end control point when the answer is separate.
-  // Issue 36: both halves from one de Casteljau triangle (split_into, bit for bit keep_left / keep_right's),
+  // Both halves from one de Casteljau triangle (split_into, bit for bit keep_left / keep_right's),
   // on the stack for the small degrees of F in u (no allocation per level of a deep descent to a needle).
   Status classify_on_u(std::span<const T> f, int depth, long& pieces, const T& u0, const T& u1, T& witness) const {
     ++pieces;
@@ -446,7 +446,7 @@ class BezierZeroSet {
       // G(0) = F(û, t) is the peak value again, by another rounding: at the
       // noise level it can come out <= 0 although p.value > 0. Then G has no
       // root to find (possibly all negative), which is no miss: t is the
-      // contact as far as this arithmetic can tell (issue 14, "missed-0.021").
+      // contact as far as this arithmetic can tell (the scene "missed-0.021").
       if (sign(G.b.front()) != Sign::positive) return {ShotKind::converged, t};
       BernsteinRootOptions<T> ro;
       // Relative to [t, to]: roots to 2^-53 of it, clusters below 2^-30 of it
@@ -673,7 +673,7 @@ class BezierZeroSet {
       return;
     } else {
       // Out of work (the run's subdivision cap or its deadline): this gap is
-      // undecided, with the reason; never guessed (issue 14).
+      // undecided, with the reason; never guessed.
       if (subdivisions >= opt_.max_subdivisions || out_of_time()) {
         if (stopped.empty())
           stopped = late_ ? deadline_reason()

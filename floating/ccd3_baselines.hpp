@@ -105,7 +105,7 @@
 // and compiles with mpq_class. N >= 1.
 // Known failure modes: those listed above; cost sampling O(N · Sturm of a
 // quartic), marching O(N · (deg_t F)² + N²).
-// Termination (issue 14): g is scaled by a power of two first (a non-finite
+// Termination: g is scaled by a power of two first (a non-finite
 // coefficient: undecided on [0, 1] with the reason); at most kBaselineWork
 // status tests (sampling) or values of F (marching) per run, and the run's
 // deadline (kernel/budget.hpp) is asked per sample or row. When either is hit,

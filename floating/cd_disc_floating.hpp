@@ -7,7 +7,7 @@
 // [0, 1] found by Bernstein subdivision (floating/bernstein_roots.hpp).
 // Signs at a root are the signs of the computed values at the root's
 // approximation: nothing here is certified.
-// Scaling and termination (issue 14): g_0..g_N are scaled by a power of two
+// Scaling and termination: g_0..g_N are scaled by a power of two
 // so that the largest coefficient has exponent 0 (number/pow2_scaling.hpp;
 // exact, changes no root and no sign; Δ, P, D and the subresultant
 // coefficients built from them then stay in range: products of a few values
@@ -40,8 +40,8 @@ struct FloatingPolicy {
   Basis basis = Basis::bernstein;
   int bits = 53;
   T like;
-  // Δ in the Hessian form (kernel/cd_disc.hpp, discriminant_of; issue 21), in every face: with a running
-  // error bound too (issue 30 point 5: fewer and shorter products for the guard, and its values are then
+  // Δ in the Hessian form (kernel/cd_disc.hpp, discriminant_of), in every face: with a running
+  // error bound too (fewer and shorter products for the guard, and its values are then
   // bit for bit the as-published ones, so where the guard decides it gives the published answer).
   static constexpr bool delta_from_hessian = true;
   long max_pieces = 20000;                 // root isolation work bound (per polynomial)
@@ -90,7 +90,7 @@ struct FloatingPolicy {
   // With a running error bound (number/running_error.hpp) a cluster is a
   // place where Δ's sign is unknown: there may be a double root (a touch),
   // two close roots or none, so nothing is claimed there.
-  // The value at the root in O(n) (kernel/bernstein_horner.hpp, issue 21: the same order of
+  // The value at the root in O(n) (kernel/bernstein_horner.hpp: the same order of
   // error as de Casteljau's). With a running error bound that value's bound decides where it
   // can (the as-published value, bit for bit), and only where it cannot, de Casteljau's
   // triangle, whose bound is smaller, is asked (O(n^2)): both bound the exact value at the

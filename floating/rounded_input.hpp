@@ -2,7 +2,7 @@
 // The floating pipelines' default start (input mode "rounded"): each number of
 // the scene rounded to the arithmetic, everything after computed in it.
 //
-// Statement (issue 14, point 1). A user's program holds the scene's numbers
+// Statement (input mode `rounded`, api/options.hpp). A user's program holds the scene's numbers
 // as doubles (or MPFR values) and computes the motion matrices, their
 // inverses, A(t), f and Δ in that arithmetic. round_pair does the same: each
 // entry of the shape matrix Q and each coefficient of each motion polynomial

@@ -69,8 +69,8 @@ json solution_to_json(const Solution& s) {
   for (const auto& u : s.answer.undecided) und.push_back(instant_to_json(u));
   j["undecided"] = und;
   j["projection_degree"] = s.projection_degree;
-  // The JSON keeps its values (issue 16): the Bézier method, which has no
-  // univariate projection, is written "discriminant" as before.
+  // The JSON keeps its values for readers of older files: the Bézier method, which has no
+  // univariate projection, is written "discriminant".
   j["projection"] = s.projection == "bezier" ? std::string("discriminant") : s.projection;
   j["projection_identically_zero"] = s.projection_identically_zero;
   j["status_at_0"] = to_string(s.status_at_0);
@@ -102,7 +102,7 @@ json solution_to_json(const Solution& s) {
       if (e.reason.rfind("skipped", 0) != 0) j["escalation_reason"] = e.rung + ": " + e.reason;
     }
     j["escalations"] = esc;
-    if (!s.local_decisions.empty()) {  // decided locally, exactly at one rational instant (issue 18 point 2)
+    if (!s.local_decisions.empty()) {  // decided locally, exactly at one rational instant (certified/ladder.hpp)
       json local = json::object();
       for (const auto& [k, v] : s.local_decisions) local[k] = v;
       j["local_decisions"] = local;

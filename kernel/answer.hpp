@@ -18,6 +18,7 @@
 // true (the spec: touching counts as collision); its instants are not listed
 // in `contacts`, which keeps the isolated instants of external tangency.
 // Without contact_intervals a continuous touch would read as an overlap.
+#include "number/double_traits.hpp"
 #include "number/scalar_traits.hpp"
 
 #include <gmpxx.h>
@@ -95,18 +96,11 @@ inline std::string decimal_string(const mpq_class& q, int digits = 20) {
   return out;
 }
 
-// The double nearest to an exact rational (MPFR rounding to nearest), for
-// Instant::value: display and reports only, never a decision.
-inline double nearest_double(const mpq_class& q) {
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
-  double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  return d;
-}
+// The double nearest to an exact rational (rounded to nearest: scalar_traits<double>::from_rational, the one
+// conversion), for Instant::value: display and reports only, never a decision.
+inline double nearest_double(const mpq_class& q) { return scalar_traits<double>::from_rational(q); }
 
-// How many significant digits an instant's approx carries (issue 19): what
+// How many significant digits an instant's approx carries: what
 // the instant supports, no more. This is the one rule; every pipeline makes
 // its instants through bracketed_instant or rounded_instant below.
 //  - An instant with a bracket [lo, hi] (exact, certified): the digits the
@@ -160,7 +154,7 @@ inline Instant bracketed_instant(const mpq_class& mid, const mpq_class& lo, cons
 
 // A floating instant (no bracket) at t computed in T: approx to
 // precision_digits of T's precision, value the double nearest t.
-// Cost (issue 21): for T = double or a double with a running error bound
+// Cost: for T = double or a double with a running error bound
 // (its to_string prints the value with "%.17g"), the text already has the 17
 // significant digits precision_digits(53) asks for, and round_decimal gives it
 // back unchanged (checked over every power of two, its predecessor and 4

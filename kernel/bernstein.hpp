@@ -43,7 +43,7 @@ namespace eccd {
 template <class T>
 void de_casteljau_in_place(std::span<T> w, const T& t) {
   T s = T(1) - t;
-  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass
     running_error_loops::de_casteljau(w, s, t, nullptr);
     return;
   }
@@ -81,7 +81,7 @@ template <class T>
 void keep_right(std::span<T> c, const T& tau) {
   const int n = int(c.size()) - 1;
   T s = T(1) - tau;
-  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass
     running_error_loops::de_casteljau(c, s, tau, nullptr);
     return;
   }
@@ -97,7 +97,7 @@ void keep_left(std::span<T> c, const T& tau) {
   const int n = int(c.size()) - 1;
   T s = T(1) - tau;
   if constexpr (std::is_same_v<T,
-                               Bounded<double>>) {  // the guard's bound in the same pass (issue 30): split's left piece
+                               Bounded<double>>) {  // the guard's bound in the same pass: split's left piece
     thread_local std::vector<T> left;
     left.resize(c.size());
     running_error_loops::de_casteljau(c, s, tau, left.data());
@@ -113,7 +113,7 @@ void keep_left(std::span<T> c, const T& tau) {
     }
 }
 
-// Both pieces at once (issue 36: one de Casteljau triangle instead of two):
+// Both pieces at once (one de Casteljau triangle instead of two):
 // lo and hi (c.size() entries each) receive what keep_left and keep_right
 // would leave in a copy of c, with the same products and sums in the same
 // order (keep_right on hi, whose first entry after round r is lo's entry r),
@@ -171,7 +171,7 @@ Bern<T> to_bernstein(const Poly<T>& p, int n) {  // n >= degree(p)
   }
   for (int k = 0; k <= n; ++k) {
     const std::vector<T>& ck = binomial_row(k, like);
-    if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+    if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass
       r.b[k] =
           running_error_loops::sum_of_ratios(ck.data(), p.c.data(), cn.data(), std::min(k, p.degree()) + 1, factors);
       continue;
@@ -289,7 +289,7 @@ Bern<T> operator*(const Bern<T>& x, const Bern<T>& y) {
   for (int j = 0; j <= n; ++j) ys[j] = cn[j] * y.b[j];
   Bern<T> r;
   r.b.assign(m + n + 1, T(0));
-  if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass (issue 30)
+  if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass
     running_error_loops::convolve(std::span<const T>(xs), std::span<const T>(ys), std::span<T>(r.b));
   else
     for (int i = 0; i <= m; ++i)
@@ -334,7 +334,7 @@ std::pair<Bern<T>, Bern<T>> split(const Bern<T>& q, const T& tau) {
   left.b.resize(n + 1);
   left.b[0] = w[0];
   T s = T(1) - tau;
-  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass (issue 30)
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass
     running_error_loops::de_casteljau(std::span<T>(w), s, tau, left.b.data());
     return {std::move(left), std::move(right)};
   }

@@ -1,7 +1,7 @@
 #pragma once
 // Budget: the time a pipeline run may take, and how a run learns it is over.
 //
-// Statement. Every pipeline run terminates (issues 14 and 15): each method has
+// Statement. Every pipeline run terminates: each method has
 // its own work bounds (subdivision depth, shots, pieces), and on top of them
 // each run has a deadline. The deadline is set once, by whoever starts the run
 // (eccd::solve, the harness, certify, regress, report), with a

@@ -19,7 +19,7 @@
 //   j = 1: the double root -s10/s11;        j = 3: the quadruple root -s32/(3 s33);
 //   j = 2: a real root of s22 λ² + s21 λ + s20 is negative (signs of the
 //          coefficients and of s21² - 4 s22 s20).
-// "Both neighbouring cells separate" does not mean no touch (issue 3): every
+// "Both neighbouring cells separate" does not mean no touch: every
 // root is decided this way. A root that is not a touch takes the status of its
 // cells (which then must agree). Signs at t* come from the Policy: exact signs
 // at an algebraic number for the exact pipeline (exact/cd_disc_exact.hpp),

@@ -169,7 +169,7 @@ bool undecided_on_trouble(PipelineResult<T>& res, Policy& pol, const T& zero, co
 // Δ = (4 D E - P²) / 3, with D = g2² - 3 g3 g1, E = g1² - 3 g2 g0 and
 // P = 9 g3 g0 - g2 g1 (P and D as below): the same polynomial, from six
 // products of g's degree and two of twice it instead of four and seven of
-// higher degrees (issue 21: Δ's build was 8 % of the 2D degree-6 double
+// higher degrees (measured: Δ's build took 8 % of the 2D degree-6 double
 // pipeline; measured on the 2D cases of cases/generated, the coefficient
 // error against the exact Δ is the same to two digits).
 template <class Policy>
@@ -335,7 +335,7 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
   assemble_answer(seq, ans, [&](std::size_t k) {
     const T at = node_root[k] ? pol.value(*node_root[k]) : (k == 0 ? zero : one);
     if constexpr (std::is_same_v<T, mpq_class>)
-      ans.contact_points.push_back(contact_point_integer(A, B, g, at));  // the same point over the integers (issue 21)
+      ans.contact_points.push_back(contact_point_integer(A, B, g, at));  // the same point over the integers
     else
       ans.contact_points.push_back(contact_point(A, B, g, at));
   });

@@ -2,7 +2,7 @@
 // The characteristic polynomial f(λ;t) = det(λA(t) - B(t)) = sum_k g_k(t) λ^k.
 //
 // Statement. 003 section III eq. (1) (3x3, cubic in λ) and 002 section 3 /
-// 001 section 3 (4x4, quartic). Convention (design.md): det(λA - B); the
+// 001 section 3 (4x4, quartic). Convention (docs/architecture.md): det(λA - B); the
 // solids are separate iff f has two distinct negative roots, touching
 // externally iff a negative double root, overlapping iff no negative root.
 // (000 writes det(λA + B) and positive roots; not used here.)
@@ -31,8 +31,8 @@ namespace eccd {
 // rows into a set M of columns), and that partial sum depends only on M and
 // on which columns of M come from A. So all 2^H expansions run at once over
 // the 3^H states (column unused / from B / from A; ternary digit j for column
-// j): 208 ring products in 3D instead of 16 x 28 = 448 (issue 21: g_k over
-// heap-allocated Bernstein polynomials was a sixth of a 3D query in double).
+// j): 208 ring products in 3D instead of 16 x 28 = 448 (measured: g_k over
+// heap-allocated Bernstein polynomials took a sixth of a 3D query in double).
 // Every state receives the same terms, in the same order, as in ring_det on
 // C_S alone, and g_k sums the determinants in the same order as one ring_det
 // per S did, so the results are the same to the last bit (and the same

@@ -1,6 +1,6 @@
 #pragma once
 // The contact point and the common normal of two ellipses / ellipsoids that
-// touch externally (issue 17 point 4).
+// touch externally (reported with every contact instant: api/contact_points.hpp).
 //
 // Statement. At an external contact f(λ) = det(λA - B) has a negative double
 // root λ0 (003 Theorem 6 in 2D; 002 Theorem 1 in 3D), λ0·A - B has rank

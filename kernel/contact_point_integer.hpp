@@ -2,7 +2,7 @@
 // The contact point of Lemma 5 (003) in exact arithmetic over the integers:
 // the same point, digits and normal as contact_point<mpq_class>
 // (kernel/cd_disc.hpp), with one common denominator instead of a reduction to
-// lowest terms after every rational operation (issue 21: those gcds were a
+// lowest terms after every rational operation (measured: those gcds took a
 // quarter of the exact 2D pipeline).
 //
 // Statement. At the rational instant t = u/v (the root's bracket mid-point),

@@ -1,6 +1,6 @@
 #pragma once
 // Eigen with the workbench's floating scalars: fixed-size Eigen matrices of
-// double or Mpfr (issue 17 point 6: Eigen is the home of the floating linear
+// double or Mpfr (Eigen is the home of the floating linear
 // algebra of the separating planes and contact points).
 //
 // Statement. Eigen needs a NumTraits specialisation for a custom scalar type

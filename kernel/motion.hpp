@@ -7,7 +7,7 @@
 // 002 section 2). Instead of M^-1 we build a polynomial matrix N(t) with
 // M(t) N(t) = c(t) I, c(t) ≠ 0 on [0, 1]: then N^T Q N = c^2 M^-T Q M^-1 is a
 // positive multiple of A(t), which changes no root of f(λ;t) = det(λA - B)
-// (design.md: "use the adjugate").
+// (docs/architecture.md, "Use the adjugate").
 //   static:    N = I.
 //   matrix:    M = [[L, v], [0, w]]  ->  N = adj(M) = [[w adj L, -adj(L) v], [0, det L]].
 //   kinematic: 003 eq. (3) and its inverse as printed after it (c = (d2²+d3²)²).

@@ -22,8 +22,8 @@
 //    rounded to double, and the bracket x_d -+ 2^-40 |x_d| where p's signs in
 //    Mpfr confirm it). Both keep the sign-change bracket, so the result is the
 //    same root to within 2^-(bits - 9) relative; Newton needs a handful
-//    of evaluations where bisection needs about one per bit (issue 21: the
-//    certified 3D contact points spent half the query bisecting to 256 bits).
+//    of evaluations where bisection needs about one per bit (measured: the
+//    certified 3D contact points spent half the query when bisecting to 256 bits).
 //    A root where p has no
 //    sign change (an even multiplicity) is found only when p is exactly 0 at
 //    a critical point; the callers do not rely on those (the contact point

@@ -3,8 +3,8 @@
 // (CD-DISC in 2D, kernel/cd_disc.hpp; the projection CCD in 3D,
 // kernel/ccd_projection.hpp), as a C++20 concept.
 //
-// Statement. The pipelines are written once (design.md: "only the places
-// where the mathematics really differs branch"); a policy P for the scalar
+// Statement. The pipelines are written once (docs/architecture.md, "Only the
+// places that differ"); a policy P for the scalar
 // type T supplies those places:
 //   P::Rep                        how a projection polynomial is held (Poly<Rational> exact, Bern<T> rounded or
 //   interval) P::Root                       a root of one in [0, 1] (a bracket, an approximation) build(g, formula)
@@ -24,13 +24,13 @@
 // the functions mean is the prose above and the policies' headers.
 //
 // Optional hooks (namespace policy_hooks): a policy that has them uses them,
-// the others get the neutral default. Rounded policies have them (issue 14):
+// the others get the neutral default. Rounded policies have them (termination, honesty):
 //   normalise_g(g) -> bool        scale g_0..g_N by one power of two (exact in binary; false if not finite)
 //   trouble                       a std::string member: "" or why nothing can be decided (a non-finite value);
 //                                 the pipeline then answers undecided on [0, 1] with it
 //   notes                         a std::vector<std::string> member: why parts were left undecided
 //   Root::unresolved              a bool member: the root's place is unknown (work bound, deadline)
-// The certified policy has one more (issue 18 point 2):
+// The certified policy has one more (local decisions, certified/ladder.hpp):
 //   settle_status(t, s) -> Status the static test's status s at the instant t, uncertain in the policy's
 //                                 arithmetic, decided another way (exactly at a rational t), or s
 // Requirements on T: scalar_traits<T>.

@@ -3,7 +3,7 @@
 //
 // Statement. Motions M(t), their polynomial inverses N(t) (M N = c(t) I) and
 // the moving quadrics A(t) = N(t)^T Q N(t) are polynomial matrices
-// (design.md; 003 section VI-A; 002 section 2). Determinants are expanded by
+// (docs/architecture.md; 003 section VI-A; 002 section 2). Determinants are expanded by
 // Laplace along the first row: N is 3 or 4.
 // Requirements on T: ring operations of Poly<T>.
 #include "kernel/polynomial.hpp"

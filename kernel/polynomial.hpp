@@ -55,7 +55,7 @@ struct Poly {
                   std::is_same_v<U, mpq_class>)  // exact: integer Horner (number/rational_poly_eval.hpp)
       return rational_poly_eval(c, t);
     if constexpr (std::is_same_v<T, Bounded<double>> &&
-                  std::is_same_v<U, Bounded<double>>)  // the bound in the same pass (issue 30)
+                  std::is_same_v<U, Bounded<double>>)  // the bound in the same pass
       return running_error_loops::horner(std::span<const T>(c), t);
     U r = U(c.back());
     for (int i = int(c.size()) - 2; i >= 0; --i) {
@@ -112,7 +112,7 @@ struct Poly {
       }
     }
     r.c.assign(a.c.size() + b.c.size() - 1, T(0));
-    if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass (issue 30)
+    if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass
       running_error_loops::convolve(std::span<const T>(a.c), std::span<const T>(b.c), std::span<T>(r.c));
     else
       for (std::size_t i = 0; i < a.c.size(); ++i)

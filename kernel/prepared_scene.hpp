@@ -13,12 +13,12 @@
 //     003 Table I (e.g. Δ of degree 96 for 003 Example 2, not 192);
 //   - Q and N are scaled by positive rationals to primitive integer entries.
 // Both steps multiply A(t) by a positive function and change no root of
-// f(λ;t) (design.md). Every pipeline (double, MPFR, exact) then starts from
+// f(λ;t) (docs/architecture.md, "Use the adjugate"). Every pipeline (double, MPFR, exact) then starts from
 // these same coefficients, rounded to its own arithmetic; all later work
 // (A(t), f, Δ, roots, decisions) is done in that arithmetic, which is what
 // the harness measures. Requirements on T: scalar_traits<T>::from_rational.
 //
-// Input modes (issue 14). This exact preparation is the start of the exact
+// Input modes (api/options.hpp, InputMode). This exact preparation is the start of the exact
 // and certified pipelines, and of the floating ones in input mode `prepared`.
 // No user's program works this way, so the floating pipelines' default is
 // `rounded` (floating/rounded_input.hpp): each number of the scene rounded to
@@ -178,9 +178,8 @@ inline void refuse_independent(const Scene& s, const std::string& who = "this pi
   if (s.independent)
     throw IndependentMotionsRefused(
         "the scene has independent motions (\"parameters\": \"independent\": A(s), B(t)); " + who +
-        " treats one shared t; independent scenes are answered by `eccd solve` only (--arith exact or certified: "
-        "proved "
-        "answers; double or mpfr:BITS)");
+        " treats one shared t; independent scenes are solved by eccd::solve (`eccd solve`, `regress`, `report`, "
+        "`plot`; --arith exact or certified: proved answers; double or mpfr:BITS) and certified by `eccd certify`");
 }
 
 // Throws NotRationalMotion for a motion that has no polynomial form (cycloidal),

@@ -3,7 +3,7 @@
 //
 // Statement. The solid X^T Q X <= 0 (object frame) moved by M(t) is
 // X^T A(t) X <= 0 with A(t) = M(t)^-T Q M(t)^-1 (003 VI-A; 002 section 2;
-// design.md). With N(t) from kernel/motion.hpp (M N = c I) we use
+// docs/architecture.md). With N(t) from kernel/motion.hpp (M N = c I) we use
 // N^T Q N = c^2 A(t): the positive factor c(t)^2 changes no sign and no root
 // of f(λ;t). Requirements on T: ring operations.
 #include "kernel/poly_matrix.hpp"

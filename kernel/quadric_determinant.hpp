@@ -2,7 +2,7 @@
 // quadric_det_at: det A(t) = det(N(t)^T Q N(t)) of a moving quadric at one
 // rational instant t, exactly, in integer arithmetic (the pencil balancing of
 // kernel/prepared_scene.hpp asks for it at t = 0, 1/2, 1; forming A(t) in
-// rationals was a quarter of a 2D certified run, issue 18).
+// rationals instead costs a quarter of a 2D certified run).
 //
 // Statement. det(N^T Q N) = det Q · (det N)^2 (multiplicativity of the
 // determinant). With t = a/b (b > 0), d the largest degree of N's entries and

@@ -1,6 +1,6 @@
 #pragma once
 // The static test of two ellipsoids from two poses in plain double with
-// a-priori error bounds (issue 21): a straight-line program with no bound
+// a-priori error bounds: a straight-line program with no bound
 // object inside it, its magnitude run and a depth fixed at compile time
 // (number/static_bound.hpp), then the sign rule. It says `uncertain` where a
 // bound cannot decide (touching, near-touching, symmetric shapes, inputs
@@ -275,7 +275,7 @@ template <bool kLanes, class D = double, class Leaf>
 }  // namespace static_filter_detail
 
 // The status a filter code stands for (1 separate, 2 overlapping, anything else
-// uncertain: the filter did not decide); api/static_test.cpp reads the batch's codes with it.
+// uncertain: the filter did not decide); api/static_status.cpp reads the batch's codes with it.
 inline Status static_filter_status(double c) {
   return c == 1.0 ? Status::separate : c == 2.0 ? Status::overlapping : Status::uncertain;
 }

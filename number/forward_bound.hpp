@@ -5,7 +5,7 @@
 // plain double (no branch, no fabs per operation: it vectorises), instead of
 // the running error bound of Bounded<double> (number/running_error.hpp).
 //
-// Statement (issue 21; Higham, "Accuracy and Stability of Numerical
+// Statement (Higham, "Accuracy and Stability of Numerical
 // Algorithms", 2nd ed., Lemma 3.1 and section 3.1; the semi-static filters
 // of Fortune & Van Wyk and CGAL). Each value carries
 //   v  the double computed by exactly the plain-double operations,

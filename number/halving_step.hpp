@@ -21,7 +21,7 @@
 // order, so the bound is also bit for bit the written-out one (its reads are
 // Bounded's, inlined: a power of two built from its bits, not looked up). A
 // sign decided on a net subdivided this way is therefore decided on the same
-// value and bound as before; only the work changes. Where the shortcut's conditions do
+// value and bound as with the written-out operations; only the work changes. Where the shortcut's conditions do
 // not hold (a coefficient or the constants of another precision, a 1/2 that
 // is not exactly 1/2), the step falls back to the written-out operations.
 // Requirements on T: the ring operations and scalar_traits<T>::from_rational;

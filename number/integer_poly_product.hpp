@@ -1,7 +1,7 @@
 #pragma once
 // Exact products of integer and rational polynomials by Kronecker
 // substitution: one big GMP integer product instead of n·m coefficient
-// products (issue 21: the exact pipeline spends most of its time in
+// products (measured: the exact pipeline spends most of its time in
 // products of degree-100+ polynomials with coefficients of hundreds of bits).
 //
 // Statement (Kronecker substitution; e.g. von zur Gathen & Gerhard, Modern

@@ -17,8 +17,8 @@
 // (MPFR), so the scene's exact numbers are enclosed from the start. Division
 // by an interval that contains 0 gives (-inf, inf). The sign of an interval is
 // certain when it lies on one side of 0 (or is exactly [0, 0]); otherwise it
-// is Sign::uncertain and the caller must not decide (design.md: nothing turns
-// "uncertain" into a sign silently). Comparisons `<`, `>` hold only when
+// is Sign::uncertain and the caller must not decide (docs/architecture.md,
+// "Uncertain is a fourth sign"). Comparisons `<`, `>` hold only when
 // certain for every pair of values.
 // Requirements: IEEE double with round-to-nearest (the default); no
 // -ffast-math.
@@ -115,8 +115,8 @@ struct Interval {
 
 // Interval from an exact rational, rounded outwards: [RNDD(q), RNDU(q)], the
 // tightest enclosure by doubles (a point when q is a double).
-// Fast paths, which give exactly these two doubles (issue 18: the MPFR
-// conversion was most of the cost of entering the interval rung):
+// Fast paths, which give exactly these two doubles (measured: the MPFR
+// conversion is otherwise most of the cost of entering the interval rung):
 //  - q an integer of at most 1000 bits: mpz_get_d truncates towards 0 (GMP
 //    manual), so d = RZ(q); mpz_cmp_d(q, d) == 0 says d = q exactly (a
 //    point); otherwise q lies strictly between d and the next double away

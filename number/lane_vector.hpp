@@ -1,5 +1,5 @@
 #pragma once
-// Lane vectors for the batched static test (issue 36): W doubles side by side
+// Lane vectors for the batched static test: W doubles side by side
 // in one register of GCC's portable vector extension (4 lanes: AVX2's ymm,
 // 8: AVX-512's zmm, 2: SSE2's xmm), with the operations the static filter's
 // straight-line program uses (kernel/static_filter3d.hpp) lane by lane.
@@ -13,7 +13,7 @@
 // (a NaN compares false, as in scalar code).
 // Why not the compiler's vectoriser: GCC 12 vectorises the lane loop with
 // AVX-512's mask registers only ("control flow in loop" under -mavx2), so the
-// batch had no AVX2 path (issue 36: slower than single pairs without
+// batch would have no AVX2 path (measured: slower than single pairs without
 // AVX-512). No paper: an implementation device (docs/references.md lists the
 // static test's sources).
 // Requirements: GCC or Clang (vector_size extension); W a power of two.

@@ -12,7 +12,7 @@
 // scales its own values so that the largest has binary exponent 0; a value
 // that is NaN or ±Inf at any stage makes the stage report it (the pipeline
 // then answers "undecided" with the reason, never a guess). No paper section:
-// this is what issue 14 asks of a floating implementation.
+// termination and honesty are what a floating implementation owes its caller.
 // Requirements on T: double or Mpfr (overloads below); exact arithmetics
 // never call this.
 #include "number/double_traits.hpp"

@@ -2,7 +2,7 @@
 // rational_convolution: the product of two polynomials with rational
 // coefficients (coefficient lists, low to high) over common denominators:
 // one integer convolution instead of a rational multiply and a rational add
-// (each with its gcds) per pair of coefficients (issue 18: the exact
+// (each with its gcds) per pair of coefficients (the exact
 // preparation of a scene, kernel/prepared_scene.hpp, and the exact pipeline
 // spend their polynomial products here).
 //
@@ -12,7 +12,7 @@
 // an identity of rationals; mpq_class canonicalises the quotient, so the
 // result is the same rational, in the same canonical form, as the
 // coefficient-by-coefficient product. Trailing zero coefficients are the
-// caller's to trim (as before).
+// caller's to trim, as in the coefficient-by-coefficient product.
 // Requirements: mpq_class coefficients (GMP, canonical), both lists non-empty.
 #include <gmpxx.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The exact value of a rational polynomial at a rational point by Horner's
 // scheme over the integers, with one reduction to lowest terms at the end
-// (issue 21: Horner in mpq arithmetic reduces every partial sum by a gcd of
+// (Horner in mpq arithmetic reduces every partial sum by a gcd of
 // numbers that grow to n times the point's size).
 //
 // Statement. For p(t) = Σ c_i t^i with c_i = C_i / d (d the lcm of the

@@ -2,7 +2,7 @@
 // Bounded<T>: a floating value with a running a-priori bound on its absolute
 // error, so that a floating pipeline knows which signs it cannot trust.
 //
-// Statement (issue 14, point 4; Higham, "Accuracy and Stability of Numerical
+// Statement (Higham, "Accuracy and Stability of Numerical
 // Algorithms", 2nd ed., sections 2.2 and 3.1, the standard model
 // fl(a op b) = (a op b)(1 + δ), |δ| <= u). The value part is computed by
 // exactly the same T operations as plain T, in the same order, so a pipeline
@@ -28,9 +28,9 @@
 // one unit, read from the leading limb (>= |x|, no conversion call), and the
 // rounding of a result x as half a unit in x's last place, from x's exponent
 // alone (<= u|x|: the bound is both cheaper and no larger than with u|x|).
-// Requirements on T: double or Mpfr. Cost: see the report of issue 14; powers of
+// Requirements on T: double or Mpfr. Cost: see reports/performance.md; powers of
 // two of a long double come from a table (pow2): std::ldexp of a long double was
-// a third of an MPFR independent run (issue 33, docs/independent-motions.md).
+// a third of an MPFR independent run (measured: docs/independent-motions.md).
 #include "number/double_traits.hpp"
 #include "number/mpfr_real.hpp"
 #include "number/pow2_scaling.hpp"

@@ -3,7 +3,7 @@
 // triangle of Bounded<double> values (number/running_error.hpp) whose error
 // bounds are accumulated beside the plain-double values in the same loop,
 // with the rounding of the bound's own arithmetic covered once per output
-// instead of once per operation (issue 30 point 5: the guard's cost).
+// instead of once per operation (the guard's cost, reports/performance.md).
 //
 // Statement (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd
 // ed., sections 2.2, 3.1 and 5.1: the running error bound of Horner's rule,

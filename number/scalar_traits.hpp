@@ -1,11 +1,11 @@
 #pragma once
 // scalar_traits<T>: what the templated kernel needs to know about an arithmetic.
 //
-// Statement. Every stage of the workbench is a function template of the scalar
-// type T. The three arithmetics are `double` (number/double_traits.hpp),
-// `Mpfr` with a per-value precision (number/mpfr_real.hpp) and exact GMP
-// rationals `mpq_class` (number/rational_traits.hpp). Only where the
-// mathematics really differs does code branch, on `scalar_traits<T>::is_exact`.
+// Statement. Every stage of the workbench is a function template of the scalar type T. Seven types specialise
+// scalar_traits: the point types `double` (number/double_traits.hpp), `Mpfr` with a per-value precision
+// (number/mpfr_real.hpp) and exact GMP rationals `mpq_class` (number/rational_traits.hpp); the enclosures `Interval`
+// (number/interval.hpp), `MpfiInterval` (number/mpfi_interval.hpp), `Bounded<T>` (number/running_error.hpp) and
+// `ForwardBound` (number/forward_bound.hpp). Code branches only where the mathematics differs, on `is_exact`.
 //
 // Each specialisation provides
 //   static constexpr bool is_exact;
@@ -18,7 +18,7 @@
 //
 // Signs are three-valued where the arithmetic is rounded: a floating pipeline
 // that can bound its error may return Sign::uncertain; nothing turns
-// "uncertain" into a sign silently (design.md, "Conventions").
+// "uncertain" into a sign silently (docs/architecture.md, "Uncertain is a fourth sign").
 //
 // Requirements on T: a commutative ring with +, -, *, unary -, comparison with
 // T, construction from small int (T(3)); division only where a header says so.

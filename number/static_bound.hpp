@@ -7,7 +7,7 @@
 //   StaticDepth   the rounding depth d, at compile time (constexpr): leaf
 //                 d = 0 (a given double), a ± b: max(da, db) + 1, a * b:
 //                 da + db + 1, an exact constant (int): 0, -a: da.
-// so no bound object travels through the program (issue 21: the batched
+// so no bound object travels through the program (so the batched
 // static test's lane loop is plain double arrays and vectorises).
 //
 // Statement (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd

@@ -89,7 +89,7 @@ def main():
                      f"{sizes.get('T1_CERT_FRAMES', '?')} in certified (paper: 10 000); Table 2 {sizes.get('T2_FRAMES', '?')} "
                      f"frames; boxers {sizes.get('BOX_FRAMES', '?')} frames in double, {sizes.get('BOX_CERT_FRAMES', '?')} in "
                      "certified (paper: 1000). `bash scripts/run-animation-report.sh` with its default sizes (FULL=1) runs the full sizes.")
-    md = ["# Paper reproductions on animations (issue 17 point 5)", "",
+    md = ["# Paper reproductions on animations (000 Tables 1-2, 001 section 5)", "",
           f"Written by `bash scripts/run-animation-report.sh` ({a.sizes}; {a.seconds:.0f} s on this machine, 2 cores).",
           size_text, "",
           "The animation files are `cases/animations/make_repro.py`'s (seeded, exact decimals); the raw `eccd animate --json`",

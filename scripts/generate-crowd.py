@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a generated animation of many ellipsoids (issue 36 point 3: scale).
+"""Writes a generated animation of many ellipsoids (to measure `eccd animate` at scale).
 
     generate-crowd.py --bodies N --frames F --seed S [--box L] OUT
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 36 point 3: eccd animate at scale, per-pose and continuous modes.
+"""Measures eccd animate at scale, per-pose and continuous modes.
 
     measure-scale.py [--eccd build/eccd] [--bodies 1000] [--frames 100] [--seed 36]
                      [--modes poses,continuous] [--arith double] [--jobs 1,2] [--keep DIR]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The three paper reproductions on animations (issue 17 point 5), into
+# The three paper reproductions on animations (000 Tables 1-2, 001 section 5), into
 # reports/animation/: report.md (each figure next to the paper's) and
 # summary.json (what it was made from). The animation files and the full
 # `eccd animate --json` answers go to reports/animation/generated/ (not
@@ -10,7 +10,7 @@
 # Sizes (environment): T1_FRAMES (default 10000), T2_FRAMES (default 629: one orbit), BOX_FRAMES (1000), and the
 # certified runs' T1_CERT_FRAMES and BOX_CERT_FRAMES. By default (FULL=1) every run has the papers' sizes, certified
 # too (T1_CERT_FRAMES=T1_FRAMES, BOX_CERT_FRAMES=BOX_FRAMES unless set): 149 s on 2 cores since 3D certified mode
-# decides by the interval Bezier proof (issue 18; before it, about 40 min). FULL=0: certified on 1000 Table 1 frames
+# decides by the interval Bezier proof (without it, about 40 min). FULL=0: certified on 1000 Table 1 frames
 # and 200 boxers frames only (a quicker trial). report.md states which sizes were run.
 # GJK_TIGHT (default 1e-12): FCL's tight gjk_tolerance for Table 2 (`eccd fcl --gjk-tolerance`), next to
 # FCL's default (1e-6).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The performance benchmark (issue 6): installs the Debian packages it needs
+# The performance benchmark: installs the Debian packages it needs
 # (only those missing, as scripts/bootstrap.sh does for the main build),
 # configures and builds the eccd_bench target (and the eccd program, for the
 # certificates' checking/proving figures) in ./build-bench (Release; the

@@ -35,7 +35,7 @@ struct Solution {
   std::string basis;                      // "power" | "bernstein" | "scaled-bernstein" | "exact"
   std::string method;                     // "cd-disc" (2D) | "projection" | "bezier" | "sampling:N" | "marching:N"
   Variant variant = Variant::answer;
-  bool certified = false;  // every instant carries a proved rational bracket
+  bool certified = false;  // every instant carries a proved rational bracket (any arithmetic; docs/architecture.md)
   bool sampled = false;    // a sampled baseline: nothing is claimed between its instants
   // The face of a floating run (api/options.hpp Guard): "none" (the algorithm
   // as published, in plain T) or "bound" (guarded, Bounded<T>); "" for exact

@@ -4,7 +4,7 @@ from .targets import RATIO_TARGETS, SET_TARGETS
 from .tools import answer_text, fmt_ratio, fmt_time, md_escape
 
 
-# Issue 17's benchmarks (animations), each a ratio to its group's baseline in
+# The animation benchmarks, each a ratio to its group's baseline in
 # the same process: (a) the boxers per frame (group animate-boxers, one
 # iteration = "frames" frames in the row's result), (b) the plane check per
 # pair-frame (plane-check), (c) the static test from two poses
@@ -15,15 +15,15 @@ ANIMATION_GROUPS = [
     dict(group="plane-check", what="(b) the kept plane's check over one frame, per pair-frame (000 section 4)",
          per=None, anchor="000 Table 1: planes save the continuous test in most separate frames (µs per frame with and without)"),
     dict(group="static-certified-2d", what="(c) the static test from two poses, 2D, per pair", per=None,
-         anchor="001: under 1 µs for the whole static procedure (3 GHz Pentium IV); issue 18: certified at most 1.5x double"),
+         anchor="001: under 1 µs for the whole static procedure (3 GHz Pentium IV); the certified static test's cost target: at most 1.5x double"),
     dict(group="static-certified-3d", what="(c) the static test from two poses, 3D, per pair", per=None,
-         anchor="001: under 1 µs for the whole static procedure (3 GHz Pentium IV); issue 18: certified at most 1.5x double"),
+         anchor="001: under 1 µs for the whole static procedure (3 GHz Pentium IV); the certified static test's cost target: at most 1.5x double"),
 ]
 
 
 def write_animation_section(w, summ):
     groups = {g["id"]: g for g in summ["groups"]}
-    w("## Animations (issue 17)")
+    w("## Animations")
     w("")
     w("Each figure is a row's median CPU time and its ratio to the baseline row of its group, measured in the same "
       "process (the groups' full tables are under *Tables*). For the boxers one iteration animates all the frames of "
@@ -88,11 +88,11 @@ FCL_FRAME_GROUPS = [
 
 
 def write_fcl_section(w, summ):
-    """Issue 21: eccd and FCL side by side, from the groups fcl-static3d and fcl-table2-*."""
+    """eccd and FCL side by side, from the groups fcl-static3d and fcl-table2-*."""
     groups = {g["id"]: g for g in summ["groups"]}
-    w("## Side by side with FCL (issue 21)")
+    w("## Side by side with FCL")
     w("")
-    w("Anchor (issue 21, measured side by side before it): eccd's double static test from two poses 144 ns against "
+    w("Anchor (the figures that set the FCL comparison's targets, measured side by side): eccd's double static test from two poses 144 ns against "
       "549 ns for FCL's fastest ellipsoid test; one continuous query of two linearly translating ellipsoids 0.39 ms in "
       "FCL (its naive continuous collision samples the motion 1000 times). FCL 0.7 (Debian libfcl-dev) runs in the "
       "same process as eccd, on the same inputs; every figure is a median (CPU) and every ratio is of two rows of "
@@ -127,7 +127,7 @@ def write_fcl_section(w, summ):
         if fcl_best and base:
             w(f"FCL's fastest here: `{fcl_best['label']}`, {fmt_time(fcl_best['median_cpu_ns'])} per pair against "
               f"{fmt_time(base['median_cpu_ns'])} for eccd's double static test: FCL / eccd = "
-              f"×{fcl_best['median_cpu_ns'] / base['median_cpu_ns']:.2f} (issue 21's anchor: 549 / 144 = ×3.81).")
+              f"×{fcl_best['median_cpu_ns'] / base['median_cpu_ns']:.2f} (the anchor: 549 / 144 = ×3.81).")
             w("")
     g = groups.get("ccd3d-deg1-translation")
     fr = next((r for r in g["rows"] if r["label"].startswith("FCL") and "median_cpu_ns" in r), None) if g else None
@@ -142,7 +142,7 @@ def write_fcl_section(w, summ):
           + (f", certified {fmt_time(cert['median_cpu_ns'])} (FCL / eccd certified ×{fmt_ratio(fr['median_cpu_ns'] / cert['median_cpu_ns'])[1:]})" if cert else "")
           + ". FCL stops at its first colliding sample"
           + (f" (here t = {fr['result']['first_contact']})" if isinstance(fr.get("result"), dict) and fr["result"].get("first_contact") else "")
-          + ", so its cost depends on where the contact lies. Issue 21's anchor: FCL 0.39 ms.")
+          + ", so its cost depends on where the contact lies. The anchor: FCL 0.39 ms.")
         w("")
     w("### Per frame of paper 000's Table 2 set-up")
     w("")

@@ -2,14 +2,14 @@
 rows (RATIO_TARGETS), and the independent scenes' limits, each with its anchor."""
 
 
-# The targets (medians on this machine, measured by the benchmark): issue 21's
-# limits, which replaced issue 6's (issue 6's figure stays in the anchor where
-# it is a useful comparison). A row added for the certified mode can get a
+# The targets (medians on this machine, measured by the benchmark): the speed
+# limits each row must meet, each with its anchor (the papers' figures and the
+# measurements that make the limit meaningful). A row added for the certified mode can get a
 # target here. Optional keys: phases (a group whose steps are shown when the
 # target is missed), steps (rows of that group to show), also (related rows),
 # per (the row's median is for several items: divide by this number, or by the
 # result field of that name, e.g. "frames"; the verdict is on the quotient).
-HAND = "Call-graph profile by hand (`perf record --call-graph dwarf` of the row alone, 2026-11-26, revision 8b13203, after this stop's issue-21 branches were merged; inclusive shares): "
+HAND = "Call-graph profile by hand (`perf record --call-graph dwarf` of the row alone, 2026-11-26, revision 8b13203; inclusive shares): "
 
 TARGETS = [
     # The static test from two poses through the API (eccd::static_status, static_status_batch), FCL beside
@@ -41,14 +41,14 @@ TARGETS = [
         steps=["static3d/Appendix A + Sturm"],
         also=["speed-static/static_status_batch, 64 pairs, none"],
     ),
-    # Issue 30: the 2D degree-6 and paper 002 targets time eccd::solve from the scene (the product-* groups: what
+    # The 2D degree-6 and paper 002 targets time eccd::solve from the scene (the product-* groups: what
     # `eccd solve` runs, preparation and contact points included), named by face and input mode; the pipeline rows
     # from the prepared pair (ccd2d-*, ccd3d-*) stay beside them as phases.
     dict(
         name="2D, motion degree 6 (Δ of degree 144), all external contacts, double guarded, rounded input (eccd::solve, the default of `eccd solve --arith double`)",
         key="product-2d-deg6-v3/double guarded, rounded input",
         limit_ns=50e3,
-        anchor="issue 21: at most 50 µs (issue 6: 0.5 ms); 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel); under 1 ms for Variant 1, 5 ms for Variant 2",
+        anchor="speed target: at most 50 µs; 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel); under 1 ms for Variant 1, 5 ms for Variant 2",
         phases="phases-2d-deg6-double-v3",
         also=["product-2d-deg6-v3/double as published, rounded input", "product-2d-deg6-v3/double guarded, prepared input",
               "product-2d-deg6-v3/double as published, prepared input", "ccd2d-deg6-v3/double",
@@ -58,7 +58,7 @@ TARGETS = [
         name="2D, motion degree 6 (Δ of degree 144), all external contacts, double as published, rounded input (eccd::solve --guard none)",
         key="product-2d-deg6-v3/double as published, rounded input",
         limit_ns=50e3,
-        anchor="issue 21: at most 50 µs; 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel)",
+        anchor="speed target: at most 50 µs; 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel)",
         phases="phases-2d-deg6-double-v3",
         also=["product-2d-deg6-v3/double as published, prepared input"],
     ),
@@ -66,7 +66,7 @@ TARGETS = [
         name="2D, motion degree 6, exact certified answer (eccd::solve --arith exact, full answer)",
         key="product-2d-deg6-v3/exact v0 (full answer)",
         limit_ns=5e6,
-        anchor="issue 21: at most 5 ms (issue 6: 50 ms); no paper measures exact arithmetic; 003's double figure (7 ms) for scale",
+        anchor="speed target: at most 5 ms; no paper measures exact arithmetic; 003's double figure (7 ms) for scale",
         phases="phases-2d-deg6-exact-v0",
         also=["product-2d-deg6-v3/exact", "ccd2d-deg6-v0/exact", "ccd2d-deg6-v3/exact", "ccd2d-deg6-free/exact v0"],
     ),
@@ -86,7 +86,7 @@ TARGETS = [
         name="3D, paper 002's example, all collision intervals, double as published, rounded input (eccd::solve --guard none)",
         key="product-paper002/double as published, rounded input",
         limit_ns=0.3e6,
-        anchor="issue 21: at most 0.3 ms; 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV)",
+        anchor="speed target: at most 0.3 ms; 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV)",
         phases="phases-paper002-double-bezier",
         also=["product-paper002/double as published, prepared input"],
     ),
@@ -94,7 +94,7 @@ TARGETS = [
         name="3D, paper 002's example, exact certified answer (eccd::solve --arith exact from the scene file)",
         key="speed-paper002/eccd::solve exact",
         limit_ns=20e6,
-        anchor="at most 20 ms from the scene file (it was about 39 ms by `eccd solve --json`'s time_ms; issue 21 asked 25 ms); 002: 4.7 s for a degree-4 pair in double (approximate zero set, no certificate)",
+        anchor="at most 20 ms from the scene file (it was about 39 ms by `eccd solve --json`'s time_ms); 002: 4.7 s for a degree-4 pair in double (approximate zero set, no certificate)",
         phases="phases-paper002-exact",
         also=["product-paper002/exact", "ccd3d-paper002/exact"],
     ),
@@ -108,10 +108,10 @@ TARGETS = [
         also=["speed-deg1/FCL continuous, 1000 samples", "speed-deg1/eccd::solve certified", "ccd3d-deg1-translation/double solve (API)"],
     ),
     dict(
-        name="3D continuous query, both ellipsoids translating linearly (degree 1), certified (issue 21)",
+        name="3D continuous query, both ellipsoids translating linearly (degree 1), certified",
         key="ccd3d-deg1-translation/certified solve (API)",
         limit_ns=150e3,
-        anchor="issue 21: at most 150 µs (3x the double limit); FCL's continuous test (1000 samples, no certificate) 0.39 ms",
+        anchor="speed target: at most 150 µs (3x the double limit); FCL's continuous test (1000 samples, no certificate) 0.39 ms",
         phases="ccd3d-deg1-translation",
         steps=["ccd3d-deg1-translation/certified ladder only (run_certified)"],
         note=HAND + "the interval Bézier proof (`run_certified` → `prove_bezier`) 39 % (`Engine::prove_end` 13 %, "
@@ -158,7 +158,7 @@ TARGETS = [
         name="The kept plane's check over one frame of 000 Table 1's pair, double, per pair-frame",
         key="speed-frame/Table 1 pair-frame, kept-plane check from prepared poses",
         limit_ns=2e3,
-        anchor="at most 2 µs per pair-frame (000 section 4: a few dot products per frame; it was 20 µs in the animation, 88 µs through plane_separates_on_frame, which `eccd animate` now calls only where the interval check from prepared poses says unknown)",
+        anchor="at most 2 µs per pair-frame (000 section 4: a few dot products per frame; it was 20 µs in the animation, 88 µs through plane_separates_on_frame, which `eccd animate` calls only where the interval check from prepared poses says unknown)",
         phases=None,
         also=["speed-frame/Table 1 pair-frame, kept-plane check double", "speed-frame/Table 1 pair-frame, eccd::solve double (baseline)",
               "plane-check/continuous test, double (baseline)"],
@@ -185,49 +185,49 @@ TARGETS = [
 SET_TARGETS = [
     dict(name="Certified mode, degree-4 2D generated set: median cost against double",
          group="certified-set-2d-deg4", limit_ratio=2.0,
-         anchor="issue 18: in 2D the median certified / double stays at most 2x (issue 6 asked 3x: the approach of CGAL's filtered predicates)"),
+         anchor="the certified mode's cost target: in 2D the median certified / double at most 2x (the approach of CGAL's filtered predicates)"),
     dict(name="Certified mode, degree-4 3D generated set: median cost against double",
          group="certified-set-3d-deg4", limit_ratio=3.0,
-         anchor="issue 18: in 3D the median certified / double at most 3x (it was 66x before the interval Bezier proof)"),
-    # Issue 18: the ladder's cost guarantee, certified / exact (base "exact"); the table adds certified / (exact +
+         anchor="the certified mode's cost target: in 3D the median certified / double at most 3x (66x without the interval Bezier proof)"),
+    # The ladder's cost guarantee, certified / exact (base "exact"); the table adds certified / (exact +
     # 2 x the interval rung), the bound of certified/ladder.hpp ("Cost guarantee"), at most 1 up to a constant.
     dict(name="Certified ladder against exact on short overlaps, near misses and grazes: median cost",
          group="certified-cost", limit_ratio=2.0, base="exact",
-         anchor="issue 18: the certified ladder never costs much more than exact (guarantee: exact + 2 x the interval rung + c)"),
+         anchor="the ladder's cost guarantee: the certified ladder never costs much more than exact (guarantee: exact + 2 x the interval rung + c)"),
 ]
 
 
 # Targets on the ratio of one row to another of the same group (medians, same process).
 RATIO_TARGETS = [
-    # Issue 30: the guard's cost, guarded over as published, both through eccd::solve from the scene (rounded input).
+    # The guard's cost, guarded over as published, both through eccd::solve from the scene (rounded input).
     dict(name="The guard's cost on the 2D degree-6 scene (Variant 3): double guarded over double as published, rounded input",
          key="product-2d-deg6-v3/double guarded, rounded input",
          base="product-2d-deg6-v3/double as published, rounded input", limit_ratio=1.5,
-         anchor="issue 30: guarded / as published at most ×1.5 (median); today (2026-11-28, a --eccd_quick run of the "
-                "product rows on a loaded machine, CPU medians): 227 µs / 91 µs = ×2.5; issue 14 measured ×3.5–×20 "
+         anchor="the guard's cost target: guarded / as published at most ×1.5 (median); measured 2026-11-28 (a --eccd_quick run of the "
+                "product rows on a loaded machine, CPU medians): 227 µs / 91 µs = ×2.5; a bound updated at every operation measured ×3.5–×20 "
                 "over plain double on the pipeline rows from the prepared pair"),
     dict(name="The guard's cost on paper 002's example: double guarded over double as published, rounded input",
          key="product-paper002/double guarded, rounded input",
          base="product-paper002/double as published, rounded input", limit_ratio=1.5,
-         anchor="issue 30: guarded / as published at most ×1.5 (median); today (2026-11-28, a --eccd_quick run on a "
+         anchor="the guard's cost target: guarded / as published at most ×1.5 (median); measured 2026-11-28 (a --eccd_quick run on a "
                 "loaded machine, CPU medians): 2.16 ms / 0.68 ms = ×3.2"),
-    dict(name="Certified mode on paper 002's example against double (issue 21)",
+    dict(name="Certified mode on paper 002's example against double",
          key="ccd3d-paper002/certified", base="ccd3d-paper002/double bezier", limit_ratio=3.0,
-         anchor="issue 21: certified at most 3x double on paper 002's example (both from the prepared pair: "
+         anchor="the certified mode's cost target: certified at most 3x double on paper 002's example (both from the prepared pair: "
                 "run_certified against characteristic_bernstein + ccd_bezier)",
          note=HAND + "the interval Bézier proof (`prove_bezier`) 93 %: `Engine::prove_end` 55 % and `Engine::strip` 30 %, "
               "whose time is the subdivision of F in t (`split_t` 37 %: `keep_left` / `keep_right` 19 % each, self) "
               "and the Krawczyk steps (28 %, of it the degree-36 net evaluated by de Casteljau in intervals 26 %). "
-              "The double Bézier run it is measured against became 1.3x faster this stop (cross-product signs "
-              "instead of atan2), so the ratio grew although the proof did not get slower."),
+              "The double Bézier run it is measured against decides cones by cross-product signs instead of atan2 "
+              "(1.3x faster), which raises the ratio although the proof is no slower."),
     dict(name="Certified static test from two poses, 2D, against the double one",
          key="static-certified-2d/certified static_status (API, two poses)",
          base="static-certified-2d/double static_status (API, two poses)", limit_ratio=1.5,
-         anchor="issue 18: the certified static test costs at most 1.5x the double static test on random pairs"),
+         anchor="the certified static test's cost target: at most 1.5x the double static test on random pairs"),
     dict(name="Certified static test from two poses, 3D, against the double one",
          key="static-certified-3d/certified static_status (API, two poses)",
          base="static-certified-3d/double static_status (API, two poses)", limit_ratio=1.5,
-         anchor="issue 18: the certified static test costs at most 1.5x the double static test on random pairs"),
+         anchor="the certified static test's cost target: at most 1.5x the double static test on random pairs"),
 ]
 
 

@@ -262,10 +262,10 @@ def write_notes(w):
       "perf puts 98 % of the time in `eccd::split<double>` (de Casteljau subdivision in "
       "`floating/bernstein_roots.hpp`) on a projection of degree 216 to 432. The Euler-parameter scenes and "
       "paper 002's example are not affected, and the exact pipeline answers every scene (rows *exact*).")
-    w("- The certified interval mode (`--arith certified`, issue 6 part 2) is measured through `eccd::solve_scene` "
+    w("- The certified interval mode (`--arith certified`) is measured through `eccd::solve_scene` "
       "in the `solve_scene-*` groups (rows *certified*; the answer column says whether it decided in interval "
       "arithmetic or escalated to exact), and from the prepared pair (`run_certified`) in the rows *certified* of "
-      "`ccd3d-paper002` and `ccd3d-deg1-translation`, which carry issue 21's targets; more rows and targets go into "
+      "`ccd3d-paper002` and `ccd3d-deg1-translation`, which carry the certified mode's speed targets; more rows and targets go into "
       "`bench/group_*.cpp` and `TARGETS` / `RATIO_TARGETS` (`bench/perf_report/targets.py`).")
     w("- FCL (Debian libfcl-dev; `scripts/bootstrap.sh` installs it) is found when build-bench is configured; without "
       "it the FCL rows are not measured and say why.")

@@ -1,6 +1,6 @@
 // The independent check of "eccd-certificate/2" (docs/certificate-format.md,
 // docs/checking.md): every claim re-proved with the checker's own algebra.
-// Claims, in order (the names the old checker uses):
+// Claims, in order (the names tools/check_certificate.py uses):
 //   certificate format, scene (the scene's dim, a, b; det M(t) ≠ 0 on [0, 1]),
 //   f (g_k = α^k β^(H-k) h_k, α, β > 0: certificate/check/pencil.hpp),
 //   projection (the candidates named vanish identically, P ∝ the named one,

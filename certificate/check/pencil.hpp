@@ -2,7 +2,7 @@
 // The pencil λA(t) - B(t) of a scene, by the checker's own route: values at
 // rational points, never a symbolic expansion of f(λ; t).
 //
-// Statement (scene-format.md; design.md "use the adjugate"). The moving solid
+// Statement (scene-format.md; docs/architecture.md "Use the adjugate"). The moving solid
 // is A(t) = M(t)^-T Q M(t)^-1. The adjugate adj M(t) = det M(t) · M(t)^-1 is
 // a polynomial matrix; the checker gets it by expanding the cofactors of
 // L·M(t) (L > 0 clears M's denominators) on integer polynomials, divides out

@@ -1,6 +1,6 @@
 #pragma once
 // The certificate of a 3D scene's answer proved by the interval Bézier method
-// (issue 18 point 4; docs/certificate-format.md, "Bézier certificates"), its
+// (docs/certificate-format.md, "Bézier certificates"), its
 // writer and its checker.
 //
 // Statement. Paper 001, section 4: with F(u, t) = det((u - 1)A(t) - uB(t))

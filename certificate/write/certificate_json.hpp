@@ -9,7 +9,7 @@
 // reason; any other exception (a malformed part no check foresaw) is reported
 // as a "certificate format" failure, never as a crash and never as VALID.
 // Rationals are size-bounded before they are parsed (denial of service,
-// issue 15): a forged 10^6-digit number costs nothing.
+// docs/certificate-format.md): a forged 10^6-digit number costs nothing.
 // Requirements: nlohmann::json documents; rationals are number/rational_traits.hpp's.
 #include "solution/solution.hpp"
 #include "certificate/certificate_result.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The certificate of a cycloidal scene's certified answer (issue 20 point 4;
+// The certificate of a cycloidal scene's certified answer (003 section V;
 // docs/certificate-format.md, "Cycloidal scenes"), its writer and its checker.
 //
 // Statement. A cycloidal motion (003 section V) is not rational, so Δ(t), the

@@ -44,7 +44,7 @@
 namespace eccd {
 
 // Size bounds of a certificate, relative to its scene (denial of service,
-// issue 15): every rational it holds (bracket ends, cell samples, gap points)
+// docs/certificate-format.md): every rational it holds (bracket ends, cell samples, gap points)
 // has numerator and denominator of at most certificate_max_bits(n, τ) bits,
 // n the degree of the projection polynomial (of P·D for a 2D Δ ≡ 0) and τ the
 // bit size of its primitive integer coefficients; there are at most

@@ -97,7 +97,7 @@ def main(argv):
         raise InputError(f"{out_dir}: not a directory")
     all_rows = read_csv(os.path.join(out_dir, "results.csv"), RESULT_COLUMNS, OPTIONAL_RESULT_COLUMNS)
     check_results(all_rows)
-    # Issue 20: rows of scenes without ground truth, and the certified row that IS a cycloidal scene's ground truth
+    # Rows of scenes without ground truth, and the certified row that IS a cycloidal scene's ground truth
     # (compared with itself), are kept out of every table; the scenes without ground truth are counted apart.
     no_truth = {}
     csv_rows = len(all_rows)

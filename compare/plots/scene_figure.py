@@ -165,7 +165,7 @@ def place_labels(fig, ax, labels):
                 placed = (ann, box, (dx, dy))
                 break
             ann.remove()
-        if placed is None:  # crowded everywhere: on the centre, as before
+        if placed is None:  # crowded everywhere: on the centre
             ann = ax.annotate(text, centre, fontsize=8, ha="center", va="center", color=colour)
             placed = (ann, ann.get_window_extent(renderer), (0, 0))
         ann, box, off = placed

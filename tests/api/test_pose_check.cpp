@@ -9,7 +9,7 @@
 // looks at far fewer than n²/2 pairs on a sparse scene while giving the same
 // candidates and answers as all pairs.
 #include "api/pose_check.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "api/sweep_and_prune.hpp"
 #include "io/animation_reader.hpp"
 #include "tests/support/scenes.hpp"

@@ -11,7 +11,7 @@
 // inequality: all exact rationals, no square root.
 #include "api/separate.hpp"
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 
 #include <catch2/catch.hpp>
 

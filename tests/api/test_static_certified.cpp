@@ -1,4 +1,4 @@
-// The certified static test (issue 18 point 5, api/static_test.hpp): a
+// The certified static test (issue 18 point 5, api/static_status.hpp): a
 // filtered predicate, double with its error bound first and exact only where
 // that is uncertain. It must give the exact status always — on random pairs
 // (mostly decided by the double filter), on touching pairs (where the filter
@@ -6,7 +6,7 @@
 // instant, the exact pipeline's status (cells, constructed touch instants).
 // Its cost next to the double test is measured in bench/eccd_bench.cpp.
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "tests/support/arith.hpp"
 #include "tests/support/poses.hpp"
 

@@ -1,10 +1,10 @@
-// The fast double static test (issue 21, api/static_test.hpp): ForwardBound's
+// The fast double static test (issue 21, api/static_status.hpp): ForwardBound's
 // a-priori error bound (number/forward_bound.hpp) and the sign rule of
 // kernel/quartic_sign_status.hpp. It must never disagree with the exact
 // status: on random pairs, on pairs built exactly touching (dyadic spheres
 // and axis-aligned ellipsoids at distance r1 + r2, where it must say
 // uncertain) and on near-touching ones. Never timed (bench/eccd_bench.cpp).
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "api/static_filter_simd.hpp"
 #include "kernel/discriminant.hpp"
 #include "kernel/fast_quartic.hpp"

@@ -6,7 +6,7 @@
 // on exactly touching dyadic pairs (where it must say uncertain) and on
 // near-touching ones. Never timed (bench/eccd_bench.cpp).
 #pragma GCC diagnostic ignored "-Wpsabi"  // the W = 4 lane check below, compiled without AVX (number/lane_vector.hpp)
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "kernel/static_filter3d.hpp"
 #include "number/rational_traits.hpp"
 #include "number/static_bound.hpp"
@@ -180,7 +180,7 @@ TEST_CASE("ValueMagnitude: the value lane is the double run and the magnitude la
 }
 
 TEST_CASE("static test 3D: bad input is refused with the reason although the filter runs first", "[static]") {
-  // The filter runs before the full validation (api/static_test.cpp): it must never decide on an input the
+  // The filter runs before the full validation (api/static_status.cpp): it must never decide on an input the
   // validation refuses (kernel/static_filter3d.hpp: a status implies valid input).
   std::array<double, 3> ax{1, 2, 3}, bx{1.5, 0.5, 2};
   M4 id = pose3({1, 0, 0, 0}, 0, 0, 0), far = pose3({1, 0, 0, 0}, 10, 0, 0);

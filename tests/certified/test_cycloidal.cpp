@@ -3,7 +3,7 @@
 // brackets are proved and contain the paper's values as printed, and a true
 // double root (a touch) is never claimed: it is undecided with its bound.
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/cycloidal_motion.hpp"
 

@@ -6,7 +6,7 @@
 // separate. The parts that call FCL are compiled only with ECCD_HAVE_FCL
 // (CI installs libfcl-dev).
 #include "api/judge.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "compare/fcl_engine.hpp"
 #include "compare/harness.hpp"
 #include "compare/scene_generator.hpp"

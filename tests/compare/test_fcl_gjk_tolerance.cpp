@@ -8,7 +8,7 @@
 // test says the two overlap; FCL with its default gjk_tolerance (1e-6)
 // reports no collision there, with 1e-12 a collision (measured with FCL 0.7.0,
 // libccd's MPR; another FCL may differ, and then this test says so).
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "compare/fcl_engine.hpp"
 #include "io/scene_reader.hpp"
 #include "tests/app/cli_run.hpp"

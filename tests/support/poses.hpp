@@ -1,6 +1,6 @@
 #pragma once
 // Test support: rigid poses in double as the static-test API takes them
-// (api/static_test.hpp): a 2D rotation by an angle plus a translation, and a
+// (api/static_status.hpp): a 2D rotation by an angle plus a translation, and a
 // 3D rotation from a (normalised) quaternion plus a translation. The rotation
 // matrix is rounded to doubles, so not exactly orthogonal: any affine pose is
 // allowed by the API, and the exact pipeline reads these doubles exactly.

@@ -37,7 +37,7 @@ class InputError(Exception):
 # --------------------------------------------------------------------------- input
 
 OUTCOMES = ("correct", "false_positive", "false_negative", "undecided", "error", "no_ground_truth")
-NO_TRUTH = "no_ground_truth"  # issue 20: the scene has no ground truth (compare/harness_families.hpp); kept out of every table
+NO_TRUTH = "no_ground_truth"  # the scene has no ground truth (compare/harness_families.hpp); kept out of every table
 ARITHS = ("double", "mpfr", "exact", "certified", "fcl", "external")  # fcl: FCL as a peer; external: report --external
 BASES = ("power", "bernstein", "scaled-bernstein", "exact", "none", "pointwise")  # none: certified, fcl and external rows; pointwise: cycloidal
 FAMILIES = ("colliding", "free", "touch", "near-miss", "overlap", "graze", "decimal", "keyframe", "case", "cycloidal",
@@ -78,14 +78,14 @@ RESULT_COLUMNS = [
     ("structure_ok", "int", "error", (0, 1)),
 ]
 
-# Columns added later (issue 14): a results.csv without them reads with these defaults (before input modes
+# Columns that older results.csv files lack: a results.csv without them reads with these defaults (before input modes
 # existed every floating pipeline started from the prepared scene).
 OPTIONAL_RESULT_COLUMNS = [
     ("input", "str", False, INPUTS, "prepared"),
     ("digits", "int", True, None, None),
     ("reason", "str", True, None, None),
     ("coef_err_common", "float", True, None, None),
-    ("guard", "str", True, ("none", "bound"), None),  # issue 30: the face of a floating row; older files: guarded only
+    ("guard", "str", True, ("none", "bound"), None),  # the face of a floating row; older files: guarded only
 ]
 
 FAILURE_COLUMNS = [

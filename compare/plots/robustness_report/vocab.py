@@ -281,7 +281,7 @@ def reason_class(r):
         return "Bézier unresolved"
     if "too close to zero" in why:
         return "error bound"
-    if "no status there" in why:  # kernel/cd_disc.hpp collect_reasons, plain T (issue 30 point 4)
+    if "no status there" in why:  # kernel/cd_disc.hpp collect_reasons, plain T (as published)
         return "no status"
     return "undecided"
 

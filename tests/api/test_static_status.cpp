@@ -1,4 +1,4 @@
-// The API's static tests (api/static_test.hpp): the double path (001 Appendix
+// The API's static tests (api/static_status.hpp): the double path (001 Appendix
 // A in 3D, its 3x3 analogue in 2D, in Bounded<double>) against the exact path
 // (world quadrics, the generic expansion of det(λA - B), exact Sturm /
 // discriminant signs), which is the oracle: on random poses (printed seed;
@@ -6,7 +6,7 @@
 // and say uncertain otherwise, never the wrong status; and the scene at an
 // instant agrees with the exact pipeline's cells.
 #include "api/solve.hpp"
-#include "api/static_test.hpp"
+#include "api/static_status.hpp"
 #include "tests/support/arith.hpp"
 #include "tests/support/poses.hpp"
 

@@ -1,5 +1,5 @@
-// Static tests from a scene at an instant or from two poses (api/static_test.hpp).
-#include "api/static_test.hpp"
+// Static tests from a scene at an instant or from two poses (api/static_status.hpp).
+#include "api/static_status.hpp"
 
 #include "api/static_filter_simd.hpp"
 
@@ -129,7 +129,7 @@ template <int N>
   fail("the pose is singular (its linear part has determinant 0)");
 }
 
-// Validation in one pass without a branch per entry (issue 21: it was 10 % of the double test): x * 0 is 0 for
+// Validation in one pass without a branch per entry (a branch per entry costs 10 % of the double test): x * 0 is 0 for
 // every finite x and NaN otherwise, so one sum says whether all are finite; the message is built only on failure.
 template <int N>
 void check_shape(const std::array<double, N - 1>& axes, const Mat<double, N>& pose, const char* which) {
@@ -332,7 +332,7 @@ Status double_pose_status(const std::array<double, N - 1>& axes_a, const Mat<dou
 // The fast path as one function: flatten inlines the whole straight-line
 // program (the ForwardBound operations, Appendix A, Δ), which the compiler
 // otherwise leaves as calls passing 24-byte values through memory.
-// In 3D the plain-double program with static bounds (kernel/static_filter3d.hpp, issue 21), flattened into one
+// In 3D the plain-double program with static bounds (kernel/static_filter3d.hpp), flattened into one
 // function (value and magnitude side by side in SSE2 registers: number/static_bound.hpp's ValueMagnitude). The
 // same compiled for AVX-512 + FMA measured slower for one pair (84 against 62 ns/pair, /tmp micro-benchmark,
 // loaded machine), so only the batch's lanes use api/static_filter_simd.hpp.
@@ -473,7 +473,7 @@ void pose_status_batch(std::span<const Shape> a, std::span<const Shape> b, std::
   if constexpr (N == 4) {
     const simd::Isa isa = simd::static_batch_isa();
     if ((arith.kind == Arithmetic::Double || arith.kind == Arithmetic::Certified) && isa != simd::Isa::none) {
-      // Blocks of lanes in structure of arrays, vectorised (AVX-512, or AVX2: issue 36). A status from the filter
+      // Blocks of lanes in structure of arrays, vectorised (AVX-512, or AVX2). A status from the filter
       // implies valid input (kernel/static_filter3d.hpp; the last rows are checked here), so only the pairs it leaves
       // uncertain are validated in full; the codes wait in `codes` until every pair is known valid (nothing written
       // before).

@@ -10,13 +10,13 @@
 // their own frames, moved by a homogeneous affine pose M (last row 0 ... 0 1,
 // det ≠ 0) that maps the object's frame to the world.
 //  - exact: the world matrices A = adj(M_a)^T Q_a adj(M_a), B likewise (a
-//    positive multiple of M^-T Q M^-1, design.md), f by the generic
+//    positive multiple of M^-T Q M^-1, docs/architecture.md "Use the adjugate"), f by the generic
 //    determinant expansion (kernel/characteristic_polynomial.hpp), then the
 //    exact static test (kernel/contact_status.hpp 2D, kernel/quartic_status.hpp
 //    3D): a proof about the doubles given.
 //  - double: a in standard position (001 section 3), b = Rᵀ Q_b R with R =
 //    adj(M_b) M_a; in 3D f by 001 Appendix A (kernel/fast_quartic.hpp), in 2D
-//    by the same closed form for a 3x3 diagonal A. Fast path (issue 21): in
+//    by the same closed form for a 3x3 diagonal A. Fast path: in
 //    3D both shapes as unit balls under their poses scaled by the semi-axes
 //    (no division), the relative pose by the adjugate, 001 Appendix A with
 //    A = diag(1, 1, 1, -1), in plain double with static bounds: the same
@@ -33,7 +33,7 @@
 //    needs certain, uncertain otherwise. It allocates nothing.
 // Scene at t: the scene's motions at t (kernel/prepared_scene.hpp for exact;
 // the scene's numbers rounded for double and MPFR, as `eccd solve` does);
-// Certified (issue 18 point 5) is a filtered predicate that gives the exact
+// Certified (the arithmetic, not Solution::certified) is a filtered predicate that gives the exact
 // status: first the double test — from two poses the Bounded<double> test
 // above (its running error bound makes a status a proof about the doubles
 // given), at a scene's instant the same rules in intervals of doubles that
@@ -70,7 +70,7 @@ Status status_at(const Scene& scene, const mpq_class& t, const Arithmetic& arith
 Status static_status(const Ellipse& a, const Ellipse& b, const Arithmetic& arith = Arithmetic::double_precision());
 Status static_status(const Ellipsoid& a, const Ellipsoid& b, const Arithmetic& arith = Arithmetic::double_precision());
 
-// Batched static test from two poses (issue 21): out[i] = static_status(a[i], b[i], arith) for every i, the same
+// Batched static test from two poses: out[i] = static_status(a[i], b[i], arith) for every i, the same
 // answer pair by pair (arith double, exact or certified). In double (and as certified's filter): in 3D each pair
 // through the single pair's plain-double program (kernel/static_filter3d.hpp; its lane form over structure-of-
 // arrays blocks vectorises only for AVX, which the default build does not target, and was slower in SSE2); in
