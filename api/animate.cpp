@@ -245,14 +245,10 @@ Rational body_shape_radius(const Animation& anim, std::size_t body) {
 }
 Rational key_deformation_bound(const KeyPose& pose, int dim) { return deformation_bound(pose, dim); }
 
-AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
-  if (opt.threads < 1)
-    throw std::invalid_argument("--threads " + std::to_string(opt.threads) + ": expected at least 1");
-  if (opt.shard_count < 1 || opt.shard_index >= opt.shard_count)
-    throw std::invalid_argument("--shard " + std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count) +
-                                ": expected i/n with 0 <= i < n");
-  using SteadyClock = std::chrono::steady_clock;
-  const auto t_start = SteadyClock::now();
+namespace {
+
+// The result's header: what was run, on what.
+AnimationResult result_header(const Animation& anim, const AnimateOptions& opt) {
   AnimationResult res;
   res.animation = anim.name;
   res.file = anim.path;
@@ -268,7 +264,11 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
   res.plane_stage_built = opt.planes;
 #endif
   res.planes_disabled = !opt.planes;
+  return res;
+}
 
+// The options of stage 3's solve of one pair-frame.
+SolveOptions frame_solve_options(const Animation& anim, const AnimateOptions& opt) {
   SolveOptions so = opt.solve;
   if (opt.all_intervals) {
     so.first_contact = false;
@@ -277,6 +277,259 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
     so.first_contact = anim.dim == 3;  // 2D: cut to the first interval below (first_interval_only)
     so.variant = Variant::answer;
   }
+  return so;
+}
+
+// Stage 1 on frame k: bounding spheres, sweep-and-prune on x, then the exact sphere test. Returns the pairs it
+// could not prove apart, in the order of pairs (pair_index[a][b]: the position of pair (a, b), or -1).
+std::vector<PairTask> frame_bounding_stage(const Animation& anim, const std::vector<std::vector<long>>& pair_index,
+                                           std::size_t k) {
+  const std::size_t n = anim.bodies.size();
+  std::vector<BoundingSphere> sph;
+  for (std::size_t b = 0; b < n; ++b) sph.push_back(swept_bounding_sphere(anim, b, k));
+  std::vector<std::size_t> order(n);
+  for (std::size_t b = 0; b < n; ++b) order[b] = b;
+  std::vector<Rational> lo(n), hi(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    lo[b] = sph[b].centre[0] - sph[b].radius;
+    hi[b] = sph[b].centre[0] + sph[b].radius;
+  }
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t x, std::size_t y) { return lo[x] < lo[y] || (lo[x] == lo[y] && x < y); });
+  std::vector<PairTask> tasks;
+  for (std::size_t u = 0; u < n; ++u) {
+    const std::size_t x = order[u];
+    for (std::size_t v = u + 1; v < n && lo[order[v]] <= hi[x]; ++v) {
+      const std::size_t y = order[v];
+      const std::size_t a = std::min(x, y), b = std::max(x, y);
+      if (pair_index[a][b] < 0) continue;
+      Rational d2 = 0;
+      for (int i = 0; i < anim.dim; ++i) {
+        Rational d = sph[a].centre[i] - sph[b].centre[i];
+        d2 += d * d;
+      }
+      Rational r = sph[a].radius + sph[b].radius;
+      if (d2 > r * r) continue;  // proved apart over the whole frame
+      tasks.push_back({a, b, std::size_t(pair_index[a][b])});
+    }
+  }
+  std::sort(tasks.begin(), tasks.end(), [](const PairTask& x, const PairTask& y) { return x.pair < y.pair; });
+  return tasks;
+}
+
+// Where a pair-frame's task is: frame_tasks[frame_pos][task_pos].
+struct Slot {
+  std::size_t frame_pos = 0, task_pos = 0;
+};
+
+// Stage 2's state along one pair's frames: the plane kept from the last frame that found it.
+struct KeptPlaneState {
+#ifdef ECCD_ANIMATE_PLANES
+  std::optional<SeparatingPlane> plane;
+  KeptPlaneCheck::Plane prepared{};
+  std::size_t frame = 0;  // the frame position after which `plane` may be checked
+#endif
+};
+
+// Stages 2 and 3, pair by pair (a pair's frames in order, so that the plane kept from frame k - 1 is at hand in
+// frame k), pairs on a pool of threads; results stored by (frame, position), so nothing depends on the schedule.
+class PairFrameStages {
+ public:
+  PairFrameStages(const Animation& anim, const AnimateOptions& opt, const SolveOptions& so, std::size_t first,
+                  const std::vector<std::vector<PairTask>>& frame_tasks)
+      : anim_(anim), opt_(opt), so_(so), first_(first), frame_tasks_(frame_tasks) {
+    out_.resize(frame_tasks.size());
+    task_seconds_.resize(frame_tasks.size());
+    for (std::size_t f = 0; f < frame_tasks.size(); ++f) {
+      out_[f].resize(frame_tasks[f].size());
+      task_seconds_[f].resize(frame_tasks[f].size());
+    }
+#ifdef ECCD_ANIMATE_PLANES
+    // Stage 2's interval check from prepared numbers: double and certified runs (a proof in intervals is one
+    // there); exact and MPFR runs check in their own arithmetic only.
+    if (opt.planes && anim.dim == 3 && (so.arith.kind == Arithmetic::Double || so.arith.kind == Arithmetic::Certified))
+      fast_planes_.emplace(anim);
+#endif
+  }
+
+  // Runs every pair-frame on opt.threads threads, the longest pairs first; reports to opt.progress.
+  void run() {
+    std::vector<std::vector<Slot>> by_pair(anim_.pairs.size());
+    std::size_t total = 0;
+    for (std::size_t f = 0; f < frame_tasks_.size(); ++f)
+      for (std::size_t t = 0; t < frame_tasks_[f].size(); ++t) {
+        by_pair[frame_tasks_[f][t].pair].push_back({f, t});
+        ++total;
+      }
+    std::vector<std::size_t> work_pairs;
+    for (std::size_t p = 0; p < by_pair.size(); ++p)
+      if (!by_pair[p].empty()) work_pairs.push_back(p);
+    std::stable_sort(work_pairs.begin(), work_pairs.end(), [&](std::size_t x, std::size_t y) {
+      return by_pair[x].size() > by_pair[y].size();
+    });  // longest first
+    std::atomic<std::size_t> next{0};
+    auto work = [&]() {
+      for (std::size_t w = next++; w < work_pairs.size() && !failed_; w = next++) run_pair(by_pair[work_pairs[w]]);
+    };
+    const std::size_t nthreads = std::min<std::size_t>(std::size_t(opt_.threads), work_pairs.size());
+    std::vector<std::thread> pool;
+    for (std::size_t w = 0; w < nthreads; ++w) pool.emplace_back(work);
+    if (opt_.progress) {  // the calling thread reports while the pool works
+      while (done_ < total && !failed_) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        opt_.progress(done_, total);
+      }
+    }
+    for (auto& th : pool) th.join();
+    if (opt_.progress) opt_.progress(done_, total);
+  }
+
+  TaskResult& result(std::size_t f, std::size_t t) { return out_[f][t]; }
+  double seconds(std::size_t f, std::size_t t) const { return task_seconds_[f][t]; }
+
+ private:
+  // One pair's frames in order; stops at the first error anywhere.
+  void run_pair(const std::vector<Slot>& slots) {
+    using SteadyClock = std::chrono::steady_clock;
+    KeptPlaneState kept;
+    for (const Slot& slot : slots) {
+      const PairTask& task = frame_tasks_[slot.frame_pos][slot.task_pos];
+      TaskResult& r = out_[slot.frame_pos][slot.task_pos];
+      const auto t0 = SteadyClock::now();
+      try {
+        run_pair_frame(task, slot.frame_pos, r, kept);
+      } catch (...) {
+        r.error = std::current_exception();
+        failed_ = true;
+      }
+      task_seconds_[slot.frame_pos][slot.task_pos] = std::chrono::duration<double>(SteadyClock::now() - t0).count();
+      ++done_;
+      if (failed_) break;
+    }
+  }
+
+  // The pair-frame's scene, built when a stage needs it.
+  const Scene& scene_of(std::optional<Scene>& built, const PairTask& task, std::size_t k) const {
+    if (!built) built = pair_frame_scene(anim_, task.a, task.b, k);
+    return *built;
+  }
+
+  void run_pair_frame(const PairTask& task, std::size_t frame_pos, TaskResult& r, KeptPlaneState& kept) {
+    const std::size_t k = first_ + frame_pos;
+    std::optional<Scene> built;
+#ifdef ECCD_ANIMATE_PLANES
+    // Only a plane from the frame just before (a frame dropped by stage 1 in between forgets it).
+    if (opt_.planes && kept.plane && kept.frame + 1 == frame_pos && kept_separates(kept, task, k, built)) {
+      r.plane_settled = true;
+      kept.frame = frame_pos;  // checked on this frame; the next frame checks it again
+      return;
+    }
+    kept.plane.reset();
+#else
+    (void)kept;
+#endif
+    const Scene& scene = scene_of(built, task, k);
+    try {
+      r.solution = solve(scene, so_);
+      if (!opt_.all_intervals) first_interval_only(r.solution.answer);
+      r.solved = true;
+    } catch (const BudgetExhausted& e) {
+      r.budget_why = std::string("resource budget exhausted: ") + e.what();
+    }
+#ifdef ECCD_ANIMATE_PLANES
+    if (opt_.planes && r.solved && !r.solution.answer.collides && r.solution.decided())
+      keep_plane(scene, frame_pos, kept);
+#endif
+  }
+
+#ifdef ECCD_ANIMATE_PLANES
+  bool kept_separates(const KeptPlaneState& kept, const PairTask& task, std::size_t k,
+                      std::optional<Scene>& built) const {
+    const FrameSides f = fast_planes_ ? fast_planes_->check(kept.prepared, task.a, task.b, k) : FrameSides::unknown;
+    if (f != FrameSides::unknown) return f == FrameSides::separates;
+    return plane_separates_on_frame(scene_of(built, task, k), *kept.plane, so_) == PlaneCheck::separates;
+  }
+
+  // A plane separating the pair at the frame's end, kept for the next frame.
+  void keep_plane(const Scene& scene, std::size_t frame_pos, KeptPlaneState& kept) const {
+    Separation sep = separate_at(scene, Rational(1), so_);
+    if (sep.status == "separate" && sep.plane) {
+      kept.plane = sep.plane;
+      if (fast_planes_) kept.prepared = fast_planes_->prepare(kept.plane->normal, kept.plane->offset);
+      kept.frame = frame_pos;
+    }
+  }
+#endif
+
+  const Animation& anim_;
+  const AnimateOptions& opt_;
+  const SolveOptions& so_;
+  const std::size_t first_;
+  const std::vector<std::vector<PairTask>>& frame_tasks_;
+  std::vector<std::vector<TaskResult>> out_;
+  std::vector<std::vector<double>> task_seconds_;
+#ifdef ECCD_ANIMATE_PLANES
+  std::optional<KeptPlaneCheck> fast_planes_;
+#endif
+  std::atomic<std::size_t> done_{0};
+  std::atomic<bool> failed_{false};
+};
+
+// Why a solved pair-frame's answer is undecided: the solver's reasons and the undecided instants.
+std::string undecided_why(const TaskResult& r, const PairFrameAnswer& pa) {
+  std::string why;
+  for (const auto& w : r.solution.undecided_reasons) why += (why.empty() ? "" : "; ") + w;
+  if (why.empty()) why = "undecided instants in the answer";
+  std::string at;
+  for (const auto& u : pa.answer.undecided) at += (at.empty() ? "" : ", ") + u.approx;
+  if (!at.empty()) why += " (at t ~ " + at + ")";
+  return why;
+}
+
+// The answers of frame k (position f), in the order of pairs, into fs and res.
+void record_frame(const Animation& anim, const AnimateOptions& opt, int float_digits, std::size_t k, std::size_t f,
+                  const std::vector<PairTask>& tasks, PairFrameStages& stages, FrameSummary& fs, AnimationResult& res) {
+  const Rational dt = anim.times[k + 1] - anim.times[k];
+  for (std::size_t t = 0; t < tasks.size(); ++t) {
+    const PairTask& task = tasks[t];
+    TaskResult& r = stages.result(f, t);
+    if (r.error) std::rethrow_exception(r.error);
+    fs.seconds += stages.seconds(f, t);
+    if (r.plane_settled) {
+      ++fs.separating_plane;
+      continue;
+    }
+    ++fs.continuous_test;
+    if (!r.solved) {
+      res.undecided.push_back({k, task.a, task.b, r.budget_why});
+      ++fs.undecided;
+      continue;
+    }
+    PairFrameAnswer pa{k, task.a, task.b, to_global(r.solution.answer, anim.times[k], dt, float_digits),
+                       r.solution.answer};
+    if (opt.keep_tested) res.tested.push_back(pa);
+    if (!r.solution.decided()) {
+      res.undecided.push_back({k, task.a, task.b, undecided_why(r, pa)});
+      ++fs.undecided;
+    } else if (r.solution.answer.collides) {
+      res.events.push_back(std::move(pa));
+      ++fs.events;
+    }
+  }
+}
+
+}  // namespace
+
+AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
+  if (opt.threads < 1)
+    throw std::invalid_argument("--threads " + std::to_string(opt.threads) + ": expected at least 1");
+  if (opt.shard_count < 1 || opt.shard_index >= opt.shard_count)
+    throw std::invalid_argument("--shard " + std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count) +
+                                ": expected i/n with 0 <= i < n");
+  using SteadyClock = std::chrono::steady_clock;
+  const auto t_start = SteadyClock::now();
+  AnimationResult res = result_header(anim, opt);
+  const SolveOptions so = frame_solve_options(anim, opt);
   const int float_digits = opt.solve.arith.kind == Arithmetic::Mpfr ? precision_digits(opt.solve.arith.mpfr_bits) : 17;
 
   const std::size_t n = anim.bodies.size();
@@ -286,7 +539,7 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
   const std::size_t F = anim.frames();
   const std::size_t first = F * opt.shard_index / opt.shard_count, last = F * (opt.shard_index + 1) / opt.shard_count;
 
-  // Stage 1, frame by frame: bounding spheres, sweep-and-prune on x, then the exact sphere test.
+  // Stage 1, frame by frame.
   std::vector<FrameSummary> summary;
   std::vector<std::vector<PairTask>> frame_tasks;  // per frame, in the order of pairs
   for (std::size_t k = first; k < last; ++k) {
@@ -294,187 +547,21 @@ AnimationResult animate(const Animation& anim, const AnimateOptions& opt) {
     FrameSummary fs;
     fs.frame = k;
     fs.pairs = anim.pairs.size();
-    std::vector<BoundingSphere> sph;
-    for (std::size_t b = 0; b < n; ++b) sph.push_back(swept_bounding_sphere(anim, b, k));
-    std::vector<std::size_t> order(n);
-    for (std::size_t b = 0; b < n; ++b) order[b] = b;
-    std::vector<Rational> lo(n), hi(n);
-    for (std::size_t b = 0; b < n; ++b) {
-      lo[b] = sph[b].centre[0] - sph[b].radius;
-      hi[b] = sph[b].centre[0] + sph[b].radius;
-    }
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t x, std::size_t y) { return lo[x] < lo[y] || (lo[x] == lo[y] && x < y); });
-    std::vector<PairTask> tasks;
-    for (std::size_t u = 0; u < n; ++u) {
-      const std::size_t x = order[u];
-      for (std::size_t v = u + 1; v < n && lo[order[v]] <= hi[x]; ++v) {
-        const std::size_t y = order[v];
-        const std::size_t a = std::min(x, y), b = std::max(x, y);
-        if (pair_index[a][b] < 0) continue;
-        Rational d2 = 0;
-        for (int i = 0; i < anim.dim; ++i) {
-          Rational d = sph[a].centre[i] - sph[b].centre[i];
-          d2 += d * d;
-        }
-        Rational r = sph[a].radius + sph[b].radius;
-        if (d2 > r * r) continue;  // proved apart over the whole frame
-        tasks.push_back({a, b, std::size_t(pair_index[a][b])});
-      }
-    }
-    std::sort(tasks.begin(), tasks.end(), [](const PairTask& x, const PairTask& y) { return x.pair < y.pair; });
+    std::vector<PairTask> tasks = frame_bounding_stage(anim, pair_index, k);
     fs.bounding_volumes = anim.pairs.size() - tasks.size();
     fs.seconds = std::chrono::duration<double>(SteadyClock::now() - t_frame).count();
     summary.push_back(fs);
     frame_tasks.push_back(std::move(tasks));
   }
 
-  // Stages 2 and 3, pair by pair (a pair's frames in order, so that the plane
-  // kept from frame k - 1 is at hand in frame k), pairs on a pool of threads;
-  // results stored by (frame, position), so nothing depends on the schedule.
-  struct Slot {
-    std::size_t frame_pos = 0, task_pos = 0;
-  };
-  std::vector<std::vector<Slot>> by_pair(anim.pairs.size());
-  std::size_t total = 0;
-  for (std::size_t f = 0; f < frame_tasks.size(); ++f)
-    for (std::size_t t = 0; t < frame_tasks[f].size(); ++t) {
-      by_pair[frame_tasks[f][t].pair].push_back({f, t});
-      ++total;
-    }
-  std::vector<std::size_t> work_pairs;
-  for (std::size_t p = 0; p < by_pair.size(); ++p)
-    if (!by_pair[p].empty()) work_pairs.push_back(p);
-  std::stable_sort(work_pairs.begin(), work_pairs.end(), [&](std::size_t x, std::size_t y) {
-    return by_pair[x].size() > by_pair[y].size();
-  });  // longest first
-  std::vector<std::vector<TaskResult>> out(frame_tasks.size());
-  std::vector<std::vector<double>> task_seconds(frame_tasks.size());
-  for (std::size_t f = 0; f < frame_tasks.size(); ++f) {
-    out[f].resize(frame_tasks[f].size());
-    task_seconds[f].resize(frame_tasks[f].size());
-  }
-#ifdef ECCD_ANIMATE_PLANES
-  // Stage 2's interval check from prepared numbers: double and certified runs (a proof in intervals is one
-  // there); exact and MPFR runs check in their own arithmetic only.
-  std::optional<KeptPlaneCheck> fast_planes;
-  if (opt.planes && anim.dim == 3 && (so.arith.kind == Arithmetic::Double || so.arith.kind == Arithmetic::Certified))
-    fast_planes.emplace(anim);
-#endif
-  std::atomic<std::size_t> next{0}, done{0};
-  std::atomic<bool> failed{false};
-  auto work = [&]() {
-    for (std::size_t w = next++; w < work_pairs.size() && !failed; w = next++) {
-#ifdef ECCD_ANIMATE_PLANES
-      std::optional<SeparatingPlane> kept;
-      KeptPlaneCheck::Plane kept_prepared{};
-      std::size_t kept_frame = 0;  // the frame position after which `kept` may be checked
-#endif
-      for (const Slot& slot : by_pair[work_pairs[w]]) {
-        const PairTask& task = frame_tasks[slot.frame_pos][slot.task_pos];
-        TaskResult& r = out[slot.frame_pos][slot.task_pos];
-        const std::size_t k = first + slot.frame_pos;
-        const auto t0 = SteadyClock::now();
-        try {
-          std::optional<Scene> built;  // the pair-frame's scene, built when a stage needs it
-          auto scene_of = [&]() -> const Scene& {
-            if (!built) built = pair_frame_scene(anim, task.a, task.b, k);
-            return *built;
-          };
-#ifdef ECCD_ANIMATE_PLANES
-          // Only a plane from the frame just before (a frame dropped by stage 1 in between forgets it).
-          auto kept_separates = [&]() {
-            const FrameSides f =
-                fast_planes ? fast_planes->check(kept_prepared, task.a, task.b, k) : FrameSides::unknown;
-            if (f != FrameSides::unknown) return f == FrameSides::separates;
-            return plane_separates_on_frame(scene_of(), *kept, so) == PlaneCheck::separates;
-          };
-          if (opt.planes && kept && kept_frame + 1 == slot.frame_pos && kept_separates()) {
-            r.plane_settled = true;
-            kept_frame = slot.frame_pos;  // checked on this frame; the next frame checks it again
-          } else {
-            kept.reset();
-#endif
-            const Scene& scene = scene_of();
-            try {
-              r.solution = solve(scene, so);
-              if (!opt.all_intervals) first_interval_only(r.solution.answer);
-              r.solved = true;
-            } catch (const BudgetExhausted& e) {
-              r.budget_why = std::string("resource budget exhausted: ") + e.what();
-            }
-#ifdef ECCD_ANIMATE_PLANES
-            if (opt.planes && r.solved && !r.solution.answer.collides && r.solution.decided()) {
-              Separation sep = separate_at(scene, Rational(1), so);
-              if (sep.status == "separate" && sep.plane) {
-                kept = sep.plane;
-                if (fast_planes) kept_prepared = fast_planes->prepare(kept->normal, kept->offset);
-                kept_frame = slot.frame_pos;
-              }
-            }
-          }
-#endif
-        } catch (...) {
-          r.error = std::current_exception();
-          failed = true;
-        }
-        task_seconds[slot.frame_pos][slot.task_pos] = std::chrono::duration<double>(SteadyClock::now() - t0).count();
-        ++done;
-        if (failed) break;
-      }
-    }
-  };
-  const std::size_t nthreads = std::min<std::size_t>(std::size_t(opt.threads), work_pairs.size());
-  {
-    std::vector<std::thread> pool;
-    for (std::size_t w = 0; w < nthreads; ++w) pool.emplace_back(work);
-    if (opt.progress) {  // the calling thread reports while the pool works
-      while (done < total && !failed) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        opt.progress(done, total);
-      }
-    }
-    for (auto& th : pool) th.join();
-  }
-  if (opt.progress) opt.progress(done, total);
+  // Stages 2 and 3.
+  PairFrameStages stages(anim, opt, so, first, frame_tasks);
+  stages.run();
 
   // The answers, frame by frame in the order of pairs.
   for (std::size_t f = 0; f < frame_tasks.size(); ++f) {
-    const std::size_t k = first + f;
     FrameSummary& fs = summary[f];
-    const Rational dt = anim.times[k + 1] - anim.times[k];
-    for (std::size_t t = 0; t < frame_tasks[f].size(); ++t) {
-      const PairTask& task = frame_tasks[f][t];
-      TaskResult& r = out[f][t];
-      if (r.error) std::rethrow_exception(r.error);
-      fs.seconds += task_seconds[f][t];
-      if (r.plane_settled) {
-        ++fs.separating_plane;
-        continue;
-      }
-      ++fs.continuous_test;
-      if (!r.solved) {
-        res.undecided.push_back({k, task.a, task.b, r.budget_why});
-        ++fs.undecided;
-        continue;
-      }
-      PairFrameAnswer pa{k, task.a, task.b, to_global(r.solution.answer, anim.times[k], dt, float_digits),
-                         r.solution.answer};
-      if (opt.keep_tested) res.tested.push_back(pa);
-      if (!r.solution.decided()) {
-        std::string why;
-        for (const auto& w : r.solution.undecided_reasons) why += (why.empty() ? "" : "; ") + w;
-        if (why.empty()) why = "undecided instants in the answer";
-        std::string at;
-        for (const auto& u : pa.answer.undecided) at += (at.empty() ? "" : ", ") + u.approx;
-        if (!at.empty()) why += " (at t ~ " + at + ")";
-        res.undecided.push_back({k, task.a, task.b, why});
-        ++fs.undecided;
-      } else if (r.solution.answer.collides) {
-        res.events.push_back(std::move(pa));
-        ++fs.events;
-      }
-    }
+    record_frame(anim, opt, float_digits, first + f, f, frame_tasks[f], stages, fs, res);
     res.bounding_volumes += fs.bounding_volumes;
     res.separating_plane += fs.separating_plane;
     res.continuous_test += fs.continuous_test;

@@ -272,12 +272,333 @@ struct PairOutcome {
   std::optional<std::array<double, 4>> plane;  // the plane kept for the next pose (H entries used)
 };
 
+// Per body: Q and adj(Q) (exact and in intervals), the semi-axes when diagonal, the shape radius, and whether Q is
+// diagonal (then adj(Q) is diagonal too).
+template <int H>
+struct BodyShapes {
+  std::vector<Matrix<Rational, H>> Qr, adjQr;
+  std::vector<Matrix<Interval, H>> Qi, adjQi;
+  std::vector<std::optional<std::array<double, H - 1>>> axes;
+  std::vector<Rational> radius;
+  std::vector<char> diag;
+};
+
+template <int H>
+BodyShapes<H> body_shapes(const Animation& anim) {
+  const std::size_t n = anim.bodies.size();
+  BodyShapes<H> s;
+  s.Qr.resize(n);
+  s.adjQr.resize(n);
+  s.Qi.resize(n);
+  s.adjQi.resize(n);
+  s.axes.resize(n);
+  s.radius.resize(n);
+  s.diag.resize(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) s.Qr[b][i][j] = anim.bodies[b].Q[i][j];
+    s.adjQr[b] = adjugate_of<Rational, H>(s.Qr[b], Rational(0));
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) {
+        s.Qi[b][i][j] = interval_of(s.Qr[b][i][j]);
+        s.adjQi[b][i][j] = interval_of(s.adjQr[b][i][j]);
+      }
+    s.axes[b] = diagonal_axes<H>(anim.bodies[b].Q);
+    s.radius[b] = body_shape_radius(anim, b);
+  }
+  for (std::size_t b = 0; b < n; ++b) {
+    bool dg = true;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) dg = dg && (i == j || sgn(s.Qr[b][i][j]) == 0);
+    s.diag[b] = dg;
+  }
+  return s;
+}
+
+// A pair left for stages 2 and 3 at one pose: its bodies and its position in anim.pairs.
+struct PairTask {
+  std::size_t a, b, pair;
+};
+
+// Stage 1 at pose k: bounding spheres in intervals enclosing the exact centre and radius, sweep on x, the sphere
+// test. Returns the pairs it could not prove apart, sorted by pair position; fills ps's stage 1 counts.
+template <int H>
+std::vector<PairTask> bounding_stage(const Animation& anim, const BodyShapes<H>& shapes, std::size_t k,
+                                     PoseSummary& ps) {
+  constexpr int d = H - 1;
+  const std::size_t n = anim.bodies.size();
+  const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;  // then anim.pairs lists every pair in order
+  std::vector<std::array<Interval, 3>> centre(n);
+  std::vector<Interval> rad(n);
+  std::vector<SweepInterval> box(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const KeyPose& p = anim.bodies[b].poses[k];
+    const Rational& r = shapes.radius[b];
+    for (int i = 0; i < d; ++i) centre[b][i] = interval_of(p.position[i]);
+    rad[b] = interval_of(keyframe_is_identity(p, d) ? r : Rational(r * key_deformation_bound(p, d)));
+    box[b] = {(centre[b][0] - rad[b]).lo, (centre[b][0] + rad[b]).hi};
+  }
+  std::size_t examined = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> swept = sweep_and_prune(box, examined);
+  ps.sweep_examined = examined;
+  std::vector<PairTask> tasks;
+  for (const auto& [a, b] : swept) {
+    Interval d2(0), r = rad[a] + rad[b];
+    for (int i = 0; i < d; ++i) {
+      Interval x = centre[a][i] - centre[b][i];
+      d2 = d2 + x * x;
+    }
+    if (d2 > r * r) continue;  // proved apart at this pose
+    std::size_t pos;
+    if (all_pairs) {
+      pos = a * (2 * n - a - 1) / 2 + (b - a - 1);  // "all": the pairs in the order of bodies
+    } else {
+      auto it = std::lower_bound(anim.pairs.begin(), anim.pairs.end(), std::make_pair(a, b));
+      if (it == anim.pairs.end() || *it != std::make_pair(a, b)) continue;  // not a checked pair
+      pos = std::size_t(it - anim.pairs.begin());
+    }
+    tasks.push_back({a, b, pos});
+  }
+  std::sort(tasks.begin(), tasks.end(), [](const PairTask& x, const PairTask& y) { return x.pair < y.pair; });
+  ps.bounding_volumes = anim.pairs.size() - tasks.size();
+  return tasks;
+}
+
+// Stages 2 and 3, one pose after the other (each pose's kept planes come from the pose before). Each pass computes
+// first (in the run's arithmetic, once per body and pose) only what its pairs need: M' and C for the kept planes'
+// checks, then A or the rounded pose for the static tests, then A for the new planes. The scratch is reused from
+// pose to pose (no allocation per pose once warm).
+template <int H>
+class PoseStages {
+ public:
+  PoseStages(const Animation& anim, const AnimateOptions& opt, const BodyShapes<H>& shapes)
+      : anim_(anim),
+        opt_(opt),
+        shapes_(shapes),
+        kind_(opt.solve.arith.kind),
+        exact_(kind_ == Arithmetic::Exact),
+        fast_double_(kind_ == Arithmetic::Double),
+        cache_(anim.bodies.size()) {}
+
+  // Decides the pairs `tasks` at pose k; counts into ps and res, appends the events and undecided pairs to res.
+  void run(std::size_t k, const std::vector<PairTask>& tasks, PoseSummary& ps, PosesResult& res) {
+    k_ = k;
+    tasks_ = &tasks;
+    outcome_.assign(tasks.size(), PairOutcome{});
+    match_kept_planes();
+    stamp_ += 1;
+    check_kept_planes();
+    static_tests();
+    if (opt_.planes) build_planes();
+    record(ps, res);
+  }
+
+ private:
+  using KeptPlane = std::pair<std::size_t, std::array<double, 4>>;  // pair position, plane (sorted by position)
+
+  // plane_of_[t]: the plane kept for task t from the pose before, if any.
+  void match_kept_planes() {
+    const std::vector<PairTask>& tasks = *tasks_;
+    plane_of_.assign(tasks.size(), nullptr);
+    if (!opt_.planes || kept_.empty()) return;
+    auto it = kept_.begin();  // both sorted by pair position: one merge
+    for (std::size_t t = 0; t < tasks.size(); ++t) {
+      while (it != kept_.end() && it->first < tasks[t].pair) ++it;
+      if (it != kept_.end() && it->first == tasks[t].pair) plane_of_[t] = &it->second;
+    }
+  }
+
+  // Computes for the bodies of the tasks `which` what they lack of `what` (1 M', 2 C, 4 A, 8 rounded pose).
+  void prepare(const std::vector<std::size_t>& which, int what) {
+    const std::vector<PairTask>& tasks = *tasks_;
+    todo_.clear();
+    for (std::size_t t : which)
+      for (std::size_t b : {tasks[t].a, tasks[t].b}) {
+        if (cache_[b].stamp != stamp_) {
+          cache_[b].stamp = stamp_;
+          cache_[b].have = 0;
+        }
+        if ((cache_[b].have & what) != what && !(cache_[b].queued)) {
+          cache_[b].queued = true;
+          todo_.push_back(b);
+        }
+      }
+    parallel_for(todo_.size(), opt_.threads, 64, [&](std::size_t u) { complete_body(todo_[u], what); });
+    for (std::size_t b : todo_) cache_[b].queued = false;
+  }
+
+  void complete_body(std::size_t b, int what) {
+    constexpr int d = H - 1;
+    BodyCache<H>& c = cache_[b];
+    const KeyPose& p = anim_.bodies[b].poses[k_];
+    if (!(c.have & 1)) {
+      if (exact_)
+        c.mr = pose_matrix<Rational, H>(p);
+      else
+        c.mi = pose_matrix<Interval, H>(p);
+      c.have |= 1;
+    }
+    if ((what & 2) && !(c.have & 2)) {
+      if (exact_)
+        c.cr = dual_at_pose<Rational, H>(c.mr, shapes_.adjQr[b], shapes_.diag[b]);
+      else
+        c.ci = dual_at_pose<Interval, H>(c.mi, shapes_.adjQi[b], shapes_.diag[b]);
+      c.have |= 2;
+    }
+    if ((what & 4) && !(c.have & 4)) {
+      if (exact_)
+        c.ar = world_at_pose<Rational, H>(c.mr, shapes_.Qr[b], shapes_.diag[b]);
+      else
+        c.ai = world_at_pose<Interval, H>(c.mi, shapes_.Qi[b], shapes_.diag[b]);
+      c.have |= 4;
+    }
+    if ((what & 8) && !(c.have & 8)) {  // M = M'/W rounded to doubles, for api/static_status.hpp
+      c.pose = {};
+      for (int i = 0; i < d; ++i)
+        for (int j = 0; j <= d; ++j) c.pose[i][j] = (c.mi[i][j] / c.mi[d][d]).mid();
+      c.pose[d][d] = 1;
+      c.have |= 8;
+    }
+  }
+
+  // Pass 1: the kept planes (000 section 4: checked first). Leaves in rest_ the tasks they do not settle.
+  void check_kept_planes() {
+    const std::vector<PairTask>& tasks = *tasks_;
+    with_plane_.clear();
+    rest_.clear();
+    for (std::size_t t = 0; t < tasks.size(); ++t) (plane_of_[t] ? with_plane_ : rest_).push_back(t);
+    prepare(with_plane_, 1 | 2);
+    parallel_for(with_plane_.size(), opt_.threads, 256, [&](std::size_t u) {
+      const std::size_t t = with_plane_[u];
+      std::array<double, H> p;
+      for (int i = 0; i < H; ++i) p[i] = (*plane_of_[t])[i];
+      const BodyCache<H>& ca = cache_[tasks[t].a];
+      const BodyCache<H>& cb = cache_[tasks[t].b];
+      PairOutcome& o = outcome_[t];
+      o.checked_plane = true;
+      if (exact_ ? plane_separates<Rational, H>(p, ca.cr, cb.cr) : plane_separates<Interval, H>(p, ca.ci, cb.ci)) {
+        o.status = Status::separate;
+        o.by_plane = true;
+        o.plane = *plane_of_[t];
+      }
+    });
+    for (std::size_t t : with_plane_)
+      if (!outcome_[t].by_plane) rest_.push_back(t);
+  }
+
+  // Uses api/static_test.hpp's double test when both shapes are diagonal and the run is in double.
+  bool fast_pair(const PairTask& task) const { return fast_double_ && shapes_.axes[task.a] && shapes_.axes[task.b]; }
+
+  // Pass 2: the static test for the tasks in rest_.
+  void static_tests() {
+    const std::vector<PairTask>& tasks = *tasks_;
+    fast_.clear();
+    general_.clear();
+    for (std::size_t t : rest_) (fast_pair(tasks[t]) ? fast_ : general_).push_back(t);
+    prepare(fast_, 1 | 8);
+    prepare(general_, 1 | 4);
+    parallel_for(rest_.size(), opt_.threads, 128,
+                 [&](std::size_t u) { outcome_[rest_[u]].status = static_status_of(tasks[rest_[u]]); });
+  }
+
+  Status static_status_of(const PairTask& task) const {
+    constexpr int d = H - 1;
+    const BodyCache<H>& ca = cache_[task.a];
+    const BodyCache<H>& cb = cache_[task.b];
+    if (exact_) return generic_status<Rational, H>(ca.ar, cb.ar);
+    if (fast_pair(task)) {
+      const auto& axa = *shapes_.axes[task.a];
+      const auto& axb = *shapes_.axes[task.b];
+      if constexpr (d == 3)
+        return static_status(Ellipsoid{axa, ca.pose}, Ellipsoid{axb, cb.pose}, opt_.solve.arith);
+      else
+        return static_status(Ellipse{axa, ca.pose}, Ellipse{axb, cb.pose}, opt_.solve.arith);
+    }
+    const Status status = generic_status<Interval, H>(ca.ai, cb.ai);
+    if (status != Status::uncertain || kind_ != Arithmetic::Certified) return status;
+    // Certified: the exact status.
+    const auto& pa = anim_.bodies[task.a].poses[k_];
+    const auto& pb = anim_.bodies[task.b].poses[k_];
+    return generic_status<Rational, H>(
+        world_at_pose<Rational, H>(pose_matrix<Rational, H>(pa), shapes_.Qr[task.a], shapes_.diag[task.a]),
+        world_at_pose<Rational, H>(pose_matrix<Rational, H>(pb), shapes_.Qr[task.b], shapes_.diag[task.b]));
+  }
+
+  // Pass 3: a new plane for each pair found separate (000 section 3), kept for the next pose.
+  void build_planes() {
+    const std::vector<PairTask>& tasks = *tasks_;
+    separate_.clear();
+    for (std::size_t t : rest_)
+      if (outcome_[t].status == Status::separate) separate_.push_back(t);
+    prepare(separate_, 1 | 4);
+    parallel_for(separate_.size(), opt_.threads, 16, [&](std::size_t u) {
+      const std::size_t t = separate_[u];
+      PairOutcome& o = outcome_[t];
+      const BodyCache<H>& ca = cache_[tasks[t].a];
+      const BodyCache<H>& cb = cache_[tasks[t].b];
+      const auto plane = exact_ ? build_plane<H>(midpoints<H>(ca.ar), midpoints<H>(cb.ar))
+                                : build_plane<H>(midpoints<H>(ca.ai), midpoints<H>(cb.ai));
+      if (plane) {
+        std::array<double, 4> p{};
+        for (int i = 0; i < H; ++i) p[i] = (*plane)[i];
+        o.plane = p;
+        o.built = true;
+      } else {
+        o.build_failed = true;
+      }
+    });
+  }
+
+  // The results in the order of pairs; the planes kept for the next pose.
+  void record(PoseSummary& ps, PosesResult& res) {
+    const std::vector<PairTask>& tasks = *tasks_;
+    next_kept_.clear();
+    for (std::size_t t = 0; t < tasks.size(); ++t) {
+      const PairTask& task = tasks[t];
+      const PairOutcome& o = outcome_[t];
+      if (o.plane) next_kept_.emplace_back(task.pair, *o.plane);
+      res.plane_checks += o.checked_plane;
+      res.planes_built += o.built;
+      ps.planes_built += o.built;
+      res.plane_build_failed += o.build_failed;
+      if (o.by_plane)
+        ++ps.separating_plane;
+      else
+        ++ps.static_test;
+      PairPoseStatus st{k_, task.a, task.b, o.status, o.by_plane};
+      if (opt_.keep_tested) res.tested.push_back(st);
+      if (o.status == Status::uncertain) {
+        res.undecided.push_back({k_, task.a, task.b,
+                                 "the static test's error bound cannot decide the status at this pose (arithmetic " +
+                                     res.arithmetic + ")"});
+        ++ps.undecided;
+      } else if (in_collision(o.status)) {
+        res.events.push_back(st);
+        ++ps.events;
+      }
+    }
+    std::swap(kept_, next_kept_);
+  }
+
+  const Animation& anim_;
+  const AnimateOptions& opt_;
+  const BodyShapes<H>& shapes_;
+  const Arithmetic::Kind kind_;
+  const bool exact_, fast_double_;
+  std::vector<BodyCache<H>> cache_;
+  std::size_t stamp_ = 0;
+  std::size_t k_ = 0;                             // the current pose
+  const std::vector<PairTask>* tasks_ = nullptr;  // its pairs past stage 1
+  std::vector<KeptPlane> kept_, next_kept_;       // the planes kept from the pose before, and for the next
+  std::vector<PairOutcome> outcome_;
+  std::vector<const std::array<double, 4>*> plane_of_;
+  std::vector<std::size_t> todo_, with_plane_, rest_, separate_, fast_, general_;
+};
+
 template <int H>
 PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
-  constexpr int d = H - 1;
   using SteadyClock = std::chrono::steady_clock;
   const auto t_start = SteadyClock::now();
-  const Arithmetic::Kind kind = opt.solve.arith.kind;
   PosesResult res;
   res.animation = anim.name;
   res.file = anim.path;
@@ -290,259 +611,24 @@ PosesResult run_poses(const Animation& anim, const AnimateOptions& opt) {
   res.planes_disabled = !opt.planes;
   for (const auto& b : anim.bodies) res.body_names.push_back(b.name);
 
-  const std::size_t n = anim.bodies.size();
-  // Per body: Q, adj(Q) (exact and in intervals), the shape radius, the semi-axes when diagonal.
-  std::vector<Matrix<Rational, H>> Qr(n), adjQr(n);
-  std::vector<Matrix<Interval, H>> Qi(n), adjQi(n);
-  std::vector<std::optional<std::array<double, H - 1>>> axes(n);
-  std::vector<Rational> radius(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    for (int i = 0; i < H; ++i)
-      for (int j = 0; j < H; ++j) Qr[b][i][j] = anim.bodies[b].Q[i][j];
-    adjQr[b] = adjugate_of<Rational, H>(Qr[b], Rational(0));
-    for (int i = 0; i < H; ++i)
-      for (int j = 0; j < H; ++j) {
-        Qi[b][i][j] = interval_of(Qr[b][i][j]);
-        adjQi[b][i][j] = interval_of(adjQr[b][i][j]);
-      }
-    axes[b] = diagonal_axes<H>(anim.bodies[b].Q);
-    radius[b] = body_shape_radius(anim, b);
-  }
-
-  std::vector<char> diag(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    bool dg = true;
-    for (int i = 0; i < H; ++i)
-      for (int j = 0; j < H; ++j) dg = dg && (i == j || sgn(Qr[b][i][j]) == 0);
-    diag[b] = dg;  // then adj(Q) is diagonal too
-  }
-  std::vector<BodyCache<H>> cache(n);
-  std::size_t stamp = 0;
-  const bool all_pairs = anim.pairs.size() == n * (n - 1) / 2;      // then anim.pairs lists every pair in order
-  using KeptPlane = std::pair<std::size_t, std::array<double, 4>>;  // pair position, plane (sorted by position)
-  std::vector<KeptPlane> kept, next_kept;  // the planes kept from the pose before, and for the next
-  // Scratch reused from pose to pose (no allocation per pose once warm).
-  std::vector<PairOutcome> outcome;
-  std::vector<const std::array<double, 4>*> plane_of;
-  std::vector<std::size_t> todo, with_plane, rest, separate, fast, general;
-  // Stage 1 for every pose first (poses are independent here: the poses on the threads, each pose on one):
-  // bounding spheres in intervals enclosing the exact centre and radius, sweep on x, the sphere test.
-  struct Task {
-    std::size_t a, b, pair;
-  };
+  const BodyShapes<H> shapes = body_shapes<H>(anim);
+  // Stage 1 for every pose first (poses are independent here: the poses on the threads, each pose on one).
   const std::size_t P = anim.times.size();
-  std::vector<std::vector<Task>> pose_tasks(P);
+  std::vector<std::vector<PairTask>> pose_tasks(P);
   std::vector<PoseSummary> summaries(P);
   parallel_for(P, opt.threads, 1, [&](std::size_t k) {
     const auto t1 = SteadyClock::now();
     PoseSummary& ps = summaries[k];
     ps.pose = k;
     ps.pairs = anim.pairs.size();
-    std::vector<std::array<Interval, 3>> centre(n);
-    std::vector<Interval> rad(n);
-    std::vector<SweepInterval> box(n);
-    for (std::size_t b = 0; b < n; ++b) {
-      const KeyPose& p = anim.bodies[b].poses[k];
-      for (int i = 0; i < d; ++i) centre[b][i] = interval_of(p.position[i]);
-      rad[b] = interval_of(keyframe_is_identity(p, d) ? radius[b] : Rational(radius[b] * key_deformation_bound(p, d)));
-      box[b] = {(centre[b][0] - rad[b]).lo, (centre[b][0] + rad[b]).hi};
-    }
-    std::size_t examined = 0;
-    std::vector<std::pair<std::size_t, std::size_t>> swept = sweep_and_prune(box, examined);
-    ps.sweep_examined = examined;
-    std::vector<Task>& tasks = pose_tasks[k];
-    for (const auto& [a, b] : swept) {
-      Interval d2(0), r = rad[a] + rad[b];
-      for (int i = 0; i < d; ++i) {
-        Interval x = centre[a][i] - centre[b][i];
-        d2 = d2 + x * x;
-      }
-      if (d2 > r * r) continue;  // proved apart at this pose
-      std::size_t pos;
-      if (all_pairs) {
-        pos = a * (2 * n - a - 1) / 2 + (b - a - 1);  // "all": the pairs in the order of bodies
-      } else {
-        auto it = std::lower_bound(anim.pairs.begin(), anim.pairs.end(), std::make_pair(a, b));
-        if (it == anim.pairs.end() || *it != std::make_pair(a, b)) continue;  // not a checked pair
-        pos = std::size_t(it - anim.pairs.begin());
-      }
-      tasks.push_back({a, b, pos});
-    }
-    std::sort(tasks.begin(), tasks.end(), [](const Task& x, const Task& y) { return x.pair < y.pair; });
-    ps.bounding_volumes = anim.pairs.size() - tasks.size();
+    pose_tasks[k] = bounding_stage<H>(anim, shapes, k, ps);
     ps.seconds = std::chrono::duration<double>(SteadyClock::now() - t1).count();
   });
+  PoseStages<H> stages(anim, opt, shapes);
   for (std::size_t k = 0; k < P; ++k) {
     const auto t_pose = SteadyClock::now();
     PoseSummary& ps = summaries[k];
-    const std::vector<Task>& tasks = pose_tasks[k];
-    // Stages 2 and 3 in three passes, each computing first (in the run's arithmetic, once per body and pose) only
-    // what its pairs need: M' and C for the kept planes' checks, then A or the rounded pose for the static tests,
-    // then A for the new planes.
-    const bool exact = kind == Arithmetic::Exact;
-    outcome.assign(tasks.size(), PairOutcome{});
-    plane_of.assign(tasks.size(), nullptr);
-    if (opt.planes && !kept.empty()) {  // both sorted by pair position: one merge
-      auto it = kept.begin();
-      for (std::size_t t = 0; t < tasks.size(); ++t) {
-        while (it != kept.end() && it->first < tasks[t].pair) ++it;
-        if (it != kept.end() && it->first == tasks[t].pair) plane_of[t] = &it->second;
-      }
-    }
-    stamp += 1;
-    auto prepare = [&](const std::vector<std::size_t>& which, int what) {  // what: 1 M', 2 C, 4 A, 8 rounded pose
-      todo.clear();
-      for (std::size_t t : which)
-        for (std::size_t b : {tasks[t].a, tasks[t].b}) {
-          if (cache[b].stamp != stamp) {
-            cache[b].stamp = stamp;
-            cache[b].have = 0;
-          }
-          if ((cache[b].have & what) != what && !(cache[b].queued)) {
-            cache[b].queued = true;
-            todo.push_back(b);
-          }
-        }
-      parallel_for(todo.size(), opt.threads, 64, [&](std::size_t u) {
-        BodyCache<H>& c = cache[todo[u]];
-        const KeyPose& p = anim.bodies[todo[u]].poses[k];
-        const std::size_t b = todo[u];
-        if (!(c.have & 1)) {
-          if (exact)
-            c.mr = pose_matrix<Rational, H>(p);
-          else
-            c.mi = pose_matrix<Interval, H>(p);
-          c.have |= 1;
-        }
-        if ((what & 2) && !(c.have & 2)) {
-          if (exact)
-            c.cr = dual_at_pose<Rational, H>(c.mr, adjQr[b], diag[b]);
-          else
-            c.ci = dual_at_pose<Interval, H>(c.mi, adjQi[b], diag[b]);
-          c.have |= 2;
-        }
-        if ((what & 4) && !(c.have & 4)) {
-          if (exact)
-            c.ar = world_at_pose<Rational, H>(c.mr, Qr[b], diag[b]);
-          else
-            c.ai = world_at_pose<Interval, H>(c.mi, Qi[b], diag[b]);
-          c.have |= 4;
-        }
-        if ((what & 8) && !(c.have & 8)) {  // M = M'/W rounded to doubles, for api/static_status.hpp
-          c.pose = {};
-          for (int i = 0; i < d; ++i)
-            for (int j = 0; j <= d; ++j) c.pose[i][j] = (c.mi[i][j] / c.mi[d][d]).mid();
-          c.pose[d][d] = 1;
-          c.have |= 8;
-        }
-      });
-      for (std::size_t b : todo) cache[b].queued = false;
-    };
-    // Pass 1: the kept planes (000 section 4: checked first).
-    with_plane.clear();
-    rest.clear();
-    separate.clear();
-    for (std::size_t t = 0; t < tasks.size(); ++t) (plane_of[t] ? with_plane : rest).push_back(t);
-    prepare(with_plane, 1 | 2);
-    parallel_for(with_plane.size(), opt.threads, 256, [&](std::size_t u) {
-      const std::size_t t = with_plane[u];
-      std::array<double, H> p;
-      for (int i = 0; i < H; ++i) p[i] = (*plane_of[t])[i];
-      const BodyCache<H>& ca = cache[tasks[t].a];
-      const BodyCache<H>& cb = cache[tasks[t].b];
-      PairOutcome& o = outcome[t];
-      o.checked_plane = true;
-      if (exact ? plane_separates<Rational, H>(p, ca.cr, cb.cr) : plane_separates<Interval, H>(p, ca.ci, cb.ci)) {
-        o.status = Status::separate;
-        o.by_plane = true;
-        o.plane = *plane_of[t];
-      }
-    });
-    for (std::size_t t : with_plane)
-      if (!outcome[t].by_plane) rest.push_back(t);
-    // Pass 2: the static test.
-    const bool fast_double = kind == Arithmetic::Double;
-    {
-      fast.clear();
-      general.clear();
-      for (std::size_t t : rest) (fast_double && axes[tasks[t].a] && axes[tasks[t].b] ? fast : general).push_back(t);
-      prepare(fast, 1 | 8);
-      prepare(general, 1 | 4);
-    }
-    parallel_for(rest.size(), opt.threads, 128, [&](std::size_t u) {
-      const std::size_t t = rest[u];
-      const Task& task = tasks[t];
-      PairOutcome& o = outcome[t];
-      const BodyCache<H>& ca = cache[task.a];
-      const BodyCache<H>& cb = cache[task.b];
-      if (exact) {
-        o.status = generic_status<Rational, H>(ca.ar, cb.ar);
-      } else if (fast_double && axes[task.a] && axes[task.b]) {
-        if constexpr (d == 3)
-          o.status =
-              static_status(Ellipsoid{*axes[task.a], ca.pose}, Ellipsoid{*axes[task.b], cb.pose}, opt.solve.arith);
-        else
-          o.status = static_status(Ellipse{*axes[task.a], ca.pose}, Ellipse{*axes[task.b], cb.pose}, opt.solve.arith);
-      } else {
-        o.status = generic_status<Interval, H>(ca.ai, cb.ai);
-        if (o.status == Status::uncertain && kind == Arithmetic::Certified) {  // the exact status
-          const auto& pa = anim.bodies[task.a].poses[k];
-          const auto& pb = anim.bodies[task.b].poses[k];
-          o.status = generic_status<Rational, H>(
-              world_at_pose<Rational, H>(pose_matrix<Rational, H>(pa), Qr[task.a], diag[task.a]),
-              world_at_pose<Rational, H>(pose_matrix<Rational, H>(pb), Qr[task.b], diag[task.b]));
-        }
-      }
-    });
-    // Pass 3: a new plane for each pair found separate (000 section 3), kept for the next pose.
-    if (opt.planes) {
-      for (std::size_t t : rest)
-        if (outcome[t].status == Status::separate) separate.push_back(t);
-      prepare(separate, 1 | 4);
-      parallel_for(separate.size(), opt.threads, 16, [&](std::size_t u) {
-        const std::size_t t = separate[u];
-        PairOutcome& o = outcome[t];
-        const BodyCache<H>& ca = cache[tasks[t].a];
-        const BodyCache<H>& cb = cache[tasks[t].b];
-        const auto plane = exact ? build_plane<H>(midpoints<H>(ca.ar), midpoints<H>(cb.ar))
-                                 : build_plane<H>(midpoints<H>(ca.ai), midpoints<H>(cb.ai));
-        if (plane) {
-          std::array<double, 4> p{};
-          for (int i = 0; i < H; ++i) p[i] = (*plane)[i];
-          o.plane = p;
-          o.built = true;
-        } else {
-          o.build_failed = true;
-        }
-      });
-    }
-    // Results in the order of pairs; the planes kept for the next pose.
-    next_kept.clear();
-    for (std::size_t t = 0; t < tasks.size(); ++t) {
-      const Task& task = tasks[t];
-      const PairOutcome& o = outcome[t];
-      if (o.plane) next_kept.emplace_back(task.pair, *o.plane);
-      res.plane_checks += o.checked_plane;
-      res.planes_built += o.built;
-      ps.planes_built += o.built;
-      res.plane_build_failed += o.build_failed;
-      if (o.by_plane)
-        ++ps.separating_plane;
-      else
-        ++ps.static_test;
-      PairPoseStatus st{k, task.a, task.b, o.status, o.by_plane};
-      if (opt.keep_tested) res.tested.push_back(st);
-      if (o.status == Status::uncertain) {
-        res.undecided.push_back({k, task.a, task.b,
-                                 "the static test's error bound cannot decide the status at this pose (arithmetic " +
-                                     res.arithmetic + ")"});
-        ++ps.undecided;
-      } else if (in_collision(o.status)) {
-        res.events.push_back(st);
-        ++ps.events;
-      }
-    }
-    std::swap(kept, next_kept);
+    stages.run(k, pose_tasks[k], ps, res);
     ps.seconds += std::chrono::duration<double>(SteadyClock::now() - t_pose).count();
     res.bounding_volumes += ps.bounding_volumes;
     res.separating_plane += ps.separating_plane;

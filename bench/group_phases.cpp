@@ -181,6 +181,97 @@ void register_phases_paper002_double() {
 }
 
 // Paper 002's example, exact projection, step by step.
+// Paper 002, exact projection: the rest of ccd_projection. At every interior root the touch rule
+// (negative_multiple_root) asks for signs of subresultant coefficients s(j, i) there, and every cell is decided by
+// the exact static test at its sample. The plan (which s(j, i), which samples) is recorded once.
+struct ExactTouchPlan {
+  std::vector<AlgebraicRoot> roots;  // interior roots
+  std::vector<std::pair<int, int>> needed;
+  std::vector<std::tuple<std::size_t, int, int>> calls;  // (root, j, i)
+  std::map<std::pair<int, int>, Poly<Rational>> s;
+  std::vector<Rational> samples;  // 0, the cell samples, 1
+};
+
+ExactTouchPlan exact_touch_plan(const std::vector<Poly<Rational>>& g, const Poly<Rational>& projection) {
+  ExactPolicy pol;
+  ExactTouchPlan pl;
+  for (auto& r : pol.roots(projection, false))
+    if (!pol.at_zero(r) && !pol.at_one(r)) pl.roots.push_back(r);
+  for (std::size_t n = 0; n < pl.roots.size(); ++n)
+    negative_multiple_root(0, [&](int j, int i) {
+      auto key = std::make_pair(j, i);
+      if (!pl.s.count(key)) {
+        pl.s[key] = subresultant_evidence(g, j, i);
+        pl.needed.push_back(key);
+      }
+      pl.calls.emplace_back(n, j, i);
+      return pol.sign_at(pl.s[key], pl.roots[n]);
+    });
+  pl.samples.push_back(Rational(0));
+  for (std::size_t i = 0; i <= pl.roots.size(); ++i)
+    pl.samples.push_back(
+        pol.sample_between(i ? &pl.roots[i - 1] : nullptr, i < pl.roots.size() ? &pl.roots[i] : nullptr));
+  pl.samples.push_back(Rational(1));
+  return pl;
+}
+
+// The rows of the touch rule's and the static tests' work (the plan's).
+void add_exact_touch_rows(const std::string& grp, std::shared_ptr<Lazy<std::vector<Poly<Rational>>>> gx,
+                          std::shared_ptr<Lazy<ExactTouchPlan>> plan) {
+  row(grp, "4 s(j,i) build (those the touch rule asks for)", false, Cost::slow,
+      "ExactPolicy::build of subresultant_evidence(g, j, i) (FLINT, as the pipeline), for each distinct (j, i) asked "
+      "at the roots",
+      [grp, gx, plan](benchmark::State& st) {
+        const auto& g = gx->get();
+        const ExactTouchPlan& pl = plan->get();
+        timed(
+            st, grp + "/4 s(j,i) build (those the touch rule asks for)",
+            [&] {
+              std::vector<Poly<Rational>> out;
+              for (auto [j, i] : pl.needed)
+                out.push_back(ExactPolicy().build(g, [j, i](const auto& G) { return subresultant_evidence(G, j, i); }));
+              return out;
+            },
+            [&](const auto&) {
+              json j = json::array();
+              for (auto [a, b] : pl.needed)
+                j.push_back(subresultant_evidence_name(a, b) + " of degree " +
+                            std::to_string(pl.s.at({a, b}).degree()));
+              return json{{"built", j}, {"interior_roots", pl.roots.size()}};
+            });
+      });
+  row(grp, "5 signs of s(j,i) at the roots", false, Cost::slow,
+      "ExactPolicy::sign_at (CGAL sign at an algebraic number)", [grp, plan](benchmark::State& st) {
+        const ExactTouchPlan& pl = plan->get();
+        ExactPolicy pol;
+        timed(
+            st, grp + "/5 signs of s(j,i) at the roots",
+            [&] {
+              int n = 0;
+              for (auto [r, j, i] : pl.calls) n += int(pol.sign_at(pl.s.at({j, i}), pl.roots[r]));
+              return n;
+            },
+            [&](int) {
+              return json{{"sign_evaluations", pl.calls.size()}};
+            });
+      });
+  row(grp, "6 static tests at 0, the cell samples and 1", false, Cost::slow, "quartic_status_at (exact Sturm count)",
+      [grp, gx, plan](benchmark::State& st) {
+        const auto& g = gx->get();
+        const ExactTouchPlan& pl = plan->get();
+        timed(
+            st, grp + "/6 static tests at 0, the cell samples and 1",
+            [&] {
+              int n = 0;
+              for (const auto& t : pl.samples) n += int(quartic_status_at(g, t));
+              return n;
+            },
+            [&](int) {
+              return json{{"static_tests", pl.samples.size()}};
+            });
+      });
+}
+
 void register_phases_paper002_exact() {
   // 3D paper 002, exact projection.
   std::string grp = "phases-paper002-exact";
@@ -233,92 +324,8 @@ void register_phases_paper002_exact() {
               return json{{"roots", r.size()}};
             });
       });
-  // The rest of ccd_projection: at every interior root the touch rule
-  // (negative_multiple_root) asks for signs of subresultant coefficients
-  // s(j, i) there, and every cell is decided by the exact static test at its
-  // sample. The plan (which s(j, i), which samples) is recorded once.
-  struct Plan {
-    std::vector<AlgebraicRoot> roots;  // interior roots
-    std::vector<std::pair<int, int>> needed;
-    std::vector<std::tuple<std::size_t, int, int>> calls;  // (root, j, i)
-    std::map<std::pair<int, int>, Poly<Rational>> s;
-    std::vector<Rational> samples;  // 0, the cell samples, 1
-  };
-  auto plan = std::make_shared<Lazy<Plan>>([gx, projx] {
-    const auto& g = gx->get();
-    ExactPolicy pol;
-    Plan pl;
-    for (auto& r : pol.roots(projx->get(), false))
-      if (!pol.at_zero(r) && !pol.at_one(r)) pl.roots.push_back(r);
-    for (std::size_t n = 0; n < pl.roots.size(); ++n)
-      negative_multiple_root(0, [&](int j, int i) {
-        auto key = std::make_pair(j, i);
-        if (!pl.s.count(key)) {
-          pl.s[key] = subresultant_evidence(g, j, i);
-          pl.needed.push_back(key);
-        }
-        pl.calls.emplace_back(n, j, i);
-        return pol.sign_at(pl.s[key], pl.roots[n]);
-      });
-    pl.samples.push_back(Rational(0));
-    for (std::size_t i = 0; i <= pl.roots.size(); ++i)
-      pl.samples.push_back(
-          pol.sample_between(i ? &pl.roots[i - 1] : nullptr, i < pl.roots.size() ? &pl.roots[i] : nullptr));
-    pl.samples.push_back(Rational(1));
-    return pl;
-  });
-  row(grp, "4 s(j,i) build (those the touch rule asks for)", false, Cost::slow,
-      "ExactPolicy::build of subresultant_evidence(g, j, i) (FLINT, as the pipeline), for each distinct (j, i) asked "
-      "at the roots",
-      [grp, gx, plan](benchmark::State& st) {
-        const auto& g = gx->get();
-        const Plan& pl = plan->get();
-        timed(
-            st, grp + "/4 s(j,i) build (those the touch rule asks for)",
-            [&] {
-              std::vector<Poly<Rational>> out;
-              for (auto [j, i] : pl.needed)
-                out.push_back(ExactPolicy().build(g, [j, i](const auto& G) { return subresultant_evidence(G, j, i); }));
-              return out;
-            },
-            [&](const auto&) {
-              json j = json::array();
-              for (auto [a, b] : pl.needed)
-                j.push_back(subresultant_evidence_name(a, b) + " of degree " +
-                            std::to_string(pl.s.at({a, b}).degree()));
-              return json{{"built", j}, {"interior_roots", pl.roots.size()}};
-            });
-      });
-  row(grp, "5 signs of s(j,i) at the roots", false, Cost::slow,
-      "ExactPolicy::sign_at (CGAL sign at an algebraic number)", [grp, plan](benchmark::State& st) {
-        const Plan& pl = plan->get();
-        ExactPolicy pol;
-        timed(
-            st, grp + "/5 signs of s(j,i) at the roots",
-            [&] {
-              int n = 0;
-              for (auto [r, j, i] : pl.calls) n += int(pol.sign_at(pl.s.at({j, i}), pl.roots[r]));
-              return n;
-            },
-            [&](int) {
-              return json{{"sign_evaluations", pl.calls.size()}};
-            });
-      });
-  row(grp, "6 static tests at 0, the cell samples and 1", false, Cost::slow, "quartic_status_at (exact Sturm count)",
-      [grp, gx, plan](benchmark::State& st) {
-        const auto& g = gx->get();
-        const Plan& pl = plan->get();
-        timed(
-            st, grp + "/6 static tests at 0, the cell samples and 1",
-            [&] {
-              int n = 0;
-              for (const auto& t : pl.samples) n += int(quartic_status_at(g, t));
-              return n;
-            },
-            [&](int) {
-              return json{{"static_tests", pl.samples.size()}};
-            });
-      });
+  auto plan = std::make_shared<Lazy<ExactTouchPlan>>([gx, projx] { return exact_touch_plan(gx->get(), projx->get()); });
+  add_exact_touch_rows(grp, gx, plan);
 }
 
 void register_phases() {

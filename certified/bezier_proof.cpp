@@ -417,6 +417,87 @@ std::string where(double lo, double hi) {
   return "t in [" + decimal_string(mpq_class(lo), 12) + ", " + decimal_string(mpq_class(hi), 12) + "]";
 }
 
+// Neighbours of one kind merged (unproved strips into runs).
+std::vector<Strip> merged_strips(std::vector<Strip>& strips) {
+  std::vector<Strip> m;
+  for (auto& s : strips) {
+    if (!m.empty() && m.back().proved == s.proved && (!s.proved || m.back().kind == s.kind)) {
+      m.back().hi = s.hi;
+      for (auto& b : s.boxes) m.back().boxes.push_back(std::move(b));
+    } else {
+      m.push_back(std::move(s));
+    }
+  }
+  return m;
+}
+
+// The pieces of a proved strip: an out-strip is one piece (the boxes' t-ranges cover it); an in-strip one piece
+// per t-range (the contract: every box spans the piece's t-range).
+void add_proved_pieces(const Strip& s, std::vector<BezierPiece>& pieces) {
+  if (s.kind == BezierPiece::out) {
+    BezierPiece pc;
+    pc.kind = s.kind;
+    pc.lo = rat(s.lo);
+    pc.hi = rat(s.hi);
+    pc.boxes = s.boxes;
+    pieces.push_back(std::move(pc));
+    return;
+  }
+  for (const BezierBox& b : s.boxes) {
+    if (pieces.empty() || pieces.back().kind != BezierPiece::in || pieces.back().lo != b.t_lo) {
+      BezierPiece pc;
+      pc.kind = BezierPiece::in;
+      pc.lo = b.t_lo;
+      pc.hi = b.t_hi;
+      pieces.push_back(std::move(pc));
+    }
+    pieces.back().boxes.push_back(b);
+  }
+}
+
+// Why the unproved run m[i] cannot hold one end of a collision interval, or "" when it may (between an in- and an
+// out-run).
+std::string unprovable_run(const std::vector<Strip>& m, std::size_t i, const BezierProofOptions& options) {
+  const Strip& s = m[i];
+  const bool has_before = i > 0, has_after = i + 1 < m.size();
+  if (!has_before || !has_after)
+    return where(s.lo, s.hi) + ": nothing proved at " + (has_before ? "t = 1" : "t = 0") +
+           " (a touch, or a contact within 2^-" + std::to_string(options.strip_depth) + " of it)";
+  if (m[i - 1].kind == m[i + 1].kind)
+    return where(s.lo, s.hi) + std::string(": ") +
+           (m[i - 1].kind == BezierPiece::out
+                ? "separate on both sides: a touch, a near miss or a collision narrower than the strips"
+                : "overlapping on both sides: a touching gap or none") +
+           " (a tangency cannot be proved by intervals)";
+  return "";
+}
+
+// The timeline: instants at 0, the ends and 1; cells between them (with first_contact, up to the first end of a
+// collision). Counts the ends in n_ends.
+std::vector<TimelineNode> piece_timeline(const std::vector<BezierPiece>& pieces, bool first_contact, long& n_ends) {
+  auto status_of = [](BezierPiece::Kind k) { return k == BezierPiece::in ? Status::overlapping : Status::separate; };
+  std::vector<TimelineNode> seq;
+  const Status s0 = status_of(pieces.front().kind);
+  seq.push_back({exact_instant(0), s0, false});
+  Status cur = s0;
+  mpq_class cell_lo = 0;
+  for (const auto& pc : pieces) {
+    if (pc.kind != BezierPiece::end) continue;
+    const mpq_class blo = pc.bracket_lo, bhi = pc.bracket_hi;
+    const Instant end = bracketed_instant((blo + bhi) / 2, blo, bhi);
+    seq.push_back({exact_instant((cell_lo + blo) / 2), cur, true});
+    const Status next = cur == Status::separate ? Status::overlapping : Status::separate;
+    seq.push_back({end, Status::touching, false});
+    ++n_ends;
+    if (first_contact && next == Status::separate) return seq;
+    cur = next;
+    cell_lo = bhi;
+  }
+  seq.push_back({exact_instant((cell_lo + 1) / 2), cur, true});
+  seq.push_back({exact_instant(1), cur, false});
+  return seq;
+}
+
 }  // namespace
 
 BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOptions& options) {
@@ -439,88 +520,25 @@ BezierProofResult prove_bezier(const PreparedPair<4>& p, const BezierProofOption
   };
   std::vector<Strip> strips;
   if (!e.localise(strips)) return refuse("the localisation stopped: " + e.stop_reason(options));
-  // merge neighbours of one kind (unproved strips into runs)
-  std::vector<Strip> m;
-  for (auto& s : strips) {
-    if (!m.empty() && m.back().proved == s.proved && (!s.proved || m.back().kind == s.kind)) {
-      m.back().hi = s.hi;
-      for (auto& b : s.boxes) m.back().boxes.push_back(std::move(b));
-    } else {
-      m.push_back(std::move(s));
-    }
-  }
-  // pieces, ends proved; the timeline for the answer
+  const std::vector<Strip> m = merged_strips(strips);
+  // pieces, ends proved
   std::vector<BezierPiece> pieces;
-  std::vector<TimelineNode> seq;
-  long n_ends = 0;
-  auto status_of = [](BezierPiece::Kind k) { return k == BezierPiece::in ? Status::overlapping : Status::separate; };
-  bool stopped = false;
   for (std::size_t i = 0; i < m.size(); ++i) {
     const Strip& s = m[i];
-    if (s.proved && s.kind == BezierPiece::out) {  // one piece: the boxes' t-ranges cover it
-      BezierPiece pc;
-      pc.kind = s.kind;
-      pc.lo = rat(s.lo);
-      pc.hi = rat(s.hi);
-      pc.boxes = s.boxes;
-      pieces.push_back(std::move(pc));
+    if (s.proved) {
+      add_proved_pieces(s, pieces);
       continue;
     }
-    if (s.proved) {  // in: one piece per strip (the contract: every box spans the piece's t-range)
-      for (const BezierBox& b : s.boxes) {
-        if (pieces.empty() || pieces.back().kind != BezierPiece::in || pieces.back().lo != b.t_lo) {
-          BezierPiece pc;
-          pc.kind = BezierPiece::in;
-          pc.lo = b.t_lo;
-          pc.hi = b.t_hi;
-          pieces.push_back(std::move(pc));
-        }
-        pieces.back().boxes.push_back(b);
-      }
-      continue;
-    }
-    const bool has_before = i > 0, has_after = i + 1 < m.size();
-    if (!has_before || !has_after)
-      return refuse(where(s.lo, s.hi) + ": nothing proved at " + (has_before ? "t = 1" : "t = 0") +
-                    " (a touch, or a contact within 2^-" + std::to_string(options.strip_depth) + " of it)");
-    if (m[i - 1].kind == m[i + 1].kind)
-      return refuse(where(s.lo, s.hi) + std::string(": ") +
-                    (m[i - 1].kind == BezierPiece::out
-                         ? "separate on both sides: a touch, a near miss or a collision narrower than the strips"
-                         : "overlapping on both sides: a touching gap or none") +
-                    " (a tangency cannot be proved by intervals)");
+    const std::string unprovable = unprovable_run(m, i, options);
+    if (!unprovable.empty()) return refuse(unprovable);
     BezierPiece pc;
     const std::string why = e.prove_end(s.lo, s.hi, pc);
     if (!why.empty())
       return refuse(where(s.lo, s.hi) + ": an end of a collision interval lies here but is not proved: " + why);
     pieces.push_back(std::move(pc));
   }
-  // the timeline: instants at 0, the ends and 1; cells between them
-  const Status s0 = status_of(pieces.front().kind);
-  seq.push_back({exact_instant(0), s0, false});
-  Status cur = s0;
-  mpq_class cell_lo = 0;
-  for (const auto& pc : pieces) {
-    if (pc.kind != BezierPiece::end) continue;
-    const mpq_class blo = pc.bracket_lo, bhi = pc.bracket_hi;
-    const Instant end = bracketed_instant((blo + bhi) / 2, blo, bhi);
-    seq.push_back({exact_instant((cell_lo + blo) / 2), cur, true});
-    const Status next = cur == Status::separate ? Status::overlapping : Status::separate;
-    if (options.first_contact && next == Status::separate) {
-      seq.push_back({end, Status::touching, false});
-      ++n_ends;
-      stopped = true;
-      break;
-    }
-    seq.push_back({end, Status::touching, false});
-    ++n_ends;
-    cur = next;
-    cell_lo = bhi;
-  }
-  if (!stopped) {
-    seq.push_back({exact_instant((cell_lo + 1) / 2), cur, true});
-    seq.push_back({exact_instant(1), cur, false});
-  }
+  long n_ends = 0;
+  const std::vector<TimelineNode> seq = piece_timeline(pieces, options.first_contact, n_ends);
   assemble_answer(seq, r.answer, [](std::size_t) {});
   if (options.first_contact && r.answer.intervals.size() > 1) r.answer.intervals.resize(1);
   r.decided = true;

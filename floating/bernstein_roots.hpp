@@ -149,6 +149,69 @@ std::pair<V, V> refine_simple_root(std::span<const V> b, Sign sa, int max_iter, 
   return {lo, hi};
 }
 
+// A piece of the subdivision: q, the polynomial's Bernstein coefficients on [a, b] ⊂ [0, 1].
+template <class T>
+struct BernPiece {
+  Bern<T> q;
+  T a, b;
+};
+
+// Every coefficient of one strict sign: no root in the piece (convex hull property).
+template <class T>
+bool strict_one_sign(const Bern<T>& q) {
+  Sign s0 = sign(q.b.front());
+  if (s0 == Sign::zero || s0 == Sign::uncertain) return false;
+  for (const auto& x : q.b)
+    if (sign(x) != s0) return false;
+  return true;
+}
+
+// Appends r to the roots found so far (leftmost first). A root closer to the previous one than the arithmetic can
+// separate two roots (a perturbed double root splits by ~sqrt(eps)), or an unresolved one after an unresolved
+// one, joins it: one cluster.
+template <class T>
+void add_float_root(std::vector<FloatRoot<T>>& out, FloatRoot<T> r, const T& cluster_width, const T& half) {
+  if (!out.empty() && (!(r.lo - out.back().hi > cluster_width) || (r.unresolved && out.back().unresolved))) {
+    out.back().unresolved = out.back().unresolved || r.unresolved;
+    out.back().hi = r.hi;
+    out.back().value = point_of(T(half * (out.back().lo + out.back().hi)));
+    out.back().cluster = true;
+    return;
+  }
+  out.push_back(std::move(r));
+}
+
+// The piece pc holds exactly one simple root (end signs sa and -sa): modified regula falsi (Anderson-Björck),
+// which converges superlinearly, down to the working precision (simple_width of the piece). The root is proved to
+// be in the piece; only its location is refined, by the values' signs, so under a running bound this runs in the
+// plain arithmetic (the same values). A root the deadline stops is unresolved (and opt.stopped says so).
+template <class T>
+FloatRoot<T> located_simple_root(const BernPiece<T>& pc, Sign sa, const BernsteinRootOptions<T>& opt,
+                                 const T& simple_width, const T& zero, const T& one, const T& half, bool low_degree) {
+  using P = PlainOf<T>;
+  using V = typename P::type;
+  std::span<const V> values;
+  if constexpr (has_error_bound_v<T>) {
+    thread_local std::vector<V> plain;
+    plain.clear();
+    for (const auto& x : pc.q.b) plain.push_back(P::of(x));
+    values = std::span<const V>(plain);
+  } else {
+    values = std::span<const V>(pc.q.b);
+  }
+  bool out_of_time = false;
+  auto [lo_v, hi_v] = refine_simple_root<V>(values, sa, 4 * opt.precision_bits, P::of(simple_width), P::of(zero),
+                                            P::of(one), P::of(half), low_degree, out_of_time);
+  const T lo = P::lift(lo_v), hi = P::lift(hi_v);
+  const T w = pc.b - pc.a;
+  T rlo = point_of(T(pc.a + w * lo)), rhi = point_of(T(pc.a + w * hi));
+  if (out_of_time) {  // a root is in [rlo, rhi], but not located to the working precision: unresolved
+    opt.stopped = deadline_reason();
+    return {rlo, rhi, point_of(T(half * (rlo + rhi))), true, true};
+  }
+  return {rlo, rhi, point_of(T(half * (rlo + rhi))), false};
+}
+
 template <class T>
 std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootOptions<T>& opt) {
   const T& like = like_of(p.b);
@@ -167,32 +230,9 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
   const T simple_width = pow2(-((opt.simple_bits > 0 ? opt.simple_bits : opt.precision_bits) - 3));
   const T half = pow2(-1);
   std::vector<FloatRoot<T>> out;
+  auto add = [&](FloatRoot<T> r) { add_float_root(out, std::move(r), cluster_width, half); };
 
-  auto strict_one_sign = [](const Bern<T>& q) {
-    Sign s0 = sign(q.b.front());
-    if (s0 == Sign::zero || s0 == Sign::uncertain) return false;
-    for (const auto& x : q.b)
-      if (sign(x) != s0) return false;
-    return true;
-  };
-  auto add = [&](FloatRoot<T> r) {
-    if (!out.empty() && (!(r.lo - out.back().hi > cluster_width) || (r.unresolved && out.back().unresolved))) {
-      out.back().unresolved = out.back().unresolved || r.unresolved;
-      // closer to the previous one than the arithmetic can separate two
-      // roots (a perturbed double root splits by ~sqrt(eps)): one cluster
-      out.back().hi = r.hi;
-      out.back().value = point_of(T(half * (out.back().lo + out.back().hi)));
-      out.back().cluster = true;
-      return;
-    }
-    out.push_back(std::move(r));
-  };
-
-  struct Piece {
-    Bern<T> q;
-    T a, b;
-  };
-  std::vector<Piece> stack;  // depth-first, leftmost first
+  std::vector<BernPiece<T>> stack;  // depth-first, leftmost first
   for (const auto& x : p.b)
     if (!is_finite_value(x)) {  // NaN or Inf: nothing can be decided
       opt.stopped = "non-finite coefficient";
@@ -208,14 +248,14 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
                         ? deadline_reason()
                         : "root isolation stopped at its work bound of " + std::to_string(opt.max_pieces) + " pieces";
       while (!stack.empty()) {  // leftmost first: what is left is unresolved
-        Piece rest = std::move(stack.back());
+        BernPiece<T> rest = std::move(stack.back());
         stack.pop_back();
         if (strict_one_sign(rest.q)) continue;
         add({rest.a, rest.b, half * (rest.a + rest.b), true, true});
       }
       break;
     }
-    Piece pc = std::move(stack.back());
+    BernPiece<T> pc = std::move(stack.back());
     stack.pop_back();
     if (opt.first_only && !out.empty() && pc.a > out.back().hi) break;  // leftmost root is final
     if (strict_one_sign(pc.q)) continue;
@@ -235,32 +275,7 @@ std::vector<FloatRoot<T>> bernstein_roots(const Bern<T>& p, const BernsteinRootO
     // Descartes' rule needs every coefficient's sign: an uncertain one (a
     // running error bound) leaves the count unknown, and the piece is split.
     if (sign_variations(pc.q.b).is(1) && sa != Sign::zero && sb != Sign::zero && sa != sb) {
-      // exactly one simple root: modified regula falsi (Anderson-Björck), which
-      // converges superlinearly, down to the working precision. The root is proved
-      // to be in the piece; only its location is refined, by the values' signs, so
-      // under a running bound this runs in the plain arithmetic (the same values).
-      using P = PlainOf<T>;
-      using V = typename P::type;
-      std::span<const V> values;
-      if constexpr (has_error_bound_v<T>) {
-        thread_local std::vector<V> plain;
-        plain.clear();
-        for (const auto& x : pc.q.b) plain.push_back(P::of(x));
-        values = std::span<const V>(plain);
-      } else {
-        values = std::span<const V>(pc.q.b);
-      }
-      bool out_of_time = false;
-      auto [lo_v, hi_v] = refine_simple_root<V>(values, sa, 4 * opt.precision_bits, P::of(simple_width), P::of(zero),
-                                                P::of(one), P::of(half), low_degree, out_of_time);
-      const T lo = P::lift(lo_v), hi = P::lift(hi_v);
-      T rlo = point_of(T(pc.a + w * lo)), rhi = point_of(T(pc.a + w * hi));
-      if (out_of_time) {  // a root is in [rlo, rhi], but not located to the working precision: unresolved
-        opt.stopped = deadline_reason();
-        add({rlo, rhi, point_of(T(half * (rlo + rhi))), true, true});
-      } else {
-        add({rlo, rhi, point_of(T(half * (rlo + rhi))), false});
-      }
+      add(located_simple_root(pc, sa, opt, simple_width, zero, one, half, low_degree));
     } else if (!(w > cluster_width)) {
       add({pc.a, pc.b, half * (pc.a + pc.b), true});
     } else {

@@ -674,98 +674,120 @@ class BezierZeroSet {
     } else {
       // Out of work (the run's subdivision cap or its deadline): this gap is
       // undecided, with the reason; never guessed.
-      if (subdivisions >= opt_.max_subdivisions || out_of_time()) {
-        if (stopped.empty())
-          stopped = late_ ? deadline_reason()
-                          : "Bezier subdivision stopped at its work bound of " + std::to_string(opt_.max_subdivisions) +
-                                " subdivisions";
+      if (out_of_work()) {
         push_cell(a, b, Status::uncertain);
         return;
       }
       const bool sepa = sa == Status::separate, sepb = sb == Status::separate;
       const bool at_limit = depth >= opt_.max_depth || !(b - a > touch_tol_);
-      if ((sa == Status::touching && sepb) || (sepa && sb == Status::touching)) {
-        // A sample at a touch: separate up to it if shooting from the separate end reaches it.
-        Shot s = sepb ? shoot(b, a) : shoot(a, b);
-        T d = s.t - (sepb ? a : b);
-        if (sign(d) == Sign::negative) d = -d;
-        if (s.kind == ShotKind::miss || (s.kind == ShotKind::converged && !(d > touch_tol_)) || at_limit) {
-          push_cell(a, b, Status::separate);
-          return;
-        }
-        split_at(a, sa, mid(a, b), b, sb, depth);
-        return;
-      }
-      if (sepa && sepb) {
-        Shot f = shoot(a, b);
-        if (f.kind == ShotKind::miss) {
-          push_cell(a, b, Status::separate);
-          return;
-        }
-        Shot k = shoot(b, a);
-        if (k.kind == ShotKind::miss) {
-          push_cell(a, b, Status::separate);
-          return;
-        }
-        T gap = k.t - f.t;
-        if (!(gap > touch_tol_)) {  // both shots met: a tangential touch
-          T c = mid(f.t, k.t);
-          push_cell(a, c, Status::separate);
-          // With a running error bound a tangency is never sure (it may be a near-miss): undecided.
-          push_instant(c, has_error_bound_v<T> ? Status::uncertain : Status::touching);
-          push_cell(c, b, Status::separate);
-          return;
-        }
-        if (at_limit) {
-          T c = mid(f.t, k.t);
-          push_cell(a, c, Status::separate);
-          push_instant(c, Status::uncertain);
-          push_cell(c, b, Status::separate);
-          return;
-        }
-        split_at(a, sa, mid(f.t, k.t), b, sb, depth);
-        return;
-      }
-      if (sepa != sepb) {  // a transition
-        const T& from = sepa ? a : b;
-        const T& to = sepa ? b : a;
-        bool ok = at_limit || loop_free(a, b);
-        if (ok) {
-          Shot s = shoot(from, to);
-          // A miss here contradicts the overlapping end (by continuity there
-          // is a contact in between): rounding spoiled the shot, so split
-          // instead of guessing, unless at the resolution limit.
-          if (s.kind == ShotKind::converged || at_limit) {
-            T c = s.t;
-            Status cs = s.kind == ShotKind::inconclusive ? Status::uncertain : Status::touching;
-            if (s.kind == ShotKind::miss) c = to;  // no hit before the overlapping end: the contact is there
-            if (!(c > a)) c = a;
-            if (!(c < b)) c = b;
-            push_cell(a, c, sa == Status::touching ? Status::overlapping : sa);
-            push_instant(c, cs);
-            push_cell(c, b, sb == Status::touching ? Status::overlapping : sb);
-            return;
-          }
-        }
-        split_at(a, sa, mid(a, b), b, sb, depth);
-        return;
-      }
-      // both in collision
-      if (overlap_on(a, b)) {
-        ++overlap_certificates;
-        push_cell(a, b, Status::overlapping);
-        return;
-      }
-      // Below 2^-overlap_depth of a sample interval an uncertified overlapping
-      // pair of ends is accepted (a separate pocket that short is missed).
-      // With a running error bound that would be a guess: the cell is undecided.
-      if (at_limit || depth >= opt_.overlap_depth) {
-        ++overlap_unverified;
-        push_cell(a, b, has_error_bound_v<T> ? Status::uncertain : Status::overlapping);
-        return;
-      }
-      split_at(a, sa, mid(a, b), b, sb, depth);
+      if ((sa == Status::touching && sepb) || (sepa && sb == Status::touching))
+        resolve_touch_end(a, sa, b, sb, depth, at_limit);
+      else if (sepa && sepb)
+        resolve_separate_ends(a, sa, b, sb, depth, at_limit);
+      else if (sepa != sepb)
+        resolve_transition(a, sa, b, sb, depth, at_limit);
+      else
+        resolve_collision_ends(a, sa, b, sb, depth, at_limit);
     }
+  }
+
+  // The run's subdivision cap or its deadline reached (the first time, stopped says which).
+  bool out_of_work() {
+    if (subdivisions < opt_.max_subdivisions && !out_of_time()) return false;
+    if (stopped.empty())
+      stopped = late_ ? deadline_reason()
+                      : "Bezier subdivision stopped at its work bound of " + std::to_string(opt_.max_subdivisions) +
+                            " subdivisions";
+    return true;
+  }
+
+  // A sample at a touch next to a separate one: separate up to it if shooting from the separate end reaches it.
+  void resolve_touch_end(const T& a, Status sa, const T& b, Status sb, int depth, bool at_limit) {
+    const bool sepb = sb == Status::separate;
+    Shot s = sepb ? shoot(b, a) : shoot(a, b);
+    T d = s.t - (sepb ? a : b);
+    if (sign(d) == Sign::negative) d = -d;
+    if (s.kind == ShotKind::miss || (s.kind == ShotKind::converged && !(d > touch_tol_)) || at_limit) {
+      push_cell(a, b, Status::separate);
+      return;
+    }
+    split_at(a, sa, mid(a, b), b, sb, depth);
+  }
+
+  // Both ends separate: a shot from either end that misses proves the gap separate; shots that meet are a
+  // tangential touch.
+  void resolve_separate_ends(const T& a, Status sa, const T& b, Status sb, int depth, bool at_limit) {
+    Shot f = shoot(a, b);
+    if (f.kind == ShotKind::miss) {
+      push_cell(a, b, Status::separate);
+      return;
+    }
+    Shot k = shoot(b, a);
+    if (k.kind == ShotKind::miss) {
+      push_cell(a, b, Status::separate);
+      return;
+    }
+    T gap = k.t - f.t;
+    if (!(gap > touch_tol_)) {  // both shots met: a tangential touch
+      T c = mid(f.t, k.t);
+      push_cell(a, c, Status::separate);
+      // With a running error bound a tangency is never sure (it may be a near-miss): undecided.
+      push_instant(c, has_error_bound_v<T> ? Status::uncertain : Status::touching);
+      push_cell(c, b, Status::separate);
+      return;
+    }
+    if (at_limit) {
+      T c = mid(f.t, k.t);
+      push_cell(a, c, Status::separate);
+      push_instant(c, Status::uncertain);
+      push_cell(c, b, Status::separate);
+      return;
+    }
+    split_at(a, sa, mid(f.t, k.t), b, sb, depth);
+  }
+
+  // One end separate, the other in collision: the contact is where a shot from the separate end hits.
+  void resolve_transition(const T& a, Status sa, const T& b, Status sb, int depth, bool at_limit) {
+    const bool sepa = sa == Status::separate;
+    const T& from = sepa ? a : b;
+    const T& to = sepa ? b : a;
+    bool ok = at_limit || loop_free(a, b);
+    if (ok) {
+      Shot s = shoot(from, to);
+      // A miss here contradicts the overlapping end (by continuity there
+      // is a contact in between): rounding spoiled the shot, so split
+      // instead of guessing, unless at the resolution limit.
+      if (s.kind == ShotKind::converged || at_limit) {
+        T c = s.t;
+        Status cs = s.kind == ShotKind::inconclusive ? Status::uncertain : Status::touching;
+        if (s.kind == ShotKind::miss) c = to;  // no hit before the overlapping end: the contact is there
+        if (!(c > a)) c = a;
+        if (!(c < b)) c = b;
+        push_cell(a, c, sa == Status::touching ? Status::overlapping : sa);
+        push_instant(c, cs);
+        push_cell(c, b, sb == Status::touching ? Status::overlapping : sb);
+        return;
+      }
+    }
+    split_at(a, sa, mid(a, b), b, sb, depth);
+  }
+
+  // Both ends in collision: overlapping if certified so on (a, b).
+  void resolve_collision_ends(const T& a, Status sa, const T& b, Status sb, int depth, bool at_limit) {
+    if (overlap_on(a, b)) {
+      ++overlap_certificates;
+      push_cell(a, b, Status::overlapping);
+      return;
+    }
+    // Below 2^-overlap_depth of a sample interval an uncertified overlapping
+    // pair of ends is accepted (a separate pocket that short is missed).
+    // With a running error bound that would be a guess: the cell is undecided.
+    if (at_limit || depth >= opt_.overlap_depth) {
+      ++overlap_unverified;
+      push_cell(a, b, has_error_bound_v<T> ? Status::uncertain : Status::overlapping);
+      return;
+    }
+    split_at(a, sa, mid(a, b), b, sb, depth);
   }
 
   void split_at(const T& a, Status sa, const T& m, const T& b, Status sb, int depth) {

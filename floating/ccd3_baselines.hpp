@@ -211,6 +211,75 @@ bool begin_run(std::vector<Bern<T>>& g, const T& like, int N, bool first_contact
   return false;
 }
 
+// Marching (ccd_marching): a row's status from F's values on it (positive somewhere: separate).
+template <class T>
+Status marching_row_status(const std::vector<T>& v) {
+  bool unsure = false;
+  for (const auto& x : v) {
+    Sign s = sign(x);
+    if (s == Sign::positive) return Status::separate;
+    if (s == Sign::uncertain) unsure = true;
+  }
+  return unsure ? Status::uncertain : Status::overlapping;
+}
+
+// The zero of the linear interpolant on the vertical edge u = u_i (f0 and f1 of opposite classes).
+template <class T>
+T marching_crossing(const T& t0, const T& t1, const T& f0, const T& f1) {
+  T d = f0 - f1;
+  T r = f0 / d;
+  T h = t1 - t0;
+  T off = h * r;
+  T c = t0 + off;
+  return c;
+}
+
+// The extreme t of the contour in the strip between rows t0 (values v0) and t1 (values v1) where a collision
+// starts (the latest crossing) or ends (the earliest) (see the prose block).
+template <class T>
+std::optional<T> contour_extreme(bool starts, const T& t0, const T& t1, const std::vector<T>& v0,
+                                 const std::vector<T>& v1) {
+  const std::vector<T>& inside = starts ? v0 : v1;
+  std::optional<T> c;
+  for (std::size_t i = 0; i < inside.size(); ++i) {
+    if (sign(inside[i]) != Sign::positive) continue;
+    T ci = marching_crossing(t0, t1, v0[i], v1[i]);
+    if (!c || (starts ? *c < ci : ci < *c)) c = ci;
+  }
+  return c;
+}
+
+// The timeline over the strip from row j (t0, status s0; seq.back()) to row j + 1 (t1, s1) where a collision
+// starts or ends at the contour's extreme t = c. Returns true when the run stops there (first_contact_only).
+template <class T>
+bool march_transition(std::vector<TimelineNode>& seq, PipelineResult<T>& res, bool starts, bool ends, const T& t0,
+                      const T& t1, Status s0, Status s1, const T& c, int j, int& last_critical_row,
+                      bool first_contact_only, const T& like) {
+  const bool on_row = starts ? !(c < t1) : !(t0 < c);  // c is the collision row itself
+  if (on_row && starts) {                              // c == t_{j+1}: row j+1 is where the collision starts
+    seq.push_back({cell_instant(t0, t1, like), Status::separate, true});
+    seq.push_back({uncertified_instant(t1), Status::touching, false});
+    res.critical.push_back({seq.back().t, Status::touching, 0});
+    last_critical_row = j + 1;
+    return false;
+  }
+  if (on_row) {  // c == t_j: row j (seq.back()) is where the collision ends
+    seq.back().status = Status::touching;
+    if (last_critical_row != j) res.critical.push_back({seq.back().t, Status::touching, 0});
+    last_critical_row = j;
+    if (first_contact_only) return true;
+    seq.push_back({cell_instant(t0, t1, like), Status::separate, true});
+    seq.push_back({uncertified_instant(t1), s1, false});
+    return false;
+  }
+  seq.push_back({cell_instant(t0, c, like), s0, true});
+  seq.push_back({uncertified_instant(c), Status::touching, false});
+  res.critical.push_back({seq.back().t, Status::touching, 0});
+  if (ends && first_contact_only) return true;
+  seq.push_back({cell_instant(c, t1, like), s1, true});
+  seq.push_back({uncertified_instant(t1), s1, false});
+  return false;
+}
 }  // namespace baseline_detail
 
 template <class T>
@@ -273,29 +342,11 @@ PipelineResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int
     for (const auto& ui : u) v.push_back(q(ui));
     return v;
   };
-  auto row_status = [](const std::vector<T>& v) {
-    bool unsure = false;
-    for (const auto& x : v) {
-      Sign s = sign(x);
-      if (s == Sign::positive) return Status::separate;
-      if (s == Sign::uncertain) unsure = true;
-    }
-    return unsure ? Status::uncertain : Status::overlapping;
-  };
-  // The zero of the linear interpolant on the vertical edge u = u_i (f0 and f1 of opposite classes).
-  auto crossing = [](const T& t0, const T& t1, const T& f0, const T& f1) {
-    T d = f0 - f1;
-    T r = f0 / d;
-    T h = t1 - t0;
-    T off = h * r;
-    T c = t0 + off;
-    return c;
-  };
 
   std::vector<TimelineNode> seq;
   T t0 = grid_value(0, N, like);
   std::vector<T> v0 = row_values(t0);
-  Status s0 = row_status(v0);
+  Status s0 = marching_row_status(v0);
   res.status_at_0 = s0;
   res.cells.push_back({uncertified_instant(t0), s0});
   seq.push_back({uncertified_instant(t0), s0, false});
@@ -313,40 +364,14 @@ PipelineResult<T> ccd_marching(const std::vector<Bern<T>>& g, const T& like, int
     }
     T t1 = grid_value(j + 1, N, like);
     std::vector<T> v1 = row_values(t1);
-    Status s1 = row_status(v1);
+    Status s1 = marching_row_status(v1);
     res.cells.push_back({uncertified_instant(t1), s1});
     const bool starts = s0 == Status::separate && in_collision(s1);
     const bool ends = in_collision(s0) && s1 == Status::separate;
     if (starts || ends) {
-      // the extreme t of the contour in the strip (see the prose block)
-      const std::vector<T>& inside = starts ? v0 : v1;
-      std::optional<T> c;
-      for (int i = 0; i <= N; ++i) {
-        if (sign(inside[i]) != Sign::positive) continue;
-        T ci = crossing(t0, t1, v0[i], v1[i]);
-        if (!c || (starts ? *c < ci : ci < *c)) c = ci;
-      }
-      const bool on_row = starts ? !(*c < t1) : !(t0 < *c);  // c is the collision row itself
-      if (on_row && starts) {                                // c == t_{j+1}: row j+1 is where the collision starts
-        seq.push_back({cell_instant(t0, t1, like), Status::separate, true});
-        seq.push_back({uncertified_instant(t1), Status::touching, false});
-        res.critical.push_back({seq.back().t, Status::touching, 0});
-        last_critical_row = j + 1;
-      } else if (on_row) {  // c == t_j: row j (seq.back()) is where the collision ends
-        seq.back().status = Status::touching;
-        if (last_critical_row != j) res.critical.push_back({seq.back().t, Status::touching, 0});
-        last_critical_row = j;
-        if (first_contact_only) break;
-        seq.push_back({cell_instant(t0, t1, like), Status::separate, true});
-        seq.push_back({uncertified_instant(t1), s1, false});
-      } else {
-        seq.push_back({cell_instant(t0, *c, like), s0, true});
-        seq.push_back({uncertified_instant(*c), Status::touching, false});
-        res.critical.push_back({seq.back().t, Status::touching, 0});
-        if (ends && first_contact_only) break;
-        seq.push_back({cell_instant(*c, t1, like), s1, true});
-        seq.push_back({uncertified_instant(t1), s1, false});
-      }
+      const std::optional<T> c = contour_extreme(starts, t0, t1, v0, v1);
+      if (march_transition(seq, res, starts, ends, t0, t1, s0, s1, *c, j, last_critical_row, first_contact_only, like))
+        break;
     } else {
       seq.push_back({cell_instant(t0, t1, like), cell_between_samples(s0, s1), true});
       seq.push_back({uncertified_instant(t1), s1, false});

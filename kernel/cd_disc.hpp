@@ -200,6 +200,102 @@ auto discriminant_of(const std::vector<Poly<T>>& g, const Policy& pol) {
   }
 }
 
+// Δ ≡ 0 (Corollary 7): the collision set is [0, 1]; touching where the double root P/(2D) is negative, decided in
+// the cells between the roots of P·D.
+template <class T, PipelinePolicy<T> Policy, class Rep>
+void cd_disc_identically_zero(PipelineResult<T>& res, Policy& pol, const Rep& P, const Rep& D, const Instant& i0,
+                              const Instant& i1) {
+  Answer& ans = res.answer;
+  res.projection_identically_zero = true;
+  ans.collides = true;
+  ans.intervals.push_back({i0, i1});
+  ans.first_contact = i0;
+  auto PD = build_cubic(pol, res.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+    return double_root_numerator(g3, g2, g1, g0) * double_root_denominator(g3, g2, g1);
+  });
+  if (pol.identically_zero(PD)) return;
+  auto rts = pol.roots(PD, false);
+  for (std::size_t i = 0; i <= rts.size(); ++i) {
+    T s = pol.sample_between(i ? &rts[i - 1] : nullptr, i < rts.size() ? &rts[i] : nullptr);
+    Status st = status_at_multiple_root(pol.sign_at_value(P, s), pol.sign_at_value(D, s));
+    res.cells.push_back({pol.instant_at(s), st});
+    if (st == Status::touching)
+      ans.contact_intervals.push_back({i ? pol.instant(rts[i - 1]) : i0, i < rts.size() ? pol.instant(rts[i]) : i1});
+  }
+}
+
+// Variants 1 and 2 (003 VI-C) when the disks start separate: the first root of Δ is the first contact.
+template <class T, PipelinePolicy<T> Policy>
+void cd_disc_first_root(PipelineResult<T>& res, Policy& pol, const std::vector<typename Policy::Root>& rts) {
+  Answer& ans = res.answer;
+  if (!rts.empty() && policy_hooks::unresolved(rts.front())) {  // the first root is not known: undecided from there
+    ans.collides = false;
+    ans.undecided.push_back(pol.instant(rts.front()));
+    res.critical.push_back({pol.instant(rts.front()), Status::uncertain, 0});
+    return;
+  }
+  ans.collides = !rts.empty();
+  if (!rts.empty()) ans.first_contact = pol.instant(rts.front());
+  for (auto& r : rts) res.critical.push_back({pol.instant(r), Status::touching, 0});
+}
+
+// The timeline instant, cell, instant, ..., cell, instant over [0, 1] (kernel/collision_timeline.hpp) from the
+// roots rts of Δ: the ends by the static test (touching at a root of Δ there that P and D call a touch), the cells
+// by the static test at a sample (also into res.cells), the interior roots by P and D. node_root[k] is the root of
+// node k, if any.
+template <class T, PipelinePolicy<T> Policy, class Rep, class StatusAt>
+void cd_disc_timeline(PipelineResult<T>& res, Policy& pol, const std::vector<typename Policy::Root>& rts, const Rep& P,
+                      const Rep& D, const StatusAt& status_at, const T& zero, const T& one, const Instant& i0,
+                      const Instant& i1, std::vector<TimelineNode>& seq,
+                      std::vector<const typename Policy::Root*>& node_root) {
+  using Root = typename Policy::Root;
+  std::vector<const Root*> interior;
+  const Root* root0 = nullptr;
+  const Root* root1 = nullptr;
+  for (auto& r : rts) {
+    if (pol.at_zero(r))
+      root0 = &r;
+    else if (pol.at_one(r))
+      root1 = &r;
+    else
+      interior.push_back(&r);
+  }
+  auto root_status = [&](const Root& r) { return status_at_multiple_root(pol.sign_at(P, r), pol.sign_at(D, r)); };
+  auto endpoint_status = [&](const T& t, const Root* r) {
+    Status s = status_at(t);
+    if (r && root_status(*r) == Status::touching) s = Status::touching;
+    return s;
+  };
+  auto push = [&](TimelineNode n, const Root* r) {
+    seq.push_back(n);
+    node_root.push_back(r);
+  };
+  push({i0, endpoint_status(zero, root0), false}, root0);
+  for (std::size_t i = 0; i <= interior.size(); ++i) {
+    const Root* l = i ? interior[i - 1] : nullptr;
+    const Root* r = i < interior.size() ? interior[i] : nullptr;
+    T s = pol.sample_between(l, r);
+    Status cs = status_at(s);
+    push({pol.instant_at(s), cs, true}, nullptr);
+    res.cells.push_back({pol.instant_at(s), cs});
+    if (r) push({pol.instant(*r), root_status(*r), false}, r);
+  }
+  push({i1, endpoint_status(one, root1), false}, root1);
+}
+
+// Marks the timeline's isolated instants undecided (check_isolated_instants); returns why plain T left instants
+// undecided (collect_reasons).
+inline PlainUndecided settle_isolated_instants(std::vector<TimelineNode>& seq, bool exact) {
+  PlainUndecided plain = PlainUndecided::none;
+  std::size_t before = 0, after = 0;
+  for (const auto& n : seq) before += n.status == Status::uncertain;
+  if (before > 0) plain = plain | PlainUndecided::own_sign;
+  check_isolated_instants(seq, exact);
+  for (const auto& n : seq) after += n.status == Status::uncertain;
+  if (after > before) plain = plain | PlainUndecided::isolated;
+  return plain;
+}
+
 template <class T, PipelinePolicy<T> Policy>
 PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant variant = Variant::answer) {
   auto start = std::chrono::steady_clock::now();
@@ -234,27 +330,8 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
     undecided_everywhere(res, i0, i1, why);
     return finish();
   }
-
   if (pol.identically_zero(delta)) {
-    res.projection_identically_zero = true;
-    ans.collides = true;
-    ans.intervals.push_back({i0, i1});
-    ans.first_contact = i0;
-    // Touching where the double root P/(2D) is negative: cells between roots of P·D.
-    auto PD = build_cubic(pol, g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
-      return double_root_numerator(g3, g2, g1, g0) * double_root_denominator(g3, g2, g1);
-    });
-    if (!pol.identically_zero(PD)) {
-      auto rts = pol.roots(PD, false);
-      for (std::size_t i = 0; i <= rts.size(); ++i) {
-        T s = pol.sample_between(i ? &rts[i - 1] : nullptr, i < rts.size() ? &rts[i] : nullptr);
-        Status st = status_at_multiple_root(pol.sign_at_value(P, s), pol.sign_at_value(D, s));
-        res.cells.push_back({pol.instant_at(s), st});
-        if (st == Status::touching)
-          ans.contact_intervals.push_back(
-              {i ? pol.instant(rts[i - 1]) : i0, i < rts.size() ? pol.instant(rts[i]) : i1});
-      }
-    }
+    cd_disc_identically_zero(res, pol, P, D, i0, i1);
     return finish();
   }
 
@@ -268,65 +345,14 @@ PipelineResult<T> cd_disc(const MovingPair2<T>& pair, Policy& pol, Variant varia
   }
   auto rts = pol.roots(delta, first_only);
   if (first_only) {
-    if (!rts.empty() && policy_hooks::unresolved(rts.front())) {  // the first root is not known: undecided from there
-      ans.collides = false;
-      ans.undecided.push_back(pol.instant(rts.front()));
-      res.critical.push_back({pol.instant(rts.front()), Status::uncertain, 0});
-      return finish();
-    }
-    ans.collides = !rts.empty();
-    if (!rts.empty()) ans.first_contact = pol.instant(rts.front());
-    for (auto& r : rts) res.critical.push_back({pol.instant(r), Status::touching, 0});
+    cd_disc_first_root(res, pol, rts);
     return finish();
   }
 
-  // The timeline instant, cell, instant, ..., cell, instant over [0, 1]
-  // (kernel/collision_timeline.hpp); roots[k] is the root of node k, if any.
   std::vector<TimelineNode> seq;
   std::vector<const typename Policy::Root*> node_root;
-  std::vector<const typename Policy::Root*> interior;
-  const typename Policy::Root* root0 = nullptr;
-  const typename Policy::Root* root1 = nullptr;
-  for (auto& r : rts) {
-    if (pol.at_zero(r))
-      root0 = &r;
-    else if (pol.at_one(r))
-      root1 = &r;
-    else
-      interior.push_back(&r);
-  }
-  auto root_status = [&](const typename Policy::Root& r) {
-    return status_at_multiple_root(pol.sign_at(P, r), pol.sign_at(D, r));
-  };
-  auto endpoint_status = [&](const T& t, const typename Policy::Root* r) {
-    Status s = status_at(t);
-    if (r && root_status(*r) == Status::touching) s = Status::touching;
-    return s;
-  };
-  auto push = [&](TimelineNode n, const typename Policy::Root* r) {
-    seq.push_back(n);
-    node_root.push_back(r);
-  };
-  push({i0, endpoint_status(zero, root0), false}, root0);
-  for (std::size_t i = 0; i <= interior.size(); ++i) {
-    const typename Policy::Root* l = i ? interior[i - 1] : nullptr;
-    const typename Policy::Root* r = i < interior.size() ? interior[i] : nullptr;
-    T s = pol.sample_between(l, r);
-    Status cs = status_at(s);
-    push({pol.instant_at(s), cs, true}, nullptr);
-    res.cells.push_back({pol.instant_at(s), cs});
-    if (r) push({pol.instant(*r), root_status(*r), false}, r);
-  }
-  push({i1, endpoint_status(one, root1), false}, root1);
-  for (const auto& n : seq)
-    if (n.status == Status::uncertain) plain = plain | PlainUndecided::own_sign;
-  {
-    std::size_t before = 0, after = 0;
-    for (const auto& n : seq) before += n.status == Status::uncertain;
-    check_isolated_instants(seq, scalar_traits<T>::is_exact);
-    for (const auto& n : seq) after += n.status == Status::uncertain;
-    if (after > before) plain = plain | PlainUndecided::isolated;
-  }
+  cd_disc_timeline(res, pol, rts, P, D, status_at, zero, one, i0, i1, seq, node_root);
+  plain = settle_isolated_instants(seq, scalar_traits<T>::is_exact);
   res.timeline = seq;
   for (std::size_t k = 0; k < seq.size(); ++k)
     if (!seq[k].is_cell && node_root[k])

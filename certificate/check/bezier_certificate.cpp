@@ -491,6 +491,14 @@ struct BezierChecker {
     return r;
   }
 
+  // What the pieces hold, counted as they are checked.
+  struct PieceTally {
+    std::size_t nboxes = 0, n_in = 0, n_out = 0, n_end = 0;
+    long excl = 0;
+    std::vector<std::string> kinds;
+    std::vector<BNode> ends;
+  };
+
   void run() {
     const json& fmt = at(cert, "format", "certificate");
     if (fmt != "eccd-bezier-certificate/2")
@@ -499,15 +507,18 @@ struct BezierChecker {
     scene_claim();
     bits = int(whole(at(cert, "precision_bits", "certificate"), "precision_bits", 64, 1024));
     net_claim();
+    const PieceTally tally = pieces_claim();
+    answer_claim(cert, timeline_of(tally), kMaxRationalBits, kMaxRationalBits * 30103 / 100000 + 64, checked);
+  }
+
+  // The pieces cover [0, 1] in order, each proved as its kind says; an end lies between an in- and an out-piece.
+  PieceTally pieces_claim() {
     const json& items = at(cert, "pieces", "certificate");
     if (!items.is_array() || items.empty() || items.size() > kMaxPieces)
       reject("certificate format",
              "pieces: expected a non-empty list of at most " + std::to_string(kMaxPieces) + " pieces");
     mpq_class cursor = 0;
-    std::size_t nboxes = 0, n_in = 0, n_out = 0, n_end = 0;
-    long excl = 0;
-    std::vector<std::string> kinds;
-    std::vector<BNode> ends;
+    PieceTally tally;
     for (std::size_t k = 0; k < items.size(); ++k) {
       const json& it = items[k];
       const std::string name = "piece " + std::to_string(k + 1);
@@ -522,85 +533,110 @@ struct BezierChecker {
                claim + ": starts at " + q(lo) + ", the previous piece ends at " + q(cursor) + " (a gap or an overlap)");
       if (!(lo < hi) || hi > 1) reject("coverage", claim + ": not a range inside [0, 1]");
       cursor = hi;
-      kinds.push_back(kind.get<std::string>());
+      tally.kinds.push_back(kind.get<std::string>());
       if (kind == "end") {
-        end_piece(it, name, claim, lo, hi, ends, excl);
-        ++n_end;
+        end_piece(it, name, claim, lo, hi, tally.ends, tally.excl);
+        ++tally.n_end;
         continue;
       }
-      const json& boxes = at(it, "boxes", name);
-      if (!boxes.is_array() || boxes.empty()) reject("certificate format", name + ": boxes must be a non-empty list");
-      nboxes += boxes.size();
-      if (nboxes > kMaxBoxes) reject("certificate format", "pieces: more than " + std::to_string(kMaxBoxes) + " boxes");
       const bool in = kind == "in";
-      // in intervals of doubles from the net in doubles; MPFI (the strip restricted at precision_bits) only where they
-      // do not decide
-      const Net2<DI> strip_d = restrict_di(dF, 1, lo, hi);
-      std::optional<Net2<MI>> strip_m;
-      std::map<std::pair<mpq_class, mpq_class>, Net2<DI>> by_t_d;
-      std::map<std::pair<mpq_class, mpq_class>, Net2<MI>> by_t;
-      std::vector<std::array<mpq_class, 4>> bx;
-      for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const auto b = box4(boxes[i], name + " box " + std::to_string(i + 1));
-        if (!(0 <= b[0] && b[0] < b[1] && b[1] <= 1 && lo <= b[2] && b[2] < b[3] && b[3] <= hi))
-          reject("certificate format",
-                 name + " box " + std::to_string(i + 1) + ": not [u0, u1, t0, t1] inside [0, 1] x [lo, hi]");
-        const mpq_class t0 = (b[2] - lo) / (hi - lo), t1 = (b[3] - lo) / (hi - lo);
-        // in intervals of doubles first (widened outwards: a proof too), in MPFI when they do not decide
-        auto cd = by_t_d.find({t0, t1});
-        if (cd == by_t_d.end()) cd = by_t_d.emplace(std::make_pair(t0, t1), restrict_di(strip_d, 1, t0, t1)).first;
-        if (restrict_di(cd->second, 0, b[0], b[1]).strict_sign() == (in ? -1 : 1)) {
-          bx.push_back(b);
-          continue;
-        }
-        ++boxes_mpfi;
-        if (!strip_m) strip_m = restrict_mi(mF, 1, lo, hi);
-        auto cached = by_t.find({t0, t1});
-        if (cached == by_t.end()) cached = by_t.emplace(std::make_pair(t0, t1), restrict_mi(*strip_m, 1, t0, t1)).first;
-        const Net2<MI> g = restrict_mi(cached->second, 0, b[0], b[1]);
-        if (g.strict_sign() != (in ? -1 : 1))
-          reject(claim, "box " + std::to_string(i + 1) + " (u in [" + q(b[0]) + ", " + q(b[1]) + "], t in [" + q(b[2]) +
-                            ", " + q(b[3]) + "]): its control points are not all " + (in ? "< 0" : "> 0"));
-        bx.push_back(b);
-      }
-      auto covers = [](std::vector<std::pair<mpq_class, mpq_class>> r, const mpq_class& a, const mpq_class& b) {
-        std::sort(r.begin(), r.end());
-        mpq_class c = a;
-        for (const auto& [x, y] : r) {
-          if (x > c) break;
-          c = std::max(c, y);
-        }
-        return c >= b ? std::optional<mpq_class>() : std::optional<mpq_class>(c);
-      };
-      std::vector<std::pair<mpq_class, mpq_class>> tr;
-      if (in) {
-        std::map<std::pair<mpq_class, mpq_class>, std::vector<std::pair<mpq_class, mpq_class>>> groups;
-        for (const auto& b : bx) groups[{b[2], b[3]}].push_back({b[0], b[1]});
-        for (const auto& [t, us] : groups) {
-          if (auto c = covers(us, 0, 1))
-            reject(claim, "the boxes at t in [" + q(t.first) + ", " + q(t.second) +
-                              "]: their u-ranges do not cover [0, 1] (covered up to " + q(*c) + ")");
-          tr.push_back(t);
-        }
-      } else {
-        for (const auto& b : bx) tr.push_back({b[2], b[3]});
-      }
-      if (auto c = covers(tr, lo, hi))
-        reject(claim, "the boxes' t-ranges do not cover the piece (covered up to " + q(*c) + ")");
-      ++(in ? n_in : n_out);
+      box_piece(it, name, claim, lo, hi, in, tally.nboxes);
+      ++(in ? tally.n_in : tally.n_out);
     }
     if (cursor != 1) reject("coverage", "the pieces end at t = " + q(cursor) + ", not 1");
+    const std::vector<std::string>& kinds = tally.kinds;
     for (std::size_t k = 0; k < kinds.size(); ++k)
       if (kinds[k] == "end" && (k == 0 || k + 1 == kinds.size() || kinds[k - 1] == "end" || kinds[k + 1] == "end" ||
                                 kinds[k - 1] == kinds[k + 1]))
         reject("coverage", "piece " + std::to_string(k + 1) + ": an end must lie between an in-piece and an out-piece");
-    checked.push_back("pieces: " + std::to_string(n_in) + " in and " + std::to_string(n_out) + " out (" +
-                      std::to_string(nboxes) + " boxes, signs proved, " + std::to_string(boxes_mpfi) +
-                      " in MPFI) and " + std::to_string(n_end) + " ends (faces, Krawczyk, exclusion tree of " +
-                      std::to_string(excl) + " leaves, " + std::to_string(tree_mpfi) + " in MPFI) cover [0, 1]");
-    // the timeline: 0, cell, end, cell, ..., 1; cells alternate between overlapping (in) and separate (out)
+    checked.push_back("pieces: " + std::to_string(tally.n_in) + " in and " + std::to_string(tally.n_out) + " out (" +
+                      std::to_string(tally.nboxes) + " boxes, signs proved, " + std::to_string(boxes_mpfi) +
+                      " in MPFI) and " + std::to_string(tally.n_end) + " ends (faces, Krawczyk, exclusion tree of " +
+                      std::to_string(tally.excl) + " leaves, " + std::to_string(tree_mpfi) + " in MPFI) cover [0, 1]");
+    return tally;
+  }
+
+  // An in- or out-piece: F < 0 (in) or > 0 (out) on each box, and the boxes cover the piece.
+  void box_piece(const json& it, const std::string& name, const std::string& claim, const mpq_class& lo,
+                 const mpq_class& hi, bool in, std::size_t& nboxes) {
+    const json& boxes = at(it, "boxes", name);
+    if (!boxes.is_array() || boxes.empty()) reject("certificate format", name + ": boxes must be a non-empty list");
+    nboxes += boxes.size();
+    if (nboxes > kMaxBoxes) reject("certificate format", "pieces: more than " + std::to_string(kMaxBoxes) + " boxes");
+    check_box_cover(signed_boxes(boxes, name, claim, lo, hi, in), in, lo, hi, claim);
+  }
+
+  // The boxes, each with its sign proved: in intervals of doubles from the net in doubles (widened outwards: a
+  // proof too); MPFI (the strip restricted at precision_bits) only where they do not decide.
+  std::vector<std::array<mpq_class, 4>> signed_boxes(const json& boxes, const std::string& name,
+                                                     const std::string& claim, const mpq_class& lo, const mpq_class& hi,
+                                                     bool in) {
+    const Net2<DI> strip_d = restrict_di(dF, 1, lo, hi);
+    std::optional<Net2<MI>> strip_m;
+    std::map<std::pair<mpq_class, mpq_class>, Net2<DI>> by_t_d;
+    std::map<std::pair<mpq_class, mpq_class>, Net2<MI>> by_t;
+    std::vector<std::array<mpq_class, 4>> bx;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const auto b = box4(boxes[i], name + " box " + std::to_string(i + 1));
+      if (!(0 <= b[0] && b[0] < b[1] && b[1] <= 1 && lo <= b[2] && b[2] < b[3] && b[3] <= hi))
+        reject("certificate format",
+               name + " box " + std::to_string(i + 1) + ": not [u0, u1, t0, t1] inside [0, 1] x [lo, hi]");
+      const mpq_class t0 = (b[2] - lo) / (hi - lo), t1 = (b[3] - lo) / (hi - lo);
+      auto cd = by_t_d.find({t0, t1});
+      if (cd == by_t_d.end()) cd = by_t_d.emplace(std::make_pair(t0, t1), restrict_di(strip_d, 1, t0, t1)).first;
+      if (restrict_di(cd->second, 0, b[0], b[1]).strict_sign() == (in ? -1 : 1)) {
+        bx.push_back(b);
+        continue;
+      }
+      ++boxes_mpfi;
+      if (!strip_m) strip_m = restrict_mi(mF, 1, lo, hi);
+      auto cached = by_t.find({t0, t1});
+      if (cached == by_t.end()) cached = by_t.emplace(std::make_pair(t0, t1), restrict_mi(*strip_m, 1, t0, t1)).first;
+      const Net2<MI> g = restrict_mi(cached->second, 0, b[0], b[1]);
+      if (g.strict_sign() != (in ? -1 : 1))
+        reject(claim, "box " + std::to_string(i + 1) + " (u in [" + q(b[0]) + ", " + q(b[1]) + "], t in [" + q(b[2]) +
+                          ", " + q(b[3]) + "]): its control points are not all " + (in ? "< 0" : "> 0"));
+      bx.push_back(b);
+    }
+    return bx;
+  }
+
+  // Where the ranges r cover [a, b] from a: nothing if they do, else how far.
+  static std::optional<mpq_class> uncovered_from(std::vector<std::pair<mpq_class, mpq_class>> r, const mpq_class& a,
+                                                 const mpq_class& b) {
+    std::sort(r.begin(), r.end());
+    mpq_class c = a;
+    for (const auto& [x, y] : r) {
+      if (x > c) break;
+      c = std::max(c, y);
+    }
+    return c >= b ? std::optional<mpq_class>() : std::optional<mpq_class>(c);
+  }
+
+  // The boxes' t-ranges cover [lo, hi]; in an in-piece, the boxes of each t-range cover u in [0, 1] too.
+  static void check_box_cover(const std::vector<std::array<mpq_class, 4>>& bx, bool in, const mpq_class& lo,
+                              const mpq_class& hi, const std::string& claim) {
+    std::vector<std::pair<mpq_class, mpq_class>> tr;
+    if (in) {
+      std::map<std::pair<mpq_class, mpq_class>, std::vector<std::pair<mpq_class, mpq_class>>> groups;
+      for (const auto& b : bx) groups[{b[2], b[3]}].push_back({b[0], b[1]});
+      for (const auto& [t, us] : groups) {
+        if (auto c = uncovered_from(us, 0, 1))
+          reject(claim, "the boxes at t in [" + q(t.first) + ", " + q(t.second) +
+                            "]: their u-ranges do not cover [0, 1] (covered up to " + q(*c) + ")");
+        tr.push_back(t);
+      }
+    } else {
+      for (const auto& b : bx) tr.push_back({b[2], b[3]});
+    }
+    if (auto c = uncovered_from(tr, lo, hi))
+      reject(claim, "the boxes' t-ranges do not cover the piece (covered up to " + q(*c) + ")");
+  }
+
+  // The timeline: 0, cell, end, cell, ..., 1; cells alternate between overlapping (in) and separate (out).
+  static std::vector<BNode> timeline_of(const PieceTally& tally) {
     std::vector<BNode> seq;
-    St cur = kinds.front() == "in" ? St::overlapping : St::separate;
+    St cur = tally.kinds.front() == "in" ? St::overlapping : St::separate;
     auto point = [&](const mpq_class& x, bool cell, St s, const std::string& nm) {
       BNode b;
       b.lo = b.hi = x;
@@ -611,7 +647,7 @@ struct BezierChecker {
     };
     point(0, false, cur, "instant 0");
     mpq_class cell_lo = 0;
-    for (const BNode& e : ends) {
+    for (const BNode& e : tally.ends) {
       point((cell_lo + e.lo) / 2, true, cur, "the cell before " + e.name);
       seq.push_back(e);
       cur = cur == St::separate ? St::overlapping : St::separate;
@@ -619,7 +655,7 @@ struct BezierChecker {
     }
     point((cell_lo + 1) / 2, true, cur, "the last cell");
     point(1, false, cur, "instant 1");
-    answer_claim(cert, seq, kMaxRationalBits, kMaxRationalBits * 30103 / 100000 + 64, checked);
+    return seq;
   }
 };
 

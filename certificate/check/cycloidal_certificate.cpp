@@ -251,6 +251,20 @@ struct CycloidalChecker {
   };
 
   void run() {
+    check_header();
+    const std::size_t approx_chars = kMaxRationalBits * 30103 / 100000 + 64;
+    std::vector<Node> nodes = read_timeline(approx_chars);
+    check_timeline_order(nodes);
+    const json& aj = at(cert, "answer", "certificate");
+    check_incomplete_claim(nodes, aj);
+    check_instants(nodes);
+    check_gaps(nodes);
+    check_cells(nodes);
+    answer(nodes, aj, approx_chars);
+  }
+
+  // The format, the scene (the scene file's, 2D, static and cycloidal motions) and the enclosures' precision.
+  void check_header() {
     const json& fmt = at(cert, "format", "certificate");
     if (fmt != "eccd-cycloidal-certificate/2")
       reject("certificate format", "format: expected \"eccd-cycloidal-certificate/2\", got " + shown(fmt));
@@ -270,46 +284,61 @@ struct CycloidalChecker {
     cy.pi = cy.mk(0);
     mpfi_set_prec(cy.pi.get(), cy.bits);
     mpfi_const_pi(cy.pi.get());
+  }
 
-    // Timeline
+  // The timeline's entries, read and checked one by one (instant, cell, instant, ..., instant).
+  std::vector<Node> read_timeline(std::size_t approx_chars) const {
     const json& tl = at(cert, "timeline", "certificate");
     if (!tl.is_array() || tl.size() < 3 || tl.size() % 2 == 0 || tl.size() > kMaxTimeline)
       reject("timeline", "expected instant, cell, instant, ..., instant (an odd number >= 3 of entries, at most " +
                              std::to_string(kMaxTimeline) + ")");
-    const std::size_t approx_chars = kMaxRationalBits * 30103 / 100000 + 64;
     std::vector<Node> nodes;
-    for (std::size_t k = 0; k < tl.size(); ++k) {
-      const std::string place = "timeline[" + std::to_string(k) + "]";
-      Node n;
-      n.place = place;
-      n.entry = tl[k];
-      const json& st = at(tl[k], "status", place);
-      if (k % 2 == 1) {
-        n.lo = n.hi = rational(at(tl[k], "cell_sample", place), place + ".cell_sample", kMaxRationalBits);
-        n.cell = true;
-        n.kind = "cell";
-        n.name = "cell " + std::to_string(k / 2) + " (sample " + n.lo.get_str() + ")";
-        n.status = status_named(st, place + ".status");
-      } else {
-        const json& in = at(tl[k], "instant", place);
-        n.lo = rational(at(in, "lo", place + ".instant"), place + ".instant.lo", kMaxRationalBits);
-        n.hi = rational(at(in, "hi", place + ".instant"), place + ".instant.hi", kMaxRationalBits);
-        const json& kind = at(tl[k], "kind", place);
-        n.kind = kind.is_string() ? kind.get<std::string>() : "";
-        if (n.kind != "end" && n.kind != "simple_root" && n.kind != "undecided")
-          reject("certificate format", place + ".kind: expected \"end\", \"simple_root\" or \"undecided\"");
-        n.name = "instant " + std::to_string(k / 2) + " " + bracket_text(n.lo, n.hi);
-        if (n.kind == "undecided") {
-          if (st != "uncertain") reject(n.name, "an undecided stretch must have status \"uncertain\"");
-          n.undecided = true;
-        } else {
-          n.status = status_named(st, place + ".status");
-        }
-        if (n.lo > n.hi) reject(n.name, "lo > hi");
-        check_approx(at(in, "approx", place + ".instant"), n.lo, n.hi, n.name, place + ".instant.approx", approx_chars);
-      }
-      nodes.push_back(n);
+    for (std::size_t k = 0; k < tl.size(); ++k)
+      nodes.push_back(k % 2 == 1 ? cell_node(tl, k) : instant_node(tl, k, approx_chars));
+    return nodes;
+  }
+
+  static Node cell_node(const json& tl, std::size_t k) {
+    const std::string place = "timeline[" + std::to_string(k) + "]";
+    Node n;
+    n.place = place;
+    n.entry = tl[k];
+    const json& st = at(tl[k], "status", place);
+    n.lo = n.hi = rational(at(tl[k], "cell_sample", place), place + ".cell_sample", kMaxRationalBits);
+    n.cell = true;
+    n.kind = "cell";
+    n.name = "cell " + std::to_string(k / 2) + " (sample " + n.lo.get_str() + ")";
+    n.status = status_named(st, place + ".status");
+    return n;
+  }
+
+  static Node instant_node(const json& tl, std::size_t k, std::size_t approx_chars) {
+    const std::string place = "timeline[" + std::to_string(k) + "]";
+    Node n;
+    n.place = place;
+    n.entry = tl[k];
+    const json& st = at(tl[k], "status", place);
+    const json& in = at(tl[k], "instant", place);
+    n.lo = rational(at(in, "lo", place + ".instant"), place + ".instant.lo", kMaxRationalBits);
+    n.hi = rational(at(in, "hi", place + ".instant"), place + ".instant.hi", kMaxRationalBits);
+    const json& kind = at(tl[k], "kind", place);
+    n.kind = kind.is_string() ? kind.get<std::string>() : "";
+    if (n.kind != "end" && n.kind != "simple_root" && n.kind != "undecided")
+      reject("certificate format", place + ".kind: expected \"end\", \"simple_root\" or \"undecided\"");
+    n.name = "instant " + std::to_string(k / 2) + " " + bracket_text(n.lo, n.hi);
+    if (n.kind == "undecided") {
+      if (st != "uncertain") reject(n.name, "an undecided stretch must have status \"uncertain\"");
+      n.undecided = true;
+    } else {
+      n.status = status_named(st, place + ".status");
     }
+    if (n.lo > n.hi) reject(n.name, "lo > hi");
+    check_approx(at(in, "approx", place + ".instant"), n.lo, n.hi, n.name, place + ".instant.approx", approx_chars);
+    return n;
+  }
+
+  // From 0 to 1, ends only at the ends, samples strictly between disjoint brackets.
+  void check_timeline_order(const std::vector<Node>& nodes) {
     const Node &first = nodes.front(), &last = nodes.back();
     if (first.lo != 0 || (first.kind == "end" && first.hi != 0))
       reject("timeline", "the first instant must start at 0 (an end [0, 0], or a stretch from 0)");
@@ -325,64 +354,82 @@ struct CycloidalChecker {
                "disjoint");
     checked.push_back("timeline: " + std::to_string(nodes.size() / 2 + 1) + " instants and " +
                       std::to_string(nodes.size() / 2) + " cells in order, brackets disjoint");
+  }
 
-    // An incomplete certificate claims no more than it proves.
+  // An incomplete certificate claims no more than it proves.
+  static void check_incomplete_claim(const std::vector<Node>& nodes, const json& aj) {
     std::size_t undecided = 0;
     for (const auto& n : nodes) undecided += n.undecided;
-    const json& aj = at(cert, "answer", "certificate");
     if (undecided && aj.is_object() && aj.contains("collides") && aj["collides"] == false)
       reject("answer", "answer.collides is false but " + std::to_string(undecided) +
                            " stretch(es) of the timeline are undecided: an incomplete certificate may claim a "
                            "collision where one is proved "
                            "(true), otherwise only null (unknown), never false");
+  }
 
-    // Instants
+  // Each instant's claim: the static test at an end, a simple root of Δ and its status from P and D, or an
+  // undecided stretch with |Δ| <= epsilon.
+  void check_instants(const std::vector<Node>& nodes) {
     int roots = 0, stretches = 0;
     std::optional<mpq_class> whole_bound;
     for (std::size_t k = 0; k < nodes.size(); k += 2) {
-      Node& n = nodes[k];
+      const Node& n = nodes[k];
       if (n.kind == "end") {
-        const auto st = status_at(n.lo);
-        if (!st)
-          reject(n.name,
-                 "the static test at t = " + n.lo.get_str() + " is not proved at " + std::to_string(cy.bits) + " bits");
-        if (*st != n.status)
-          reject(n.name, std::string("the static test gives ") + name(*st) + ", not " + name(n.status) + " as claimed");
+        check_end(n);
       } else if (n.kind == "simple_root") {
         ++roots;
-        const int sl = delta(point(n.lo)).sign(), sh = delta(point(n.hi)).sign();
-        if (sl == 0 || sh == 0 || sl == sh) reject(n.name, "Delta at lo and hi are not proved of opposite signs");
-        if (delta_prime(n.lo, n.hi).sign() == 0)
-          reject(n.name,
-                 "Delta' is not proved non-zero on the bracket: it may hold more than one root, or a multiple one");
-        const auto st = status_at_root(n.lo, n.hi);
-        if (!st) reject(n.name, "the signs of P and D are not proved on the bracket");
-        if (*st != n.status)
-          reject(n.name, std::string("P and D give ") + name(*st) + ", not " + name(n.status) + " as claimed");
+        check_simple_root(n);
       } else {
         ++stretches;
-        const json& ej = at(n.entry, "epsilon", n.place);
-        mpq_class eps, unit;  // a decimal as the writer writes it (upper_decimal), or a rational "p/q"
-        if (!(ej.is_string() && read_decimal(ej.get<std::string>(), 400, eps, unit)))
-          eps = rational(ej, n.place + ".epsilon", kMaxRationalBits);
-        if (sgn(eps) < 0) reject(n.name, "epsilon must not be negative");
-        if (!whole_bound) whole_bound = magnitude_upper(0, 1);
-        if (eps * 1024 > *whole_bound)
-          reject(n.name,
-                 "epsilon is not small: more than 2^-10 of the checker's bound of |Delta| on [0, 1]; an undecided "
-                 "stretch claims Delta near 0");
-        const mpq_class bound = magnitude_upper(n.lo, n.hi);
-        if (bound > eps)
-          reject(n.name, "|Delta| <= epsilon on the stretch is not proved (the checker's enclosure bounds it by " +
-                             decimal_text(bound) + ", epsilon is " + decimal_text(eps) + ")");
+        check_stretch(n, whole_bound);
       }
     }
     checked.push_back("instants: " + std::to_string(roots) +
                       " simple root(s) proved (opposite signs of Delta at the bracket ends, Delta' non-zero "
                       "on it; status from P and D), the ends by the static test, " +
                       std::to_string(stretches) + " undecided stretch(es) with |Delta| <= epsilon proved");
+  }
 
-    // Gaps
+  void check_end(const Node& n) const {
+    const auto st = status_at(n.lo);
+    if (!st)
+      reject(n.name,
+             "the static test at t = " + n.lo.get_str() + " is not proved at " + std::to_string(cy.bits) + " bits");
+    if (*st != n.status)
+      reject(n.name, std::string("the static test gives ") + name(*st) + ", not " + name(n.status) + " as claimed");
+  }
+
+  void check_simple_root(const Node& n) const {
+    const int sl = delta(point(n.lo)).sign(), sh = delta(point(n.hi)).sign();
+    if (sl == 0 || sh == 0 || sl == sh) reject(n.name, "Delta at lo and hi are not proved of opposite signs");
+    if (delta_prime(n.lo, n.hi).sign() == 0)
+      reject(n.name, "Delta' is not proved non-zero on the bracket: it may hold more than one root, or a multiple one");
+    const auto st = status_at_root(n.lo, n.hi);
+    if (!st) reject(n.name, "the signs of P and D are not proved on the bracket");
+    if (*st != n.status)
+      reject(n.name, std::string("P and D give ") + name(*st) + ", not " + name(n.status) + " as claimed");
+  }
+
+  // whole_bound: the bound of |Δ| on [0, 1], computed at the first stretch.
+  void check_stretch(const Node& n, std::optional<mpq_class>& whole_bound) const {
+    const json& ej = at(n.entry, "epsilon", n.place);
+    mpq_class eps, unit;  // a decimal as the writer writes it (upper_decimal), or a rational "p/q"
+    if (!(ej.is_string() && read_decimal(ej.get<std::string>(), 400, eps, unit)))
+      eps = rational(ej, n.place + ".epsilon", kMaxRationalBits);
+    if (sgn(eps) < 0) reject(n.name, "epsilon must not be negative");
+    if (!whole_bound) whole_bound = magnitude_upper(0, 1);
+    if (eps * 1024 > *whole_bound)
+      reject(n.name,
+             "epsilon is not small: more than 2^-10 of the checker's bound of |Delta| on [0, 1]; an undecided "
+             "stretch claims Delta near 0");
+    const mpq_class bound = magnitude_upper(n.lo, n.hi);
+    if (bound > eps)
+      reject(n.name, "|Delta| <= epsilon on the stretch is not proved (the checker's enclosure bounds it by " +
+                         decimal_text(bound) + ", epsilon is " + decimal_text(eps) + ")");
+  }
+
+  // Δ has no root in [0, 1] outside the brackets: each gap, cut at the gap points, piece by piece as named.
+  void check_gaps(const std::vector<Node>& nodes) {
     const json& gp = at(cert, "gap_points", "certificate");
     const json& proofs = at(cert, "gap_proofs", "certificate");
     if (!gp.is_array() || gp.size() > kMaxGapPoints)
@@ -405,33 +452,39 @@ struct CycloidalChecker {
       cut.push_back(b);
       for (std::size_t i = 0; i + 1 < cut.size(); ++i, ++pieces) {
         if (pieces >= proofs.size()) reject("certificate format", "gap_proofs: fewer proofs than gap pieces");
-        const json& how = proofs[pieces];
-        const std::string where = "[" + cut[i].get_str() + ", " + cut[i + 1].get_str() + "]";
-        auto holds = [&](const std::string& proof) {
-          if (proof == "natural") return delta(range(cut[i], cut[i + 1])).sign() != 0;
-          if (proof == "mean_value") return mean_value(cut[i], cut[i + 1]).sign() != 0;
-          const int sa = delta(point(cut[i])).sign(), sb = delta(point(cut[i + 1])).sign();
-          return delta_prime(cut[i], cut[i + 1]).sign() != 0 && sa != 0 && sa == sb;
-        };
-        if (how != "natural" && how != "mean_value" && how != "monotone")
-          reject("certificate format",
-                 "gap_proofs[" + std::to_string(pieces) + "]: expected \"natural\", \"mean_value\" or \"monotone\"");
-        // the named proof first; the checker's enclosures are not the writer's, so the other two (a fixed, bounded
-        // list, no subdivision) may stand in when the named one is not proved at this precision
-        bool ok = holds(how.get<std::string>());
-        for (const char* other : {"natural", "mean_value", "monotone"})
-          if (!ok && how != other) ok = holds(other);
-        if (!ok)
-          reject("gaps", "Delta is not proved root-free on " + where + " (the " + how.get<std::string>() +
-                             " proof the certificate names, nor another)");
+        check_gap_piece(cut[i], cut[i + 1], proofs[pieces], pieces);
       }
     }
     if (used != pts.size()) reject("gaps", "gap point " + pts[used].get_str() + " is not strictly inside a gap");
     if (pieces != proofs.size()) reject("certificate format", "gap_proofs: more proofs than gap pieces");
     checked.push_back("gaps: Delta has no root in [0, 1] outside the brackets (" + std::to_string(pieces) +
                       " piece(s), each proved root-free as named)");
+  }
 
-    // Cells
+  // Δ is root-free on [a, b] by the proof `how` (gap_proofs[index]).
+  void check_gap_piece(const mpq_class& a, const mpq_class& b, const json& how, std::size_t index) const {
+    const std::string where = "[" + a.get_str() + ", " + b.get_str() + "]";
+    auto holds = [&](const std::string& proof) {
+      if (proof == "natural") return delta(range(a, b)).sign() != 0;
+      if (proof == "mean_value") return mean_value(a, b).sign() != 0;
+      const int sa = delta(point(a)).sign(), sb = delta(point(b)).sign();
+      return delta_prime(a, b).sign() != 0 && sa != 0 && sa == sb;
+    };
+    if (how != "natural" && how != "mean_value" && how != "monotone")
+      reject("certificate format",
+             "gap_proofs[" + std::to_string(index) + "]: expected \"natural\", \"mean_value\" or \"monotone\"");
+    // the named proof first; the checker's enclosures are not the writer's, so the other two (a fixed, bounded
+    // list, no subdivision) may stand in when the named one is not proved at this precision
+    bool ok = holds(how.get<std::string>());
+    for (const char* other : {"natural", "mean_value", "monotone"})
+      if (!ok && how != other) ok = holds(other);
+    if (!ok)
+      reject("gaps", "Delta is not proved root-free on " + where + " (the " + how.get<std::string>() +
+                         " proof the certificate names, nor another)");
+  }
+
+  // The static test at each cell's sample proves its status.
+  void check_cells(const std::vector<Node>& nodes) {
     for (std::size_t k = 1; k < nodes.size(); k += 2) {
       const auto st = status_at(nodes[k].lo);
       if (!st) reject(nodes[k].name, "the static test at the sample is not proved");
@@ -440,7 +493,6 @@ struct CycloidalChecker {
     }
     checked.push_back("cells: the static test at each of the " + std::to_string(nodes.size() / 2) +
                       " sample(s) proves the claimed status");
-    answer(nodes, aj, approx_chars);
   }
 
   // The answer of the checked timeline (docs/answer-format.md): undecided instants are listed and break runs;

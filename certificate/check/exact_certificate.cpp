@@ -228,12 +228,56 @@ struct Checker {
   // Returns false when the 2D discriminant vanishes identically.
   bool projection_claim() {
     const json& p = at(cert, "projection", "certificate");
+    std::vector<std::string> names{"discriminant"};
+    if (H == 4) names = {"discriminant", "psc_1", "psc_2", "psc_3"};
+    const int k = projection_index(p, names);
+    projection_k = k;
+    const bool zero = at(p, "identically_zero", "projection") == true;
+    if (!at(p, "identically_zero", "projection").is_boolean())
+      reject("certificate format", "projection.identically_zero: expected true or false");
+    const int bound = candidate_bound(k);
+    if (zero) {
+      if (H != 3) reject("projection", "a 3D certificate names a projection that vanishes identically");
+      for (int j = 0; j <= bound; ++j)
+        if (sgn(candidate_at(k, point(j, bound + 1))) != 0)
+          reject("projection", "the discriminant does not vanish identically (non-zero at t = " +
+                                   point(j, bound + 1).get_str() + ")");
+      checked.push_back("projection: the discriminant vanishes identically (values at " +
+                        std::to_string(std::max(bound, -1) + 1) + " points)");
+      return false;
+    }
+    const json& cj = at(p, "coefficients", "projection");
+    if (!cj.is_array() || cj.empty() || int(cj.size()) > bound + 1)  // P's degree: at most the candidate's
+      reject("projection",
+             "expected at most " + std::to_string(bound + 1) + " coefficients (the degree the scene allows)");
+    std::vector<mpq_class> c;
+    for (std::size_t i = 0; i < cj.size(); ++i)
+      c.push_back(rational(cj[i], "projection.coefficients[" + std::to_string(i) + "]", 1u << 20));
+    P = QPoly(std::move(c));
+    if (P.zero()) reject("projection", "the projection's coefficients are all zero but identically_zero is false");
+    if (whole(at(p, "degree", "projection"), "projection.degree", 0, 1 << 30) != P.degree())
+      reject("projection", "projection.degree differs from the degree of its coefficients");
+    const int points = std::max(bound, P.degree()) + 1;  // both sides have degree < points
+    const std::vector<mpz_class> p_values = projection_values(k, names[std::size_t(k)], points);
+    degree = std::size_t(P.degree());
+    const std::size_t tau = primitive_bits(P);
+    max_bits = std::min<std::size_t>(
+        4 * tau + 1024, std::max<std::size_t>(256, (std::size_t(1) << 24) / std::max<std::size_t>(degree * degree, 1)));
+    factor_bits = tau + 2 * degree + 64;
+    approx_chars = max_bits * 30103 / 100000 + 64;
+    checked.push_back("projection: " + names[std::size_t(k)] + " of degree " + std::to_string(degree) +
+                      ", a constant multiple of the one of f (values at " + std::to_string(points) + " points)" +
+                      (k ? ", the candidates before it vanish identically" : ""));
+    factors_claim(at(p, "square_free_factors", "projection"), points, p_values);
+    return true;
+  }
+
+  // The index k of the projection the certificate names in `names`; the candidates before it vanish identically.
+  int projection_index(const json& p, const std::vector<std::string>& names) const {
     const json& nm = at(p, "name", "projection");
     const json& vanishing = at(p, "vanishing", "projection");
     if (!vanishing.is_array() || vanishing.size() > 3)
       reject("certificate format", "projection.vanishing: expected an array of names");
-    std::vector<std::string> names{"discriminant"};
-    if (H == 4) names = {"discriminant", "psc_1", "psc_2", "psc_3"};
     int k = -1;
     for (std::size_t i = 0; i < names.size(); ++i)
       if (nm == names[i]) k = int(i);
@@ -250,59 +294,32 @@ struct Checker {
           reject("projection", names[std::size_t(i)] + " does not vanish identically (it is non-zero at t = " +
                                    point(j, count).get_str() + ")");
     }
-    projection_k = k;
-    const bool zero = at(p, "identically_zero", "projection") == true;
-    if (!at(p, "identically_zero", "projection").is_boolean())
-      reject("certificate format", "projection.identically_zero: expected true or false");
-    const int bound = candidate_bound(k);
-    if (zero) {
-      if (H != 3) reject("projection", "a 3D certificate names a projection that vanishes identically");
-      for (int j = 0; j <= bound; ++j)
-        if (sgn(candidate_at(k, point(j, bound + 1))) != 0)
-          reject("projection", "the discriminant does not vanish identically (non-zero at t = " +
-                                   point(j, bound + 1).get_str() + ")");
-      checked.push_back("projection: the discriminant vanishes identically (values at " +
-                        std::to_string(std::max(bound, -1) + 1) + " points)");
-      return false;
-    }
-    const int p_bound = bound;  // P's degree: at most the candidate's
-    const json& cj = at(p, "coefficients", "projection");
-    if (!cj.is_array() || cj.empty() || int(cj.size()) > p_bound + 1)
-      reject("projection",
-             "expected at most " + std::to_string(p_bound + 1) + " coefficients (the degree the scene allows)");
-    std::vector<mpq_class> c;
-    for (std::size_t i = 0; i < cj.size(); ++i)
-      c.push_back(rational(cj[i], "projection.coefficients[" + std::to_string(i) + "]", 1u << 20));
-    P = QPoly(std::move(c));
-    if (P.zero()) reject("projection", "the projection's coefficients are all zero but identically_zero is false");
-    if (whole(at(p, "degree", "projection"), "projection.degree", 0, 1 << 30) != P.degree())
-      reject("projection", "projection.degree differs from the degree of its coefficients");
+    return k;
+  }
+
+  // P is a constant multiple of candidate k (named `name`) at `points` integers; returns P's values there (times
+  // its denominators' lcm).
+  std::vector<mpz_class> projection_values(int k, const std::string& name, int points) const {
     const std::vector<mpz_class> PZ = integer_multiple(P, denominator_lcm(P));
     std::optional<std::pair<mpz_class, mpz_class>>
         ratio;  // (got, want) where want ≠ 0 first: got / want is the constant
-    const int points = std::max(bound, P.degree()) + 1;  // both sides have degree < points
-    std::vector<mpz_class> p_values;                     // P's values, for the factors below too
+    std::vector<mpz_class> p_values;
     for (int j = 0; j < points; ++j) {
       const mpz_class t = point(j, points), want = candidate_at(k, t);
       const mpz_class got = value_at(PZ, t);
       p_values.push_back(got);
       if (!ratio && sgn(want) != 0) ratio = std::make_pair(got, want);
       if (ratio ? got * ratio->second != ratio->first * want : sgn(got) != 0)
-        reject("projection", "P is not a constant multiple of the " + names[std::size_t(k)] +
-                                 " of f (they disagree at t = " + t.get_str() + ")");
+        reject("projection",
+               "P is not a constant multiple of the " + name + " of f (they disagree at t = " + t.get_str() + ")");
     }
-    if (!ratio)
-      reject("projection", names[std::size_t(k)] + " vanishes identically, but the certificate says it does not");
-    degree = std::size_t(P.degree());
-    const std::size_t tau = primitive_bits(P);
-    max_bits = std::min<std::size_t>(
-        4 * tau + 1024, std::max<std::size_t>(256, (std::size_t(1) << 24) / std::max<std::size_t>(degree * degree, 1)));
-    factor_bits = tau + 2 * degree + 64;
-    approx_chars = max_bits * 30103 / 100000 + 64;
-    checked.push_back("projection: " + names[std::size_t(k)] + " of degree " + std::to_string(degree) +
-                      ", a constant multiple of the one of f (values at " + std::to_string(points) + " points)" +
-                      (k ? ", the candidates before it vanish identically" : ""));
-    const json& fj = at(p, "square_free_factors", "projection");
+    if (!ratio) reject("projection", name + " vanishes identically, but the certificate says it does not");
+    return p_values;
+  }
+
+  // The square-free factors F: their degrees times multiplicities add up to P's, and their product is P up to a
+  // constant (at the `points` integers where P has p_values, points > degree).
+  void factors_claim(const json& fj, int points, const std::vector<mpz_class>& p_values) {
     if (!fj.is_array() || fj.empty() || fj.size() > degree)
       reject("factors", "expected a non-empty list of at most " + std::to_string(degree) + " factors");
     long long total = 0;
@@ -327,7 +344,7 @@ struct Checker {
     std::optional<std::pair<mpz_class, mpz_class>> r2;
     std::vector<std::vector<mpz_class>> FZ;
     for (const auto& fm : F) FZ.push_back(integer_multiple(fm.first, denominator_lcm(fm.first)));
-    for (int j = 0; j < points; ++j) {  // points > degree: the values of P above
+    for (int j = 0; j < points; ++j) {
       const mpz_class t = point(j, points);
       mpz_class prod = 1;
       for (std::size_t i = 0; i < F.size(); ++i) {
@@ -344,7 +361,6 @@ struct Checker {
     checked.push_back("factors: the product of " + std::to_string(F.size()) +
                       " factor(s) is the projection up to a constant (values at " + std::to_string(points) +
                       " points)");
-    return true;
   }
 
   // The static test at a rational instant: negative roots of f(λ; t) (Descartes where exact, else Sturm).

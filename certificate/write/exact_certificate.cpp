@@ -170,20 +170,8 @@ PipelineResult<Rational> run_exact_recording_isolation(const Scene& s, std::vect
   return projection_pipeline(to_arithmetic<Rational, N>(prepare_pair<N>(s), Rational(1)), pol);
 }
 
-}  // namespace
-
-nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved) {
-  if (cycloidal_certificate_scene(s))
-    return make_cycloidal_certificate(s, scene_doc, solved);  // certificate/write/cycloidal_certificate.hpp
-  if (independent_certificate_scene(s))
-    return make_independent_certificate(s, scene_doc, solved);  // certificate/write/independent_certificate.hpp
-  auto start = std::chrono::steady_clock::now();
-  std::vector<Isolation> record;
-  PipelineResult<Rational> res =
-      s.dim == 2 ? run_exact_recording_isolation<3>(s, record) : run_exact_recording_isolation<4>(s, record);
-  const CertificateAlgebra alg = certificate_algebra(s);
-  if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
-
+// The certificate's format, scene and f = det(λA - B).
+nlohmann::json certificate_head(const Scene& s, const nlohmann::json& scene_doc, const CertificateAlgebra& alg) {
   nlohmann::json c;
   c["format"] = "eccd-certificate/2";
   c["scene"] = {{"path", s.path},
@@ -201,45 +189,206 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
       {"convention",
        "f(lambda; t) = det(lambda A(t) - B(t)) = sum_k g_k(t) lambda^k; g_k in the power basis, lowest degree first"},
       {"g", g}};
-  nlohmann::json proj = {{"name", alg.projection_name}, {"vanishing", alg.vanishing}};
+  return c;
+}
 
-  if (alg.projection.is_zero()) {  // 2D, Δ ≡ 0: never separate (003 Corollary 7)
-    if (!res.projection_identically_zero) throw std::logic_error("internal error: Δ ≡ 0 but the pipeline disagrees");
-    proj["identically_zero"] = true;
-    c["projection"] = proj;
-    c["gap_points"] = nlohmann::json::array();
-    c["timeline"] = nlohmann::json::array();
-    // Continuous touching: P·D without a root in [0, 1] keeps the status of
-    // the double root constant (certificate/write/prover_self_check.hpp).
-    const Poly<Rational> PD = alg.evidence("P") * alg.evidence("D");
-    const Rational half(1, 2);
-    nlohmann::json ct = {
-        {"convention", PD.is_zero()
-                           ? "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D vanishes identically: the "
-                             "double root is 0 or triple, overlapping on all of [0, 1]"
-                           : "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D has no root in [0, 1] (gap "
-                             "points, Descartes), so the status (touching iff the double root P/(2D) is "
-                             "negative) is that of the sample on all of [0, 1]"},
-        {"identically_zero", PD.is_zero()},
-        {"sample", q_str(half)},
-        {"status", to_string(alg.status_at(half))}};
-    std::vector<Rational> pts;
-    if (!PD.is_zero()) {
-      if (sign(PD(Rational(0))) == Sign::zero || sign(PD(Rational(1))) == Sign::zero || res.cells.size() != 1)
-        throw CertificationError(
-            "cannot certify: the discriminant vanishes identically and the status changes inside [0, 1] "
-            "(P*D has a root there), which the certificate format does not cover");
-      clear_gap(Rational(0), Rational(1), {{PD, 1}}, PD, pts, 0);
+// Continuous touching: P·D without a root in [0, 1] keeps the status of the double root constant
+// (certificate/write/prover_self_check.hpp).
+nlohmann::json continuous_touching_json(const CertificateAlgebra& alg, const PipelineResult<Rational>& res) {
+  const Poly<Rational> PD = alg.evidence("P") * alg.evidence("D");
+  const Rational half(1, 2);
+  nlohmann::json ct = {
+      {"convention", PD.is_zero()
+                         ? "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D vanishes identically: the "
+                           "double root is 0 or triple, overlapping on all of [0, 1]"
+                         : "P = 9 g3 g0 - g2 g1, D = g2^2 - 3 g3 g1 (003 Theorem 6); P*D has no root in [0, 1] (gap "
+                           "points, Descartes), so the status (touching iff the double root P/(2D) is "
+                           "negative) is that of the sample on all of [0, 1]"},
+      {"identically_zero", PD.is_zero()},
+      {"sample", q_str(half)},
+      {"status", to_string(alg.status_at(half))}};
+  std::vector<Rational> pts;
+  if (!PD.is_zero()) {
+    if (sign(PD(Rational(0))) == Sign::zero || sign(PD(Rational(1))) == Sign::zero || res.cells.size() != 1)
+      throw CertificationError(
+          "cannot certify: the discriminant vanishes identically and the status changes inside [0, 1] "
+          "(P*D has a root there), which the certificate format does not cover");
+    clear_gap(Rational(0), Rational(1), {{PD, 1}}, PD, pts, 0);
+  }
+  nlohmann::json ptj = nlohmann::json::array();
+  for (const auto& x : pts) ptj.push_back(q_str(x));
+  ct["gap_points"] = ptj;
+  return ct;
+}
+
+// 2D, Δ ≡ 0: never separate (003 Corollary 7); the certificate's projection, empty timeline, continuous touching
+// and answer.
+void certify_identically_zero(nlohmann::json& c, nlohmann::json& proj, const CertificateAlgebra& alg,
+                              const PipelineResult<Rational>& res) {
+  if (!res.projection_identically_zero) throw std::logic_error("internal error: Δ ≡ 0 but the pipeline disagrees");
+  proj["identically_zero"] = true;
+  c["projection"] = proj;
+  c["gap_points"] = nlohmann::json::array();
+  c["timeline"] = nlohmann::json::array();
+  c["continuous_touching"] = continuous_touching_json(alg, res);
+  const Rational half(1, 2);
+  Answer ans = res.answer;  // the answer keys only (contact points are a display extra)
+  ans.contact_points.clear();
+  if (ans.contact_intervals.size() != (alg.status_at(half) == Status::touching ? 1u : 0u))
+    throw std::logic_error("internal error: the pipeline's contact intervals disagree with the status at t = 1/2");
+  c["answer"] = answer_to_json(ans);
+}
+
+// A root of the projection: its factor, the evidence of its status (irrational roots) and a bracket refined until
+// it proves the checker's claims (at most max_bits).
+RootWork prove_root(const AlgebraicRoot& r, const Scene& s, const CertificateAlgebra& alg,
+                    const std::vector<std::pair<Poly<Rational>, int>>& F, const Poly<Rational>& P, int max_bits) {
+  RootWork w;
+  w.root = r;
+  w.old_lo = r.lo;
+  w.old_hi = r.hi;
+  for (std::size_t j = 0; j < F.size(); ++j)
+    if (F[j].second == r.multiplicity) w.factor = int(j);
+  if (w.factor < 0) throw std::logic_error("internal error: no square-free factor of the root's multiplicity");
+  if (!r.is_rational()) {
+    auto add = [&](const std::string& name) -> Sign {
+      for (const auto& e : w.evidence)
+        if (e.name == name) return e.sign;
+      Evidence e;
+      e.name = name;
+      e.q = alg.evidence(name);
+      e.sign = eccd::sign_at(e.q, r);
+      if (e.sign == Sign::zero) e.common = polynomial_gcd(e.q, F[w.factor].first);
+      w.evidence.push_back(e);
+      return e.sign;
+    };
+    if (s.dim == 2) {
+      add("P");
+      add("D");
+    } else {
+      negative_multiple_root(alg.projection_index, [&](int j, int i) { return add(subresultant_evidence_name(j, i)); });
     }
-    nlohmann::json ptj = nlohmann::json::array();
-    for (const auto& x : pts) ptj.push_back(q_str(x));
-    ct["gap_points"] = ptj;
-    c["continuous_touching"] = ct;
-    Answer ans = res.answer;  // the answer keys only (contact points are a display extra)
-    ans.contact_points.clear();
-    if (ans.contact_intervals.size() != (alg.status_at(half) == Status::touching ? 1u : 0u))
-      throw std::logic_error("internal error: the pipeline's contact intervals disagree with the status at t = 1/2");
-    c["answer"] = answer_to_json(ans);
+  }
+  for (int bits = 128; !bracket_proves(w, F, P); bits *= 2) {
+    if (bits > max_bits)
+      throw CertificationError("cannot certify: the bracket of the root near t = " + decimal_string(w.old_lo) +
+                               " does not prove its claims even at width 2^-" + std::to_string(max_bits));
+    refine(w.root, bits);
+  }
+  return w;
+}
+
+// The refined bracket of a pipeline instant, with an approx that lies in it.
+Instant refined(const std::vector<RootWork>& roots, const Instant& i) {
+  if (!i.certified()) throw std::logic_error("internal error: an exact instant without a bracket");
+  for (const auto& w : roots)
+    if (w.old_lo == *i.lo && w.old_hi == *i.hi)
+      return Instant{approx_in_bracket(w.root.lo, w.root.hi), w.root.lo, w.root.hi,
+                     nearest_double((w.root.lo + w.root.hi) / 2)};
+  return Instant{approx_in_bracket(*i.lo, *i.hi), *i.lo, *i.hi, nearest_double((*i.lo + *i.hi) / 2)};
+}
+
+// Gaps between consecutive brackets (and 0, 1) hold no root: the points that prove it.
+std::vector<Rational> gap_points(const std::vector<RootWork>& roots,
+                                 const std::vector<std::pair<Poly<Rational>, int>>& F, const Poly<Rational>& P) {
+  std::vector<Rational> points;
+  Rational prev = 0;
+  for (const auto& w : roots) {
+    if (prev < w.root.lo) clear_gap(prev, w.root.lo, F, P, points, 0);
+    prev = w.root.hi;
+  }
+  if (prev < Rational(1)) clear_gap(prev, Rational(1), F, P, points, 0);
+  add_counting_points(roots, F, P, points);
+  if (points.size() > certificate_max_gap_points(std::size_t(P.degree())))
+    throw CertificationError("cannot certify: clearing the gaps between the brackets takes more than " +
+                             std::to_string(certificate_max_gap_points(std::size_t(P.degree()))) + " points");
+  return points;
+}
+
+// The evidence of an irrational root's status and what it decides.
+void add_evidence(nlohmann::json& j, const RootWork& w, const Scene& s, const CertificateAlgebra& alg) {
+  nlohmann::json ev = nlohmann::json::array();
+  for (const auto& e : w.evidence) {
+    nlohmann::json x = {{"poly", e.name}, {"sign", to_string(e.sign)}};
+    if (e.sign == Sign::zero) x["common_factor"] = coeffs_json(e.common);
+    ev.push_back(x);
+  }
+  j["evidence"] = ev;
+  if (s.dim == 2) {
+    j["decided_by"] = "signs of P and D at the root (003 Theorem 6)";
+    return;
+  }
+  std::map<std::string, Sign> sg;
+  for (const auto& e : w.evidence) sg[e.name] = e.sign;
+  Sign touch = negative_multiple_root(alg.projection_index,
+                                      [&](int a, int b) { return sg.at(subresultant_evidence_name(a, b)); });
+  j["decided_by"] = touch == Sign::positive
+                        ? "subresultant signs at the root: a negative multiple root (touching)"
+                        : "subresultant signs at the root: no negative multiple root, so the status of the "
+                          "neighbouring cells";
+}
+
+// The timeline with statuses and evidence.
+nlohmann::json timeline_json(const PipelineResult<Rational>& res, const std::vector<RootWork>& roots, const Scene& s,
+                             const CertificateAlgebra& alg) {
+  nlohmann::json tl = nlohmann::json::array();
+  for (std::size_t k = 0; k < res.timeline.size(); ++k) {
+    const TimelineNode& n = res.timeline[k];
+    if (n.is_cell) {
+      tl.push_back({{"cell_sample", q_str(*n.t.lo)}, {"status", to_string(n.status)}});
+      continue;
+    }
+    Instant t = refined(roots, n.t);
+    nlohmann::json j = {{"instant", {{"approx", t.approx}, {"lo", q_str(*t.lo)}, {"hi", q_str(*t.hi)}}},
+                        {"status", to_string(n.status)}};
+    const RootWork* w = nullptr;
+    for (const auto& x : roots)
+      if (x.root.lo == *t.lo && x.root.hi == *t.hi) w = &x;
+    j["root_of_factor"] = w ? nlohmann::json(w->factor) : nlohmann::json(nullptr);
+    if (!w || w->root.is_rational())
+      j["decided_by"] = "static test at the rational instant";
+    else
+      add_evidence(j, *w, s, alg);
+    tl.push_back(j);
+  }
+  return tl;
+}
+
+// The pipeline's answer with every instant's bracket refined, without the contact points.
+Answer refined_answer(const Answer& answer, const std::vector<RootWork>& roots) {
+  Answer ans = answer;
+  for (auto& [a, b] : ans.intervals) {
+    a = refined(roots, a);
+    b = refined(roots, b);
+  }
+  if (ans.first_contact) ans.first_contact = refined(roots, *ans.first_contact);
+  for (auto& x : ans.contacts) x = refined(roots, x);
+  for (auto& [a, b] : ans.contact_intervals) {
+    a = refined(roots, a);
+    b = refined(roots, b);
+  }
+  ans.contact_points.clear();
+  return ans;
+}
+
+}  // namespace
+
+nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc, Solution* solved) {
+  if (cycloidal_certificate_scene(s))
+    return make_cycloidal_certificate(s, scene_doc, solved);  // certificate/write/cycloidal_certificate.hpp
+  if (independent_certificate_scene(s))
+    return make_independent_certificate(s, scene_doc, solved);  // certificate/write/independent_certificate.hpp
+  auto start = std::chrono::steady_clock::now();
+  std::vector<Isolation> record;
+  PipelineResult<Rational> res =
+      s.dim == 2 ? run_exact_recording_isolation<3>(s, record) : run_exact_recording_isolation<4>(s, record);
+  const CertificateAlgebra alg = certificate_algebra(s);
+  if (alg.g != res.g) throw std::logic_error("internal error: the certificate's f differs from the pipeline's");
+
+  nlohmann::json c = certificate_head(s, scene_doc, alg);
+  nlohmann::json proj = {{"name", alg.projection_name}, {"vanishing", alg.vanishing}};
+  if (alg.projection.is_zero()) {
+    certify_identically_zero(c, proj, alg, res);
     c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return c;
   }
@@ -259,124 +408,14 @@ nlohmann::json make_certificate(const Scene& s, const nlohmann::json& scene_doc,
   proj["square_free_factors"] = fj;
   c["projection"] = proj;
 
-  // Roots: factor, evidence, refined brackets.
   std::vector<RootWork> roots;
-  for (const auto& r : record[0].roots) {
-    RootWork w;
-    w.root = r;
-    w.old_lo = r.lo;
-    w.old_hi = r.hi;
-    for (std::size_t j = 0; j < F.size(); ++j)
-      if (F[j].second == r.multiplicity) w.factor = int(j);
-    if (w.factor < 0) throw std::logic_error("internal error: no square-free factor of the root's multiplicity");
-    if (!r.is_rational()) {
-      auto add = [&](const std::string& name) -> Sign {
-        for (const auto& e : w.evidence)
-          if (e.name == name) return e.sign;
-        Evidence e;
-        e.name = name;
-        e.q = alg.evidence(name);
-        e.sign = eccd::sign_at(e.q, r);
-        if (e.sign == Sign::zero) e.common = polynomial_gcd(e.q, F[w.factor].first);
-        w.evidence.push_back(e);
-        return e.sign;
-      };
-      if (s.dim == 2) {
-        add("P");
-        add("D");
-      } else {
-        negative_multiple_root(alg.projection_index,
-                               [&](int j, int i) { return add(subresultant_evidence_name(j, i)); });
-      }
-    }
-    for (int bits = 128; !bracket_proves(w, F, P); bits *= 2) {
-      if (bits > max_bits)
-        throw CertificationError("cannot certify: the bracket of the root near t = " + decimal_string(w.old_lo) +
-                                 " does not prove its claims even at width 2^-" + std::to_string(max_bits));
-      refine(w.root, bits);
-    }
-    roots.push_back(std::move(w));
-  }
-  // The refined bracket of a pipeline instant, with an approx that lies in it.
-  auto refined = [&](const Instant& i) -> Instant {
-    if (!i.certified()) throw std::logic_error("internal error: an exact instant without a bracket");
-    for (const auto& w : roots)
-      if (w.old_lo == *i.lo && w.old_hi == *i.hi)
-        return Instant{approx_in_bracket(w.root.lo, w.root.hi), w.root.lo, w.root.hi,
-                       nearest_double((w.root.lo + w.root.hi) / 2)};
-    return Instant{approx_in_bracket(*i.lo, *i.hi), *i.lo, *i.hi, nearest_double((*i.lo + *i.hi) / 2)};
-  };
-
-  // Gaps between consecutive brackets (and 0, 1) hold no root.
-  std::vector<Rational> points;
-  Rational prev = 0;
-  for (const auto& w : roots) {
-    if (prev < w.root.lo) clear_gap(prev, w.root.lo, F, P, points, 0);
-    prev = w.root.hi;
-  }
-  if (prev < Rational(1)) clear_gap(prev, Rational(1), F, P, points, 0);
-  add_counting_points(roots, F, P, points);
-  if (points.size() > certificate_max_gap_points(std::size_t(P.degree())))
-    throw CertificationError("cannot certify: clearing the gaps between the brackets takes more than " +
-                             std::to_string(certificate_max_gap_points(std::size_t(P.degree()))) + " points");
+  for (const auto& r : record[0].roots) roots.push_back(prove_root(r, s, alg, F, P, max_bits));
   nlohmann::json pts = nlohmann::json::array();
-  for (const auto& p : points) pts.push_back(q_str(p));
+  for (const auto& p : gap_points(roots, F, P)) pts.push_back(q_str(p));
   c["gap_points"] = pts;
+  c["timeline"] = timeline_json(res, roots, s, alg);
 
-  // The timeline with statuses and evidence.
-  nlohmann::json tl = nlohmann::json::array();
-  for (std::size_t k = 0; k < res.timeline.size(); ++k) {
-    const TimelineNode& n = res.timeline[k];
-    if (n.is_cell) {
-      tl.push_back({{"cell_sample", q_str(*n.t.lo)}, {"status", to_string(n.status)}});
-      continue;
-    }
-    Instant t = refined(n.t);
-    nlohmann::json j = {{"instant", {{"approx", t.approx}, {"lo", q_str(*t.lo)}, {"hi", q_str(*t.hi)}}},
-                        {"status", to_string(n.status)}};
-    const RootWork* w = nullptr;
-    for (const auto& x : roots)
-      if (x.root.lo == *t.lo && x.root.hi == *t.hi) w = &x;
-    j["root_of_factor"] = w ? nlohmann::json(w->factor) : nlohmann::json(nullptr);
-    if (!w || w->root.is_rational()) {
-      j["decided_by"] = "static test at the rational instant";
-    } else {
-      nlohmann::json ev = nlohmann::json::array();
-      for (const auto& e : w->evidence) {
-        nlohmann::json x = {{"poly", e.name}, {"sign", to_string(e.sign)}};
-        if (e.sign == Sign::zero) x["common_factor"] = coeffs_json(e.common);
-        ev.push_back(x);
-      }
-      j["evidence"] = ev;
-      if (s.dim == 2) {
-        j["decided_by"] = "signs of P and D at the root (003 Theorem 6)";
-      } else {
-        std::map<std::string, Sign> sg;
-        for (const auto& e : w->evidence) sg[e.name] = e.sign;
-        Sign touch = negative_multiple_root(alg.projection_index,
-                                            [&](int a, int b) { return sg.at(subresultant_evidence_name(a, b)); });
-        j["decided_by"] =
-            touch == Sign::positive
-                ? "subresultant signs at the root: a negative multiple root (touching)"
-                : "subresultant signs at the root: no negative multiple root, so the status of the neighbouring cells";
-      }
-    }
-    tl.push_back(j);
-  }
-  c["timeline"] = tl;
-
-  Answer ans = res.answer;
-  for (auto& [a, b] : ans.intervals) {
-    a = refined(a);
-    b = refined(b);
-  }
-  if (ans.first_contact) ans.first_contact = refined(*ans.first_contact);
-  for (auto& x : ans.contacts) x = refined(x);
-  for (auto& [a, b] : ans.contact_intervals) {
-    a = refined(a);
-    b = refined(b);
-  }
-  ans.contact_points.clear();
+  Answer ans = refined_answer(res.answer, roots);
   c["answer"] = answer_to_json(ans);
   c["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (solved) {
