@@ -486,7 +486,7 @@ class PoseStages {
       if (!outcome_[t].by_plane) rest_.push_back(t);
   }
 
-  // Uses api/static_test.hpp's double test when both shapes are diagonal and the run is in double.
+  // Uses api/static_status.hpp's double test when both shapes are diagonal and the run is in double.
   bool fast_pair(const PairTask& task) const { return fast_double_ && shapes_.axes[task.a] && shapes_.axes[task.b]; }
 
   // Pass 2: the static test for the tasks in rest_.
