@@ -2,6 +2,7 @@
 // are skipped, and a sign that is not known makes the count uncertain instead
 // of being skipped.
 #include "kernel/sign_variations.hpp"
+#include "number/double_traits.hpp"
 #include "number/interval.hpp"
 #include "number/rational_traits.hpp"
 
