@@ -63,7 +63,9 @@ void check_identity(std::mt19937_64& rng) {
   // f has degree H in λ and at most H in t: H + 1 values of each fix it
   for (int li = 0; li <= H; ++li)
     for (int ti = 0; ti <= H; ++ti) {
-      const Rational lam(li * 3 - 4, 2), t(ti, H);
+      Rational lam(li * 3 - 4, 2), t(ti, H);
+      lam.canonicalize();  // gmpxx compares canonical forms only
+      t.canonicalize();
       std::vector<std::vector<Rational>> m(H, std::vector<Rational>(H));
       for (int i = 0; i < H; ++i)
         for (int j = 0; j < H; ++j) m[i][j] = lam * at(a[i][j], t) - at(b[i][j], t);

@@ -4,6 +4,7 @@
 // infinities and NaN); the comparison flags are 1.0 / 0.0 per lane, false
 // for a NaN operand, as the scalar forms; LaneMagnitude<W> adds the
 // magnitudes for both + and -, multiplies them for *, and a leaf is |x|.
+#pragma GCC diagnostic ignored "-Wpsabi"  // the W = 4 lanes below, compiled without AVX (number/lane_vector.hpp)
 #include "number/lane_vector.hpp"
 
 #include <catch2/catch.hpp>
