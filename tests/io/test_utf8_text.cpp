@@ -95,7 +95,7 @@ TEST_CASE("valid_utf8 agrees with a decoder written from RFC 3629", "[io][utf8]"
   }
 }
 
-TEST_CASE("every code point's encoding is one sequence; surrogates, overlong forms and beyond U+10FFFF are not",
+TEST_CASE("each code point encodes to one sequence, but not surrogates, overlong forms or code points beyond U+10FFFF",
           "[io][utf8]") {
   for (unsigned cp = 0; cp <= 0x10FFFF; ++cp) {
     const std::string s = encode(cp);
@@ -112,7 +112,7 @@ TEST_CASE("every code point's encoding is one sequence; surrogates, overlong for
   CHECK(valid_utf8(""));
 }
 
-TEST_CASE("escape_invalid_utf8 and utf8_for_json: each bad byte as \\xNN, the rest kept", "[io][utf8]") {
+TEST_CASE("escape_invalid_utf8 and utf8_for_json: each bad byte shown by its hex code, the rest kept", "[io][utf8]") {
   CHECK(escape_invalid_utf8("a\xFF"
                             "b") == "a\\xFFb");
   CHECK(escape_invalid_utf8("\xE2\x82") == "\\xE2\\x82");                  // a cut sequence: both bytes shown
