@@ -142,7 +142,7 @@ TEST_CASE("a rung that runs out of its budget sends the ladder straight to exact
 TEST_CASE("the MPFI rungs share a budget of f times the interval rung's time, and f = 0 skips them",
           "[certified][cost]") {
   // A 2D degree-4 scene whose Δ is too ill-conditioned for intervals of
-  // doubles near t = 0.8 (tests/certified/test_certified.cpp): the interval
+  // doubles near t = 0.8 (tests/certified/test_ladder.cpp): the interval
   // rung gives up on precision, and the MPFI rung is tried.
   Scene s = read_scene_file(kCases + "generated/2d/2d-deg4-colliding-kinematic-572211152701880.json");
   REQUIRE(s.answer);

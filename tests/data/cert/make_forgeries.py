@@ -6,7 +6,7 @@ name, and a text its reason must contain (the JSON place).
 
 Usage: make_forgeries.py ECCD   (the eccd binary; it writes the genuine
 certificates with `eccd certify --no-floating` first, kept as valid-*.cert.json).
-tests/exact/test_certificate_forgeries.cpp checks every entry: the genuine
+tests/certificate/test_certificate_forgeries.cpp checks every entry: the genuine
 certificate VALID, each forgery REJECTED with the claim and place named, in
 bounded time.
 """
@@ -127,7 +127,7 @@ forge("rolling-3d-contact-interval-dropped", "rolling3d", "spheres rolling in co
       "answer", "continuous touch off as an overlap", lambda c: c["answer"].pop("contact_intervals"))
 
 with open(os.path.join(HERE, "forgeries.json"), "w") as f:
-    f.write(json.dumps({"note": "written by make_forgeries.py; checked by tests/exact/test_certificate_forgeries.cpp",
+    f.write(json.dumps({"note": "written by make_forgeries.py; checked by tests/certificate/test_certificate_forgeries.cpp",
                         "valid": [{"file": f"valid-{k}.cert.json", "scene": v} for k, v in BASES.items()],
                         "forgeries": manifest}, indent=1) + "\n")
 print(len(manifest), "forgeries written")

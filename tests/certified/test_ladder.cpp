@@ -1,14 +1,13 @@
-// --arith certified: interval arithmetic that encloses exact results
-// (number/interval.hpp), and the certified policy's answers, which must be
-// the exact pipeline's on the corpus, escalating where a sign is uncertain.
+// The certified ladder (certified/ladder.hpp, --arith certified): its answers
+// must be the exact pipeline's on the corpus, escalating where a sign is
+// uncertain. The interval arithmetics it runs in are tested in
+// tests/number/test_interval.cpp and tests/number/test_mpfi_interval.cpp.
 #include "api/solve.hpp"
 #include "certified/ladder.hpp"
 #include "kernel/prepared_scene.hpp"
 #include "io/solution_json.hpp"
 #include "compare/regress.hpp"
 #include "compare/seeded_rng.hpp"
-#include "number/interval.hpp"
-#include "number/mpfi_interval.hpp"
 #include "io/scene_reader.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,77 +17,10 @@
 using namespace eccd;
 
 namespace {
-bool contains(const Interval& x, const Rational& q) {
-  Rational lo(x.lo), hi(x.hi);
-  return lo <= q && q <= hi;
-}
-bool contains(const MpfiInterval& x, const Rational& q) {
-  mpq_class v(q);
-  return mpfi_is_inside_q(v.get_mpq_t(), x.get()) > 0;
-}
 Answer answer_of(const nlohmann::json& r) {
   return answer_from_json(nlohmann::json::parse(stored_answer_of(r).dump()), "certified", "answer");
 }
 }  // namespace
-
-TEST_CASE("Interval operations enclose the exact rational results", "[certified][interval]") {
-  SeededRng rng{20261121};
-  for (int k = 0; k < 2000; ++k) {
-    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)),
-             b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
-    Interval A = interval_of(a), B = interval_of(b);
-    INFO(a << " " << b);
-    REQUIRE(contains(A, a));
-    CHECK(contains(A + B, Rational(a + b)));
-    CHECK(contains(A - B, Rational(a - b)));
-    CHECK(contains(A * B, Rational(a * b)));
-    if (b != 0) CHECK(contains(A / B, Rational(a / b)));
-    // a chain: (a*b - a) * (b + 1/3)
-    Rational third(1, 3);
-    CHECK(contains((A * B - A) * (B + interval_of(third)), Rational((a * b - a) * (b + third))));
-  }
-  // Signs are certain or uncertain, never guessed.
-  CHECK(scalar_traits<Interval>::sign(Interval(-1e-300, 1e-300)) == Sign::uncertain);
-  CHECK(scalar_traits<Interval>::sign(interval_of(Rational(1, 3)) - interval_of(Rational(1, 3))) == Sign::uncertain);
-  CHECK(scalar_traits<Interval>::sign(Interval(0, 0)) == Sign::zero);
-  CHECK(scalar_traits<Interval>::sign(Interval(1, 1) / Interval(-1, 1)) == Sign::uncertain);
-}
-
-TEST_CASE("MPFI intervals enclose the exact rational results and carry their precision", "[certified][interval]") {
-  SeededRng rng{20261122};
-  for (int k = 0; k < 500; ++k) {
-    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)),
-             b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
-    MpfiInterval A(a, 80), B(b, 200);
-    INFO(a << " " << b);
-    REQUIRE(contains(A, a));
-    CHECK(contains(A + B, Rational(a + b)));
-    CHECK(contains(A - B, Rational(a - b)));
-    CHECK(contains(A * B, Rational(a * b)));
-    CHECK((A * B).precision() == 200);
-    CHECK((A * MpfiInterval(3)).precision() == 80);  // a small constant adopts its partner's precision
-    if (b != 0) CHECK(contains(A / B, Rational(a / b)));
-    Rational third(1, 3);
-    MpfiInterval chain = (A * B - A) * (B + MpfiInterval(third, 80));
-    CHECK(contains(chain, Rational((a * b - a) * (b + third))));
-    // a long chain stays an enclosure: sum of (a*b)/(k+1)
-    MpfiInterval acc(0);
-    Rational exact(0);
-    for (int i = 0; i < 50; ++i) {
-      acc = acc + A * B / MpfiInterval(Rational(i + 1), 80);
-      exact += a * b / Rational(i + 1);
-    }
-    CHECK(contains(acc, exact));
-  }
-  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(Rational(1, 3), 300) - MpfiInterval(Rational(1, 3), 300)) ==
-        Sign::uncertain);
-  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(0)) == Sign::zero);
-  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(Rational(-1, 7), 60)) == Sign::negative);
-  CHECK(scalar_traits<MpfiInterval>::sign(MpfiInterval(1) / (MpfiInterval(Rational(1, 3), 60) -
-                                                             MpfiInterval(Rational(1, 3), 60))) == Sign::uncertain);
-  CHECK(exact_point(MpfiInterval(Rational(3, 8), 60)) == Rational(3, 8));
-  CHECK(!exact_point(MpfiInterval(Rational(1, 3), 60)));
-}
 
 TEST_CASE("certified arithmetic names its ladder of MPFI rungs", "[certified]") {
   CHECK(parse_arithmetic("certified").mpfi_rungs == std::vector<int>{256});

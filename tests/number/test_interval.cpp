@@ -1,5 +1,8 @@
-// Issue 18 (2D certified cost): the cheaper enclosures of number/interval.hpp
-// still enclose, and are the tightest ones where they were before.
+// Interval (number/interval.hpp): intervals of doubles that enclose exact
+// results, with certain-or-uncertain signs.
+//  - operations and chains of them on random rationals enclose the exact
+//    rational results; a sign is uncertain whenever the interval holds 0 and
+//    is not the point 0;
 //  - interval_of(q) (fast paths for integers and for small fractions) gives
 //    exactly MPFR's [RNDD(q), RNDU(q)] on random rationals of every size,
 //    including integers near the top of the double range, fractions at the
@@ -8,6 +11,7 @@
 //  - products and sums of random intervals (normal, huge, subnormal end
 //    points) contain the exact product and sum of their end points, or, where
 //    an end point overflows to a NaN, claim no sign (number/interval.hpp).
+#include "compare/seeded_rng.hpp"
 #include "number/interval.hpp"
 
 #include <catch2/catch.hpp>
@@ -21,7 +25,7 @@ using namespace eccd;
 
 namespace {
 
-// The reference: MPFR's directed roundings, as interval_of did before its fast paths.
+// The reference: MPFR's directed roundings (interval_of's fast paths must give the same end points).
 std::pair<double, double> mpfr_enclosure(const mpq_class& q) {
   mpfr_t r;
   mpfr_init2(r, 53);
@@ -44,6 +48,11 @@ mpz_class random_int(std::mt19937_64& rng, int bits) {
 bool encloses(const Interval& x, const mpq_class& v) {
   if (std::isnan(x.lo) || std::isnan(x.hi)) return scalar_traits<Interval>::sign(x) == Sign::uncertain;
   return (std::isinf(x.lo) || mpq_class(x.lo) <= v) && (std::isinf(x.hi) || v <= mpq_class(x.hi));
+}
+
+bool contains(const Interval& x, const Rational& q) {
+  Rational lo(x.lo), hi(x.hi);
+  return lo <= q && q <= hi;
 }
 
 double random_double(std::mt19937_64& rng) {
@@ -128,4 +137,27 @@ TEST_CASE("interval sums and products enclose the exact results", "[certified][i
   CHECK(scalar_traits<Interval>::sign(Interval(-inf, inf) * Interval(2, 3)) == Sign::uncertain);
   CHECK(scalar_traits<Interval>::sign(Interval(std::nan(""), 1) * Interval(2, 3)) == Sign::uncertain);
   CHECK(scalar_traits<Interval>::sign(Interval(2, 3) * Interval(4, 5)) == Sign::positive);
+}
+
+TEST_CASE("Interval operations enclose the exact rational results", "[certified][interval]") {
+  SeededRng rng{20261121};
+  for (int k = 0; k < 2000; ++k) {
+    Rational a = rng.frac(-1000000, 1000000, rng.uniform(1, 999983)),
+             b = rng.frac(-1000000, 1000000, rng.uniform(1, 999983));
+    Interval A = interval_of(a), B = interval_of(b);
+    INFO(a << " " << b);
+    REQUIRE(contains(A, a));
+    CHECK(contains(A + B, Rational(a + b)));
+    CHECK(contains(A - B, Rational(a - b)));
+    CHECK(contains(A * B, Rational(a * b)));
+    if (b != 0) CHECK(contains(A / B, Rational(a / b)));
+    // a chain: (a*b - a) * (b + 1/3)
+    Rational third(1, 3);
+    CHECK(contains((A * B - A) * (B + interval_of(third)), Rational((a * b - a) * (b + third))));
+  }
+  // Signs are certain or uncertain, never guessed.
+  CHECK(scalar_traits<Interval>::sign(Interval(-1e-300, 1e-300)) == Sign::uncertain);
+  CHECK(scalar_traits<Interval>::sign(interval_of(Rational(1, 3)) - interval_of(Rational(1, 3))) == Sign::uncertain);
+  CHECK(scalar_traits<Interval>::sign(Interval(0, 0)) == Sign::zero);
+  CHECK(scalar_traits<Interval>::sign(Interval(1, 1) / Interval(-1, 1)) == Sign::uncertain);
 }
