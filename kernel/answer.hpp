@@ -158,8 +158,8 @@ inline Instant bracketed_instant(const mpq_class& mid, const mpq_class& lo, cons
 // (its to_string prints the value with "%.17g"), the text already has the 17
 // significant digits precision_digits(53) asks for, and round_decimal gives it
 // back unchanged (checked over every power of two, its predecessor and 4
-// million random doubles, NaN and infinities included: tests/kernel/
-// test_rounded_instant.cpp), so the MPFR round trip (about 1 µs per instant,
+// million random doubles, NaN and infinities included:
+// tests/kernel/test_answer.cpp), so the MPFR round trip (about 1 µs per instant,
 // 9 % of an animation frame) is skipped.
 template <class T>
 constexpr bool prints_as_double() {
