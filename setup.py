@@ -6,7 +6,9 @@ Where: the CMake build folder is build-pip/ in the source tree (ECCD_PIP_BUILD_D
 level below the root like build/, so that ccache (base_dir above the tree) reuses the objects of a CMake
 build of the same sources; ccache is used when it is installed. Only the two targets are built: no tests,
 no benchmarks. Environment: ECCD_PIP_PROGRAM=0 leaves the program out; CMAKE_BUILD_PARALLEL_LEVEL the jobs
-(default: the machine's cores); ECCD_CMAKE_ARGS more configure arguments (split on spaces).
+(default: the machine's cores); ECCD_CMAKE_ARGS more configure arguments (split on spaces), e.g.
+-DECCD_WERROR=ON (warnings as errors: scripts/run-tests.sh; the default is OFF at every configure, so the
+setting does not stay in build-pip/'s cache).
 """
 import os
 import re
@@ -32,7 +34,8 @@ class CMakeBuild(build_ext):
     def build_extension(self, ext):
         build = os.path.abspath(os.environ.get("ECCD_PIP_BUILD_DIR") or os.path.join(ROOT, "build-pip"))
         configure = ["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DBUILD_TESTING=OFF",
-                     "-DECCD_INSTALL=OFF", "-DECCD_BUILD_PYTHON=ON", f"-DPython_EXECUTABLE={sys.executable}"]
+                     "-DECCD_INSTALL=OFF", "-DECCD_BUILD_PYTHON=ON", f"-DPython_EXECUTABLE={sys.executable}",
+                     "-DECCD_WERROR=OFF"]
         if shutil.which("ccache"):
             configure.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
         configure += os.environ.get("ECCD_CMAKE_ARGS", "").split()

@@ -113,17 +113,17 @@ Command add_judge_command(CLI::App& app) {
     AnswerInput in = read_answer(args->answer);
     const std::string label = args->answer == "-" ? std::string("<stdin>") : args->answer;
     const auto [face, face_arith] = report_face(args->answer);
-    JudgeOptions o;
-    o.tol = args->tol;
-    o.name = args->name;
-    o.use_stored = args->use_stored;
+    JudgeOptions options;
+    options.tol = args->tol;
+    options.name = args->name;
+    options.use_stored = args->use_stored;
     if (args->use_stored && !scene.answer)
       warn("judge", src.label + " has no stored answer; --use-stored ignored, solving exactly");
     Judgement j;
     arm_backstop(run_budget().time_limit_s);
     try {
       ScopedDeadline deadline(run_budget().time_limit_s);
-      j = judge(scene, in.answer, o);
+      j = judge(scene, in.answer, options);
     } catch (const std::invalid_argument& e) {
       std::cerr << "eccd: judge: " << src.label << ": " << e.what()
                 << " (judge compares with the exact answer, so it refuses this scene)\n";

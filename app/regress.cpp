@@ -425,13 +425,13 @@ Command add_regress_command(CLI::App& app) {
       if (args->floating) j["floating"] = {{"tolerance", args->tol}, {"pipelines", table}};
       if (args->certify) {
         nlohmann::json cj = nlohmann::json::array();
-        for (const auto& [kind, c] : certificate_cost)
+        for (const auto& [kind, cost] : certificate_cost)
           cj.push_back({{"kind", kind},
-                        {"certificates", c.count},
-                        {"prove_seconds", c.prove_s},
-                        {"check_seconds", c.check_s},
-                        {"check_over_prove", c.check_s / std::max(c.prove_s, 1e-9)},
-                        {"worst_check_over_prove", c.worst_ratio}});
+                        {"certificates", cost.count},
+                        {"prove_seconds", cost.prove_s},
+                        {"check_seconds", cost.check_s},
+                        {"check_over_prove", cost.check_s / std::max(cost.prove_s, 1e-9)},
+                        {"worst_check_over_prove", cost.worst_ratio}});
         j["certificate_cost"] = cj;
       }
       stamp_format(j, "eccd-regress/1");
@@ -459,9 +459,9 @@ Command add_regress_command(CLI::App& app) {
       for (const auto& kc : certificate_cost) w = std::max(w, int(kc.first.size()));
       std::printf("  %-*s %6s %11s %11s %12s %12s\n", w, "kind", "certs", "prove s", "check s", "check/prove",
                   "worst ratio");
-      for (const auto& [kind, c] : certificate_cost)
-        std::printf("  %-*s %6d %11.2f %11.2f %12.3f %12.3f\n", w, kind.c_str(), c.count, c.prove_s, c.check_s,
-                    c.check_s / std::max(c.prove_s, 1e-9), c.worst_ratio);
+      for (const auto& [kind, cost] : certificate_cost)
+        std::printf("  %-*s %6d %11.2f %11.2f %12.3f %12.3f\n", w, kind.c_str(), cost.count, cost.prove_s, cost.check_s,
+                    cost.check_s / std::max(cost.prove_s, 1e-9), cost.worst_ratio);
     }
     std::printf(
         "\nregress %s: %d scene(s) checked, %d agree, %d differ, %d failed, %d without a stored answer (%.1f s)\n",

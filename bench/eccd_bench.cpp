@@ -343,15 +343,15 @@ int main(int argc, char** argv) {
   register_fcl_static();     // FCL's static ellipsoid test on the static3d pairs
   register_fcl_table2();     // per frame of 000 Table 2, eccd and FCL, misclassified frames
   eccd_bench::register_poses({group,
-                              [](const std::string& g, const std::string& l, bool b, const std::string& n,
-                                 std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, n, f, true); },
+                              [](const std::string& g, const std::string& l, bool b, const std::string& name,
+                                 std::function<void(benchmark::State&)> f) { row(g, l, b, Cost::slow, name, f, true); },
                               [](const std::string& k, const json& j) { g_results[k] = j; },
                               ECCD_SOURCE_DIR});  // the per-pose mode (bench/poses.cpp)
   eccd_bench::register_table1_frames();           // 000 Table 1 as an animation, per frame (bench/table1_frames.cpp)
   eccd_bench::register_speed_targets();           // the speed targets on the product path (bench/speed_targets.cpp)
   eccd_bench::register_independent({group,        // cases/independent in four arithmetics (bench/independent.cpp)
-                                    [](auto& g, auto& l, bool b, bool heavy, auto& n, auto fn) {
-                                      row(g, l, b, heavy ? Cost::heavy : Cost::slow, n, fn);
+                                    [](auto& g, auto& l, bool b, bool heavy, auto& name, auto fn) {
+                                      row(g, l, b, heavy ? Cost::heavy : Cost::slow, name, fn);
                                     },
                                     [](const std::string& k, const json& j) { g_results[k] = j; }});
 

@@ -454,8 +454,8 @@ inline Static3D make_static3d() {
     s.pa.push_back(pa);
     s.pb.push_back(pb);
     {
-      auto c = appendix_a_coefficients(ea[0], ea[1], ea[2], B);
-      s.coeffs.emplace_back(c.begin(), c.end());
+      auto coeffs = appendix_a_coefficients(ea[0], ea[1], ea[2], B);
+      s.coeffs.emplace_back(coeffs.begin(), coeffs.end());
     }
   }
   return s;

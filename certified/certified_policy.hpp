@@ -104,8 +104,8 @@ struct CertifiedRep : Bern<T> {
   using Exact = std::function<Poly<Rational>(const std::vector<Poly<Rational>>&)>;
   Exact exact;  // empty: no exact value available
   CertifiedRep() = default;
-  CertifiedRep(Bern<T> b) : Bern<T>(std::move(b)) {}  // NOLINT: a plain Bernstein polynomial, no formula
-  CertifiedRep(Bern<T> b, Exact e) : Bern<T>(std::move(b)), exact(std::move(e)) {}
+  CertifiedRep(Bern<T> net) : Bern<T>(std::move(net)) {}  // NOLINT: a plain Bernstein polynomial, no formula
+  CertifiedRep(Bern<T> net, Exact e) : Bern<T>(std::move(net)), exact(std::move(e)) {}
 };
 
 template <class T>

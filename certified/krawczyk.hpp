@@ -224,9 +224,9 @@ struct Box {
 };
 
 // One Krawczyk step on box X: K(X) in K; true if K lies in the interior of X.
-template <class IT>
-bool krawczyk(NetsT<IT>& nets, const System& sys, const Box& X, Box& K) {
-  using I = IT;
+// I: the interval type of the nets (the namespace's I, MpfiInterval, or another).
+template <class I>
+bool krawczyk(NetsT<I>& nets, const System& sys, const Box& X, Box& K) {
   using E = Enclose<I>;
   const int bits = nets.bits();
   const std::size_t m = sys.vars.size();

@@ -37,8 +37,12 @@ namespace modp {
 
 inline constexpr std::uint64_t kPrime = (std::uint64_t(1) << 61) - 1;
 
+// The 128-bit product of two residues. __int128 is a GCC/Clang extension, which -Wpedantic reports;
+// __extension__ says it is meant (every compiler eccd builds with has it).
+__extension__ typedef unsigned __int128 u128;
+
 inline std::uint64_t mul(std::uint64_t a, std::uint64_t b) {
-  unsigned __int128 x = static_cast<unsigned __int128>(a) * b;                // < 2^122
+  u128 x = static_cast<u128>(a) * b;                                          // < 2^122
   std::uint64_t lo = std::uint64_t(x & kPrime), hi = std::uint64_t(x >> 61);  // x = hi·2^61 + lo, 2^61 ≡ 1
   std::uint64_t r = lo + hi;                                                  // < 2^62
   r = (r & kPrime) + (r >> 61);

@@ -293,15 +293,15 @@ std::array<bool, 2> hold_still_pair(PreparedPair<H>& p) {
 // one by its motion, one that turns in place by hold_still (exact T only; the
 // flags `still` say which of A and B was so reduced).
 template <class T, int H>
-TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& p, std::array<bool, 2>* still = nullptr) {
-  const T zero_s = scalar_traits<T>::from_rational(mpq_class(0), p.qa[0][0]);
-  const T one_s = scalar_traits<T>::from_rational(mpq_class(1), p.qa[0][0]);
+TriBern<T> independent_ellipsoid_function(const MovingPairBern<T, H>& pair, std::array<bool, 2>* still = nullptr) {
+  const T zero_s = scalar_traits<T>::from_rational(mpq_class(0), pair.qa[0][0]);
+  const T one_s = scalar_traits<T>::from_rational(mpq_class(1), pair.qa[0][0]);
   Bern<T> zero;
   zero.b.push_back(zero_s);
   Bern<T> one;
   one.b.push_back(one_s);
-  auto a = moving_quadric_in<Bern<T>, T, H>(p.qa, p.na, zero);
-  auto b = moving_quadric_in<Bern<T>, T, H>(p.qb, p.nb, zero);
+  auto a = moving_quadric_in<Bern<T>, T, H>(pair.qa, pair.na, zero);
+  auto b = moving_quadric_in<Bern<T>, T, H>(pair.qb, pair.nb, zero);
   const bool still_a = hold_still<T, H>(a), still_b = hold_still<T, H>(b);
   if (still) *still = {still_a, still_b};
   // minor of m on rows R, columns S (bit masks); the empty minor is 1

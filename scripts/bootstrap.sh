@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages eccd needs (only those missing), then configures
 # and builds into ./build. Used by both README commands and by .ci/run.
+# ECCD_WERROR=ON (scripts/run-tests.sh, so CI) builds with warnings as errors;
+# the default OFF lets a newer compiler's new warnings through.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libflint-dev libeigen3-dev libfcl-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 python3-matplotlib python3-dev pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-venv python3-pip python3-setuptools python3-wheel ccache parallel chromium"
+PACKAGES="cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libflint-dev libeigen3-dev libfcl-dev catch2 nlohmann-json3-dev libcli11-dev libboost-dev python3 python3-matplotlib python3-dev pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-venv python3-pip python3-setuptools python3-wheel ccache parallel chromium clang-format"
 missing=""
 for p in $PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -19,5 +21,5 @@ fi
 # compilations are cache hits of this build.
 launcher=""
 command -v ccache >/dev/null && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release $launcher >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DECCD_WERROR="${ECCD_WERROR:-OFF}" $launcher >/dev/null
 cmake --build build -j"$(nproc)" >&2

@@ -33,10 +33,11 @@ if ! command -v perf >/dev/null 2>&1; then
     echo "run-benchmarks: no perf; the report gives the phase breakdown only" >&2
 fi
 
-# ccache as in scripts/bootstrap.sh: with the same flags the benchmark's build reuses the main build's objects.
+# ccache as in scripts/bootstrap.sh: with the same flags (warnings as errors, as scripts/run-tests.sh builds)
+# the benchmark's build reuses the main build's objects.
 launcher=""
 command -v ccache >/dev/null && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
-cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release $launcher >/dev/null
+cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DECCD_WERROR=ON $launcher >/dev/null
 cmake --build build-bench -j"$(nproc)" --target eccd_bench eccd >&2
 
 python3 bench/performance_report.py --bench build-bench/bench/eccd_bench --out reports/performance.md \

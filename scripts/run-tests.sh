@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds everything and runs the whole test suite (Catch2 tests through CTest),
+# Builds everything with warnings as errors (-DECCD_WERROR=ON, the pip build's
+# too) and runs the whole test suite (Catch2 tests through CTest),
 # then the Python tests against a pip install (scripts/test-python-install.sh).
 # The suite includes `eccd regress cases/ --certify` over the whole corpus and
 # the metamorphic tests over generated scenes; their seeds are printed at the end.
@@ -12,14 +13,14 @@ if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
   exit 0
 fi
 cd "$(dirname "$0")/.."
-bash scripts/bootstrap.sh
+ECCD_WERROR=ON bash scripts/bootstrap.sh
 status=0
 ctest --test-dir build --output-on-failure -j"$(nproc)" -LE budget || status=$?
 log=build/Testing/Temporary/LastTest.log
 saved=build/Testing/Temporary/LastTest-unbudgeted.log
 if [ -f "$log" ]; then cp "$log" "$saved"; fi
 # The Python package installed by pip into a fresh venv, its tests against that install.
-bash scripts/test-python-install.sh || status=$?
+ECCD_CMAKE_ARGS="-DECCD_WERROR=ON ${ECCD_CMAKE_ARGS:-}" bash scripts/test-python-install.sh || status=$?
 busy=()
 stop_busy() {
   for p in "${busy[@]}"; do kill "$p" 2>/dev/null || true; done

@@ -104,8 +104,14 @@ inline int sign_named(const json& j, const std::string& place) {
   reject("certificate format", place + ": expected \"negative\", \"zero\" or \"positive\", got " + shown(j));
 }
 
+// "[lo]" when lo == hi, else "[lo, hi]". Appended piece by piece: GCC 12 reports a false -Wrestrict in
+// `"[" + std::string` once inlined (GCC bug 105329).
 inline std::string bracket_text(const mpq_class& lo, const mpq_class& hi) {
-  return lo == hi ? "[" + lo.get_str() + "]" : "[" + lo.get_str() + ", " + hi.get_str() + "]";
+  std::string text = "[";
+  text += lo.get_str();
+  if (lo != hi) text.append(", ").append(hi.get_str());
+  text += ']';
+  return text;
 }
 
 // A plain decimal "[-]digits[.digits][e[-]digits]": its value and the unit of its last digit.

@@ -139,16 +139,16 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
   // verifies both)
   const PreparedPair<4> prep = prepare_pair<4>(s);
   auto mat = [](const auto& m) {
-    json r = json::array();
+    json matrix = json::array();
     for (const auto& row : m) {
       json r1 = json::array();
       for (const auto& x : row) r1.push_back(q(x));
-      r.push_back(r1);
+      matrix.push_back(r1);
     }
-    return r;
+    return matrix;
   };
   auto pmat = [](const auto& m) {
-    json r = json::array();
+    json matrix = json::array();
     for (const auto& row : m) {
       json r1 = json::array();
       for (const auto& p : row) {
@@ -156,9 +156,9 @@ json make_bezier_certificate(const Scene& s, const json& scene_doc, Solution* so
         for (const auto& x : p.c) cs.push_back(q(x));
         r1.push_back(cs);
       }
-      r.push_back(r1);
+      matrix.push_back(r1);
     }
-    return r;
+    return matrix;
   };
   c["net"] = {{"degree_u", bi.degree_u()}, {"degree_t", bi.degree_t()}, {"coefficients", rows},
               {"shape_a", mat(prep.qa)},   {"shape_b", mat(prep.qb)},   {"inverse_a", pmat(prep.na)},

@@ -110,8 +110,8 @@ TEST_CASE("F(u, s, t) on the diagonal s = t is the shared F(u, t), exactly", "[i
     const TriBern<Rational> F =
         independent_ellipsoid_function<Rational, 4>(to_arithmetic_bernstein<Rational, 4>(p, one));
     const BiBern<Rational> G = ellipsoid_function(characteristic_bernstein<Rational, 4>(p, false, one), one);
-    for (const Rational u : {Rational(1, 7), Rational(1, 2), Rational(5, 6)})
-      for (const Rational t : {Rational(0), Rational(1, 3), Rational(3, 4), Rational(1)}) CHECK(F(u, t, t) == G(u, t));
+    for (const Rational& u : {Rational(1, 7), Rational(1, 2), Rational(5, 6)})
+      for (const Rational& t : {Rational(0), Rational(1, 3), Rational(3, 4), Rational(1)}) CHECK(F(u, t, t) == G(u, t));
     // and off the diagonal it is not symmetric in general: F depends on s and t separately
     CHECK(F.n[1] > 0);
     CHECK(F.n[2] > 0);

@@ -56,7 +56,7 @@ TEST_CASE("eccd --quiet keeps warnings off stderr but not errors", "[cli][conven
 TEST_CASE("every command exits 2 for a bad option or a bad option value", "[cli][conventions]") {
   TempDir t;
   const std::string cert = (t.path / "c.json").string();
-  for (const std::string args :
+  for (const std::string& args :
        {"solve " + q(kScene2d) + " --basis quartic", "solve " + q(kScene2d) + " --variant 7",
         "solve " + q(kScene2d) + " --arith quad", "solve " + q(kScene2d) + " --method marching:x",
         "solve " + q(kScene2d) + " --input cooked", "solve " + q(kScene2d) + " --bogus",
@@ -251,8 +251,8 @@ TEST_CASE("an instant's approx carries the digits its bracket or precision suppo
   REQUIRE(m.code == 0);
   auto mj = nlohmann::json::parse(m.out);
   int longest = 0;
-  for (const auto& c : mj["critical_instants"])
-    longest = std::max(longest, significant_digits(c["t"]["approx"].get<std::string>()));
+  for (const auto& instant : mj["critical_instants"])
+    longest = std::max(longest, significant_digits(instant["t"]["approx"].get<std::string>()));
   for (const auto& iv : mj["intervals"])
     for (const auto& i : iv) longest = std::max(longest, significant_digits(i["approx"].get<std::string>()));
   CHECK(longest <= 40);

@@ -41,7 +41,7 @@ TEST_CASE("bytes that are not UTF-8 give exit 2 and valid JSON under --json, nev
   spit(ff, std::string("{\xff", 2));
   const std::string cert = (w.path / "c.json").string();
   spit(cert, std::string("{\"format\": \"\xfe\"}", 16));
-  for (const std::string cmd :
+  for (const std::string& cmd :
        {"solve " + q(ff) + " --json", "animate " + q(ff) + " --json",
         "check-certificate " + q(kScene) + " " + q(ff) + " --json",
         "check-certificate " + q(kScene) + " " + q(cert) + " --json", "judge " + q(kScene) + " " + q(ff) + " --json"}) {
@@ -189,7 +189,7 @@ TEST_CASE("a FIFO or a device as an input is refused at once, never waited on", 
   TempDir w;
   const fs::path fifo = w.path / "f";
   REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
-  for (const std::string cmd :
+  for (const std::string& cmd :
        {"solve " + q(fifo.string()), "judge " + q(kScene) + " " + q(fifo.string()), "animate " + q(fifo.string()),
         "check-certificate " + q(kScene) + " " + q(fifo.string()), std::string("solve /dev/zero")}) {
     INFO(cmd);

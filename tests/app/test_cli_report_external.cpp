@@ -105,7 +105,7 @@ TEST_CASE("eccd report --external judges an engine's answer files against the ex
 TEST_CASE("eccd report --external: a bad NAME=DIR is exit 2 before any work", "[app][cli][report][external]") {
   TempDir t;
   const fs::path out = t.path / "out";
-  for (const std::string spec : std::vector<std::string>{
+  for (const std::string& spec : std::vector<std::string>{
            "mine", "=" + t.path.string(), "mine=" + (t.path / "none").string(), "a b=" + t.path.string()}) {
     INFO(spec);
     Run r = run_eccd("report --dims 2 --degrees 2 --families free --count 1 --cases '' --no-map --external " + q(spec) +

@@ -112,8 +112,8 @@ TEST_CASE("independent certificate: spheres-end round trip and tampering", "[ind
     rejected(s, t, "scene");
   }
   {  // the scene file changed (B larger): F differs, so the claims about its net fail
-    std::ifstream in(std::string(ECCD_SOURCE_DIR) + "/cases/independent/spheres-end.json");
-    json doc = json::parse(in);
+    std::ifstream file(std::string(ECCD_SOURCE_DIR) + "/cases/independent/spheres-end.json");
+    json doc = json::parse(file);
     doc["b"]["shape"]["semi_axes"] = {"3/5", "3/5", "3/5"};
     doc.erase("answer");
     json t = cert;

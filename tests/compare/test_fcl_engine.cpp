@@ -141,7 +141,7 @@ TEST_CASE("fcl/ccd expresses constant shapes translating linearly, nothing else"
 
 TEST_CASE("eccd fcl: a bad option or scene is exit 2, with or without FCL", "[fcl][cli-fcl]") {
   const std::string crossing = q(src("cases/spheres/spheres-crossing.json"));
-  for (const std::string args :
+  for (const std::string& args :
        {"fcl " + crossing + " --samples 0", "fcl " + crossing + " --ccd 1", "fcl " + crossing + " --samples 5 --ccd 5",
         "fcl " + crossing + " --bogus", "fcl " + q(src("tests/data/judge/malformed.json")),
         std::string("fcl /nonexistent/scene.json")}) {

@@ -57,7 +57,7 @@ struct FloatPipe {
 };
 std::vector<FloatPipe> every_floating_pipeline(int dim, bool baselines) {
   std::vector<FloatPipe> v;
-  for (const std::string& arith : {"double", "mpfr:64"})
+  for (const std::string arith : {"double", "mpfr:64"})
     for (const auto& mode : default_input_modes()) {
       auto add = [&](const std::string& basis, const std::string& method) {
         FloatPipe p;

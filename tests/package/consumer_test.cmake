@@ -1,12 +1,17 @@
 # The CTest test package_consumer (cmake -P): eccd used as a consumer uses it.
 #  1. cmake --install the build tree into WORK_DIR/prefix; check the headers
-#     (include/eccd/eccd.hpp), the program, the package files are there and
-#     that CGAL's definitions did not leak into the exported targets;
-#  2. configure, build and run tests/package/consumer/ with find_package(eccd);
+#     (include/eccd/eccd.hpp), the program, the package files are there, that
+#     CGAL's definitions did not leak into the exported targets, that the
+#     package exports <prefix>/include only and that every installed header
+#     includes eccd's others as "eccd/<layer>/...";
+#  2. configure, build and run tests/package/consumer/ with find_package(eccd),
+#     with the consumer's own kernel/answer.hpp and api/solve.hpp first on its
+#     include path (eccd's names, other contents);
 #  3. the same with add_subdirectory(eccd source tree), BUILD_TESTING off.
 # The consumer solves cases/paper002/example.json exactly and exits 0 only if
 # its answer agrees with the stored one. Arguments (-D): ECCD_SOURCE_DIR,
-# ECCD_BINARY_DIR, WORK_DIR, CXX_COMPILER, CXX_LAUNCHER (may be empty), BUILD_TYPE.
+# ECCD_BINARY_DIR, WORK_DIR, CXX_COMPILER, CXX_LAUNCHER (may be empty), BUILD_TYPE,
+# ECCD_WERROR (as the build tree has it, so that the subproject's compilations are ccache hits).
 cmake_minimum_required(VERSION 3.18)
 foreach(v ECCD_SOURCE_DIR ECCD_BINARY_DIR WORK_DIR CXX_COMPILER)
   if(NOT ${v})
@@ -15,6 +20,9 @@ foreach(v ECCD_SOURCE_DIR ECCD_BINARY_DIR WORK_DIR CXX_COMPILER)
 endforeach()
 if(NOT BUILD_TYPE)
   set(BUILD_TYPE Release)
+endif()
+if(NOT ECCD_WERROR)
+  set(ECCD_WERROR OFF)
 endif()
 set(prefix ${WORK_DIR}/prefix)
 set(scene ${ECCD_SOURCE_DIR}/cases/paper002/example.json)
@@ -35,6 +43,7 @@ function(step what)
   set(step_output "${out}" PARENT_SCOPE)
 endfunction()
 
+# run_consumer(how build_dir [regex]): runs the consumer; its output must say it agrees (and match regex).
 function(run_consumer how build_dir)
   step("${how}: run the consumer on cases/paper002/example.json" ${build_dir}/app ${scene})
   string(STRIP "${step_output}" lines)
@@ -44,6 +53,9 @@ function(run_consumer how build_dir)
   endforeach()
   if(NOT step_output MATCHES "agrees with the stored answer")
     message(FATAL_ERROR "${how}: the consumer did not report agreement:\n${step_output}")
+  endif()
+  if(ARGC GREATER 2 AND NOT step_output MATCHES "${ARGV2}")
+    message(FATAL_ERROR "${how}: the consumer's output does not say \"${ARGV2}\":\n${step_output}")
   endif()
 endfunction()
 
@@ -64,17 +76,33 @@ foreach(f ${targets_files})
     message(FATAL_ERROR "install: ${f} mentions CGAL: its definitions must stay private to eccd_exact")
   endif()
 endforeach()
+file(READ ${prefix}/lib/cmake/eccd/eccdTargets.cmake text)
+if(text MATCHES "INTERFACE_INCLUDE_DIRECTORIES \"[^\"]*include/eccd")
+  message(FATAL_ERROR "install: eccdTargets.cmake exports include/eccd: a consumer must need only <prefix>/include")
+endif()
+file(GLOB_RECURSE headers ${prefix}/include/eccd/*.hpp)
+list(LENGTH headers n)
+if(n LESS 100)
+  message(FATAL_ERROR "install: only ${n} headers under ${prefix}/include/eccd")
+endif()
+foreach(h ${headers})
+  file(STRINGS ${h} bad REGEX "#[ \t]*include[ \t]*\"(number|kernel|solution|floating|exact|certified|io|certificate|api)/")
+  if(bad)
+    message(FATAL_ERROR "install: ${h} includes a layer without the eccd/ prefix: ${bad}")
+  endif()
+endforeach()
+message(STATUS "install: ${n} headers under include/eccd/, each including eccd's others as \"eccd/<layer>/...\"")
 
 # 2. find_package(eccd).
 set(b ${WORK_DIR}/find)
 step("find_package: configure" ${CMAKE_COMMAND} -S ${ECCD_SOURCE_DIR}/tests/package/consumer -B ${b} ${common} -DCMAKE_PREFIX_PATH=${prefix})
 step("find_package: build" ${CMAKE_COMMAND} --build ${b} -j2)
-run_consumer("find_package" ${b})
+run_consumer("find_package" ${b} "beside eccd: the consumer's own kernel/answer.hpp, the consumer's own api/solve.hpp")
 
 # 3. add_subdirectory(eccd): only the libraries app links are built.
 set(b ${WORK_DIR}/subdir)
 step("add_subdirectory: configure" ${CMAKE_COMMAND} -S ${ECCD_SOURCE_DIR}/tests/package/consumer -B ${b} ${common}
-     -DECCD_SOURCE=${ECCD_SOURCE_DIR} -DBUILD_TESTING=OFF)
+     -DECCD_SOURCE=${ECCD_SOURCE_DIR} -DBUILD_TESTING=OFF -DECCD_WERROR=${ECCD_WERROR})
 step("add_subdirectory: build" ${CMAKE_COMMAND} --build ${b} -j2 --target app)
 run_consumer("add_subdirectory" ${b})
 foreach(f eccd/eccd eccd/eccd_tests eccd/python)

@@ -1,7 +1,15 @@
 // Solves a scene exactly and compares it with the answer stored in the file: exit 0 iff they agree.
 #include <eccd/eccd.hpp>
+#if CONSUMER_OWN_HEADERS
+#include <eccd/api/solve.hpp>  // a layer's header by its installed path (<prefix>/include/eccd/api/solve.hpp)
+#include "kernel/answer.hpp"   // the consumer's own, not eccd's (include/kernel/answer.hpp)
+#include "api/solve.hpp"       // the consumer's own, not eccd's (include/api/solve.hpp)
+#endif
 #include <cstdio>
 int main(int argc, char** argv) {
+#if CONSUMER_OWN_HEADERS
+  std::printf("beside eccd: %s, %s\n", consumer::kernel_answer(), consumer::api_solve());
+#endif
   const eccd::Scene scene = eccd::read_scene(argc > 1 ? argv[1] : "cases/paper002/example.json");
   const eccd::Answer got = eccd::solve(scene).answer, want = scene.answer.value();  // exact by default
   auto same = [](const eccd::Instant& a, const eccd::Instant& b) {
