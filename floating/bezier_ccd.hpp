@@ -67,7 +67,10 @@
 // at most 15 of those), and only the instants that reach the answer or a
 // cell are formatted as text (the others, about half, would be %.17g-printed and
 // thrown away).
+#include "floating/bernstein_peak.hpp"
+#include "floating/bernstein_restrict.hpp"
 #include "floating/bernstein_roots.hpp"
+#include "floating/gauss_cone.hpp"
 #include "kernel/budget.hpp"
 #include "kernel/cd_disc.hpp"
 #include "kernel/characteristic_polynomial.hpp"
@@ -96,161 +99,6 @@ struct BezierOptions {
   int overlap_depth = 10;         // t-subdivision depth between two overlapping instants
   bool first_contact_only = false;
 };
-
-// c restricted to [a, b] ⊂ [0, 1] in place (two de Casteljau splits, each
-// keeping one piece); `one` is 1 at a's precision.
-template <class T>
-void restrict_in_place(std::span<T> c, const T& a, const T& b, const T& one) {
-  const T zero = a - a;
-  if (a > zero) keep_right(c, a);
-  if (b < one) {
-    T tau = (b - a) / (one - a);
-    keep_left(c, tau);
-  }
-}
-
-// q restricted to [a, b] ⊂ [0, 1].
-template <class T>
-Bern<T> restrict_to(const Bern<T>& q, const T& a, const T& b, const T& one) {
-  Bern<T> r = q;
-  restrict_in_place(std::span<T>(r.b), a, b, one);
-  return r;
-}
-template <class T>
-Bern<T> restrict_to(const Bern<T>& q, const T& a, const T& b) {
-  return restrict_to(q, a, b, scalar_traits<T>::from_rational(mpq_class(1), a));
-}
-
-template <class T>
-BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b, const T& one) {
-  BiBern<T> r = f;
-  for (auto& row : r.b) restrict_in_place(std::span<T>(row), a, b, one);
-  return r;
-}
-template <class T>
-BiBern<T> restrict_t(const BiBern<T>& f, const T& a, const T& b) {
-  return restrict_t(f, a, b, scalar_traits<T>::from_rational(mpq_class(1), a));
-}
-
-// argmax of a univariate Bernstein polynomial on [0, 1] by the roots of its
-// derivative (rounded arithmetic), with the value there.
-//
-// The peak's u is a witness, not a decision (any u with F(u, t0) > 0 proves
-// separation; the value is then computed, with its bound, at that u): it is
-// located in the plain arithmetic under a running bound (Bounded<V>: V), and
-// only to 2^-(bits/2 + 6) of its piece. Near a simple maximum u* of f,
-// f(u) = f(u*) - O(|f''| (u - u*)^2), so a witness that close gives the peak's
-// value to within |f''| 2^-(bits + 12), below the rounding of its evaluation
-// (n(n-1) = 12 for the quartic F(., t0)); refining further (to 2^-50 at
-// every static test and shot) changes nothing but the last
-// bits of u and costs a third of a 3D query. Clusters (a multiple
-// root of f', an inflection) are still found at the full precision.
-template <class U>
-struct Peak {
-  U u, value;
-};
-
-// u0, u1: 0 and 1 at the precision of f's coefficients.
-template <class U>
-Peak<U> bern_argmax(const Bern<U>& f, int bits, const U& u0, const U& u1) {
-  using P = PlainOf<U>;
-  using V = typename P::type;
-  Peak<U> best{u0, f(u0)};
-  U v1 = f(u1);
-  if (v1 > best.value) best = {u1, v1};
-  Bern<V> df;  // f' in V: the same values as f' in U (a running bound only adds a bound)
-  const int n = f.degree();
-  df.b.reserve(std::max(n, 1));
-  if (n <= 0) df.b.push_back(V(0));
-  for (int i = 0; i < n; ++i) {
-    V diff = P::of(f.b[i + 1]) - P::of(f.b[i]);
-    df.b.push_back(V(n) * diff);
-  }
-  BernsteinRootOptions<V> ro;
-  ro.precision_bits = bits;
-  ro.simple_bits = std::min(bits, bits / 2 + 6);
-  for (const auto& r : bernstein_roots(df, ro)) {
-    U u = P::lift(r.value);
-    U v = f(u);
-    if (v > best.value) best = {u, v};
-  }
-  return best;
-}
-template <class U>
-Peak<U> bern_argmax(const Bern<U>& f, int bits) {
-  const U& like = f.b.front();
-  return bern_argmax(f, bits, scalar_traits<U>::from_rational(mpq_class(0), like),
-                     scalar_traits<U>::from_rational(mpq_class(1), like));
-}
-
-namespace bezier_detail {
-
-// The sign of a·d − b·c, exact for doubles as long as no product under- or
-// overflows (pointed() below scales each point so that it cannot overflow).
-// Rounding to nearest is monotone, so p = fl(a·d) > q = fl(b·c) implies
-// a·d > b·c; when p == q, a·d − b·c = ep − eq exactly (the fma gives the
-// products' rounding errors exactly), and comparing two doubles is exact.
-inline int cross_sign(double a, double b, double c, double d) {
-  const double p = a * d, q = b * c;
-  if (p != q) return p > q ? 1 : -1;
-  const double ep = std::fma(a, d, -p), eq = std::fma(b, c, -q);
-  return ep > eq ? 1 : ep < eq ? -1 : 0;
-}
-
-// Two non-zero collinear vectors point the same way iff their coordinates have
-// the same signs (one is a positive multiple of the other).
-inline bool same_way(double x1, double y1, double x2, double y2) {
-  return (x1 > 0) == (x2 > 0) && (x1 < 0) == (x2 < 0) && (y1 > 0) == (y2 > 0) && (y1 < 0) == (y2 < 0);
-}
-
-// All points strictly inside one open half-plane through the origin (001
-// section 4's Gaussian-circle test: the gradients' directions cover less than
-// a half circle). Decided by the signs of cross products, no angles (atan2 costs
-// 15 % of paper 002's double query): the points are taken in order
-// and the cone [lo, hi] (counter-clockwise from lo to hi, narrower than π)
-// spanned by those seen so far is kept; a point inside it changes nothing, a
-// point less than π counter-clockwise of lo and beyond hi becomes hi (the
-// mirror case becomes lo), any other point (on the far side of both, or
-// opposite one of them) means no open half-plane holds them all. The cone of
-// a finite set in an open half-plane is unique, so the answer does not depend
-// on the order, and with exact cross signs it is the exact answer for the
-// given doubles (a zero point or a non-finite coordinate: false, i.e. not shown
-// loop-free; the caller subdivides).
-inline bool pointed(const std::vector<std::pair<double, double>>& pts) {
-  double lx = 0, ly = 0, hx = 0, hy = 0;
-  bool first = true;
-  for (auto [x, y] : pts) {
-    const double ax = std::fabs(x), ay = std::fabs(y);
-    if (!(ax < 0x1p400 && ay < 0x1p400 && (ax > 0x1p-400 || ay > 0x1p-400))) {  // NaN lands here too
-      // outside the range where the products are exact: scaled by a power of two
-      if (!std::isfinite(x) || !std::isfinite(y) || (x == 0 && y == 0)) return false;
-      const int e = std::ilogb(std::max(ax, ay));
-      x = std::ldexp(x, -e);
-      y = std::ldexp(y, -e);
-    }
-    if (first) {
-      lx = hx = x;
-      ly = hy = y;
-      first = false;
-      continue;
-    }
-    const int c1 = cross_sign(lx, ly, x, y), c2 = cross_sign(x, y, hx, hy);  // lo × p, p × hi
-    if (c1 >= 0 && c2 >= 0) {                                                // inside [lo, hi], or on one of its lines
-      if ((c1 == 0 && !same_way(lx, ly, x, y)) || (c2 == 0 && !same_way(x, y, hx, hy))) return false;
-    } else if (c1 > 0 && c2 < 0) {
-      hx = x;
-      hy = y;
-    } else if (c1 < 0 && c2 > 0) {
-      lx = x;
-      ly = y;
-    } else {
-      return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace bezier_detail
 
 template <class T>
 class BezierZeroSet {
