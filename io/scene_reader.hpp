@@ -54,7 +54,7 @@
 //     answer).
 // 13. Scene::path is set to the file label (the path for read_scene_file).
 //     An unreadable file gives "FILE: cannot read the file: reason".
-// 14. Input limits (issue 15; InputLimits below, changed by the command line's
+// 14. Input limits (InputLimits below, changed by the command line's
 //     --max-file-bytes, --max-digits, --max-degree): a scene file of more than
 //     max_file_bytes is refused before it is read whole (so /dev/zero ends at
 //     once); a number whose exact value p/q has more than max_digits decimal
@@ -64,7 +64,7 @@
 //     option. A NUL byte in the file is reported as such (a binary file), an
 //     empty file as empty. Long keys and values are cut in messages (80
 //     characters and "...").
-// 15. "parameters" (scene-format.md, "Independent motions", issue 20): the
+// 15. "parameters" (scene-format.md, "Independent motions"): the
 //     string "shared" (the default) or "independent", nothing else (Scene::
 //     independent). The answer of an independent scene has exactly the keys
 //     collides, s_intervals, t_intervals (each list [] when missing; collides
