@@ -42,7 +42,7 @@
 //              over [0, 1] is exactly d, reached at t0, and the pair never
 //              collides. (Not generated for affine motions, which do not keep
 //              distances.)
-//   overlap    (issue 14, point 5) both solids translate linearly (degree 1,
+//   overlap    both solids translate linearly (degree 1,
 //              motion "translation"): at t0 B is pushed δ = 10^-e into A along
 //              the common normal of a touching pose (as for touch), and moves
 //              along the tangent plane with constant velocity, so the pair
@@ -52,7 +52,7 @@
 //              collision-free (floating/bezier_ccd.hpp, step 2).
 //   graze      the same with δ = 0: the collision set is exactly {t0}, an
 //              isolated touch (strict convexity, as for touch).
-//   decimal    realistic input (issue 14, point 6): a scene of a generic
+//   decimal    realistic input: a scene of a generic
 //              family (colliding, free or touch, chosen by the seed; the note
 //              says which) whose every coefficient and semi-axis is rounded to
 //              a decimal of `digits` significant digits (6, 9, 12, 15), as a
@@ -74,7 +74,7 @@
 //              a chain as a `matrix` motion (exact products of the decimals).
 //              The interpolation is kernel/keyframe_motion.hpp's, the code
 //              `eccd animate` runs (one rule for the family and animations).
-//   cycloidal, independent (issue 20) motions that are not shared-parameter
+//   cycloidal, independent: motions that are not shared-parameter
 //              rational ones: cycloidal (2D, 003 section V) and independent
 //              straight paths A(s), B(t) (3D, 001 section 4), each with a kind
 //              (colliding, free, touch, ...) picked by the seed and stated in
