@@ -420,32 +420,30 @@ nlohmann::json floating_table(RegressTotals& tot) {
 int print_json(const RegressArgs& args, const RegressTotals& tot, const nlohmann::json& table, double secs) {
   const bool certified_mode = args.arith != "exact";
   const int bad = tot.differ + tot.failed;
-  if (args.json) {
-    nlohmann::json j = {{"dir", args.dir},        {"arith", args.arith},  {"scenes", tot.rows},
-                        {"agree", tot.agree},     {"differ", tot.differ}, {"errors", tot.failed},
-                        {"skipped", tot.skipped}, {"seconds", secs},      {"passed", bad == 0}};
-    if (certified_mode) {
-      j["escalated"] = tot.escalated;
-      j["decided_in"] = tot.decided_in;
-      j["local_decisions"] = tot.local_decisions;
-      j["local_scenes"] = tot.local_scenes;
-    }
-    if (args.floating) j["floating"] = {{"tolerance", args.tol}, {"pipelines", table}};
-    if (args.certify) {
-      nlohmann::json cj = nlohmann::json::array();
-      for (const auto& [kind, c] : tot.certificate_cost)
-        cj.push_back({{"kind", kind},
-                      {"certificates", c.count},
-                      {"prove_seconds", c.prove_s},
-                      {"check_seconds", c.check_s},
-                      {"check_over_prove", c.check_s / std::max(c.prove_s, 1e-9)},
-                      {"worst_check_over_prove", c.worst_ratio}});
-      j["certificate_cost"] = cj;
-    }
-    stamp_format(j, "eccd-regress/1");
-    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-    return bad ? 1 : 0;
+  nlohmann::json j = {{"dir", args.dir},        {"arith", args.arith},  {"scenes", tot.rows},
+                      {"agree", tot.agree},     {"differ", tot.differ}, {"errors", tot.failed},
+                      {"skipped", tot.skipped}, {"seconds", secs},      {"passed", bad == 0}};
+  if (certified_mode) {
+    j["escalated"] = tot.escalated;
+    j["decided_in"] = tot.decided_in;
+    j["local_decisions"] = tot.local_decisions;
+    j["local_scenes"] = tot.local_scenes;
   }
+  if (args.floating) j["floating"] = {{"tolerance", args.tol}, {"pipelines", table}};
+  if (args.certify) {
+    nlohmann::json cj = nlohmann::json::array();
+    for (const auto& [kind, c] : tot.certificate_cost)
+      cj.push_back({{"kind", kind},
+                    {"certificates", c.count},
+                    {"prove_seconds", c.prove_s},
+                    {"check_seconds", c.check_s},
+                    {"check_over_prove", c.check_s / std::max(c.prove_s, 1e-9)},
+                    {"worst_check_over_prove", c.worst_ratio}});
+    j["certificate_cost"] = cj;
+  }
+  stamp_format(j, "eccd-regress/1");
+  std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  return bad ? 1 : 0;
 }
 
 int print_text(const RegressArgs& args, const RegressTotals& tot, const nlohmann::json& table, double secs) {
