@@ -317,7 +317,7 @@ std::string exact_decimal(const Rational& x0) {
   std::string digits = mpz_class(abs(n)).get_str();
   if (k > 0) {
     if (int(digits.size()) <= k) digits = std::string(k - digits.size() + 1, '0') + digits;
-    digits.insert(digits.size() - k, ".");
+    digits.insert(digits.size() - std::size_t(k), 1, '.');  // (pos, count, char): GCC 12 -Wrestrict misfires on a char*
     while (digits.back() == '0') digits.pop_back();
     if (digits.back() == '.') digits.pop_back();
   }
