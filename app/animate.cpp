@@ -118,6 +118,47 @@ std::string poses_summary_text(const PosesResult& r) {
   return o.str();
 }
 
+// --frame-block i/n: the i-th of n contiguous blocks of frames.
+void parse_frame_block(const std::string& s, AnimateOptions& o) {
+  const auto slash = s.find('/');
+  bool ok = slash != std::string::npos && slash > 0 && slash + 1 < s.size() &&
+            s.find_first_not_of("0123456789/") == std::string::npos && s.find('/', slash + 1) == std::string::npos &&
+            slash <= 6 && s.size() - slash - 1 <= 6;
+  if (ok) {
+    o.shard_index = std::stoul(s.substr(0, slash));
+    o.shard_count = std::stoul(s.substr(slash + 1));
+    ok = o.shard_count >= 1 && o.shard_index < o.shard_count;
+  }
+  if (!ok) throw std::invalid_argument("--frame-block " + s + ": expected i/n with 0 <= i < n");
+}
+
+void add_animate_options(CLI::App* sub, AnimateArgs& args) {
+  sub->add_option("ANIMATION", args.path, "Animation file (format ellipse-ccd-animation/1)")->required();
+  sub->add_option("--arith", args.arith, "Arithmetic of the continuous test: double, mpfr:BITS, exact or certified")
+      ->capture_default_str();
+  sub->add_flag("--json", args.json, "Print the answer object (format ellipse-ccd-animation-answer/1)");
+  sub->add_flag("--all-intervals", args.all_intervals,
+                "Every collision interval of each pair-frame (default: the first contact)");
+  sub->add_flag(
+      "--no-planes", args.no_planes,
+      "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
+  sub->add_flag(
+      "--poses", args.poses,
+      "Per-pose mode (papers 000 and 001): the static test of each pair at each key pose, keeping the separating "
+      "plane from pose to pose (000 section 4); arithmetic double, exact or certified; answer \"mode\": \"poses\"");
+  sub->add_option("--jobs", args.threads, "Threads running pair-frames (the output does not depend on it)")
+      ->capture_default_str();
+  add_old_spelling(sub, "--threads", "--threads", "--jobs", args.threads);
+  // report --shard takes every n-th task; a block of frames is another partition, so it has its own name.
+  sub->add_option("--frame-block", args.shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
+  add_old_spelling(sub, "--shard", "--shard", "--frame-block", args.shard);
+  sub->add_option(
+      "--out", args.out,
+      "Write the output to this file (atomically) instead of standard output: a new name, or with --force an "
+      "existing regular file that is not the animation (a directory, device, FIFO, socket or symbolic link: exit 2)");
+  sub->add_flag("--force", args.force, "Replace an existing --out file");
+}
+
 }  // namespace
 
 Command add_animate_command(CLI::App& app) {
@@ -127,30 +168,7 @@ Command add_animate_command(CLI::App& app) {
       "animate",
       "Every checked pair of an animation (docs/animation-format.md) in every frame: bounding spheres, "
       "the kept separating plane, then the continuous test in the chosen arithmetic.");
-  c.sub->add_option("ANIMATION", args->path, "Animation file (format ellipse-ccd-animation/1)")->required();
-  c.sub->add_option("--arith", args->arith, "Arithmetic of the continuous test: double, mpfr:BITS, exact or certified")
-      ->capture_default_str();
-  c.sub->add_flag("--json", args->json, "Print the answer object (format ellipse-ccd-animation-answer/1)");
-  c.sub->add_flag("--all-intervals", args->all_intervals,
-                  "Every collision interval of each pair-frame (default: the first contact)");
-  c.sub->add_flag(
-      "--no-planes", args->no_planes,
-      "Skip the separating-plane stage (no plane kept from frame to frame): paper 000 Table 1's run without planes");
-  c.sub->add_flag(
-      "--poses", args->poses,
-      "Per-pose mode (papers 000 and 001): the static test of each pair at each key pose, keeping the separating "
-      "plane from pose to pose (000 section 4); arithmetic double, exact or certified; answer \"mode\": \"poses\"");
-  c.sub->add_option("--jobs", args->threads, "Threads running pair-frames (the output does not depend on it)")
-      ->capture_default_str();
-  add_old_spelling(c.sub, "--threads", "--threads", "--jobs", args->threads);
-  // report --shard takes every n-th task; a block of frames is another partition, so it has its own name.
-  c.sub->add_option("--frame-block", args->shard, "i/n: run the i-th of n contiguous blocks of frames (0 <= i < n)");
-  add_old_spelling(c.sub, "--shard", "--shard", "--frame-block", args->shard);
-  c.sub->add_option(
-      "--out", args->out,
-      "Write the output to this file (atomically) instead of standard output: a new name, or with --force an "
-      "existing regular file that is not the animation (a directory, device, FIFO, socket or symbolic link: exit 2)");
-  c.sub->add_flag("--force", args->force, "Replace an existing --out file");
+  add_animate_options(c.sub, *args);
 
   c.run = [args]() -> int {
     AnimateOptions o;
@@ -165,19 +183,7 @@ Command add_animate_command(CLI::App& app) {
     if (args->threads < 1 || args->threads > 256)
       throw std::invalid_argument("--jobs " + std::to_string(args->threads) + ": expected 1 to 256");
     o.threads = args->threads;
-    if (!args->shard.empty()) {
-      const std::string& s = args->shard;
-      const auto slash = s.find('/');
-      bool ok = slash != std::string::npos && slash > 0 && slash + 1 < s.size() &&
-                s.find_first_not_of("0123456789/") == std::string::npos &&
-                s.find('/', slash + 1) == std::string::npos && slash <= 6 && s.size() - slash - 1 <= 6;
-      if (ok) {
-        o.shard_index = std::stoul(s.substr(0, slash));
-        o.shard_count = std::stoul(s.substr(slash + 1));
-        ok = o.shard_count >= 1 && o.shard_index < o.shard_count;
-      }
-      if (!ok) throw std::invalid_argument("--frame-block " + s + ": expected i/n with 0 <= i < n");
-    }
+    if (!args->shard.empty()) parse_frame_block(args->shard, o);
     if (!args->out.empty()) {
       check_output_path("--out", args->out);
       check_output_file("--out", args->out, args->force, {args->path});

@@ -161,6 +161,85 @@ std::string certified_text(const nlohmann::json& cert) {
   return o.str();
 }
 
+void add_certify_options(CLI::App* s, CertifyArgs& args) {
+  s->add_option("SCENE", args.scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
+  s->add_option(
+      "--out", args.out,
+      "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder): a new name, "
+      "or with --force an existing regular file that is not the scene (a directory, device, FIFO, socket or symbolic "
+      "link: exit 2)");
+  s->add_flag("--force", args.force, "Replace an existing certificate file");
+  s->add_option("--mpfr-bits", args.mpfr_bits, "MPFR precisions of the floating pipelines judged")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(53, 65536));
+  s->add_option("--tol", args.tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  s->add_option("--arith", args.arith,
+                "exact: the exact pipeline's certificate; certified: 3D scenes try the interval Bezier proof first "
+                "(eccd-bezier-certificate/2) and fall back to the exact certificate; 2D and independent scenes: the "
+                "certificate --arith exact writes")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exact", "certified"}));
+  s->add_flag("--no-floating", args.no_floating, "Certify only; do not run the floating pipelines");
+  s->add_flag("--json", args.json,
+              "Print one JSON object (certified answer, verdicts, certificate path) instead of text");
+}
+
+// The floating pipelines judged against the certificate's answer (none for
+// independent scenes: the harness pipelines are shared-parameter methods).
+std::vector<Verdict> floating_verdicts(const CertifyArgs& args, const Scene& scene, nlohmann::json& cert) {
+  std::vector<Verdict> verdicts;
+  if (!args.no_floating &&
+      !scene.independent) {  // independent scenes: the harness pipelines are shared-parameter methods
+    nlohmann::json plain = cert["answer"];
+    plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches
+                               // (certificate/write/cycloidal_certificate.hpp)
+    if (plain.contains("collides") && plain["collides"].is_null())
+      plain["collides"] = false;  // unknown: no collision proved, some stretch undecided
+    Answer certified = answer_from_json(plain, "the certificate", "/answer");
+    if (cert["answer"].contains("undecided"))
+      for (const auto& u : cert["answer"]["undecided"])
+        certified.undecided.push_back(instant_from_json(u, "the certificate", "/answer/undecided"));
+    HarnessOptions ho;
+    ho.mpfr_bits = args.mpfr_bits;
+    for (const auto& p :
+         motion_family_scene(scene) ? motion_family_pipelines(scene, ho) : harness_pipelines(scene.dim, ho)) {
+      if (!p.opt.arith.floating()) continue;  // double and MPFR only: not exact, nor the peers certified and fcl/
+      if (!quiet()) std::cerr << "certify: " << p.label << " ...\n";
+      try {
+        const Solution got = solve(scene, p.opt);
+        verdicts.push_back(judge(p.label, got.answer, certified, args.tol, got.time_ms));
+      } catch (const std::exception& e) {
+        verdicts.push_back(failed_verdict(p.label, e.what()));
+      }
+      verdicts.back().guard = p.guard;
+    }
+  }
+  return verdicts;
+}
+
+int print_certify_json(const Scene& scene, const fs::path& out, nlohmann::json& cert, const nlohmann::json& vj,
+                       const std::string& route, const std::string& route_why) {
+  nlohmann::json j = {
+      {"scene", scene.path},
+      {"certificate", out.string()},
+      {"answer", cert["answer"]},
+      {"verdicts", vj},
+      {"projection", cert.contains("projection") ? cert["projection"]["name"]
+                                                 : nlohmann::json(scene.independent   ? "independent-krawczyk"
+                                                                  : route == "bezier" ? "bezier-krawczyk"
+                                                                                      : "cycloidal-delta")},
+      {"certify_seconds", cert["seconds"]},
+      {"complete", cert.value("complete", true)},
+      {"route", route}};
+  if (!route_why.empty()) j["route_reason"] = route_why;
+  stamp_format(j, "eccd-certify/1");
+  std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 Command add_certify_command(CLI::App& app) {
@@ -181,29 +260,7 @@ Command add_certify_command(CLI::App& app) {
       "when that proof decides it, else the exact certificate; 2D scenes (and independent ones) get the "
       "certificate they get with --arith exact; the route taken is printed (JSON key \"route\").");
   auto* s = c.sub;
-  s->add_option("SCENE", args->scene, "Scene file (format ellipse-ccd-scene/1); - reads standard input")->required();
-  s->add_option(
-      "--out", args->out,
-      "Where to write the certificate (default: SCENE's file name with .cert.json, in the current folder): a new name, "
-      "or with --force an existing regular file that is not the scene (a directory, device, FIFO, socket or symbolic "
-      "link: exit 2)");
-  s->add_flag("--force", args->force, "Replace an existing certificate file");
-  s->add_option("--mpfr-bits", args->mpfr_bits, "MPFR precisions of the floating pipelines judged")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::Range(53, 65536));
-  s->add_option("--tol", args->tol, "Tolerance on instants for the verdicts (an interval end further off is reported)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  s->add_option("--arith", args->arith,
-                "exact: the exact pipeline's certificate; certified: 3D scenes try the interval Bezier proof first "
-                "(eccd-bezier-certificate/2) and fall back to the exact certificate; 2D and independent scenes: the "
-                "certificate --arith exact writes")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"exact", "certified"}));
-  s->add_flag("--no-floating", args->no_floating, "Certify only; do not run the floating pipelines");
-  s->add_flag("--json", args->json,
-              "Print one JSON object (certified answer, verdicts, certificate path) instead of text");
+  add_certify_options(s, *args);
   c.run = [args]() {
     SceneBytes sb = read_scene_once(args->scene);
     const Scene& scene = sb.scene;
@@ -249,33 +306,7 @@ Command add_certify_command(CLI::App& app) {
     if (!chk.valid)
       throw std::logic_error("the certificate fails its own check (" + chk.failed_claim + ": " + chk.reason + ")");
 
-    std::vector<Verdict> verdicts;
-    if (!args->no_floating &&
-        !scene.independent) {  // independent scenes: the harness pipelines are shared-parameter methods
-      nlohmann::json plain = cert["answer"];
-      plain.erase("undecided");  // a cycloidal certificate lists its undecided stretches
-                                 // (certificate/write/cycloidal_certificate.hpp)
-      if (plain.contains("collides") && plain["collides"].is_null())
-        plain["collides"] = false;  // unknown: no collision proved, some stretch undecided
-      Answer certified = answer_from_json(plain, "the certificate", "/answer");
-      if (cert["answer"].contains("undecided"))
-        for (const auto& u : cert["answer"]["undecided"])
-          certified.undecided.push_back(instant_from_json(u, "the certificate", "/answer/undecided"));
-      HarnessOptions ho;
-      ho.mpfr_bits = args->mpfr_bits;
-      for (const auto& p :
-           motion_family_scene(scene) ? motion_family_pipelines(scene, ho) : harness_pipelines(scene.dim, ho)) {
-        if (!p.opt.arith.floating()) continue;  // double and MPFR only: not exact, nor the peers certified and fcl/
-        if (!quiet()) std::cerr << "certify: " << p.label << " ...\n";
-        try {
-          const Solution got = solve(scene, p.opt);
-          verdicts.push_back(judge(p.label, got.answer, certified, args->tol, got.time_ms));
-        } catch (const std::exception& e) {
-          verdicts.push_back(failed_verdict(p.label, e.what()));
-        }
-        verdicts.back().guard = p.guard;
-      }
-    }
+    const std::vector<Verdict> verdicts = floating_verdicts(*args, scene, cert);
     nlohmann::json vj = nlohmann::json::array();
     for (const auto& v : verdicts) vj.push_back(v.to_json());
     cert["floating_verdicts"] = {{"tolerance", args->tol},
@@ -283,24 +314,7 @@ Command add_certify_command(CLI::App& app) {
                                  {"pipelines", vj}};
     write_text_atomically(out, cert.dump(1) + "\n");
 
-    if (args->json) {
-      nlohmann::json j = {
-          {"scene", scene.path},
-          {"certificate", out.string()},
-          {"answer", cert["answer"]},
-          {"verdicts", vj},
-          {"projection", cert.contains("projection") ? cert["projection"]["name"]
-                                                     : nlohmann::json(scene.independent   ? "independent-krawczyk"
-                                                                      : route == "bezier" ? "bezier-krawczyk"
-                                                                                          : "cycloidal-delta")},
-          {"certify_seconds", cert["seconds"]},
-          {"complete", cert.value("complete", true)},
-          {"route", route}};
-      if (!route_why.empty()) j["route_reason"] = route_why;
-      stamp_format(j, "eccd-certify/1");
-      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-      return 0;
-    }
+    if (args->json) return print_certify_json(scene, out, cert, vj, route, route_why);
     std::cout << certified_text(cert);
     if (args->arith == "certified")
       std::cout << "route: " << route << (route_why.empty() ? "" : " (" + route_why + ")") << "\n";

@@ -96,6 +96,25 @@ void add_plan_options(CLI::App* s, GeneratePlan& plan) {
       ->check(CLI::Range(1, 30));
 }
 
+namespace {
+
+// The output folder exists, or can be created: no file in the way.
+void check_out_folder(const std::string& out) {
+  std::error_code ec;
+  fs::path o(out);
+  if (fs::exists(o, ec) && !fs::is_directory(o, ec)) throw OutputError(out + ": exists and is not a folder");
+  for (fs::path p = o.parent_path(); !p.empty(); p = p.parent_path()) {
+    if (fs::exists(p, ec)) {
+      if (!fs::is_directory(p, ec))
+        throw OutputError(out + ": cannot create the folder: " + p.string() + " is not a folder");
+      break;
+    }
+    if (p == p.parent_path()) break;
+  }
+}
+
+}  // namespace
+
 Command add_generate_command(CLI::App& app) {
   auto args = std::make_shared<GenerateArgs>();
   Command c;
@@ -128,19 +147,7 @@ Command add_generate_command(CLI::App& app) {
       throw std::invalid_argument("generate: --out-dir DIR is required (the folder the scenes are written into)");
     check_output_path("--out-dir", args->out);
     check_plan(args->plan);
-    {  // the folder must be creatable (or exist) before any scene is solved
-      std::error_code ec;
-      fs::path o(args->out);
-      if (fs::exists(o, ec) && !fs::is_directory(o, ec)) throw OutputError(args->out + ": exists and is not a folder");
-      for (fs::path p = o.parent_path(); !p.empty(); p = p.parent_path()) {
-        if (fs::exists(p, ec)) {
-          if (!fs::is_directory(p, ec))
-            throw OutputError(args->out + ": cannot create the folder: " + p.string() + " is not a folder");
-          break;
-        }
-        if (p == p.parent_path()) break;
-      }
-    }
+    check_out_folder(args->out);  // creatable (or existing) before any scene is solved
     auto specs = plan_scenes(args->plan);
     if (specs.empty()) throw std::invalid_argument("the options select no scene to generate");
     // Build and validate everything before writing anything.

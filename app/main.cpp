@@ -169,10 +169,10 @@ int main(int argc, char** argv) {
 }
 
 namespace {
-int run_main(int argc, char** argv) {
-  CLI::App app{
-      "eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and "
-      "ellipsoids"};
+// The program's own options and behaviour: one sub-command, errors that
+// start with "eccd: ", --version, --quiet, and the budget (options of eccd
+// and, through fallthrough, of every sub-command).
+void configure_app(CLI::App& app) {
   app.require_subcommand(1);
   // Parser errors (an unknown option, a bad value) start with "eccd: " like every other error.
   app.failure_message(
@@ -205,6 +205,57 @@ int run_main(int argc, char** argv) {
   app.add_option("--max-degree", lim.max_degree, "Highest degree of a polynomial in a scene file; higher: exit 2")
       ->capture_default_str()
       ->check(CLI::Range(0, 100000));
+}
+
+// --memory-limit: the address space of the process (never above a hard limit already set).
+void apply_memory_limit() {
+  if (run_budget().memory_limit_mb > 0) {
+    rlimit rl{};
+    rl.rlim_cur = rl.rlim_max = rlim_t(run_budget().memory_limit_mb) << 20;
+    rlimit old{};
+    if (getrlimit(RLIMIT_AS, &old) == 0 && old.rlim_max != RLIM_INFINITY && old.rlim_max < rl.rlim_max)
+      rl.rlim_cur = rl.rlim_max = old.rlim_max;
+    setrlimit(RLIMIT_AS, &rl);
+  }
+}
+
+// The input file of the command that runs (SCENE or ANIMATION), for messages that do not name it (exit 5).
+std::string input_of_command(const std::vector<Command>& commands) {
+  for (auto& c : commands)
+    if (*c.sub)
+      for (const char* n : {"SCENE", "ANIMATION"})
+        if (const CLI::Option* o = c.sub->get_option_no_throw(n); o && o->count() > 0) {
+          const std::string v = o->as<std::string>();
+          return v == "-" ? "<stdin>" : v;
+        }
+  return "";
+}
+
+// Runs the chosen command under its deadline; check-certificate's refusals name the scene.
+int run_command(Command& c) {
+  // certify and check-certificate are one pipeline run each; regress and
+  // report set the deadline per scene / task themselves.
+  const bool one_run = c.sub->get_name() == "certify" || c.sub->get_name() == "check-certificate";
+  ScopedDeadline deadline(one_run ? run_budget().time_limit_s : 0);
+  if (one_run) arm_backstop(run_budget().time_limit_s);
+  if (c.sub->get_name() != "check-certificate") return c.run();
+  try {
+    return c.run();
+  } catch (const IndependentMotionsRefused& e) {  // a valid scene the certificate algebra refuses: exit 3
+    throw ExitError(3, c.sub->get_option("SCENE")->as<std::string>() + ": " + e.what());
+  } catch (const std::invalid_argument& e) {  // e.g. a cycloidal scene: name the file if the message does not
+    const std::string scene = c.sub->get_option("SCENE")->as<std::string>();
+    std::string m = cli_message(e);
+    if (m.find(scene) == std::string::npos) throw std::invalid_argument(scene + ": " + m);
+    throw;
+  }
+}
+
+int run_main(int argc, char** argv) {
+  CLI::App app{
+      "eccd: exact-arithmetic verification workbench for continuous collision detection of moving ellipses and "
+      "ellipsoids"};
+  configure_app(app);
 
   std::vector<Command> commands{add_solve_command(app),
                                 add_table_command(app),
@@ -245,50 +296,15 @@ int run_main(int argc, char** argv) {
     if (*c.sub)
       if (const CLI::Option* o = c.sub->get_option_no_throw("--json")) json_mode = o->count() > 0;
   g_json_mode = json_mode;
-  if (run_budget().memory_limit_mb > 0) {
-    rlimit rl{};
-    rl.rlim_cur = rl.rlim_max = rlim_t(run_budget().memory_limit_mb) << 20;
-    rlimit old{};
-    if (getrlimit(RLIMIT_AS, &old) == 0 && old.rlim_max != RLIM_INFINITY && old.rlim_max < rl.rlim_max)
-      rl.rlim_cur = rl.rlim_max = old.rlim_max;
-    setrlimit(RLIMIT_AS, &rl);
-  }
+  apply_memory_limit();
 
-  // The input file of the command that runs (SCENE or ANIMATION), for messages that do not name it (exit 5).
-  auto input_of_command = [&commands]() -> std::string {
-    for (auto& c : commands)
-      if (*c.sub)
-        for (const char* n : {"SCENE", "ANIMATION"})
-          if (const CLI::Option* o = c.sub->get_option_no_throw(n); o && o->count() > 0) {
-            const std::string v = o->as<std::string>();
-            return v == "-" ? "<stdin>" : v;
-          }
-    return "";
-  };
   std::ostringstream hint;
   hint << " (--time-limit " << run_budget().time_limit_s << " s, --memory-limit " << run_budget().memory_limit_mb
        << " MiB)";
   const std::string budget_hint = hint.str();
   try {
     for (auto& c : commands)
-      if (*c.sub) {
-        // certify and check-certificate are one pipeline run each; regress and
-        // report set the deadline per scene / task themselves.
-        const bool one_run = c.sub->get_name() == "certify" || c.sub->get_name() == "check-certificate";
-        ScopedDeadline deadline(one_run ? run_budget().time_limit_s : 0);
-        if (one_run) arm_backstop(run_budget().time_limit_s);
-        if (c.sub->get_name() != "check-certificate") return c.run();
-        try {
-          return c.run();
-        } catch (const IndependentMotionsRefused& e) {  // a valid scene the certificate algebra refuses: exit 3
-          throw ExitError(3, c.sub->get_option("SCENE")->as<std::string>() + ": " + e.what());
-        } catch (const std::invalid_argument& e) {  // e.g. a cycloidal scene: name the file if the message does not
-          const std::string scene = c.sub->get_option("SCENE")->as<std::string>();
-          std::string m = cli_message(e);
-          if (m.find(scene) == std::string::npos) throw std::invalid_argument(scene + ": " + m);
-          throw;
-        }
-      }
+      if (*c.sub) return run_command(c);
   } catch (const ExitError& e) {  // 3 refused, 4 cannot certify (the message names the scene)
     return fail(e.code, cut_message(e.what()));
   } catch (const SceneError& e) {
@@ -305,10 +321,11 @@ int run_main(int argc, char** argv) {
     return fail(2, "malformed JSON: " + cut_message(e.what()));
   } catch (const BudgetExhausted& e) {
     std::string m = e.what();
-    if (const std::string in = input_of_command(); !in.empty() && m.find(in) == std::string::npos) m = in + ": " + m;
+    if (const std::string in = input_of_command(commands); !in.empty() && m.find(in) == std::string::npos)
+      m = in + ": " + m;
     return fail(5, "resource budget exhausted: " + cut_message(m) + budget_hint);
   } catch (const std::bad_alloc&) {
-    const std::string in = input_of_command();
+    const std::string in = input_of_command(commands);
     return fail(
         5, "resource budget exhausted: " + (in.empty() ? std::string() : in + ": ") + "out of memory" + budget_hint);
   } catch (const std::exception& e) {

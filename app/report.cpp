@@ -336,45 +336,11 @@ int run_command(ReportArgs& a) {
 
 using namespace report_detail;
 
-Command add_report_command(CLI::App& app) {
-  auto a = std::make_shared<ReportArgs>();
-  // The main job's defaults (scripts/run-main.sh, reports/default): one scene per plan entry, three MPFR
-  // precisions and 2 s per floating run, so that the report of every family in both input modes takes
-  // minutes, not an hour, on 2 cores; --count, --mpfr-bits, --budget and --map-size widen it.
-  a->plan.count = 1;
-  a->harness.mpfr_bits = {64, 128, 256};
-  a->harness.budget_s = 2;
-  a->map_size = 16;
-  Command c;
-  c.sub = app.add_subcommand(
-      "report",
-      "Robustness report: generate seeded scenes (2D and 3D, motion degrees 2-6, families colliding / free / touch / "
-      "near-miss, overlap / graze (linear translations, degree 1), and the realistic-input families decimal / "
-      "keyframe; "
-      "--families cycloidal,independent adds the cycloidal and independent motion families, against the certified "
-      "resp. exact answer), "
-      "add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
-      "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and "
-      "in "
-      "power form (double), the sampling and marching baselines), each floating one as published and guarded "
-      "(--guard), "
-      "per input mode (--input) and under a "
-      "time budget (--budget), against the exact pipeline, and write "
-      "a new folder reports/run-YYYYMMDD-HHMMSS/ (or reports/NAME/ with --name, --out-dir PATH): report.md, "
-      "results.csv, "
-      "failure_map.csv, meta.json and PNG figures. Progress and time left go to stderr (--quiet: none); Ctrl-C keeps "
-      "the finished tasks for --resume.");
-  auto* s = c.sub;
-  auto* name_opt = s->add_option(
-      "--name", a->name,
-      "Report name: the output goes to reports/NAME (a plain name: no '/', no '..'; an existing reports/NAME is "
-      "replaced only if an earlier eccd report wrote it). Without --name and --out-dir every run writes a new folder "
-      "reports/run-YYYYMMDD-HHMMSS (UTC start time); --name default refreshes the checked-in example reports/default");
-  auto* out_opt =
-      s->add_option("--out-dir", a->out,
-                    "Output folder instead of reports/NAME (replaced only when the run succeeds, and only if an "
-                    "earlier eccd report wrote it); no '..'");
-  auto* old_out_opt = add_old_spelling(s, "--out", "--out", "--out-dir", a->out);
+namespace {
+
+// What each scene is run with: the plan (seed, count, families, ...), the MPFR
+// precisions, input modes, guards, time budgets and the baselines' grid.
+void add_report_run_options(CLI::App* s, const std::shared_ptr<ReportArgs>& a) {
   s->add_option("--seed", a->plan.seed, "Run seed (same seed, same scenes, same numbers apart from timings)")
       ->capture_default_str()
       ->check(check_seed_text);
@@ -416,6 +382,11 @@ Command add_report_command(CLI::App& app) {
   s->add_option("--grid", a->harness.grid, "N of the 3D sampling:N and marching:N baselines")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
+}
+
+// Which scenes (generated, cases, a folder), how many workers, parts for
+// --shard / --merge, the failure map and the figures.
+void add_report_scene_options(CLI::App* s, const std::shared_ptr<ReportArgs>& a) {
   s->add_option("--cases", a->cases,
                 "Also run the scene files under this folder (their stored answers are not used: exact is recomputed; "
                 "scenes written by eccd generate are left out, see --scenes); '' for none")
@@ -433,6 +404,10 @@ Command add_report_command(CLI::App& app) {
       ->check(CLI::Range(2, 1024));
   s->add_flag("--no-map", a->no_map, "Skip the failure map");
   s->add_flag("--no-figures", a->no_figures, "Write the CSV and meta.json only (no report.md, no PNG)");
+}
+
+// The other engines: --external answers, FCL and the certified pipeline.
+void add_report_peer_options(CLI::App* s, const std::shared_ptr<ReportArgs>& a) {
   s->add_option(
        "--external", a->externals,
        "NAME=DIR: your engine's answers as rows ext:NAME in every table and plot, judged against the exact answer "
@@ -460,6 +435,52 @@ Command add_report_command(CLI::App& app) {
     else if (fcl_opt->count() && !a->harness.fcl)
       warn("report", "--fcl-samples is ignored: --no-fcl");
   });
+}
+
+}  // namespace
+
+Command add_report_command(CLI::App& app) {
+  auto a = std::make_shared<ReportArgs>();
+  // The main job's defaults (scripts/run-main.sh, reports/default): one scene per plan entry, three MPFR
+  // precisions and 2 s per floating run, so that the report of every family in both input modes takes
+  // minutes, not an hour, on 2 cores; --count, --mpfr-bits, --budget and --map-size widen it.
+  a->plan.count = 1;
+  a->harness.mpfr_bits = {64, 128, 256};
+  a->harness.budget_s = 2;
+  a->map_size = 16;
+  Command c;
+  c.sub = app.add_subcommand(
+      "report",
+      "Robustness report: generate seeded scenes (2D and 3D, motion degrees 2-6, families colliding / free / touch / "
+      "near-miss, overlap / graze (linear translations, degree 1), and the realistic-input families decimal / "
+      "keyframe; "
+      "--families cycloidal,independent adds the cycloidal and independent motion families, against the certified "
+      "resp. exact answer), "
+      "add the shipped cases, run every pipeline (2D: double power / Bernstein / scaled Bernstein and MPFR "
+      "power / Bernstein at many precisions; 3D: the Bezier method with f set up in Bernstein form (double, MPFR) and "
+      "in "
+      "power form (double), the sampling and marching baselines), each floating one as published and guarded "
+      "(--guard), "
+      "per input mode (--input) and under a "
+      "time budget (--budget), against the exact pipeline, and write "
+      "a new folder reports/run-YYYYMMDD-HHMMSS/ (or reports/NAME/ with --name, --out-dir PATH): report.md, "
+      "results.csv, "
+      "failure_map.csv, meta.json and PNG figures. Progress and time left go to stderr (--quiet: none); Ctrl-C keeps "
+      "the finished tasks for --resume.");
+  auto* s = c.sub;
+  auto* name_opt = s->add_option(
+      "--name", a->name,
+      "Report name: the output goes to reports/NAME (a plain name: no '/', no '..'; an existing reports/NAME is "
+      "replaced only if an earlier eccd report wrote it). Without --name and --out-dir every run writes a new folder "
+      "reports/run-YYYYMMDD-HHMMSS (UTC start time); --name default refreshes the checked-in example reports/default");
+  auto* out_opt =
+      s->add_option("--out-dir", a->out,
+                    "Output folder instead of reports/NAME (replaced only when the run succeeds, and only if an "
+                    "earlier eccd report wrote it); no '..'");
+  auto* old_out_opt = add_old_spelling(s, "--out", "--out", "--out-dir", a->out);
+  add_report_run_options(s, a);
+  add_report_scene_options(s, a);
+  add_report_peer_options(s, a);
   s->add_flag(
       "--resume", a->resume,
       "Continue an interrupted run (Ctrl-C, SIGTERM, a crash): reuse the tasks it finished in its NAME.partial folder "

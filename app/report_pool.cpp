@@ -299,6 +299,38 @@ struct Slot {
   }
 }
 
+// The time left of a run: the measured costs so far, the tasks not started
+// and the running ones; per kind (est.wall), checked against the run's own
+// rate so far (the larger of the two).
+std::optional<double> time_left_now(TimeLeft& est, std::vector<char>& seen, std::vector<long>& queued,
+                                    const std::vector<long>& todo, const std::vector<std::size_t>& kind_of, long n,
+                                    const Shared* sh, const Slot* slots, const std::atomic<std::int64_t>* cost_ns,
+                                    int jobs, double el) {
+  const long next = std::min(sh->next.load(), n);
+  for (long j = 0; j < next; ++j)
+    if (!seen[std::size_t(j)] && cost_ns[j].load() >= 0) {
+      seen[std::size_t(j)] = 1;
+      est.add(kind_of[std::size_t(todo[std::size_t(j)])], double(cost_ns[j].load()) * 1e-9);
+    }
+  std::fill(queued.begin(), queued.end(), 0);
+  for (long j = next; j < n; ++j) ++queued[kind_of[std::size_t(todo[std::size_t(j)])]];
+  std::vector<std::pair<std::size_t, double>> busy;
+  std::vector<std::size_t> busy_kinds;
+  const std::int64_t now = now_ns();
+  for (int w = 0; w < jobs; ++w) {
+    long j = slots[w].task.load();
+    if (j >= 0 && j < n) {
+      busy.push_back({kind_of[std::size_t(todo[std::size_t(j)])], double(now - slots[w].since.load()) * 1e-9});
+      busy_kinds.push_back(busy.back().first);
+    }
+  }
+  // Per kind (est.wall), checked against the run's own rate so far: the larger of the two.
+  std::optional<double> left = est.wall(queued, busy, jobs);
+  if (std::optional<double> by_rate = est.wall_by_rate(queued, busy_kinds, el); left && by_rate)
+    left = std::max(*left, *by_rate);
+  return left;
+}
+
 // Runs the tasks `todo` (numbers into `tasks`, most expensive kind first) in
 // worker processes that write session `session`'s files into `work`; `reused`
 // tasks were finished by an earlier session. Prints the progress line unless
@@ -370,29 +402,7 @@ void run_tasks(const std::vector<Task>& tasks, const std::vector<long>& todo, co
     double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!show || !cadence.due(std::min(total - 1, before + sh->done.load()), el))
       continue;  // the end has its own line below
-    // Measured costs so far, the tasks not started and the running ones.
-    const long next = std::min(sh->next.load(), n);
-    for (long j = 0; j < next; ++j)
-      if (!seen[std::size_t(j)] && cost_ns[j].load() >= 0) {
-        seen[std::size_t(j)] = 1;
-        est.add(kind_of[std::size_t(todo[std::size_t(j)])], double(cost_ns[j].load()) * 1e-9);
-      }
-    std::fill(queued.begin(), queued.end(), 0);
-    for (long j = next; j < n; ++j) ++queued[kind_of[std::size_t(todo[std::size_t(j)])]];
-    std::vector<std::pair<std::size_t, double>> busy;
-    std::vector<std::size_t> busy_kinds;
-    const std::int64_t now = now_ns();
-    for (int w = 0; w < jobs; ++w) {
-      long j = slots[w].task.load();
-      if (j >= 0 && j < n) {
-        busy.push_back({kind_of[std::size_t(todo[std::size_t(j)])], double(now - slots[w].since.load()) * 1e-9});
-        busy_kinds.push_back(busy.back().first);
-      }
-    }
-    // Per kind (est.wall), checked against the run's own rate so far: the larger of the two.
-    std::optional<double> left = est.wall(queued, busy, jobs);
-    if (std::optional<double> by_rate = est.wall_by_rate(queued, busy_kinds, el); left && by_rate)
-      left = std::max(*left, *by_rate);
+    const std::optional<double> left = time_left_now(est, seen, queued, todo, kind_of, n, sh, slots, cost_ns, jobs, el);
     std::fprintf(stderr, "%s[%ld/%ld] %s elapsed, %s (%d worker%s)%s", cadence.begin(), before + sh->done.load(), total,
                  fmt_duration(el).c_str(), time_left_text(left).c_str(), jobs, jobs == 1 ? "" : "s",
                  cadence.end(false));

@@ -80,6 +80,54 @@ void write_answer(const std::string& path, const Solution& report) {
   write_text_atomically(path, text);
 }
 
+void add_solve_options(CLI::App* sub, SolveArgs& args) {
+  sub->add_option("SCENE", args.scene_path, "Scene file (format ellipse-ccd-scene/1); - reads standard input")
+      ->required();
+  sub->add_option(
+         "--arith", args.arith,
+         "Arithmetic: double, mpfr:BITS (53..65536), exact (certified brackets) or certified (interval arithmetic "
+         "with certified brackets: intervals of doubles, then MPFI intervals of 256 bits, then exact, each rung only "
+         "where a sign stayed uncertain; certified:B1,B2,... other MPFI rungs, certified:none no MPFI rung)")
+      ->capture_default_str();
+  args.basis_opt = sub->add_option("--basis", args.basis,
+                                   "Floating only: basis in which the discriminant (2D) or projection (3D --method "
+                                   "projection) is built: power, bernstein or scaled-bernstein")
+                       ->capture_default_str();
+  args.variant_opt = sub->add_option("--variant", args.variant,
+                                     "2D: 0: full answer with intervals; 1: collides? only; 2: first contact; 3: all "
+                                     "external contacts (003 VI-C). 3D: 2 = --first-contact")
+                         ->capture_default_str();
+  sub->add_flag(
+      "--json", args.json,
+      "Print exactly one JSON object (the spec's answer plus timing, degree of the discriminant, contact points)");
+  args.method_opt =
+      sub->add_option(
+             "--method", args.method,
+             "3D floating only: bezier (001 section 4: sampling, Bezier shooting, subdivision, Gaussian-circle test), "
+             "projection (discriminant roots, as the exact pipeline), sampling:N (static tests at N+1 instants) or "
+             "marching:N (marching squares on an N x N grid of F(u,t), 002 section IV)")
+          ->capture_default_str();
+  sub->add_flag("--first-contact", args.first_contact,
+                "3D: compute the first collision interval only (first-contact mode of 001 section 4)");
+  args.input_opt =
+      sub->add_option("--input", args.input,
+                      "Floating only: rounded (each number of the scene rounded to the arithmetic, everything after "
+                      "computed in it: "
+                      "what a user's program does) or prepared (the scene prepared exactly, then rounded)")
+          ->capture_default_str();
+  args.guard_opt =
+      sub->add_option("--guard", args.guard,
+                      "Floating only: bound (guarded: a running error bound on every value, a sign it cannot decide "
+                      "makes that place undecided) or none (the published algorithm in plain double or MPFR, nothing "
+                      "added: its answer can be wrong; undecided only where the algorithm gives up: a work bound, a "
+                      "value that is not finite, the time budget). Cycloidal scenes have the guarded face only")
+          ->capture_default_str();
+  sub->add_flag("--write-answer", args.store,
+                "Store the answer in the scene file under \"answer\" (exact arithmetic only; the scene file is "
+                "replaced by design, and "
+                "left unchanged if the scene reader would refuse the result, e.g. beyond --max-file-bytes)");
+}
+
 }  // namespace
 
 Command add_solve_command(CLI::App& app) {
@@ -87,57 +135,7 @@ Command add_solve_command(CLI::App& app) {
   Command c;
   c.sub = app.add_subcommand(
       "solve", "Solve one scene: collision intervals, first contact and external contacts over t in [0, 1].");
-  c.sub->add_option("SCENE", args->scene_path, "Scene file (format ellipse-ccd-scene/1); - reads standard input")
-      ->required();
-  c.sub
-      ->add_option(
-          "--arith", args->arith,
-          "Arithmetic: double, mpfr:BITS (53..65536), exact (certified brackets) or certified (interval arithmetic "
-          "with certified brackets: intervals of doubles, then MPFI intervals of 256 bits, then exact, each rung only "
-          "where a sign stayed uncertain; certified:B1,B2,... other MPFI rungs, certified:none no MPFI rung)")
-      ->capture_default_str();
-  args->basis_opt = c.sub
-                        ->add_option("--basis", args->basis,
-                                     "Floating only: basis in which the discriminant (2D) or projection (3D --method "
-                                     "projection) is built: power, bernstein or scaled-bernstein")
-                        ->capture_default_str();
-  args->variant_opt = c.sub
-                          ->add_option("--variant", args->variant,
-                                       "2D: 0: full answer with intervals; 1: collides? only; 2: first contact; 3: all "
-                                       "external contacts (003 VI-C). 3D: 2 = --first-contact")
-                          ->capture_default_str();
-  c.sub->add_flag(
-      "--json", args->json,
-      "Print exactly one JSON object (the spec's answer plus timing, degree of the discriminant, contact points)");
-  args->method_opt =
-      c.sub
-          ->add_option(
-              "--method", args->method,
-              "3D floating only: bezier (001 section 4: sampling, Bezier shooting, subdivision, Gaussian-circle test), "
-              "projection (discriminant roots, as the exact pipeline), sampling:N (static tests at N+1 instants) or "
-              "marching:N (marching squares on an N x N grid of F(u,t), 002 section IV)")
-          ->capture_default_str();
-  c.sub->add_flag("--first-contact", args->first_contact,
-                  "3D: compute the first collision interval only (first-contact mode of 001 section 4)");
-  args->input_opt =
-      c.sub
-          ->add_option("--input", args->input,
-                       "Floating only: rounded (each number of the scene rounded to the arithmetic, everything after "
-                       "computed in it: "
-                       "what a user's program does) or prepared (the scene prepared exactly, then rounded)")
-          ->capture_default_str();
-  args->guard_opt =
-      c.sub
-          ->add_option("--guard", args->guard,
-                       "Floating only: bound (guarded: a running error bound on every value, a sign it cannot decide "
-                       "makes that place undecided) or none (the published algorithm in plain double or MPFR, nothing "
-                       "added: its answer can be wrong; undecided only where the algorithm gives up: a work bound, a "
-                       "value that is not finite, the time budget). Cycloidal scenes have the guarded face only")
-          ->capture_default_str();
-  c.sub->add_flag("--write-answer", args->store,
-                  "Store the answer in the scene file under \"answer\" (exact arithmetic only; the scene file is "
-                  "replaced by design, and "
-                  "left unchanged if the scene reader would refuse the result, e.g. beyond --max-file-bytes)");
+  add_solve_options(c.sub, *args);
 
   c.run = [args]() -> int {
     // Every option value is checked before the scene is read: a bad one is exit 2.

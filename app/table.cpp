@@ -49,8 +49,8 @@ std::string short_answer(const Solution& r) {
   return o.str();
 }
 
-int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const std::vector<std::string>& guards,
-              bool json) {
+// The scenes under dir, sorted (animations, certificates and answers left out).
+std::vector<fs::path> table_scene_files(const std::string& dir) {
   std::vector<fs::path> files;
   if (!fs::is_directory(dir)) throw std::invalid_argument(dir + ": not a directory");
   for (auto& e : fs::recursive_directory_iterator(dir)) {
@@ -61,11 +61,18 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const s
     if (k == FileKind::Scene) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  struct Col {
-    std::string label;
-    SolveOptions opt;
-  };
-  std::vector<Col> cols;
+  return files;
+}
+
+// One column of the table: its label and how it solves.
+struct TableColumn {
+  std::string label;
+  SolveOptions opt;
+};
+
+// exact, then each floating column in each face asked for.
+std::vector<TableColumn> table_columns(const std::vector<int>& mpfr_bits, const std::vector<std::string>& guards) {
+  std::vector<TableColumn> cols;
   auto col = [](const std::string& arith, Basis basis, Guard guard = Guard::bound) {
     SolveOptions o;
     o.arith = parse_arithmetic(arith);
@@ -85,6 +92,45 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const s
   floating("double/bernstein", "double", Basis::bernstein);
   floating("double/scaled", "double", Basis::scaled_bernstein);
   for (int b : mpfr_bits) floating("mpfr:" + std::to_string(b), "mpfr:" + std::to_string(b), Basis::bernstein);
+  return cols;
+}
+
+// One scene in every column: its cells (row) and its JSON object (js).
+void table_cells(const std::vector<TableColumn>& cols, const fs::path& f, std::vector<std::string>& row,
+                 nlohmann::json& js) {
+  std::optional<Solution> exact;
+  try {
+    Scene s = read_scene_file(f.string());
+    for (const auto& c : cols) {
+      try {
+        ScopedDeadline deadline(run_budget().time_limit_s);
+        Solution sol = solve(s, c.opt);
+        js[c.label] = solution_to_json(sol);
+        stamp_format(js[c.label], kSolutionFormat);
+        std::string cell = short_answer(sol);
+        if (c.label == "exact") exact = sol;
+        // '!': the one answer comparison (api/answer_difference.hpp) finds a difference other
+        // than undecided instants (counted by '?N').
+        if (c.label != "exact" && exact) {
+          AnswerDifference d = answer_difference(sol.answer, exact->answer);
+          if (d.differences.size() > std::size_t(d.undecided)) cell = "!" + cell;
+        }
+        row.push_back(cell);
+      } catch (const std::exception& e) {
+        js[c.label] = {{"error", e.what()}};
+        row.push_back("n/a");
+      }
+    }
+  } catch (const SceneError& e) {
+    js["error"] = e.what();
+    row.push_back(std::string("bad scene: ") + e.what());
+  }
+}
+
+int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const std::vector<std::string>& guards,
+              bool json) {
+  const std::vector<fs::path> files = table_scene_files(dir);
+  const std::vector<TableColumn> cols = table_columns(mpfr_bits, guards);
   // Each scene's row goes to stdout as soon as it is finished (a line of the table, or with --json one JSON
   // object per line, JSON Lines); progress goes to stderr. Column widths are fixed up front so that rows
   // can be printed one by one: the longest file name, and each column at least as wide as its label.
@@ -116,33 +162,7 @@ int run_table(const std::string& dir, const std::vector<int>& mpfr_bits, const s
     stamp_format(js, kTableRowFormat);
     js["folder"] = dir;
     js["file"] = f.string();
-    std::optional<Solution> exact;
-    try {
-      Scene s = read_scene_file(f.string());
-      for (const auto& c : cols) {
-        try {
-          ScopedDeadline deadline(run_budget().time_limit_s);
-          Solution sol = solve(s, c.opt);
-          js[c.label] = solution_to_json(sol);
-          stamp_format(js[c.label], kSolutionFormat);
-          std::string cell = short_answer(sol);
-          if (c.label == "exact") exact = sol;
-          // '!': the one answer comparison (api/answer_difference.hpp) finds a difference other
-          // than undecided instants (counted by '?N').
-          if (c.label != "exact" && exact) {
-            AnswerDifference d = answer_difference(sol.answer, exact->answer);
-            if (d.differences.size() > std::size_t(d.undecided)) cell = "!" + cell;
-          }
-          row.push_back(cell);
-        } catch (const std::exception& e) {
-          js[c.label] = {{"error", e.what()}};
-          row.push_back("n/a");
-        }
-      }
-    } catch (const SceneError& e) {
-      js["error"] = e.what();
-      row.push_back(std::string("bad scene: ") + e.what());
-    }
+    table_cells(cols, f, row, js);
     ++done;
     if (!quiet() && tty) std::fprintf(stderr, "\r\x1b[K");  // the row replaces the progress line on a shared terminal
     if (json)

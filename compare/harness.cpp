@@ -301,6 +301,39 @@ double child_cpu_seconds(pid_t pid) {
   if (std::sscanf(p + 1, " %*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &ut, &st) != 2) return 0;
   return double(ut + st) / double(sysconf(_SC_CLK_TCK));
 }
+// The child's side of an isolated run: its result as one JSON line on fd,
+// then _exit (the parent's destructors are not run in the child).
+[[noreturn]] void report_to_parent(const BoundedRun& c, int fd) {
+  nlohmann::json msg = {{"got", c.got ? solution_to_json(*c.got) : nlohmann::json(nullptr)},
+                        {"timed_out", c.timed_out},
+                        {"error", c.error},
+                        {"reason", c.reason}};
+  std::string text = msg.dump();
+  const char* p = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    ssize_t w = write(fd, p, left);
+    if (w <= 0) break;
+    p += w;
+    left -= std::size_t(w);
+  }
+  close(fd);
+  _exit(0);
+}
+
+// The parent's side: the child's JSON line into r (an error when there is none).
+void read_child_report(BoundedRun& r, const std::string& text, int status) {
+  try {
+    nlohmann::json msg = nlohmann::json::parse(text);
+    if (!msg["got"].is_null()) r.got = solution_from_json(msg["got"], "the run's process");
+    r.timed_out = msg["timed_out"].get<bool>();
+    r.error = msg["error"].get<std::string>();
+    r.reason = msg["reason"].get<std::string>();
+  } catch (const std::exception&) {
+    r.error = "the run's process ended without an answer (status " + std::to_string(status) + ")";
+    r.got.reset();
+  }
+}
 }  // namespace
 
 BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s, bool isolate) {
@@ -331,21 +364,7 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       close(fds[0]);
       BoundedRun c;
       in_process(c);
-      nlohmann::json msg = {{"got", c.got ? solution_to_json(*c.got) : nlohmann::json(nullptr)},
-                            {"timed_out", c.timed_out},
-                            {"error", c.error},
-                            {"reason", c.reason}};
-      std::string text = msg.dump();
-      const char* p = text.data();
-      std::size_t left = text.size();
-      while (left > 0) {
-        ssize_t w = write(fds[1], p, left);
-        if (w <= 0) break;
-        p += w;
-        left -= std::size_t(w);
-      }
-      close(fds[1]);
-      _exit(0);
+      report_to_parent(c, fds[1]);
     }
     close(fds[1]);
     if (pid < 0) {
@@ -385,16 +404,7 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
                    " s of processor time; the run did not stop and was killed after " + fmt(r.cpu_s, "%.3g") +
                    " s of processor time (" + fmt(elapsed(), "%.3g") + " s)";
       } else {
-        try {
-          nlohmann::json msg = nlohmann::json::parse(text);
-          if (!msg["got"].is_null()) r.got = solution_from_json(msg["got"], "the run's process");
-          r.timed_out = msg["timed_out"].get<bool>();
-          r.error = msg["error"].get<std::string>();
-          r.reason = msg["reason"].get<std::string>();
-        } catch (const std::exception&) {
-          r.error = "the run's process ended without an answer (status " + std::to_string(status) + ")";
-          r.got.reset();
-        }
+        read_child_report(r, text, status);
       }
     }
   }

@@ -1,6 +1,8 @@
 // Scene generators (see compare/scene_generator.hpp for the constructions).
 #include "compare/scene_generator.hpp"
 
+#include "compare/scene_building.hpp"
+
 #include "compare/motion_families.hpp"
 #include "compare/seeded_rng.hpp"
 
@@ -20,10 +22,8 @@ namespace eccd {
 
 namespace {
 
-using Rng = SeededRng;
-
 std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
-  Rng r{a ^ (b * 0x2545f4914f6cdd1dULL)};
+  SeededRng r{a ^ (b * 0x2545f4914f6cdd1dULL)};
   return r.next();
 }
 std::uint64_t hash_string(const std::string& s) {
@@ -35,186 +35,11 @@ std::uint64_t hash_string(const std::string& s) {
   return h;
 }
 
-RPoly constant(const Rational& c) { return RPoly::constant(c); }
-RPoly from_bernstein(const std::vector<Rational>& ctrl) {
-  Bern<Rational> b;
-  b.b = ctrl;
-  return to_power(b);
-}
-RPoly random_poly(Rng& r, int deg, long lo, long hi, long den) {
-  std::vector<Rational> c;
-  for (int i = 0; i <= deg; ++i) c.push_back(r.frac(lo, hi, den));
-  return RPoly(c);
-}
-bool vanishes_on_unit_interval(const RPoly& p) {
-  return p.is_zero() || count_roots_closed(p, Rational(0), Rational(1)) != 0;
-}
-// The weight of a motion (d2² + d3², E, det L) must not come close to zero on
-// [0, 1]: max/min <= 16 at 65 instants. A weight that nearly vanishes gives a
-// motion that spins through most of its rotation in a moment, and scales f by
-// a factor of huge range; such motions are not what the families are about.
-// (A generation choice only: the exact Sturm check above decides validity.)
-bool badly_scaled(const RPoly& w) {
-  if (vanishes_on_unit_interval(w)) return true;
-  double lo = 1e300, hi = 0;
-  for (int k = 0; k <= 64; ++k) {
-    double v = std::abs(w(Rational(k, 64)).get_d());
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  return !(hi <= 16 * lo);
-}
+}  // namespace
 
-using Vec = std::vector<Rational>;
-Rational dot(const Vec& a, const Vec& b) {
-  Rational s = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
-}
+namespace scene_building {
 
-// A rational unit vector: 2D from a rational half-angle tangent, 3D as the
-// image of e_x under the rotation of an integer quaternion.
-Vec random_unit(Rng& r, int dim) {
-  while (true) {
-    if (dim == 2) {
-      Rational u = r.frac(-12, 12, 8);
-      Rational w = 1 + u * u;
-      return {(1 - u * u) / w, 2 * u / w};
-    }
-    long q[4] = {r.uniform(-4, 4), r.uniform(-4, 4), r.uniform(-4, 4), r.uniform(-4, 4)};
-    long e = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-    if (e == 0) continue;
-    Rational E(e);
-    return {Rational(q[0] * q[0] + q[1] * q[1] - q[2] * q[2] - q[3] * q[3]) / E,
-            Rational(2 * (q[1] * q[2] + q[0] * q[3])) / E, Rational(2 * (q[1] * q[3] - q[0] * q[2])) / E};
-  }
-}
-
-// Squared semi-axes alpha and the point x on x^T diag(1/alpha) x = 1 whose
-// outward normal is the unit vector n: x_i = alpha_i n_i / r with
-// r^2 = sum alpha_i n_i^2 (one alpha solved so that r is rational).
-struct Tangency {
-  Vec alpha, point;
-};
-Tangency shape_with_normal(Rng& r, const Vec& n) {
-  int dim = int(n.size());
-  int j = 0;
-  for (int i = 1; i < dim; ++i)
-    if (abs(n[i]) > abs(n[j])) j = i;
-  while (true) {
-    Tangency t;
-    t.alpha.assign(dim, Rational(0));
-    Rational rest = 0;
-    for (int i = 0; i < dim; ++i)
-      if (i != j) {
-        t.alpha[i] = r.frac(2, 16, 4);
-        rest += t.alpha[i] * n[i] * n[i];
-      }
-    Rational nj2 = n[j] * n[j];
-    Rational want = rest + nj2 * r.frac(3, 10, 4);
-    double target = std::sqrt(want.get_d());  // picks r only
-    Rational rad(long(std::ceil(target * 16)), 16);
-    rad.canonicalize();
-    t.alpha[j] = (rad * rad - rest) / nj2;
-    if (t.alpha[j] < Rational(1, 4) || t.alpha[j] > 6) continue;
-    Rational check = 0;
-    for (int i = 0; i < dim; ++i) {
-      t.point.push_back(t.alpha[i] * n[i] / rad);
-      check += t.point[i] * t.point[i] / t.alpha[i];
-    }
-    if (check != 1) throw std::logic_error("generator: tangency point not on the ellipse");
-    return t;
-  }
-}
-
-using Mat = std::vector<Vec>;
-Mat identity(int n) {
-  Mat m(n, Vec(n, Rational(0)));
-  for (int i = 0; i < n; ++i) m[i][i] = 1;
-  return m;
-}
-Mat mat_mul(const Mat& a, const Mat& b) {
-  std::size_t n = a.size();
-  Mat r(n, Vec(n, Rational(0)));
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j)
-      for (std::size_t k = 0; k < n; ++k) r[i][j] += a[i][k] * b[k][j];
-  return r;
-}
-Vec mat_vec(const Mat& a, const Vec& v) {
-  Vec r(a.size(), Rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < v.size(); ++j) r[i] += a[i][j] * v[j];
-  return r;
-}
-Mat householder(const Vec& w) {
-  Mat h = identity(int(w.size()));
-  Rational ww = dot(w, w);
-  for (std::size_t i = 0; i < w.size(); ++i)
-    for (std::size_t j = 0; j < w.size(); ++j) h[i][j] -= 2 * w[i] * w[j] / ww;
-  return h;
-}
-// A random rational vector orthogonal to the unit vector n (3D).
-Vec orthogonal_to(Rng& r, const Vec& n) {
-  while (true) {
-    Vec u{r.frac(-4, 4, 1), r.frac(-4, 4, 1), r.frac(-4, 4, 1)};
-    Rational un = dot(u, n);
-    for (int i = 0; i < 3; ++i) u[i] -= un * n[i];
-    if (dot(u, u) != 0) return u;
-  }
-}
-// A rational rotation R with R m = -n (unit vectors m, n).
-Mat rotation_taking(Rng& r, const Vec& m, const Vec& n) {
-  Mat R;
-  if (m.size() == 2) {
-    Rational c = -dot(n, m), s = n[0] * m[1] - n[1] * m[0];
-    R = {{c, -s}, {s, c}};
-  } else {
-    Vec w{m[0] + n[0], m[1] + n[1], m[2] + n[2]};
-    if (dot(w, w) == 0) throw std::domain_error("m = -n");
-    R = mat_mul(householder(orthogonal_to(r, n)), householder(w));  // reflections: det +1
-  }
-  Vec img = mat_vec(R, m);
-  for (std::size_t i = 0; i < m.size(); ++i)
-    if (img[i] != -n[i]) throw std::logic_error("generator: rotation does not take m to -n");
-  return R;
-}
-
-// Homogeneous polynomial matrices (size dim + 1).
-using HMat = std::vector<std::vector<RPoly>>;
-HMat hmul(const HMat& a, const HMat& b) {
-  std::size_t n = a.size();
-  HMat r(n, std::vector<RPoly>(n));
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j)
-      for (std::size_t k = 0; k < n; ++k)
-        if (!a[i][k].is_zero() && !b[k][j].is_zero()) r[i][j] += a[i][k] * b[k][j];
-  return r;
-}
-HMat hconst(const Mat& rot, const Vec& shift) {
-  std::size_t d = rot.size();
-  HMat h(d + 1, std::vector<RPoly>(d + 1));
-  for (std::size_t i = 0; i < d; ++i) {
-    for (std::size_t j = 0; j < d; ++j) h[i][j] = constant(rot[i][j]);
-    h[i][d] = constant(shift[i]);
-  }
-  h[d][d] = constant(1);
-  return h;
-}
-template <int N>
-HMat to_hmat(const Motion& m) {
-  auto M = motion_matrix<Rational, N>(m, [](const Rational& x) { return x; });
-  HMat h(N, std::vector<RPoly>(N));
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) h[i][j] = M[i][j];
-  return h;
-}
-int hdegree(const HMat& h) {
-  int d = 0;
-  for (auto& row : h)
-    for (auto& e : row) d = std::max(d, e.degree());
-  return d;
-}
+namespace {
 
 // ---- motions with a prescribed centre path ---------------------------------
 
@@ -302,72 +127,7 @@ Motion random_motion(Rng& r, const std::string& kind, int deg, const std::vector
   return affine_motion(r, deg, centre);
 }
 
-// ---- JSON ------------------------------------------------------------------
-
-thread_local bool g_decimal_output = false;  // set while writing a realistic-input scene (decimal strings)
-std::string number_text(const Rational& x) { return g_decimal_output ? exact_decimal(x) : Rational(x).get_str(); }
-
-nlohmann::ordered_json poly_json(const RPoly& p) {
-  nlohmann::ordered_json a = nlohmann::ordered_json::array();
-  if (p.is_zero()) a.push_back("0");
-  for (const auto& c : p.c) a.push_back(number_text(Rational(c)));
-  return a;
-}
-// A degree-1 polynomial given by its key values (Bernstein form on [0, 1]).
-nlohmann::ordered_json bern_json(const Rational& c0, const Rational& c1) {
-  nlohmann::ordered_json j;
-  j["bernstein"] = {number_text(c0), number_text(c1)};
-  return j;
-}
-nlohmann::ordered_json motion_json(const Motion& m) {
-  nlohmann::ordered_json j;
-  if (auto* k = std::get_if<KinematicMotion>(&m)) {
-    j["type"] = "kinematic";
-    for (auto& d : k->d) j["d"].push_back(poly_json(d));
-  } else if (auto* e = std::get_if<EulerMotion>(&m)) {
-    j["type"] = "euler";
-    for (auto& x : e->e) j["e"].push_back(poly_json(x));
-    for (auto& x : e->v) j["translation"].push_back(poly_json(x));
-    j["translation_denominator"] = poly_json(e->v3);
-  } else if (auto* mm = std::get_if<MatrixMotion>(&m)) {
-    j["type"] = "matrix";
-    for (auto& row : mm->m) {
-      nlohmann::ordered_json jr = nlohmann::ordered_json::array();
-      for (auto& x : row) jr.push_back(poly_json(x));
-      j["m"].push_back(jr);
-    }
-  } else {
-    j["type"] = "static";
-  }
-  return j;
-}
-nlohmann::ordered_json shape_json(const Vec& alpha) {
-  nlohmann::ordered_json j;
-  for (auto& a : alpha) j["semi_axes_squared"].push_back(Rational(a).get_str());
-  return j;
-}
-nlohmann::ordered_json semi_axes_json(const Vec& axes) {
-  nlohmann::ordered_json j;
-  for (auto& a : axes) j["semi_axes"].push_back(number_text(a));
-  return j;
-}
-
-Vec random_axes(Rng& r, int dim) {
-  Vec a;
-  for (int i = 0; i < dim; ++i) a.push_back(r.frac(2, 16, 4));  // squared semi-axes in [1/2, 4]
-  return a;
-}
-
-int motion_degree(int dim, const Motion& m) { return dim == 2 ? hdegree(to_hmat<3>(m)) : hdegree(to_hmat<4>(m)); }
-
-struct Built {
-  Vec alpha_a, alpha_b;
-  Motion ma, mb;
-  std::optional<Rational> t0;
-  Vec axes_a, axes_b;                                    // realistic families: semi-axes (decimals) instead of alpha
-  std::optional<nlohmann::ordered_json> json_a, json_b;  // keyframe: the motion as written (Bernstein key values)
-  std::string base;                                      // decimal: the family it was rounded from
-};
+}  // namespace
 
 // colliding / free: independent motions with controlled centre paths.
 Built build_random(Rng& r, const GeneratorSpec& s) {
@@ -487,230 +247,22 @@ Built build_touch(Rng& r, const GeneratorSpec& s) {
   return b;
 }
 
-// ---- realistic input and linear overlap ---------------------------------------
+}  // namespace scene_building
 
-Rational pow10(int e) {
-  mpz_class t = 1;
-  for (int i = 0; i < std::abs(e); ++i) t *= 10;
-  return e >= 0 ? Rational(t) : Rational(mpz_class(1), t);
-}
-
-// A "real-valued" number picked by the seed, written with `digits` significant digits.
-Rational decimal_in(Rng& r, double lo, double hi, int digits) {
-  double u = double(r.next() >> 11) / double(1ULL << 53);
-  return round_significant(Rational(lo + (hi - lo) * u), digits);
-}
-
-// sqrt(a) for a > 0, to ~digits + 3 decimals (a choice of number, checked by nobody).
-Rational sqrt_approx(const Rational& a, int digits) {
-  int m = digits + 6;
-  mpz_class num = a.get_num() * mpz_class(pow10(2 * m).get_num()), root;
-  num /= a.get_den();
-  mpz_sqrt(root.get_mpz_t(), num.get_mpz_t());
-  return Rational(root) / pow10(m);
-}
-
-// Each non-zero coefficient times (1 + j), |j| <= 10^-3 picked by the seed (the
-// generator's numbers have short denominators; a measured value has all its
-// digits), then rounded to `digits` significant digits. Zeros stay zero.
-RPoly round_poly(Rng& r, const RPoly& p, int digits) {
-  std::vector<Rational> c;
-  for (const auto& x : p.c) {
-    Rational j = r.frac(-1000000, 1000000, 1000000000);
-    c.push_back(round_significant(Rational(x) * (1 + j), digits));
-  }
-  return RPoly(c);
-}
-Motion round_motion(Rng& rng, const Motion& m, int digits) {
-  auto rp = [&](const RPoly& p) { return round_poly(rng, p, digits); };
-  if (auto* k = std::get_if<KinematicMotion>(&m)) {
-    KinematicMotion r;
-    for (int i = 0; i < 4; ++i) r.d[i] = rp(k->d[i]);
-    return r;
-  }
-  if (auto* e = std::get_if<EulerMotion>(&m)) {
-    EulerMotion r;
-    for (int i = 0; i < 4; ++i) r.e[i] = rp(e->e[i]);
-    for (int i = 0; i < 3; ++i) r.v[i] = rp(e->v[i]);
-    r.v3 = e->v3;  // the translation denominator stays 1
-    return r;
-  }
-  if (auto* mm = std::get_if<MatrixMotion>(&m)) {
-    MatrixMotion r = *mm;
-    for (auto& row : r.m)
-      for (auto& x : row) x = rp(x);
-    return r;
-  }
-  return m;
-}
-
-Built build_touch(Rng& r, const GeneratorSpec& s);
-Built build_random(Rng& r, const GeneratorSpec& s);
-
-// decimal: a generic scene, every number rounded to `digits` significant digits.
-Built build_decimal(Rng& r, const GeneratorSpec& s) {
-  GeneratorSpec base = s;
-  static const char* bases[] = {"colliding", "free", "touch"};
-  base.family = bases[r.uniform(0, s.degree >= 2 ? 2 : 1)];
-  Built b = base.family == "touch" ? build_touch(r, base) : build_random(r, base);
-  b.base = base.family;
-  b.t0.reset();
-  b.ma = round_motion(r, b.ma, s.digits);
-  b.mb = round_motion(r, b.mb, s.digits);
-  auto axis = [&](const Rational& a) {
-    return round_significant(sqrt_approx(a, s.digits) * (1 + r.frac(-1000000, 1000000, 1000000000)), s.digits);
-  };
-  for (auto& a : b.alpha_a) b.axes_a.push_back(axis(a));
-  for (auto& a : b.alpha_b) b.axes_b.push_back(axis(a));
-  return b;
-}
-
-// keyframe: one body under a chain of keyframed joints (see the header).
-struct Keyframed {
-  Motion motion;
-  nlohmann::ordered_json json;
-};
-// A unit quaternion (2D: a unit pair [w, z]) picked in double, written with `digits` digits.
-Vec random_orientation(Rng& r, int dim, int digits) {
-  int n = dim == 3 ? 4 : 2;
-  while (true) {
-    std::vector<double> q(n);
-    double len = 0;
-    for (auto& x : q) {
-      x = double(r.next() >> 11) / double(1ULL << 52) - 1.0;
-      len += x * x;
-    }
-    len = std::sqrt(len);
-    if (len < 0.2 || len > 1.0) continue;
-    Vec out;
-    for (double x : q) out.push_back(round_significant(Rational(x / len), digits));
-    return out;
-  }
-}
-Keyframed keyframed_body(Rng& r, int dim, int degree, int digits, const Vec& box_lo, const Vec& box_hi) {
-  const int joints = degree / 2;  // 2 -> 1, 3 -> 1, 4 -> 2, 5 -> 2, 6 -> 3
-  const bool moving_root = degree % 2 == 1;
-  Vec c0, c1;
-  for (int i = 0; i < dim; ++i) {
-    c0.push_back(decimal_in(r, box_lo[i].get_d(), box_hi[i].get_d(), digits));
-    c1.push_back(moving_root ? decimal_in(r, box_lo[i].get_d(), box_hi[i].get_d(), digits) : c0[i]);
-  }
-  std::vector<std::pair<Vec, Vec>> keys;
-  for (int k = 0; k < joints; ++k) {
-    Vec q0 = random_orientation(r, dim, digits), q1 = random_orientation(r, dim, digits);
-    // animation-format.md: q'_1 = -q_1 when q_0 . q_1 < 0 (the shorter way round; kernel/keyframe_motion.hpp)
-    keys.push_back({q0, shorter_way(q0, q1)});
-  }
-  Keyframed out;
-  if (joints == 1) {
-    const Vec& q0 = keys[0].first;
-    const Vec& q1 = keys[0].second;
-    // The motion by the animation rule (kernel/keyframe_motion.hpp); the JSON writes the key values.
-    out.motion = keyframe_motion(KeyPose{c0, q0, std::nullopt}, KeyPose{c1, q1, std::nullopt}, dim);
-    nlohmann::ordered_json j;
-    if (dim == 3) {
-      j["type"] = "euler";
-      for (int i = 0; i < 4; ++i) j["e"].push_back(bern_json(q0[i], q1[i]));
-      for (int i = 0; i < 3; ++i)
-        j["translation"].push_back(moving_root ? bern_json(c0[i], c1[i]) : nlohmann::ordered_json(number_text(c0[i])));
-      j["translation_denominator"] = "1";
-    } else {
-      const KinematicMotion& km = std::get<KinematicMotion>(out.motion);
-      j["type"] = "kinematic";
-      j["d"].push_back(poly_json(km.d[0]));
-      j["d"].push_back(poly_json(km.d[1]));
-      j["d"].push_back(bern_json(q0[0], q1[0]));
-      j["d"].push_back(bern_json(-q0[1], -q1[1]));
-    }
-    out.json = j;
-    return out;
-  }
-  // A chain: root translation c(τ), then joint k's rotation, then bone offset o_k.
-  HMat M(dim + 1, std::vector<RPoly>(dim + 1));
-  for (int i = 0; i <= dim; ++i) M[i][i] = constant(1);
-  for (int i = 0; i < dim; ++i) M[i][dim] = RPoly(std::vector<Rational>{c0[i], c1[i] - c0[i]});
-  for (int k = 0; k < joints; ++k) {
-    M = hmul(M, keyframe_rotation(keys[k].first, keys[k].second, dim));
-    Vec o;
-    for (int i = 0; i < dim; ++i) o.push_back(decimal_in(r, -0.8, 0.8, digits));
-    M = hmul(M, hconst(identity(dim), o));
-  }
-  MatrixMotion mm;
-  mm.m = M;
-  out.motion = mm;
-  out.json = motion_json(mm);
-  return out;
-}
-
-Built build_keyframe(Rng& r, const GeneratorSpec& s) {
-  Built b;
-  const int dim = s.dim;
-  for (int i = 0; i < dim; ++i) b.axes_a.push_back(decimal_in(r, 0.4, 1.6, s.digits));
-  for (int i = 0; i < dim; ++i) b.axes_b.push_back(decimal_in(r, 0.4, 1.6, s.digits));
-  Vec lo(dim, Rational(-2)), hi(dim, Rational(2));
-  int other = int(r.uniform(2, s.degree));
-  bool swap = r.uniform(0, 1) == 1;
-  Keyframed ka = keyframed_body(r, dim, swap ? other : s.degree, s.digits, lo, hi);
-  Keyframed kb = keyframed_body(r, dim, swap ? s.degree : other, s.digits, lo, hi);
-  b.ma = ka.motion;
-  b.mb = kb.motion;
-  b.json_a = ka.json;
-  b.json_b = kb.json;
-  return b;
-}
-
-// overlap / graze: see the header. Both motions are matrix motions of degree 1.
-Built build_linear_overlap(Rng& r, const GeneratorSpec& s) {
-  Built b;
-  const int dim = s.dim;
-  Rational t0 = r.frac(4, 16, 20);
-  b.t0 = t0;
-  Rational delta = s.family == "overlap" ? pow10(-s.d_exponent) : Rational(0);
-  Vec n = random_unit(r, dim), m;
-  do m = random_unit(r, dim);
-  while (dot(m, n) == -1);
-  Tangency ta = shape_with_normal(r, n), tb = shape_with_normal(r, m);
-  b.alpha_a = ta.alpha;
-  b.alpha_b = tb.alpha;
-  Mat RB = rotation_taking(r, m, n);
-  Vec cB = mat_vec(RB, tb.point);
-  for (int i = 0; i < dim; ++i) cB[i] = ta.point[i] - cB[i];
-  // B's translation s(t) = -δ n + (t - t0) v τ, τ ⊥ n: along the tangent plane.
-  Vec tau = dim == 2 ? Vec{-n[1], n[0]} : orthogonal_to(r, n);
-  Rational v = r.frac(1, 8, 2);
-  // The common motion G: a constant rational rotation and a linear translation.
-  Vec ga = random_unit(r, dim), gb = random_unit(r, dim);
-  Mat RG = dot(ga, gb) == -1 ? identity(dim) : rotation_taking(r, ga, gb);
-  Vec g0, g1;
-  for (int i = 0; i < dim; ++i) {
-    g0.push_back(r.frac(-24, 24, 8));
-    g1.push_back(r.frac(-24, 24, 8));
-  }
-  auto affine = [&](const Mat& L, const std::vector<RPoly>& tr) {
-    MatrixMotion mm;
-    mm.m.assign(dim + 1, std::vector<RPoly>(dim + 1));
-    for (int i = 0; i < dim; ++i) {
-      for (int j = 0; j < dim; ++j) mm.m[i][j] = constant(L[i][j]);
-      mm.m[i][dim] = tr[i];
-    }
-    mm.m[dim][dim] = constant(1);
-    return mm;
-  };
-  // A: x -> RG x + g(t);  B: x -> RG (RB x + cB + s(t)) + g(t).
-  std::vector<RPoly> ta_tr, tb_tr;
-  Mat LB = mat_mul(RG, RB);
-  Vec rc = mat_vec(RG, cB), rn = mat_vec(RG, n), rt = mat_vec(RG, tau);
-  for (int i = 0; i < dim; ++i) {
-    RPoly g(std::vector<Rational>{g0[i], g1[i]});
-    ta_tr.push_back(g);
-    RPoly sB(std::vector<Rational>{rc[i] - delta * rn[i] - t0 * v * rt[i], v * rt[i]});
-    tb_tr.push_back(g + sB);
-  }
-  b.ma = affine(RG, ta_tr);
-  b.mb = affine(LB, tb_tr);
-  return b;
-}
-
+namespace {
+using scene_building::build_decimal;
+using scene_building::build_keyframe;
+using scene_building::build_linear_overlap;
+using scene_building::build_random;
+using scene_building::build_touch;
+using scene_building::Built;
+using scene_building::g_decimal_output;
+using scene_building::motion_degree;
+using scene_building::motion_json;
+using scene_building::pow10;
+using scene_building::Rng;
+using scene_building::semi_axes_json;
+using scene_building::shape_json;
 }  // namespace
 
 std::vector<std::string> motions_for(int dim) {
@@ -765,7 +317,7 @@ std::string exact_decimal(const Rational& x0) {
   std::string digits = mpz_class(abs(n)).get_str();
   if (k > 0) {
     if (int(digits.size()) <= k) digits = std::string(k - digits.size() + 1, '0') + digits;
-    digits.insert(digits.size() - k, ".");
+    digits.insert(digits.size() - std::size_t(k), 1, '.');  // (pos, count, char): GCC 12 -Wrestrict misfires on a char*
     while (digits.back() == '0') digits.pop_back();
     if (digits.back() == '.') digits.pop_back();
   }
@@ -778,8 +330,9 @@ std::uint64_t scene_seed(std::uint64_t run_seed, const GeneratorSpec& c, int ind
   h = mix(h, hash_string(c.family));
   h = mix(h, hash_string(c.motion));
   h = mix(h, std::uint64_t(c.d_exponent));
-  if (c.digits) h = mix(h, std::uint64_t(c.digits) + 0x100);  // only the realistic families: old seeds stay
-  return mix(h, std::uint64_t(index)) >> 11;                  // 53 bits: exact in JSON and in a double
+  if (c.digits)
+    h = mix(h, std::uint64_t(c.digits) + 0x100);  // only the realistic families: the others keep their seeds
+  return mix(h, std::uint64_t(index)) >> 11;      // 53 bits: exact in JSON and in a double
 }
 
 GeneratedScene generate_scene(const GeneratorSpec& spec) {

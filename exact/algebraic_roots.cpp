@@ -3,21 +3,21 @@
 //
 // CGAL's Algebraic_kernel_d_1 over CORE::BigInt does the isolation of every
 // real root (solve_1) when the range is not [0, 1]; the square-free
-// factorisation and the polynomial gcds are FLINT's (exact/flint_poly.hpp,
-// issue 21: CGAL's modular gcd was a fifth of the exact pipelines). CORE is
+// factorisation and the polynomial gcds are FLINT's (exact/flint_poly.hpp:
+// CGAL's modular gcd would be a fifth of the exact pipelines). CORE is
 // header-only in CGAL 5.5 (Debian libcgal-dev) and enabled by CGAL itself when
 // GMP and MPFR are there (CGAL_USE_CORE); nothing else to link. Everything
-// after isolation is done here on the isolating intervals, in integer
-// arithmetic: refinement by quadratic interval refinement (QIR, Abbott 2006:
-// secant steps snapped to a dyadic grid, bisection after a failed step) with
-// exact signs of the square-free factor at dyadic points, comparisons with
-// the ends of the range, and signs of other polynomials at the roots (a
-// mean-value bound first, a gcd for the zero case, refinement otherwise).
-// CGAL's own refinement and Sign_at_1 evaluate at rationals in rational
-// arithmetic (a gcd per operation): with refinement of every root to 2^-64
-// that was two thirds of the exact 2D pipeline before (issue 6).
+// after isolation is done on the isolating intervals, in integer arithmetic
+// (exact/root_refinement.hpp): refinement by quadratic interval refinement
+// (QIR, Abbott 2006: secant steps snapped to a dyadic grid, bisection after a
+// failed step) with exact signs of the square-free factor at dyadic points,
+// comparisons with the ends of the range, and signs of other polynomials at
+// the roots (a mean-value bound first, a gcd for the zero case, refinement
+// otherwise). CGAL's own refinement and Sign_at_1 evaluate at rationals in
+// rational arithmetic (a gcd per operation): with refinement of every root to
+// 2^-64 that would be two thirds of the exact 2D pipeline.
 //
-// Bounded (issue 15): every refinement loop asks the running thread's deadline
+// Bounded: every refinement loop asks the running thread's deadline
 // (kernel/budget.hpp: BudgetExhausted when it passed). CGAL's modular gcd has
 // 2000 primes of about 26 bits; a gcd that needs more loops forever printing
 // "primes in the array exhausted" to std::cerr. Every call into CGAL is made
@@ -25,6 +25,7 @@
 // refused up front (BudgetExhausted), CGAL's std::cerr output is captured (it
 // never reaches the user), and that message ends the call with BudgetExhausted.
 #include "exact/algebraic_roots.hpp"
+#include "exact/root_refinement.hpp"
 #include "number/simplest_rational.hpp"
 #include "exact/integer_polynomial.hpp"
 #include "exact/flint_poly.hpp"
@@ -45,13 +46,23 @@
 namespace eccd {
 
 namespace {
+using root_refinement::certainly_square_free;
+using root_refinement::compare_root;
+using root_refinement::constant_sign;
+using root_refinement::dyadic;
+using root_refinement::Dyadic;
+using root_refinement::dyadic_parts;
+using root_refinement::eval_dyadic;
+using root_refinement::IntPoly;
+using root_refinement::is_root;
+using root_refinement::kMaxLevel;
+using root_refinement::Refiner;
+using root_refinement::sign_at_rational;
+
 using AK = CGAL::Algebraic_kernel_d_1<CORE::BigInt>;  // CORE's BigInt and BigRat (GMP inside)
 using AKPoly = AK::Polynomial_1;
 using AKReal = AK::Algebraic_real_1;
 using PT = CGAL::Polynomial_traits_d<AKPoly>;
-using IntPoly = std::vector<mpz_class>;  // lowest degree first, nonzero leading coefficient
-
-constexpr unsigned long kMaxLevel = 1ul << 20;  // refinement limit (bits of a bracket's ends): a bug guard
 
 AK& kernel() {
   static thread_local AK ak;
@@ -65,7 +76,7 @@ void check_deadline_now(const char* where) { check_deadline(where); }
 // Largest coefficient (bits) of a polynomial handed to CGAL's modular gcd:
 // well inside what its 2000 primes (~52 000 bits) can reconstruct. FLINT's
 // gcds (exact/flint_poly.hpp) have no such limit; the same check guards them,
-// so what is refused did not change with them (issue 21).
+// so that CGAL and FLINT refuse the same inputs.
 constexpr std::size_t kMaxCgalBits = 20000;
 
 // std::cerr while CGAL runs: keeps what CGAL prints (never shown) and stops
@@ -201,409 +212,6 @@ Poly<Rational> int_poly_to_rational(const IntPoly& z) {
 }
 
 Rational to_rational(const AK::Bound& b) { return Rational(b.get_mp()); }
-
-// out = 2^(k·n) f(a / 2^k), n = deg f: the exact value, up to a positive factor.
-void eval_dyadic(mpz_class& out, const IntPoly& f, const mpz_class& a, unsigned long k) {
-  static thread_local mpz_class t;
-  const int n = int(f.size()) - 1;
-  mpz_set(out.get_mpz_t(), f[n].get_mpz_t());
-  for (int i = n - 1; i >= 0; --i) {
-    mpz_mul(out.get_mpz_t(), out.get_mpz_t(), a.get_mpz_t());
-    if (mpz_sgn(f[i].get_mpz_t()) == 0) continue;
-    mpz_mul_2exp(t.get_mpz_t(), f[i].get_mpz_t(), k * static_cast<unsigned long>(n - i));
-    mpz_add(out.get_mpz_t(), out.get_mpz_t(), t.get_mpz_t());
-  }
-}
-
-// The exact sign of f at the rational x (den^n f(num / den) by Horner).
-int sign_at_rational(const IntPoly& f, const Rational& x) {
-  const int n = int(f.size()) - 1;
-  if (n < 0) return 0;
-  mpz_class s = f[n], pw = 1, t;
-  for (int i = n - 1; i >= 0; --i) {
-    pw *= x.get_den();
-    s *= x.get_num();
-    mpz_mul(t.get_mpz_t(), f[i].get_mpz_t(), pw.get_mpz_t());
-    s += t;
-  }
-  return sgn(s);
-}
-
-// x = a / 2^j (lowest terms) when x's denominator is a power of two.
-bool dyadic_parts(const Rational& x, mpz_class& a, unsigned long& j) {
-  if (mpz_popcount(x.get_den_mpz_t()) != 1) return false;
-  j = mpz_scan1(x.get_den_mpz_t(), 0);
-  a = x.get_num();
-  return true;
-}
-
-Rational dyadic(const mpz_class& a, unsigned long k) {
-  Rational r(a);
-  mpq_div_2exp(r.get_mpq_t(), r.get_mpq_t(), k);
-  return r;
-}
-
-// An isolating bracket on the dyadic grid of level k: the open interval
-// (A / 2^k, B / 2^k), A < B, holds exactly one root of the square-free f, and
-// f is not zero at its ends: FA = 2^(k·n) f(A / 2^k) and FB (likewise) are
-// nonzero and of opposite signs.
-struct Dyadic {
-  unsigned long k = 0;
-  mpz_class A, B, FA, FB;
-};
-
-// Refinement of a root of the square-free integer polynomial f. Every step
-// decides on exact signs of f at dyadic points; a zero there is the root
-// itself (the only root of f in the bracket), which is then exact.
-class Refiner {
- public:
-  explicit Refiner(const IntPoly& f) : f_(f), n_(static_cast<unsigned long>(f.size() - 1)) {}
-
-  // From an isolating open interval (lo, hi) with arbitrary rational ends.
-  // Returns false and sets `exact` if the root turned out to be a grid point.
-  bool init(const Rational& lo_in, const Rational& hi_in, Dyadic& d, std::optional<Rational>& exact) {
-    Rational lo = lo_in, hi = hi_in;
-    mpz_class a, b;
-    unsigned long ja, jb;
-    if (dyadic_parts(lo, a, ja) && dyadic_parts(hi, b, jb)) {
-      d.k = std::max(ja, jb);
-      d.A = a << (d.k - ja);
-      d.B = b << (d.k - jb);
-      eval_dyadic(d.FA, f_, d.A, d.k);
-      eval_dyadic(d.FB, f_, d.B, d.k);
-      if (sgn(d.FA) * sgn(d.FB) >= 0)
-        throw std::logic_error("internal error: not an isolating interval of a simple root");
-      return true;
-    }
-    // Rational ends: take grid points j1 < j2 inside (lo, hi) (at least three
-    // of them at level k); the root lies in (lo, j1), [j1, j2] or (j2, hi),
-    // and the outer pieces shrink by 4 or more each round.
-    int s_lo = sign_at_rational(f_, lo);
-    if (s_lo == 0 || s_lo == sign_at_rational(f_, hi))
-      throw std::logic_error("internal error: not an isolating interval of a simple root");
-    for (;;) {
-      check_deadline("exact root refinement");
-      Rational w = hi - lo;
-      unsigned long k = 0;
-      for (Rational s = w; s < 4; s *= 2) ++k;
-      if (k > kMaxLevel) throw std::logic_error("internal error: bracket refinement does not converge");
-      Rational L = lo, H = hi;
-      mpq_mul_2exp(L.get_mpq_t(), L.get_mpq_t(), k);
-      mpq_mul_2exp(H.get_mpq_t(), H.get_mpq_t(), k);
-      mpz_class j1, j2;
-      mpz_fdiv_q(j1.get_mpz_t(), L.get_num_mpz_t(), L.get_den_mpz_t());
-      j1 += 1;
-      mpz_cdiv_q(j2.get_mpz_t(), H.get_num_mpz_t(), H.get_den_mpz_t());
-      j2 -= 1;
-      mpz_class F1, F2;
-      eval_dyadic(F1, f_, j1, k);
-      if (sgn(F1) == 0) {
-        exact = dyadic(j1, k);
-        return false;
-      }
-      eval_dyadic(F2, f_, j2, k);
-      if (sgn(F2) == 0) {
-        exact = dyadic(j2, k);
-        return false;
-      }
-      if (sgn(F1) != s_lo) {
-        hi = dyadic(j1, k);
-      } else if (sgn(F2) == s_lo) {
-        lo = dyadic(j2, k);
-      } else {
-        d.k = k;
-        d.A = j1;
-        d.B = j2;
-        d.FA = F1;
-        d.FB = F2;
-        return true;
-      }
-      if (dyadic_parts(lo, a, ja) && dyadic_parts(hi, b, jb)) return init(lo, hi, d, exact);
-    }
-  }
-
-  // Shrinks d until its width is at most 2^-bits. Returns false and sets
-  // `exact` if the root turned out to be a grid point.
-  bool refine(Dyadic& d, long bits, std::optional<Rational>& exact) {
-    bool failed = false;
-    for (;;) {
-      check_deadline("exact root refinement");
-      long need = halvings_needed(d, bits);
-      if (need <= 0) return true;
-      if (d.k > kMaxLevel) throw std::logic_error("internal error: bracket refinement does not converge");
-      if (failed) {  // after a failed secant step, one bisection (progress is certain)
-        if (!bisect(d, exact)) return false;
-        failed = false;
-        continue;
-      }
-      // a successful step shrinks the bracket 2^L-fold: no finer than asked
-      int L = int(std::min<long>(log2n_, need));
-      int result = qir_step(d, L, exact);
-      if (result < 0) return false;
-      if (result == 1) {
-        log2n_ = std::min(2 * log2n_, 1 << 12);
-      } else {
-        log2n_ = std::max(1, log2n_ / 2);
-        failed = true;
-      }
-    }
-  }
-
- private:
-  // How many halvings until (B - A) / 2^k <= 2^-bits (0 if none).
-  static long halvings_needed(const Dyadic& d, long bits) {
-    mpz_class w = d.B - d.A;
-    long e = long(mpz_sizeinbase(w.get_mpz_t(), 2));  // 2^(e-1) <= w < 2^e
-    if (mpz_popcount(w.get_mpz_t()) == 1) e -= 1;     // w = 2^e exactly
-    // width = w / 2^k <= 2^(e - k); need e - k <= -bits
-    return e - long(d.k) + bits;
-  }
-
-  void lift(Dyadic& d, unsigned long L) {
-    d.k += L;
-    d.A <<= L;
-    d.B <<= L;
-    d.FA <<= L * n_;
-    d.FB <<= L * n_;
-  }
-
-  // One bisection at the midpoint.
-  bool bisect(Dyadic& d, std::optional<Rational>& exact) {
-    mpz_class s = d.A + d.B;
-    if (mpz_odd_p(s.get_mpz_t())) {
-      lift(d, 1);
-      s = d.A + d.B;
-    }
-    mpz_class M = s >> 1, FM;
-    eval_dyadic(FM, f_, M, d.k);
-    if (sgn(FM) == 0) {
-      exact = dyadic(M, d.k);
-      return false;
-    }
-    if (sgn(FM) == sgn(d.FA)) {
-      d.A = M;
-      d.FA = FM;
-    } else {
-      d.B = M;
-      d.FB = FM;
-    }
-    return true;
-  }
-
-  // A QIR step with N = 2^L: the secant point of the bracket snapped to the
-  // grid, and the point one N-th of the bracket further on the side of the
-  // root. Returns 1 when the root was caught between the two (the bracket
-  // shrank N-fold), 0 when the bracket only shrank, -1 when the root is a
-  // grid point (exact).
-  int qir_step(Dyadic& d, int L, std::optional<Rational>& exact) {
-    mpz_class w = d.B - d.A;
-    long bl = long(mpz_sizeinbase(w.get_mpz_t(), 2)) - 1;  // 2^bl <= w
-    if (bl < L + 1) {                                      // room for N steps of at least 2 grid cells
-      lift(d, static_cast<unsigned long>(L + 1 - bl));
-      w = d.B - d.A;
-    }
-    mpz_class h = w >> static_cast<unsigned long>(L);  // the step, >= 2
-    // the secant point A + round(w·|FA| / (|FA| + |FB|)), inside (A, B)
-    mpz_class aFA = abs(d.FA), aFB = abs(d.FB);
-    mpz_class den = aFA + aFB, num = w * aFA, off;
-    num = 2 * num + den;
-    den *= 2;
-    mpz_fdiv_q(off.get_mpz_t(), num.get_mpz_t(), den.get_mpz_t());
-    if (off < 1) off = 1;
-    if (off > w - 1) off = w - 1;
-    mpz_class M = d.A + off, FM;
-    eval_dyadic(FM, f_, M, d.k);
-    if (sgn(FM) == 0) {
-      exact = dyadic(M, d.k);
-      return -1;
-    }
-    const int sa = sgn(d.FA);
-    if (sgn(FM) == sa) {  // the root is in (M, B)
-      d.A = M;
-      d.FA = FM;
-      mpz_class M1 = M + h;
-      if (M1 >= d.B) return 1;
-      mpz_class F1;
-      eval_dyadic(F1, f_, M1, d.k);
-      if (sgn(F1) == 0) {
-        exact = dyadic(M1, d.k);
-        return -1;
-      }
-      if (sgn(F1) == sa) {
-        d.A = M1;
-        d.FA = F1;
-        return 0;
-      }
-      d.B = M1;
-      d.FB = F1;
-      return 1;
-    }
-    d.B = M;  // the root is in (A, M)
-    d.FB = FM;
-    mpz_class M1 = M - h;
-    if (M1 <= d.A) return 1;
-    mpz_class F1;
-    eval_dyadic(F1, f_, M1, d.k);
-    if (sgn(F1) == 0) {
-      exact = dyadic(M1, d.k);
-      return -1;
-    }
-    if (sgn(F1) != sa) {
-      d.B = M1;
-      d.FB = F1;
-      return 0;
-    }
-    d.A = M1;
-    d.FA = F1;
-    return 1;
-  }
-
-  const IntPoly& f_;
-  unsigned long n_;
-  int log2n_ = 2;
-};
-
-// Is the rational q (lowest terms) a root of the primitive integer f? By the
-// rational root theorem only if its denominator divides the leading and its
-// numerator the constant coefficient; only then is f evaluated.
-bool is_root(const IntPoly& f, const Rational& q) {
-  if (sgn(q) == 0) return sgn(f[0]) == 0;
-  if (!mpz_divisible_p(f.back().get_mpz_t(), q.get_den_mpz_t())) return false;
-  if (!mpz_divisible_p(f[0].get_mpz_t(), q.get_num_mpz_t())) return false;
-  return sign_at_rational(f, q) == 0;
-}
-
-// A certificate that the integer polynomial z (degree >= 1) is square-free:
-// gcd(z mod q, z' mod q) = 1 for a prime q not dividing lc(z). If z had a
-// square factor h² (deg h >= 1, h primitive), h would divide z and z' over
-// Z; lc(h) divides lc(z), so h mod q keeps its degree and divides both
-// reductions, whose gcd would then have degree >= 1. So a constant gcd mod q
-// proves z square-free; a non-constant one proves nothing (q may be unlucky),
-// and the caller falls back to FLINT's square-free factorisation (further
-// primes only when q divides lc(z) or z'). Arithmetic mod q < 2^62 in unsigned 128-bit products.
-bool certainly_square_free(const IntPoly& z) {
-  using u64 = unsigned long long;
-  using u128 = unsigned __int128;
-  const int n = int(z.size()) - 1;
-  if (n < 1) return false;
-  for (u64 q : {4611686018427387847ull, 4611686018427387817ull, 4611686018427387787ull}) {
-    auto mod = [q](const mpz_class& x) { return u64(mpz_fdiv_ui(x.get_mpz_t(), static_cast<unsigned long>(q))); };
-    auto mul = [q](u64 x, u64 y) { return u64(u128(x) * y % q); };
-    auto inv = [&](u64 x) {  // x^(q-2) mod q
-      u64 r = 1, e = q - 2;
-      for (; e; e >>= 1, x = mul(x, x))
-        if (e & 1) r = mul(r, x);
-      return r;
-    };
-    std::vector<u64> a(n + 1), b(n);
-    for (int i = 0; i <= n; ++i) a[i] = mod(z[i]);
-    if (a[n] == 0) continue;
-    for (int i = 1; i <= n; ++i) b[i - 1] = mul(a[i], u64(i) % q);
-    auto trim = [](std::vector<u64>& v) {
-      while (!v.empty() && v.back() == 0) v.pop_back();
-    };
-    trim(b);
-    if (b.empty()) continue;
-    // Euclid: a <- a mod b, swap, until b = 0; deg gcd = deg a at the end.
-    while (!b.empty()) {
-      const u64 li = inv(b.back());
-      while (a.size() >= b.size()) {
-        const u64 f = mul(a.back(), li);
-        const std::size_t k = a.size() - b.size();
-        for (std::size_t i = 0; i < b.size(); ++i) a[i + k] = (a[i + k] + q - mul(f, b[i])) % q;
-        a.pop_back();  // cancelled exactly
-        trim(a);
-        if (a.empty()) break;
-      }
-      a.swap(b);
-    }
-    // A non-zero constant: square-free. Otherwise z is almost surely not
-    // square-free (q would have to divide its discriminant): FLINT's
-    // factorisation decides at once instead of two more primes (issue 21).
-    return a.size() == 1;
-  }
-  return false;
-}
-
-// Where the root in the isolating bracket (lo, hi) of f (s_lo: the sign of f
-// at lo) lies with respect to the rational c: -1 below, 0 at, 1 above.
-int compare_root(const IntPoly& f, const Rational& lo, const Rational& hi, int s_lo, const Rational& c) {
-  if (c <= lo) return 1;
-  if (c >= hi) return -1;
-  int s = sign_at_rational(f, c);
-  if (s == 0) return 0;
-  return s == s_lo ? 1 : -1;
-}
-
-// Sign of Q on the closed interval [A, B] / 2^k when a bound proves it
-// constant there, else 0 (unknown). With m the midpoint, r the half-width and
-// x in the interval, Taylor at m with Lagrange's remainder:
-//   |Q(x) - Q(m)| <= sum_{j=1}^{J-1} |Q^(j)(m) / j!| r^j + r^J max |Q^(J) / J!|,
-//   max |Q^(J)(ξ) / J!| <= N_J = sum_i C(i, J) |c_i| 2^(e (i - J))
-// over |ξ| <= 2^e, e >= 0 with max(|lo|, |hi|) <= 2^e. J = 1 (the mean-value
-// bound: one evaluation) is tried first; then J up to 8, which does not suffer
-// from the power basis' cancellation (N_J is multiplied by r^J; the first
-// terms are the exact local derivatives). In integers, at level s = k + 1,
-// M = A + B, R = B - A, b_j = 2^(s(n-j)) Q^(j)(m) / j!:
-//   |b_0| > sum_{j=1}^{J-1} |b_j| R^j + R^J 2^(s(n-J)) N_J.
-int constant_sign(const IntPoly& Q, const Dyadic& d) {
-  const int n = int(Q.size()) - 1;
-  const unsigned long s = d.k + 1;
-  const mpz_class& mx = mpz_cmpabs(d.A.get_mpz_t(), d.B.get_mpz_t()) >= 0 ? d.A : d.B;
-  long e = long(mpz_sizeinbase(mx.get_mpz_t(), 2)) - long(d.k);  // |x| < 2^e on the interval
-  if (e < 0) e = 0;
-  const mpz_class M = d.A + d.B, R = d.B - d.A;
-  const int J = std::min(n, 8);
-  // N_j for j <= J: Taylor coefficients of sum |c_i| x^i at x = 2^e (Horner's
-  // scheme for derivatives); b_j likewise for the scaled polynomial at M.
-  std::vector<mpz_class> N(J + 1), b(J + 1);
-  auto taylor_of_abs = [&](int jmax) {  // N_0..N_jmax
-    for (auto& x : N) x = 0;
-    N[0] = abs(Q[n]);
-    for (int i = n - 1; i >= 0; --i) {
-      for (int j = std::min(jmax, n - i); j >= 1; --j) {
-        N[j] <<= static_cast<unsigned long>(e);
-        N[j] += N[j - 1];
-      }
-      N[0] <<= static_cast<unsigned long>(e);
-      N[0] += abs(Q[i]);
-    }
-  };
-  mpz_class t;
-  // J = 1 first: b_0 alone
-  taylor_of_abs(1);
-  eval_dyadic(b[0], Q, M, s);
-  mpz_class rhs = R * N[1];
-  rhs <<= s * static_cast<unsigned long>(n - 1);
-  if (mpz_cmpabs(b[0].get_mpz_t(), rhs.get_mpz_t()) > 0) return sgn(b[0]);
-  if (J < 2) return 0;
-  taylor_of_abs(J);
-  b[0] = Q[n];
-  for (int i = n - 1; i >= 0; --i) {
-    for (int j = std::min(J - 1, n - i); j >= 1; --j) {
-      b[j] *= M;
-      b[j] += b[j - 1];
-    }
-    b[0] *= M;
-    mpz_mul_2exp(t.get_mpz_t(), Q[i].get_mpz_t(), s * static_cast<unsigned long>(n - i));
-    b[0] += t;
-  }
-  // rhs for J: sum_{j<J} |b_j| R^j + R^J 2^(s(n-J)) N_J, by increasing J
-  mpz_class sum = 0, Rj = 1;
-  for (int j = 1; j <= J; ++j) {
-    Rj *= R;  // R^j
-    rhs = Rj * N[j];
-    rhs <<= s * static_cast<unsigned long>(n - j);
-    rhs += sum;
-    if (mpz_cmpabs(b[0].get_mpz_t(), rhs.get_mpz_t()) > 0) return sgn(b[0]);
-    if (j < J) {
-      t = abs(b[j]);
-      t *= Rj;
-      sum += t;
-    }
-  }
-  return 0;
-}
 
 }  // namespace
 

@@ -200,6 +200,62 @@ Keyframes shapes_from_text(const std::string& json_text, const std::string& labe
   return k;
 }
 
+namespace {
+
+// One data line of a poses CSV, read.
+struct PoseRow {
+  Rational t;
+  std::size_t body;
+  KeyframePose pose;
+  long line;
+};
+
+// The comma-separated fields of a CSV line, each trimmed.
+std::vector<std::string> csv_fields(const std::string& t) {
+  std::vector<std::string> fields;
+  std::size_t a = 0;
+  while (true) {
+    const std::size_t c = t.find(',', a);
+    fields.push_back(trim(t.substr(a, c == std::string::npos ? std::string::npos : c - a)));
+    if (c == std::string::npos) break;
+    a = c + 1;
+  }
+  return fields;
+}
+
+// The key times of the rows, increasing, into k.times; each body's pose at
+// each of them, exactly once (a repeated or missing pose throws SceneError).
+void set_poses_by_time(std::vector<PoseRow>& rows, const std::string& csv_label, Keyframes& k) {
+  std::map<Rational, std::size_t> time_index;
+  for (const PoseRow& r : rows) time_index.emplace(r.t, 0);
+  std::size_t n = 0;
+  for (auto& [t, i] : time_index) {
+    i = n++;
+    k.times.push_back(canonical_number(t));
+  }
+  std::vector<std::vector<long>> line_of(k.bodies.size(), std::vector<long>(n, 0));
+  for (auto& b : k.bodies) b.poses.assign(n, KeyframePose{});
+  for (PoseRow& r : rows) {
+    const std::size_t ti = time_index[r.t];
+    long& seen = line_of[r.body][ti];
+    if (seen)
+      throw SceneError(csv_label + ": line " + std::to_string(r.line) + ": body " + json_quote(k.bodies[r.body].name) +
+                       " at time " + k.times[ti] + " again (its pose is on line " + std::to_string(seen) + ")");
+    seen = r.line;
+    k.bodies[r.body].poses[ti] = std::move(r.pose);
+  }
+  if (time_index.size() < 2)
+    throw SceneError(csv_label + ": the poses are all at one time (" + k.times[0] +
+                     "): an animation needs at least two key times");
+  for (std::size_t b = 0; b < k.bodies.size(); ++b)
+    for (std::size_t ti = 0; ti < n; ++ti)
+      if (!line_of[b][ti])
+        throw SceneError(csv_label + ": body " + json_quote(k.bodies[b].name) + " has no pose at time " + k.times[ti] +
+                         " (every body needs one pose at every time of the file)");
+}
+
+}  // namespace
+
 Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string& csv_label, Keyframes k) {
   const int dim = k.dim;
   static const std::vector<std::string> names3{"time", "body", "x", "y", "z", "qw", "qx", "qy", "qz"};
@@ -210,13 +266,7 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
   std::map<std::string, std::size_t> body_index;
   for (std::size_t i = 0; i < k.bodies.size(); ++i) body_index[k.bodies[i].name] = i;
 
-  struct Row {
-    Rational t;
-    std::size_t body;
-    KeyframePose pose;
-    long line;
-  };
-  std::vector<Row> rows;
+  std::vector<PoseRow> rows;
   std::size_t start = 0;
   long line = 0;
   bool seen_data = false;
@@ -234,14 +284,7 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
       if (end == csv_text.size()) break;
       continue;
     }
-    std::vector<std::string> fields;
-    std::size_t a = 0;
-    while (true) {
-      const std::size_t c = t.find(',', a);
-      fields.push_back(trim(t.substr(a, c == std::string::npos ? std::string::npos : c - a)));
-      if (c == std::string::npos) break;
-      a = c + 1;
-    }
+    const std::vector<std::string> fields = csv_fields(t);
     if (!seen_data && (fields[0] == "time" || fields[0] == "t")) {  // a header line
       seen_data = true;
       continue;
@@ -258,7 +301,7 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
                          "): " + json_quote(fields[col]) + ": " + e.what());
       }
     };
-    Row r;
+    PoseRow r;
     r.line = line;
     r.t = number(0);
     const auto it = body_index.find(fields[1]);
@@ -287,33 +330,7 @@ Keyframes pose_keyframes_from_csv(const std::string& csv_text, const std::string
   }
   if (rows.empty()) throw SceneError(csv_label + ": no poses (expected lines of " + header + ")");
 
-  // The key times, increasing; each body's pose at each of them, exactly once.
-  std::map<Rational, std::size_t> time_index;
-  for (const Row& r : rows) time_index.emplace(r.t, 0);
-  std::size_t n = 0;
-  for (auto& [t, i] : time_index) {
-    i = n++;
-    k.times.push_back(canonical_number(t));
-  }
-  std::vector<std::vector<long>> line_of(k.bodies.size(), std::vector<long>(n, 0));
-  for (auto& b : k.bodies) b.poses.assign(n, KeyframePose{});
-  for (Row& r : rows) {
-    const std::size_t ti = time_index[r.t];
-    long& seen = line_of[r.body][ti];
-    if (seen)
-      throw SceneError(csv_label + ": line " + std::to_string(r.line) + ": body " + json_quote(k.bodies[r.body].name) +
-                       " at time " + k.times[ti] + " again (its pose is on line " + std::to_string(seen) + ")");
-    seen = r.line;
-    k.bodies[r.body].poses[ti] = std::move(r.pose);
-  }
-  if (time_index.size() < 2)
-    throw SceneError(csv_label + ": the poses are all at one time (" + k.times[0] +
-                     "): an animation needs at least two key times");
-  for (std::size_t b = 0; b < k.bodies.size(); ++b)
-    for (std::size_t ti = 0; ti < n; ++ti)
-      if (!line_of[b][ti])
-        throw SceneError(csv_label + ": body " + json_quote(k.bodies[b].name) + " has no pose at time " + k.times[ti] +
-                         " (every body needs one pose at every time of the file)");
+  set_poses_by_time(rows, csv_label, k);
   return k;
 }
 

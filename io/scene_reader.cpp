@@ -1,5 +1,9 @@
-// Scene reader (see io/scene_reader.hpp for the statement and the choices).
+// Scene reader (see io/scene_reader.hpp for the statement and the choices):
+// the validating Reader of scenes and stored answers, over the strict JSON of
+// io/strict_json.cpp and the numbers of io/scene_numbers.cpp.
 #include "io/scene_reader.hpp"
+
+#include "io/json_messages.hpp"
 
 #include "kernel/bernstein.hpp"
 #include "kernel/quadric_classification.hpp"
@@ -8,308 +12,23 @@
 #include "kernel/budget.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstdlib>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <optional>
 #include <unordered_map>
 #include <vector>
-#include <cstdint>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace eccd {
 
 using json = nlohmann::json;
 
-// ---------------------------------------------------------------------------
-// Numbers
-
 namespace {
 
-bool all_digits(const std::string& s) {
-  if (s.empty()) return false;
-  for (char ch : s)
-    if (ch < '0' || ch > '9') return false;
-  return true;
-}
-
-const char* const kNumberForms =
-    "expected an integer (\"-63\"), a fraction (\"-3/7\") or a decimal (\"1.8\", \"2.5e-3\")";
-
-[[noreturn]] void bad_number(const std::string& why) { throw std::invalid_argument(why); }
-
-}  // namespace
-
-InputLimits& input_limits() {
-  static InputLimits limits;
-  return limits;
-}
-
-namespace {
-[[noreturn]] void beyond_digits(const char* part, std::size_t digits, bool at_least = false) {
-  bad_number(std::string(part) + " has " + (at_least ? "at least " : "") + std::to_string(digits) +
-             " digits, beyond the input limit of " + std::to_string(input_limits().max_digits) +
-             " digits per number (--max-digits)");
-}
-void check_digits(const mpq_class& q) {
-  const std::size_t lim = input_limits().max_digits;
-  // mpz_sizeinbase(.,10) may be one too large: confirm with the exact count only near the limit
-  auto digits = [](const mpz_class& z) {
-    std::size_t d = mpz_sizeinbase(z.get_mpz_t(), 10);
-    if (d > 1) {
-      mpz_class p;
-      mpz_ui_pow_ui(p.get_mpz_t(), 10, d - 1);
-      if (abs(z) < p) --d;
-    }
-    return d;
-  };
-  if (mpz_sizeinbase(q.get_num_mpz_t(), 10) > lim) {
-    std::size_t d = digits(q.get_num());
-    if (d > lim) beyond_digits(q.get_den() == 1 ? "the number" : "its numerator", d);
-  }
-  if (mpz_sizeinbase(q.get_den_mpz_t(), 10) > lim) {
-    std::size_t d = digits(q.get_den());
-    if (d > lim) beyond_digits("its denominator (in lowest terms)", d);
-  }
-}
-}  // namespace
-
-Rational parse_rational(const std::string& text) {
-  if (text.empty()) bad_number(std::string("empty string; ") + kNumberForms);
-  if (text.size() > 100 * input_limits().max_digits + 16)
-    bad_number("a number text of " + std::to_string(text.size()) + " characters, beyond the input limit of " +
-               std::to_string(100 * input_limits().max_digits + 16) + " characters (100 x --max-digits)");
-  for (char ch : text)
-    if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r' || ch == '\f' || ch == '\v')
-      bad_number("contains whitespace");
-  std::size_t i = 0;
-  bool negative = false;
-  if (text[0] == '+' || text[0] == '-') {
-    negative = text[0] == '-';
-    i = 1;
-  }
-  const std::size_t slash = text.find('/');
-  if (slash != std::string::npos) {
-    const std::string num = text.substr(i, slash - i), den = text.substr(slash + 1);
-    if (!all_digits(num)) bad_number("the numerator of a fraction must be an integer (an optional sign, then digits)");
-    if (!all_digits(den)) bad_number("the denominator of a fraction must be a positive integer (digits only)");
-    mpz_class n(num, 10), d(den, 10);
-    if (d == 0) bad_number("zero denominator");
-    mpq_class q(n, d);
-    q.canonicalize();
-    check_digits(q);
-    if (negative) q = -q;
-    return q;
-  }
-  // Decimal: digits [ '.' digits ] [ (e|E) [sign] digits ], at least one mantissa digit.
-  std::string mantissa;
-  long frac_len = 0;
-  std::size_t j = i;
-  while (j < text.size() && text[j] >= '0' && text[j] <= '9') mantissa += text[j++];
-  if (j < text.size() && text[j] == '.') {
-    ++j;
-    while (j < text.size() && text[j] >= '0' && text[j] <= '9') {
-      mantissa += text[j++];
-      ++frac_len;
-    }
-  }
-  if (mantissa.empty()) bad_number(std::string("no digits; ") + kNumberForms);
-  long exponent = 0;
-  if (j < text.size() && (text[j] == 'e' || text[j] == 'E')) {
-    ++j;
-    bool eneg = false;
-    if (j < text.size() && (text[j] == '+' || text[j] == '-')) {
-      eneg = text[j] == '-';
-      ++j;
-    }
-    std::string ed;
-    while (j < text.size() && text[j] >= '0' && text[j] <= '9') ed += text[j++];
-    if (ed.empty()) bad_number("the exponent has no digits");
-    std::size_t nz = ed.find_first_not_of('0');
-    ed = nz == std::string::npos ? std::string("0") : ed.substr(nz);
-    if (ed.size() > 5 || std::stol(ed) > 10000) bad_number("exponent too large (at most 10000 in magnitude)");
-    exponent = std::stol(ed);
-    if (eneg) exponent = -exponent;
-  }
-  if (j != text.size())
-    bad_number("unexpected '" + std::string(1, text[j]) + "' at character " + std::to_string(j + 1) + "; " +
-               kNumberForms);
-  {  // the value's size before building it: significant digits + exponent
-    std::size_t nz = mantissa.find_first_not_of('0');
-    if (nz == std::string::npos) return Rational(0);
-    std::size_t sig = mantissa.size() - nz;
-    std::size_t last = mantissa.find_last_not_of('0');
-    long trailing = long(mantissa.size() - 1 - last);
-    long e0 = exponent - frac_len + trailing;  // value = (significant digits) * 10^e0
-    std::size_t core = sig - std::size_t(trailing);
-    std::size_t lim = input_limits().max_digits;
-    if (e0 >= 0 && core + std::size_t(e0) > lim + 1) beyond_digits("the number", core + std::size_t(e0));
-    // the denominator in lowest terms is at least 10^-e0 / core: more than -e0 - core digits
-    if (e0 < 0 && std::size_t(-e0) > core + lim + 1)
-      beyond_digits("its denominator (in lowest terms)", std::size_t(-e0) - core, true);
-  }
-  mpz_class m(mantissa, 10);
-  const long e = exponent - frac_len;
-  mpz_class p;
-  mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
-  mpq_class q = e >= 0 ? mpq_class(mpz_class(m * p)) : mpq_class(m, p);
-  q.canonicalize();
-  check_digits(q);
-  if (negative) q = -q;
-  return q;
-}
-
-// ---------------------------------------------------------------------------
-// Answers to JSON
-
-json instant_to_json(const Instant& in) {
-  json o = json::object();
-  o["approx"] = in.approx;
-  o["lo"] = in.lo ? json(in.lo->get_str()) : json(nullptr);
-  o["hi"] = in.hi ? json(in.hi->get_str()) : json(nullptr);
-  return o;
-}
-
-namespace {
-
-json interval_list_to_json(const std::vector<std::pair<Instant, Instant>>& v) {
-  json a = json::array();
-  for (const auto& [s, e] : v) a.push_back(json::array({instant_to_json(s), instant_to_json(e)}));
-  return a;
-}
-
-}  // namespace
-
-json answer_to_json(const Answer& answer) {
-  json o = json::object();
-  o["collides"] = answer.collides;
-  if (answer.independent) {  // scene-format.md, "Independent motions": no intervals / first_contact / contacts
-    o["s_intervals"] = interval_list_to_json(answer.s_intervals);
-    o["t_intervals"] = interval_list_to_json(answer.t_intervals);
-    if (!answer.undecided.empty()) {
-      json u = json::array();
-      for (const auto& c : answer.undecided) u.push_back(instant_to_json(c));
-      o["undecided"] = u;
-    }
-    return o;
-  }
-  o["intervals"] = interval_list_to_json(answer.intervals);
-  o["first_contact"] = answer.first_contact ? instant_to_json(*answer.first_contact) : json(nullptr);
-  json contacts = json::array();
-  for (const auto& c : answer.contacts) contacts.push_back(instant_to_json(c));
-  o["contacts"] = contacts;
-  if (!answer.contact_points.empty()) {
-    json pts = json::array();
-    for (const auto& p : answer.contact_points) pts.push_back(json(p.x));
-    o["contact_points"] = pts;
-  }
-  if (!answer.contact_intervals.empty()) o["contact_intervals"] = interval_list_to_json(answer.contact_intervals);
-  if (!answer.undecided.empty()) {
-    json u = json::array();
-    for (const auto& c : answer.undecided) u.push_back(instant_to_json(c));
-    o["undecided"] = u;
-  }
-  return o;
-}
-
-// ---------------------------------------------------------------------------
-// The validating reader
-
-namespace {
-
-constexpr std::size_t kMaxDepth = 64;
-
-std::string escape_token(const std::string& k) {
-  std::string r;
-  for (char ch : k) {
-    if (ch == '~')
-      r += "~0";
-    else if (ch == '/')
-      r += "~1";
-    else
-      r += ch;
-  }
-  return r;
-}
-std::string child(const std::string& ptr, const std::string& key) { return ptr + "/" + escape_token(key); }
-std::string child(const std::string& ptr, std::size_t i) { return ptr + "/" + std::to_string(i); }
-// A JSON pointer for a message: each token cut to 80 characters.
-std::string place_text(const std::string& ptr) {
-  if (ptr.empty()) return "top level";
-  if (ptr.size() <= 200) return ptr;
-  std::string r;
-  std::size_t i = 0;
-  while (i < ptr.size()) {
-    std::size_t j = ptr.find('/', i + 1);
-    if (j == std::string::npos) j = ptr.size();
-    std::string tok = ptr.substr(i, j - i);
-    r += tok.size() > 81 ? tok.substr(0, 81) + "..." : tok;
-    i = j;
-  }
-  return r.size() > 2000 ? r.substr(0, 2000) + "..." : r;
-}
-
-// A message with each run of more than 40 digits shortened to its first 20
-// and last 8 digits and the count (a 1000-digit number is not echoed whole).
-std::string shorten_digits(const std::string& m) {
-  std::string r;
-  std::size_t i = 0;
-  while (i < m.size()) {
-    if (m[i] < '0' || m[i] > '9') {
-      r += m[i++];
-      continue;
-    }
-    std::size_t j = i;
-    while (j < m.size() && m[j] >= '0' && m[j] <= '9') ++j;
-    if (j - i > 40)
-      r += m.substr(i, 20) + "...(" + std::to_string(j - i) + " digits)..." + m.substr(j - 8, 8);
-    else
-      r += m.substr(i, j - i);
-    i = j;
-  }
-  return r;
-}
-
-// A user string in a message: JSON-quoted, shortened.
-std::string quote(const std::string& s) {
-  std::string t = s.size() > 80 ? s.substr(0, 80) + "..." : s;
-  return json(t).dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-std::string type_name(const json& j) {
-  switch (j.type()) {
-    case json::value_t::null:
-      return "null";
-    case json::value_t::boolean:
-      return "a boolean";
-    case json::value_t::string:
-      return "a string";
-    case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-      return "an integer";
-    case json::value_t::number_float:
-      return "a number with a fraction part";
-    case json::value_t::object:
-      return "an object";
-    case json::value_t::array:
-      return "an array";
-    default:
-      return "an unexpected value";
-  }
-}
-
-std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
-  std::string r;
-  for (std::size_t i = 0; i < v.size(); ++i) r += (i ? sep : "") + v[i];
-  return r;
-}
+using json_messages::child;
+using json_messages::join;
+using json_messages::place_text;
+using json_messages::quote;
+using json_messages::shorten_digits;
+using json_messages::type_name;
 
 std::string approx_text(const mpq_class& q) {
   char buf[64];
@@ -342,8 +61,8 @@ std::string poly_text(const RPoly& p) {
 
 // The roots of p (not identically zero) in [0, 1], isolated by the exact
 // root isolation (exact/algebraic_roots.hpp: CGAL, guarded and bounded) with
-// brackets of width <= 2^-30. (Sturm sequences over the rationals took minutes
-// on motions with 100-digit coefficients: issue 15's fuzzing.)
+// brackets of width <= 2^-30 (Sturm sequences over the rationals take minutes
+// on motions with 100-digit coefficients).
 std::vector<AlgebraicRoot> roots_in_unit(const RPoly& p) {
   if (p.degree() < 1) return {};
   return real_roots(p, mpq_class(0), mpq_class(1), 30);
@@ -356,131 +75,6 @@ std::string locate_root(const std::vector<AlgebraicRoot>& roots) {
   mpq_class mid = (r.lo + r.hi) / 2;
   return "at t in [" + r.lo.get_str() + ", " + r.hi.get_str() + "] (t ~ " + approx_text(mid) + ")";
 }
-
-// SAX handler building the DOM, with duplicate-key detection, a depth limit,
-// and the raw text of every JSON number that is not an integer.
-class DomBuilder {
- public:
-  using number_integer_t = json::number_integer_t;
-  using number_unsigned_t = json::number_unsigned_t;
-  using number_float_t = json::number_float_t;
-  using string_t = json::string_t;
-  using binary_t = json::binary_t;
-
-  json root;
-  std::unordered_map<std::string, std::string> float_text;  // pointer -> raw token
-  std::string error_place, error_what;                      // our own error (duplicate key, depth)
-  bool json_error = false;
-  std::size_t error_byte = 0;
-  std::string json_error_what;
-
-  bool null() {
-    put(json(nullptr));
-    return true;
-  }
-  bool boolean(bool v) {
-    put(json(v));
-    return true;
-  }
-  bool number_integer(number_integer_t v) {
-    put(json(v));
-    return true;
-  }
-  bool number_unsigned(number_unsigned_t v) {
-    put(json(v));
-    return true;
-  }
-  bool number_float(number_float_t v, const string_t& s) {
-    float_text[current_pointer()] = s;
-    put(json(v));
-    return true;
-  }
-  bool string(string_t& s) {
-    put(json(std::move(s)));
-    return true;
-  }
-  bool binary(binary_t& b) {
-    put(json::binary(std::move(b)));
-    return true;
-  }
-  bool start_object(std::size_t) { return open(json::object()); }
-  bool start_array(std::size_t) { return open(json::array()); }
-  bool end_object() {
-    close();
-    return true;
-  }
-  bool end_array() {
-    close();
-    return true;
-  }
-  bool key(string_t& k) {
-    if (stack_.back()->contains(k)) {
-      error_place = pointer_of(tokens_.size()) + "/" + escape_token(k);
-      error_what = "duplicate key " + quote(k) + " (each key may appear only once in an object)";
-      return false;
-    }
-    keys_.back() = k;
-    return true;
-  }
-  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
-    json_error = true;
-    error_byte = position;
-    json_error_what = ex.what();
-    return false;
-  }
-
- private:
-  std::vector<json*> stack_;
-  std::vector<std::string> keys_;    // pending key per open container (objects)
-  std::vector<std::string> tokens_;  // token of each open container in its parent
-
-  std::string pointer_of(std::size_t n) const {
-    std::string r;
-    for (std::size_t i = 1; i < n; ++i) r += "/" + tokens_[i];
-    return r;
-  }
-  std::string current_token() const {
-    if (stack_.empty()) return "";
-    const json& top = *stack_.back();
-    return top.is_array() ? std::to_string(top.size()) : escape_token(keys_.back());
-  }
-  std::string current_pointer() const {
-    if (stack_.empty()) return "";
-    return pointer_of(tokens_.size()) + "/" + current_token();
-  }
-  json* put(json&& v) {
-    if (stack_.empty()) {
-      root = std::move(v);
-      return &root;
-    }
-    json& top = *stack_.back();
-    if (top.is_array()) {
-      top.push_back(std::move(v));
-      return &top.back();
-    }
-    json& slot = top[keys_.back()];
-    slot = std::move(v);
-    return &slot;
-  }
-  bool open(json&& v) {
-    if (stack_.size() >= kMaxDepth) {
-      error_place = current_pointer();
-      error_what = "nesting deeper than " + std::to_string(kMaxDepth) + " levels";
-      return false;
-    }
-    std::string tok = current_token();
-    json* p = put(std::move(v));
-    stack_.push_back(p);
-    keys_.emplace_back();
-    tokens_.push_back(std::move(tok));
-    return true;
-  }
-  void close() {
-    stack_.pop_back();
-    keys_.pop_back();
-    tokens_.pop_back();
-  }
-};
 
 class Reader {
  public:
@@ -566,6 +160,7 @@ class Reader {
 
   std::vector<std::vector<Rational>> shape(const json& j, const std::string& ptr) const;
   Motion motion(const json& j, const std::string& ptr) const;
+  MatrixMotion matrix_motion(const json& j, const std::string& ptr, const std::string& what) const;
   SceneObject object(const json& j, const std::string& ptr) const;
 };
 
@@ -696,6 +291,48 @@ std::vector<std::vector<Rational>> Reader::shape(const json& j, const std::strin
   return Q;
 }
 
+// A "matrix" motion: m, (dim+1) x (dim+1) polynomials, with last row (0, ..., 0, w(t)),
+// w(t) and the determinant of the affine block non-vanishing on [0, 1].
+MatrixMotion Reader::matrix_motion(const json& j, const std::string& ptr, const std::string& what) const {
+  const std::size_t n = std::size_t(dim_) + 1;
+  const std::string dims = "dim " + std::to_string(dim_);
+  check_keys(j, ptr, {"type", "m"}, what);
+  const std::string mp = child(ptr, "m");
+  const json& m = member(j, ptr, "m", what);
+  const std::string sz = std::to_string(n) + "x" + std::to_string(n);
+  if (!m.is_array() || m.size() != n)
+    fail(mp, "the motion matrix m must be a " + sz + " array of rows of polynomials (" + dims + "), got " +
+                 (m.is_array() ? std::to_string(m.size()) + " rows" : type_name(m)));
+  MatrixMotion mm;
+  for (std::size_t r = 0; r < n; ++r) {
+    const std::string rp = child(mp, r);
+    const json& row = m[r];
+    if (!row.is_array() || row.size() != n)
+      fail(rp, "each row of the motion matrix must have " + std::to_string(n) + " polynomials (" + dims + "), got " +
+                   (row.is_array() ? std::to_string(row.size()) : type_name(row)));
+    std::vector<RPoly> prow;
+    for (std::size_t c = 0; c < n; ++c) prow.push_back(poly(row[c], child(rp, c)));
+    mm.m.push_back(std::move(prow));
+  }
+  const std::string last_row = dim_ == 2 ? "(0, 0, w(t))" : "(0, 0, 0, w(t))";
+  for (std::size_t c = 0; c + 1 < n; ++c)
+    if (!mm.m[n - 1][c].is_zero())
+      fail(child(child(mp, n - 1), c), "the last row of the motion matrix must be " + last_row +
+                                           ": this entry must be 0, got " + poly_text(mm.m[n - 1][c]));
+  check_nonvanishing(mm.m[n - 1][n - 1], child(child(mp, n - 1), n - 1), "w(t)",
+                     " (the last row of M(t) is " + last_row + ", and w(t) must not vanish on [0, 1])");
+  std::vector<std::vector<RPoly>> block(n - 1);
+  for (std::size_t r = 0; r + 1 < n; ++r) block[r].assign(mm.m[r].begin(), mm.m[r].end() - 1);
+  RPoly d = ring_det(block, RPoly());  // kernel/ring_determinant.hpp
+  const std::string bs = std::to_string(dim_) + "x" + std::to_string(dim_);
+  if (d.is_zero())
+    fail(mp, "singular affine block for every t: the upper-left " + bs + " block of M(t) has determinant 0");
+  if (auto roots = unit_roots(d, mp, "the determinant of the affine block"); !roots.empty())
+    fail(mp, "singular affine block " + locate_root(roots) + ": the upper-left " + bs +
+                 " block of M(t) must be non-singular on [0, 1] (its determinant is " + poly_text(d) + ")");
+  return mm;
+}
+
 Motion Reader::motion(const json& j, const std::string& ptr) const {
   require_object(j, ptr, "a motion");
   const std::vector<std::string> types = {"static", "matrix", "kinematic", "euler", "cycloidal"};
@@ -716,49 +353,12 @@ Motion Reader::motion(const json& j, const std::string& ptr) const {
     fail(tp, "motion type \"euler\" is for dim 3 only, but this scene has " + dims + " (allowed for " + dims + ": " +
                  allowed_here + ")");
   const std::string what = "a " + type + " motion";
-  const std::size_t n = std::size_t(dim_) + 1;
 
   if (type == "static") {
     check_keys(j, ptr, {"type"}, what);
     return StaticMotion{};
   }
-  if (type == "matrix") {
-    check_keys(j, ptr, {"type", "m"}, what);
-    const std::string mp = child(ptr, "m");
-    const json& m = member(j, ptr, "m", what);
-    const std::string sz = std::to_string(n) + "x" + std::to_string(n);
-    if (!m.is_array() || m.size() != n)
-      fail(mp, "the motion matrix m must be a " + sz + " array of rows of polynomials (" + dims + "), got " +
-                   (m.is_array() ? std::to_string(m.size()) + " rows" : type_name(m)));
-    MatrixMotion mm;
-    for (std::size_t r = 0; r < n; ++r) {
-      const std::string rp = child(mp, r);
-      const json& row = m[r];
-      if (!row.is_array() || row.size() != n)
-        fail(rp, "each row of the motion matrix must have " + std::to_string(n) + " polynomials (" + dims + "), got " +
-                     (row.is_array() ? std::to_string(row.size()) : type_name(row)));
-      std::vector<RPoly> prow;
-      for (std::size_t c = 0; c < n; ++c) prow.push_back(poly(row[c], child(rp, c)));
-      mm.m.push_back(std::move(prow));
-    }
-    const std::string last_row = dim_ == 2 ? "(0, 0, w(t))" : "(0, 0, 0, w(t))";
-    for (std::size_t c = 0; c + 1 < n; ++c)
-      if (!mm.m[n - 1][c].is_zero())
-        fail(child(child(mp, n - 1), c), "the last row of the motion matrix must be " + last_row +
-                                             ": this entry must be 0, got " + poly_text(mm.m[n - 1][c]));
-    check_nonvanishing(mm.m[n - 1][n - 1], child(child(mp, n - 1), n - 1), "w(t)",
-                       " (the last row of M(t) is " + last_row + ", and w(t) must not vanish on [0, 1])");
-    std::vector<std::vector<RPoly>> block(n - 1);
-    for (std::size_t r = 0; r + 1 < n; ++r) block[r].assign(mm.m[r].begin(), mm.m[r].end() - 1);
-    RPoly d = ring_det(block, RPoly());  // kernel/ring_determinant.hpp
-    const std::string bs = std::to_string(dim_) + "x" + std::to_string(dim_);
-    if (d.is_zero())
-      fail(mp, "singular affine block for every t: the upper-left " + bs + " block of M(t) has determinant 0");
-    if (auto roots = unit_roots(d, mp, "the determinant of the affine block"); !roots.empty())
-      fail(mp, "singular affine block " + locate_root(roots) + ": the upper-left " + bs +
-                   " block of M(t) must be non-singular on [0, 1] (its determinant is " + poly_text(d) + ")");
-    return mm;
-  }
+  if (type == "matrix") return matrix_motion(j, ptr, what);
   if (type == "kinematic") {
     check_keys(j, ptr, {"type", "d"}, what);
     const std::string dp = child(ptr, "d");
@@ -987,37 +587,6 @@ Scene Reader::scene(const json& root) {
   return s;
 }
 
-// "line L, column C: reason" for an error the JSON parser reported at byte `pos`.
-std::string json_error_text(const std::string& text, std::size_t pos, const std::string& what) {
-  if (pos > text.size()) pos = text.size();
-  std::size_t line = 1, line_start = 0;
-  for (std::size_t i = 0; i < pos; ++i)
-    if (text[i] == '\n') {
-      ++line;
-      line_start = i + 1;
-    }
-  std::size_t column = pos - line_start;
-  if (column == 0) column = 1;
-  // Prefer the parser's own "at line L, column C" when its message has one.
-  if (auto k = what.find(" at line "); k != std::string::npos) {
-    unsigned long l = 0, c = 0;
-    if (std::sscanf(what.c_str() + k, " at line %lu, column %lu", &l, &c) == 2) {
-      line = l;
-      column = c;
-    }
-  }
-  std::string reason = what;
-  if (auto k = reason.find("] "); k != std::string::npos && reason.rfind("[json.exception.", 0) == 0)
-    reason = reason.substr(k + 2);
-  if (reason.rfind("parse error", 0) == 0)
-    if (auto k = reason.find(": "); k != std::string::npos) reason = reason.substr(k + 2);
-  reason = shorten_digits(reason);
-  if (reason.size() > 300) reason = reason.substr(0, 300) + "...";
-  if (reason.find("number overflow") != std::string::npos)
-    reason += " (write large numbers as strings, e.g. \"1e400\")";
-  return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": malformed JSON: " + reason;
-}
-
 }  // namespace
 
 Answer answer_from_json(const json& j, const std::string& file_label, const std::string& place) {
@@ -1036,53 +605,11 @@ Instant instant_from_json(const json& j, const std::string& file_label, const st
   return r.instant(j, place);
 }
 
-namespace {
-// One strict parse: the DOM with duplicate keys and over-deep nesting refused.
-// Syntax errors always throw; structure errors (duplicate key, depth) throw
-// unless `structure_error` is given, which then receives "PLACE: what".
-void parse_dom(const std::string& json_text, const std::string& file_label, DomBuilder& b,
-               std::string* structure_error) {
-  if (json_text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw SceneError(file_label +
-                     ": line 1, column 1: malformed JSON: the file is empty or blank (expected a JSON object)");
-  if (auto nul = json_text.find('\0'); nul != std::string::npos) {
-    std::size_t line = 1 + std::size_t(std::count(json_text.begin(), json_text.begin() + long(nul), '\n'));
-    throw SceneError(file_label + ": line " + std::to_string(line) + ", byte " + std::to_string(nul + 1) +
-                     ": malformed JSON: a NUL byte: this is a binary file, not a JSON text");
-  }
-  bool ok = false;
-  try {
-    ok = json::sax_parse(json_text, &b);
-  } catch (const std::exception& e) {
-    throw SceneError(file_label + ": " + json_error_text(json_text, json_text.size(), e.what()));
-  }
-  if (!b.error_what.empty()) {
-    const std::string what = place_text(b.error_place) + ": " + b.error_what;
-    if (!structure_error) throw SceneError(file_label + ": " + what);
-    *structure_error = what;
-    return;
-  }
-  if (b.json_error || !ok)
-    throw SceneError(file_label + ": " + json_error_text(json_text, b.error_byte, b.json_error_what));
-}
-}  // namespace
-
-nlohmann::json parse_json_document(const std::string& json_text, const std::string& file_label,
-                                   std::string* structure_error) {
-  DomBuilder b;
-  parse_dom(json_text, file_label, b, structure_error);
-  return structure_error && !structure_error->empty() ? json() : std::move(b.root);
-}
-
 Scene parse_scene(const std::string& json_text, const std::string& file_label) {
-  if (json_text.size() > input_limits().max_file_bytes)
-    throw SceneError(file_label + ": " + std::to_string(json_text.size()) + " bytes, beyond the input limit of " +
-                     std::to_string(input_limits().max_file_bytes) + " bytes (--max-file-bytes)");
-  DomBuilder b;
-  parse_dom(json_text, file_label, b, nullptr);
-  Reader r(file_label, &b.float_text);
+  StrictJson doc = parse_strict_json(json_text, file_label);
+  Reader r(file_label, &doc.raw_numbers);
   try {
-    Scene s = r.scene(b.root);
+    Scene s = r.scene(doc.root);
     s.source_text = json_text;  // certify needs the scene's own JSON (api/certify.hpp)
     return s;
   } catch (const SceneError&) {
@@ -1092,14 +619,6 @@ Scene parse_scene(const std::string& json_text, const std::string& file_label) {
   }
 }
 
-StrictJson parse_strict_json(const std::string& json_text, const std::string& file_label) {
-  if (json_text.size() > input_limits().max_file_bytes)
-    throw SceneError(file_label + ": " + std::to_string(json_text.size()) + " bytes, beyond the input limit of " +
-                     std::to_string(input_limits().max_file_bytes) + " bytes (--max-file-bytes)");
-  DomBuilder b;
-  parse_dom(json_text, file_label, b, nullptr);
-  return StrictJson{std::move(b.root), std::move(b.float_text)};
-}
 Rational json_rational(const StrictJson& doc, const json& j, const std::string& file_label, const std::string& place) {
   return Reader(file_label, &doc.raw_numbers).number_at(j, place);
 }
@@ -1107,62 +626,7 @@ std::vector<std::vector<Rational>> json_shape(const StrictJson& doc, const json&
                                               const std::string& place, int dim) {
   return Reader(file_label, &doc.raw_numbers).shape_of_dim(j, place, dim);
 }
-std::string json_place(const std::string& pointer) { return place_text(pointer); }
-std::string json_quote(const std::string& text) { return quote(text); }
-std::string json_type_name(const json& j) { return type_name(j); }
 
 Scene read_scene_file(const std::string& path) { return parse_scene(read_file_bytes(path), path); }
-
-std::string read_file_bytes(const std::string& path) {
-  return read_bounded_file(path, input_limits().max_file_bytes, "the input limit", "--max-file-bytes");
-}
-
-std::string read_bounded_file(const std::string& path, std::size_t limit, const std::string& limit_text,
-                              const std::string& option) {
-  // Opened without blocking (a FIFO with no writer would wait for one), then
-  // only a regular file is read; "/dev/stdin" (what `-` reads) may be a pipe or
-  // a terminal and is read blocking, as the user asked.
-  const bool stdin_path = path == "/dev/stdin";
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | (stdin_path ? 0 : O_NONBLOCK));
-  if (fd < 0) throw SceneError(path + ": cannot read the file: " + std::strerror(errno));
-  struct FdCloser {
-    int fd;
-    ~FdCloser() { ::close(fd); }
-  } closer{fd};
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) throw SceneError(path + ": cannot read the file: " + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) throw SceneError(path + ": cannot read the file: it is a directory");
-  if (!stdin_path && !S_ISREG(st.st_mode)) {
-    const char* what = S_ISFIFO(st.st_mode)   ? "a FIFO (named pipe)"
-                       : S_ISCHR(st.st_mode)  ? "a character device"
-                       : S_ISBLK(st.st_mode)  ? "a block device"
-                       : S_ISSOCK(st.st_mode) ? "a socket"
-                                              : "not a regular file";
-    throw SceneError(path + ": cannot read the file: it is " + std::string(what) +
-                     ", not a regular file (to read a stream, give - and pipe it to standard input)");
-  }
-  if (!stdin_path) {
-    int fl = ::fcntl(fd, F_GETFL);
-    if (fl >= 0) ::fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
-  }
-  // At most limit + 1 bytes are read: a huge file or a stream such as a pipe
-  // from /dev/zero is refused without reading it whole.
-  const std::string too_large = path + ": larger than " + limit_text + " of " + std::to_string(limit) + " bytes" +
-                                (option.empty() ? "" : " (" + option + ")");
-  if (S_ISREG(st.st_mode) && std::uint64_t(st.st_size) > limit) throw SceneError(too_large);
-  std::string text;
-  std::vector<char> buf(1 << 16);
-  while (text.size() <= limit) {
-    ssize_t n = ::read(fd, buf.data(), buf.size());
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw SceneError(path + ": cannot read the file: " + std::strerror(errno));
-    }
-    if (n == 0) break;
-    text.append(buf.data(), std::size_t(n));
-  }
-  if (text.size() > limit) throw SceneError(too_large);
-  return text;
-}
 
 }  // namespace eccd

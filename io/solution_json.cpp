@@ -130,118 +130,112 @@ nlohmann::ordered_json stored_answer_of(const json& report) {
 
 nlohmann::ordered_json stored_answer_of(const Solution& s) { return stored_answer_of(solution_to_json(s)); }
 
-Solution solution_from_json(const json& j, const std::string& label) {
-  auto fail = [&](const std::string& place, const std::string& what) -> void {
+namespace {
+
+// A solution report being read: its JSON, its label for messages, and typed
+// accessors that throw SceneError "LABEL: PLACE: what" at the key's place.
+struct ReportFields {
+  const json& j;
+  const std::string& label;
+
+  [[noreturn]] void fail(const std::string& place, const std::string& what) const {
     throw SceneError(label + ": " + (place.empty() ? std::string("top level") : place) + ": " + what);
-  };
-  if (!j.is_object()) fail("", "expected a solution report (a JSON object)");
-  auto text = [&](const char* k, const std::string& def = "") {
+  }
+  std::string text(const char* k, const std::string& def = "") const {
     const json* v = j.contains(k) ? &j[k] : nullptr;
     if (!v || v->is_null()) return def;
     if (!v->is_string()) fail(std::string("/") + k, "expected a string");
     return v->get<std::string>();
-  };
-  auto number = [&](const char* k, double def) {
+  }
+  double number(const char* k, double def) const {
     if (!j.contains(k) || j[k].is_null()) return def;
     if (!j[k].is_number()) fail(std::string("/") + k, "expected a number");
     return j[k].get<double>();
-  };
-  auto status = [&](const json& v, const std::string& place) {
+  }
+  Status status(const json& v, const std::string& place) const {
     for (Status st : {Status::separate, Status::touching, Status::overlapping, Status::uncertain})
       if (v.is_string() && v.get<std::string>() == to_string(st)) return st;
     fail(place, "expected a status (separate, touching, overlapping, uncertain)");
-    return Status::uncertain;
-  };
-  auto list = [&](const char* k) {
+  }
+  json list(const char* k) const {
     if (!j.contains(k) || j[k].is_null()) return json::array();
     if (!j[k].is_array()) fail(std::string("/") + k, "expected an array");
     return j[k];
-  };
-  Solution s;
-  // The answer: the spec's keys (null lists of the 2D variants read as empty), then the extras.
+  }
+};
+
+// The report's answer: the spec's keys (null lists of the 2D variants read as
+// empty), then the extras (undecided stretches, contact points and normals).
+Answer answer_of_report(const ReportFields& r) {
   json ans = json::object();
-  ans["collides"] = j.contains("collides") ? j["collides"] : json(nullptr);
+  ans["collides"] = r.j.contains("collides") ? r.j["collides"] : json(nullptr);
   // collides null: unknown, which only an answer with undecided stretches may
   // say (solution_to_json); the typed answer then holds false (no interval).
-  if (ans["collides"].is_null() && j.contains("collides")) {
-    if (list("undecided").empty())
-      fail("/collides", "collides is null (unknown) but nothing is undecided: a complete answer says true or false");
+  if (ans["collides"].is_null() && r.j.contains("collides")) {
+    if (r.list("undecided").empty())
+      r.fail("/collides", "collides is null (unknown) but nothing is undecided: a complete answer says true or false");
     ans["collides"] = false;
   }
-  if (j.contains("s_intervals")) {  // independent motions
+  if (r.j.contains("s_intervals")) {  // independent motions
     // A run left undecided may have proved one side's intervals and none of
     // the other's: an empty list next to collides = true is then not the
     // contradiction it is in a stored answer (scene-format.md), so it is left
     // out rather than refused.
-    const bool undecided = !list("undecided").empty();
+    const bool undecided = !r.list("undecided").empty();
     for (const char* k : {"s_intervals", "t_intervals"})
-      if (!(undecided && list(k).empty())) ans[k] = list(k);
+      if (!(undecided && r.list(k).empty())) ans[k] = r.list(k);
   } else {
-    for (const char* k : {"intervals", "contacts", "contact_intervals"}) ans[k] = list(k);
-    ans["first_contact"] = j.contains("first_contact") ? j["first_contact"] : json(nullptr);
+    for (const char* k : {"intervals", "contacts", "contact_intervals"}) ans[k] = r.list(k);
+    ans["first_contact"] = r.j.contains("first_contact") ? r.j["first_contact"] : json(nullptr);
   }
-  s.answer = answer_from_json(ans, label, "");
-  const json und = list("undecided");
+  Answer answer = answer_from_json(ans, r.label, "");
+  const json und = r.list("undecided");
   for (std::size_t i = 0; i < und.size(); ++i)
-    s.answer.undecided.push_back(instant_from_json(und[i], label, "/undecided/" + std::to_string(i)));
-  const json pts = list("contact_points");
+    answer.undecided.push_back(instant_from_json(und[i], r.label, "/undecided/" + std::to_string(i)));
+  const json pts = r.list("contact_points");
   for (std::size_t i = 0; i < pts.size(); ++i) {
     ContactPoint p;
-    if (!pts[i].is_array()) fail("/contact_points/" + std::to_string(i), "expected an array of decimal strings");
+    if (!pts[i].is_array()) r.fail("/contact_points/" + std::to_string(i), "expected an array of decimal strings");
     for (const auto& x : pts[i]) {
-      if (!x.is_string()) fail("/contact_points/" + std::to_string(i), "expected an array of decimal strings");
+      if (!x.is_string()) r.fail("/contact_points/" + std::to_string(i), "expected an array of decimal strings");
       p.x.push_back(x.get<std::string>());
     }
-    s.answer.contact_points.push_back(p);
+    answer.contact_points.push_back(p);
   }
-  const json nrm = list("contact_normals");
-  for (std::size_t i = 0; i < nrm.size() && i < s.answer.contact_points.size(); ++i) {
-    if (!nrm[i].is_array()) fail("/contact_normals/" + std::to_string(i), "expected an array of decimal strings");
+  const json nrm = r.list("contact_normals");
+  for (std::size_t i = 0; i < nrm.size() && i < answer.contact_points.size(); ++i) {
+    if (!nrm[i].is_array()) r.fail("/contact_normals/" + std::to_string(i), "expected an array of decimal strings");
     for (const auto& x : nrm[i]) {
-      if (!x.is_string()) fail("/contact_normals/" + std::to_string(i), "expected an array of decimal strings");
-      s.answer.contact_points[i].normal.push_back(x.get<std::string>());
+      if (!x.is_string()) r.fail("/contact_normals/" + std::to_string(i), "expected an array of decimal strings");
+      answer.contact_points[i].normal.push_back(x.get<std::string>());
     }
   }
-  s.scene = text("scene");
-  s.file = text("file");
-  s.dim = int(number("dim", 2));
-  try {
-    s.arith = parse_arithmetic(text("arith", "exact"));
-    s.input = parse_input_mode(text("input", "prepared"));
-  } catch (const std::invalid_argument& e) {
-    fail("", e.what());
-  }
-  s.guard = text("guard");
-  if (!s.guard.empty() && s.guard != "none" && s.guard != "bound")
-    fail("/guard", "expected \"none\", \"bound\" or null, got \"" + s.guard + "\"");
-  s.basis = text("basis");
-  s.method = text("method");
-  for (Variant v : {Variant::answer, Variant::collides, Variant::first_contact, Variant::all_contacts})
-    if (text("variant", "answer") == variant_name(v)) s.variant = v;
-  s.certified = j.value("certified", false);
-  s.sampled = j.value("sampled", false);
-  if (j.contains("status_at_0")) s.status_at_0 = status(j["status_at_0"], "/status_at_0");
-  s.projection = text("projection", "discriminant");
-  s.projection_degree = int(number("projection_degree", -1));
-  s.projection_identically_zero = j.value("projection_identically_zero", false);
-  const json crit = list("critical_instants");
+  return answer;
+}
+
+// The critical instants and the cells between them.
+void read_timeline(const ReportFields& r, Solution& s) {
+  const json crit = r.list("critical_instants");
   for (std::size_t i = 0; i < crit.size(); ++i) {
     const std::string place = "/critical_instants/" + std::to_string(i);
-    if (!crit[i].is_object() || !crit[i].contains("t")) fail(place, "expected {\"t\", \"status\", \"multiplicity\"}");
-    s.critical.push_back({instant_from_json(crit[i]["t"], label, place + "/t"),
-                          status(crit[i].value("status", json()), place + "/status"),
+    if (!crit[i].is_object() || !crit[i].contains("t")) r.fail(place, "expected {\"t\", \"status\", \"multiplicity\"}");
+    s.critical.push_back({instant_from_json(crit[i]["t"], r.label, place + "/t"),
+                          r.status(crit[i].value("status", json()), place + "/status"),
                           crit[i].value("multiplicity", 0)});
   }
-  const json cells = list("cells");
+  const json cells = r.list("cells");
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const std::string place = "/cells/" + std::to_string(i);
-    if (!cells[i].is_object() || !cells[i].contains("sample")) fail(place, "expected {\"sample\", \"status\"}");
-    s.cells.push_back({instant_from_json(cells[i]["sample"], label, place + "/sample"),
-                       status(cells[i].value("status", json()), place + "/status")});
+    if (!cells[i].is_object() || !cells[i].contains("sample")) r.fail(place, "expected {\"sample\", \"status\"}");
+    s.cells.push_back({instant_from_json(cells[i]["sample"], r.label, place + "/sample"),
+                       r.status(cells[i].value("status", json()), place + "/status")});
   }
-  // A bracketed instant's value is the double nearest its bracket's mid-point
-  // (kernel/answer.hpp bracketed_instant), not its approx, which carries only
-  // the digits the bracket supports: a Solution read back equals the one written.
+}
+
+// A bracketed instant's value is the double nearest its bracket's mid-point
+// (kernel/answer.hpp bracketed_instant), not its approx, which carries only
+// the digits the bracket supports: a Solution read back equals the one written.
+void values_from_brackets(Solution& s) {
   auto from_bracket = [](Instant& i) {
     if (i.certified()) i.value = nearest_double(mpq_class((*i.lo + *i.hi) / 2));
   };
@@ -253,17 +247,50 @@ Solution solution_from_json(const json& j, const std::string& label) {
   for (auto& c : s.answer.contacts) from_bracket(c);
   for (auto& c : s.critical) from_bracket(c.t);
   for (auto& c : s.cells) from_bracket(c.sample);
-  for (const auto& r : list("undecided_reasons")) {
-    if (!r.is_string()) fail("/undecided_reasons", "expected strings");
-    s.undecided_reasons.push_back(r.get<std::string>());
+}
+
+}  // namespace
+
+Solution solution_from_json(const json& j, const std::string& label) {
+  const ReportFields r{j, label};
+  if (!j.is_object()) r.fail("", "expected a solution report (a JSON object)");
+  Solution s;
+  s.answer = answer_of_report(r);
+  s.scene = r.text("scene");
+  s.file = r.text("file");
+  s.dim = int(r.number("dim", 2));
+  try {
+    s.arith = parse_arithmetic(r.text("arith", "exact"));
+    s.input = parse_input_mode(r.text("input", "prepared"));
+  } catch (const std::invalid_argument& e) {
+    r.fail("", e.what());
+  }
+  s.guard = r.text("guard");
+  if (!s.guard.empty() && s.guard != "none" && s.guard != "bound")
+    r.fail("/guard", "expected \"none\", \"bound\" or null, got \"" + s.guard + "\"");
+  s.basis = r.text("basis");
+  s.method = r.text("method");
+  for (Variant v : {Variant::answer, Variant::collides, Variant::first_contact, Variant::all_contacts})
+    if (r.text("variant", "answer") == variant_name(v)) s.variant = v;
+  s.certified = j.value("certified", false);
+  s.sampled = j.value("sampled", false);
+  if (j.contains("status_at_0")) s.status_at_0 = r.status(j["status_at_0"], "/status_at_0");
+  s.projection = r.text("projection", "discriminant");
+  s.projection_degree = int(r.number("projection_degree", -1));
+  s.projection_identically_zero = j.value("projection_identically_zero", false);
+  read_timeline(r, s);
+  values_from_brackets(s);
+  for (const auto& reason : r.list("undecided_reasons")) {
+    if (!reason.is_string()) r.fail("/undecided_reasons", "expected strings");
+    s.undecided_reasons.push_back(reason.get<std::string>());
   }
   if (j.contains("work") && j["work"].is_object())
     for (const auto& [k, v] : j["work"].items())
       if (v.is_number_integer()) s.work.push_back({k, v.get<long>()});
-  s.time_ms = number("time_ms", 0);
-  s.setup_ms = number("setup_ms", 0);
-  s.decided_in = text("decided_in");
-  for (const auto& e : list("escalations"))
+  s.time_ms = r.number("time_ms", 0);
+  s.setup_ms = r.number("setup_ms", 0);
+  s.decided_in = r.text("decided_in");
+  for (const auto& e : r.list("escalations"))
     if (e.is_object())
       s.escalations.push_back({e.value("rung", std::string()), e.value("reason", std::string()),
                                e.value("spent_ms", 0.0), e.value("budget_ms", 0.0)});

@@ -413,6 +413,55 @@ def section_engines(data):
     return out
 
 
+def finding_near_miss(data, dim):
+    """The near-miss finding of one dimension: the smallest d each double pipeline still classifies correctly."""
+    nm = data.nearmiss_rows(dim)
+    if nm:
+        ds = sorted({r["d"] for r in nm}, reverse=True)
+        per_d = [scenes_of([r for r in nm if r["d"] == d]) for d in ds]
+        parts = []
+        for p in data.pipelines(dim, "double"):
+            res = smallest_correct_d([r for r in nm if r["pipeline"] == p])
+            if res is not None:
+                parts.append(f"{p} {res[1] if res[1] else 'none'}")
+        texts = {d: next(r["d_text"] for r in nm if r["d"] == d) for d in ds}
+        span = f"d from {texts[ds[0]]} down to {texts[ds[-1]]}" if len(ds) > 1 else f"d = {texts[ds[0]]}"
+        span_n = f"{min(per_d)}" if min(per_d) == max(per_d) else f"{min(per_d)}–{max(per_d)}"
+        caveat = f" ({span_n} scenes per d: too few for a firm claim)" if min(per_d) < 5 else ""
+        if parts:
+            return (f"- {dim}D near-miss ({scenes_of(nm)} scenes, {span}): smallest d that each double "
+                    f"pipeline still classifies correctly (with every larger d): " + "; ".join(parts)
+                    + f"{caveat}.")
+    return None
+
+
+def finding_mpfr(data, dim, minbits):
+    """The MPFR finding of one dimension: the smallest precision with no wrong, undecided or error answer."""
+    if dim in minbits:
+        parts = []
+        for grp, by_deg in minbits[dim].items():
+            items = []
+            by_bits = data.mpfr_groups(dim)[grp]
+            for deg, b in sorted(by_deg.items()):
+                n = scenes_of(data.sel(dim=dim, degree=deg))
+                notes = [f"{n} scenes, too few"] if n < 5 else []
+                if not isinstance(b, int):  # say which scenes still fail at the top precision
+                    top = max(bb for bb in by_bits if data.sel(dim=dim, degree=deg, pipeline=by_bits[bb]))
+                    bad = [r for r in data.sel(dim=dim, degree=deg, pipeline=by_bits[top])
+                           if not is_clean(r) and r["family"] not in ISOLATED_CONTACT]
+                    fams = {}
+                    for r in bad:
+                        fams[r["family"]] = fams.get(r["family"], 0) + 1
+                    notes.append(f"at {top} bits " + ", ".join(f"{c} {f}" for f, c in fams.items())
+                                 + f" scene{'s' if len(bad) != 1 else ''} still fail{'s' if len(bad) == 1 else ''}")
+                items.append(f"degree {deg}: {fmt_bits(b)}" + (f" ({'; '.join(notes)})" if notes else ""))
+            parts.append(f"{group_name(*grp)} — " + ", ".join(items))
+        tested = sorted({b for g in data.mpfr_groups(dim).values() for b in g})
+        return (f"- {dim}D smallest MPFR precision with no misclassification, undecided or error (tested "
+                f"{', '.join(map(str, tested))} bits; touch and graze scenes counted apart, see {T_MPFR_FAM}): " + "; ".join(parts) + ".")
+    return None
+
+
 def section_findings(data, minbits):
     out = ["## Findings", ""]
     for dim in data.dims:
@@ -446,47 +495,9 @@ def section_findings(data, minbits):
                                + ", ".join(f"{fmt_err(v)} for {p}" for p, v in meds)
                                + f" (largest {hi[0]}{ratio}).")
                     break
-        # near-miss
-        nm = data.nearmiss_rows(dim)
-        if nm:
-            ds = sorted({r["d"] for r in nm}, reverse=True)
-            per_d = [scenes_of([r for r in nm if r["d"] == d]) for d in ds]
-            parts = []
-            for p in data.pipelines(dim, "double"):
-                res = smallest_correct_d([r for r in nm if r["pipeline"] == p])
-                if res is not None:
-                    parts.append(f"{p} {res[1] if res[1] else 'none'}")
-            texts = {d: next(r["d_text"] for r in nm if r["d"] == d) for d in ds}
-            span = f"d from {texts[ds[0]]} down to {texts[ds[-1]]}" if len(ds) > 1 else f"d = {texts[ds[0]]}"
-            span_n = f"{min(per_d)}" if min(per_d) == max(per_d) else f"{min(per_d)}–{max(per_d)}"
-            caveat = f" ({span_n} scenes per d: too few for a firm claim)" if min(per_d) < 5 else ""
-            if parts:
-                out.append(f"- {dim}D near-miss ({scenes_of(nm)} scenes, {span}): smallest d that each double "
-                           f"pipeline still classifies correctly (with every larger d): " + "; ".join(parts)
-                           + f"{caveat}.")
-        # MPFR
-        if dim in minbits:
-            parts = []
-            for grp, by_deg in minbits[dim].items():
-                items = []
-                by_bits = data.mpfr_groups(dim)[grp]
-                for deg, b in sorted(by_deg.items()):
-                    n = scenes_of(data.sel(dim=dim, degree=deg))
-                    notes = [f"{n} scenes, too few"] if n < 5 else []
-                    if not isinstance(b, int):  # say which scenes still fail at the top precision
-                        top = max(bb for bb in by_bits if data.sel(dim=dim, degree=deg, pipeline=by_bits[bb]))
-                        bad = [r for r in data.sel(dim=dim, degree=deg, pipeline=by_bits[top])
-                               if not is_clean(r) and r["family"] not in ISOLATED_CONTACT]
-                        fams = {}
-                        for r in bad:
-                            fams[r["family"]] = fams.get(r["family"], 0) + 1
-                        notes.append(f"at {top} bits " + ", ".join(f"{c} {f}" for f, c in fams.items())
-                                     + f" scene{'s' if len(bad) != 1 else ''} still fail{'s' if len(bad) == 1 else ''}")
-                    items.append(f"degree {deg}: {fmt_bits(b)}" + (f" ({'; '.join(notes)})" if notes else ""))
-                parts.append(f"{group_name(*grp)} — " + ", ".join(items))
-            tested = sorted({b for g in data.mpfr_groups(dim).values() for b in g})
-            out.append(f"- {dim}D smallest MPFR precision with no misclassification, undecided or error (tested "
-                       f"{', '.join(map(str, tested))} bits; touch and graze scenes counted apart, see {T_MPFR_FAM}): " + "; ".join(parts) + ".")
+        for line in (finding_near_miss(data, dim), finding_mpfr(data, dim, minbits)):
+            if line is not None:
+                out.append(line)
         td = touch_detection(data, dim)
         if td:
             items = [f"{p} {d}/{n}" for p, (d, n) in td.items()]
