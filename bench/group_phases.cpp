@@ -3,6 +3,18 @@
 
 namespace eccd_bench::groups {
 
+// P = 9g3g0 - g2g1 and D = g2² - 3g3g1 (003 section VI-B) built by the policy, as cd_disc builds them.
+template <class Policy, class G>
+auto build_P_D(Policy& pol, const G& g) {
+  auto P = build_cubic(pol, g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
+    return double_root_numerator(g3, g2, g1, g0);
+  });
+  auto D = build_cubic(pol, g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) {
+    return double_root_denominator(g3, g2, g1);
+  });
+  return std::make_pair(std::move(P), std::move(D));
+}
+
 template <class T, class Policy>
 void add_phases_2d(const std::string& grp, Lazy<Scene2D>* sc, Variant var, std::function<Policy()> make_pol,
                    std::function<T()> make_like) {
@@ -18,12 +30,7 @@ void add_phases_2d(const std::string& grp, Lazy<Scene2D>* sc, Variant var, std::
     In x{to_arithmetic<T, 3>(s.p, make_like()), {}, {}, {}, {}, {}};
     x.g = characteristic_coefficients<T, 3>(moving_quadric<T, 3>(x.m.qa, x.m.na), moving_quadric<T, 3>(x.m.qb, x.m.nb));
     x.delta = discriminant_of(x.g, pol);
-    x.P = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
-      return double_root_numerator(g3, g2, g1, g0);
-    });
-    x.D = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) {
-      return double_root_denominator(g3, g2, g1);
-    });
+    std::tie(x.P, x.D) = build_P_D(pol, x.g);
     x.roots = pol.roots(x.delta, false);
     return x;
   });
@@ -69,17 +76,7 @@ void add_phases_2d(const std::string& grp, Lazy<Scene2D>* sc, Variant var, std::
         const In& x = in->get();
         Policy pol = make_pol();
         timed(
-            st, grp + "/4 P, D build",
-            [&] {
-              auto P = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto& g0) {
-                return double_root_numerator(g3, g2, g1, g0);
-              });
-              auto D = build_cubic(pol, x.g, [](const auto& g3, const auto& g2, const auto& g1, const auto&) {
-                return double_root_denominator(g3, g2, g1);
-              });
-              return std::make_pair(std::move(P), std::move(D));
-            },
-            none);
+            st, grp + "/4 P, D build", [&] { return build_P_D(pol, x.g); }, none);
       });
   row(grp, "5 roots of Δ", false, Cost::slow, "policy.roots(Δ)", [=](benchmark::State& st) {
     const In& x = in->get();

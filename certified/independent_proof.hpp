@@ -303,6 +303,29 @@ class EndProver {
   const IndependentProofOptions& opt_;
   std::array<std::optional<TriBern<I>>, 2> quotients_;  // edge_quotient on t = 0 and t = 1, where F_t vanishes there
 
+  // X <- K(X) ∩ X, at most 12 times, keeps the unique zero; each box joins the proof's chain. False if a box
+  // empties, which cannot happen for a proved zero (then nothing is claimed).
+  bool tighten(const System& sys, Box& Y, EndProof& r) {
+    r.chain_lo = {Y.lo};
+    r.chain_hi = {Y.hi};
+    for (int it = 0; it < 12; ++it) {
+      Box K2;
+      krawczyk(nets_, sys, Y, K2);
+      if (K2.lo.size() != Y.lo.size()) break;  // not computable (an infinite end): keep Y
+      bool ok = true;
+      for (std::size_t v = 0; v < Y.lo.size(); ++v) {
+        if (K2.lo[v] > Y.lo[v]) Y.lo[v] = K2.lo[v];
+        if (K2.hi[v] < Y.hi[v]) Y.hi[v] = K2.hi[v];
+        ok = ok && Y.lo[v] <= Y.hi[v];
+      }
+      if (!ok) return false;
+      r.chain_lo.push_back(Y.lo);
+      r.chain_hi.push_back(Y.hi);
+      if (Y.hi[1] - Y.lo[1] < mpq_class(1, mpz_class(1) << 100)) break;
+    }
+    return true;
+  }
+
   EndProof prove_at(const System& sys, const std::array<double, 3>& x, const mpq_class& lo, const mpq_class& hi,
                     const std::string& var) {
     EndProof r;
@@ -369,25 +392,9 @@ class EndProver {
         continue;
       }
       // tighten: X <- K(X) ∩ X keeps the unique zero
-      Box Y = X;
       r.system = sys.kind == "free" || !sys.fixed_t ? sys.kind : sys.kind.substr(4);  // "fold", "free", "0", "1"
-      r.chain_lo = {X.lo};
-      r.chain_hi = {X.hi};
-      for (int it = 0; it < 12; ++it) {
-        Box K2;
-        krawczyk(nets_, sys, Y, K2);
-        if (K2.lo.size() != Y.lo.size()) break;  // not computable (an infinite end): keep Y
-        bool ok = true;
-        for (std::size_t v = 0; v < Y.lo.size(); ++v) {
-          if (K2.lo[v] > Y.lo[v]) Y.lo[v] = K2.lo[v];
-          if (K2.hi[v] < Y.hi[v]) Y.hi[v] = K2.hi[v];
-          ok = ok && Y.lo[v] <= Y.hi[v];
-        }
-        if (!ok) return r;  // cannot happen for a proved zero: then nothing is claimed
-        r.chain_lo.push_back(Y.lo);
-        r.chain_hi.push_back(Y.hi);
-        if (Y.hi[1] - Y.lo[1] < mpq_class(1, mpz_class(1) << 100)) break;
-      }
+      Box Y = X;
+      if (!tighten(sys, Y, r)) return r;
       r.lo = std::max(lo, Y.lo[1]);
       r.hi = std::min(hi, Y.hi[1]);
       if (r.lo > r.hi) {
@@ -440,6 +447,19 @@ class EndProver {
   }
 };
 
+// Neighbouring pieces of one status as one piece (examined only if both were).
+inline std::vector<Piece> merge_equal_neighbours(const std::vector<Piece>& pieces) {
+  std::vector<Piece> m;
+  for (const auto& p : pieces)
+    if (!m.empty() && m.back().status == p.status) {
+      m.back().hi = p.hi;
+      m.back().examined = m.back().examined && p.examined;
+    } else {
+      m.push_back(p);
+    }
+  return m;
+}
+
 // One projection (axis 1 of F) with proved ends; `var` is "s" or "t". The
 // localisation runs on FL (the same exact net enclosed in L: Interval or MpfiInterval).
 template <class L>
@@ -454,15 +474,7 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
   tests += proj.tests;
   IndependentProjectionRecord& rec = std::string(var) == "s" ? res.s_record : res.t_record;
   if (opt.record) rec.pieces = pieces;
-  // merge equal neighbours
-  std::vector<Piece> m;
-  for (auto& p : pieces)
-    if (!m.empty() && m.back().status == p.status) {
-      m.back().hi = p.hi;
-      m.back().examined = m.back().examined && p.examined;
-    } else {
-      m.push_back(p);
-    }
+  const std::vector<Piece> m = merge_equal_neighbours(pieces);
   Nets nets(F, opt.bits);
   EndProver prover(nets, opt, {edge_quotient(exact, 0, opt.bits), edge_quotient(exact, 1, opt.bits)});
   const std::string v = var;

@@ -169,6 +169,34 @@ class CycloidalIsolator {
   bool hit_ = false;
 };
 
+// The last step of cycloidal_cd_disc: a reason for each stretch whose Δ sign
+// was not proved (and for a work bound), then the answer cut to the variant.
+template <class T>
+void cycloidal_reasons_and_variant(PipelineResult<T>& res, const std::vector<CycloidalCritical>& crit,
+                                   bool work_bound_hit, Variant variant) {
+  Answer& ans = res.answer;
+  for (auto& c : crit) {
+    if (c.simple) continue;
+    char eps[32];
+    std::snprintf(eps, sizeof eps, "%.3g", c.eps);
+    res.undecided_reasons.push_back("Δ has no proved sign on [" + decimal_string(c.lo, 25) + ", " +
+                                    decimal_string(c.hi, 25) + "] (|Δ| <= " + eps +
+                                    " there): a touch or near miss within that bound, or close roots; "
+                                    "nothing is claimed there");
+  }
+  if (work_bound_hit) res.undecided_reasons.push_back("cycloidal root isolation: work bound reached (cells)");
+  if (!ans.undecided.empty() && res.undecided_reasons.empty())
+    res.undecided_reasons.push_back("a sign too close to zero to decide in this arithmetic");
+  if (variant == Variant::collides || variant == Variant::first_contact) {
+    ans.intervals.clear();
+    ans.contacts.clear();
+    ans.contact_points.clear();
+    ans.contact_intervals.clear();
+  } else if (variant == Variant::all_contacts) {
+    ans.intervals.clear();
+  }
+}
+
 template <class T>
 PipelineResult<T> cycloidal_cd_disc(const CycloidalPair<T>& pair, const T& like, const CycloidalOptions& o,
                                     Variant variant = Variant::answer) {
@@ -251,26 +279,7 @@ PipelineResult<T> cycloidal_cd_disc(const CycloidalPair<T>& pair, const T& like,
     ans.contact_points.push_back(
         contact_point(toc(cycloidal_quadric_at<T>(pair.a, tt)), toc(cycloidal_quadric_at<T>(pair.b, tt)), gp, tt));
   });
-  for (auto& c : crit) {
-    if (c.simple) continue;
-    char eps[32];
-    std::snprintf(eps, sizeof eps, "%.3g", c.eps);
-    res.undecided_reasons.push_back("Δ has no proved sign on [" + decimal_string(c.lo, 25) + ", " +
-                                    decimal_string(c.hi, 25) + "] (|Δ| <= " + eps +
-                                    " there): a touch or near miss within that bound, or close roots; "
-                                    "nothing is claimed there");
-  }
-  if (iso.work_bound_hit()) res.undecided_reasons.push_back("cycloidal root isolation: work bound reached (cells)");
-  if (!ans.undecided.empty() && res.undecided_reasons.empty())
-    res.undecided_reasons.push_back("a sign too close to zero to decide in this arithmetic");
-  if (variant == Variant::collides || variant == Variant::first_contact) {
-    ans.intervals.clear();
-    ans.contacts.clear();
-    ans.contact_points.clear();
-    ans.contact_intervals.clear();
-  } else if (variant == Variant::all_contacts) {
-    ans.intervals.clear();
-  }
+  cycloidal_reasons_and_variant(res, crit, iso.work_bound_hit(), variant);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }
