@@ -126,7 +126,8 @@ inline std::string decimal_with_places(const Rational& x, int k) {  // round(x 1
     if (d.size() <= std::size_t(k)) d = std::string(std::size_t(k) + 1 - d.size(), '0') + d;
     d.insert(d.size() - std::size_t(k), ".");
   }
-  return (neg ? "-" : "") + d;
+  std::string r = neg ? "-" : "";  // appended, not inserted: GCC 12's false -Wrestrict (bug 105329)
+  return r.append(d);
 }
 inline Rational decimal_value(const Rational& x, int k) {
   mpz_class p10;

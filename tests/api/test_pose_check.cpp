@@ -259,7 +259,7 @@ TEST_CASE(
             poses.push_back({{"position", {c(spacing * i), c(spacing * j), c(spacing * l)}},
                              {"orientation", {"1", Rational(jitter(gen), 100).get_str(), "0", "0"}}});
           }
-          bodies.push_back({{"name", "b" + std::to_string(id)},
+          bodies.push_back({{"name", std::string("b").append(std::to_string(id))},
                             {"shape", {{"semi_axes", {"1.2", "0.8", "0.7"}}}},
                             {"poses", poses}});
         }

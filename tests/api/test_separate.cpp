@@ -46,7 +46,7 @@ Mat rot3a() {  // (1/25)[[-15, 0, 20], [16, -15, 12], [12, 20, 9]]
 }
 Mat rot3b() { return {{Q(3, 5), Q(-4, 5), Q(0)}, {Q(4, 5), Q(3, 5), Q(0)}, {Q(0), Q(0), Q(1)}}; }
 
-std::string str(const Q& x) { return "\"" + x.get_str() + "\""; }
+std::string str(const Q& x) { return std::string("\"").append(x.get_str()).append("\""); }
 
 std::string motion_json(const Body& b) {
   const int d = int(b.axes.size());
@@ -60,7 +60,7 @@ std::string motion_json(const Body& b) {
       else if (j < d)
         m += str(b.R[i][j]);
       else
-        m += "[" + str(b.c0[i]) + ", " + str(b.v[i]) + "]";
+        m.append("[").append(str(b.c0[i])).append(", ").append(str(b.v[i])).append("]");
     }
     m += "]";
   }
@@ -70,7 +70,7 @@ std::string motion_json(const Body& b) {
 std::string scene_json(const Body& a, const Body& b, const std::string& name) {
   auto obj = [](const Body& x) {
     std::string s = "{\"shape\": {\"semi_axes\": [";
-    for (std::size_t i = 0; i < x.axes.size(); ++i) s += (i ? ", " : "") + str(x.axes[i]);
+    for (std::size_t i = 0; i < x.axes.size(); ++i) s.append(i ? ", " : "").append(str(x.axes[i]));
     return s + "]}, \"motion\": " + motion_json(x) + "}";
   };
   return "{\"format\": \"ellipse-ccd-scene/1\", \"name\": \"" + name + "\", \"dim\": " + std::to_string(a.axes.size()) +

@@ -102,14 +102,6 @@ void check_pieces(const BezierProofResult& r) {
   }
 }
 
-BezierProofResult prove_file(const std::string& rel, bool record = false, bool first_contact = false) {
-  Scene s = read_scene_file(kCases + rel);
-  BezierProofOptions o;
-  o.record = record;
-  o.first_contact = first_contact;
-  return prove_bezier(prepare_pair<4>(s), o);
-}
-
 }  // namespace
 
 TEST_CASE("whenever the Bézier proof decides a 3D scene of cases/, it gives the stored exact answer", "[bezier]") {
