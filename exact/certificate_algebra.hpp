@@ -124,7 +124,9 @@ inline std::string decimal_with_places(const Rational& x, int k) {  // round(x 1
   std::string d = mpz_class(abs(m)).get_str();
   if (k > 0) {
     if (d.size() <= std::size_t(k)) d = std::string(std::size_t(k) + 1 - d.size(), '0') + d;
-    d.insert(d.size() - std::size_t(k), ".");
+    const std::size_t head = d.size() - std::size_t(k);
+    std::string r = d.substr(0, head);  // appended, not inserted (GCC 12's false -Wrestrict)
+    d = r.append(".").append(d, head);
   }
   std::string r = neg ? "-" : "";  // appended, not inserted: GCC 12's false -Wrestrict (bug 105329)
   return r.append(d);
