@@ -4,6 +4,7 @@
 // exact signs of the values held (NaN: uncertain), and to_string's 17 digits
 // read back as the same double.
 #include "number/double_traits.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -13,26 +14,8 @@
 #include <string>
 
 using namespace eccd;
-
-namespace {
-
-// A random rational with numerator and denominator of about `bits` bits.
-mpq_class random_rational(std::mt19937_64& rng, int bits) {
-  mpz_class n = 0, d = 0;
-  for (int k = 0; k < bits; k += 30) {
-    n = (n << 30) + mpz_class(std::to_string(rng() & ((1u << 30) - 1)));
-    d = (d << 30) + mpz_class(std::to_string(rng() & ((1u << 30) - 1)));
-  }
-  if (d == 0) d = 1;
-  if (rng() & 1) n = -n;
-  mpq_class q(n, d);
-  q.canonicalize();
-  return q;
-}
-
-mpq_class abs_q(const mpq_class& q) { return q < 0 ? mpq_class(-q) : q; }
-
-}  // namespace
+using eccd::test::abs_q;
+using eccd::test::random_rational;
 
 TEST_CASE("scalar_traits<double>::from_rational is the nearest double on both paths", "[number][scalar_traits]") {
   std::mt19937_64 rng(37);

@@ -8,6 +8,7 @@
 // exact rational halves within their bounds.
 #include "kernel/trivariate_bernstein.hpp"
 #include "number/halving_step.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -18,34 +19,11 @@
 #include <vector>
 
 using namespace eccd;
+using eccd::test::exact_of;
 
 namespace {
 
 using BM = Bounded<Mpfr>;
-
-mpq_class exact_of(const Mpfr& x) {
-  mpz_class m;
-  const long e = long(mpfr_get_z_2exp(m.get_mpz_t(), x.get()));
-  mpq_class q(m);
-  if (e >= 0)
-    q *= mpq_class(mpz_class(1) << e);
-  else
-    q /= mpq_class(mpz_class(1) << -e);
-  return q;
-}
-
-mpq_class exact_of(long double e) {  // a long double bound as a rational, exactly (64-bit significand)
-  int ex = 0;
-  const long double f = std::frexp(e, &ex);  // e = f 2^ex, 1/2 <= f < 1
-  const mpz_class m(static_cast<unsigned long>(std::ldexp(f, 64)));
-  ex -= 64;
-  mpq_class q(m);
-  if (ex >= 0)
-    q *= mpq_class(mpz_class(1) << ex);
-  else
-    q /= mpq_class(mpz_class(1) << -ex);
-  return q;
-}
 
 bool same(const BM& a, const BM& b) {
   return a.value().precision() == b.value().precision() &&

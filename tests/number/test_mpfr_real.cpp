@@ -3,6 +3,7 @@
 // (|x - q| <= 2^-bits |q|), a result carries the larger precision of its
 // operands and a small constant adopts its partner's, NaN has no sign.
 #include "number/mpfr_real.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -10,37 +11,9 @@
 #include <string>
 
 using namespace eccd;
-
-namespace {
-
-mpq_class exact_of(const Mpfr& x) {
-  mpz_class m;
-  const long e = long(mpfr_get_z_2exp(m.get_mpz_t(), x.get()));
-  mpq_class q(m);
-  if (e >= 0)
-    q *= mpq_class(mpz_class(1) << e);
-  else
-    q /= mpq_class(mpz_class(1) << -e);
-  return q;
-}
-
-// A random rational with numerator and denominator of about `bits` bits.
-mpq_class random_rational(std::mt19937_64& rng, int bits) {
-  mpz_class n = 0, d = 0;
-  for (int k = 0; k < bits; k += 30) {
-    n = (n << 30) + mpz_class(std::to_string(rng() & ((1u << 30) - 1)));
-    d = (d << 30) + mpz_class(std::to_string(rng() & ((1u << 30) - 1)));
-  }
-  if (d == 0) d = 1;
-  if (rng() & 1) n = -n;
-  mpq_class q(n, d);
-  q.canonicalize();
-  return q;
-}
-
-mpq_class abs_q(const mpq_class& q) { return q < 0 ? mpq_class(-q) : q; }
-
-}  // namespace
+using eccd::test::abs_q;
+using eccd::test::exact_of;
+using eccd::test::random_rational;
 
 TEST_CASE("scalar_traits<Mpfr>: rounding to nearest at the value's precision, and precision that travels",
           "[number][scalar_traits][mpfr]") {

@@ -5,6 +5,7 @@
 // was and returns false; binary_exponent is frexp's exponent.
 #include "number/mpfr_real.hpp"
 #include "number/pow2_scaling.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -15,20 +16,10 @@
 #include <vector>
 
 using namespace eccd;
+using eccd::test::exact_of;
 
 namespace {
 
-mpq_class exact_of(const Mpfr& x) {
-  mpz_class m;
-  const long e = long(mpfr_get_z_2exp(m.get_mpz_t(), x.get()));
-  mpq_class q(m);
-  if (e >= 0)
-    q *= mpq_class(mpz_class(1) << e);
-  else
-    q /= mpq_class(mpz_class(1) << -e);
-  return q;
-}
-mpq_class exact_of(double x) { return mpq_class(x); }
 mpq_class pow2(long e) { return e >= 0 ? mpq_class(mpz_class(1) << e) : mpq_class(mpz_class(1), mpz_class(1) << -e); }
 
 template <class T>
