@@ -52,13 +52,13 @@ void register_solve_scene() {
           timed(
               st, grp + "/" + label, [&] { return solution_to_json(solve(sc, o)); },
               [](const json& j) {
-                json r{{"collides", j["collides"]},
-                       {"time_ms_inside", j["time_ms"]},
-                       {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
-                       {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
+                json out{{"collides", j["collides"]},
+                         {"time_ms_inside", j["time_ms"]},
+                         {"contacts", j["contacts"].is_array() ? j["contacts"].size() : 0},
+                         {"intervals", j["intervals"].is_array() ? j["intervals"].size() : 0}};
                 for (const char* k : {"escalated", "decided_in", "escalation_reason", "certified"})
-                  if (j.contains(k)) r[k] = j[k];
-                return r;
+                  if (j.contains(k)) out[k] = j[k];
+                return out;
               });
         });
   }
