@@ -224,3 +224,20 @@ TEST_CASE("verdict: JSON and text of agreeing, differing and failed verdicts", "
   g.agrees = true;
   CHECK(g.text() == "failed: degree 0 after rounding");
 }
+
+// An answer that leaves instants undecided claims nothing about `collides` where it proved no collision
+// (kernel/answer.hpp, collides_claim: nullopt, written null), so it cannot have a wrong `collides`. The
+// comparison (api/answer_difference.cpp, the `got.collides != ref.collides` test) compares the bool instead of
+// the claim, so a guarded run that is undecided everywhere is counted in wrongC and `eccd judge` says "wrong
+// collides" of an answer whose JSON says "collides": null. Expected to fail until that is changed.
+TEST_CASE("verdict: an undecided answer that claims nothing about collides is not a wrong collides",
+          "[compare][verdict][!mayfail]") {
+  const Answer ref = certified({{5, 5}});
+  Answer got = floating({});
+  got.undecided.push_back(dec(0.5));
+  REQUIRE_FALSE(collides_claim(got).has_value());  // the answer says "unknown"
+  const Verdict v = judge("double/power", got, ref, 1e-6);
+  CHECK_FALSE(v.agrees);
+  CHECK(v.undecided == 1);
+  CHECK_FALSE(v.wrong_collides);
+}
