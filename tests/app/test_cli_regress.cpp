@@ -9,8 +9,8 @@
 //    without a stored answer is skipped and said so; --json passed false;
 //  - a folder without scenes: exit 2 with the reason;
 //  - --floating (on a generated 2D colliding scene): one row per floating pipeline (each face, each input mode,
-//    each --mpfr-bits), and a row agrees on a scene iff it has no difference
-//    of any kind (all its counters zero);
+//    each --mpfr-bits), and a row with a counted difference (wrong collides,
+//    missed, false, ends off, undecided, error) never agrees;
 //  - --arith certified: every scene is decided somewhere (decided_in);
 //  - --certify --keep-certificates: an index of the certificates written, each
 //    of which `eccd check-certificate` accepts for its scene.
@@ -99,7 +99,8 @@ TEST_CASE("eccd regress: agreeing, differing and answerless scenes, text and JSO
   CHECK(none.err.find("no scene found") != std::string::npos);
 }
 
-TEST_CASE("eccd regress --floating: a row per pipeline, agreeing iff nothing differs", "[app][cli][cli-regress]") {
+TEST_CASE("eccd regress --floating: a row per pipeline, never agreeing with a difference counted",
+          "[app][cli][cli-regress]") {
   TempDir d;
   const std::string scene = "cases/generated/2d/2d-deg2-colliding-kinematic-4575131933740715.json";
   fs::copy_file(src(scene), d.path / "scene.json");
@@ -116,7 +117,9 @@ TEST_CASE("eccd regress --floating: a row per pipeline, agreeing iff nothing dif
     CHECK(p["scenes"] == 1);
     const int differences = p["wrong_collides"].get<int>() + p["missed"].get<int>() + p["false"].get<int>() +
                             p["endpoints_off"].get<int>() + p["undecided"].get<int>() + p["errors"].get<int>();
-    CHECK((p["agree"] == 1) == (differences == 0));
+    // A counted difference means no agreement (a first contact off alone is a difference no counter shows).
+    if (differences > 0) CHECK(p["agree"] == 0);
+    CHECK(p["agree"].get<int>() + p["errors"].get<int>() <= 1);
   }
   // Every 2D floating pipeline: three double bases and two MPFR bases at 64 bits, each as published and guarded.
   for (const char* base :
