@@ -8,7 +8,9 @@
 //    scene) all give that point and normal, "0" (never "-0") for the zero
 //    coordinates; a prepared pair handed in gives the same as none;
 //  - one point per contact, in order; an instant outside [0, 1] or without a
-//    value gets an empty point;
+//    value gets an empty point, and so does every contact of a floating run
+//    whose rounded scene overflows (a translation coefficient of 1e400 is no
+//    double), while MPFR, whose exponents reach further, still gives the point;
 //  - left as they are: a 2D scene, a scene without contacts, one whose points
 //    are there already, an independent-motions scene.
 #include "api/contact_points.hpp"
@@ -142,4 +144,28 @@ TEST_CASE("contact points: 2D, contact-free, already filled and independent scen
   Solution i = with_contacts("exact", {at_one_certified()});
   add_contact_points_3d(ind, i);
   CHECK(i.answer.contact_points.empty());
+}
+
+TEST_CASE("contact points: a floating run whose rounded scene overflows gives empty points", "[api][contact-points]") {
+  // b's centre (0, 5 - 2t, 1e400 (1 - t)): at t = 1 it is (0, 3, 0) and touches a's end (0, 2, 0) as above, but
+  // 1e400 rounds to infinity in double.
+  const std::string doc = R"({"format": "ellipse-ccd-scene/1", "name": "huge", "dim": 3,
+    "a": {"shape": {"semi_axes": ["1", "2", "3"]}, "motion": {"type": "static"}},
+    "b": {"shape": {"semi_axes": ["1", "1", "1"]}, "motion": {"type": "euler", "e": ["1", "0", "0", "0"],
+          "translation": ["0", ["5", "-2"], ["1e400", "-1e400"]], "translation_denominator": "1"}}})";
+  const Scene s = parse_scene(doc, "huge.json");
+  Solution d = with_contacts("double", {at_value(1.0), at_value(0.5)});
+  add_contact_points_3d(s, d);
+  REQUIRE(d.answer.contact_points.size() == 2);
+  for (const auto& cp : d.answer.contact_points) {
+    CHECK(cp.x.empty());
+    CHECK(cp.normal.empty());
+  }
+  Solution m = with_contacts("mpfr:128", {at_value(1.0)});
+  add_contact_points_3d(s, m);
+  REQUIRE(m.answer.contact_points.size() == 1);
+  check_point(m.answer.contact_points[0], {0, 2, 0}, {0, 1, 0}, 1e-6);
+  Solution e = with_contacts("exact", {at_one_certified()});
+  add_contact_points_3d(s, e);
+  check_point(e.answer.contact_points[0], {0, 2, 0}, {0, 1, 0}, 1e-15);
 }
