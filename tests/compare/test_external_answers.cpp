@@ -5,11 +5,16 @@
 //    everything else with std::invalid_argument saying what is wrong;
 //  - read_external_answer reads DIR/<scene name>.json: nullopt when there is
 //    no such regular file (or the name cannot be a file name); the answer in
-//    each form `eccd judge` reads (a bare answer, a scene file's "answer");
+//    each form `eccd judge` reads (a bare answer, a scene file's "answer", the
+//    report of `eccd solve --json`, which gives back the solved answer);
 //    "time_us" or "time_ms" (converted to µs; time_us first when both) as the
 //    engine's time, -1 without; a negative or non-numeric time, malformed
 //    JSON or a bad answer give an error row naming the file, never an answer.
 #include "compare/external_answers.hpp"
+
+#include "api/solve.hpp"
+#include "io/scene_reader.hpp"
+#include "io/solution_json.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -133,6 +138,23 @@ TEST_CASE("external answers: answer files are read with the engine's time", "[co
     INFO(a->error);
     REQUIRE(a->answer.has_value());
     CHECK(a->answer->intervals.size() == 1);
+  }
+  SECTION("the report of eccd solve --json, with a time") {
+    const Scene sc = read_scene_file(std::string(ECCD_SOURCE_DIR) + "/cases/paper003/example2.json");
+    const Solution sol = solve(sc);
+    nlohmann::json j = solution_to_json(sol);
+    j["time_ms"] = 0.5;
+    d.write("solved.json", j.dump());
+    const auto a = read_external_answer(e, "solved");
+    REQUIRE(a.has_value());
+    INFO(a->error);
+    REQUIRE(a->answer.has_value());
+    CHECK(a->time_us == 500);
+    CHECK(a->answer->collides == sol.answer.collides);
+    REQUIRE(a->answer->intervals.size() == sol.answer.intervals.size());
+    CHECK(*a->answer->intervals[0].first.lo == *sol.answer.intervals[0].first.lo);
+    CHECK(*a->answer->intervals[0].second.hi == *sol.answer.intervals[0].second.hi);
+    CHECK(a->answer->contacts.size() == sol.answer.contacts.size());
   }
   SECTION("bad times, malformed JSON and bad answers give an error naming the file, no answer") {
     std::string body = std::string(kBare);
