@@ -17,7 +17,9 @@
 //    of M_A, M_B, checked on hand-built motions (an euler motion with e of
 //    degree 1 and v of degree 2 has entries E v of degree 4);
 //  - run_bounded: in process or in a child, the same answer as solve(); a
-//    pipeline that throws gives `error` (= reason) and no solution;
+//    pipeline that throws gives `error` (= reason) and no solution; a run over
+//    its budget (1 µs of processor time) is timed out, "time budget ...";
+//  - run_scene: coefficient errors on the prepared rows only;
 //  - fill_row_from_run: a time-out is undecided with the wall time; an error
 //    is outcome error; an answer's time and input are the solution's;
 //  - run_scene: rows of external engines last, judged against the exact
@@ -468,4 +470,42 @@ TEST_CASE("harness: fcl_skipped counts the scenes with an exact row and no fcl/c
   CHECK(sk[0] == std::make_pair(std::string("fcl/ccd:10"), 2));   // b and c
   CHECK(sk[1] == std::make_pair(std::string("fcl/ccd:100"), 1));  // c
   CHECK(fcl_skipped({"fcl/ccd:10"}, {}).at(0).second == 0);
+}
+
+TEST_CASE("harness: coefficient errors only on prepared rows, and a run over its budget is undecided",
+          "[compare][harness]") {
+  const Scene s = colliding_2d();
+  HarnessOptions o = light();
+  o.inputs = {"rounded", "prepared"};
+  const auto rows = run_scene(s, scene_info(s, "generated"), o);
+  int prepared = 0, rounded = 0;
+  for (const auto& r : rows) {
+    if (r.arith != "double" && r.arith != "mpfr") continue;
+    INFO(r.pipeline);
+    if (r.input == "prepared") {
+      ++prepared;
+      CHECK(r.coef_err.has_value());
+      CHECK(r.coef_err_common.has_value());
+    } else {
+      ++rounded;
+      CHECK_FALSE(r.coef_err.has_value());
+      CHECK_FALSE(r.coef_err_common.has_value());
+    }
+  }
+  CHECK(prepared == 3);
+  CHECK(rounded == (solver_has_input_modes() ? 3 : 0));
+  // A budget of a microsecond of processor time: whether the deadline stops the run or the run returns after
+  // it, no answer is used and the reason says so.
+  SolveOptions opt;
+  opt.arith = parse_arithmetic("mpfr:256");
+  for (bool isolate : {false, true}) {
+    BoundedRun br = run_bounded(s, opt, 1e-6, isolate);
+    INFO(br.reason);
+    CHECK(br.timed_out);
+    CHECK(br.reason.rfind("time budget", 0) == 0);
+    CHECK(br.error.empty());
+    ResultRow row;
+    fill_row_from_run(row, std::move(br), solve(s).answer);
+    CHECK(row.m.outcome == "undecided");
+  }
 }
