@@ -17,9 +17,15 @@
 //  - pow10, number_text ("p/q", or an exact decimal under g_decimal_output),
 //    poly_json (power basis, the zero polynomial as ["0"]), bern_json;
 //  - motion_json and shape_json are read back by the scene reader as the same
-//    motion matrix and the quadric diag(1/alpha, -1) (up to a positive factor).
+//    motion matrix and the quadric diag(1/alpha, -1) (up to a positive factor);
+//  - the builders, judged by the exact static test (api/static_status.hpp,
+//    status_at) on the scene written from what they return: build_touch's pair
+//    touches at its t0 and is apart at t0 +- 1/64 (strict convexity: the
+//    collision set is {t0}); with the near-miss family (d = 10^-3) it is apart
+//    at t0 too; build_random's free pair is apart at every t = k/16.
 #include "compare/scene_building.hpp"
 
+#include "api/static_status.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/motion.hpp"
 
@@ -275,4 +281,62 @@ TEST_CASE("scene building: written motions and shapes read back as the same moti
         if (i != j) CHECK(Q[i][j] == 0);
     for (int i = 0; i < dim; ++i) CHECK(Q[i][i] * alpha[i] == f);
   }
+}
+
+namespace {
+Scene scene_of(const Built& b, int dim) {
+  nlohmann::ordered_json doc;
+  doc["format"] = "ellipse-ccd-scene/1";
+  doc["name"] = "built";
+  doc["dim"] = dim;
+  doc["a"] = {{"shape", shape_json(b.alpha_a)}, {"motion", motion_json(b.ma)}};
+  doc["b"] = {{"shape", shape_json(b.alpha_b)}, {"motion", motion_json(b.mb)}};
+  return parse_scene(doc.dump(), "built.json");
+}
+}  // namespace
+
+TEST_CASE("scene building: touch, near-miss and free builders, judged by the exact static test",
+          "[compare][scene-building]") {
+  int touches = 0, misses = 0, frees = 0;
+  for (int dim : {2, 3})
+    for (int degree : {2, 3}) {
+      GeneratorSpec sp;
+      sp.dim = dim;
+      sp.degree = degree;
+      sp.motion = dim == 2 ? "kinematic" : "euler";
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        INFO(dim << "D degree " << degree << " seed " << seed);
+        for (const char* family : {"touch", "near-miss", "free"}) {
+          sp.family = family;
+          sp.d_exponent = 3;
+          Rng r{seed * 1000 + std::uint64_t(dim * 10 + degree)};
+          Built b;
+          bool built = false;
+          for (int attempt = 0; attempt < 20 && !built; ++attempt) {
+            try {
+              b = sp.family == "free" ? build_random(r, sp) : build_touch(r, sp);
+              built = true;
+            } catch (const std::domain_error&) {}
+          }
+          REQUIRE(built);
+          const Scene s = scene_of(b, dim);
+          if (sp.family == "free") {
+            CHECK_FALSE(b.t0.has_value());
+            for (long k = 0; k <= 16; ++k) CHECK(status_at(s, rq(k, 16)) == Status::separate);
+            ++frees;
+            continue;
+          }
+          REQUIRE(b.t0.has_value());
+          const Rational t0 = *b.t0;
+          REQUIRE((t0 > 0 && t0 < 1));
+          CHECK(status_at(s, t0) == (sp.family == "touch" ? Status::touching : Status::separate));
+          for (const Rational& t : {Rational(t0 - rq(1, 64)), Rational(t0 + rq(1, 64))})
+            if (t >= 0 && t <= 1) CHECK(status_at(s, t) == Status::separate);
+          (sp.family == "touch" ? touches : misses)++;
+        }
+      }
+    }
+  CHECK(touches == 12);
+  CHECK(misses == 12);
+  CHECK(frees == 12);
 }
