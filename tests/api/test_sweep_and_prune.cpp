@@ -29,7 +29,7 @@ Pairs brute_force(const std::vector<SweepInterval>& box) {
 Pairs checked(const std::vector<SweepInterval>& box, std::size_t& examined) {
   examined = 12345;  // reset by the call
   Pairs got = sweep_and_prune(box, examined);
-  for (const auto& [i, j] : got) CHECK(i < j);
+  CHECK(std::all_of(got.begin(), got.end(), [](const auto& p) { return p.first < p.second; }));
   CHECK(examined == got.size());
   std::sort(got.begin(), got.end());
   CHECK(std::adjacent_find(got.begin(), got.end()) == got.end());
