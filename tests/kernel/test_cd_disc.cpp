@@ -18,7 +18,12 @@
 //     test from M(t) (its own 3x3 inverse, determinant and interpolation);
 //   - discriminant_of's Hessian form (4DE - P²)/3 against the classical cubic
 //     discriminant, over seeded random g (MPFR at 256 bits against mpq);
-//   - contact_point at a triple root (D = 0: no point), and collect_reasons.
+//   - contact_point at a triple root (D = 0: no point), and collect_reasons;
+//   - an oracle: for circles under cubic translations the collision set is
+//     where the centre distance is at most r1 + r2, decided exactly at 201
+//     instants against the exact answer's intervals and contacts;
+//   - with a running error bound (Bounded<double>), every decision on the
+//     passing circles is the exact one, and what is undecided has a reason.
 #include "exact/cd_disc_exact.hpp"
 #include "floating/cd_disc_floating.hpp"
 #include "io/scene_reader.hpp"
@@ -416,4 +421,86 @@ TEST_CASE("cd_disc's contact_point gives no point at a triple root, and collect_
     REQUIRE(r.undecided_reasons.size() == 1);
     CHECK(r.undecided_reasons[0].find("too close to zero") != std::string::npos);
   }
+}
+
+TEST_CASE("cd_disc's collision set for moving circles is where the centre distance is at most r1 + r2",
+          "[kernel][cd_disc]") {
+  // Two circles, A of radius r1 centred at (x(t), y(t)) (cubic polynomials), B of radius r2 at the origin:
+  // the disks meet iff x² + y² <= (r1 + r2)², decided exactly in mpq at the instants k/200. Every instant
+  // certainly inside an interval of the exact answer must satisfy it, every instant certainly outside all
+  // must not; each contact is a root of x² + y² - (r1 + r2)² (an external touch, not an internal tangency).
+  std::mt19937_64 rng(4345);
+  int inside = 0, outside = 0, contacts = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    const long r1 = 1 + long(rng() % 3), r2 = 1 + long(rng() % 4);
+    std::vector<long> cx(4), cy(4);
+    for (auto& c : cx) c = long(rng() % 13) - 6;
+    for (auto& c : cy) c = long(rng() % 9) - 4;
+    auto arr = [](const std::vector<long>& c) {
+      std::string s = "[";
+      for (std::size_t i = 0; i < c.size(); ++i) s += (i ? ", \"" : "\"") + std::to_string(c[i]) + "\"";
+      return s + "]";
+    };
+    auto axes = [](long r) { return "[\"" + std::to_string(r) + "\", \"" + std::to_string(r) + "\"]"; };
+    const Scene s = scene_of(translating(axes(r1), arr(cx), arr(cy)), translating(axes(r2), "\"0\"", "\"0\""));
+    const auto res = run_exact(s);
+    const Answer& a = res.answer;
+    auto gap = [&](const Rational& t) {  // x² + y² - (r1 + r2)²
+      Rational x = 0, y = 0;
+      for (int i = 3; i >= 0; --i) {
+        x = x * t + cx[i];
+        y = y * t + cy[i];
+      }
+      return Rational(x * x + y * y - Rational((r1 + r2) * (r1 + r2)));
+    };
+    INFO("trial " << trial);
+    CHECK(a.undecided.empty());
+    for (int k = 0; k <= 200; ++k) {
+      Rational t(k, 200);
+      t.canonicalize();
+      bool in = false, out = true;
+      for (const auto& [lo, hi] : a.intervals) {
+        if (*lo.hi <= t && t <= *hi.lo) in = true;
+        if (!(t < *lo.lo || t > *hi.hi)) out = false;
+      }
+      if (in) {
+        CHECK(gap(t) <= 0);
+        ++inside;
+      } else if (out) {
+        CHECK(gap(t) > 0);
+        ++outside;
+      }
+    }
+    for (const auto& c : a.contacts) {
+      CHECK(sgn(gap(*c.lo)) * sgn(gap(*c.hi)) <= 0);  // the bracket holds a root of the gap
+      ++contacts;
+    }
+    CHECK(collides_claim(a) == std::optional<bool>(!a.intervals.empty()));
+  }
+  CHECK(inside > 100);
+  CHECK(outside > 100);
+  CHECK(contacts > 5);
+}
+
+TEST_CASE("cd_disc with a running error bound claims only what the exact run says", "[kernel][cd_disc]") {
+  // The passing circles in Bounded<double> (the guard): Δ has a sixfold root at 1/2 that no bound resolves;
+  // whatever the run decides must be the exact answer (1/6 and 5/6 touches, overlap between), and what it
+  // leaves undecided carries a reason.
+  const auto pair =
+      to_arithmetic<Bounded<double>, H_2D>(prepare_pair<H_2D>(passing_circles()), Bounded<double>(1.0, 0));
+  FloatingPolicy<Bounded<double>> pol(Basis::bernstein, 53, Bounded<double>(1.0, 0));
+  const auto res = cd_disc(pair, pol);
+  const Answer& a = res.answer;
+  if (!a.undecided.empty()) CHECK_FALSE(res.undecided_reasons.empty());
+  CHECK(collides_claim(a) != std::optional<bool>(false));
+  for (const auto& c : a.contacts) {
+    const bool known = std::abs(c.value - 1.0 / 6) < 1e-6 || std::abs(c.value - 5.0 / 6) < 1e-6;
+    CHECK(known);
+  }
+  for (const auto& cell : res.cells) {
+    if (cell.status == Status::uncertain) continue;
+    const double t = cell.sample.value;  // separate outside [1/6, 5/6], overlapping inside
+    CHECK(cell.status == ((t < 1.0 / 6 || t > 5.0 / 6) ? Status::separate : Status::overlapping));
+  }
+  CHECK(res.status_at_0 == Status::separate);
 }
