@@ -73,7 +73,7 @@ TEST_CASE("ring_det over the rationals is the Leibniz sum", "[kernel][ring_deter
     CHECK(ring_det(a, Rational(0)) == want);
     singular += want == 0;
   }
-  CHECK(singular > 10);                      // the singular and sparse cases were reached
+  CHECK(singular > 10);  // the singular and sparse cases were reached
   const Mat zero_row = {{Rational(1), Rational(2)}, {Rational(0), Rational(0)}};
   CHECK(ring_det(zero_row, Rational(0)) == 0);  // no placement of the last row: the zero element
 }
