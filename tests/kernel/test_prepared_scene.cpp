@@ -17,10 +17,15 @@
 //     (NotRationalMotion), independent motions (IndependentMotionsRefused);
 //     parse_input_mode;
 //   - to_arithmetic (double: the nearest double of each rational) and
-//     to_arithmetic_bernstein (each entry's exact Bernstein form, rounded).
+//     to_arithmetic_bernstein (each entry's exact Bernstein form, rounded);
+//   - no status changes: on random kinematic scenes the static status from
+//     the prepared pencil equals the one from A = M⁻ᵀ Q M⁻¹ formed in mpq
+//     from the motion matrices, at rational instants.
 #include "exact/cd_disc_exact.hpp"
 #include "io/scene_reader.hpp"
 #include "kernel/cd_disc.hpp"
+#include "kernel/characteristic_polynomial.hpp"
+#include "kernel/contact_status.hpp"
 #include "kernel/prepared_scene.hpp"
 
 #include <catch2/catch.hpp>
@@ -278,4 +283,78 @@ TEST_CASE("to_arithmetic and to_arithmetic_bernstein round the prepared rational
       for (std::size_t k = 0; k < bb.b.size(); ++k)
         CHECK(bd.na[i][j].b[k] == scalar_traits<double>::from_rational(bb.b[k]));
     }
+}
+
+TEST_CASE("prepare_pair changes no status: the prepared pencil and M^-T Q M^-1 agree at rational instants",
+          "[kernel][prepared_scene]") {
+  // Random 2D kinematic motions (turning and translating, degree 2 and 4 matrices) with rational semi-axes:
+  // at each t = k/16 the static status from the prepared pair's f equals the one from A = M⁻ᵀ Q M⁻¹ formed
+  // here in mpq from motion_matrix (the scaling, the content division and the balancing multiply A and B by
+  // positive functions and constants only).
+  std::mt19937_64 rng(4346);
+  auto poly = [&](int deg) {
+    std::string s = "[";
+    for (int i = 0; i <= deg; ++i) s += (i ? ", \"" : "\"") + std::to_string(long(rng() % 9) - 4) + "\"";
+    return s + "]";
+  };
+  int compared = 0, separate = 0, overlapping = 0;
+  for (int trial = 0; trial < 16; ++trial) {
+    auto obj = [&](int deg) {
+      const std::string ax = "[\"" + std::to_string(1 + rng() % 4) + "/2\", \"" + std::to_string(1 + rng() % 3) + "\"]";
+      // d2 and d3 never both zero: d2 = 2 + t² > 0
+      return "{\"shape\": {\"semi_axes\": " + ax + "}, \"motion\": {\"type\": \"kinematic\", \"d\": [" + poly(deg) +
+             ", " + poly(deg) + ", [\"2\", \"0\", \"1\"], " + poly(1) + "]}}";
+    };
+    const Scene s = scene_text(obj(1 + trial % 2), obj(1));
+    const PreparedPair2 p = prepare_pair<H_2D>(s);
+    const auto A = moving_quadric<Rational, H_2D>(p.qa, p.na), B = moving_quadric<Rational, H_2D>(p.qb, p.nb);
+    const auto g = characteristic_coefficients<Rational, H_2D>(A, B);
+    auto raw = [&](const SceneObject& o, const Rational& t) {
+      const auto m = motion_matrix<Rational, H_2D>(o.motion, [](const Rational& x) { return x; });
+      Matrix<Rational, 3> mt{};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) mt[i][j] = m[i][j](t);
+      // M⁻¹ by cofactors over the determinant
+      const Rational det = mt[0][0] * (mt[1][1] * mt[2][2] - mt[1][2] * mt[2][1]) -
+                           mt[0][1] * (mt[1][0] * mt[2][2] - mt[1][2] * mt[2][0]) +
+                           mt[0][2] * (mt[1][0] * mt[2][1] - mt[1][1] * mt[2][0]);
+      Matrix<Rational, 3> inv{};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+          inv[i][j] = (mt[r0][c0] * mt[r1][c1] - mt[r0][c1] * mt[r1][c0]) / det;
+        }
+      Matrix<Rational, 3> a{};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l) a[i][j] += inv[k][i] * o.Q[k][l] * inv[l][j];
+      return a;
+    };
+    for (int k = 0; k <= 16; ++k) {
+      const Rational t = q(k, 16);
+      const Matrix<Rational, 3> a = raw(s.a, t), b = raw(s.b, t);
+      // f(λ) = det(λa - b) from its values at λ = 0..3
+      Rational v[4];
+      for (int l = 0; l < 4; ++l) {
+        Matrix<Rational, 3> m;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) m[i][j] = l * a[i][j] - b[i][j];
+        v[l] = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+      }
+      const Rational d1 = v[1] - v[0], d2 = v[2] - 2 * v[1] + v[0], d3 = v[3] - 3 * v[2] + 3 * v[1] - v[0];
+      const Status want =
+          cubic_contact_status(Rational(d3 / 6), Rational(d2 / 2 - d3 / 2), Rational(d1 - d2 / 2 + d3 / 3), v[0]);
+      const Status got = cubic_contact_status(g[3](t), g[2](t), g[1](t), g[0](t));
+      INFO("trial " << trial << " t = " << t);
+      CHECK(got == want);
+      separate += want == Status::separate;
+      overlapping += want == Status::overlapping;
+      ++compared;
+    }
+  }
+  CHECK(compared == 16 * 17);
+  CHECK(separate > 10);
+  CHECK(overlapping > 10);
 }
