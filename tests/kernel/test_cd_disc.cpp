@@ -203,6 +203,12 @@ TEST_CASE("cd_disc with Δ identically zero: nested circles never touch, circles
     CHECK(a.contact_intervals.empty());
     REQUIRE(a.first_contact);
     CHECK(*a.first_contact->hi == 0);
+    // variants 1 and 2: colliding from t = 0, first contact 0
+    const auto first = run_exact(scene_of(translating("[\"1\", \"1\"]", x, y), translating("[\"2\", \"2\"]", x, y)),
+                                 Variant::first_contact);
+    CHECK(first.answer.collides);
+    REQUIRE(first.answer.first_contact);
+    CHECK(*first.answer.first_contact->hi == 0);
   }
   {
     // Two unit circles at distance 2 moving together: f = -(λ - 1)(λ + 1)², a negative double root at every t.

@@ -140,6 +140,11 @@ TEST_CASE("cycloidal_cd_disc on 003 Example 1 reproduces the paper's roots, cont
   CHECK(res.critical[1].status == Status::overlapping);
   CHECK(res.critical[2].status == Status::overlapping);
   CHECK(res.critical[3].status == Status::touching);
+  // the cells: separate before the first contact and after the last, overlapping in between
+  REQUIRE(res.cells.size() == 5);
+  const Status cells[5] = {Status::separate, Status::overlapping, Status::overlapping, Status::overlapping,
+                           Status::separate};
+  for (int i = 0; i < 5; ++i) CHECK(res.cells[i].status == cells[i]);
   REQUIRE(a.contacts.size() == 2);
   REQUIRE(a.contact_points.size() == 2);
   CHECK(num(a.contact_points[0].x[0]) == Approx(-47.605).margin(5e-4));
