@@ -59,7 +59,11 @@ mpz_class binom(int n, int k) {
 template <class T>
 TriBern<T> to_net(const Mono3& p, int bits) {
   std::vector<mpq_class> c(std::size_t(p.n[0] + 1) * (p.n[1] + 1) * (p.n[2] + 1), mpq_class(0));
-  auto w = [](int i, int j, int n) { return mpq_class(binom(j, i), binom(n, i)); };
+  auto w = [](int i, int j, int n) {
+    mpq_class q(binom(j, i), binom(n, i));
+    q.canonicalize();  // gmpxx's (num, den) constructor does not
+    return q;
+  };
   auto idx = [&](int i, int j, int k) { return (std::size_t(i) * (p.n[1] + 1) + j) * (p.n[2] + 1) + k; };
   for (const auto& [e, v] : p.a)
     for (int j0 = e[0]; j0 <= p.n[0]; ++j0)

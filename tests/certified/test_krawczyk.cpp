@@ -75,7 +75,11 @@ TriBern<mpq_class> to_net(const Mono3& p) {
   TriBern<mpq_class> r;
   r.n = p.n;
   r.c.assign(std::size_t(p.n[0] + 1) * (p.n[1] + 1) * (p.n[2] + 1), mpq_class(0));
-  auto w = [](int i, int j, int n) { return mpq_class(binom(j, i), binom(n, i)); };
+  auto w = [](int i, int j, int n) {
+    mpq_class q(binom(j, i), binom(n, i));
+    q.canonicalize();  // gmpxx's (num, den) constructor does not
+    return q;
+  };
   for (const auto& [e, c] : p.a)
     for (int j0 = e[0]; j0 <= p.n[0]; ++j0)
       for (int j1 = e[1]; j1 <= p.n[1]; ++j1)

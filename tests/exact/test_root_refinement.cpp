@@ -46,7 +46,11 @@ mpq_class value(const IntPoly& f, const mpq_class& x) {
   return r;
 }
 
-mpq_class dy(const mpz_class& a, unsigned long k) { return mpq_class(a, mpz_class(1) << k); }
+mpq_class dy(const mpz_class& a, unsigned long k) {
+  mpq_class q(a, mpz_class(1) << k);
+  q.canonicalize();  // gmpxx's (num, den) constructor does not
+  return q;
+}
 
 int sgn_q(const mpq_class& q) { return sgn(q); }
 

@@ -43,7 +43,11 @@ std::vector<mpq_class> to_bern(const std::vector<mpq_class>& a) {
   const int n = int(a.size()) - 1;
   std::vector<mpq_class> b(a.size(), mpq_class(0));
   for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= j; ++i) b[j] += a[i] * mpq_class(binom(j, i), binom(n, i));
+    for (int i = 0; i <= j; ++i) {
+      mpq_class w(binom(j, i), binom(n, i));
+      w.canonicalize();  // gmpxx's (num, den) constructor does not
+      b[j] += a[i] * w;
+    }
   return b;
 }
 
