@@ -20,9 +20,18 @@
 //     signs of a quadratic), a 3 x 3 system F = F_u = F_s = 0 with coupling.
 //     Certified: exactly one zero in X, and it lies in K. Any filled K:
 //     every zero in X lies in K. Boxes with two zeros or none are never
-//     certified; a net with an unbounded coefficient is refused.
+//     certified; a net with an unbounded coefficient is refused;
+//   - the proofs' own use: F(u, s, t) of two unit discs on lines (A at
+//     (6, 6s - 3), B at (10t - 5, 0); kernel/trivariate_bernstein.hpp) and
+//     the end system F = F_u = 0 on the face t = 1, whose zeros are the
+//     touching instants s = (3 ± √3)/6 (centre distance 2 from B(1) = (5, 0))
+//     with u = 1/2 (the pair is symmetric under the point reflection that
+//     swaps the discs, checked exactly: F_u(1/2, s, 1) = 0); boxes around
+//     them are certified and K holds the exact zero.
 #include "certified/krawczyk.hpp"
 #include "compare/seeded_rng.hpp"
+#include "kernel/prepared_scene.hpp"
+#include "kernel/trivariate_bernstein.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -403,4 +412,54 @@ TEMPLATE_TEST_CASE("krawczyk on F = F_u = F_s = 0 in three unknowns", "[certifie
     }
   }
   CHECK(certified >= 50);  // most of the 75 boxes around a zero: the test is not vacuous
+}
+
+TEST_CASE("krawczyk certifies the touching ends of two discs on lines from the scene's F", "[certified][krawczyk]") {
+  auto disc = [](const Rational& x0, const Rational& dx, const Rational& y0, const Rational& dy) {
+    SceneObject o;
+    o.Q = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+    MatrixMotion m;
+    m.m.assign(3, std::vector<RPoly>(3));
+    for (int i = 0; i < 3; ++i) m.m[i][i] = RPoly::constant(Rational(1));
+    m.m[0][2] = RPoly(std::vector<Rational>{x0, dx});
+    m.m[1][2] = RPoly(std::vector<Rational>{y0, dy});
+    o.motion = m;
+    return o;
+  };
+  Scene sc;
+  sc.dim = 2;
+  sc.a = disc(6, 0, -3, 6);
+  sc.b = disc(-5, 10, 0, 0);
+  sc.independent = false;  // prepare_pair's shared preparation; F takes A's parameter as s and B's as t
+  const TriBern<Rational> F = independent_ellipsoid_function<Rational, 3>(
+      to_arithmetic_bernstein<Rational, 3>(prepare_pair<3>(sc), Rational(1)));
+  // the symmetry that puts the double root at u = 1/2, exactly
+  const TriBern<Rational> Fu = derivative(F, 0, Rational(0));
+  for (const Rational& s : {Rational(0), Rational(1, 5), Rational(2, 3), Rational(1)})
+    REQUIRE(Fu(Rational(1, 2), s, Rational(1)) == 0);
+  REQUIRE(sgn(F(Rational(1, 2), Rational(1, 2), Rational(1))) < 0);  // s = 1/2: overlapping at t = 1
+
+  Nets nets(enclose_net<MpfiInterval>(F, 200), 200);
+  const System sys{{{0, 0, 0}, {1, 0, 0}}, {0, 1}, Rational(1), "end t = 1"};
+  auto q = [](const mpq_class& s) -> mpq_class { return (6 * s - 3) * (6 * s - 3) - 3; };  // zero at the ends
+  for (bool upper : {false, true}) {
+    const mpq_class approx = upper ? mpq_class(7887, 10000) : mpq_class(2113, 10000);
+    const Box X{{mpq_class(49, 100), approx - mpq_class(1, 200)}, {mpq_class(51, 100), approx + mpq_class(1, 200)}};
+    Box K, Y = X;
+    // Krawczyk's iteration X <- K: each step certified again, each K holding the exact zero
+    for (int step = 0; step < 4; ++step) {
+      INFO("step " << step);
+      REQUIRE(krawczyk(nets, sys, Y, K));
+      CHECK(in_box(K, 0, mpq_class(1, 2)));
+      // s* in [K.lo, K.hi]: q changes sign there, on one side of 1/2
+      CHECK(sgn(q(K.lo[1])) == -sgn(q(K.hi[1])));
+      CHECK((upper ? K.lo[1] > mpq_class(1, 2) : K.hi[1] < mpq_class(1, 2)));
+      Y = K;
+    }
+    CHECK(K.hi[1] - K.lo[1] < mpq_class(1, 100000000));  // it converges (quadratically) onto the zero
+  }
+  // a box on the face around s = 1/2 (overlap, no touching zero) is not certified
+  Box K;
+  CHECK_FALSE(
+      krawczyk(nets, sys, Box{{mpq_class(45, 100), mpq_class(45, 100)}, {mpq_class(55, 100), mpq_class(55, 100)}}, K));
 }
