@@ -16,7 +16,9 @@
 //     square-free products; compare_root agrees with the known root;
 //   - constant_sign: a nonzero answer is the sign of Q on the whole closed
 //     bracket (Q's roots are known: none inside, sign at the mid-point), and
-//     brackets far from Q's roots get an answer.
+//     brackets far from Q's roots get an answer;
+//   - a passed deadline (kernel/budget.hpp) stops init and refine with
+//     BudgetExhausted, leaving a bracket that still isolates the root.
 #include "exact/root_refinement.hpp"
 #include "compare/seeded_rng.hpp"
 
@@ -279,4 +281,22 @@ TEST_CASE("root_refinement constant_sign proves only true signs", "[exact][root_
   // a root at an end of the closed bracket: never a sign
   CHECK(constant_sign(IntPoly{-1, 1}, d) == 0);
   CHECK(constant_sign(IntPoly{0, 1}, d) == 0);
+}
+
+TEST_CASE("root_refinement stops at a passed deadline with BudgetExhausted", "[exact][root_refinement]") {
+  const IntPoly f = mul(IntPoly{-2, 0, 1}, IntPoly{-1, 3});  // roots ±√2, 1/3
+  Refiner R(f);
+  Dyadic d;
+  std::optional<Rational> exact;
+  REQUIRE(R.init(mpq_class(1), mpq_class(2), d, exact));
+  {
+    ScopedDeadline gone(1e-9);
+    while (!deadline_passed()) {}
+    CHECK_THROWS_AS(R.refine(d, 100, exact), BudgetExhausted);
+    Dyadic d2;
+    CHECK_THROWS_AS(R.init(mpq_class(11, 10), mpq_class(19, 10), d2, exact), BudgetExhausted);
+  }
+  // the bracket is still an isolating bracket of √2 and refines once the deadline is gone
+  REQUIRE(R.refine(d, 100, exact));
+  check_bracket(f, d, 100, [](const mpq_class& x) { return x < 0 || x * x < 2; });
 }
