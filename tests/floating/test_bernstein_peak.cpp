@@ -15,6 +15,8 @@
 //     at 200 bits;
 //   - a positive maximum yields a witness with exact f(u) > 0 (what the static
 //     test needs: any u with F(u) > 0 proves separation);
+//   - the witness of a clear interior maximum at a simple critical point r*
+//     lies within 16 · 2^-(bits/2 + 6) of r* (the header's location claim);
 //   - degrees 0 and 1 (no interior critical point), a maximum at an end, a
 //     double root of f' (an inflection: no extremum there).
 #include "floating/bernstein_peak.hpp"
@@ -26,6 +28,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <optional>
 #include <vector>
 
 using namespace eccd;
@@ -127,6 +131,23 @@ void check_peak(const std::vector<mpq_class>& mono, const std::vector<mpq_class>
   CHECK(best - fu >= 0);
   CHECK(best - fu <= Kind<T>::tol());
   if (best > mpq_class(1, 1000)) CHECK(fu > 0);
+  // A clear interior maximum at a simple root r* of f' (every other candidate lower by more than 1/1000, the
+  // neighbouring roots of f' more than 1/100 away): the witness lies within 2^-(bits/2 + 6) of r* up to a
+  // factor 16 (the header: located to 2^-(bits/2 + 6) of its piece, pieces no wider than [0, 1]).
+  mpq_class second = -1000000;
+  std::optional<mpq_class> at;
+  for (const auto& r : roots)
+    if (r > 0 && r < 1 && value(mono, r) == best) at = r;
+  if (!at) return;
+  bool clear = std::count(roots.begin(), roots.end(), *at) == 1;  // a simple root of f'
+  for (const auto& r : roots)
+    if (r != *at) clear = clear && test::abs_q(r - *at) > mpq_class(1, 100);
+  for (const mpq_class& x : {mpq_class(0), mpq_class(1)}) second = std::max(second, value(mono, x));
+  for (const auto& r : roots)
+    if (r != *at && r >= 0 && r <= 1) second = std::max(second, value(mono, r));
+  if (!clear || best - second <= mpq_class(1, 1000)) return;
+  const int e = Kind<T>::bits() / 2 + 6 - 4;
+  CHECK(test::abs_q(u - *at) <= mpq_class(1, mpz_class(1) << e));
 }
 
 }  // namespace
