@@ -12,6 +12,8 @@
 //   - a touch (x = 7: the distance to (5, 0) is 2 at s = 1/2 only): the answer
 //     may leave it undecided but claims nothing wrong (a claimed interval holds
 //     1/2; "no collision" is never claimed with nothing undecided);
+//   - A not moving (degree 0 in s, one strip) at (6, 1): B reaches it when
+//     (11 - 10t)² + 1 <= 4, P_t = [(11 - √3)/10, 1], and P_s = [0, 1];
 //   - a budget of a few u-box tests: the run stops with reasons, claims
 //     nothing false, and what it proves is still right.
 #include "floating/independent_ccd.hpp"
@@ -40,12 +42,12 @@ SceneObject unit_disc(const Rational& x0, const Rational& dx, const Rational& y0
   return o;
 }
 
-// A at (xa, 6s - 3), B at (10t - 5, 0): the net F(u, s, t) in T
+// A at (xa, ya0 + ya1 s), B at (10t - 5, 0): the net F(u, s, t) in T
 template <class T>
-TriBern<T> net(const Rational& xa, const T& like) {
+TriBern<T> net(const Rational& xa, const T& like, const Rational& ya0 = -3, const Rational& ya1 = 6) {
   Scene sc;
   sc.dim = 2;
-  sc.a = unit_disc(xa, 0, -3, 6);
+  sc.a = unit_disc(xa, 0, ya0, ya1);
   sc.b = unit_disc(-5, 10, 0, 0);
   sc.independent = false;  // prepare_pair's shared preparation; F takes A's parameter as s and B's as t
   return independent_ellipsoid_function<T, 3>(to_arithmetic_bernstein<T, 3>(prepare_pair<3>(sc), like));
@@ -117,4 +119,20 @@ TEMPLATE_TEST_CASE("ccd_independent on a touch and on a small budget claims noth
     }
     for (const auto& [a, b] : r.answer.t_intervals) CHECK(a.value >= 0.9 - 1e-9);
   }
+}
+
+// Plain double only: the guarded arithmetic is run on the moving cases above (and doubles this file's time).
+TEST_CASE("ccd_independent with a body that does not move", "[floating][independent_ccd]") {
+  const double one = 1.0;
+  // A fixed at (6, 1): B(t) = (10t - 5, 0) within 2 iff (11 - 10t)^2 + 1 <= 4 iff t >= (11 - √3)/10
+  const IndependentResult r = ccd_independent(net<double>(6, one, 1, 0), one);
+  CHECK(r.answer.collides);
+  CHECK(r.answer.undecided.empty());
+  CHECK(r.degree_s == 0);
+  REQUIRE(r.answer.s_intervals.size() == 1);
+  CHECK(r.answer.s_intervals[0].first.value == 0.0);
+  CHECK(r.answer.s_intervals[0].second.value == 1.0);
+  REQUIRE(r.answer.t_intervals.size() == 1);
+  CHECK(std::fabs(r.answer.t_intervals[0].first.value - (11 - std::sqrt(3.0)) / 10) <= 1e-9);
+  CHECK(r.answer.t_intervals[0].second.value == 1.0);
 }
