@@ -70,10 +70,10 @@
 #include <functional>
 #include <map>
 
-#include <cstring>
 #include <optional>
 #include <span>
 #include <type_traits>
+#include <variant>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -368,25 +368,11 @@ struct CertifiedPolicy {
   }
   mutable const Rep* whole = nullptr;       // the polynomial being isolated (for refine and the local split signs)
   mutable bool local_in_isolation = false;  // roots() used a local decision (end or split sign)
-  // g_0..g_N in Bernstein form, as build_in_basis(bernstein) converts them,
-  // kept for the next build with the same g: the same end points bit for bit
-  // (compared, not assumed), hence the same conversion (so the three
-  // builds of Δ, P and D convert g once, not three times).
-  mutable std::vector<Poly<T>> g_seen;
-  mutable std::vector<Bern<T>> g_bern;
-  const std::vector<Bern<T>>& bernstein_g(const std::vector<Poly<T>>& g) const {
-    auto same = [](const Poly<T>& x, const Poly<T>& y) {
-      return x.c.size() == y.c.size() &&
-             (x.c.empty() || std::memcmp(x.c.data(), y.c.data(), x.c.size() * sizeof(T)) == 0);
-    };
-    bool hit = g.size() == g_seen.size();
-    for (std::size_t i = 0; hit && i < g.size(); ++i) hit = same(g[i], g_seen[i]);
-    if (!hit) {
-      g_seen = g;
-      g_bern.assign(g.size(), Bern<T>());
-      for (std::size_t i = 0; i < g.size(); ++i) g_bern[i] = bernstein_or_zero(g[i], T(0));
-    }
-    return g_bern;
+  // g_0..g_N in Bernstein form, converted once for the builds of Δ, P and D (kernel/basis_build.hpp).
+  // (Interval only: MPFI values are not compared bit for bit).
+  mutable std::conditional_t<std::is_same_v<T, Interval>, BernsteinOfG<T>, std::monostate> g_bern;
+  const std::vector<Bern<T>>& bernstein_g(const std::vector<Poly<T>>& g) const requires std::is_same_v<T, Interval> {
+    return g_bern.of(g, T(0));
   }
 };
 

@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <type_traits>
+#include <variant>
 #include <string>
 
 namespace eccd {
@@ -47,6 +48,9 @@ struct FloatingPolicy {
   long max_pieces = 20000;                 // root isolation work bound (per polynomial)
   mutable std::string trouble;             // "" or why nothing can be decided (a non-finite value)
   mutable std::vector<std::string> notes;  // why parts were left undecided (work bound, deadline)
+  // g_0..g_N in Bernstein form, converted once for the builds of one run (kernel/basis_build.hpp); unused
+  // for scalar types compared by value (MPFR).
+  mutable std::conditional_t<std::is_trivially_copyable_v<T>, BernsteinOfG<T>, std::monostate> g_bern;
 
   FloatingPolicy(Basis b, int precision_bits, const T& like_value) : basis(b), bits(precision_bits), like(like_value) {}
 
@@ -56,7 +60,15 @@ struct FloatingPolicy {
   // exact ones unscaled.
   template <class F>
   Bern<T> build(const std::vector<Poly<T>>& g, F formula) const {
-    Bern<T> out = build_in_basis(basis, g, formula, T(T(0) * like));
+    Bern<T> out;
+    if constexpr (std::is_trivially_copyable_v<T>) {  // Δ, P and D share g's conversion
+      if (basis != Basis::power)
+        out = build_from_bernstein(basis, g_bern.of(g, T(T(0) * like)), formula);
+      else
+        out = build_in_basis(basis, g, formula, T(T(0) * like));
+    } else {
+      out = build_in_basis(basis, g, formula, T(T(0) * like));
+    }
     if (!all_finite(out.b) && trouble.empty())
       trouble = "overflow: a non-finite coefficient in a polynomial built from f (Δ, P, D or a subresultant)";
     return out;

@@ -26,8 +26,10 @@
 #include "kernel/scaled_bernstein.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace eccd {
@@ -59,17 +61,52 @@ Bern<T> bernstein_or_zero(const Poly<T>& p, const T& zero) {
   return out;
 }
 
+// formula(G) from G = {g_0, ..., g_N} already in Bernstein form, in the ring of `basis` (bernstein or
+// scaled_bernstein), in Bernstein form.
+template <class T, class F>
+Bern<T> build_from_bernstein(Basis basis, const std::vector<Bern<T>>& b, F formula) {
+  if (basis == Basis::bernstein) return formula(b);
+  std::vector<ScaledBern<T>> s(b.size());
+  for (std::size_t i = 0; i < b.size(); ++i) s[i] = to_scaled(b[i]);
+  return to_bernstein(formula(s));
+}
+
 // formula(G), G = {g_0, ..., g_N} in the ring of `basis`, in Bernstein form.
 template <class T, class F>
 Bern<T> build_in_basis(Basis basis, const std::vector<Poly<T>>& g, F formula, const T& zero) {
   if (basis == Basis::power) return bernstein_or_zero(Poly<T>(formula(g)), zero);
   std::vector<Bern<T>> b(g.size());
   for (std::size_t i = 0; i < g.size(); ++i) b[i] = bernstein_or_zero(g[i], zero);
-  if (basis == Basis::bernstein) return formula(b);
-  std::vector<ScaledBern<T>> s(g.size());
-  for (std::size_t i = 0; i < g.size(); ++i) s[i] = to_scaled(b[i]);
-  return to_bernstein(formula(s));
+  return build_from_bernstein(basis, b, formula);
 }
+
+// g_0..g_N in Bernstein form, as build_in_basis converts them, kept for the next build with the same g and the
+// same zero: the same bits (compared, not assumed), hence the same conversion, so the builds of Δ, P and D of
+// one run convert g once, not three times. For scalar types whose bits are their value (trivially copyable:
+// double, Bounded<double>, Interval).
+template <class T>
+struct BernsteinOfG {
+  static_assert(std::is_trivially_copyable_v<T>, "g is compared bit for bit");
+  std::vector<Poly<T>> seen;
+  T seen_zero{};
+  std::vector<Bern<T>> bern;
+
+  const std::vector<Bern<T>>& of(const std::vector<Poly<T>>& g, const T& zero) {
+    auto same = [](const Poly<T>& x, const Poly<T>& y) {
+      return x.c.size() == y.c.size() &&
+             (x.c.empty() || std::memcmp(x.c.data(), y.c.data(), x.c.size() * sizeof(T)) == 0);
+    };
+    bool hit = g.size() == seen.size() && !bern.empty() && std::memcmp(&zero, &seen_zero, sizeof(T)) == 0;
+    for (std::size_t i = 0; hit && i < g.size(); ++i) hit = same(g[i], seen[i]);
+    if (!hit) {
+      seen = g;
+      seen_zero = zero;
+      bern.assign(g.size(), Bern<T>());
+      for (std::size_t i = 0; i < g.size(); ++i) bern[i] = bernstein_or_zero(g[i], zero);
+    }
+    return bern;
+  }
+};
 
 // A 2D formula of (g3, g2, g1, g0) (003's Δ, P, D) as the policy's build of G = {g_0, ..., g_3}.
 template <class Policy, class G, class F>
