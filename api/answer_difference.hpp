@@ -52,7 +52,7 @@ struct DifferenceOptions {
 struct AnswerDifference {
   bool agrees = false;
   std::vector<std::string> differences;  // in words, in the order found; empty iff agrees
-  bool collides_differs = false;
+  bool collides_differs = false;         // both claim `collides` (collides_claim) and the claims differ
   // Intervals and contacts of the reference with no partner in the answer
   // (missed) and of the answer with none in the reference (spurious), each
   // counted once (a contact inside a missed interval is not counted again).

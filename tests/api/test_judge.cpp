@@ -144,22 +144,35 @@ TEST_CASE("judge: a missing contact interval is reported", "[judge]") {
 }
 
 TEST_CASE("judge: a double answer on a case where double fails differs", "[judge]") {
-  // Paper 003 Example 2 moved 1e-9 towards touching: the exact pipeline finds
-  // a short collision interval; double in power form does not (`eccd table
-  // cases/paper003` shows it).
-  Scene s = read_scene(src("cases/paper003/example2-towards-1e-9.json"));
+  // Paper 003 Example 2 moved 1e-3 away from touching: exact proves no collision; double as published (Bernstein
+  // form, rounded input) claims collision intervals (issue 30's example; `eccd solve --guard none`).
   SolveOptions d;
   d.arith = Arithmetic::double_precision();
-  d.basis = Basis::power;
-  Solution fl = solve(s, d);
-  Judgement j = judge(s, fl.answer, JudgeOptions{1e-6, "double/power", false});
-  REQUIRE(j.certified.answer.collides);
-  REQUIRE_FALSE(fl.answer.collides);  // the known failure this test is about
+  d.guard = Guard::none;
+  const Scene away = read_scene(src("cases/paper003/example2-away-1e-3.json"));
+  const Solution fl = solve(away, d);
+  const Judgement j = judge(away, fl.answer, JudgeOptions{1e-6, "double", false});
+  REQUIRE_FALSE(j.certified.answer.collides);
+  REQUIRE(fl.answer.collides);  // the known failure this test is about
   CHECK_FALSE(j.agrees);
   CHECK(j.verdict == "wrong collides");
   CHECK(j.difference.collides_differs);
-  CHECK(j.difference.missed >= 1);
-  CHECK(has(j.difference.differences, "collides: certified true, double/power false"));
+  CHECK(j.difference.spurious >= 1);
+  CHECK(has(j.difference.differences, "collides: certified false, double true"));
+
+  // Moved 1e-9 towards touching, power form, guarded: undecided where it proved nothing, which claims nothing
+  // about `collides` (collides_claim): the answers differ, and it is not "wrong collides".
+  d.guard = Guard::bound;
+  d.basis = Basis::power;
+  const Scene towards = read_scene(src("cases/paper003/example2-towards-1e-9.json"));
+  const Solution guarded = solve(towards, d);
+  const Judgement g = judge(towards, guarded.answer, JudgeOptions{1e-6, "double/power", false});
+  REQUIRE(g.certified.answer.collides);
+  REQUIRE_FALSE(collides_claim(guarded.answer).has_value());
+  CHECK_FALSE(g.agrees);
+  CHECK_FALSE(g.difference.collides_differs);
+  CHECK(g.verdict.rfind("differs: ", 0) == 0);
+  CHECK(g.difference.undecided >= 1);
 }
 
 TEST_CASE("judge: reading the answer: bare object, scene file, solve report, and errors name the place", "[judge]") {

@@ -226,12 +226,11 @@ TEST_CASE("verdict: JSON and text of agreeing, differing and failed verdicts", "
 }
 
 // An answer that leaves instants undecided claims nothing about `collides` where it proved no collision
-// (kernel/answer.hpp, collides_claim: nullopt, written null), so it cannot have a wrong `collides`. The
-// comparison (api/answer_difference.cpp, the `got.collides != ref.collides` test) compares the bool instead of
-// the claim, so a guarded run that is undecided everywhere is counted in wrongC and `eccd judge` says "wrong
-// collides" of an answer whose JSON says "collides": null. Expected to fail until that is changed.
+// (kernel/answer.hpp, collides_claim: nullopt, written null), so it cannot have a wrong `collides`: the comparison
+// (api/answer_difference.cpp) compares the claims, and such a run is undecided, not wrong (wrongC of
+// `regress --floating`, "wrong collides" of `eccd judge`).
 TEST_CASE("verdict: an undecided answer that claims nothing about collides is not a wrong collides",
-          "[compare][verdict][!mayfail]") {
+          "[compare][verdict]") {
   const Answer ref = certified({{5, 5}});
   Answer got = floating({});
   got.undecided.push_back(dec(0.5));
