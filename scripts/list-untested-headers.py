@@ -4,7 +4,8 @@
 A library header LAYER/.../NAME.hpp with logic is tested in tests/LAYER/test_NAME.cpp.
 A header has logic when it defines a function body or has a source file NAME.cpp beside it;
 a header of declarations only (options, enums, plain structs) needs no test file of its own.
-A command of app/ (app/NAME.cpp with no header) is tested in tests/app/test_cli_NAME.cpp.
+A command of app/ (app/NAME.cpp with no header) is tested in tests/app/test_cli_NAME.cpp; the program's headers
+whose code runs only inside it are tested through the program, in the test file THROUGH_PROGRAM names.
 
 Usage:
   scripts/list-untested-headers.py              every header with logic, its test file or "-",
@@ -64,7 +65,19 @@ def includes(path):
         return set(re.findall(r'#include\s+"([^"]+)"', f.read()))
 
 
+# Headers of the program eccd (app/) whose code runs only inside the program: the test binary does not link app/,
+# so their test is the program's, in the test file named here (what it checks of the header, in brackets).
+THROUGH_PROGRAM = {
+    "app/commands.hpp": "tests/app/test_cli_conventions.cpp",  # --quiet, exit codes, "format"/"version" stamps
+    "app/option_names.hpp": "tests/app/test_cli_names.cpp",  # the old option spellings, their warning
+    "app/report_parts.hpp": "tests/app/test_cli_report.cpp",  # the report's task pool, resume and output
+}
+
+
 def expected_test(header):
+    through = THROUGH_PROGRAM.get(rel(header))
+    if through:
+        return os.path.join(ROOT, through)
     layer = rel(header).split(os.sep)[0]
     name = os.path.basename(header)[: -len(".hpp")]
     return os.path.join(ROOT, "tests", layer, "test_" + name + ".cpp")
