@@ -3,8 +3,11 @@
 // gradient directions lie in one open half-plane through the origin (a cone
 // narrower than π)? Then the zero set of F(u, t) over the piece has no loop
 // and at most one component per side. Decided exactly for the given doubles
-// by cross-product signs (fma), no angles. The caller rounds the gradients'
-// control points to double; this header is double only.
+// by cross-product signs (fma; exact rationals where a product underflows),
+// no angles. The caller rounds the gradients' control points to double; this
+// header is double only.
+#include <gmpxx.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -14,13 +17,23 @@ namespace eccd {
 
 namespace bezier_detail {
 
-// The sign of a·d − b·c, exact for doubles as long as no product under- or
-// overflows (pointed() below scales each point so that it cannot overflow).
-// Rounding to nearest is monotone, so p = fl(a·d) > q = fl(b·c) implies
-// a·d > b·c; when p == q, a·d − b·c = ep − eq exactly (the fma gives the
-// products' rounding errors exactly), and comparing two doubles is exact.
+// The sign of a·d − b·c, exact for doubles. Fast path when neither product
+// under- or overflows (pointed() below scales each point so that it cannot
+// overflow): rounding to nearest is monotone, so p = fl(a·d) > q = fl(b·c)
+// implies a·d > b·c; when p == q, a·d − b·c = ep − eq exactly (the fma gives
+// the products' rounding errors exactly while |p| >= 2^-960), and comparing
+// two doubles is exact. Otherwise (a product below 2^-960 that is not an exact
+// zero, or not finite: a tiny coordinate against a small one) the sign of the
+// exact rational a·d − b·c.
 inline int cross_sign(double a, double b, double c, double d) {
   const double p = a * d, q = b * c;
+  auto in_range = [](double x, double y, double xy) {
+    return xy == 0 ? (x == 0 || y == 0) : (std::fabs(xy) >= 0x1p-960 && std::isfinite(xy));
+  };
+  if (!in_range(a, d, p) || !in_range(b, c, q)) {
+    const mpq_class r = mpq_class(a) * mpq_class(d) - mpq_class(b) * mpq_class(c);
+    return sgn(r);
+  }
   if (p != q) return p > q ? 1 : -1;
   const double ep = std::fma(a, d, -p), eq = std::fma(b, c, -q);
   return ep > eq ? 1 : ep < eq ? -1 : 0;
