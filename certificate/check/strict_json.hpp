@@ -19,6 +19,7 @@
 
 #include <cctype>
 #include <cstddef>
+#include <deque>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -87,6 +88,7 @@ class Builder {
  private:
   json& root_;
   std::vector<json*> stack_;
+  std::deque<json> discarded_;  // the values of duplicate keys after the first
   std::vector<std::string> path_;
   std::vector<int> keys_;
   std::string key_, error_;
@@ -112,7 +114,10 @@ class Builder {
     }
     where = "/" + key_;
     have_key_ = false;
-    if (parent.contains(key_)) return &parent[key_];  // duplicate: keep the first, the problem is recorded
+    if (parent.contains(key_)) {  // duplicate: keep the first (the problem is recorded); the second goes aside,
+      discarded_.push_back(std::move(v));  // whatever its type, with its own members (a deque keeps their places)
+      return &discarded_.back();
+    }
     parent[key_] = std::move(v);
     return &parent[key_];
   }
