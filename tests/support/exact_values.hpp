@@ -14,6 +14,7 @@ namespace eccd::test {
 
 // x exactly: its significand times a power of two.
 inline mpq_class exact_of(const Mpfr& x) {
+  if (mpfr_zero_p(x.get())) return 0;  // its exponent is MPFR's least: no shift of 2^30 bits
   mpz_class m;
   const long e = long(mpfr_get_z_2exp(m.get_mpz_t(), x.get()));
   mpq_class q(m);
