@@ -13,6 +13,7 @@
 #include "compare/harness.hpp"
 #include "compare/harness_families.hpp"
 #include "compare/scene_generator.hpp"
+#include "kernel/answer.hpp"
 #include "kernel/budget.hpp"
 #include "io/scene_reader.hpp"
 
@@ -63,8 +64,8 @@ FailureMap make_failure_map(std::uint64_t seed, int n) {
   f.scene = g.name;
   f.n = n;
   auto& m = f.doc["b"]["motion"]["m"];
-  f.x0 = parse_rational(m[0][2][0].get<std::string>()).get_d();
-  f.y0 = parse_rational(m[1][2][0].get<std::string>()).get_d();
+  f.x0 = nearest_double(parse_rational(m[0][2][0].get<std::string>()));  // the map's centre: the nearest double
+  f.y0 = nearest_double(parse_rational(m[1][2][0].get<std::string>()));
   return f;
 }
 
