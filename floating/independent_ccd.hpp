@@ -28,7 +28,10 @@
 // to s = x, TriBern::at_s; the same tests with zero width in s, with finer t-
 // and u-pieces until the value is decided), down to 2^-s_depth (2^-34 =
 // 5.8e-11); a value that stays unknown (e.g. exactly at the end) is replaced
-// by the two quarter points. The reported end is the mid-point of the final
+// by the two quarter points. One point test may use at most a tenth of the
+// run's box tests (point_share): a value too close to the end for the
+// arithmetic or the pieces' depth would otherwise use them all; a value that
+// used its share is not tested again. The reported end is the mid-point of the final
 // bracket. What this does not prove: that P_s crosses only once inside the
 // run (a gap or a second interval narrower than the run, < 2^-18, would be
 // missed there); the strip proofs cover everything outside the runs. A run
@@ -54,6 +57,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -67,6 +71,9 @@ struct IndependentOptions {
   int min_limit = 4;    // ... and at least this deep (wide strips fail fast and are split: cheaper than deep pieces)
   int extra_depth = 2;  // t- and u-pieces of a strip at depth d: at most d/2 + extra_depth deep
   long max_tests = 40000000;  // u-box sign tests for the whole run (both projections; ~3e6 per second in double)
+  // One point test may use at most max_tests / point_share box tests (at least 10000): a value closer to an end
+  // than the arithmetic or the pieces' depth can tell apart would otherwise take the whole run's work.
+  int point_share = 10;
 };
 
 struct IndependentResult {
@@ -111,6 +118,7 @@ class Projector {
 
   long tests = 0, strips = 0, points = 0;
   std::string stop_reason;
+  std::string point_note;  // "" or why the bisection of an end stopped early (a point test reached its share)
   bool record =
       false;  // keep each proved strip's boxes in Piece::witness (certificate/write/independent_certificate.hpp)
 
@@ -137,16 +145,23 @@ class Projector {
       }
       mpq_class lo = runs[i].lo, hi = runs[i].hi;
       const mpq_class tol = mpq_class(1) / mpq_class(mpz_class(1) << opt_.s_depth);
+      std::vector<mpq_class> spent;  // values whose point test used up its share: not tested again
+      auto status_of = [&](const mpq_class& x, int depth) {
+        if (std::find(spent.begin(), spent.end(), x) != spent.end()) return Strip::unknown;
+        const Strip r = point(F, x, depth);
+        if (point_over()) spent.push_back(x);
+        return r;
+      };
       for (int depth = opt_.strip_depth; hi - lo > tol && !stopped(); ++depth) {
         // the mid-point; if it stays unknown (e.g. exactly at the end), the quarter points
         const mpq_class mid = (lo + hi) / 2;
-        const Strip r = point(F, mid, depth);
+        const Strip r = status_of(mid, depth);
         if (r != Strip::unknown) {
           (r == before ? lo : hi) = mid;
           continue;
         }
         const mpq_class q1 = (lo + mid) / 2, q3 = (mid + hi) / 2;
-        const bool moved_lo = point(F, q1, depth + 1) == before, moved_hi = point(F, q3, depth + 1) == after;
+        const bool moved_lo = status_of(q1, depth + 1) == before, moved_hi = status_of(q3, depth + 1) == after;
         if (moved_lo) lo = q1;
         if (moved_hi) hi = q3;
         if (!moved_lo && !moved_hi) break;
@@ -195,18 +210,31 @@ class Projector {
 
   // The status of the single value s = x (F restricted to it): finer t- and u-pieces until decided
   // (a value at distance d from an end needs pieces of ~sqrt(d), or ~d where the extreme is on t = 0 or 1).
+  // At most max_tests / point_share box tests (point_over() after the call says it used them all; the value is then
+  // unknown and point_note says why).
   Strip point(const TriBern<T>& F, const mpq_class& x, int depth) {
     const TriBern<T> at = F.at_s(scalar_traits<T>::from_rational(x, half_));
+    const long share = std::max(10000L, opt_.max_tests / std::max(1, opt_.point_share));
+    point_limit_ = tests + share;
     Strip r = Strip::unknown;
     for (int lim = std::max(opt_.min_limit, depth / 2 + opt_.extra_depth);
          r == Strip::unknown &&
-         lim <= std::min(depth + 4, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth) + 8) && !stopped();
+         lim <= std::min(depth + 4, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth) + 8) && !stopped() &&
+         !point_over();
          lim += 2) {
       r = classify_strip(at, lim);
       ++points;
     }
+    if (point_over()) {
+      r = Strip::unknown;  // a strip cut short by the share proves nothing
+      point_note = "a point test near the end used its share of the work (" + std::to_string(share) +
+                   " box tests): the value is too close to the end for this arithmetic or depth";
+    }
+    point_limit_ = std::numeric_limits<long>::max();
     return r;
   }
+  long point_limit_ = std::numeric_limits<long>::max();  // the current point test's last box test
+  bool point_over() const { return tests > point_limit_; }
 
   bool stopped() {
     if (!stop_reason.empty()) return true;
@@ -275,7 +303,7 @@ class Projector {
     bool unknown = false;
     if (record) witness_.clear();
     while (!stack.empty()) {
-      if (stopped()) {
+      if (stopped() || point_over()) {
         recycle(stack);
         return Strip::unknown;
       }
@@ -359,7 +387,8 @@ inline Instant located(const mpq_class& x, const mpq_class& w) {
 inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> pieces, const char* var, int s_depth,
                                                              const std::string& stop_reason,
                                                              std::vector<Instant>& undecided,
-                                                             std::vector<std::string>& reasons) {
+                                                             std::vector<std::string>& reasons,
+                                                             const std::string& end_note = "") {
   auto merge = [](std::vector<Piece>& v) {
     std::vector<Piece> m;
     for (auto& p : v)
@@ -413,7 +442,8 @@ inline std::vector<std::pair<Instant, Instant>> intervals_of(std::vector<Piece> 
     }
     if (w > 4 * strip) {
       undecided.push_back(located(mid, w / 2));
-      reasons.push_back(range(p) + ": an end of the " + v + "-intervals is only located in this range" + why);
+      const std::string note = !why.empty() || end_note.empty() ? why : " (" + end_note + ")";
+      reasons.push_back(range(p) + ": an end of the " + v + "-intervals is only located in this range" + note);
     }
     resolved.push_back({p.lo, mid, before});
     end_width.push_back(w / 2);
@@ -456,9 +486,9 @@ IndependentResult ccd_independent(const TriBern<T>& F, const T& like, const Inde
   Projector<T> pt(half, like);
   auto t_pieces = pt.project(F.swap_st());
   r.answer.s_intervals =
-      intervals_of(s_pieces, "s", opt.s_depth, ps.stop_reason, r.answer.undecided, r.undecided_reasons);
+      intervals_of(s_pieces, "s", opt.s_depth, ps.stop_reason, r.answer.undecided, r.undecided_reasons, ps.point_note);
   r.answer.t_intervals =
-      intervals_of(t_pieces, "t", opt.s_depth, pt.stop_reason, r.answer.undecided, r.undecided_reasons);
+      intervals_of(t_pieces, "t", opt.s_depth, pt.stop_reason, r.answer.undecided, r.undecided_reasons, pt.point_note);
   r.answer.collides = !r.answer.s_intervals.empty() || !r.answer.t_intervals.empty();
   if (r.answer.s_intervals.empty() != r.answer.t_intervals.empty()) {
     r.undecided_reasons.push_back(
