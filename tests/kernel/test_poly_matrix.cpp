@@ -6,6 +6,7 @@
 // over seeded random 3x3 and 4x4 matrices with zero entries; minor_det of a
 // chosen submatrix; the translation motion's inverse by hand.
 #include "kernel/poly_matrix.hpp"
+#include "tests/support/leibniz.hpp"
 #include "number/rational_traits.hpp"
 
 #include <catch2/catch.hpp>
@@ -22,21 +23,7 @@ using RP = Poly<Rational>;
 
 template <int N>
 Rational leibniz(const Matrix<Rational, N>& a, int n = N) {
-  std::vector<int> p(n);
-  std::iota(p.begin(), p.end(), 0);
-  Rational s = 0;
-  do {
-    int inv = 0;
-    for (int i = 0; i < n; ++i)
-      for (int j = i + 1; j < n; ++j) inv += p[i] > p[j];
-    Rational prod = 1;
-    for (int r = 0; r < n; ++r) prod *= a[r][p[r]];
-    if (inv % 2)
-      s -= prod;
-    else
-      s += prod;
-  } while (std::next_permutation(p.begin(), p.end()));
-  return s;
+  return test::leibniz_det<Rational>(a, n);
 }
 
 template <int N>

@@ -8,6 +8,7 @@
 // bareiss_det against the Leibniz sum on integer matrices, singular ones and
 // ones that need a row swap included.
 #include "kernel/quadric_determinant.hpp"
+#include "tests/support/leibniz.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -21,21 +22,7 @@ namespace {
 
 template <class T, int H>
 T leibniz(const Matrix<T, H>& a) {
-  std::array<int, H> p;
-  std::iota(p.begin(), p.end(), 0);
-  T s = 0;
-  do {
-    int inv = 0;
-    for (int i = 0; i < H; ++i)
-      for (int j = i + 1; j < H; ++j) inv += p[i] > p[j];
-    T prod = 1;
-    for (int r = 0; r < H; ++r) prod *= a[r][p[r]];
-    if (inv % 2)
-      s -= prod;
-    else
-      s += prod;
-  } while (std::next_permutation(p.begin(), p.end()));
-  return s;
+  return test::leibniz_det<T>(a, H);
 }
 
 Rational small(std::mt19937_64& rng) {

@@ -11,6 +11,7 @@
 #include "kernel/bernstein.hpp"
 #include "kernel/polynomial.hpp"
 #include "kernel/ring_determinant.hpp"
+#include "tests/support/leibniz.hpp"
 #include "number/rational_traits.hpp"
 
 #include <catch2/catch.hpp>
@@ -27,21 +28,7 @@ namespace {
 
 using Mat = std::vector<std::vector<Rational>>;
 
-Rational leibniz(const Mat& a) {
-  const int k = int(a.size());
-  std::vector<int> p(k);
-  std::iota(p.begin(), p.end(), 0);
-  Rational s = 0;
-  do {
-    int inv = 0;
-    for (int i = 0; i < k; ++i)
-      for (int j = i + 1; j < k; ++j) inv += p[i] > p[j];
-    Rational prod = 1;
-    for (int r = 0; r < k; ++r) prod *= a[r][p[r]];
-    s += inv % 2 ? Rational(-prod) : prod;
-  } while (std::next_permutation(p.begin(), p.end()));
-  return s;
-}
+Rational leibniz(const Mat& a) { return test::leibniz_det<Rational>(a, int(a.size())); }
 
 Rational small(std::mt19937_64& rng) {
   Rational x(long(rng() % 19) - 9, long(rng() % 5) + 1);

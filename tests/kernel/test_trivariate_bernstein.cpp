@@ -13,6 +13,7 @@
 //   - without_positive_factor on a net built as p(s) G(u, t) with p of one
 //     strict sign (G returned, negated when p < 0), and refused otherwise.
 #include "kernel/trivariate_bernstein.hpp"
+#include "tests/support/leibniz.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -37,21 +38,7 @@ Rational unit(std::mt19937_64& rng) {
 
 template <int H>
 Rational leibniz(const Matrix<Rational, H>& a) {
-  std::array<int, H> p;
-  std::iota(p.begin(), p.end(), 0);
-  Rational s = 0;
-  do {
-    int inv = 0;
-    for (int i = 0; i < H; ++i)
-      for (int j = i + 1; j < H; ++j) inv += p[i] > p[j];
-    Rational prod = 1;
-    for (int r = 0; r < H; ++r) prod *= a[r][p[r]];
-    if (inv % 2)
-      s -= prod;
-    else
-      s += prod;
-  } while (std::next_permutation(p.begin(), p.end()));
-  return s;
+  return test::leibniz_det<Rational>(a, H);
 }
 
 template <int H>
