@@ -205,12 +205,26 @@ RATIO_TARGETS = [
          base="product-2d-deg6-v3/double as published, rounded input", limit_ratio=1.5,
          anchor="the guard's cost target: guarded / as published at most ×1.5 (median); measured 2026-11-28 (a --eccd_quick run of the "
                 "product rows on a loaded machine, CPU medians): 227 µs / 91 µs = ×2.5; a bound updated at every operation measured ×3.5–×20 "
-                "over plain double on the pipeline rows from the prepared pair"),
+                "over plain double on the pipeline rows from the prepared pair",
+         note="Why this design stays above ×1.5 (2026-12-02, `perf record` of both rows): the guard carries a running error "
+              "bound beside every value (number/running_error_loops.hpp); per operation of the build of Δ, P and D the value "
+              "costs one multiply and one add, its bound two multiplies, four adds and two absolute values, so the guarded "
+              "build is ×3–4 the published one (`convolve_arrays` 19 % of the guarded row, the products' own loops 8 % of "
+              "the published). The build is about 60 % of the published run, so even a bound as cheap as the value would "
+              "give about ×1.6. Below that needs a bound cheaper than the values where no sign is read: one bound per "
+              "polynomial in the build and per-coefficient bounds only in the subdivision, or a two-tier guard (the "
+              "published run with a scalar a-priori bound, the per-coefficient run only where that leaves a sign open); "
+              "both change which runs end undecided and need the guard's record measured again."),
     dict(name="The guard's cost on paper 002's example: double guarded over double as published, rounded input",
          key="product-paper002/double guarded, rounded input",
          base="product-paper002/double as published, rounded input", limit_ratio=1.5,
          anchor="the guard's cost target: guarded / as published at most ×1.5 (median); measured 2026-11-28 (a --eccd_quick run on a "
-                "loaded machine, CPU medians): 2.16 ms / 0.68 ms = ×3.2"),
+                "loaded machine, CPU medians): 2.16 ms / 0.68 ms = ×3.2",
+         note="Why this design stays above ×1.5 (2026-12-02): in 3D the guarded time is the subdivision of F's net with "
+              "its bound (`de_casteljau` and `de_casteljau_rows` about 48 % of the guarded row): per de Casteljau step the "
+              "value costs two multiplies and an add, its bound five multiplies, nine adds and five absolute values. The "
+              "same way out as in 2D: a bound that is not carried per coefficient where no sign is read (one per net, "
+              "refined only on the pieces whose signs decide), measured against the guard's record."),
     dict(name="Certified mode on paper 002's example against double",
          key="ccd3d-paper002/certified", base="ccd3d-paper002/double bezier", limit_ratio=3.0,
          anchor="the certified mode's cost target: certified at most 3x double on paper 002's example (both from the prepared pair: "
