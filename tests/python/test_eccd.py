@@ -219,13 +219,23 @@ def test_judge_the_exact_answer_agrees_and_a_double_failure_differs():
     assert j.agrees and bool(j) and j.verdict == "agrees" and j.differences == []
     assert j.certified_from == "exact pipeline"
     assert same_answer(j.certified, exact)
-    double = eccd.solve(s, arith="double", basis="power")
-    assert not double.collides  # the known failure: double misses this near touch
-    k = eccd.judge(s, double, name="double/power")
+    # As published, double claims collision intervals where exact proves none (Example 2 moved 1e-3 away).
+    away = eccd.read_scene(case("paper003/example2-away-1e-3.json"))
+    published = eccd.solve(away, arith="double", guard="none")
+    assert published.collides is True  # the known failure
+    k = eccd.judge(away, published, name="double")
     assert not k.agrees
     assert k.verdict == "wrong collides"
     assert k.counts["collides_differs"] is True
-    assert "collides: certified true, double/power false" in k.differences
+    assert "collides: certified false, double true" in k.differences
+    # Guarded (power form, 1e-9 towards touching): undecided where it proved nothing, which claims nothing
+    # about collides (None): the answers differ, and it is not "wrong collides".
+    guarded = eccd.solve(s, arith="double", basis="power")
+    assert guarded.collides is None
+    g = eccd.judge(s, guarded, name="double/power")
+    assert not g.agrees
+    assert g.verdict.startswith("differs: ")
+    assert g.counts["collides_differs"] is False
 
 
 def test_judge_takes_a_dict_json_text_and_an_answer_object():
