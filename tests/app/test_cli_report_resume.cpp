@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <sys/file.h>
+#include <unistd.h>
 
 using namespace eccd::clitest;
 using json = nlohmann::json;
@@ -44,6 +45,17 @@ TEST_CASE("eccd report --resume: the plan file, the lock, other scenes, and fini
   std::system(cmd.c_str());
   const fs::path partial = d.path / "R.partial";
   REQUIRE(fs::is_regular_file(partial / "plan.json"));
+  // The killed run's worker holds the lock on plan.json (inherited) until the kernel delivers its parent-death
+  // signal (app/report_pool.cpp, PR_SET_PDEATHSIG): wait until the lock is free (a bounded number of tries), so that
+  // the sections below see no run still going.
+  {
+    const int fd = ::open((partial / "plan.json").c_str(), O_RDONLY);
+    REQUIRE(fd >= 0);
+    bool free_now = false;
+    for (int i = 0; i < 6000 && !(free_now = ::flock(fd, LOCK_EX | LOCK_NB) == 0); ++i) ::usleep(10000);
+    REQUIRE(free_now);
+    ::close(fd);  // releases it
+  }
   REQUIRE_FALSE(fs::exists(d.path / "R"));
   const json plan = json::parse(slurp(partial / "plan.json"));
   CHECK(plan["format"] == "eccd-report-plan/1");
