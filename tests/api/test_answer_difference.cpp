@@ -2,6 +2,7 @@
 // whose differences are known, and on the exact pipeline's answers.
 #include "api/answer_difference.hpp"
 #include "number/rational_traits.hpp"
+#include "tests/support/instants.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -10,14 +11,7 @@
 using namespace eccd;
 
 namespace {
-Instant dec(double t) {  // a floating instant: a decimal, no bracket
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", t);
-  Instant i;
-  i.approx = b;
-  i.value = t;
-  return i;
-}
+using test::dec;                                // a floating instant (tests/support/instants.hpp)
 Instant cert(const char* lo, const char* hi) {  // a certified instant
   Instant i;
   i.lo = Rational(lo);

@@ -6,6 +6,7 @@
 // are computed by the exact pipeline in each test, never written in.
 #include "api/judge.hpp"
 #include "api/solve.hpp"
+#include "tests/support/instants.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -20,14 +21,7 @@ namespace {
 std::string src(const std::string& rel) { return std::string(ECCD_SOURCE_DIR) + "/" + rel; }
 
 // An instant as a floating engine writes it: a decimal, no bracket.
-Instant dec(double t) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", t);
-  Instant i;
-  i.approx = b;
-  i.value = t;
-  return i;
-}
+using test::dec;  // a floating instant (tests/support/instants.hpp)
 Instant strip(const Instant& i) { return dec(i.value); }
 
 // The certified answer with its brackets dropped: what a floating engine that

@@ -15,6 +15,7 @@
 //  - failed_verdict() never agrees and keeps its message and time.
 #include "compare/verdict.hpp"
 #include "number/rational_traits.hpp"
+#include "tests/support/instants.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -23,14 +24,7 @@
 using namespace eccd;
 
 namespace {
-Instant dec(double t) {  // a floating instant: a decimal, no bracket
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", t);
-  Instant i;
-  i.approx = b;
-  i.value = t;
-  return i;
-}
+using test::dec;                   // a floating instant (tests/support/instants.hpp)
 Instant cert(const Rational& q) {  // a certified point instant (bracket [q, q])
   return bracketed_instant(q, q, q);
 }

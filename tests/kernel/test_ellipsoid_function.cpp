@@ -19,6 +19,7 @@
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/ellipsoid_function.hpp"
 #include "number/rational_traits.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -31,11 +32,7 @@ namespace {
 
 using RP = Poly<Rational>;
 
-Rational q(long a, long b) {  // a / b in lowest terms (gmpxx does not reduce on construction)
-  Rational x(a, b);
-  x.canonicalize();
-  return x;
-}
+using test::q;  // a / b in lowest terms (tests/support/exact_values.hpp)
 
 Rational direct(const std::vector<RP>& g, const Rational& u, const Rational& t) {
   Rational s = 0;

@@ -11,6 +11,7 @@
 // the degree bounds (3; 2 for a fixed centre without deformation),
 // keyframe_weight and keyframe_deformation_det; dim 4 refused.
 #include "kernel/keyframe_motion.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -20,11 +21,7 @@ using namespace eccd;
 
 namespace {
 
-Rational q(long a, long b) {
-  Rational x(a, b);
-  x.canonicalize();
-  return x;
-}
+using test::q;  // a / b in lowest terms (tests/support/exact_values.hpp)
 Rational small(std::mt19937_64& rng) { return q(long(rng() % 21) - 10, long(rng() % 4) + 1); }
 
 KeyPose random_pose(std::mt19937_64& rng, int dim, bool deform) {

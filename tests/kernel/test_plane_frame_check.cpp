@@ -17,6 +17,7 @@
 #include "number/mpfr_real.hpp"
 #include "number/rational_traits.hpp"
 #include "number/running_error.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -28,11 +29,7 @@ namespace {
 
 using RP = Poly<Rational>;
 
-Rational q(long a, long b) {
-  Rational x(a, b);
-  x.canonicalize();
-  return x;
-}
+using test::q;  // a / b in lowest terms (tests/support/exact_values.hpp)
 
 template <int H>
 void check_adjugate(std::mt19937_64& rng) {

@@ -27,6 +27,7 @@
 #include "kernel/characteristic_polynomial.hpp"
 #include "kernel/contact_status.hpp"
 #include "kernel/prepared_scene.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -40,11 +41,7 @@ namespace {
 
 using RP = Poly<Rational>;
 
-Rational q(long a, long b) {  // a / b in lowest terms (gmpxx does not reduce on construction)
-  Rational x(a, b);
-  x.canonicalize();
-  return x;
-}
+using test::q;  // a / b in lowest terms (tests/support/exact_values.hpp)
 bool is_integer(const Rational& x) { return x.get_den() == 1; }
 
 Scene scene_text(const std::string& a, const std::string& b, const std::string& extra = "", int dim = 2) {

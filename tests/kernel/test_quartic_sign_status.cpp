@@ -13,6 +13,7 @@
 // (impossible for ellipsoids) throws in mpq.
 #include "kernel/quartic_sign_status.hpp"
 #include "number/rational_traits.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -25,11 +26,7 @@ namespace {
 
 using RP = Poly<Rational>;
 
-Rational q(long a, long b) {
-  Rational x(a, b);
-  x.canonicalize();
-  return x;
-}
+using test::q;                                               // a / b in lowest terms (tests/support/exact_values.hpp)
 RP lin(const Rational& r) { return RP({-r, Rational(1)}); }  // λ - r
 
 enum class Kind { separate, touching, complex_pair, positive_double, four_positive };

@@ -12,6 +12,7 @@
 #include "kernel/quartic_touch_rule.hpp"
 #include "kernel/polynomial.hpp"
 #include "number/rational_traits.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -23,11 +24,7 @@ namespace {
 
 using RP = Poly<Rational>;
 
-Rational q(long a, long b) {
-  Rational x(a, b);
-  x.canonicalize();
-  return x;
-}
+using test::q;  // a / b in lowest terms (tests/support/exact_values.hpp)
 RP lin(const Rational& r) { return RP({-r, Rational(1)}); }
 
 std::vector<Rational> coeffs(const RP& f) {

@@ -10,6 +10,7 @@
 #include "kernel/bernstein.hpp"
 #include "kernel/scaled_bernstein.hpp"
 #include "number/rational_traits.hpp"
+#include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -20,11 +21,7 @@ using namespace eccd;
 
 namespace {
 
-Rational q(long a, long b) {
-  Rational x(a, b);
-  x.canonicalize();
-  return x;
-}
+using test::q;  // a / b in lowest terms (tests/support/exact_values.hpp)
 
 Rational value(const ScaledBern<Rational>& p, const Rational& t) {
   Rational s = 0;

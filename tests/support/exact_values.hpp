@@ -27,6 +27,13 @@ inline mpq_class exact_of(const Mpfr& x) {
 
 inline mpq_class exact_of(double x) { return mpq_class(x); }
 
+// a / b in lowest terms (gmpxx's mpq_class(a, b) is not reduced, and == then compares unreduced fractions).
+inline mpq_class q(long a, long b) {
+  mpq_class x(a, b);
+  x.canonicalize();
+  return x;
+}
+
 // A long double bound as a rational, exactly (64-bit significand).
 inline mpq_class exact_of(long double e) {
   int ex = 0;
