@@ -232,35 +232,48 @@ Solution run_floating_cycloidal(const Scene& scene, const SolveOptions& opt, con
   return s;
 }
 
-// The guarded 2D face's second look. Where the guarded double run leaves
-// instants undecided, the reason is mostly its bound, not the algorithm: at a
-// near miss Δ's smallest values lie below what double resolves, and the
-// errors are already in Δ's coefficients, so no evaluation of those
-// coefficients can decide there. The same pipeline (same basis, input mode
-// and variant) then runs once more with a running error bound in MPFR of
-// kSecondLookBits bits, from the scene's numbers rounded to that precision:
-// its claims, like the double run's, are proved about the scene's exact
-// numbers (number/running_error.hpp). Its answer replaces the double one only
-// if it decides everything; otherwise, or if the run's deadline passes, the
-// double answer stands. Both runs' times count in time_ms, and the work
-// counter second_look says that it ran (1) and decided (2).
-// Only where every reason is a sign too close to zero for double's bound: an overflow, a work bound or
-// the time budget stays the double run's answer.
+// The guarded face's second look (2D and 3D). Where the guarded double run
+// leaves instants undecided, the reason is mostly its bound, not the
+// algorithm: at a near miss the smallest values (Δ's in 2D, F(u, t)'s in 3D)
+// lie below what double resolves, and the errors are already in the
+// coefficients, so no evaluation of those coefficients can decide there. The
+// same pipeline (same method, basis, input mode and variant) then runs once
+// more with a running error bound in MPFR of kSecondLookBits bits, from the
+// scene's numbers rounded to that precision: its claims, like the double
+// run's, are proved about the scene's exact numbers
+// (number/running_error.hpp). Its answer replaces the double one only if it
+// decides everything; otherwise, or if the run's deadline passes, the double
+// answer stands. Both runs' times count in time_ms, and the work counter
+// second_look says that it ran (1) and decided (2).
+// Only where every reason is a sign the double bound could not read: an
+// overflow, a work bound or the time budget stays the double run's answer.
+// The second look has a budget of its own, kSecondLookCap (processor time:
+// the same runs take it whatever else the machine does), inside the run's
+// deadline: at most kSecondLookShare times the double run's time, and never
+// less than kSecondLookFloor seconds, so that a near miss costs a double run
+// its fraction of a second, not the MPFR run's seconds; a second look that
+// meets it leaves the double answer standing (second_look 1).
 constexpr int kSecondLookBits = 128;
+constexpr double kSecondLookShare = 50;
+constexpr double kSecondLookFloor = 0.5;
 
-bool only_too_close(const Solution& s) {
+bool only_arithmetic_limits(const Solution& s) {
   if (s.undecided_reasons.empty()) return false;
   for (const auto& r : s.undecided_reasons)
-    if (r.find("too close to zero") == std::string::npos) return false;
+    if (r.find("too close to zero") == std::string::npos &&
+        r.find("could not resolve in this arithmetic") == std::string::npos)
+      return false;
   return true;
 }
 
-Solution second_look_2d(const Scene& scene, const SolveOptions& opt, Solution first) {
+template <class Run>
+Solution second_look(const SolveOptions& opt, Solution first, Run&& run) {
   if (deadline_passed()) return first;
   SolveOptions wide = opt;
   wide.arith = Arithmetic::mpfr(kSecondLookBits);
   const auto start = std::chrono::steady_clock::now();
-  Solution s = run_floating_2d(scene, wide, Bounded<Mpfr>(Mpfr(mpq_class(1), kSecondLookBits), 0));
+  ScopedDeadline cap(std::max(kSecondLookFloor, kSecondLookShare * first.time_ms * 1e-3), DeadlineClock::thread_cpu);
+  Solution s = run(wide, Bounded<Mpfr>(Mpfr(mpq_class(1), kSecondLookBits), 0));
   const double ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
   const bool decided = s.decided();
   Solution& out = decided ? s : first;
@@ -271,7 +284,15 @@ Solution second_look_2d(const Scene& scene, const SolveOptions& opt, Solution fi
 
 template <class T>
 Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like) {
-  if (scene.dim == 3) return run_floating_3d(scene, opt, like);
+  constexpr bool guarded_double = std::is_same_v<T, Bounded<double>>;
+  if (scene.dim == 3) {
+    Solution s = run_floating_3d(scene, opt, like);
+    if constexpr (guarded_double)
+      if (!s.decided() && !s.sampled && only_arithmetic_limits(s))
+        s = second_look(opt, std::move(s),
+                        [&](const SolveOptions& w, const auto& l) { return run_floating_3d(scene, w, l); });
+    return s;
+  }
   if (has_cycloidal_motion(scene)) {
     // The cycloidal pipeline isolates the roots of a transcendental Δ by
     // subdivision that reads T as an enclosure (number/enclosure.hpp): it
@@ -284,8 +305,10 @@ Solution run_floating(const Scene& scene, const SolveOptions& opt, const T& like
           "(its roots of Δ are isolated by validated subdivision): use --guard bound");
   }
   Solution s = run_floating_2d(scene, opt, like);
-  if constexpr (std::is_same_v<T, Bounded<double>>)
-    if (!s.decided() && only_too_close(s)) s = second_look_2d(scene, opt, std::move(s));
+  if constexpr (guarded_double)
+    if (!s.decided() && only_arithmetic_limits(s))
+      s = second_look(opt, std::move(s),
+                      [&](const SolveOptions& w, const auto& l) { return run_floating_2d(scene, w, l); });
   s.method = "cd-disc";
   return s;
 }
