@@ -21,9 +21,11 @@
 //     pᵀC_b p > 0 (the plane misses each solid: kernel/plane_frame_check.hpp
 //     derives the form in the body's frame, qᵀ adj(Q) q > 0 with q = Mᵀp) and
 //     (C_a p)_d < 0 < (C_b p)_d (the centres' sides: C e_d is a positive
-//     multiple of the homogeneous centre). double and certified: in intervals
-//     of doubles around the exact C (a proof; an uncertain sign is a miss);
-//     exact: in rationals. A plane is trusted for the pose it was checked on.
+//     multiple of the homogeneous centre), computed as q = M'ᵀp,
+//     qᵀ adj(Q) q and W (adj(Q) q)_d without forming C. double and certified:
+//     in intervals of doubles around the exact values (a proof; an uncertain
+//     sign is a miss); exact: in rationals. A plane is trusted for the pose it
+//     was checked on.
 //  3. otherwise the static test (f(λ) = det(λA − B), 002 Theorem 1 / 003
 //     Theorem 6: api/static_status.hpp's rules): double: api/static_status.hpp's
 //     static_status from the semi-axes and the pose rounded to doubles (as
@@ -40,7 +42,7 @@
 // pair-pose that is touching or overlapping is an event; one the double test
 // cannot decide goes to `undecided`, never to the events. Stage 1 runs for all
 // poses first, the poses shared among `threads` threads; then stages 2-3 run
-// pose by pose in order, each pose's bodies (M'_k, C_k, A_k, computed only
+// pose by pose in order, each pose's bodies (M'_k, A_k, computed only
 // where a pair needs them) and then its pairs shared among the threads;
 // results are stored by position, so nothing depends on the schedule.
 // Requirements: the animation is exact (rationals); arithmetic double, exact
