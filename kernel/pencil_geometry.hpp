@@ -11,19 +11,20 @@
 //    of p' split the real line into intervals on which p is monotone; inside
 //    the Cauchy bound |z| < 1 + max |c_i / c_n| each interval with a sign
 //    change of p holds exactly one root, found down to the precision of T:
-//    for double by bisection (until the midpoint equals an end); for Mpfr
-//    (256 bits for the contact points, 128 and up for the exact plane) by
-//    Newton's method safeguarded by that bracket (Numerical Recipes' rtsafe:
-//    a bisection step whenever Newton's step would leave the bracket or did
-//    not halve the step before last, so the steps shrink at least as fast as
-//    bisection's and the loop ends; it ends when a step or the bracket is
-//    below 2^-(bits - 8) relative, or a step no longer moves x, or the
-//    bracket's midpoint equals an end; the first step is the root of p
-//    rounded to double, and the bracket x_d -+ 2^-40 |x_d| where p's signs in
-//    Mpfr confirm it). Both keep the sign-change bracket, so the result is the
-//    same root to within 2^-(bits - 9) relative; Newton needs a handful
-//    of evaluations where bisection needs about one per bit (measured: the
-//    certified 3D contact points spent half the query when bisecting to 256 bits).
+//    in double and in Mpfr (256 bits for the contact points, 128 and up for
+//    the exact plane) by Newton's method safeguarded by that bracket
+//    (Numerical Recipes' rtsafe: a bisection step whenever Newton's step
+//    would leave the bracket or did not halve the step before last, so the
+//    steps shrink at least as fast as bisection's and the loop ends; it ends
+//    when a step or the bracket is below 2^-51 relative in double,
+//    2^-(bits - 8) in Mpfr, or a step no longer moves x, or the bracket's
+//    midpoint equals an end; in Mpfr the first step is the root of p rounded
+//    to double, and the bracket x_d -+ 2^-40 |x_d| where p's signs in Mpfr
+//    confirm it). The sign-change bracket is kept throughout; Newton needs a
+//    handful of evaluations where bisection needs about one per bit
+//    (measured: the certified 3D contact points spent half the query when
+//    bisecting to 256 bits, and bisection in double was a quarter of the
+//    per-pose mode, where each new separating plane needs f's roots).
 //    A root where p has no
 //    sign change (an even multiplicity) is found only when p is exactly 0 at
 //    a critical point; the callers do not rely on those (the contact point
@@ -48,31 +49,23 @@
 
 namespace eccd {
 
+// The binary exponent of x != 0 (x = m 2^e, 1/2 <= |m| < 1), for the relative stopping tests below.
+inline long exponent_of(double x) { return long(std::ilogb(x)) + 1; }
+inline long exponent_of(const Mpfr& x) { return long(mpfr_get_exp(x.get())); }
+
 // The root of p in (l, r), where p(l) has the sign sl != 0 and p(r) the
-// opposite sign (see the statement: bisection for double, safeguarded Newton
-// otherwise).
+// opposite sign, by Newton's method safeguarded by the bracket (see the
+// statement; Mpfr first takes a seed from double).
 template <class T>
 T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
-  if constexpr (std::is_same_v<T, double>) {
-    for (int it = 0; it < 100000; ++it) {
-      T m = (l + r) / T(2);
-      if (!(l < m && m < r)) break;
-      Sign sm = sign(p(m));
-      if (sm == Sign::zero) {
-        l = m;
-        r = m;
-        break;
-      }
-      (sm == sl ? l : r) = m;
-    }
-    return (l + r) / T(2);
-  } else {
-    static_assert(std::is_same_v<T, Mpfr>, "small_real_roots: double or Mpfr");
-    const Poly<T> dp = derivative(p);
-    T x = (l + r) / T(2);
-    // A seed from double (the bisection above on p rounded to double), kept only as a proposal: the bracket is
-    // narrowed to x_d -+ delta where the signs of p (in T) there confirm it, else left as it is.
-    if (const int bits = scalar_traits<T>::precision(l); bits > 64) {
+  static_assert(std::is_same_v<T, double> || std::is_same_v<T, Mpfr>, "small_real_roots: double or Mpfr");
+  const Poly<T> dp = derivative(p);
+  T x = (l + r) / T(2);
+  const int bits = scalar_traits<T>::precision(l);
+  // A seed from double (this function on p rounded to double), kept only as a proposal: the bracket is
+  // narrowed to x_d -+ delta where the signs of p (in T) there confirm it, else left as it is.
+  if constexpr (std::is_same_v<T, Mpfr>) {
+    if (bits > 64) {
       Poly<double> pd;
       for (const T& c : p.c) pd.c.push_back(scalar_traits<T>::to_double(c));
       const double ld = scalar_traits<T>::to_double(l), rd = scalar_traits<T>::to_double(r);
@@ -92,48 +85,49 @@ T root_in_bracket(const Poly<T>& p, T l, T r, Sign sl) {
         }
       }
     }
-    // Rounded evaluation leaves p's sign random within a band of a few ulps around the root (cancellation in
-    // Horner), where Newton's steps are noise that never settles on one value: stop when a step or the bracket
-    // is below 2^-(bits - 8) relative (256 times the precision; bisection's last bits in that band are noise too).
-    const long fine = long(scalar_traits<T>::precision(l)) - 8;
-    auto negligible = [&](const T& dx, const T& ref) {
-      if (sign(dx) == Sign::zero) return true;
-      if (sign(ref) == Sign::zero || fine <= 0) return false;
-      return long(mpfr_get_exp(dx.get())) <= long(mpfr_get_exp(ref.get())) - fine;
-    };
-    T step_old = r - l, step = step_old;
-    for (int it = 0; it < 100000; ++it) {
-      const T fx = p(x);
-      const Sign sx = sign(fx);
-      if (sx == Sign::zero) return x;
-      (sx == sl ? l : r) = x;
-      const T m = (l + r) / T(2);
-      if (!(l < m && m < r)) return m;  // the bracket is down to the precision of T
-      if (negligible(T(r - l), abs_of(l) < abs_of(r) ? r : l)) return m;
-      const T d = dp(x);
-      bool newton = sign(d) != Sign::zero;
-      T nx = x;
-      if (newton) {
-        const T dx = fx / d;
-        nx = x - dx;
-        // Inside the bracket and at most half the step before last (else bisect).
-        newton = l < nx && nx < r && abs_of(T(dx + dx)) <= abs_of(step_old);
-        if (newton) {
-          step_old = step;
-          step = dx;
-        }
-        if (newton && negligible(dx, x)) return nx;
-      }
-      if (!newton) {
-        step_old = step;
-        step = m - x;
-        nx = m;
-      }
-      if (nx == x) return x;  // a step below the precision of T
-      x = nx;
-    }
-    return x;
   }
+  // Rounded evaluation leaves p's sign random within a band of a few ulps around the root (cancellation in
+  // Horner), where Newton's steps are noise that never settles on one value: stop when a step or the bracket
+  // is below 2^-fine relative (Mpfr: 256 times its precision, bisection's last bits in that band are noise
+  // too; double: 2^-51, an ulp or two, as the bisection to the last bit it replaces).
+  const long fine = std::is_same_v<T, double> ? 51L : long(bits) - 8;
+  auto negligible = [&](const T& dx, const T& ref) {
+    if (sign(dx) == Sign::zero) return true;
+    if (sign(ref) == Sign::zero || fine <= 0) return false;
+    return exponent_of(dx) <= exponent_of(ref) - fine;
+  };
+  T step_old = r - l, step = step_old;
+  for (int it = 0; it < 100000; ++it) {
+    const T fx = p(x);
+    const Sign sx = sign(fx);
+    if (sx == Sign::zero) return x;
+    (sx == sl ? l : r) = x;
+    const T m = (l + r) / T(2);
+    if (!(l < m && m < r)) return m;  // the bracket is down to the precision of T
+    if (negligible(T(r - l), abs_of(l) < abs_of(r) ? r : l)) return m;
+    const T d = dp(x);
+    bool newton = sign(d) != Sign::zero;
+    T nx = x;
+    if (newton) {
+      const T dx = fx / d;
+      nx = x - dx;
+      // Inside the bracket and at most half the step before last (else bisect).
+      newton = l < nx && nx < r && abs_of(T(dx + dx)) <= abs_of(step_old);
+      if (newton) {
+        step_old = step;
+        step = dx;
+      }
+      if (newton && negligible(dx, x)) return nx;
+    }
+    if (!newton) {
+      step_old = step;
+      step = m - x;
+      nx = m;
+    }
+    if (nx == x) return x;  // a step below the precision of T
+    x = nx;
+  }
+  return x;
 }
 
 template <class T>
