@@ -109,8 +109,8 @@ TEST_CASE("pencil roots in Mpfr: a triple root (p' = 0 there) still ends, inside
   CHECK(close(got[1], mpq_class(1, 3), kBits / 3 - 12));
 }
 
-TEST_CASE("pencil roots in double: bisection as before", "[contact]") {
-  // (x + 1/2)(x - 1/4)(x - 3): exact in double; bisection ends on the root or its neighbour.
+TEST_CASE("pencil roots in double: Newton inside the sign-change bracket ends on the root", "[contact]") {
+  // (x + 1/2)(x - 1/4)(x - 3): exact in double; the safeguarded Newton steps end on the root or its neighbour.
   const Poly<double> p(std::vector<double>{0.375, -0.875, -2.75, 1.0});
   const std::vector<double> got = small_real_roots(p);
   REQUIRE(got.size() == 3);
