@@ -11,6 +11,40 @@ rows (RATIO_TARGETS), and the independent scenes' limits, each with its anchor."
 # result field of that name, e.g. "frames"; the verdict is on the quotient).
 HAND = "Call-graph profile by hand (`perf record --call-graph dwarf` of the row alone, 2026-11-26, revision 8b13203; inclusive shares): "
 
+# What dominates the per-pose rows that miss their targets, and why (`perf record` of the rows, 2026-12-02, after
+# the kept plane's check through q = M'ᵀp and Newton roots for the new planes).
+_POSE_DOUBLE = (
+    "What dominates (`perf record` of `poses/table1 0.1 rad, double`): entering the animation's exact rationals "
+    "into intervals (`interval_of` and GMP's comparisons, about 16 %), the interval pose matrices and world quadrics "
+    "(`complete_body` 10 %, interval products 11 %), the kept plane's interval check (9 %), the new planes' roots "
+    "(7 %) and allocation (about 8 %); the static test itself (`fast_status3`) is under 1 %. The double face proves "
+    "the kept plane about the animation's exact poses (intervals around the file's numbers) and the static test "
+    "about the poses rounded to doubles. 0.5 µs per pair-pose needs the whole double path on doubles parsed once "
+    "from the file, with the plane proved by a static bound (number/static_bound.hpp) about the rounded poses as the "
+    "static test already is: a change of what the double face's planes claim, not a tuning step")
+_POSE_CERTIFIED = (
+    "What dominates (`perf record` of `poses/table1 0.1 rad, certified`): f's coefficients in intervals from the "
+    "world quadrics (`characteristic_coefficients_in<Interval>` 15 %, interval products 9 %), entering the exact "
+    "rationals into intervals (GMP's comparisons and `interval_of`, about 15 %), the interval poses "
+    "(`complete_body` 7 %), the planes' roots (4 %). Every status is proved about the exact poses, so the numbers "
+    "enter as enclosures and the status is expanded in intervals; 1 µs needs the relative frame of the double "
+    "filter (kernel/static_filter3d.hpp: b in a's unit frame) in intervals instead of two world quadrics, a new "
+    "certified static path")
+POSE_NOTES = {
+    ("table1 0.1 rad", "double"): _POSE_DOUBLE,
+    ("table2 main orbit", "double"): _POSE_DOUBLE,
+    ("table1 0.1 rad", "certified"): _POSE_CERTIFIED,
+    ("table2 main orbit", "certified"): _POSE_CERTIFIED,
+    ("boxers", "certified"): (
+        "What dominates (`perf record --call-graph dwarf` of the row): the exact expansion over rationals "
+        "(`generic_status<mpq_class>`) 51 % of the row, and the run's set-up of every body's exact quadric and "
+        "adjugate (`body_shapes` 15 %). Of the 6,336 pair-poses, 6,290 are settled by the bounding spheres and 4 by "
+        "kept planes; the 42 static tests take the interval status from f's coefficients expanded from the two "
+        "world quadrics, and where it is uncertain the exact one: the profile says most of them go exact "
+        "(bodies away from the origin make the world quadrics' expansion cancel, and the enclosures widen). The "
+        "route is the certified row above's: the status in a's unit frame in intervals, exact only at true touches"),
+}
+
 TARGETS = [
     # The static test from two poses through the API (eccd::static_status, static_status_batch), FCL beside
     # (group speed-static); the pipeline-internal rows of static3d stay as phases.
@@ -19,6 +53,16 @@ TARGETS = [
         key="speed-static/static_status one pair (baseline)",
         limit_ns=40.0,
         anchor="at most 40 ns (the physical limit of the 150-flop test is 15-40 ns); 001: the whole static procedure under 1 µs on a 3 GHz Pentium IV; FCL's fcl::collide on the same pairs: `speed-static/FCL collide one pair`",
+        note=("What dominates (`perf record`, the last report): `fast_status3`, i.e. kernel/static_filter3d.hpp's "
+             "straight-line program, 83 %. Appendix A's coefficients alone take 13 ns (`static3d/Appendix A, "
+             "coefficients only`); the rest is the relative pose by the adjugate (R = adj(M'_b) M'_a), the magnitude "
+             "run that gives the a-priori bound (the program once more on absolute values: every product twice) and "
+             "the quartic's discriminant with its own magnitude run, for the sign rule. Why not 40 ns on this design: "
+             "the magnitude runs are what make the status a proof (without them the program is about half as long), "
+             "and one pair is a chain of dependent products that cannot fill the vector lanes; throughput over many "
+             "pairs is the batch's job (the rows below). Below 40 ns per single pair needs a shorter sign rule (e.g. "
+             "Descartes' rule alone where it decides, the discriminant only where it does not), a change of the "
+             "filter's proof, not a tuning step"),
         phases="static3d",
         steps=["static3d/Appendix A, coefficients only", "static3d/Sturm status only"],
         also=["speed-static/FCL collide one pair", "static3d/Appendix A + Sturm", "static3d/generic det + Sturm"],
@@ -28,6 +72,12 @@ TARGETS = [
         key="speed-static/static_status_batch, 64 pairs, avx512",
         limit_ns=960.0,
         anchor="at most 15 ns per pair for the batched, vectorised static test; not measured on a CPU without AVX-512",
+        note=("What dominates (`perf record`, the last report): the lane program `static_filter3d_lanes_avx512` "
+             "63 %, and `pose_status_batch` 34 %: turning the caller's array of shapes (semi-axes and a 4x4 pose per "
+             "body, the API's input) into structure-of-arrays lanes, and the per-pair fallback for lanes the filter "
+             "leaves uncertain. The lane program itself runs at about 17 ns per pair (63 % of 26 ns); the transposition "
+             "is fixed by the API taking an array of Ellipsoid structs. 15 ns per pair would need callers to hand over "
+             "their poses already as lanes (a second batch API) or the shorter sign rule of the single-pair row's note"),
         phases="static3d",
         steps=["static3d/Appendix A + Sturm"],
         also=["speed-static/static_status_batch, 64 pairs, avx2", "speed-static/static_status_batch, 64 pairs, none"],
@@ -37,6 +87,10 @@ TARGETS = [
         key="speed-static/static_status_batch, 64 pairs, avx2",
         limit_ns=960.0,
         anchor="at most 15 ns per pair on any x86-64 machine (an AVX2 path for CPUs without AVX-512)",
+        note=("What dominates: the same lane program on 4-lane vectors (`static_filter3d_lanes_avx2` 69 %, the "
+             "transposition and fallback `pose_status_batch` 27 %, the last report's profile). With half the lanes of "
+             "AVX-512 the program costs about ×1.3 more per pair; it stays ahead of single pairs (the ratio rows below "
+             "are met). The way below 15 ns per pair is the one of the AVX-512 row's note"),
         phases="static3d",
         steps=["static3d/Appendix A + Sturm"],
         also=["speed-static/static_status_batch, 64 pairs, none"],
@@ -49,6 +103,9 @@ TARGETS = [
         key="product-2d-deg6-v3/double guarded, rounded input",
         limit_ns=50e3,
         anchor="speed target: at most 50 µs; 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel); under 1 ms for Variant 1, 5 ms for Variant 2",
+        note=("The guarded run is the as-published run with the running error bound carried beside every value: "
+             "×2.3 its time (the guard-cost ratio row below says why the bound costs that, and what design would "
+             "cost less). The as-published row, itself above 50 µs, is the floor of this target on this design"),
         phases="phases-2d-deg6-double-v3",
         also=["product-2d-deg6-v3/double as published, rounded input", "product-2d-deg6-v3/double guarded, prepared input",
               "product-2d-deg6-v3/double as published, prepared input", "ccd2d-deg6-v3/double",
@@ -59,6 +116,13 @@ TARGETS = [
         key="product-2d-deg6-v3/double as published, rounded input",
         limit_ns=50e3,
         anchor="speed target: at most 50 µs; 003 Fig. 8: under 7 ms for all contacts at degree 6 (2.2 GHz Intel)",
+        note=("What dominates (phases below): f's coefficients g = det(λA - B) 24 %, Δ's build 13 %, its roots "
+             "14 %, and the remainder 42 %: the static tests at the cell samples, the contact points of every "
+             "contact (Lemma 5: a null vector per contact) and the answer's assembly, which the product path adds to "
+             "the pipeline, much of it small allocations (malloc/free at least 11 % of the row). The pipeline "
+             "alone from the prepared pair (`ccd2d-deg6-v3/double`) is about at the limit; the product path's extra "
+             "work is what users get (contacts and their points), so the limit is missed by what the answer "
+             "contains, not by the algorithm"),
         phases="phases-2d-deg6-double-v3",
         also=["product-2d-deg6-v3/double as published, prepared input"],
     ),
@@ -75,6 +139,11 @@ TARGETS = [
         key="speed-paper002/eccd::solve double guarded (baseline)",
         limit_ns=0.5e6,
         anchor="at most 0.5 ms guarded (it was about 4 ms by `eccd solve --json`'s time_ms); 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV); 002: 4.7 s (Table I, degree 4, Pentium 4 2 GHz)",
+        note=("What dominates (`perf record`, the last report): the guarded Bézier analysis (`bernstein_value` in "
+             "Bounded<double> 27 %, the de Casteljau loops with their running bound 25 %, the Gaussian-circle "
+             "gradients 9 %). The guarded run is ×2.2 the as-published one (the guard-cost ratio row's note), and "
+             "the as-published one is itself ×2.5 over its own 0.3 ms limit (its row's note), so 0.5 ms needs both "
+             "a cheaper guard and a shorter analysis"),
         phases="phases-paper002-double-bezier",
         also=["product-paper002/double guarded, rounded input", "product-paper002/double as published, rounded input", "product-paper002/double guarded, prepared input",
               "product-paper002/double as published, prepared input", "product-paper002/certified",
@@ -87,6 +156,13 @@ TARGETS = [
         key="product-paper002/double as published, rounded input",
         limit_ns=0.3e6,
         anchor="speed target: at most 0.3 ms; 001: 3.7 ms for all four intervals of a degree-4 affine pair (3 GHz Pentium IV)",
+        note=("What dominates (phases below, `perf record`): the zero-set analysis 71 % (evaluations of F's rows "
+             "`bernstein_value` 23 %, the Gaussian-circle test's gradient nets `collect_gradient` 20 % and its cross "
+             "products 10 %, restrictions 9 %), the setup of g in Bernstein form 21 %. The analysis is 001 section 4 "
+             "as published: sample instants, shooting and the subdivision of F(u, t) with a Gaussian-circle test per "
+             "piece; its work is set by F's degrees, not by overheads. 001's own 3.7 ms for a degree-4 pair on a "
+             "3 GHz Pentium 4 is ×5 this row; 0.3 ms would need fewer pieces (a coarser test), which would change the "
+             "published algorithm that the reports measure"),
         phases="phases-paper002-double-bezier",
         also=["product-paper002/double as published, prepared input"],
     ),
@@ -95,6 +171,11 @@ TARGETS = [
         key="speed-paper002/eccd::solve exact",
         limit_ns=20e6,
         anchor="at most 20 ms from the scene file (it was about 39 ms by `eccd solve --json`'s time_ms); 002: 4.7 s for a degree-4 pair in double (approximate zero set, no certificate)",
+        note=("Within the run-to-run spread of the limit (measured on both sides of 20 ms). What dominates (phases "
+             "below): the roots of the degree-216 projection 27 % (FLINT's square-free factors, CGAL's isolation), "
+             "the subresultants the touch rule asks for 21 %, their signs at the roots 16 %, the projection's build "
+             "14 %, all in GMP and FLINT (74 % of the samples in those libraries): exact work on large integers "
+             "whose size is set by the degree"),
         phases="phases-paper002-exact",
         also=["product-paper002/exact", "ccd3d-paper002/exact"],
     ),
@@ -114,10 +195,14 @@ TARGETS = [
         anchor="speed target: at most 150 µs (3x the double limit); FCL's continuous test (1000 samples, no certificate) 0.39 ms",
         phases="ccd3d-deg1-translation",
         steps=["ccd3d-deg1-translation/certified ladder only (run_certified)"],
-        note=HAND + "the interval Bézier proof (`run_certified` → `prove_bezier`) 39 % (`Engine::prove_end` 13 %, "
+        note=(HAND + "the interval Bézier proof (`run_certified` → `prove_bezier`) 39 % (`Engine::prove_end` 13 %, "
              "`Engine::strip` 9 %, `Engine::witness` 8 %), the contact points (`add_contact_points_3d` → "
              "`contact_geometry<Mpfr>` 29 %, of it the Newton roots `small_real_roots<Mpfr>` 18 %), the exact "
-             "`quadric_at` over rationals 7 %, `prepare_pair` 4 %.",
+             "`quadric_at` over rationals 7 %, `prepare_pair` 4 %. Why not 150 µs on this design: the certified answer "
+             "proves each end by an interval Krawczyk step on the Bézier net and gives contact points in 256-bit MPFR, "
+             "while the guarded double query of the same pair takes a closed-form path (floating/translation_ccd.hpp, "
+             "about 15 µs) that the certified ladder does not have; a certified closed form for translating pairs "
+             "(the degree-2 contact function's roots proved by interval Newton) is the route"),
         also=["ccd3d-deg1-translation/certified ladder only (run_certified)"],
     ),
     dict(
@@ -142,6 +227,13 @@ TARGETS = [
         per=10,
         limit_ns=2e6,
         anchor="at most 2 ms per frame certified; 001 section 5: 3.4 ms per frame in double (no certificate)",
+        note=("What dominates (`perf record`, the last report): allocation (malloc/free at least 24 % of the "
+             "samples), the interval Bézier proof's subdivision (`elevate_into`, `keep_u_left`, `de_casteljau_in_place` "
+             "in intervals) and the guarded first rung (`quadric_at`, `characteristic_coefficients_in` in "
+             "Bounded<double>). As in the double row, a frame is about 9 continuous tests of rotating pairs (the rest "
+             "settled by bounding spheres and kept planes), each proved by the certified ladder; 2 ms per frame needs "
+             "about 200 µs per proved rotating pair, which needs the low-degree path of the double row's note, "
+             "certified"),
         phases=None,
         also=["animate-boxers/certified, 10 frames"],
     ),
@@ -151,6 +243,13 @@ TARGETS = [
         per="frames",
         limit_ns=25e3,
         anchor="at most 25 µs per frame in double (it was 242 µs); 000 Table 1: 2.47 µs per frame for a static pose per frame (the per-pose rows below are that mode)",
+        note=("What dominates (`perf record`, the last report): the guarded Bézier method (`bernstein_value` 18 %, "
+             "the de Casteljau loops 12 %, `elevate_into` 6 %, `quadric_at` 5 %, malloc/free about 16 %). The kept "
+             "plane settles 704 of the 1000 frames at about 2 µs each (the plane-check row, met); the other 296 each "
+             "run the continuous test of a pair turning 0.1 rad in the frame, about 0.5 ms each: 296 × 0.5 ms / 1000 "
+             "frames is the 150 µs per frame. 25 µs per frame needs that test at about 80 µs: a low-degree path for "
+             "rotating pairs (f's coefficients have degree 2 per frame; the translating pairs have such a path, "
+             "floating/translation_ccd.hpp) or the cheaper guard of the guard-cost rows; this design has neither"),
         phases=None,
         also=["speed-table1-frames/eccd::animate certified"],
     ),
@@ -166,6 +265,7 @@ TARGETS = [
 ] + [
     # The per-pose mode (eccd animate --poses): per pair-pose, every stage included.
     dict(
+        note=POSE_NOTES.get((label, arith)),
         name=f"Per-pose mode, {what}, {arith}, per pair-pose",
         key=f"poses/{label}, {arith}",
         per="pair_poses",
