@@ -106,9 +106,9 @@ Matrix<T, H> sandwich(const Matrix<T, H>& x, const Matrix<T, H>& q, bool diagona
   return r;
 }
 
-// The world quadric A = adj(M')ᵀ Q adj(M'), adj(M') = [[W adj(L), -adj(L) t], [0, det L]] for M' = [[L, t], [0, W]].
+// adj(M')ᵀ, with adj(M') = [[W adj(L), -adj(L) t], [0, det L]] for M' = [[L, t], [0, W]].
 template <class T, int H>
-Matrix<T, H> world_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& Q, bool diagonal) {
+Matrix<T, H> adjugate_transposed(const Matrix<T, H>& m) {
   constexpr int d = H - 1;
   const T zero = T(0);
   const T& W = m[d][d];
@@ -136,7 +136,32 @@ Matrix<T, H> world_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& Q, bool di
     nt[i][d] = zero;
   }
   nt[d][d] = detL;
-  return sandwich<T, H>(nt, Q, diagonal);
+  return nt;
+}
+
+// The world quadric A = adj(M')ᵀ Q adj(M').
+template <class T, int H>
+Matrix<T, H> world_at_pose(const Matrix<T, H>& m, const Matrix<T, H>& Q, bool diagonal) {
+  return sandwich<T, H>(adjugate_transposed<T, H>(m), Q, diagonal);
+}
+
+// b's quadric in a's body frame: Rᵀ Q_b R with R = adj(M'_b) M'_a. With A, B the world quadrics,
+// M'_aᵀ (λA - B) M'_a = c λ Q_a - Rᵀ Q_b R, c = det(M'_a)² > 0 (adj(M'_a) M'_a = det(M'_a) I), so
+// det(μ Q_a - Rᵀ Q_b R) has the roots c λ: the same signs and multiplicities, hence the same status. In this
+// frame a is its own quadric Q_a and nothing depends on where the bodies are in the world, so intervals stay
+// narrow where the world quadrics' expansion cancels (bodies away from the origin).
+template <class T, int H>
+Matrix<T, H> relative_quadric(const Matrix<T, H>& ma, const Matrix<T, H>& mb, const Matrix<T, H>& Qb, bool diag_b) {
+  const Matrix<T, H> nt = adjugate_transposed<T, H>(mb);  // adj(M'_b)ᵀ
+  const T zero = T(0);
+  Matrix<T, H> x;  // Rᵀ = M'_aᵀ adj(M'_b)ᵀ
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) {
+      T s = zero;
+      for (int k = 0; k < H; ++k) s = s + ma[k][i] * nt[k][j];
+      x[i][j] = s;
+    }
+  return sandwich<T, H>(x, Qb, diag_b);
 }
 
 // Does p separate a (negative side) and b (positive side)? Statement, stage 2,
@@ -501,7 +526,7 @@ class PoseStages {
     general_.clear();
     for (std::size_t t : rest_) (fast_pair(tasks[t]) ? fast_ : general_).push_back(t);
     prepare(fast_, 1 | 8);
-    prepare(general_, 1 | 4);
+    prepare(general_, exact_ ? 1 | 4 : 1);
     parallel_for(rest_.size(), opt_.threads, 128,
                  [&](std::size_t u) { outcome_[rest_[u]].status = static_status_of(tasks[rest_[u]]); });
   }
@@ -519,7 +544,8 @@ class PoseStages {
       else
         return static_status(Ellipse{axa, ca.pose}, Ellipse{axb, cb.pose}, opt_.solve.arith);
     }
-    const Status status = generic_status<Interval, H>(ca.ai, cb.ai);
+    const Status status = generic_status<Interval, H>(
+        shapes_.Qi[task.a], relative_quadric<Interval, H>(ca.mi, cb.mi, shapes_.Qi[task.b], shapes_.diag[task.b]));
     if (status != Status::uncertain || kind_ != Arithmetic::Certified) return status;
     // Certified: the exact status.
     const auto& pa = anim_.bodies[task.a].poses[k_];

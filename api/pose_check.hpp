@@ -30,10 +30,12 @@
 //     Theorem 6: api/static_status.hpp's rules): double: api/static_status.hpp's
 //     static_status from the semi-axes and the pose rounded to doubles (as
 //     `eccd solve --arith double` rounds a scene) when the shape is
-//     axis-aligned and centred, otherwise f's coefficients in intervals; a
+//     axis-aligned and centred, otherwise f's coefficients in intervals (in
+//     a's body frame: det(μ Q_a - Rᵀ Q_b R), R = adj(M'_b) M'_a, whose roots
+//     are positive multiples of f's, so the same status); a
 //     status only where the error bound decides it, else the pair-pose is
-//     undecided. certified: f's coefficients in intervals of doubles
-//     enclosing the exact A_k, B_k, the exact expansion where a sign is
+//     undecided. certified: those coefficients in intervals of doubles
+//     enclosing the exact values, the exact expansion where a sign is
 //     uncertain (the exact status of the animation). exact: rationals.
 //     When separate, a new plane is built by 000 section 3
 //     (kernel/separating_plane.hpp) in double from the world matrices and
