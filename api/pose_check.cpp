@@ -526,7 +526,7 @@ class PoseStages {
     general_.clear();
     for (std::size_t t : rest_) (fast_pair(tasks[t]) ? fast_ : general_).push_back(t);
     prepare(fast_, 1 | 8);
-    prepare(general_, exact_ ? 1 | 4 : 1);
+    prepare(general_, 1);
     parallel_for(rest_.size(), opt_.threads, 128,
                  [&](std::size_t u) { outcome_[rest_[u]].status = static_status_of(tasks[rest_[u]]); });
   }
@@ -535,7 +535,9 @@ class PoseStages {
     constexpr int d = H - 1;
     const BodyCache<H>& ca = cache_[task.a];
     const BodyCache<H>& cb = cache_[task.b];
-    if (exact_) return generic_status<Rational, H>(ca.ar, cb.ar);
+    if (exact_)
+      return generic_status<Rational, H>(
+          shapes_.Qr[task.a], relative_quadric<Rational, H>(ca.mr, cb.mr, shapes_.Qr[task.b], shapes_.diag[task.b]));
     if (fast_pair(task)) {
       const auto& axa = *shapes_.axes[task.a];
       const auto& axb = *shapes_.axes[task.b];
@@ -551,8 +553,8 @@ class PoseStages {
     const auto& pa = anim_.bodies[task.a].poses[k_];
     const auto& pb = anim_.bodies[task.b].poses[k_];
     return generic_status<Rational, H>(
-        world_at_pose<Rational, H>(pose_matrix<Rational, H>(pa), shapes_.Qr[task.a], shapes_.diag[task.a]),
-        world_at_pose<Rational, H>(pose_matrix<Rational, H>(pb), shapes_.Qr[task.b], shapes_.diag[task.b]));
+        shapes_.Qr[task.a], relative_quadric<Rational, H>(pose_matrix<Rational, H>(pa), pose_matrix<Rational, H>(pb),
+                                                          shapes_.Qr[task.b], shapes_.diag[task.b]));
   }
 
   // Pass 3: a new plane for each pair found separate (000 section 3), kept for the next pose.

@@ -36,7 +36,8 @@
 //     status only where the error bound decides it, else the pair-pose is
 //     undecided. certified: those coefficients in intervals of doubles
 //     enclosing the exact values, the exact expansion where a sign is
-//     uncertain (the exact status of the animation). exact: rationals.
+//     uncertain (the exact status of the animation). exact: rationals (in a's
+//     frame too).
 //     When separate, a new plane is built by 000 section 3
 //     (kernel/separating_plane.hpp) in double from the world matrices and
 //     kept for the next pose, unchecked until then (the check is the proof).
