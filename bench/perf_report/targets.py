@@ -23,26 +23,26 @@ _POSE_DOUBLE = (
     "from the file, with the plane proved by a static bound (number/static_bound.hpp) about the rounded poses as the "
     "static test already is: a change of what the double face's planes claim, not a tuning step")
 _POSE_CERTIFIED = (
-    "What dominates (`perf record` of `poses/table1 0.1 rad, certified`): f's coefficients in intervals from the "
-    "world quadrics (`characteristic_coefficients_in<Interval>` 15 %, interval products 9 %), entering the exact "
-    "rationals into intervals (GMP's comparisons and `interval_of`, about 15 %), the interval poses "
-    "(`complete_body` 7 %), the planes' roots (4 %). Every status is proved about the exact poses, so the numbers "
-    "enter as enclosures and the status is expanded in intervals; 1 µs needs the relative frame of the double "
-    "filter (kernel/static_filter3d.hpp: b in a's unit frame) in intervals instead of two world quadrics, a new "
-    "certified static path")
+    "What dominates (`perf record` of `poses/table1 0.1 rad, certified`, with the status in a's body frame): f's "
+    "coefficients by the generic 4x4 expansion in intervals (`characteristic_coefficients_in<Interval>` 20 %, "
+    "interval products 10 %), the interval poses (`complete_body` 9 %), the kept plane's check (6 %), entering the "
+    "exact rationals into intervals (GMP's comparisons and `interval_of`, about 7 %) and the planes' roots (4 %). "
+    "Every status is proved about the exact poses, so the numbers enter as enclosures and f is expanded in "
+    "intervals; 1 µs needs Appendix A's closed form (kernel/fast_quartic.hpp: 40 products instead of the "
+    "expansion) in intervals for axis-aligned shapes, with the semi-axes' square roots enclosed, a new certified "
+    "static path")
 POSE_NOTES = {
     ("table1 0.1 rad", "double"): _POSE_DOUBLE,
     ("table2 main orbit", "double"): _POSE_DOUBLE,
     ("table1 0.1 rad", "certified"): _POSE_CERTIFIED,
     ("table2 main orbit", "certified"): _POSE_CERTIFIED,
     ("boxers", "certified"): (
-        "What dominates (`perf record --call-graph dwarf` of the row): the exact expansion over rationals "
-        "(`generic_status<mpq_class>`) 51 % of the row, and the run's set-up of every body's exact quadric and "
-        "adjugate (`body_shapes` 15 %). Of the 6,336 pair-poses, 6,290 are settled by the bounding spheres and 4 by "
-        "kept planes; the 42 static tests take the interval status from f's coefficients expanded from the two "
-        "world quadrics, and where it is uncertain the exact one: the profile says most of them go exact "
-        "(bodies away from the origin make the world quadrics' expansion cancel, and the enclosures widen). The "
-        "route is the certified row above's: the status in a's unit frame in intervals, exact only at true touches"),
+        "What dominates (`perf record` of the row): GMP's gcd (about 40 % of the samples with its callers), i.e. the "
+        "exact expansion over rationals where the interval status is uncertain (5 of the 42 static tests per run, "
+        "after the status moved to a's body frame; 9 in the world frame), and the run's set-up of every body's "
+        "exact quadric and adjugate (`body_shapes`). Of the 6,336 pair-poses, 6,290 are settled by the bounding "
+        "spheres and 4 by kept planes. Below: those 5 decided without rationals, i.e. the interval status by "
+        "Appendix A's closed form (the table rows' note) or a fraction-free integer expansion"),
 }
 
 TARGETS = [
