@@ -4,6 +4,7 @@
 #include "api/static_status.hpp"
 #include "api/sweep_and_prune.hpp"
 #include "kernel/characteristic_polynomial.hpp"
+#include "kernel/fast_quartic.hpp"
 #include "kernel/keyframe_motion.hpp"
 #include "kernel/plane_frame_check.hpp"
 #include "kernel/quartic_status.hpp"
@@ -19,6 +20,7 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <thread>
 #include <unordered_map>
@@ -213,6 +215,22 @@ Status generic_status(const Matrix<T, H>& a, const Matrix<T, H>& b) {
     return cubic_contact_status(g[3], g[2], g[1], g[0]);
   else
     return quartic_contact_status(g);
+}
+
+// The status of a = Q_a (a's own quadric, diagonal when diag_a) against b given in a's body frame: for a diagonal
+// ellipsoid diag(q0, q1, q2, q3), q3 < 0, by 001 Appendix A's closed form (kernel/fast_quartic.hpp) on
+// diag(q0, q1, q2, q3) / (-q3) = diag(ea, eb, ec, -1), a positive multiple (the roots scale by -q3 > 0: the same
+// status), in 40 products instead of the generic expansion; otherwise the generic expansion.
+template <class T, int H>
+Status status_in_a_frame(const Matrix<T, H>& qa, bool diag_a, const Matrix<T, H>& b) {
+  if constexpr (H == 4) {
+    if (diag_a && sign(qa[3][3]) == Sign::negative) {
+      const T s = T(0) - qa[3][3];
+      const std::array<T, 5> g = appendix_a_coefficients<T>(T(qa[0][0] / s), T(qa[1][1] / s), T(qa[2][2] / s), b);
+      return quartic_contact_status(std::span<const T>(g.data(), g.size()));
+    }
+  }
+  return generic_status<T, H>(qa, b);
 }
 
 template <int H>
@@ -536,8 +554,9 @@ class PoseStages {
     const BodyCache<H>& ca = cache_[task.a];
     const BodyCache<H>& cb = cache_[task.b];
     if (exact_)
-      return generic_status<Rational, H>(
-          shapes_.Qr[task.a], relative_quadric<Rational, H>(ca.mr, cb.mr, shapes_.Qr[task.b], shapes_.diag[task.b]));
+      return status_in_a_frame<Rational, H>(
+          shapes_.Qr[task.a], shapes_.diag[task.a],
+          relative_quadric<Rational, H>(ca.mr, cb.mr, shapes_.Qr[task.b], shapes_.diag[task.b]));
     if (fast_pair(task)) {
       const auto& axa = *shapes_.axes[task.a];
       const auto& axb = *shapes_.axes[task.b];
@@ -546,8 +565,9 @@ class PoseStages {
       else
         return static_status(Ellipse{axa, ca.pose}, Ellipse{axb, cb.pose}, opt_.solve.arith);
     }
-    const Status status = generic_status<Interval, H>(
-        shapes_.Qi[task.a], relative_quadric<Interval, H>(ca.mi, cb.mi, shapes_.Qi[task.b], shapes_.diag[task.b]));
+    const Status status = status_in_a_frame<Interval, H>(
+        shapes_.Qi[task.a], shapes_.diag[task.a],
+        relative_quadric<Interval, H>(ca.mi, cb.mi, shapes_.Qi[task.b], shapes_.diag[task.b]));
     if (status != Status::uncertain || kind_ != Arithmetic::Certified) return status;
     // Certified: the exact status.
     const auto& pa = anim_.bodies[task.a].poses[k_];

@@ -32,7 +32,8 @@
 //     `eccd solve --arith double` rounds a scene) when the shape is
 //     axis-aligned and centred, otherwise f's coefficients in intervals (in
 //     a's body frame: det(μ Q_a - Rᵀ Q_b R), R = adj(M'_b) M'_a, whose roots
-//     are positive multiples of f's, so the same status); a
+//     are positive multiples of f's, so the same status; for a diagonal Q_a
+//     by 001 Appendix A's closed form, kernel/fast_quartic.hpp); a
 //     status only where the error bound decides it, else the pair-pose is
 //     undecided. certified: those coefficients in intervals of doubles
 //     enclosing the exact values, the exact expansion where a sign is
