@@ -25,6 +25,7 @@
 #include <mpfr.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
@@ -94,6 +95,15 @@ inline std::string decimal_string(const mpq_class& q, int digits = 20) {
   mpfr_free_str(s);
   mpfr_clear(r);
   return out;
+}
+
+// A double for display with 17 significant digits (round-trips): the string decimal_string(mpq_class(x), 17)
+// gives, by the C library (correctly rounded, as MPFR's), without the 256-bit detour; -0 prints as 0, as a
+// rational would.
+inline std::string decimal_string_of_double(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x == 0 ? 0.0 : x);
+  return buf;
 }
 
 // The double nearest to an exact rational (rounded to nearest: scalar_traits<double>::from_rational, the one

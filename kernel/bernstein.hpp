@@ -278,7 +278,7 @@ Bern<T> operator*(int s, const Bern<T>& x) {
 // Product in Bernstein form: c_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) a_i b_j.
 template <class T>
 Bern<T> operator*(const Bern<T>& x, const Bern<T>& y) {
-  check_deadline("polynomial product");  // as Poly<T>::operator* (kernel/polynomial.hpp)
+  check_deadline_product(x.b.size() * y.b.size());  // as Poly<T>::operator* (kernel/polynomial.hpp)
   int m = x.degree(), n = y.degree();
   const T& like = x.b.front();
   const std::vector<T>& cm = binomial_row(m, like);

@@ -7,7 +7,9 @@
 // (eccd::solve, the harness, certify, regress, report), with a
 // `ScopedDeadline` on the running thread; the loops of the pipelines ask
 // `deadline_passed()` (one clock read: an iteration of an MPFR loop can take
-// milliseconds, so no call is skipped) and
+// milliseconds, so no call is skipped; only a small polynomial product, well
+// under a microsecond, reads the flag an earlier check set instead of the
+// clock: check_deadline_product) and
 //   - a floating pipeline stops refining and reports the part of [0, 1] it has
 //     not resolved as undecided, with the reason "time budget" (never a guess);
 //   - the exact pipeline, which has nothing honest to say about a part it has
@@ -28,6 +30,7 @@
 // No paper section: this is the workbench's own contract with its users.
 // Requirements on T: none (not templated).
 #include <chrono>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <time.h>
@@ -125,6 +128,15 @@ inline std::string deadline_reason() {
 // For code that cannot report "undecided" (the exact pipeline): throws once the deadline passed.
 inline void check_deadline(const char* where) {
   if (deadline_passed()) throw BudgetExhausted(std::string(where) + ": " + deadline_reason());
+}
+
+// The check of a polynomial product of `work` coefficient products: as check_deadline, except that a small
+// product (fewer than 64 coefficient products, well under a microsecond in double) reads no clock and only
+// throws once another check has seen the deadline pass; a clock read would cost it a tenth of its time, and
+// the loops around small products (subdivision, root refinement) check the clock themselves.
+inline void check_deadline_product(std::size_t work) {
+  if (work < 64 ? detail::deadline_state().passed : deadline_passed())
+    throw BudgetExhausted(std::string("polynomial product: ") + deadline_reason());
 }
 
 }  // namespace eccd

@@ -132,7 +132,7 @@ ContactPoint contact_point(const PolyMatrix<T, 3>& a, const PolyMatrix<T, 3>& b,
   for (int i = 0; i < 2; ++i) n[i] = to_double(T(a[i][0](t) * x + a[i][1](t) * y + a[i][2](t)));
   const double len = std::hypot(n[0], n[1]);
   if (len > 0 && std::isfinite(len))
-    cp.normal = {decimal_string(mpq_class(n[0] / len), 17), decimal_string(mpq_class(n[1] / len), 17)};
+    cp.normal = {decimal_string_of_double(n[0] / len), decimal_string_of_double(n[1] / len)};
   return cp;
 }
 

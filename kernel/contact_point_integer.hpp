@@ -194,7 +194,7 @@ inline ContactPoint contact_point_integer(const PolyMatrix<mpq_class, 3>& a, con
   }
   const double len = std::hypot(n[0], n[1]);
   if (len > 0 && std::isfinite(len))
-    cp.normal = {decimal_string(mpq_class(n[0] / len), 17), decimal_string(mpq_class(n[1] / len), 17)};
+    cp.normal = {decimal_string_of_double(n[0] / len), decimal_string_of_double(n[1] / len)};
   return cp;
 }
 

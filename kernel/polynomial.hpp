@@ -91,9 +91,9 @@ struct Poly {
   }
   // A product is where building f, Δ or a subresultant spends its time (degree
   // up to 432 in 3D, millions of MPFR operations): it asks the run's deadline
-  // (kernel/budget.hpp) and throws BudgetExhausted once it has passed.
+  // (kernel/budget.hpp check_deadline_product) and throws BudgetExhausted once it has passed.
   friend Poly operator*(const Poly& a, const Poly& b) {
-    check_deadline("polynomial product");
+    check_deadline_product(a.c.size() * b.c.size());
     Poly r;
     if (a.c.empty() || b.c.empty()) return r;
     if constexpr (std::is_same_v<T, mpq_class>) {

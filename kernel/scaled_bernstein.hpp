@@ -72,7 +72,7 @@ ScaledBern<T> operator*(int k, ScaledBern<T> x) {
 }
 template <class T>
 ScaledBern<T> operator*(const ScaledBern<T>& x, const ScaledBern<T>& y) {
-  check_deadline("polynomial product");  // as Poly<T>::operator* (kernel/polynomial.hpp)
+  check_deadline_product(x.s.size() * y.s.size());  // as Poly<T>::operator* (kernel/polynomial.hpp)
   ScaledBern<T> r;
   r.s.assign(x.s.size() + y.s.size() - 1, T(0));
   for (std::size_t i = 0; i < x.s.size(); ++i)
