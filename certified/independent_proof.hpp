@@ -116,6 +116,7 @@
 #include <mpfi.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -338,7 +339,13 @@ class EndProver {
              : sys.kind == "free" ? "F does not depend on " + other
                                   : "on " + sys.kind) +
             ")";
-    std::string last_fail;  // the last failed condition, said once
+    // each rung's failed condition, one entry per distinct cause with the rungs (half-widths in strip widths)
+    std::vector<std::pair<std::string, std::string>> fails;
+    auto fail = [&fails](const std::string& cause, int f, const std::string& where = "") {
+      auto it = std::find_if(fails.begin(), fails.end(), [&](const auto& c) { return c.first == cause; });
+      if (it == fails.end()) it = fails.insert(fails.end(), {cause, ""});
+      it->second += (it->second.empty() ? "" : "; ") + std::to_string(f) + (where.empty() ? "" : " near " + where);
+    };
     // the (u, t) half-width of X: the fold's branch of F = F_u = 0 spreads ~sqrt(w) in t across the strip, and
     // Krawczyk's test needs X small: a ladder from wide to narrow
     for (const int f : {1024, 256, 64, 16, 4, 1}) {
@@ -355,7 +362,10 @@ class EndProver {
       }
       Box K;
       ++krawczyk_tests;
-      if (!krawczyk(nets_, sys, X, K)) continue;
+      if (!krawczyk(nets_, sys, X, K)) {
+        fail("K(X) is not inside X", f);
+        continue;
+      }
       // the (u, t) box that the exclusion leaves to X, and the conditions that make C meet it in the zero only
       mpq_class xu0 = X.lo[0], xu1 = X.hi[0], xt0, xt1;
       std::array<I, 3> region{I(X.lo[0], X.hi[0], bits), I(lo, hi, bits), I(mpq_class(0), bits)};
@@ -373,7 +383,7 @@ class EndProver {
         const bool ft =
             one_sign(nets_.eval({0, 0, 1}, region)) || (q && one_sign((*q)(region[0], region[1], region[2])));
         if (!ft || !one_sign(nets_.eval({2, 0, 0}, region))) {
-          last_fail = ": F_" + other + " or F_uu changes sign near that end of the path";
+          fail("F_" + other + " or F_uu changes sign near that end of the path", f);
           continue;
         }
       } else {
@@ -382,13 +392,13 @@ class EndProver {
         region[1] = I(X.lo[1], X.hi[1], bits);
         region[2] = I(xt0, xt1, bits);
         if (sgn(xt0) <= 0 || xt1 >= 1 || sign(nets_.eval({2, 0, 0}, region)) != Sign::negative) {
-          last_fail = ": F_uu is not proved < 0 there (a degenerate touch?)";
+          fail("F_uu is not proved < 0 there (a degenerate touch?)", f);
           continue;
         }
       }
       std::string ex = exclude(lo, hi, xu0, xu1, xt0, xt1);
       if (!ex.empty()) {
-        last_fail = ": " + ex;
+        fail(ex, f, ex == "another possible extreme point could not be excluded" ? stuck_at_ : "");
         continue;
       }
       // tighten: X <- K(X) ∩ X keeps the unique zero
@@ -410,12 +420,14 @@ class EndProver {
           ", the rest of the strip excluded in " + std::to_string(last_boxes_) + " boxes";
       return r;
     }
-    r.why += last_fail;
+    for (std::size_t i = 0; i < fails.size(); ++i)
+      r.why += (i ? "; " : ": ") + fails[i].first + " (X's half-width in strip widths: " + fails[i].second + ")";
     return r;
   }
 
   long last_boxes_ = 0;
-  long budget_end_ = 0;  // exclusion boxes allowed up to here for the current end
+  std::string stuck_at_;  // where the last exclusion that could not close stopped
+  long budget_end_ = 0;   // exclusion boxes allowed up to here for the current end
 
   static bool one_sign(const I& x) {
     const Sign s = sign(x);
@@ -440,9 +452,10 @@ class EndProver {
     if (e.status == ExclusionResult::too_many_boxes)
       return "the exclusion of other extreme points needed more than " + std::to_string(opt_.max_boxes) + " boxes";
     if (e.status == ExclusionResult::deadline) return deadline_reason();
-    if (e.status == ExclusionResult::stuck)
-      return "another possible extreme point near u = " + decimal_string(e.u0, 8) + ", " +
-             std::string("other parameter = ") + decimal_string(e.t0, 8) + " could not be excluded";
+    if (e.status == ExclusionResult::stuck) {
+      stuck_at_ = "u = " + decimal_string(e.u0, 8) + ", other parameter = " + decimal_string(e.t0, 8);
+      return "another possible extreme point could not be excluded";
+    }
     return "";
   }
 };
