@@ -65,6 +65,14 @@
 //     in (or the reverse) P_s ∩ [lo, hi] is [s_p, hi] (or [lo, s_p]): exactly
 //     one end. Its bracket is K's s-range (Krawczyk iterated on X ∩ K(X),
 //     which keeps the zero) intersected with [lo, hi], rational end points.
+//     d. when a-c fail on [lo, hi], the run is narrowed (narrowed_run: the
+//        strip proofs of step 2 once more inside it, strips down to 1/16 of
+//        its width) and a-c are tried on the run that remains. Where the
+//        fold is flat in t (G = max_u F, |G_tt| small against |G_st|), the
+//        points with G_t = 0 sweep |G_st / G_tt| run widths of t across the
+//        run: X's t-range must cover that sweep for c to close, while
+//        Krawczyk's test needs X small against G_tt. The narrower run
+//        shrinks the sweep; its proved sides are strips like any other.
 //  4. P_t: the same on F with s and t exchanged (TriBern::swap_st).
 // What is not claimed: a run between two proved-out values (a touch, a near
 // miss or a meeting narrower than the strips) or two proved-in values (a
@@ -122,6 +130,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -144,6 +153,10 @@ struct IndependentProofOptions {
   long max_boxes = 20000;  // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
   int max_box_depth = 36;
   bool record = false;  // keep the proof (strip witness boxes, Krawczyk boxes) in the result: for the certificate
+  // an end not proved on its run: the run's strips once more, down to 2^-narrow_depth of its width
+  // (narrowed_run; 0: never), within this many box tests
+  int narrow_depth = 4;
+  long narrow_tests = 200000;
 };
 
 // What a proof of one projection consists of, for the certificate (certificate/write/independent_certificate.hpp).
@@ -460,6 +473,79 @@ class EndProver {
   }
 };
 
+// A run whose end was not proved: the strip proofs of the localisation once more inside it, on the
+// net restricted to the run (MPFI), down to strips 2^-narrow_depth of its width. The extreme point's
+// system has the run's whole range of the proof's parameter in its box X, and where the fold is flat
+// in the other parameter (G_ss small against G_st, G = max_u F) the points with G_s = 0 sweep a range
+// of it many times the run's width: X's other range must cover that sweep for the exclusion to close,
+// and Krawczyk's test needs X small against G_ss. A narrower run shrinks the sweep with it. The pieces
+// (absolute, in order) when they are proved pieces of status `before`, one run of unknown ones, proved
+// pieces of status `after`; else nothing (the run is left as it was).
+inline std::optional<std::vector<Piece>> narrowed_run(const TriBern<I>& F, const mpq_class& lo, const mpq_class& hi,
+                                                      Strip before, Strip after, const IndependentProofOptions& opt,
+                                                      long& tests) {
+  IndependentOptions o = opt.localise;
+  o.strip_depth = opt.narrow_depth;
+  o.s_depth = 0;
+  // the sub-strips lie deeper than the localisation's strips: their u- and t-pieces go at least as deep as
+  // those of its last strips
+  o.min_limit = std::max(o.min_limit, opt.localise.strip_depth / 2 + o.extra_depth);
+  o.max_tests = opt.narrow_tests;
+  // the restricted net in MPFI, then each coefficient's enclosure widened outwards to doubles (the
+  // localisation's arithmetic: an enclosure of the same exact sub-net, the same proofs, far cheaper)
+  const TriBern<I> sub = restrict_axis(F, 1, lo, hi, opt.bits);
+  TriBern<Interval> subd;
+  subd.n = sub.n;
+  for (const I& c : sub.c) subd.c.push_back(Enclose<Interval>::hull(lower(c), upper(c), 0));
+  independent_subdivision::Projector<Interval> proj(o, subd.c[0]);
+  proj.record = opt.record;
+  std::vector<Piece> ps = proj.project(subd);
+  tests += proj.tests;
+  const mpq_class w = hi - lo;
+  for (auto& p : ps) {
+    p.lo = lo + w * p.lo;
+    p.hi = lo + w * p.hi;
+  }
+  std::size_t i = 0;
+  while (i < ps.size() && ps[i].status == before) ++i;
+  if (i == ps.size() || ps[i].status != Strip::unknown || !ps[i].examined) return std::nullopt;
+  for (std::size_t j = i + 1; j < ps.size(); ++j)
+    if (ps[j].status != after) return std::nullopt;
+  return ps;
+}
+
+// The end in the run [lo, hi]: proved there, or on the narrower run that narrowed_run leaves. `run` is the
+// run the proof is about; `pieces` (when narrowed) the pieces that replace [lo, hi].
+inline EndProof prove_end(EndProver& prover, const TriBern<I>& F, const mpq_class& lo, const mpq_class& hi,
+                          Strip before, Strip after, const std::string& var, const IndependentProofOptions& opt,
+                          long& tests, std::pair<mpq_class, mpq_class>& run, std::vector<Piece>& pieces) {
+  run = {lo, hi};
+  EndProof e = prover.prove(lo, hi, var);
+  if (e.proved || opt.narrow_depth <= 0) return e;
+  const auto sub = narrowed_run(F, lo, hi, before, after, opt, tests);
+  if (!sub) return e;
+  const auto u = std::find_if(sub->begin(), sub->end(), [](const Piece& p) { return p.status == Strip::unknown; });
+  EndProof e2 = prover.prove(u->lo, u->hi, var);
+  if (!e2.proved) {
+    e.why += "; on the narrower run " + var + " in [" + decimal_string(u->lo, 12) + ", " + decimal_string(u->hi, 12) +
+             "] (its sides proved by finer strips): " + e2.why;
+    return e;
+  }
+  run = {u->lo, u->hi};
+  pieces = *sub;
+  e2.how += " (the run " + var + " in [" + decimal_string(lo, 12) + ", " + decimal_string(hi, 12) +
+            "] narrowed by finer strips)";
+  return e2;
+}
+
+// The recorded pieces with the run `run` replaced by its finer pieces (narrowed_run).
+inline void splice_run(std::vector<Piece>& pieces, const Piece& run, const std::vector<Piece>& finer) {
+  const auto at =
+      std::find_if(pieces.begin(), pieces.end(), [&](const Piece& q) { return q.lo == run.lo && q.hi == run.hi; });
+  if (at == pieces.end()) throw std::logic_error("independent proof: a narrowed run not among the pieces");
+  pieces.insert(pieces.erase(at), finer.begin(), finer.end());
+}
+
 // Neighbouring pieces of one status as one piece (examined only if both were).
 inline std::vector<Piece> merge_equal_neighbours(const std::vector<Piece>& pieces) {
   std::vector<Piece> m;
@@ -539,13 +625,17 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
       pending = hi_end;
       continue;
     }
-    EndProof e = prover.prove(p.lo, p.hi, v);
+    std::pair<mpq_class, mpq_class> run;
+    std::vector<Piece> finer;  // the run's pieces when its end was proved on a narrower run
+    EndProof e = prove_end(prover, F, p.lo, p.hi, before, after, v, opt, tests, run, finer);
     Instant end;
     if (e.proved) {
       end = bracketed_instant((e.lo + e.hi) / 2, e.lo, e.hi);
       res.proofs.push_back(e.how);
-      if (opt.record)
-        rec.ends.push_back(IndependentEndRecord{p.lo, p.hi, e.system, e.chain_lo, e.chain_hi, e.lo, e.hi});
+      if (opt.record) {
+        rec.ends.push_back(IndependentEndRecord{run.first, run.second, e.system, e.chain_lo, e.chain_hi, e.lo, e.hi});
+        if (!finer.empty()) splice_run(rec.pieces, p, finer);
+      }
     } else {
       undecided(p.lo, p.hi,
                 "an end of the " + v + "-intervals lies here (" + v + " = " + decimal_string(p.lo, 12) + " proved " +
