@@ -65,6 +65,14 @@
 //     in (or the reverse) P_s ∩ [lo, hi] is [s_p, hi] (or [lo, s_p]): exactly
 //     one end. Its bracket is K's s-range (Krawczyk iterated on X ∩ K(X),
 //     which keeps the zero) intersected with [lo, hi], rational end points.
+//     d. when a-c fail on [lo, hi], the run is narrowed (narrowed_run: the
+//        strip proofs of step 2 once more inside it, strips down to 1/16 of
+//        its width) and a-c are tried on the run that remains. Where the
+//        fold is flat in t (G = max_u F, |G_tt| small against |G_st|), the
+//        points with G_t = 0 sweep |G_st / G_tt| run widths of t across the
+//        run: X's t-range must cover that sweep for c to close, while
+//        Krawczyk's test needs X small against G_tt. The narrower run
+//        shrinks the sweep; its proved sides are strips like any other.
 //  4. P_t: the same on F with s and t exchanged (TriBern::swap_st).
 // What is not claimed: a run between two proved-out values (a touch, a near
 // miss or a meeting narrower than the strips) or two proved-in values (a
@@ -116,11 +124,13 @@
 #include <mpfi.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -143,6 +153,10 @@ struct IndependentProofOptions {
   long max_boxes = 20000;  // exclusion boxes per box X, 3x that per end (a proved end needed 60 to 300 in the cases)
   int max_box_depth = 36;
   bool record = false;  // keep the proof (strip witness boxes, Krawczyk boxes) in the result: for the certificate
+  // an end not proved on its run: the run's strips once more, down to 2^-narrow_depth of its width
+  // (narrowed_run; 0: never), within this many box tests
+  int narrow_depth = 4;
+  long narrow_tests = 200000;
 };
 
 // What a proof of one projection consists of, for the certificate (certificate/write/independent_certificate.hpp).
@@ -338,7 +352,13 @@ class EndProver {
              : sys.kind == "free" ? "F does not depend on " + other
                                   : "on " + sys.kind) +
             ")";
-    std::string last_fail;  // the last failed condition, said once
+    // each rung's failed condition, one entry per distinct cause with the rungs (half-widths in strip widths)
+    std::vector<std::pair<std::string, std::string>> fails;
+    auto fail = [&fails](const std::string& cause, int f, const std::string& where = "") {
+      auto it = std::find_if(fails.begin(), fails.end(), [&](const auto& c) { return c.first == cause; });
+      if (it == fails.end()) it = fails.insert(fails.end(), {cause, ""});
+      it->second += (it->second.empty() ? "" : "; ") + std::to_string(f) + (where.empty() ? "" : " near " + where);
+    };
     // the (u, t) half-width of X: the fold's branch of F = F_u = 0 spreads ~sqrt(w) in t across the strip, and
     // Krawczyk's test needs X small: a ladder from wide to narrow
     for (const int f : {1024, 256, 64, 16, 4, 1}) {
@@ -355,7 +375,10 @@ class EndProver {
       }
       Box K;
       ++krawczyk_tests;
-      if (!krawczyk(nets_, sys, X, K)) continue;
+      if (!krawczyk(nets_, sys, X, K)) {
+        fail("K(X) is not inside X", f);
+        continue;
+      }
       // the (u, t) box that the exclusion leaves to X, and the conditions that make C meet it in the zero only
       mpq_class xu0 = X.lo[0], xu1 = X.hi[0], xt0, xt1;
       std::array<I, 3> region{I(X.lo[0], X.hi[0], bits), I(lo, hi, bits), I(mpq_class(0), bits)};
@@ -373,7 +396,7 @@ class EndProver {
         const bool ft =
             one_sign(nets_.eval({0, 0, 1}, region)) || (q && one_sign((*q)(region[0], region[1], region[2])));
         if (!ft || !one_sign(nets_.eval({2, 0, 0}, region))) {
-          last_fail = ": F_" + other + " or F_uu changes sign near that end of the path";
+          fail("F_" + other + " or F_uu changes sign near that end of the path", f);
           continue;
         }
       } else {
@@ -382,13 +405,13 @@ class EndProver {
         region[1] = I(X.lo[1], X.hi[1], bits);
         region[2] = I(xt0, xt1, bits);
         if (sgn(xt0) <= 0 || xt1 >= 1 || sign(nets_.eval({2, 0, 0}, region)) != Sign::negative) {
-          last_fail = ": F_uu is not proved < 0 there (a degenerate touch?)";
+          fail("F_uu is not proved < 0 there (a degenerate touch?)", f);
           continue;
         }
       }
       std::string ex = exclude(lo, hi, xu0, xu1, xt0, xt1);
       if (!ex.empty()) {
-        last_fail = ": " + ex;
+        fail(ex, f, ex == "another possible extreme point could not be excluded" ? stuck_at_ : "");
         continue;
       }
       // tighten: X <- K(X) ∩ X keeps the unique zero
@@ -410,12 +433,14 @@ class EndProver {
           ", the rest of the strip excluded in " + std::to_string(last_boxes_) + " boxes";
       return r;
     }
-    r.why += last_fail;
+    for (std::size_t i = 0; i < fails.size(); ++i)
+      r.why += (i ? "; " : ": ") + fails[i].first + " (X's half-width in strip widths: " + fails[i].second + ")";
     return r;
   }
 
   long last_boxes_ = 0;
-  long budget_end_ = 0;  // exclusion boxes allowed up to here for the current end
+  std::string stuck_at_;  // where the last exclusion that could not close stopped
+  long budget_end_ = 0;   // exclusion boxes allowed up to here for the current end
 
   static bool one_sign(const I& x) {
     const Sign s = sign(x);
@@ -440,12 +465,86 @@ class EndProver {
     if (e.status == ExclusionResult::too_many_boxes)
       return "the exclusion of other extreme points needed more than " + std::to_string(opt_.max_boxes) + " boxes";
     if (e.status == ExclusionResult::deadline) return deadline_reason();
-    if (e.status == ExclusionResult::stuck)
-      return "another possible extreme point near u = " + decimal_string(e.u0, 8) + ", " +
-             std::string("other parameter = ") + decimal_string(e.t0, 8) + " could not be excluded";
+    if (e.status == ExclusionResult::stuck) {
+      stuck_at_ = "u = " + decimal_string(e.u0, 8) + ", other parameter = " + decimal_string(e.t0, 8);
+      return "another possible extreme point could not be excluded";
+    }
     return "";
   }
 };
+
+// A run whose end was not proved: the strip proofs of the localisation once more inside it, on the
+// net restricted to the run (MPFI), down to strips 2^-narrow_depth of its width. The extreme point's
+// system has the run's whole range of the proof's parameter in its box X, and where the fold is flat
+// in the other parameter (G_ss small against G_st, G = max_u F) the points with G_s = 0 sweep a range
+// of it many times the run's width: X's other range must cover that sweep for the exclusion to close,
+// and Krawczyk's test needs X small against G_ss. A narrower run shrinks the sweep with it. The pieces
+// (absolute, in order) when they are proved pieces of status `before`, one run of unknown ones, proved
+// pieces of status `after`; else nothing (the run is left as it was).
+inline std::optional<std::vector<Piece>> narrowed_run(const TriBern<I>& F, const mpq_class& lo, const mpq_class& hi,
+                                                      Strip before, Strip after, const IndependentProofOptions& opt,
+                                                      long& tests) {
+  IndependentOptions o = opt.localise;
+  o.strip_depth = opt.narrow_depth;
+  o.s_depth = 0;
+  // the sub-strips lie deeper than the localisation's strips: their u- and t-pieces go at least as deep as
+  // those of its last strips
+  o.min_limit = std::max(o.min_limit, opt.localise.strip_depth / 2 + o.extra_depth);
+  o.max_tests = opt.narrow_tests;
+  // the restricted net in MPFI, then each coefficient's enclosure widened outwards to doubles (the
+  // localisation's arithmetic: an enclosure of the same exact sub-net, the same proofs, far cheaper)
+  const TriBern<I> sub = restrict_axis(F, 1, lo, hi, opt.bits);
+  TriBern<Interval> subd;
+  subd.n = sub.n;
+  for (const I& c : sub.c) subd.c.push_back(Enclose<Interval>::hull(lower(c), upper(c), 0));
+  independent_subdivision::Projector<Interval> proj(o, subd.c[0]);
+  proj.record = opt.record;
+  std::vector<Piece> ps = proj.project(subd);
+  tests += proj.tests;
+  const mpq_class w = hi - lo;
+  for (auto& p : ps) {
+    p.lo = lo + w * p.lo;
+    p.hi = lo + w * p.hi;
+  }
+  std::size_t i = 0;
+  while (i < ps.size() && ps[i].status == before) ++i;
+  if (i == ps.size() || ps[i].status != Strip::unknown || !ps[i].examined) return std::nullopt;
+  for (std::size_t j = i + 1; j < ps.size(); ++j)
+    if (ps[j].status != after) return std::nullopt;
+  return ps;
+}
+
+// The end in the run [lo, hi]: proved there, or on the narrower run that narrowed_run leaves. `run` is the
+// run the proof is about; `pieces` (when narrowed) the pieces that replace [lo, hi].
+inline EndProof prove_end(EndProver& prover, const TriBern<I>& F, const mpq_class& lo, const mpq_class& hi,
+                          Strip before, Strip after, const std::string& var, const IndependentProofOptions& opt,
+                          long& tests, std::pair<mpq_class, mpq_class>& run, std::vector<Piece>& pieces) {
+  run = {lo, hi};
+  EndProof e = prover.prove(lo, hi, var);
+  if (e.proved || opt.narrow_depth <= 0) return e;
+  const auto sub = narrowed_run(F, lo, hi, before, after, opt, tests);
+  if (!sub) return e;
+  const auto u = std::find_if(sub->begin(), sub->end(), [](const Piece& p) { return p.status == Strip::unknown; });
+  EndProof e2 = prover.prove(u->lo, u->hi, var);
+  if (!e2.proved) {
+    e.why += "; on the narrower run " + var + " in [" + decimal_string(u->lo, 12) + ", " + decimal_string(u->hi, 12) +
+             "] (its sides proved by finer strips): " + e2.why;
+    return e;
+  }
+  run = {u->lo, u->hi};
+  pieces = *sub;
+  e2.how += " (the run " + var + " in [" + decimal_string(lo, 12) + ", " + decimal_string(hi, 12) +
+            "] narrowed by finer strips)";
+  return e2;
+}
+
+// The recorded pieces with the run `run` replaced by its finer pieces (narrowed_run).
+inline void splice_run(std::vector<Piece>& pieces, const Piece& run, const std::vector<Piece>& finer) {
+  const auto at =
+      std::find_if(pieces.begin(), pieces.end(), [&](const Piece& q) { return q.lo == run.lo && q.hi == run.hi; });
+  if (at == pieces.end()) throw std::logic_error("independent proof: a narrowed run not among the pieces");
+  pieces.insert(pieces.erase(at), finer.begin(), finer.end());
+}
 
 // Neighbouring pieces of one status as one piece (examined only if both were).
 inline std::vector<Piece> merge_equal_neighbours(const std::vector<Piece>& pieces) {
@@ -526,13 +625,17 @@ std::vector<std::pair<Instant, Instant>> proved_projection(const TriBern<Rationa
       pending = hi_end;
       continue;
     }
-    EndProof e = prover.prove(p.lo, p.hi, v);
+    std::pair<mpq_class, mpq_class> run;
+    std::vector<Piece> finer;  // the run's pieces when its end was proved on a narrower run
+    EndProof e = prove_end(prover, F, p.lo, p.hi, before, after, v, opt, tests, run, finer);
     Instant end;
     if (e.proved) {
       end = bracketed_instant((e.lo + e.hi) / 2, e.lo, e.hi);
       res.proofs.push_back(e.how);
-      if (opt.record)
-        rec.ends.push_back(IndependentEndRecord{p.lo, p.hi, e.system, e.chain_lo, e.chain_hi, e.lo, e.hi});
+      if (opt.record) {
+        rec.ends.push_back(IndependentEndRecord{run.first, run.second, e.system, e.chain_lo, e.chain_hi, e.lo, e.hi});
+        if (!finer.empty()) splice_run(rec.pieces, p, finer);
+      }
     } else {
       undecided(p.lo, p.hi,
                 "an end of the " + v + "-intervals lies here (" + v + " = " + decimal_string(p.lo, 12) + " proved " +
