@@ -22,12 +22,25 @@
 // an end s* of P_s the margin of F on a strip at distance ~w from s* is ~w,
 // while the hull's error over a t- or u-piece of width τ around the extreme
 // point is ~τ² (F is quadratic there), so pieces of width ~sqrt(w) suffice.
+// Within that limit the u-pieces of a t-piece of width 2^-e go at most
+// e + u_lead deep: the hull's error over the t-piece is then no longer
+// smaller than over the u-pieces, so finer u-pieces decide nothing that
+// halving the t-piece would not (a sub-box of a proved box is proved too);
+// the t-piece is split instead. Without that bound a t-piece too wide for
+// any proof would be searched in u down to the limit over the whole range
+// where F's sign changes: millions of box tests for one point near an end. A
+// t-piece at the depth limit, or one on which F does not depend on t (a net
+// of degree 0 there: its halves are the same piece), gets the full limit.
 // Strips stop at width 2^-strip_depth (2^-18): an end of P_s lies in a run of
 // unresolved strips between one proved in and one proved out. Inside that run
 // the end is then located by bisection on single values s = x (F restricted
 // to s = x, TriBern::at_s; the same tests with zero width in s, with finer t-
 // and u-pieces until the value is decided), down to 2^-s_depth (2^-34 =
-// 5.8e-11); a value that stays unknown (e.g. exactly at the end) is replaced
+// 5.8e-11). A value is first tried on the edges t = 0 and t = 1 alone
+// (F(u, x, 0) < 0 for every u proves x in): where the other path's end
+// holds the extreme point, the t with F < 0 for all u form a range only as
+// wide as the distance to the end, which the box search would have to
+// resolve in t. A value that stays unknown (e.g. exactly at the end) is replaced
 // by the two quarter points. One point test may use at most a tenth of the
 // run's box tests (point_share): a value too close to the end for the
 // arithmetic or the pieces' depth would otherwise use them all; a value that
@@ -70,6 +83,7 @@ struct IndependentOptions {
   int s_depth = 34;     // an end inside such a strip: bisection by point tests down to 2^-s_depth (the ends' tolerance)
   int min_limit = 4;    // ... and at least this deep (wide strips fail fast and are split: cheaper than deep pieces)
   int extra_depth = 2;  // t- and u-pieces of a strip at depth d: at most d/2 + extra_depth deep
+  int u_lead = 2;  // ... and the u-pieces of a t-piece at depth e at most e + u_lead deep (the depth limit at most)
   long max_tests = 40000000;  // u-box sign tests for the whole run (both projections; ~3e6 per second in double)
   // One point test may use at most max_tests / point_share box tests (at least 10000): a value closer to an end
   // than the arithmetic or the pieces' depth can tell apart would otherwise take the whole run's work.
@@ -208,19 +222,18 @@ class Projector {
     stack.clear();
   }
 
-  // The status of the single value s = x (F restricted to it): finer t- and u-pieces until decided
-  // (a value at distance d from an end needs pieces of ~sqrt(d), or ~d where the extreme is on t = 0 or 1).
+  // The status of the single value s = x (F restricted to it): the edges t = 0 and t = 1 alone (edge_in), then
+  // finer t- and u-pieces until decided (a value at distance d from an end needs pieces of ~sqrt(d), or t-pieces
+  // of ~d to prove it in where the extreme is on t = 0 or 1: the edge's own line proves that).
   // At most max_tests / point_share box tests (point_over() after the call says it used them all; the value is then
   // unknown and point_note says why).
   Strip point(const TriBern<T>& F, const mpq_class& x, int depth) {
     const TriBern<T> at = F.at_s(scalar_traits<T>::from_rational(x, half_));
     const long share = std::max(10000L, opt_.max_tests / std::max(1, opt_.point_share));
     point_limit_ = tests + share;
-    Strip r = Strip::unknown;
-    for (int lim = std::max(opt_.min_limit, depth / 2 + opt_.extra_depth);
-         r == Strip::unknown &&
-         lim <= std::min(depth + 4, std::max(opt_.min_limit, depth / 2 + opt_.extra_depth) + 8) && !stopped() &&
-         !point_over();
+    const int base = std::max(opt_.min_limit, depth / 2 + opt_.extra_depth);
+    Strip r = edge_in(at, std::min(depth + 4, base + 8)) ? Strip::in : Strip::unknown;
+    for (int lim = base; r == Strip::unknown && lim <= std::min(depth + 4, base + 8) && !stopped() && !point_over();
          lim += 2) {
       r = classify_strip(at, lim);
       ++points;
@@ -232,6 +245,20 @@ class Projector {
     }
     point_limit_ = std::numeric_limits<long>::max();
     return r;
+  }
+  // The value's net `at` proved in on one of the edges t = 0 or t = 1 alone: F(u, x, t_e) < 0 for every u
+  // (u-pieces down to 2^-u_limit). Where the other path's end holds the extreme point, the t with F < 0 for
+  // all u form a range of width ~ the distance to the end, against ~ its square root at a fold: the box
+  // search would need t-pieces that narrow, the edge's own line in u needs none.
+  bool edge_in(const TriBern<T>& at, int u_limit) {
+    for (const int k : {0, at.n[2]}) {
+      TriBern<T> line;
+      line.n = {at.n[0], 0, 0};
+      for (int i = 0; i <= at.n[0]; ++i) line.c.push_back(at.at(i, 0, k));
+      if (classify_u(line, u_limit) == -1) return true;
+      if (at.n[2] == 0) break;
+    }
+    return false;
   }
   long point_limit_ = std::numeric_limits<long>::max();  // the current point test's last box test
   bool point_over() const { return tests > point_limit_; }
@@ -309,7 +336,8 @@ class Projector {
       }
       auto [f, d, ti] = std::move(stack.back());
       stack.pop_back();
-      const int r = classify_u(f, limit);
+      const bool flat_t = f.n[2] == 0;  // F does not depend on t here: splitting t gives the same piece again
+      const int r = classify_u(f, flat_t ? limit : std::min(limit, d + opt_.u_lead));
       if (r == -1) {
         if (record) {
           witness_.clear();
@@ -324,7 +352,7 @@ class Projector {
         spare_.push_back(std::move(f));
         continue;
       }
-      if (d >= limit) {
+      if (d >= limit || flat_t) {
         unknown = true;
         spare_.push_back(std::move(f));
         continue;
