@@ -300,12 +300,33 @@ long box_tests(const Solution& s) {
 }
 }  // namespace
 
+namespace {
+// One floating run of `sc` (arithmetic `arith`, face `guard`) against the exact answer: nothing undecided, the same
+// collides and number of s-intervals, every end within 1e-9 of the exact pipeline's (proved brackets, each
+// narrower than 1e-9), at most 1 M box tests (a work count, not a time).
+void check_ends_located(const char* name, const Scene& sc, const Solution& exact, const char* arith,
+                        const char* guard) {
+  INFO(name << ", " << arith << ", guard " << guard);
+  SolveOptions o;
+  o.arith = parse_arithmetic(arith);
+  o.guard = parse_guard(guard);
+  const Solution s = solve(sc, o);
+  for (const auto& r : s.undecided_reasons) UNSCOPED_INFO("reason: " << r);
+  CHECK(s.answer.undecided.empty());
+  CHECK(s.answer.collides == exact.answer.collides);
+  CHECK(s.answer.s_intervals.size() == exact.answer.s_intervals.size());
+  const std::vector<double> want = ends_of(exact.answer), got = ends_of(s.answer);
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) CHECK(std::abs(got[i] - want[i]) <= 1e-9);
+  CHECK(box_tests(s) >= 0);
+  CHECK(box_tests(s) <= 1000000);
+}
+}  // namespace
+
 // The floating runs locate every end of cases/independent at a bounded cost (floating/independent_ccd.hpp: the
-// u-pieces of a t-piece at most u_lead deeper than it, the edges t = 0 and 1 tried alone): in double, both faces,
-// every end within 1e-9 of the exact pipeline's (proved brackets, each narrower than 1e-9), nothing undecided, and
-// at most 1 M box tests per scene (a work count, not a time). The point tests near an end took up to 40 M box tests
-// (the run's whole bound, one end then undecided on ellipses-turning) when each t-piece was searched in u down to
-// the depth limit.
+// u-pieces of a t-piece at most u_lead deeper than it, the edges t = 0 and 1 tried alone): in double, both faces.
+// The point tests near an end took up to 40 M box tests (the run's whole bound, one end then undecided on
+// ellipses-turning) when each t-piece was searched in u down to the depth limit.
 TEST_CASE("double, both faces: every scene of cases/independent within 1e-9 of the exact ends, at bounded work",
           "[independent][independent-ends]") {
   for (const char* name :
@@ -314,49 +335,19 @@ TEST_CASE("double, both faces: every scene of cases/independent within 1e-9 of t
     const Scene sc = read_scene(indep(name));
     const Solution exact = solve(sc, SolveOptions{});
     REQUIRE(exact.answer.undecided.empty());
-    const std::vector<double> want = ends_of(exact.answer);
-    for (const char* guard : {"bound", "none"}) {
-      INFO(name << ", guard " << guard);
-      SolveOptions o;
-      o.arith = parse_arithmetic("double");
-      o.guard = parse_guard(guard);
-      const Solution s = solve(sc, o);
-      for (const auto& r : s.undecided_reasons) UNSCOPED_INFO("reason: " << r);
-      CHECK(s.answer.undecided.empty());
-      CHECK(s.answer.collides == exact.answer.collides);
-      CHECK(s.answer.s_intervals.size() == exact.answer.s_intervals.size());
-      const std::vector<double> got = ends_of(s.answer);
-      REQUIRE(got.size() == want.size());
-      for (std::size_t i = 0; i < got.size(); ++i) CHECK(std::abs(got[i] - want[i]) <= 1e-9);
-      CHECK(box_tests(s) >= 0);
-      CHECK(box_tests(s) <= 1000000);
-    }
+    for (const char* guard : {"bound", "none"}) check_ends_located(name, sc, exact, "double", guard);
   }
 }
 
 // mpfr:128 on the scenes where it stopped at its work bound (2 M box tests) with ends undecided that double decided
-// (spheres-cross 4, spheres-end 2, discs-end 1): both faces now locate every end within 1e-9 of the exact
-// pipeline's, with nothing undecided and at most 1 M box tests.
+// (spheres-cross 4, spheres-end 2, discs-end 1): both faces now locate every end as double does.
 TEST_CASE("mpfr:128, both faces: every end of the sphere and disc scenes located within 1e-9 of the exact ends",
           "[independent][independent-ends]") {
   for (const char* name : {"spheres-cross", "spheres-end", "discs-end"}) {
     const Scene sc = read_scene(indep(name));
     const Solution exact = solve(sc, SolveOptions{});
-    const std::vector<double> want = ends_of(exact.answer);
-    for (const char* guard : {"bound", "none"}) {
-      INFO(name << ", guard " << guard);
-      SolveOptions o;
-      o.arith = parse_arithmetic("mpfr:128");
-      o.guard = parse_guard(guard);
-      const Solution s = solve(sc, o);
-      for (const auto& r : s.undecided_reasons) UNSCOPED_INFO("reason: " << r);
-      CHECK(s.answer.undecided.empty());
-      CHECK(s.answer.collides);
-      const std::vector<double> got = ends_of(s.answer);
-      REQUIRE(got.size() == want.size());
-      for (std::size_t i = 0; i < got.size(); ++i) CHECK(std::abs(got[i] - want[i]) <= 1e-9);
-      CHECK(box_tests(s) >= 0);
-      CHECK(box_tests(s) <= 1000000);
-    }
+    REQUIRE(exact.answer.undecided.empty());
+    CHECK(exact.answer.collides);
+    for (const char* guard : {"bound", "none"}) check_ends_located(name, sc, exact, "mpfr:128", guard);
   }
 }
