@@ -143,15 +143,6 @@ Instant decimal_instant(long k, long n) {
   return i;
 }
 
-Instant double_instant(double t) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", t);
-  Instant i;
-  i.approx = b;
-  i.value = t;
-  return i;
-}
-
 fcl::Transform3d transform_of(const FclPose& p) {
   fcl::Transform3d tf = fcl::Transform3d::Identity();
   fcl::Matrix3d r;
@@ -303,7 +294,7 @@ Answer fcl_ccd(const Scene& s, int n, const FclOptions& o) {
   fcl::continuousCollide(&ea, transform_of(p0.a), transform_of(a1), &eb, transform_of(p0.b), transform_of(b1), request,
                          result);
   a.collides = result.is_collide;
-  if (a.collides) a.first_contact = double_instant(result.time_of_contact);
+  if (a.collides) a.first_contact = rounded_instant(result.time_of_contact);
 #endif
   return a;
 }

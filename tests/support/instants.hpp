@@ -3,17 +3,8 @@
 // digits as approx, the double as value, no bracket (what a floating pipeline or an external engine reports).
 #include "kernel/answer.hpp"
 
-#include <cstdio>
-
 namespace eccd::test {
 
-inline Instant dec(double t) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", t);
-  Instant i;
-  i.approx = b;
-  i.value = t;
-  return i;
-}
+inline Instant dec(double t) { return rounded_instant(t); }  // kernel/answer.hpp: "%.17g", the double as value
 
 }  // namespace eccd::test
