@@ -61,6 +61,9 @@ void de_casteljau_in_place(std::span<T> w, const T& t) {
 template <class T>
 T bernstein_value(std::span<const T> b, const T& t) {
   if (b.empty()) return T(0);
+  if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass, b read in place
+    return running_error_loops::de_casteljau_value(
+        b, T(1) - t, t, b.size() >= 13 && b.size() <= 57 ? binomial_row(int(b.size()) - 1, 1.0).data() : nullptr);
   if constexpr (std::is_trivially_copyable_v<T>) {
     if (b.size() <= 64) {
       T w[64];
@@ -224,6 +227,11 @@ void elevate_into(std::span<const T> q, int r, std::vector<T>& e) {
   const std::vector<T>& cn = binomial_row(n, like);
   const std::vector<T>& cr = binomial_row(r, like);
   const std::vector<T>& cnr = binomial_row(n + r, like);
+  if constexpr (std::is_same_v<T, Bounded<double>>)  // exact binomial rows: the guard's a-priori bound
+    if (n + r <= 56 && cnr[(n + r) / 2].bound() == 0) {
+      running_error_loops::elevate_exact_binomials(q, r, cn.data(), cr.data(), cnr.data(), e);
+      return;
+    }
   e.resize(n + r + 1);
   for (int k = 0; k <= n + r; ++k) {
     T acc = T(0);

@@ -53,6 +53,52 @@ using BD = Bounded<double>;
 inline constexpr double kU = 0x1p-53;
 inline constexpr double kTiny = 0x1p-1072;  // per term or step: value and bound products that underflow
 
+// The a-priori bound of a de Casteljau triangle (Higham section 3.1's
+// γ argument on the triangle's paths), used by the three triangles below
+// where it applies: s and t non-negative, each with a relative error at most
+// ρ (s = s*(1 + α), t = t*(1 + β), |α|, |β| <= ρ, s* + t* = 1 exactly, e.g. t
+// a point and s = fl(1 - t)). Every entry after r rounds is
+// sum_i C(r,i) s^(r-i) t^i b_i over r + 1 inputs, each path r products and r
+// sums, so the computed entry is sum_i B*_i b_i (1 + θ_i) with B*_i the exact
+// weights (summing to 1) and |θ_i| <= (1 + ρ)^r (1 + u)^(2r) - 1 <= Γ =
+// L / (1 - L), L = n (ρ + 2u). Its error against the exact entry is then at
+// most sum B*_i (e_i + Γ |b_i|): the same triangle applied to the
+// non-negative w_i = e_i + Γ |b_i|, which, computed with the rounded s and t
+// (each rounding of a non-negative quantity makes it at least (1 - u) times
+// its exact value), is at least (1 - L)(1 - u)^2 times that sum: each entry's
+// bound is the computed w entry times `scale` >= 1 / (1 - L - 4u). Products
+// that underflow lose at most 2^-1075 each: kTiny per round and entry.
+// A step then costs two products and a sum for w beside the value's, where
+// the running bound of de_casteljau's generic branch costs six products,
+// nine sums and five absolute values; both bound the same error, this one
+// with Γ n (ρ + 2u) in place of the per-step roundings: it counts |b_i| where
+// the running bound counts the intermediate values, which cancel where signs
+// mix, so it is looser there (kAprioriMaxDegree). Not applicable
+// (ok = false: the running bound is used) when s or t is negative or not
+// finite, or L > 2^-10, or n > kAprioriMaxDegree.
+// Above this degree the triangle keeps the running bound: counting |b_i| instead of the cancelled
+// intermediate values costs more the higher the degree (measured on coefficients of mixed signs: up to x9.4
+// the operators' bound at degree 24, x50 at 144, tests/number/test_running_error_loops.cpp), and the
+// high degrees are 2D's Δ (degree up to 144), whose subdivision reads signs closest to zero.
+inline constexpr int kAprioriMaxDegree = 32;
+struct AprioriTriangle {
+  bool ok = false;
+  double gamma = 0, scale = 0;
+};
+inline AprioriTriangle apriori_triangle(const BD& s, const BD& t, int n) {
+  AprioriTriangle a;
+  const double sv = s.value(), tv = t.value(), se = s.bound(), te = t.bound();
+  if (!(sv >= 0 && tv >= 0 && std::isfinite(sv) && std::isfinite(tv) && se >= 0 && te >= 0)) return a;
+  auto rel = [](double v, double e) { return e == 0 ? 0.0 : (v > 0 ? e / v : std::numeric_limits<double>::infinity()); };
+  const double rho = std::max(rel(sv, se), rel(tv, te)) * (1.0 + 0x1p-50);
+  const double L = double(n) * (rho + 2.0 * kU) * (1.0 + 0x1p-50);
+  if (!(L <= 0x1p-10) || n > kAprioriMaxDegree) return a;
+  a.ok = true;
+  a.gamma = L / (1.0 - L) * (1.0 + 0x1p-48);
+  a.scale = (1.0 + 0x1p-48) / (1.0 - L - 4.0 * kU);
+  return a;
+}
+
 // The products of convolve below on plain arrays: values xv, yv, bounds xe, ye, and yae = |yv| + ye; rv, mu
 // and E (x.size() + y.size() - 1 entries, zero on entry) receive the value sums, the sums of |p| + |r| and the
 // propagated bounds. The arrays do not overlap, and the parameters say so (__restrict, honoured for the
@@ -140,6 +186,19 @@ inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
   if (left) left[0] = w[0];
   double* __restrict vp = v;  // values and bounds in separate buffers (vectorisable rounds)
   double* __restrict ep = e;
+  if (const AprioriTriangle a = apriori_triangle(s, t, n); a.ok) {  // the a-priori bound (above)
+    for (int i = 0; i <= n; ++i) ep[i] = ep[i] + a.gamma * std::fabs(vp[i]);
+    for (int r = 1; r <= n; ++r) {
+      for (int i = 0; i + r <= n; ++i) {
+        const double x = sv * vp[i], y = tv * vp[i + 1];
+        ep[i] = (sv * ep[i] + tv * ep[i + 1]) + kTiny;
+        vp[i] = x + y;
+      }
+      if (left) left[r] = BD(v[0], e[0] * a.scale);
+      w[n - r] = BD(v[n - r], e[n - r] * a.scale);
+    }
+    return;
+  }
   for (int r = 1; r <= n; ++r) {
     for (int i = 0; i + r <= n; ++i) {
       const double a = vp[i], b = vp[i + 1];
@@ -150,6 +209,142 @@ inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
     }
     if (left) left[r] = fin(v[0], e[0], r);
     w[n - r] = fin(v[n - r], e[n - r], r);  // final from this round on (split's right piece; w[0]: the value at t)
+  }
+}
+
+// The value at t of the polynomial with Bernstein coefficients b (s = 1 - t,
+// both with their bounds): de_casteljau's triangle above without its split,
+// read from b and written nowhere else, so that an evaluation costs no copy of
+// b and no initialised working row (the 3D method evaluates many polynomials
+// of low degree: measured, the copy and the zeroed row were a quarter of the
+// guarded paper-002 run). The same products, sums and bound per step as
+// de_casteljau, so the same value and bound, bit for bit.
+// An upper bound of sum_i C(n,i) s*^(n-i) t*^i w_i for w_i >= 0 in O(n),
+// where the triangle would take O(n^2): with a = max(s, t) >= 1/2 and
+// x = min(s, t) / a <= 1, the sum is a^n times a polynomial in x with
+// non-negative coefficients C(n,i) w_i (binom: C(n, .), exact integers for
+// n <= 56), evaluated by Horner's rule. No term cancels, so each rounding
+// (4n + 4 of them on a term's path: x, the Horner products and sums, the
+// products C(n,i) w_i, the powers of a, the final product) and each factor
+// s or t (2n on a path, with relative errors at most ρ) scales a term by at
+// least (1 - u) resp. (1 - ρ): the computed sum is at least (1 - L') times
+// the exact one, L' = 2nρ + (4n + 4)u, and is divided by that. Products that
+// underflow (x^i near t = 0) lose at most 2^-1075 each: kTiny per step.
+// Returns -1 when it does not apply (n > 56, L' > 2^-10).
+inline double bernstein_sum_nonnegative(const double* w, int n, const double* binom, double sv, double tv,
+                                        double rho) {
+  if (n > 56) return -1;
+  const double Lp = (2.0 * n * rho + (4.0 * n + 4.0) * kU) * (1.0 + 0x1p-50);
+  if (!(Lp <= 0x1p-10)) return -1;
+  const bool rev = tv > sv;
+  const double a = rev ? tv : sv, x = (rev ? sv : tv) / a;
+  double acc;
+  if (!rev) {  // powers of x = t/s go with i
+    acc = binom[n] * w[n];
+    for (int i = n - 1; i >= 0; --i) acc = acc * x + binom[i] * w[i];
+  } else {  // powers of x = s/t go with n - i
+    acc = binom[0] * w[0];
+    for (int i = 1; i <= n; ++i) acc = acc * x + binom[i] * w[i];
+  }
+  double an = 1;
+  for (int k = 0; k < n; ++k) an *= a;
+  return acc * an / (1.0 - Lp) * (1.0 + 0x1p-48) + (2.0 * n + 2.0) * kTiny;
+}
+
+inline BD de_casteljau_value(std::span<const BD> b, const BD& s, const BD& t, const double* binom = nullptr) {
+  const int n = int(b.size()) - 1;
+  if (n == 0) return b[0];
+  double vs[64], es[64];
+  thread_local std::vector<double> vh, eh;
+  double* v = vs;
+  double* e = es;
+  if (b.size() > 64) {
+    vh.resize(b.size());
+    eh.resize(b.size());
+    v = vh.data();
+    e = eh.data();
+  }
+  for (int i = 0; i <= n; ++i) {
+    v[i] = b[i].value();
+    e[i] = b[i].bound();
+  }
+  const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
+  const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
+  double* __restrict vp = v;
+  double* __restrict ep = e;
+  if (const AprioriTriangle ap = apriori_triangle(s, t, n); ap.ok) {  // the a-priori bound (above)
+    for (int i = 0; i <= n; ++i) ep[i] = ep[i] + ap.gamma * std::fabs(vp[i]);
+    // The bound's sum in O(n) where it applies (the value's triangle is then the plain one), else its triangle.
+    const double rho = std::max(s.value() > 0 ? s.bound() / s.value() : 0.0,
+                                t.value() > 0 ? t.bound() / t.value() : 0.0) * (1.0 + 0x1p-50);
+    const double E = binom ? bernstein_sum_nonnegative(ep, n, binom, sv, tv, rho) : -1.0;
+    if (E >= 0) {  // the value's triangle alone: the plain one
+      for (int r = 1; r <= n; ++r)
+        for (int i = 0; i + r <= n; ++i) {
+          const double x = sv * vp[i], y = tv * vp[i + 1];
+          vp[i] = x + y;
+        }
+      return BD(v[0], E * ap.scale);
+    }
+    for (int r = 1; r <= n; ++r)
+      for (int i = 0; i + r <= n; ++i) {
+        const double x = sv * vp[i], y = tv * vp[i + 1];
+        ep[i] = (sv * ep[i] + tv * ep[i + 1]) + kTiny;
+        vp[i] = x + y;
+      }
+    return BD(v[0], e[0] * ap.scale);
+  }
+  for (int r = 1; r <= n; ++r)
+    for (int i = 0; i + r <= n; ++i) {
+      const double a = vp[i], c = vp[i + 1];
+      const double x = sv * a, y = tv * c, nw = x + y;
+      ep[i] = sa * ep[i] + se * (std::fabs(a) + ep[i]) + ta * ep[i + 1] + te * (std::fabs(c) + ep[i + 1]) +
+              (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
+      vp[i] = nw;
+    }
+  return BD(v[0], e[0] * (1.0 + (8.0 * n + 8.0) * 0x1p-51));
+}
+
+// Degree elevation by r of q (kernel/bernstein.hpp, elevate_into) when the
+// binomial rows cn = C(n, .), cr = C(r, .), cnr = C(n + r, .) are exact
+// integers (n + r <= 56, kernel/binomial.hpp): the values by the generic
+// loop's operations in its order (term = (cn_j cr_(k-j)) q_j, summed from the
+// lowest j, divided by cnr_k), so bit for bit the same. The bound is the
+// a-priori one of a convex combination (the weights cn_j cr_(k-j) / cnr_k sum
+// to 1, Vandermonde): each value is sum W_j q_j (1 + θ_j) with |θ_j| <= γ_K,
+// K = terms + 3 (the binomials' product, the product with q_j, the sums, the
+// division), so its error is at most sum W_j (e_j + γ_K |q_j|): the same
+// elevation applied to w_j = e_j + γ_K |q_j| >= 0, which computed by the same
+// operations is at least (1 - u)^(K + 2) times that sum (two roundings in
+// w_j): scaled by 1 / (1 - (K + 2) u). Underflow: kTiny per term. Against
+// the running bound of Bounded's operators (per operation 4 products, 5 sums
+// and 3 absolute values beside the value's), two products, a sum and a
+// division per term.
+inline void elevate_exact_binomials(std::span<const BD> q, int r, const BD* cn, const BD* cr, const BD* cnr,
+                                    std::vector<BD>& out) {
+  const int n = int(q.size()) - 1;
+  const double K = double(std::min(n, r) + 1) + 3.0;
+  const double gamma = K * kU / (1.0 - K * kU) * (1.0 + 0x1p-50);
+  const double scale = (1.0 + 0x1p-48) / (1.0 - (K + 2.0) * kU);
+  double ws[64];
+  thread_local std::vector<double> wh;
+  double* w = ws;
+  if (q.size() > 64) {
+    wh.resize(q.size());
+    w = wh.data();
+  }
+  for (int j = 0; j <= n; ++j) w[j] = q[j].bound() + gamma * std::fabs(q[j].value());
+  out.resize(n + r + 1);
+  for (int k = 0; k <= n + r; ++k) {
+    double acc = 0, bnd = 0;
+    const int lo = std::max(0, k - r), hi = std::min(n, k);
+    for (int j = lo; j <= hi; ++j) {
+      const double c = cn[j].value() * cr[k - j].value();
+      acc = acc + c * q[j].value();
+      bnd = bnd + c * w[j];
+    }
+    const double d = cnr[k].value();
+    out[k] = BD(acc / d, (bnd / d + double(hi - lo + 1) * kTiny) * scale);
   }
 }
 
@@ -174,6 +369,31 @@ inline void de_casteljau_rows(std::vector<std::vector<BD>>& f, const BD& s, cons
     }
   const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
   const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
+  if (const AprioriTriangle ap = apriori_triangle(s, t, m); ap.ok) {  // the a-priori bound (above), per column
+    for (std::size_t k = 0; k < v.size(); ++k) e[k] = e[k] + ap.gamma * std::fabs(v[k]);
+    auto astep = [&](int d, int a, int b) {
+      double *vd = v.data() + d * cols, *ed = e.data() + d * cols;
+      const double *va = v.data() + a * cols, *ea = e.data() + a * cols, *vb = v.data() + b * cols,
+                   *eb = e.data() + b * cols;
+      for (std::size_t j = 0; j < cols; ++j) {
+        const double x = sv * va[j], y = tv * vb[j];
+        const double ne = (sv * ea[j] + tv * eb[j]) + kTiny;
+        vd[j] = x + y;
+        ed[j] = ne;
+      }
+    };
+    for (int r = 1; r <= m; ++r) {
+      if (left)
+        for (int i = m; i >= r; --i) astep(i, i - 1, i);
+      else
+        for (int i = 0; i + r <= m; ++i) astep(i, i, i + 1);
+    }
+    const int untouched = left ? 0 : m;  // that row stays as it was (its input bound, not w's)
+    for (int i = 0; i <= m; ++i)
+      if (i != untouched)
+        for (std::size_t j = 0; j < cols; ++j) f[i][j] = BD(v[i * cols + j], e[i * cols + j] * ap.scale);
+    return;
+  }
   // Row d <- s row a + t row b, column by column (d is a or b: each column reads before it writes).
   auto step = [&](int d, int a, int b) {
     double *vd = v.data() + d * cols, *ed = e.data() + d * cols;
