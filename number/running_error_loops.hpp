@@ -89,7 +89,9 @@ inline AprioriTriangle apriori_triangle(const BD& s, const BD& t, int n) {
   AprioriTriangle a;
   const double sv = s.value(), tv = t.value(), se = s.bound(), te = t.bound();
   if (!(sv >= 0 && tv >= 0 && std::isfinite(sv) && std::isfinite(tv) && se >= 0 && te >= 0)) return a;
-  auto rel = [](double v, double e) { return e == 0 ? 0.0 : (v > 0 ? e / v : std::numeric_limits<double>::infinity()); };
+  auto rel = [](double v, double e) {
+    return e == 0 ? 0.0 : (v > 0 ? e / v : std::numeric_limits<double>::infinity());
+  };
   const double rho = std::max(rel(sv, se), rel(tv, te)) * (1.0 + 0x1p-50);
   const double L = double(n) * (rho + 2.0 * kU) * (1.0 + 0x1p-50);
   if (!(L <= 0x1p-10) || n > kAprioriMaxDegree) return a;
@@ -231,8 +233,7 @@ inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
 // the exact one, L' = 2nρ + (4n + 4)u, and is divided by that. Products that
 // underflow (x^i near t = 0) lose at most 2^-1075 each: kTiny per step.
 // Returns -1 when it does not apply (n > 56, L' > 2^-10).
-inline double bernstein_sum_nonnegative(const double* w, int n, const double* binom, double sv, double tv,
-                                        double rho) {
+inline double bernstein_sum_nonnegative(const double* w, int n, const double* binom, double sv, double tv, double rho) {
   if (n > 56) return -1;
   const double Lp = (2.0 * n * rho + (4.0 * n + 4.0) * kU) * (1.0 + 0x1p-50);
   if (!(Lp <= 0x1p-10)) return -1;
@@ -275,8 +276,9 @@ inline BD de_casteljau_value(std::span<const BD> b, const BD& s, const BD& t, co
   if (const AprioriTriangle ap = apriori_triangle(s, t, n); ap.ok) {  // the a-priori bound (above)
     for (int i = 0; i <= n; ++i) ep[i] = ep[i] + ap.gamma * std::fabs(vp[i]);
     // The bound's sum in O(n) where it applies (the value's triangle is then the plain one), else its triangle.
-    const double rho = std::max(s.value() > 0 ? s.bound() / s.value() : 0.0,
-                                t.value() > 0 ? t.bound() / t.value() : 0.0) * (1.0 + 0x1p-50);
+    const double rho =
+        std::max(s.value() > 0 ? s.bound() / s.value() : 0.0, t.value() > 0 ? t.bound() / t.value() : 0.0) *
+        (1.0 + 0x1p-50);
     const double E = binom ? bernstein_sum_nonnegative(ep, n, binom, sv, tv, rho) : -1.0;
     if (E >= 0) {  // the value's triangle alone: the plain one
       for (int r = 1; r <= n; ++r)

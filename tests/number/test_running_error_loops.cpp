@@ -108,7 +108,8 @@ TEST_CASE("running_error_loops: the one-pass bounds are those of Bounded's opera
   // A split at a point (t exact, s = fl(1 - t)) takes the a-priori bound of the triangle
   // (running_error_loops.hpp, AprioriTriangle): not the operators' bound, but within a small factor of it
   // (on these inputs of mixed signs it counts |b| where the operators count the cancelled intermediate
-  // values; measured: up to about x9.4 at degree 24; above degree 32 the running bound is kept); containment is checked in the tests below.
+  // values; measured: up to about x9.4 at degree 24; above degree 32 the running bound is kept); containment is checked
+  // in the tests below.
   double worst = 0;
   for (int n : {1, 24, 144}) {
     INFO("degree " << n);
