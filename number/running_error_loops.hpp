@@ -101,6 +101,76 @@ inline AprioriTriangle apriori_triangle(const BD& s, const BD& t, int n) {
   return a;
 }
 
+// A triangle's working rows: the values and bounds of b unpacked, on the stack up to degree 63 (the 3D
+// method's many low-degree calls), else in per-thread buffers (one triangle at a time per thread).
+struct WorkingRows {
+  double vs[64], es[64];
+  double* v = vs;
+  double* e = es;
+  explicit WorkingRows(std::span<const BD> b) {
+    if (b.size() > 64) {
+      thread_local std::vector<double> vh, eh;
+      vh.resize(b.size());
+      eh.resize(b.size());
+      v = vh.data();
+      e = eh.data();
+    }
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      v[i] = b[i].value();
+      e[i] = b[i].bound();
+    }
+  }
+  WorkingRows(const WorkingRows&) = delete;
+  WorkingRows& operator=(const WorkingRows&) = delete;
+};
+
+// One step of a triangle, (a, ea), (b, eb) -> (s a + t b, its bound), in the two bounds above: the running
+// bound (the header's statement; the factor of its levels is applied where an output is final) and the a-priori
+// one (on w = e + Γ|b|, scaled at the end). The value is the same plain-double s a + t b in both.
+struct TriangleStep {
+  double sv, sa, se, tv, ta, te;
+  TriangleStep(const BD& s, const BD& t)
+      : sv(s.value()), sa(std::fabs(sv)), se(s.bound()), tv(t.value()), ta(std::fabs(tv)), te(t.bound()) {}
+  void running(double a, double ea, double b, double eb, double& v, double& e) const {
+    const double x = sv * a, y = tv * b, nw = x + y;
+    e = sa * ea + se * (std::fabs(a) + ea) + ta * eb + te * (std::fabs(b) + eb) +
+        (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
+    v = nw;
+  }
+  void apriori(double a, double ea, double b, double eb, double& v, double& e) const {
+    const double x = sv * a, y = tv * b;
+    e = (sv * ea + tv * eb) + kTiny;
+    v = x + y;
+  }
+  // The running bound's factor for an output reached after `levels` levels.
+  static double running_factor(int levels) { return 1.0 + (8.0 * levels + 8.0) * 0x1p-51; }
+};
+
+// The triangle's n rounds in place on the rows v, e (round r: entry i <- step(entry i, entry i + 1) for
+// i = 0..n - r), the a-priori step where `ap` applies (e already holds w), else the running one; after round
+// r, `round(r, factor)` may read the entries final from that round on (0 and n - r), whose bounds are e times
+// factor.
+template <class Round>
+inline void triangle_rounds(double* __restrict vp, double* __restrict ep, int n, const TriangleStep& st,
+                            const AprioriTriangle& ap, Round&& round) {
+  if (ap.ok) {
+    for (int r = 1; r <= n; ++r) {
+      for (int i = 0; i + r <= n; ++i) st.apriori(vp[i], ep[i], vp[i + 1], ep[i + 1], vp[i], ep[i]);
+      round(r, ap.scale);
+    }
+    return;
+  }
+  for (int r = 1; r <= n; ++r) {
+    for (int i = 0; i + r <= n; ++i) st.running(vp[i], ep[i], vp[i + 1], ep[i + 1], vp[i], ep[i]);
+    round(r, TriangleStep::running_factor(r));
+  }
+}
+
+// w_i = e_i + Γ|b_i|: the rows the a-priori triangle runs on.
+inline void apriori_rows(double* v, double* e, std::size_t count, const AprioriTriangle& ap) {
+  for (std::size_t i = 0; i < count; ++i) e[i] = e[i] + ap.gamma * std::fabs(v[i]);
+}
+
 // The products of convolve below on plain arrays: values xv, yv, bounds xe, ye, and yae = |yv| + ye; rv, mu
 // and E (x.size() + y.size() - 1 entries, zero on entry) receive the value sums, the sums of |p| + |r| and the
 // propagated bounds. The arrays do not overlap, and the parameters say so (__restrict, honoured for the
@@ -164,54 +234,16 @@ inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD>
 // the right piece (its entry i after round n - i), or w[0] as the value at t.
 inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
   const int n = int(w.size()) - 1;
-  // Working rows on the stack up to degree 63 (the 3D method's many low-degree calls), else per thread.
-  double vs[64], es[64];
-  thread_local std::vector<double> vh, eh;
-  double* v = vs;
-  double* e = es;
-  if (w.size() > 64) {
-    vh.resize(w.size());
-    eh.resize(w.size());
-    v = vh.data();
-    e = eh.data();
-  }
-  for (int i = 0; i <= n; ++i) {
-    v[i] = w[i].value();
-    e[i] = w[i].bound();
-  }
-  const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
-  const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
-  // The factor for an output reached after L levels; applied when it is final.
-  auto fin = [](double val, double bound, int levels) {
-    return BD(val, bound * (1.0 + (8.0 * levels + 8.0) * 0x1p-51));
-  };
+  WorkingRows rows{std::span<const BD>(w)};
+  const AprioriTriangle ap = apriori_triangle(s, t, n);  // the a-priori bound (above) where it applies
+  if (ap.ok) apriori_rows(rows.v, rows.e, w.size(), ap);
   if (left) left[0] = w[0];
-  double* __restrict vp = v;  // values and bounds in separate buffers (vectorisable rounds)
-  double* __restrict ep = e;
-  if (const AprioriTriangle a = apriori_triangle(s, t, n); a.ok) {  // the a-priori bound (above)
-    for (int i = 0; i <= n; ++i) ep[i] = ep[i] + a.gamma * std::fabs(vp[i]);
-    for (int r = 1; r <= n; ++r) {
-      for (int i = 0; i + r <= n; ++i) {
-        const double x = sv * vp[i], y = tv * vp[i + 1];
-        ep[i] = (sv * ep[i] + tv * ep[i + 1]) + kTiny;
-        vp[i] = x + y;
-      }
-      if (left) left[r] = BD(v[0], e[0] * a.scale);
-      w[n - r] = BD(v[n - r], e[n - r] * a.scale);
-    }
-    return;
-  }
-  for (int r = 1; r <= n; ++r) {
-    for (int i = 0; i + r <= n; ++i) {
-      const double a = vp[i], b = vp[i + 1];
-      const double x = sv * a, y = tv * b, nw = x + y;
-      ep[i] = sa * ep[i] + se * (std::fabs(a) + ep[i]) + ta * ep[i + 1] + te * (std::fabs(b) + ep[i + 1]) +
-              (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
-      vp[i] = nw;
-    }
-    if (left) left[r] = fin(v[0], e[0], r);
-    w[n - r] = fin(v[n - r], e[n - r], r);  // final from this round on (split's right piece; w[0]: the value at t)
-  }
+  const double* v = rows.v;
+  const double* e = rows.e;
+  triangle_rounds(rows.v, rows.e, n, TriangleStep(s, t), ap, [&](int r, double factor) {
+    if (left) left[r] = BD(v[0], e[0] * factor);
+    w[n - r] = BD(v[n - r], e[n - r] * factor);  // final from this round on (split's right piece; w[0]: the value)
+  });
 }
 
 // The value at t of the polynomial with Bernstein coefficients b (s = 1 - t,
@@ -255,56 +287,29 @@ inline double bernstein_sum_nonnegative(const double* w, int n, const double* bi
 inline BD de_casteljau_value(std::span<const BD> b, const BD& s, const BD& t, const double* binom = nullptr) {
   const int n = int(b.size()) - 1;
   if (n == 0) return b[0];
-  double vs[64], es[64];
-  thread_local std::vector<double> vh, eh;
-  double* v = vs;
-  double* e = es;
-  if (b.size() > 64) {
-    vh.resize(b.size());
-    eh.resize(b.size());
-    v = vh.data();
-    e = eh.data();
-  }
-  for (int i = 0; i <= n; ++i) {
-    v[i] = b[i].value();
-    e[i] = b[i].bound();
-  }
-  const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
-  const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
-  double* __restrict vp = v;
-  double* __restrict ep = e;
-  if (const AprioriTriangle ap = apriori_triangle(s, t, n); ap.ok) {  // the a-priori bound (above)
-    for (int i = 0; i <= n; ++i) ep[i] = ep[i] + ap.gamma * std::fabs(vp[i]);
+  WorkingRows rows(b);
+  double* __restrict vp = rows.v;
+  const AprioriTriangle ap = apriori_triangle(s, t, n);  // the a-priori bound (above) where it applies
+  const TriangleStep st(s, t);
+  if (ap.ok) {
+    apriori_rows(rows.v, rows.e, b.size(), ap);
     // The bound's sum in O(n) where it applies (the value's triangle is then the plain one), else its triangle.
     const double rho =
         std::max(s.value() > 0 ? s.bound() / s.value() : 0.0, t.value() > 0 ? t.bound() / t.value() : 0.0) *
         (1.0 + 0x1p-50);
-    const double E = binom ? bernstein_sum_nonnegative(ep, n, binom, sv, tv, rho) : -1.0;
+    const double E = binom ? bernstein_sum_nonnegative(rows.e, n, binom, st.sv, st.tv, rho) : -1.0;
     if (E >= 0) {  // the value's triangle alone: the plain one
       for (int r = 1; r <= n; ++r)
         for (int i = 0; i + r <= n; ++i) {
-          const double x = sv * vp[i], y = tv * vp[i + 1];
+          const double x = st.sv * vp[i], y = st.tv * vp[i + 1];
           vp[i] = x + y;
         }
-      return BD(v[0], E * ap.scale);
+      return BD(rows.v[0], E * ap.scale);
     }
-    for (int r = 1; r <= n; ++r)
-      for (int i = 0; i + r <= n; ++i) {
-        const double x = sv * vp[i], y = tv * vp[i + 1];
-        ep[i] = (sv * ep[i] + tv * ep[i + 1]) + kTiny;
-        vp[i] = x + y;
-      }
-    return BD(v[0], e[0] * ap.scale);
   }
-  for (int r = 1; r <= n; ++r)
-    for (int i = 0; i + r <= n; ++i) {
-      const double a = vp[i], c = vp[i + 1];
-      const double x = sv * a, y = tv * c, nw = x + y;
-      ep[i] = sa * ep[i] + se * (std::fabs(a) + ep[i]) + ta * ep[i + 1] + te * (std::fabs(c) + ep[i + 1]) +
-              (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
-      vp[i] = nw;
-    }
-  return BD(v[0], e[0] * (1.0 + (8.0 * n + 8.0) * 0x1p-51));
+  double factor = 1;
+  triangle_rounds(rows.v, rows.e, n, st, ap, [&](int, double f) { factor = f; });
+  return BD(rows.v[0], rows.e[0] * factor);
 }
 
 // Degree elevation by r of q (kernel/bernstein.hpp, elevate_into) when the
@@ -369,45 +374,18 @@ inline void de_casteljau_rows(std::vector<std::vector<BD>>& f, const BD& s, cons
       v[i * cols + j] = f[i][j].value();
       e[i * cols + j] = f[i][j].bound();
     }
-  const double sv = s.value(), sa = std::fabs(sv), se = s.bound();
-  const double tv = t.value(), ta = std::fabs(tv), te = t.bound();
-  if (const AprioriTriangle ap = apriori_triangle(s, t, m); ap.ok) {  // the a-priori bound (above), per column
-    for (std::size_t k = 0; k < v.size(); ++k) e[k] = e[k] + ap.gamma * std::fabs(v[k]);
-    auto astep = [&](int d, int a, int b) {
-      double *vd = v.data() + d * cols, *ed = e.data() + d * cols;
-      const double *va = v.data() + a * cols, *ea = e.data() + a * cols, *vb = v.data() + b * cols,
-                   *eb = e.data() + b * cols;
-      for (std::size_t j = 0; j < cols; ++j) {
-        const double x = sv * va[j], y = tv * vb[j];
-        const double ne = (sv * ea[j] + tv * eb[j]) + kTiny;
-        vd[j] = x + y;
-        ed[j] = ne;
-      }
-    };
-    for (int r = 1; r <= m; ++r) {
-      if (left)
-        for (int i = m; i >= r; --i) astep(i, i - 1, i);
-      else
-        for (int i = 0; i + r <= m; ++i) astep(i, i, i + 1);
-    }
-    const int untouched = left ? 0 : m;  // that row stays as it was (its input bound, not w's)
-    for (int i = 0; i <= m; ++i)
-      if (i != untouched)
-        for (std::size_t j = 0; j < cols; ++j) f[i][j] = BD(v[i * cols + j], e[i * cols + j] * ap.scale);
-    return;
-  }
+  const TriangleStep st(s, t);
+  const AprioriTriangle ap = apriori_triangle(s, t, m);  // the a-priori bound (above) where it applies, per column
+  if (ap.ok) apriori_rows(v.data(), e.data(), v.size(), ap);
   // Row d <- s row a + t row b, column by column (d is a or b: each column reads before it writes).
   auto step = [&](int d, int a, int b) {
     double *vd = v.data() + d * cols, *ed = e.data() + d * cols;
     const double *va = v.data() + a * cols, *ea = e.data() + a * cols, *vb = v.data() + b * cols,
                  *eb = e.data() + b * cols;
-    for (std::size_t j = 0; j < cols; ++j) {
-      const double x = sv * va[j], y = tv * vb[j], nw = x + y;
-      const double ne = sa * ea[j] + se * (std::fabs(va[j]) + ea[j]) + ta * eb[j] + te * (std::fabs(vb[j]) + eb[j]) +
-                        (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
-      vd[j] = nw;
-      ed[j] = ne;
-    }
+    if (ap.ok)
+      for (std::size_t j = 0; j < cols; ++j) st.apriori(va[j], ea[j], vb[j], eb[j], vd[j], ed[j]);
+    else
+      for (std::size_t j = 0; j < cols; ++j) st.running(va[j], ea[j], vb[j], eb[j], vd[j], ed[j]);
   };
   for (int r = 1; r <= m; ++r) {
     if (left)
@@ -415,9 +393,13 @@ inline void de_casteljau_rows(std::vector<std::vector<BD>>& f, const BD& s, cons
     else
       for (int i = 0; i + r <= m; ++i) step(i, i, i + 1);
   }
-  const double factor = 1.0 + (8.0 * m + 8.0) * 0x1p-51;
+  // The a-priori bound covers every entry but the row no round writes (its input bound, not w's); the running
+  // bound's factor of m levels covers every entry.
+  const double factor = ap.ok ? ap.scale : TriangleStep::running_factor(m);
+  const int untouched = ap.ok ? (left ? 0 : m) : -1;
   for (int i = 0; i <= m; ++i)
-    for (std::size_t j = 0; j < cols; ++j) f[i][j] = BD(v[i * cols + j], e[i * cols + j] * factor);
+    if (i != untouched)
+      for (std::size_t j = 0; j < cols; ++j) f[i][j] = BD(v[i * cols + j], e[i * cols + j] * factor);
 }
 
 // Horner's rule r <- r t + c_i from the leading coefficient (Higham section
