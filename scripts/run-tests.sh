@@ -5,8 +5,9 @@
 # The suite includes `eccd regress cases/ --certify` over the whole corpus and
 # the metamorphic tests over generated scenes; their seeds are printed at the end.
 # The tests labelled `budget` (Catch2 tag [budget]: runs under a time budget)
-# run last, after the Python tests, with four busy processes beside them: their bounds are processor
-# time or work counts, so a busy machine must not fail them.
+# run last, after the Python tests, with one busy process per core beside them (every core shared by a
+# test and a busy loop at -j$(nproc)): their bounds are processor time or work counts, so a busy machine
+# must not fail them.
 set -euo pipefail
 if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
   printf '%b\n' "usage: bash scripts/run-tests.sh\n  installs what is missing, builds, and runs the whole test suite (CTest + Catch2)"
@@ -28,7 +29,7 @@ stop_busy() {
   busy=()
 }
 trap stop_busy EXIT INT TERM HUP
-for _ in 1 2 3 4; do
+for _ in $(seq "$(nproc)"); do
   yes > /dev/null &
   busy+=($!)
 done
