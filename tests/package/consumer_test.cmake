@@ -99,10 +99,13 @@ step("find_package: configure" ${CMAKE_COMMAND} -S ${ECCD_SOURCE_DIR}/tests/pack
 step("find_package: build" ${CMAKE_COMMAND} --build ${b} -j2)
 run_consumer("find_package" ${b} "beside eccd: the consumer's own kernel/answer.hpp, the consumer's own api/solve.hpp")
 
-# 3. add_subdirectory(eccd): only the libraries app links are built.
+# 3. add_subdirectory(eccd): only the libraries app links are built. Header dependencies by CMake's scanner,
+# as eccd's own build has them (CMakeLists.txt, CMAKE_DEPENDS_USE_COMPILER): the same compile commands, so
+# the libraries' compilations are ccache hits of the build under test instead of a second full build.
 set(b ${WORK_DIR}/subdir)
 step("add_subdirectory: configure" ${CMAKE_COMMAND} -S ${ECCD_SOURCE_DIR}/tests/package/consumer -B ${b} ${common}
-     -DECCD_SOURCE=${ECCD_SOURCE_DIR} -DBUILD_TESTING=OFF -DECCD_WERROR=${ECCD_WERROR})
+     -DECCD_SOURCE=${ECCD_SOURCE_DIR} -DBUILD_TESTING=OFF -DECCD_WERROR=${ECCD_WERROR}
+     -DCMAKE_DEPENDS_USE_COMPILER=OFF)
 step("add_subdirectory: build" ${CMAKE_COMMAND} --build ${b} -j2 --target app)
 run_consumer("add_subdirectory" ${b})
 foreach(f eccd/eccd eccd/eccd_tests eccd/python)
