@@ -22,6 +22,7 @@
 #include <map>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -332,3 +333,5 @@ TEST_CASE("animate: a graze double cannot decide is undecided, never an event, a
     REQUIRE(*e.events[0].answer.contacts[0].hi == Rational(1, 2));
   }
 }
+
+}  // namespace ECCD_UNITY_ID

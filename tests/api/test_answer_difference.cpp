@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -128,3 +129,5 @@ TEST_CASE("answer difference: certified brackets match exactly when they overlap
   REQUIRE(t.differences.size() == 1);
   CHECK(t.differences[0].find("contact_intervals: stored 0, recomputed 1") == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

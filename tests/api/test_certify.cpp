@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+namespace ECCD_UNITY_ID {
 namespace {
 const std::string kCases = std::string(ECCD_SOURCE_DIR) + "/cases/";
 bool overlaps(const eccd::Instant& a, const eccd::Instant& b) { return *a.lo <= *b.hi && *b.lo <= *a.hi; }
@@ -48,3 +49,5 @@ TEST_CASE("certify refuses a scene without its JSON text, naming the reason", "[
   s.source_text.clear();
   CHECK_THROWS_WITH(eccd::certify(s), Catch::Contains("has no JSON text"));
 }
+
+}  // namespace ECCD_UNITY_ID

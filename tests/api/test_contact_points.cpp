@@ -21,6 +21,7 @@
 
 #include <limits>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -169,3 +170,5 @@ TEST_CASE("contact points: a floating run whose rounded scene overflows gives em
   add_contact_points_3d(s, e);
   check_point(e.answer.contact_points[0], {0, 2, 0}, {0, 1, 0}, 1e-15);
 }
+
+}  // namespace ECCD_UNITY_ID

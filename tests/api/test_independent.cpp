@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -351,3 +352,5 @@ TEST_CASE("mpfr:128, both faces: every end of the sphere and disc scenes located
     for (const char* guard : {"bound", "none"}) check_ends_located(name, sc, exact, "mpfr:128", guard);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -193,3 +194,5 @@ TEST_CASE("judge: reading the answer: bare object, scene file, solve report, and
   CHECK_THROWS_AS(answer_from_text("[1, 2", "x.json"), SceneError);
   CHECK_THROWS_AS(answer_from_text(R"({"format": "ellipse-ccd-scene/1", "answer": null})", "x.json"), SceneError);
 }
+
+}  // namespace ECCD_UNITY_ID

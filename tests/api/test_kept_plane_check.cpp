@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -75,3 +76,5 @@ TEST_CASE("kept-plane check in intervals agrees with the exact check where it de
   CHECK(kept.separates > 0);
   CHECK(moved.separates + moved.fails + moved.unknown > 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -24,6 +24,7 @@
 #include <random>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -287,3 +288,5 @@ TEST_CASE(
     REQUIRE(colliding > 0);  // the scene has events to miss
   }
 }
+
+}  // namespace ECCD_UNITY_ID

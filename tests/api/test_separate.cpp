@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -360,3 +361,5 @@ TEST_CASE("certified separating planes: the double plane when its bounded checks
   CHECK(tc.status == to_string(status_at(touch, Q(0), Arithmetic::exact())));
   CHECK(!tc.plane);
 }
+
+}  // namespace ECCD_UNITY_ID

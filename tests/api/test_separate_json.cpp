@@ -18,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -161,3 +162,5 @@ TEST_CASE("separate json: the plane in the JSON separates the objects by a hand 
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

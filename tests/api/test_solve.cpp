@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 namespace {
 
 const std::string kCases = std::string(ECCD_SOURCE_DIR) + "/cases/";
@@ -158,3 +159,5 @@ TEST_CASE("solution_to_json writes the Solution's values under the solve --json 
   nlohmann::ordered_json stored = eccd::stored_answer_of(r);
   CHECK(stored.begin().key() == "collides");
 }
+
+}  // namespace ECCD_UNITY_ID

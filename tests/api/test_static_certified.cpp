@@ -15,6 +15,7 @@
 #include <cmath>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -117,3 +118,5 @@ TEST_CASE("certified status of a scene at an instant equals the exact pipeline's
   CHECK(status_at(t, mpq_class(1, 2), kCertified) == Status::touching);
   CHECK(status_at(t, mpq_class(1, 4), kCertified) == Status::separate);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -239,3 +240,5 @@ TEST_CASE("static_status_batch gives static_status pair by pair (double and cert
       Catch::Contains("pair 7"));
   CHECK(out[0] == Status::separate);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -120,3 +121,5 @@ TEST_CASE("static filter simd: the instruction set is the widest the CPU runs, u
   simd::set_static_batch_isa_limit(Isa::avx512);  // the default
   CHECK(simd::static_batch_isa() == cpu);
 }
+
+}  // namespace ECCD_UNITY_ID

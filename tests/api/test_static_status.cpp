@@ -15,6 +15,7 @@
 #include <cmath>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -173,3 +174,5 @@ TEST_CASE("status of a scene at an instant: exact equals the exact pipeline's ce
   Scene s = read_scene(kCases + "paper003/example2.json");
   CHECK_THROWS_AS(status_at(s, mpq_class(3, 2)), std::invalid_argument);
 }
+
+}  // namespace ECCD_UNITY_ID

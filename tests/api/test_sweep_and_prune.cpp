@@ -14,6 +14,7 @@
 #include <random>
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -114,3 +115,5 @@ TEST_CASE("sweep and prune: empty and single inputs, and the sweep's order", "[a
   const Pairs pg = sweep_and_prune(pb, examined);
   CHECK(renamed == std::set<std::pair<std::size_t, std::size_t>>(pg.begin(), pg.end()));
 }
+
+}  // namespace ECCD_UNITY_ID

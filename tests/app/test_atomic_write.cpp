@@ -28,6 +28,7 @@
 #include <fstream>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 namespace fs = std::filesystem;
 
@@ -271,3 +272,5 @@ TEST_CASE("atomic write: output folders are replaced only when they are ours", "
   CHECK_FALSE(fs::exists(out));
   CHECK(slurp(p3 / "result.txt") == "three");
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 #include <nlohmann/json.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 
@@ -93,3 +94,5 @@ TEST_CASE("eccd animate: bad file, bad options, and nothing written on error", "
   REQUIRE(r.out.empty());
   REQUIRE(json::parse(slurp(out))["format"] == "ellipse-ccd-animation-answer/1");
 }
+
+}  // namespace ECCD_UNITY_ID

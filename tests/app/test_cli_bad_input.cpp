@@ -19,6 +19,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 #ifndef ECCD_EXE
 #error "ECCD_EXE (path of the eccd binary) must be defined by the build"
 #endif
@@ -149,3 +150,5 @@ TEST_CASE("bad scene files fail in the reader as expected", "[scene_reader][cli]
     CHECK(msg.find(c.phrase) != std::string::npos);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -13,6 +13,7 @@
 #include <regex>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 using eccd::test::run;
@@ -186,3 +187,5 @@ TEST_CASE(
   CHECK(out.find("ok    touch3d/touch-then-overlap.json") != std::string::npos);
   fs::remove_all(dir);
 }
+
+}  // namespace ECCD_UNITY_ID

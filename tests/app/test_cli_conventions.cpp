@@ -17,6 +17,7 @@
 #include <vector>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 namespace fs = std::filesystem;
 
@@ -258,3 +259,5 @@ TEST_CASE("an instant's approx carries the digits its bracket or precision suppo
   CHECK(longest <= 40);
   CHECK(longest > 17);
 }
+
+}  // namespace ECCD_UNITY_ID

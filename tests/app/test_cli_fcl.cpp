@@ -19,6 +19,7 @@
 
 #include <cmath>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 
@@ -97,3 +98,5 @@ TEST_CASE("eccd fcl --ccd, --json and standard input", "[app][cli][cli-fcl]") {
   CHECK(a["answer"] == b["answer"]);
   CHECK(a["scene"] == b["scene"]);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -20,6 +20,7 @@
 #include <regex>
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -154,3 +155,5 @@ TEST_CASE("eccd generate: refusals are exit 2 and write nothing", "[app][cli][cl
   CHECK(e["error"].get<std::string>().find("need motion degree >= 2") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -14,6 +14,7 @@
 #include <string>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 namespace fs = std::filesystem;
 
 namespace {
@@ -109,3 +110,5 @@ TEST_CASE("eccd generate --answer stores the exact answer, and without it there 
   const nlohmann::json forced = nlohmann::json::parse(out);
   for (const auto& f : forced["files"]) check_stored_answer(f.get<std::string>());
 }
+
+}  // namespace ECCD_UNITY_ID

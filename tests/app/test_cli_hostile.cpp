@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 namespace fs = std::filesystem;
 
@@ -235,3 +236,5 @@ TEST_CASE("regress reports symbolic link loops, dangling links and skipped names
   CHECK(contains(r.out + r.err, "zero.json"));
   CHECK(contains(r.err, "upper.JSON"));
 }
+
+}  // namespace ECCD_UNITY_ID

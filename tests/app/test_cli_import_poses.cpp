@@ -22,6 +22,7 @@
 
 #include <cmath>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 
@@ -178,3 +179,5 @@ TEST_CASE("eccd import-poses: bad CSVs, shapes and outputs are exit 2 with the p
   CHECK(miss.code == 2);
   CHECK(miss.err.find("none.csv") != std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

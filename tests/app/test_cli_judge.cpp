@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 
 namespace {
@@ -106,3 +107,5 @@ TEST_CASE("eccd judge: a scene the exact pipeline refuses exits 3", "[cli-judge]
   CHECK(r.out.empty());
   CHECK(r.err.find("cycloidal_exact.json") != std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 
 TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 2D and 3D independent scenes",
@@ -40,3 +41,5 @@ TEST_CASE("generate --families cycloidal,independent writes 2D cycloidal and 2D 
   Run none = run_eccd("generate --out-dir " + q((d.path / "h").string()) + " --families cycloidal --dims 3");
   CHECK(none.code == 2);
 }
+
+}  // namespace ECCD_UNITY_ID

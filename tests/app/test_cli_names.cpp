@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 namespace fs = std::filesystem;
 
@@ -162,3 +163,5 @@ TEST_CASE("solve's words: undecided is not collides no, and a sampled method has
   CHECK_FALSE(has(m.out, "degree -1"));
   CHECK(has(m.out, "no polynomial in t (method marching:20"));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -20,6 +20,7 @@
 #include <sys/wait.h>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 namespace {
 
 namespace fs = std::filesystem;
@@ -200,3 +201,5 @@ TEST_CASE("eccd plot draws a cycloidal scene (003 Example 1): Δ(t) from enclosu
   CHECK(changes == 4);
   CHECK(data["contacts"].size() == 2);
 }
+
+}  // namespace ECCD_UNITY_ID

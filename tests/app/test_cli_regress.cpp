@@ -20,6 +20,7 @@
 
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -162,3 +163,5 @@ TEST_CASE("eccd regress --arith certified --certify --keep-certificates: decided
   }
   CHECK(names == std::set<std::string>{"example2.cert.json", "sub__t3.cert.json"});  // path under DIR, '/' -> "__"
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 namespace fs = std::filesystem;
 using namespace eccd::clitest;
 
@@ -440,3 +441,5 @@ TEST_CASE("SIGINT stops report's workers and keeps its unfinished output only fo
     CHECK(fs::is_regular_file(w.path / "reports" / "big.partial" / "plan.json"));
   CHECK(!fs::exists(w.path / "reports" / "big"));
 }
+
+}  // namespace ECCD_UNITY_ID

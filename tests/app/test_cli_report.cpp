@@ -118,6 +118,7 @@ TEST_CASE("eccd report: two shards joined by --merge give the table of one run",
 #include <regex>
 #include <thread>
 
+namespace ECCD_UNITY_ID {
 namespace {
 
 // A started `eccd report` (fork + exec, so the test knows its pid): cwd `dir`,
@@ -443,3 +444,5 @@ TEST_CASE("eccd report --cases: animation files under the folder are left out, a
   CHECK(bad.err.find("bad.json") != std::string::npos);
   CHECK(!fs::exists(t.path / "r2" / "results.csv"));
 }
+
+}  // namespace ECCD_UNITY_ID

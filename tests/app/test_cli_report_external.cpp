@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 namespace fs = std::filesystem;
 
@@ -121,3 +122,5 @@ TEST_CASE("eccd report --external: a bad NAME=DIR is exit 2 before any work", "[
   CHECK(twice.err.find("given twice") != std::string::npos);
   CHECK(!fs::exists(out));
 }
+
+}  // namespace ECCD_UNITY_ID

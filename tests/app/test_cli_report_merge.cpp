@@ -22,6 +22,7 @@
 #include <functional>
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -130,3 +131,5 @@ TEST_CASE("eccd report --merge: parts in any order, and each bad part refused", 
   CHECK(lines(slurp(d.path / "p0" / "results.csv")) == r0);  // the part is untouched
   CHECK_FALSE(fs::exists(d.path / "out"));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -114,3 +115,5 @@ TEST_CASE("eccd report: results.csv, meta.json and the scene index of a three-sc
     CHECK(fs::is_regular_file(target));
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -25,6 +25,7 @@
 #include <map>
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -121,3 +122,5 @@ TEST_CASE("eccd report: the failure map's cells, and its exact column by indepen
   }
   CHECK(seen.size() >= 2);  // the map crosses the touch: more than one class
 }
+
+}  // namespace ECCD_UNITY_ID

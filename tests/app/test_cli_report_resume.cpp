@@ -20,6 +20,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -117,3 +118,5 @@ TEST_CASE("eccd report --resume: the plan file, the lock, other scenes, and fini
     CHECK(meta["resumed_tasks"].get<int>() <= 2);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

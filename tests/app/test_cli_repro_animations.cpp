@@ -16,6 +16,7 @@
 #include <set>
 #include <tuple>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 
@@ -114,3 +115,5 @@ TEST_CASE("paper reproductions: the 001 boxers generator through eccd animate", 
   generate(d, "boxers --frames 1 " + q(f));
   check(f, 1, 576, false);  // (--no-planes is checked on the two above: 3 s per certified boxers frame)
 }
+
+}  // namespace ECCD_UNITY_ID

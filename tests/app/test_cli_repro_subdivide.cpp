@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 
@@ -43,3 +44,5 @@ TEST_CASE("make_repro.py boxers --subdivide samples the same motion more finely"
   CHECK(make_repro("boxers --frames 3 --subdivide 0 " + q(bad)) != 0);
   CHECK_FALSE(std::filesystem::exists(bad));
 }
+
+}  // namespace ECCD_UNITY_ID

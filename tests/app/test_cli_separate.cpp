@@ -7,6 +7,7 @@
 #include <gmpxx.h>
 #include <nlohmann/json.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 
 namespace {
@@ -90,3 +91,5 @@ TEST_CASE("eccd separate: text, touching, double, and exit codes", "[separate][c
   CHECK(r.code == 3);
   CHECK(r.err.find("cycloidal") != std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

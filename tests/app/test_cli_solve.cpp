@@ -10,6 +10,7 @@
 #include <string>
 #include <sys/wait.h>
 
+namespace ECCD_UNITY_ID {
 namespace {
 using eccd::test::run;
 }  // namespace
@@ -98,3 +99,5 @@ TEST_CASE("eccd solve's summary names the polynomial: discriminant or psc_k, and
   REQUIRE(run(std::string(ECCD_EXE) + " solve " + spheres + " --arith exact", out) == 0);
   CHECK(out.find("psc_") != std::string::npos);  // two spheres: Δ ≡ 0, the projection is a subresultant coefficient
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -19,6 +19,7 @@
 
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -128,3 +129,5 @@ TEST_CASE("eccd table: one face at a time, the text table, and a missing folder"
   CHECK(none.code == 2);
   CHECK(none.err.find("not a directory") != std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using J = nlohmann::ordered_json;
 
@@ -85,3 +86,5 @@ TEST_CASE("json text: the scenes of cases/ and a 30 000-digit number round-trip"
   CHECK(text == "{\n \"x\": [\"" + std::string(30000, '7') + "\", \"1/3\"]\n}");
   CHECK(J::parse(text) == big);
 }
+
+}  // namespace ECCD_UNITY_ID

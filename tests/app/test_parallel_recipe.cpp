@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 namespace fs = std::filesystem;
 using namespace eccd::clitest;
 
@@ -144,3 +145,5 @@ TEST_CASE("the Slurm job-array script parses, and its task and merge modes run a
     CHECK(out.find("sbatch not found") != std::string::npos);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -21,6 +21,7 @@
 
 #include <cmath>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 using json = nlohmann::json;
 
@@ -116,3 +117,5 @@ TEST_CASE("plot data: snapshots, paths, the discriminant curve and the contact o
   CHECK(std::abs(data["contacts"][0]["point"][0].get<double>() - 1) < 1e-9);
   CHECK(std::abs(data["contacts"][0]["point"][1].get<double>()) < 1e-9);
 }
+
+}  // namespace ECCD_UNITY_ID

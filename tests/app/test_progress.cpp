@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::clitest;
 namespace fs = std::filesystem;
@@ -85,3 +86,5 @@ TEST_CASE("eccd table prints each row when its scene is done, with progress on s
   CHECK(r.err.find("left") != std::string::npos);
   CHECK(r.out.find("[1/3]") == std::string::npos);  // progress never on stdout
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -14,6 +14,7 @@
 
 #include <fstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 namespace fs = std::filesystem;
 
@@ -88,3 +89,5 @@ TEST_CASE("scene files: the scenes and animations of cases/", "[app][scene-files
   CHECK(scenes > 20);
   CHECK(animations >= 2);
 }
+
+}  // namespace ECCD_UNITY_ID

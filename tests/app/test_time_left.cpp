@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("time left: costs of measured and unmeasured kinds", "[app][time-left]") {
@@ -82,3 +83,5 @@ TEST_CASE("time left: text and progress-line framing", "[app][time-left]") {
   CHECK_FALSE(log.due(1, 1.0));
   CHECK(std::string(log.end(true)) == "\n");
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -18,6 +18,7 @@
 #include <map>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::check::DI;
 using eccd::check::MI;
@@ -176,3 +177,5 @@ TEMPLATE_TEST_CASE("check Net2 in intervals encloses the exact nets and proves o
   }
   CHECK(signs >= 40);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -17,6 +17,7 @@
 #include <string>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -345,3 +346,5 @@ TEST_CASE(
   CHECK(bezier == 5);
   CHECK(exact == 2);
 }
+
+}  // namespace ECCD_UNITY_ID

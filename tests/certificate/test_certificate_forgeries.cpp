@@ -23,6 +23,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -237,3 +238,5 @@ TEST_CASE(
   CHECK(out.find("eccd-cycloidal-certificate/2") != std::string::npos);
   fs::remove_all(dir);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::certificate_json;
 
@@ -137,3 +138,5 @@ TEST_CASE("certificate_json instants, intervals and the end of a proof certifica
   CHECK(sol.method == "bezier");
   CHECK(sol.decided_in.find("fmt/1") != std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -18,6 +18,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -73,3 +74,5 @@ TEST_CASE("check_certificate: a cycloidal scene takes only a cycloidal certifica
   CHECK(r.reason.find("for a cycloidal scene, got \"eccd-certificate/2\"") != std::string::npos);
   CHECK(r.reason.find("format: expected \"eccd-cycloidal-certificate/") == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::check;
 
@@ -189,3 +190,5 @@ TEST_CASE("check claims answer_claim assembles the hand-worked answer and reject
   std::vector<std::string> ch;
   CHECK_NOTHROW(answer_claim(none, apart, 64, 50, ch));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -11,6 +11,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -160,3 +161,5 @@ TEST_CASE("cycloidal certificate: a touch at t = 0 makes the first instant an un
   CHECK_FALSE(r.valid);
   CHECK(r.failed_claim == "answer");
 }
+
+}  // namespace ECCD_UNITY_ID

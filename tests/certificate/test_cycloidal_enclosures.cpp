@@ -24,6 +24,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -125,3 +126,5 @@ TEST_CASE("CycloidalEnclosures prove only the exact signs and roots of Δ", "[ce
     CHECK(narrow < wide);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -186,3 +187,5 @@ TEST_CASE("The solver's JSON says collides null when nothing is proved and a str
   j["undecided"] = json::array();  // null without anything undecided is refused
   CHECK_THROWS_AS(solution_from_json(j, "report"), SceneError);
 }
+
+}  // namespace ECCD_UNITY_ID

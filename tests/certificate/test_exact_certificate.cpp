@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -174,3 +175,5 @@ TEST_CASE("A tampered 2D certificate is rejected and the failing claim is named"
     CHECK(r.reason.find("timeline[1].cell_sample") != std::string::npos);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

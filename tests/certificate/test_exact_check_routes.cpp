@@ -17,6 +17,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -158,3 +159,5 @@ TEST_CASE(
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

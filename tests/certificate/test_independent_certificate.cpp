@@ -15,6 +15,7 @@
 #include <fstream>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -265,3 +266,5 @@ TEST_CASE("independent certificate: a body turning in place (disc-turning 2D, ba
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

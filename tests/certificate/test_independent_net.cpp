@@ -24,8 +24,11 @@
 #include <functional>
 #include <map>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::check;
+// the checker's PolyMatrix, not kernel/poly_matrix.hpp's (a unity batch of tests may include both)
+using PolyMatrix = eccd::check::PolyMatrix;
 
 namespace {
 
@@ -265,3 +268,5 @@ TEST_CASE("check Net3 holds_still and the stated shape and inverse motion", "[ce
   for (int k = 0; k < 66; ++k) deep[1][0].push_back("0");
   CHECK(rejection([&] { stated_inverse_h(deep, "p", M, 64); }).reason.find("degree at most 64") != std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -20,6 +20,7 @@
 #include <array>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::check::DI;
 using eccd::check::MI;
@@ -219,3 +220,5 @@ TEST_CASE("check::MI and DI signs, de Casteljau chains and MI's lerp width", "[c
   CHECK(width >= want);
   CHECK(width - want < mpq_class(1, mpz_class(1) << 190));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -24,6 +24,7 @@
 #include <iostream>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -292,3 +293,5 @@ TEST_CASE("Mutation campaign: no answer-changing mutation of an eccd-certificate
 }
 
 TEST_CASE("Mutation campaign, long: 10^5 mutations per kind", "[.long][mutation-long]") { campaign(100000); }
+
+}  // namespace ECCD_UNITY_ID

@@ -29,6 +29,7 @@
 #include <iostream>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -526,3 +527,5 @@ TEST_CASE("Mutation campaign, Bezier, independent and cycloidal, long: 10^5 muta
           "[.long][mutation-long]") {
   campaign(100000);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -24,6 +24,7 @@
 
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::check;
 
@@ -240,3 +241,5 @@ TEST_CASE("check pencil subresultants and discriminants against known roots", "[
   CHECK(subresultant_at(triple, 1, 1) == 0);
   CHECK(cubic_discriminant_at(triple) == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

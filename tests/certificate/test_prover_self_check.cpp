@@ -18,6 +18,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -102,3 +103,5 @@ TEST_CASE("prover_self_check rejects a certificate offered for another scene", "
   CHECK_FALSE(b.valid);
   CHECK_FALSE(b.failed_claim.empty());
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -23,6 +23,7 @@
 #include <map>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::check::QPoly;
 
@@ -187,3 +188,5 @@ TEST_CASE("check QPoly root counts: Descartes' bound and Sturm's exact counts", 
   CHECK(check::descartes(QPoly::constant(3), mpq_class(0), mpq_class(1)) == 0);
   CHECK(check::negative_roots(QPoly::constant(3)) == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -26,6 +26,7 @@
 #include <functional>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::check;
 using nlohmann::json;
@@ -191,3 +192,5 @@ TEST_CASE("check read_check_scene refuses with the place", "[certificate][check_
   CHECK(err(doc2({{"semi_axes", {"1", "1"}}}, {{"type", "euler"}})).find("3D only") != std::string::npos);
   CHECK(err(json::array()).find("bad.json: top level:") == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -15,6 +15,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using eccd::check::JsonTextError;
 using eccd::check::parse_strict;
 
@@ -85,3 +86,5 @@ TEST_CASE("check parse_strict with a scalar then a container under one key", "[c
     CHECK(problem.find("duplicate key \"a\"") != std::string::npos);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

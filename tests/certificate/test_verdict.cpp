@@ -19,6 +19,7 @@
 #include <sstream>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using eccd::check::check_certificate_files;
 using eccd::check::check_certificate_text;
 using eccd::check::covers_format;
@@ -93,3 +94,5 @@ TEST_CASE("check verdict: valid, rejected and unreadable certificates", "[certif
   CHECK_FALSE(covers_format("eccd-certificate/1"));
   CHECK_FALSE(covers_format(""));
 }
+
+}  // namespace ECCD_UNITY_ID

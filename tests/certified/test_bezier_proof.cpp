@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <variant>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -243,3 +244,5 @@ TEST_CASE("the Bézier rung keeps its budget B_Z, the caller's deadline still en
   ScopedDeadline caller(1e-9);
   CHECK_THROWS_AS(run_certified<4>(p, {256}, Variant::answer, false), BudgetExhausted);
 }
+
+}  // namespace ECCD_UNITY_ID

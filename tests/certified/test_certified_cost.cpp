@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <map>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -226,3 +227,5 @@ TEST_CASE(
   for (const auto& [rung, n] : decided_in)
     std::printf("certified cost sample: %d scene(s) decided in %s\n", n, rung.c_str());
 }
+
+}  // namespace ECCD_UNITY_ID

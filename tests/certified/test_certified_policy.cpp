@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("the certified policy does not take an uncertain count for one root",
@@ -17,3 +18,5 @@ TEST_CASE("the certified policy does not take an uncertain count for one root",
   pol.max_depth = 12;
   CHECK_THROWS_AS(pol.roots(q, false), Escalate);
 }
+
+}  // namespace ECCD_UNITY_ID

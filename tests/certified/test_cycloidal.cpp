@@ -12,6 +12,7 @@
 #include <cmath>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -193,3 +194,5 @@ TEST_CASE("cycloidal beside a rational motion: refused with a message that says 
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -29,6 +29,7 @@
 #include <map>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -286,3 +287,5 @@ TEST_CASE("exclude_region budgets: boxes, a kept region covering all, the deadli
   CHECK(res.boxes == 1);
   CHECK(calls == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

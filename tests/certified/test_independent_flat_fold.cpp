@@ -27,6 +27,7 @@
 #include <array>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -136,3 +137,5 @@ TEST_CASE("a flat fold's end (rotating pair 4, t near 0.36164) is proved on a na
   INFO(ok.failed_claim << ": " << ok.reason);
   CHECK(ok.valid);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -230,6 +230,7 @@ TEST_CASE("independent kinds in 3D: exact, certified and double against the anal
 #include "number/double_traits.hpp"
 #include "number/running_error.hpp"
 
+namespace ECCD_UNITY_ID {
 TEST_CASE("as published and guarded: plain double and Bounded<double> give the 2D crossing's ends",
           "[independent][kinds]") {
   // the floating pipeline is one template: plain T (as published) and Bounded<T> (guarded) on the same F
@@ -316,3 +317,5 @@ TEST_CASE("hold_still: a disc or ball turning about its centre is held at s = 0,
   CHECK_FALSE(still[0]);
   CHECK(F.n[1] > 0);
 }
+
+}  // namespace ECCD_UNITY_ID

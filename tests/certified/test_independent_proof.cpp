@@ -19,6 +19,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -142,3 +143,5 @@ TEST_CASE("the stored proved answer of ellipsoids-cross holds its geometric ends
   check_holds(sc.answer->t_intervals[0].first, Rational(1, 6));
   check_holds(sc.answer->t_intervals[0].second, Rational(1));
 }
+
+}  // namespace ECCD_UNITY_ID

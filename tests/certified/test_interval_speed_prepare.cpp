@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -189,3 +190,5 @@ TEST_CASE("rational polynomial products over common denominators are the coeffic
   CHECK(rational_convolution(c, c).empty());
   CHECK((x * x).c[0] == c[0] * c[0]);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -39,6 +39,7 @@
 #include <map>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::krawczyk_method;
 
@@ -463,3 +464,5 @@ TEST_CASE("krawczyk certifies the touching ends of two discs on lines from the s
   CHECK_FALSE(
       krawczyk(nets, sys, Box{{mpq_class(45, 100), mpq_class(45, 100)}, {mpq_class(55, 100), mpq_class(55, 100)}}, K));
 }
+
+}  // namespace ECCD_UNITY_ID

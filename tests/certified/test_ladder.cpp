@@ -14,6 +14,7 @@
 
 #include <filesystem>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -112,3 +113,5 @@ TEST_CASE("certified mode on paper 002's example keeps both intervals, decided b
   CHECK(r["intervals"].size() == 2);
   CHECK(regress_differences(*s.answer, answer_of(r)).empty());
 }
+
+}  // namespace ECCD_UNITY_ID

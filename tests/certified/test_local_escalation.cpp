@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -206,3 +207,5 @@ TEST_CASE("every touch and near-miss scene of cases/ gets the exact pipeline's a
   }
   CHECK(n >= 40);
 }
+
+}  // namespace ECCD_UNITY_ID

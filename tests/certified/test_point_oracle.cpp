@@ -18,6 +18,7 @@
 
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -151,3 +152,5 @@ TEST_CASE("PreparedPointOracle status_at on translating unit discs and balls", "
   check_status<3>();
   check_status<4>();
 }
+
+}  // namespace ECCD_UNITY_ID

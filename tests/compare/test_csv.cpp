@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 namespace fs = std::filesystem;
 using namespace eccd::clitest;
 
@@ -201,3 +202,5 @@ TEST_CASE("report_figures.py reads quoted fields with the csv module and names t
     CHECK_FALSE(fs::exists(t.path / "report.md"));
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 namespace fs = std::filesystem;
 
@@ -183,3 +184,5 @@ TEST_CASE("external answers: answer files are read with the engine's time", "[co
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::clitest;
 
@@ -320,3 +321,5 @@ TEST_CASE("without FCL: the pipelines do not exist and eccd fcl refuses (exit 3)
 }
 
 #endif
+
+}  // namespace ECCD_UNITY_ID

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::clitest;
 
@@ -83,3 +84,5 @@ TEST_CASE("eccd fcl --gjk-tolerance: reaches FCL, reported in the JSON, bad valu
   }
   std::filesystem::remove_all(dir);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -32,6 +32,7 @@
 #include <map>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -277,3 +278,5 @@ TEST_CASE("the guarded 3D double face decides by its second look on near misses"
   }
   CHECK(decided_by_look > 0);
 }
+
+}  // namespace ECCD_UNITY_ID

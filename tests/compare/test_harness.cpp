@@ -46,6 +46,7 @@
 #include <map>
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 namespace fs = std::filesystem;
 
@@ -509,3 +510,5 @@ TEST_CASE("harness: coefficient errors only on prepared rows, and a run over its
     CHECK(row.m.outcome == "undecided");
   }
 }
+
+}  // namespace ECCD_UNITY_ID

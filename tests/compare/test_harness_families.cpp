@@ -18,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -126,3 +127,5 @@ TEST_CASE("harness families: meta.json counts the scenes without ground truth on
   CHECK(none["list"].empty());
   CHECK(no_ground_truth_meta({})["scenes"] == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

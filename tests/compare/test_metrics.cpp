@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -194,3 +195,5 @@ TEST_CASE("harness: a run that does not stop is killed and recorded as a time-ou
   else
     CHECK(r.got.has_value());
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -15,6 +15,7 @@
 #include <map>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -254,3 +255,5 @@ TEST_CASE("harness rows of the motion families: ground truth certified / exact, 
     CHECK(m["list"][0]["scene"] == "ellipsoids-cross");
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -23,6 +23,7 @@
 
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -149,3 +150,5 @@ TEST_CASE("needle family: specs out of range are refused", "[compare][needle-fam
   const Centre c = centre_of(s);
   CHECK(c.x(Rational(1, 2)) / c.w(Rational(0)) == Rational(-21, 10));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -24,6 +24,7 @@
 #include <regex>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -467,3 +468,5 @@ TEST_CASE("the Bezier method finds the collision of issue 14's scene missed-0.02
     CHECK(seen);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -24,6 +24,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -144,3 +145,5 @@ TEST_CASE("regress: stored answers of the cases agree with the exact pipeline", 
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -26,6 +26,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+namespace ECCD_UNITY_ID {
 namespace fs = std::filesystem;
 
 namespace {
@@ -523,3 +524,5 @@ TEST_CASE("report_figures.py: both faces - the as-published table, the guard's r
   REQUIRE(!degree_table.empty());
   for (const auto& l : degree_table) CHECK(l.find("/published") == std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

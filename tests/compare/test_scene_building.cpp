@@ -31,6 +31,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::scene_building;
 
@@ -340,3 +341,5 @@ TEST_CASE("scene building: touch, near-miss and free builders, judged by the exa
   CHECK(misses == 12);
   CHECK(frees == 12);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -91,3 +92,5 @@ TEST_CASE("the generator refuses what it cannot build", "[generator]") {
   s.family = "grazing";
   CHECK_THROWS_AS(generate_scene(s), std::invalid_argument);
 }
+
+}  // namespace ECCD_UNITY_ID

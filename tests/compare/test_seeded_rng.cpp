@@ -20,6 +20,7 @@
 
 #include <set>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("seeded rng: next() gives splitmix64's reference outputs", "[compare][seeded-rng]") {
@@ -98,3 +99,5 @@ TEST_CASE("seeded rng: frac() is uniform() over den, canonical", "[compare][seed
   CHECK(equal);
   CHECK(canonical);
 }
+
+}  // namespace ECCD_UNITY_ID

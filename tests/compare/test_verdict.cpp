@@ -21,6 +21,7 @@
 
 #include <cstdio>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -234,3 +235,5 @@ TEST_CASE("verdict: an undecided answer that claims nothing about collides is no
   CHECK(v.undecided == 1);
   CHECK_FALSE(v.wrong_collides);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using Q = mpq_class;
 using RP = Poly<Rational>;
@@ -333,3 +334,5 @@ TEST_CASE("real_roots on [0, 1] (square-free fast path) agrees with the general 
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -5,6 +5,7 @@
 
 #include <iostream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -137,3 +138,5 @@ TEST_CASE("random 2D scenes: the exact answer agrees with exact Sturm counts at 
   }
   std::cout << "  " << collide << " of 12 random scenes collide\n";
 }
+
+}  // namespace ECCD_UNITY_ID

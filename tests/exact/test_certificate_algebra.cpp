@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -194,3 +195,5 @@ TEST_CASE("certificate_algebra coefficient sizes and written coefficients", "[ex
   CHECK(integer_coefficients(q) == std::vector<std::string>{"1", "-307200"});
   CHECK(integer_coefficients(Poly<Rational>()).empty());
 }
+
+}  // namespace ECCD_UNITY_ID

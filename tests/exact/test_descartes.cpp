@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using Q = mpq_class;
 
@@ -18,3 +19,5 @@ TEST_CASE("Descartes on an interval agrees with the number of roots for products
   CHECK(descartes_variations(p, Q(0), Q(3, 10)) == 1);
   CHECK(descartes_variations(p, Q(3, 10), Q(2, 5)) == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -18,6 +18,7 @@
 #include <thread>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using Q = mpq_class;
 using RP = Poly<Rational>;
@@ -192,3 +193,5 @@ TEST_CASE("FLINT's square-free factorisation and gcds give the same results from
   for (auto& th : threads) th.join();
   for (int t = 0; t < 4; ++t) CHECK(bad[t] == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -20,6 +20,7 @@
 
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -258,3 +259,5 @@ TEST_CASE("ball_projection agrees with the exact distance at many instants", "[e
   CHECK(nonempty >= 5);
   CHECK(partial >= 3);  // ends inside (0, 1), not only the whole interval
 }
+
+}  // namespace ECCD_UNITY_ID

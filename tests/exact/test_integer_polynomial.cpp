@@ -12,6 +12,7 @@
 
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("primitive_integer_multiple is a positive primitive integer multiple", "[exact][integer_polynomial]") {
@@ -56,3 +57,5 @@ TEST_CASE("primitive_integer_multiple on hand-worked and degenerate polynomials"
   const Z z = primitive_integer_multiple(Poly<Rational>(std::vector<Rational>{a, Rational(mpz_class(1), p3)}));
   CHECK(z == Z{p3, mpz_class(1) << 100});
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -29,6 +29,7 @@
 #include <cstdlib>
 #include <iostream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 
@@ -400,3 +401,5 @@ TEST_CASE("metamorphic: larger degrees (hidden, slow)", "[.][metamorphic-large][
                     {3, "euler", {4}, {"random"}, 2, true},
                     {3, "euler", {7}, {"multi-pass"}, 1, false}});
 }
+
+}  // namespace ECCD_UNITY_ID

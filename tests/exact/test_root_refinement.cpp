@@ -27,6 +27,7 @@
 #include <cmath>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::root_refinement;
 
@@ -300,3 +301,5 @@ TEST_CASE("root_refinement stops at a passed deadline with BudgetExhausted", "[e
   REQUIRE(R.refine(d, 100, exact));
   check_bracket(f, d, 100, [](const mpq_class& x) { return x < 0 || x * x < 2; });
 }
+
+}  // namespace ECCD_UNITY_ID

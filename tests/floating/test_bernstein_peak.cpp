@@ -32,6 +32,7 @@
 #include <optional>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -182,3 +183,5 @@ TEMPLATE_TEST_CASE("bern_argmax on degenerate and end-point peaks", "[floating][
   const std::vector<mpq_class> at1{mpq_class(1), mpq_class(-1, 2)};
   check_peak<TestType>(from_derivative_roots(mpq_class(-2), at1, mpq_class(0)), at1);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -21,6 +21,7 @@
 
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -122,3 +123,5 @@ TEST_CASE("restrict_t restricts every row of a bivariate net in t", "[floating][
     CHECK(restrict_t(f, a, b, mpq_class(1)).b == r.b);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

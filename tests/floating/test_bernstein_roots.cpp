@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 
@@ -97,3 +98,5 @@ TEST_CASE("double roots of Δ agree with exact isolation on the generated 2D cas
   CHECK(files >= 50);
   CHECK(simple_checked >= 31);  // the isolated simple roots of these 50 cases (31 when this test was written)
 }
+
+}  // namespace ECCD_UNITY_ID

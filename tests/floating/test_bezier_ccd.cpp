@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using Pts = std::vector<std::pair<double, double>>;
 
@@ -120,3 +121,5 @@ TEST_CASE("Gaussian-circle test by cross-product signs decides exactly", "[kerne
   const Pts near_opposite{{3e300, 7e300}, {-3e-300, -7e-300}};
   CHECK(bezier_detail::pointed(near_opposite) == by_definition(near_opposite));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -74,3 +75,5 @@ TEST_CASE("the Bezier pipeline's answer, cells and critical instants all have th
   CHECK(collided > 0);  // interval ends were among the instants checked
   CHECK(checked > 12 * 30);
 }
+
+}  // namespace ECCD_UNITY_ID

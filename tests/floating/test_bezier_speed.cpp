@@ -25,6 +25,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -173,3 +174,5 @@ TEST_CASE("keep_u_left and keep_u_right are split_u's pieces", "[kernel][bezier]
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <optional>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -299,3 +300,5 @@ TEST_CASE("paper002's example in MPFR 128: sampling and marching within 1/N of t
     CHECK(max_endpoint_error(run.r.answer, ex.answer) < 1.0 / run.N);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -156,3 +157,5 @@ TEST_CASE("003 Example 2 family: MPFR 128 (Bernstein) never contradicts the exac
       CHECK_FALSE(ex.answer.collides);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

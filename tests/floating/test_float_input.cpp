@@ -18,6 +18,7 @@
 #include <cmath>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -178,3 +179,5 @@ TEST_CASE(
   // Division by a value within its bound of 0: infinite bound, uncertain sign.
   CHECK(sign(B(1) / r) == Sign::uncertain);
 }
+
+}  // namespace ECCD_UNITY_ID

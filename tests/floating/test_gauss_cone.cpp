@@ -27,6 +27,7 @@
 #include <cmath>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using bezier_detail::cross_sign;
 using bezier_detail::pointed;
@@ -154,3 +155,5 @@ TEST_CASE("pointed with a cross product that underflows", "[floating][gauss_cone
   CHECK(exact_cross(0x1p-300, 0x1p-800, 0x1p-300, 0x1p-801) == -1);
   CHECK_FALSE(pointed(p));
 }
+
+}  // namespace ECCD_UNITY_ID

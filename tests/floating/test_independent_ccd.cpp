@@ -28,6 +28,7 @@
 #include <cmath>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -163,3 +164,5 @@ TEST_CASE("ccd_independent with a body that does not move", "[floating][independ
   CHECK(std::fabs(r.answer.t_intervals[0].first.value - (11 - std::sqrt(3.0)) / 10) <= 1e-9);
   CHECK(r.answer.t_intervals[0].second.value == 1.0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -127,3 +128,5 @@ TEST_CASE("needle family: every guarded answer agrees with exact or is undecided
   INFO(wrong.str());
   CHECK(wrong.str().empty());
 }
+
+}  // namespace ECCD_UNITY_ID

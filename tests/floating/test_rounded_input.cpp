@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -213,3 +214,5 @@ TEST_CASE("to_bernstein_pair and characteristic_bernstein_of evaluate like the p
   CHECK_FALSE(normalise_coefficients(gi));
   CHECK(gi[0].c[0] == 1.0);  // nothing scaled
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -19,6 +19,7 @@
 #include <random>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -141,3 +142,5 @@ TEST_CASE("translating pairs: touches fall back, near touches are never confiden
   }
   CHECK(t.runs == 18);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 TEST_CASE("fuzz: the animation reader gives an animation or a clear SceneError on mutated files", "[fuzz][animation]") {
   const std::uint64_t seed = eccd::test::fuzz_seed();
   const double budget = eccd::test::fuzz_seconds() / 2;
@@ -68,3 +69,5 @@ TEST_CASE("fuzz: the animation reader gives an animation or a clear SceneError o
   CHECK(runs > 0);
   CHECK(rejected > 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -22,6 +22,7 @@
 #include <map>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 namespace {
 
 struct Genuine {
@@ -129,3 +130,5 @@ TEST_CASE("fuzz: the certificate checker gives a verdict on mutated certificates
                valid, rejected, unparsable, slowest);
   CHECK(runs > 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::clitest;
 namespace fs = std::filesystem;
 
@@ -101,3 +102,5 @@ TEST_CASE(
     fs::remove(file);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 namespace {
 
 std::vector<std::string> scene_corpus() {
@@ -85,3 +86,5 @@ TEST_CASE("fuzz: the scene reader gives a scene or a clear SceneError on mutated
   CHECK(runs > 0);
   CHECK(rejected > 0);
 }
+
+}  // namespace ECCD_UNITY_ID

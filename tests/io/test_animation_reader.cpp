@@ -9,6 +9,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using json = nlohmann::json;
 
@@ -212,3 +213,5 @@ TEST_CASE("animation reader: shapes and positions as in scenes", "[animation]") 
   j["dim"] = 2;
   require_error(j, "/bodies/0/shape/semi_axes", "must have 2 entries");
 }
+
+}  // namespace ECCD_UNITY_ID

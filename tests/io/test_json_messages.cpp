@@ -19,6 +19,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd::json_messages;
 
 namespace {
@@ -92,3 +93,5 @@ TEST_CASE("json_messages json_error_text places a parse error", "[io][json_messa
   const std::string long_digits = json_error_text("x", 1, cat("bad ", std::string(60, '9')));
   CHECK(long_digits.find("(60 digits)") != std::string::npos);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -11,6 +11,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -83,3 +84,5 @@ TEST_CASE("CSV errors name the file, the line and the column", "[pose_import]") 
             .rfind("p.csv: line 2: a NUL byte", 0) == 0);
   CHECK_THROWS_WITH(shapes_from_text(R"({"dim": 4, "bodies": []})", "s.json"), Catch::StartsWith("s.json: /dim: "));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -10,6 +10,7 @@
 #include <string>
 #include <variant>
 
+namespace ECCD_UNITY_ID {
 using eccd::Rational;
 using eccd::RPoly;
 using eccd::SceneError;
@@ -616,3 +617,5 @@ TEST_CASE("truncated or mangled files give SceneError, never anything else", "[s
   attempt(std::string(200, '[') + std::string(200, ']'));  // deep nesting
   attempt(std::string("\xff\xfe{}", 4));                   // not UTF-8
 }
+
+}  // namespace ECCD_UNITY_ID

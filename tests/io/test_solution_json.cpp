@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -48,3 +49,5 @@ TEST_CASE("solution JSON, a decided independent run with collides true and an em
                       {"arith", "exact"}};
   CHECK_THROWS_WITH(solution_from_json(j, "bad"), Catch::Contains("collides is true but s_intervals is empty"));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -128,3 +129,5 @@ TEST_CASE("escape_invalid_utf8 and utf8_for_json: each bad byte shown by its hex
     CHECK(valid_utf8(escape_invalid_utf8(s)));
   }
 }
+
+}  // namespace ECCD_UNITY_ID

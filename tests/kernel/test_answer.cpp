@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -70,3 +71,5 @@ TEST_CASE("rounded_instant of a double gives the general rule's text exactly", "
   }
   CHECK(differing == 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -37,3 +38,5 @@ TEST_CASE("a projection built in each basis is the same polynomial in exact arit
           }) == want);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

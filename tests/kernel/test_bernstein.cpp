@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <utility>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -122,3 +123,5 @@ TEMPLATE_TEST_CASE(
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

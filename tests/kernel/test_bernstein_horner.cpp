@@ -14,6 +14,7 @@
 #include <span>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -156,3 +157,5 @@ TEST_CASE("BernsteinHorner falls back to de Casteljau: low and high degree, over
   CHECK(ht(0x1p-17) == bernstein_value(std::span<const double>(tiny), 0x1p-17));
   CHECK(ht(0x1p-17) > 0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -58,3 +59,5 @@ TEMPLATE_TEST_CASE(
   (void)binomial_row(400, likes.front());
   CHECK(to_double(r10[5]) == 252.0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -10,6 +10,7 @@
 #include <random>
 #include <type_traits>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -113,3 +114,5 @@ TEMPLATE_TEST_CASE("split_u and split_t in place equal split() of every column a
     CHECK(all);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -16,6 +16,7 @@
 
 #include <thread>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -83,3 +84,5 @@ TEST_CASE("budget: the thread-CPU clock, and a deadline belongs to its thread", 
   t.join();
   CHECK_FALSE(other);  // another thread has no deadline
 }
+
+}  // namespace ECCD_UNITY_ID

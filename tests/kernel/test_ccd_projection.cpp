@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 
@@ -202,3 +203,5 @@ TEST_CASE("Random 3D scenes of motion degree 2 and 4: the exact answer agrees wi
   WARN("random 3D: " << collided << " of 9 collide; " << checked << " instants checked exactly, " << bezier_checked
                      << " against double Bezier");
 }
+
+}  // namespace ECCD_UNITY_ID

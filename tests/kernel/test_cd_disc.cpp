@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -510,3 +511,5 @@ TEST_CASE("cd_disc with a running error bound claims only what the exact run say
   }
   CHECK(res.status_at_0 == Status::separate);
 }
+
+}  // namespace ECCD_UNITY_ID

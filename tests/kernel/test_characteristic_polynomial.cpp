@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -114,3 +115,5 @@ TEST_CASE("two unit circles at distance 3, 2 and 1 are separate, touching and ov
     CHECK(cubic_contact_status(at(g[3], t), at(g[2], t), at(g[1], t), at(g[0], t)) == want[d - 1]);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -125,3 +126,5 @@ TEST_CASE("an isolated overlapping instant between separate cells", "[kernel][co
   check_isolated_instants(ok, true);
   CHECK(ok[2].status == Status::overlapping);
 }
+
+}  // namespace ECCD_UNITY_ID

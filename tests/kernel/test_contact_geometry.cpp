@@ -15,6 +15,7 @@
 #include <cmath>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -143,3 +144,5 @@ TEST_CASE("contact_geometry refuses a pencil whose f has degree below 2", "[kern
   b[2][2] = -1;
   CHECK_FALSE((contact_geometry<double, 3>(a, b).ok));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -16,6 +16,7 @@
 #include <random>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("truncated_double reads n / d as mpq_get_d does, without reducing the fraction",
@@ -86,3 +87,5 @@ TEST_CASE("contact_point_integer prints what contact_point<mpq_class> prints, on
   CHECK(scenes >= 20);
   CHECK(points >= 50);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -21,6 +21,7 @@
 #include <set>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -104,3 +105,5 @@ TEST_CASE("status at a multiple root, collision and names", "[kernel][contact_st
   CHECK_FALSE(in_collision(Status::uncertain));
   CHECK(std::string(to_string(Status::touching)) == "touching");
 }
+
+}  // namespace ECCD_UNITY_ID

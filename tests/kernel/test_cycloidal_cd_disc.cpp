@@ -26,6 +26,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -276,3 +277,5 @@ TEST_CASE("cycloidal_cd_disc at its work bound and in the variants of 003 VI-C",
     CHECK(all.answer.contact_points.size() == 2);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

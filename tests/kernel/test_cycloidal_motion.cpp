@@ -19,6 +19,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -183,3 +184,5 @@ TEST_CASE("cycloidal_pair refuses a rational motion beside a cycloidal one", "[k
     CHECK(std::string(e.what()).find("object b has a matrix motion beside a cycloidal one") != std::string::npos);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -110,3 +111,5 @@ TEST_CASE("the cubic discriminant vanishes exactly on a double root, in every re
   // Distinct roots 1, 2, 3: Δ = ((1-2)(1-3)(2-3))² = 4.
   CHECK(cubic_discriminant(Q(1), Q(-6), Q(11), Q(-6)) == 4);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -13,6 +13,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -73,3 +74,5 @@ TEST_CASE("sqrt_of and abs_of in double and Mpfr", "[kernel][eigen_scalar]") {
   CHECK(abs_of(-2.5) == 2.5);
   CHECK(exact(abs_of(Mpfr(mpq_class(-5, 8), 64))) == mpq_class(5, 8));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -26,6 +26,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -200,3 +201,5 @@ TEST_CASE("ellipsoid_function of moving spheres from the pipeline's g: its sign 
   CHECK(pos > 20);
   CHECK(neg > 20);
 }
+
+}  // namespace ECCD_UNITY_ID

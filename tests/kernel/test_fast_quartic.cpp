@@ -16,6 +16,7 @@
 #include <random>
 #include <sstream>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -235,3 +236,5 @@ TEMPLATE_TEST_CASE("quartic_contact_status at exact external tangency", "[static
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

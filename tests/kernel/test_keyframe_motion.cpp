@@ -17,6 +17,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -166,3 +167,5 @@ TEST_CASE("keyframe_motion takes the shorter way round and keeps degree 2 for a 
   (*a.deformation)[0][1] = q(1, 2);
   CHECK_FALSE(keyframe_is_identity(a, 2));
 }
+
+}  // namespace ECCD_UNITY_ID

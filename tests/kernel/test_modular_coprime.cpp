@@ -15,6 +15,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -94,3 +95,5 @@ TEST_CASE("content_is_constant on polynomial matrices", "[kernel][modular_coprim
   z[1][0] = RP::constant(Rational(-7));
   CHECK(content_is_constant(z));  // one constant entry
 }
+
+}  // namespace ECCD_UNITY_ID

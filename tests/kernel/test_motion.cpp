@@ -7,6 +7,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -52,3 +53,5 @@ TEST_CASE("motion inverses: M N = c(t) I for every rational form", "[kernel][mot
   }
   check_inverse<H_2D>(Motion(StaticMotion{}));
 }
+
+}  // namespace ECCD_UNITY_ID

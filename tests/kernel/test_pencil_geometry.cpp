@@ -17,6 +17,7 @@
 #include <cmath>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -118,3 +119,5 @@ TEST_CASE("pencil roots in double: Newton inside the sign-change bracket ends on
   CHECK(std::abs(got[1] - 0.25) <= 1e-15);
   CHECK(std::abs(got[2] - 3) <= 1e-15);
 }
+
+}  // namespace ECCD_UNITY_ID

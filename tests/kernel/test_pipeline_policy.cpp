@@ -51,6 +51,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -336,3 +337,5 @@ TEMPLATE_TEST_CASE("every pipeline policy keeps the contract on scenes of cases/
   for (const auto& f : kTouching) check_scene<TestType>(f, false);
   for (const auto& f : kClear) check_scene<TestType>(f, true);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("undecided_everywhere claims nothing and says why", "[kernel][pipeline_result]") {
@@ -59,3 +60,5 @@ TEST_CASE("result_from_bernstein: the variant and g in power form", "[kernel][pi
       }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -23,6 +23,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -136,3 +137,5 @@ TEMPLATE_TEST_CASE("positive_on_unit_interval with an error bound: decides where
   CHECK(where.find("after 8 subdivisions") != std::string::npos);
   CHECK(where.find("0.5") != std::string::npos);  // the piece at the double root
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -15,6 +15,7 @@
 #include <numeric>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -110,3 +111,5 @@ TEST_CASE("poly_matrix: identity, minor_det of a submatrix, the inverse of a tra
   CHECK(inv[2][0].is_zero());
   CHECK(inv[0][1].is_zero());
 }
+
+}  // namespace ECCD_UNITY_ID

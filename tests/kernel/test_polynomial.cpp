@@ -19,6 +19,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -154,3 +155,5 @@ TEST_CASE("Poly in rounded arithmetics: double and MPFR near the exact value, Bo
     CHECK(abs(Rational(v.value()) - want) <= test::exact_of(static_cast<long double>(v.bound())));
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -355,3 +356,5 @@ TEST_CASE("prepare_pair changes no status: the prepared pencil and M^-T Q M^-1 a
   CHECK(separate > 10);
   CHECK(overlapping > 10);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -13,6 +13,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -112,3 +113,5 @@ TEST_CASE("moving_quadric of a translated circle is the circle at its moving cen
   CHECK(a[0][2] == -x);
   CHECK(a[2][2] == x * x + y * y - RP::constant(Rational(4)));
 }
+
+}  // namespace ECCD_UNITY_ID

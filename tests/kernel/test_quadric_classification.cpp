@@ -18,6 +18,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -172,3 +173,5 @@ TEST_CASE("symmetric_inertia counts the signs of the eigenvalues", "[kernel][qua
   }
   CHECK(checked > 300);
 }
+
+}  // namespace ECCD_UNITY_ID

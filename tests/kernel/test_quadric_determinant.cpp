@@ -16,6 +16,7 @@
 #include <numeric>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -100,3 +101,5 @@ TEST_CASE("quadric_det_at is det(N(t)^T Q N(t)) formed in rationals", "[kernel][
   check_random<3>(rng, 60);
   check_random<4>(rng, 30);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -20,6 +20,7 @@
 #include <limits>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -135,3 +136,5 @@ TEST_CASE("quartic_sign_status: a sign pattern impossible for ellipsoids throws 
   CHECK_THROWS_AS(quartic_sign_status(g), std::logic_error);
   CHECK(quartic_sign_status(gd) == Status::uncertain);
 }
+
+}  // namespace ECCD_UNITY_ID

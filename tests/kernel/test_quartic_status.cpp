@@ -18,6 +18,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -143,3 +144,5 @@ TEST_CASE("quartic_status_at over Poly and Bern coefficients: the double root at
   std::vector<RP> six(6, RP::constant(Rational(1)));
   CHECK_THROWS_AS(quartic_status_at(six, Rational(0)), std::invalid_argument);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -18,6 +18,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -104,3 +105,5 @@ TEST_CASE("negative_multiple_root: complex double pairs, a root at 0, two sphere
   CHECK(subresultant_evidence_name(3, 3) == "s(3,3)");
   CHECK(subresultant_evidence_name(2, -1) == "disc(S_2)");
 }
+
+}  // namespace ECCD_UNITY_ID

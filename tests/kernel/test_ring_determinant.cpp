@@ -22,6 +22,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -141,3 +142,5 @@ TEST_CASE("is_ring_zero knows the zero of each ring", "[kernel][ring_determinant
   b.b[1] = Rational(-1);
   CHECK_FALSE(is_ring_zero(b));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -88,3 +89,5 @@ TEST_CASE("scaled Bernstein in double: the round trip from Bernstein form is wit
     for (std::size_t i = 0; i < b.b.size(); ++i) CHECK(std::abs(back.b[i] - b.b[i]) <= 2 * 0x1p-52 * std::abs(b.b[i]));
   }
 }
+
+}  // namespace ECCD_UNITY_ID

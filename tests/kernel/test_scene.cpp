@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("motion_type_name is the scene file's motion type", "[kernel][scene]") {
@@ -40,3 +41,5 @@ TEST_CASE("motion_type_name is the scene file's motion type", "[kernel][scene]")
   }
   CHECK(std::string(motion_type_name(Motion(CycloidalMotion{}))) == "cycloidal");
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -132,3 +133,5 @@ TEMPLATE_TEST_CASE("separating_plane refuses overlapping pairs and says why", "[
   CHECK_FALSE(p3.ok);
   CHECK_FALSE(p3.why.empty());
 }
+
+}  // namespace ECCD_UNITY_ID

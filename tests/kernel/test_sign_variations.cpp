@@ -10,6 +10,7 @@
 
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using Q = mpq_class;
 
@@ -32,3 +33,5 @@ TEST_CASE("sign variations report an uncertain sign instead of skipping it", "[k
   std::vector<Interval> ys{Interval(1.0, 2.0), Interval(-3.0, -2.0), Interval(0), Interval(1.0, 1.5)};
   CHECK(sign_variations(ys).is(2));
 }
+
+}  // namespace ECCD_UNITY_ID

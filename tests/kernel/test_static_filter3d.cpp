@@ -20,6 +20,7 @@
 #include <span>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -277,3 +278,5 @@ TEST_CASE("static filter 3D: the vector lanes (number/lane_vector.hpp) give the 
   CHECK(refused > 300);
   CHECK(decided > 1500);  // most random pairs are decided, so the comparison covers both statuses
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -10,6 +10,7 @@
 #include <random>
 #include <type_traits>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using namespace eccd::test;
 using Q = mpq_class;
@@ -75,3 +76,5 @@ TEMPLATE_TEST_CASE("fixed-capacity Sturm (count_roots_inline) counts as the Poly
   auto too_many = [&] { return count_roots_inline<5, T>(std::span<const T>(six), std::nullopt, std::nullopt); };
   CHECK_THROWS_AS(too_many(), std::length_error);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("The quartic discriminant is Res(f, f') / lc(f)", "[subresultants]") {
@@ -47,3 +48,5 @@ TEST_CASE("The first non-zero psc gives the gcd degree, and S_j is the gcd", "[s
   CHECK(b == 0);
   CHECK(c0 / a == -1);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -21,6 +21,7 @@
 #include <numeric>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -198,3 +199,5 @@ TEST_CASE("TriBern without_positive_factor splits off a factor of one sign along
   // degree 0 along the axis: nothing to split off
   CHECK_FALSE(g.without_positive_factor(1));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::test::abs_q;
 using eccd::test::random_rational;
@@ -43,3 +44,5 @@ TEST_CASE("scalar_traits<double>::from_rational is the nearest double on both pa
   const double third = scalar_traits<double>::from_rational(mpq_class(1, 3));
   CHECK(std::stod(scalar_traits<double>::to_string(third)) == third);
 }
+
+}  // namespace ECCD_UNITY_ID

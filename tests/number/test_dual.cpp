@@ -10,6 +10,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("Dual<Rational>: a polynomial at (t, 1) is its value and its derivative", "[number][dual]") {
@@ -54,3 +55,5 @@ TEST_CASE("Dual: sums, differences, products and negation follow the rules of de
   x -= b;
   CHECK(x.v == Rational(6));
 }
+
+}  // namespace ECCD_UNITY_ID

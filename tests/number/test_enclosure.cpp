@@ -15,6 +15,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -185,3 +186,5 @@ TEST_CASE("sin_cos_pi in MPFI and for Dual numbers, pi_enclosure, range_of, magn
   CHECK(magnitude_bound(rb) >= 5.0 / 7);
   CHECK(magnitude_bound(Bounded<double>(-2.0, 0.5)) >= 2.5);
 }
+
+}  // namespace ECCD_UNITY_ID

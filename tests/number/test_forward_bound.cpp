@@ -18,6 +18,7 @@
 #include <limits>
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -113,3 +114,5 @@ TEST_CASE("ForwardBound's depth rules, leaves and sign rule", "[number][forward_
   CHECK(scalar_traits<ForwardBound>::abs(ForwardBound(-2.0, 5.0, 3)).value() == 2.0);
   CHECK(scalar_traits<ForwardBound>::abs(ForwardBound(-2.0, 5.0, 3)).bound() == ForwardBound(-2.0, 5.0, 3).bound());
 }
+
+}  // namespace ECCD_UNITY_ID

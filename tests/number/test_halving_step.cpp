@@ -18,6 +18,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::test::exact_of;
 
@@ -125,3 +126,5 @@ TEST_CASE(
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -13,6 +13,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -112,3 +113,5 @@ TEST_CASE("Integer Horner at a rational point equals Horner in rationals", "[int
     REQUIRE(Poly<Rational>(p)(t) == want);  // Poly's Horner goes through it
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -21,6 +21,7 @@
 #include <random>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -161,3 +162,5 @@ TEST_CASE("Interval operations enclose the exact rational results", "[certified]
   CHECK(scalar_traits<Interval>::sign(Interval(0, 0)) == Sign::zero);
   CHECK(scalar_traits<Interval>::sign(Interval(1, 1) / Interval(-1, 1)) == Sign::uncertain);
 }
+
+}  // namespace ECCD_UNITY_ID

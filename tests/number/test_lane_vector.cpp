@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -86,3 +87,5 @@ TEMPLATE_TEST_CASE_SIG("LaneMagnitude<W> bounds magnitudes lane by lane", "[numb
     CHECK(M(-2).value()[l] == 2.0);
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -53,3 +54,5 @@ TEST_CASE("MPFI intervals enclose the exact rational results and carry their pre
   CHECK(exact_point(MpfiInterval(Rational(3, 8), 60)) == Rational(3, 8));
   CHECK(!exact_point(MpfiInterval(Rational(1, 3), 60)));
 }
+
+}  // namespace ECCD_UNITY_ID

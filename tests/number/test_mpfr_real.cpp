@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::test::abs_q;
 using eccd::test::exact_of;
@@ -46,3 +47,5 @@ TEST_CASE("scalar_traits<Mpfr>: rounding to nearest at the value's precision, an
   // to_string has the digits of the precision: 200 bits print at least 60 significant digits
   CHECK(scalar_traits<Mpfr>::to_string(b).size() >= 60);
 }
+
+}  // namespace ECCD_UNITY_ID

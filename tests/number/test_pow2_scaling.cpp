@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::test::exact_of;
 
@@ -96,3 +97,5 @@ TEST_CASE("normalise_pow2 refuses a non-finite value and scales nothing", "[numb
   }));
   CHECK(exact_of(ms[0]) == 5);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -14,6 +14,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -85,3 +86,5 @@ TEST_CASE("rational_convolution refuses many unrelated denominators", "[number][
   CHECK(r[1] == 2 * few[0] + few[1] / 3);
   CHECK(r[2] == 2 * few[1]);
 }
+
+}  // namespace ECCD_UNITY_ID

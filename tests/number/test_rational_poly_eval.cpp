@@ -11,6 +11,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -55,3 +56,5 @@ TEST_CASE("rational_poly_eval is mpq Horner, in canonical form", "[number][ratio
   // 1/2 + 0 t + (1/3) t² at t = -3/2: 1/2 + 3/4 = 5/4
   CHECK(rational_poly_eval({mpq_class(1, 2), 0, mpq_class(1, 3)}, mpq_class(-3, 2)) == mpq_class(5, 4));
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("scalar_traits<mpq_class> is exact", "[number][scalar_traits]") {
@@ -17,3 +18,5 @@ TEST_CASE("scalar_traits<mpq_class> is exact", "[number][scalar_traits]") {
   CHECK(scalar_traits<mpq_class>::precision(q) == 0);
   CHECK(scalar_traits<mpq_class>::to_string(q) == "-22/7");
 }
+
+}  // namespace ECCD_UNITY_ID

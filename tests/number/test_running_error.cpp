@@ -17,6 +17,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 using eccd::test::exact_of;
 
@@ -88,3 +89,5 @@ TEST_CASE("Bounded<Mpfr>: the running bound of a short computation contains the 
     }
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -21,6 +21,7 @@
 #include <random>
 #include <vector>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -389,3 +390,5 @@ TEST_CASE("running_error_loops: the a-priori bounds contain the exact values", "
   INFO(weakened_misses << " of " << checks << " checks miss with the bounds divided by 2^8");
   CHECK(weakened_misses > checks / 10);
 }
+
+}  // namespace ECCD_UNITY_ID

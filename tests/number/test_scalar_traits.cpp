@@ -9,6 +9,7 @@
 
 #include <string>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("signs multiply as numbers, and an uncertain factor makes an uncertain product", "[number][scalar_traits]") {
@@ -25,3 +26,5 @@ TEST_CASE("signs multiply as numbers, and an uncertain factor makes an uncertain
   CHECK((Sign::zero * Sign::uncertain) == Sign::uncertain);  // 0 times an unknown sign: not claimed
   CHECK(std::string(to_string(Sign::uncertain)) == "uncertain");
 }
+
+}  // namespace ECCD_UNITY_ID

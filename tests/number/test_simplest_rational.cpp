@@ -10,6 +10,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -87,3 +88,5 @@ TEST_CASE("simplest_rational_in: the smallest denominator in [lo, hi]", "[number
     CHECK(r.get_den() == smallest_denominator(lo, hi));
   }
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -16,6 +16,7 @@
 
 #include <random>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 namespace {
@@ -97,3 +98,5 @@ TEST_CASE("static bound: the scalar types' rules", "[number][static_bound]") {
   CHECK((-ValueMagnitude::leaf(4.0)).value() == -4.0);
   CHECK((-ValueMagnitude::leaf(4.0)).magnitude() == 4.0);
 }
+
+}  // namespace ECCD_UNITY_ID

@@ -12,6 +12,7 @@
 
 #include <stdexcept>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("parse_arithmetic and Arithmetic::name are inverse on every form", "[solution][arithmetic]") {
@@ -87,3 +88,5 @@ TEST_CASE("parse_arithmetic refuses malformed names with the text in the message
   CHECK_THROWS_AS(Arithmetic::mpfr(20), std::invalid_argument);
   CHECK_THROWS_AS(Arithmetic::certified({300, 200}), std::invalid_argument);
 }
+
+}  // namespace ECCD_UNITY_ID

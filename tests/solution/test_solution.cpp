@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+namespace ECCD_UNITY_ID {
 using namespace eccd;
 
 TEST_CASE("solution_of carries a CD-DISC run's answer and diagnostics", "[solution][solution]") {
@@ -76,3 +77,5 @@ TEST_CASE("solution_of on built results: psc_k, variants, reasons, counters, und
   CHECK(std::string(variant_name(Variant::first_contact)) == "first-contact");
   CHECK(std::string(variant_name(Variant::all_contacts)) == "all-contacts");
 }
+
+}  // namespace ECCD_UNITY_ID
