@@ -79,13 +79,15 @@ inline constexpr double kTiny = 0x1p-1072;  // per term or step: value and bound
 // Above this degree the triangle keeps the running bound: counting |b_i| instead of the cancelled
 // intermediate values costs more the higher the degree (measured on coefficients of mixed signs: up to x9.4
 // the operators' bound at degree 24, x50 at 144, tests/number/test_running_error_loops.cpp), and the
-// high degrees are 2D's Δ (degree up to 144), whose subdivision reads signs closest to zero.
+// high degrees are 2D's Δ (degree up to 144), whose subdivision reads signs closest to zero. A single value
+// (de_casteljau_value) is the exception: it is one sign read, so above this degree it keeps the a-priori bound
+// where that bound decides its sign and asks the running triangle only where it does not.
 inline constexpr int kAprioriMaxDegree = 32;
 struct AprioriTriangle {
   bool ok = false;
   double gamma = 0, scale = 0;
 };
-inline AprioriTriangle apriori_triangle(const BD& s, const BD& t, int n) {
+inline AprioriTriangle apriori_triangle(const BD& s, const BD& t, int n, int max_degree = kAprioriMaxDegree) {
   AprioriTriangle a;
   const double sv = s.value(), tv = t.value(), se = s.bound(), te = t.bound();
   if (!(sv >= 0 && tv >= 0 && std::isfinite(sv) && std::isfinite(tv) && se >= 0 && te >= 0)) return a;
@@ -94,7 +96,7 @@ inline AprioriTriangle apriori_triangle(const BD& s, const BD& t, int n) {
   };
   const double rho = std::max(rel(sv, se), rel(tv, te)) * (1.0 + 0x1p-50);
   const double L = double(n) * (rho + 2.0 * kU) * (1.0 + 0x1p-50);
-  if (!(L <= 0x1p-10) || n > kAprioriMaxDegree) return a;
+  if (!(L <= 0x1p-10) || n > max_degree) return a;
   a.ok = true;
   a.gamma = L / (1.0 - L) * (1.0 + 0x1p-48);
   a.scale = (1.0 + 0x1p-48) / (1.0 - L - 4.0 * kU);
@@ -284,32 +286,46 @@ inline double bernstein_sum_nonnegative(const double* w, int n, const double* bi
   return acc * an / (1.0 - Lp) * (1.0 + 0x1p-48) + (2.0 * n + 2.0) * kTiny;
 }
 
+// A value is one sign read, so above kAprioriMaxDegree it takes the a-priori bound where that bound already
+// decides the sign (|value| > bound), and only where it does not, the running triangle (tighter where signs
+// mix) is run too: both bound the error of the same plain-double value, so the smaller one is kept.
 inline BD de_casteljau_value(std::span<const BD> b, const BD& s, const BD& t, const double* binom = nullptr) {
   const int n = int(b.size()) - 1;
   if (n == 0) return b[0];
-  WorkingRows rows(b);
-  double* __restrict vp = rows.v;
-  const AprioriTriangle ap = apriori_triangle(s, t, n);  // the a-priori bound (above) where it applies
   const TriangleStep st(s, t);
-  if (ap.ok) {
-    apriori_rows(rows.v, rows.e, b.size(), ap);
-    // The bound's sum in O(n) where it applies (the value's triangle is then the plain one), else its triangle.
-    const double rho =
-        std::max(s.value() > 0 ? s.bound() / s.value() : 0.0, t.value() > 0 ? t.bound() / t.value() : 0.0) *
-        (1.0 + 0x1p-50);
-    const double E = binom ? bernstein_sum_nonnegative(rows.e, n, binom, st.sv, st.tv, rho) : -1.0;
-    if (E >= 0) {  // the value's triangle alone: the plain one
-      for (int r = 1; r <= n; ++r)
-        for (int i = 0; i + r <= n; ++i) {
-          const double x = st.sv * vp[i], y = st.tv * vp[i + 1];
-          vp[i] = x + y;
-        }
-      return BD(rows.v[0], E * ap.scale);
+  const AprioriTriangle ap = apriori_triangle(s, t, n, std::numeric_limits<int>::max());  // the a-priori bound
+  double apriori_bound = std::numeric_limits<double>::infinity(), value = 0;
+  {
+    WorkingRows rows(b);
+    double* __restrict vp = rows.v;
+    if (ap.ok) {
+      apriori_rows(rows.v, rows.e, b.size(), ap);
+      // The bound's sum in O(n) where it applies (the value's triangle is then the plain one), else its triangle.
+      const double rho =
+          std::max(s.value() > 0 ? s.bound() / s.value() : 0.0, t.value() > 0 ? t.bound() / t.value() : 0.0) *
+          (1.0 + 0x1p-50);
+      const double E = binom ? bernstein_sum_nonnegative(rows.e, n, binom, st.sv, st.tv, rho) : -1.0;
+      if (E >= 0) {  // the value's triangle alone: the plain one
+        for (int r = 1; r <= n; ++r)
+          for (int i = 0; i + r <= n; ++i) {
+            const double x = st.sv * vp[i], y = st.tv * vp[i + 1];
+            vp[i] = x + y;
+          }
+        value = rows.v[0];
+        apriori_bound = E * ap.scale;
+      } else {
+        double factor = 1;
+        triangle_rounds(rows.v, rows.e, n, st, ap, [&](int, double f) { factor = f; });
+        value = rows.v[0];
+        apriori_bound = rows.e[0] * factor;
+      }
+      if (n <= kAprioriMaxDegree || std::fabs(value) > apriori_bound) return BD(value, apriori_bound);
     }
   }
+  WorkingRows rows(b);  // the running triangle: where no a-priori bound applies, or it leaves the sign open
   double factor = 1;
-  triangle_rounds(rows.v, rows.e, n, st, ap, [&](int, double f) { factor = f; });
-  return BD(rows.v[0], rows.e[0] * factor);
+  triangle_rounds(rows.v, rows.e, n, st, AprioriTriangle{}, [&](int, double f) { factor = f; });
+  return BD(rows.v[0], std::min(rows.e[0] * factor, apriori_bound));
 }
 
 // Degree elevation by r of q (kernel/bernstein.hpp, elevate_into) when the

@@ -199,6 +199,46 @@ TEST_CASE("running_error_loops: de Casteljau values and subdivision contain the 
   }
 }
 
+TEST_CASE("running_error_loops: above degree 32 a value takes the a-priori bound only where it reads the sign",
+          "[running-error-loops]") {
+  // A value is one sign read: where the a-priori bound decides the sign it is kept, else the running
+  // triangle's (tighter where signs mix) is. Far from a root both decide; at a root of the exact polynomial
+  // (the line t - tau, Bernstein coefficients i/n - tau, and the same line plus a multiple of
+  // (t - tau)^2 of mixed-sign coefficients) the value is rounding noise, and the bound must be no larger
+  // than the running bound of Bounded's operators, one by one, while containing the exact value 0.
+  std::mt19937_64 rng(37);
+  int near_root_checks = 0;
+  for (int n : {33, 40, 57, 90, 144}) {
+    for (double tau : {0.5, 0.3, 0.8125}) {
+      INFO("degree " << n << ", tau " << tau);
+      const BD t(tau, 0);
+      Input x = random_input(rng, n, true);  // generic: mixed signs, the value far from 0
+      const BD v = Bern<BD>(x.b)(t);
+      CHECK(v.value() == Bern<double>(x.plain)(tau));
+      CHECK(abs(mpq_class(v.value()) - Bern<mpq_class>(x.exact)(mpq_class(tau))) <= mpq_class(v.bound()));
+      // t - tau, exactly: b_i = i/n - tau (rounded: the exact coefficients are those doubles)
+      std::vector<BD> line;
+      std::vector<double> plain;
+      std::vector<mpq_class> exact;
+      for (int i = 0; i <= n; ++i) {
+        const double c = double(i) / n - tau;
+        line.emplace_back(c, 0.0);
+        plain.push_back(c);
+        exact.push_back(mpq_class(c));
+      }
+      const BD at = Bern<BD>(line)(t);
+      const BD generic = generic_right_piece(line, t)[0];
+      CHECK(at.value() == Bern<double>(plain)(tau));
+      CHECK(abs(mpq_class(at.value()) - Bern<mpq_class>(exact)(mpq_class(tau))) <= mpq_class(at.bound()));
+      if (std::fabs(at.value()) <= at.bound()) {  // the sign is open: the running bound was asked
+        CHECK(at.bound() <= generic.bound() * (1 + 0x1p-30));
+        ++near_root_checks;
+      }
+    }
+  }
+  CHECK(near_root_checks > 5);  // the lines' values are noise: most leave the sign open
+}
+
 TEST_CASE("running_error_loops: the power-to-Bernstein conversion contains the exact coefficients",
           "[running-error-loops]") {
   std::mt19937_64 rng(33);
