@@ -80,7 +80,11 @@ def rerun_alone(args, verdicts, info):
     # depends on what else ran, and on the load at the time).
     alone_path = os.path.join(args.work, "targets-alone.json")
     # (the per-scene independent rows are seconds each: not re-run)
-    regex = "^(" + "|".join(ere_escape(t["key"]) for t in TARGETS) + ")(/|$)"
+    # The ratio targets' two rows too (a ratio of two noisy medians is as noisy as both; the per-scene
+    # independent-motion rows, seconds each, are left out).
+    keys = [t["key"] for t in TARGETS] + [k for t in RATIO_TARGETS if not t["key"].startswith("independent-")
+                                          for k in (t["key"], t["base"])]
+    regex = "^(" + "|".join(ere_escape(k) for k in dict.fromkeys(keys)) + ")(/|$)"
     cmd2 = [args.bench, "--benchmark_filter=" + regex, "--eccd_summary=" + alone_path] + (["--eccd_quick"] if args.quick else [])
     print("re-running the target rows alone", file=sys.stderr)
     r2 = run(cmd2)
@@ -95,6 +99,7 @@ def rerun_alone(args, verdicts, info):
         if a and "median_cpu_ns" in a and v.get("div") and per_divisor(v, a):
             v["alone_ns"] = a["median_cpu_ns"] / per_divisor(v, a)
             v["alone_met"] = v["alone_ns"] <= v["limit_ns"]
+    info["alone_rows"] = alone
     info["load_after_rerun"] = loadavg()
 
 
@@ -128,9 +133,9 @@ def profile_targets(args, summ, verdicts, info):
         else:
             v["perf_error"] = why_not
     info["set_targets"] = sets
-    ratios = ratio_verdicts(summ)
+    ratios = ratio_verdicts(summ, info.get("alone_rows", {}))
     for v in ratios:
-        if v["status"] != "missed":
+        if v["status"] != "missed" and v.get("alone_met") is not False:
             continue
         if ok:
             print(f"profiling {v['key']} under perf", file=sys.stderr)
