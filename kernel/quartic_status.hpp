@@ -13,7 +13,10 @@
 // With exact T the count is a proof (the Sturm sequence is divided by
 // gcd(f, f'), so it counts distinct roots even with a double root). With
 // rounded T it is the count the arithmetic computes; a count the theory
-// forbids (3, 4) gives `uncertain`.
+// forbids (3, 4) gives `uncertain`. With a running error bound (the guarded
+// face) an uncertain count is followed by the negative-axis test
+// (kernel/negative_axis_status.hpp), a proof from values of f on (-∞, 0) that
+// decides the pairs whose f has a positive double root (two spheres).
 // Cost. As in 001 section 3, the Sturm sequence of the quartic has a fixed
 // size (at most 5 polynomials of degree <= 4): it is held in fixed-capacity
 // storage (count_roots_inline, kernel/sturm.hpp), so the static test
@@ -23,8 +26,10 @@
 // Requirements on T: a field, scalar_traits<T>.
 #include "kernel/bernstein.hpp"
 #include "kernel/contact_status.hpp"
+#include "kernel/negative_axis_status.hpp"
 #include "kernel/polynomial.hpp"
 #include "kernel/sturm.hpp"
+#include "number/running_error.hpp"
 
 #include <array>
 #include <optional>
@@ -51,6 +56,7 @@ Status quartic_contact_status(std::span<const T> g) {
   if constexpr (scalar_traits<T>::is_exact)
     throw std::logic_error("internal error: the characteristic quartic has " + std::to_string(n) +
                            " distinct negative roots (at most 2 for two ellipsoids)");
+  if constexpr (has_error_bound_v<T>) return negative_axis_status(g);
   return Status::uncertain;
 }
 template <class T>

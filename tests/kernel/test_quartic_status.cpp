@@ -9,9 +9,14 @@
 // rationals, roots well apart); more than two negative roots (impossible for
 // ellipsoids): a logic_error in exact arithmetic, uncertain in double;
 // quartic_status_at over Poly and Bern coefficient polynomials whose double
-// root crosses at a known instant; more than 5 coefficients refused.
+// root crosses at a known instant; more than 5 coefficients refused. The
+// guarded face (Bounded<double>) on quartics with a positive double root, as
+// every f of two spheres has: the Sturm count cannot read them, the
+// negative-axis test (kernel/negative_axis_status.hpp) decides them, and
+// neither is ever wrong against the exact status.
 #include "kernel/quartic_status.hpp"
 #include "number/rational_traits.hpp"
+#include "number/running_error.hpp"
 #include "tests/support/exact_values.hpp"
 
 #include <catch2/catch.hpp>
@@ -110,6 +115,58 @@ TEST_CASE("quartic_contact_status: more than two negative roots is no ellipsoid 
     CHECK_THROWS_AS(quartic_contact_status(g), std::logic_error);
     CHECK(quartic_contact_status(gd) == Status::uncertain);
   }
+}
+
+TEST_CASE("guarded: a positive double root (two spheres) is decided on the negative axis, never wrongly",
+          "[kernel][quartic_status]") {
+  using B = Bounded<double>;
+  std::mt19937_64 rng(4325);
+  auto pos = [&] { return q(long(rng() % 40) + 1, long(rng() % 6) + 1); };  // thirds and fifths: rounded inputs
+  int asked = 0, sturm_open = 0, decided = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Rational g4 = -q(long(rng() % 9) + 1, long(rng() % 3) + 1);
+    const Rational p = pos();
+    RP f = RP::constant(g4) * lin(p) * lin(p);  // the positive double root of two spheres
+    const Rational a = -pos();
+    Status want = Status::separate;
+    switch (trial % 4) {
+      case 0:  // two distinct negative roots
+        f = f * lin(a) * lin(a - q(long(rng() % 5) + 1, 3));
+        break;
+      case 1:  // a complex pair: overlapping
+        f = f * (lin(a) * lin(a) + RP::constant(q(long(rng() % 7) + 1, 7)));
+        want = Status::overlapping;
+        break;
+      case 2:  // two more positive roots: overlapping
+        f = f * lin(p + q(1, 3)) * lin(p + 2);
+        want = Status::overlapping;
+        break;
+      default:  // a negative double root: touching (never provable with a bound)
+        f = f * lin(a) * lin(a);
+        want = Status::touching;
+    }
+    REQUIRE(f.degree() == 4);
+    std::array<Rational, 5> g;
+    std::array<B, 5> gb;
+    for (int i = 0; i < 5; ++i) {
+      g[i] = f.c[i];
+      gb[i] = scalar_traits<B>::from_rational(f.c[i], B(0));
+    }
+    INFO("trial " << trial << " kind " << trial % 4);
+    REQUIRE(quartic_contact_status(g) == want);
+    const Status s = quartic_contact_status(gb);
+    CHECK((s == Status::uncertain || s == want));
+    if (want == Status::touching) {
+      CHECK(negative_axis_status(std::span<const B>(gb)) == Status::uncertain);
+      continue;
+    }
+    ++asked;
+    sturm_open += negative_root_count(std::span<const B>(gb)) < 0;
+    decided += s != Status::uncertain;
+  }
+  INFO(sturm_open << " of " << asked << " left open by the Sturm count; " << decided << " decided");
+  CHECK(sturm_open > asked / 2);  // the case the negative-axis test is for
+  CHECK(decided == asked);
 }
 
 TEST_CASE("quartic_status_at over Poly and Bern coefficients: the double root at a known instant",
