@@ -562,7 +562,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
 std::string results_csv_header() {
   return "scene,source,dim,degree,family,motion,d,seed,pipeline,arith,bits,basis,method,coef_err,delta_err,outcome,"
          "collides,exact_collides,intervals,exact_intervals,missed_contacts,false_contacts,first_contact_err,"
-         "endpoint_err,time_us,structure_ok,input,digits,reason,coef_err_common,guard";
+         "endpoint_err,time_us,structure_ok,input,digits,reason,coef_err_common,guard,exact_touch";
 }
 
 std::string results_csv_line(const ResultRow& r) {
@@ -601,7 +601,10 @@ std::string results_csv_line(const ResultRow& r) {
                    s.digits ? std::to_string(s.digits) : "",
                    csv_text(r.reason),
                    opt(r.coef_err_common),
-                   r.guard});
+                   r.guard,
+                   r.m.outcome == kNoGroundTruthOutcome ? ""
+                   : r.m.exact_touch                    ? "1"
+                                                        : "0"});
 }
 
 }  // namespace eccd

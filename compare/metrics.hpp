@@ -33,7 +33,10 @@
 //    error and the largest interval-end error (only when the interval counts
 //    agree; 0 without intervals; independent motions: the s- and t-intervals
 //    count together, as api/answer_difference.hpp counts them); structure_ok = correct, the same intervals
-//    one to one (ends matching), the same contacts and contact intervals.
+//    one to one (ends matching), the same contacts and contact intervals;
+//    exact_touch = the exact answer touches without overlapping (an interval
+//    of one instant, or continuous touching): a double root that rounded
+//    arithmetic cannot prove, counted apart by the guard's record.
 //    This follows the habit of CCD benchmarks against an exact ground truth
 //    (Wang et al., ACM TOG 2021: false positives, false negatives, time).
 // Requirements: T is double, eccd::Mpfr or mpq_class (exact_value below).
@@ -45,6 +48,7 @@
 #include "kernel/bivariate_bernstein.hpp"
 #include "kernel/polynomial.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -183,6 +187,10 @@ struct AnswerMetrics {
   std::string outcome;  // correct | false_positive | false_negative | undecided | error
   std::optional<bool> collides;
   bool exact_collides = false;
+  // The exact answer touches without overlapping: a collision interval of one instant (an isolated touch) or a
+  // stretch of continuous touching (contact_intervals). Rounded arithmetic cannot prove such a double root, so a
+  // guarded run is undecided there by design; the report's guard record counts those scenes apart.
+  bool exact_touch = false;
   int intervals = 0, exact_intervals = 0;
   int missed_contacts = 0, false_contacts = 0;
   std::optional<double> first_contact_err, endpoint_err;
@@ -195,6 +203,13 @@ struct AnswerMetrics {
 inline AnswerMetrics answer_metrics(const Answer* got, const Answer& exact, double tol = 1e-6) {
   AnswerMetrics m;
   m.exact_collides = exact.collides;
+  m.exact_touch =
+      !exact.contact_intervals.empty() ||
+      std::any_of(exact.intervals.begin(), exact.intervals.end(),
+                  [](const auto& iv) {  // one instant: the same bracket (certified) or the same value
+                    const Instant &a = iv.first, &b = iv.second;
+                    return a.certified() && b.certified() ? *a.lo == *b.lo && *a.hi == *b.hi : a.value == b.value;
+                  });
   m.exact_intervals =
       int(exact.independent ? exact.s_intervals.size() + exact.t_intervals.size() : exact.intervals.size());
   if (!got) {

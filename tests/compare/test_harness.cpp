@@ -392,7 +392,7 @@ TEST_CASE("harness: run_scene adds the external engines' rows last, judged again
 
 TEST_CASE("harness: results.csv rows have the header's columns, in order", "[compare][harness]") {
   const std::vector<std::string> header = csv_split(results_csv_header());
-  CHECK(header.size() == 31);
+  CHECK(header.size() == 32);
   std::map<std::string, std::size_t> col;
   for (std::size_t k = 0; k < header.size(); ++k) col[header[k]] = k;
   CHECK(col.size() == header.size());  // no column twice
@@ -440,6 +440,7 @@ TEST_CASE("harness: results.csv rows have the header's columns, in order", "[com
   CHECK(f[col["structure_ok"]] == "0");
   CHECK(f[col["digits"]].empty());
   CHECK(f[col["guard"]] == "bound");
+  CHECK(f[col["exact_touch"]] == "0");
   const std::string& why = f[col["reason"]];
   CHECK(why.size() == 200);
   CHECK(why.find('\n') == std::string::npos);
@@ -451,6 +452,7 @@ TEST_CASE("harness: results.csv rows have the header's columns, in order", "[com
   const std::vector<std::string> n = csv_split(results_csv_line(r));
   CHECK(n[col["exact_collides"]].empty());
   CHECK(n[col["exact_intervals"]].empty());
+  CHECK(n[col["exact_touch"]].empty());
   CHECK(n[col["d"]].empty());  // a touch has no separation
 }
 

@@ -119,15 +119,44 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
     CHECK(r.guard == (published ? "none" : "bound"));
     if (!published) CHECK(by.count(r.pipeline + "/published"));
   }
-  // One CSV line per row, 31 fields each (coef_err_common, issue 19; guard last, issue 30).
+  // One CSV line per row, 32 fields each (coef_err_common, issue 19; guard, issue 30; exact_touch last).
   for (const auto& r : rows) {
     const std::string line = results_csv_line(r);
-    CHECK(std::count(line.begin(), line.end(), ',') == 30);
+    CHECK(std::count(line.begin(), line.end(), ',') == 31);
   }
   const std::string head = results_csv_header();
-  CHECK(std::count(head.begin(), head.end(), ',') == 30);
-  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common,guard").size()) ==
-        ",reason,coef_err_common,guard");
+  CHECK(std::count(head.begin(), head.end(), ',') == 31);
+  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common,guard,exact_touch").size()) ==
+        ",reason,coef_err_common,guard,exact_touch");
+}
+
+TEST_CASE("exact_touch: the truth touches without overlapping (an interval of one instant, or continuous touching)",
+          "[metrics]") {
+  auto at = [](long p, long q) {
+    const mpq_class t(p, q);
+    return Instant{std::to_string(t.get_d()), t, t, t.get_d()};
+  };
+  Answer overlap;  // a collision interval of positive length: the guard can bracket both ends
+  overlap.collides = true;
+  overlap.intervals = {{at(1, 4), at(3, 4)}};
+  CHECK_FALSE(answer_metrics(nullptr, overlap).exact_touch);
+  Answer touch = overlap;  // an isolated touch at 1/2 beside the overlap
+  touch.intervals.push_back({at(1, 2), at(1, 2)});
+  CHECK(answer_metrics(nullptr, touch).exact_touch);
+  Answer rolling;  // continuous touching on [0, 1] (cases/rolling/circles-rolling.json)
+  rolling.collides = true;
+  rolling.intervals = {{at(0, 1), at(1, 1)}};
+  rolling.contact_intervals = rolling.intervals;
+  CHECK(answer_metrics(nullptr, rolling).exact_touch);
+  Answer free;
+  CHECK_FALSE(answer_metrics(&free, free).exact_touch);
+  // Brackets, not approximations, decide: two certified ends with the same double but different brackets are an
+  // interval of positive length.
+  Answer narrow = overlap;
+  narrow.intervals = {
+      {Instant{"0.5", mpq_class(1, 2), mpq_class(1, 2), 0.5},
+       Instant{"0.5", mpq_class(1, 2) + mpq_class(1, 1L << 62), mpq_class(1, 2) + mpq_class(1, 1L << 62), 0.5}}};
+  CHECK_FALSE(answer_metrics(nullptr, narrow).exact_touch);
 }
 
 TEST_CASE("coefficient error in the common basis: power coefficients changed exactly to Bernstein form", "[metrics]") {

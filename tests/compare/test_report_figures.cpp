@@ -242,21 +242,29 @@ int words_of(const std::vector<std::string>& lines) {
 //   s4-col      guarded right, as published collides right, structure wrong -> an error, guarded right anyway
 //   s4-nm-1e-8  guarded a false positive, as published too             -> an error the guard missed
 // so the guard's record for 2D is: 10 runs, 3 errors, 1 caught, 1 right anyway, 1 missed, 0 false alarms.
-void add_published_rows(const fs::path& dir) {
+// With touch_column, also the column exact_touch: 1 on s4-touch and s4-case (as if that case touched), whose guarded
+// double/bernstein runs become undecided beside right as-published ones: 2 false alarms, both where the truth touches.
+void add_published_rows(const fs::path& dir, bool touch_column = false) {
   auto lines = lines_of(slurp(dir / "results.csv"));
-  std::string out = lines[0] + ",input,digits,reason,coef_err_common,guard\n";
+  std::string out =
+      lines[0] + ",input,digits,reason,coef_err_common,guard" + (touch_column ? ",exact_touch" : "") + "\n";
   std::vector<std::string> extra;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].empty()) continue;
     auto f = split_commas(lines[i]);
     const bool floating = f[9] == "double" || f[9] == "mpfr";
-    out += lines[i] + ",prepared,,,," + (floating ? "bound" : "") + "\n";
+    const bool touches = f[0] == "s4-touch" || f[0] == "s4-case";
+    const std::string touch = touch_column ? (touches ? ",1" : ",0") : "";
+    auto guarded = f;
+    if (touch_column && touches && f[8] == "double/bernstein")
+      guarded[15] = "undecided", guarded[16] = "", guarded[25] = "0";
+    out += join_commas(guarded) + ",prepared,,,," + (floating ? "bound" : "") + touch + "\n";
     if (f[8] != "double/bernstein") continue;
     auto g = f;
     g[8] = "double/bernstein/published";
     if (f[0] == "s2-nm-1e-8") g[15] = "false_positive", g[16] = "1", g[18] = "1", g[20] = "0", g[21] = "1", g[25] = "0";
     if (f[0] == "s4-col") g[25] = "0";
-    extra.push_back(join_commas(g) + ",prepared,,,,none");
+    extra.push_back(join_commas(g) + ",prepared,,,,none" + touch);
   }
   for (const auto& e : extra) out += e + "\n";
   std::ofstream(dir / "results.csv", std::ios::binary | std::ios::trunc) << out;
@@ -523,6 +531,21 @@ TEST_CASE("report_figures.py: both faces - the as-published table, the guard's r
   const auto degree_table = verdict_of(lines, start, end, "## Results per dimension and degree");
   REQUIRE(!degree_table.empty());
   for (const auto& l : degree_table) CHECK(l.find("/published") == std::string::npos);
+  // Without the column exact_touch there is no row "no touch in the truth".
+  CHECK(md.find("no touch in the truth**") == std::string::npos);
+}
+
+TEST_CASE("report_figures.py: the guard's record counts the scenes whose truth touches apart", "[report-figures]") {
+  FixtureCopy fx("faces-touch");
+  add_published_rows(fx.dir, true);
+  std::string log;
+  REQUIRE(run_script(fx.dir, log) == 0);
+  INFO(log);
+  const std::string md = slurp(fx.dir / "report.md");
+  // All: the two touching scenes' guarded runs are undecided where the published ones were right: 2 false alarms.
+  CHECK(md.find("| **2D, all** | 10 | 3 | 1 | 1 | 1 | 66.7% | 2 | 2/3 (67%) |") != std::string::npos);
+  // Without them: the 8 runs whose exact answer does not touch, and no false alarm.
+  CHECK(md.find("| **2D, no touch in the truth** | 8 | 3 | 1 | 1 | 1 | 66.7% | 0 | 0/1 (0%) |") != std::string::npos);
 }
 
 }  // namespace ECCD_UNITY_ID

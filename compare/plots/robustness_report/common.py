@@ -86,6 +86,7 @@ OPTIONAL_RESULT_COLUMNS = [
     ("reason", "str", True, None, None),
     ("coef_err_common", "float", True, None, None),
     ("guard", "str", True, ("none", "bound"), None),  # the face of a floating row; older files: guarded only
+    ("exact_touch", "int", True, (0, 1), None),  # the truth touches without overlap (compare/metrics.hpp)
 ]
 
 FAILURE_COLUMNS = [
