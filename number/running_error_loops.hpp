@@ -21,7 +21,9 @@
 //       E_k = sum (|x_i| ey_j + ex_i (|y_j| + ey_j)) + u sum (|p| + |r|),
 //   and one step of de Casteljau, w_i <- s w_i + t w_{i+1}, carries
 //       |s| e_i + es (|w_i| + e_i) + |t| e_{i+1} + et (|w_{i+1}| + e_{i+1})
-//       + u (|x| + |y| + |w_i new|).
+//       + u (|x| + |y| + |w_i new|);
+//   at the midpoint (bisection: t = 1/2 exactly, so s* = 1/2) the products
+//   are exact halvings and a step carries (e_i + e_{i+1}) / 2 + u |w_i new|.
 // Rounding of the bound's arithmetic: every bound quantity is a sum or a
 // product of non-negative doubles rounded to nearest, so each rounding makes
 // it at least (1 - u) times its exact value; a quantity reached through at
@@ -137,12 +139,30 @@ struct WorkingRows {
 // one (on w = e + Γ|b|, scaled at the end). The value is the same plain-double s a + t b in both.
 struct TriangleStep {
   double sv, sa, se, tv, ta, te;
+  bool mid;  // the midpoint: the weights exactly 1/2 (below)
   TriangleStep(const BD& s, const BD& t)
-      : sv(s.value()), sa(std::fabs(sv)), se(s.bound()), tv(t.value()), ta(std::fabs(tv)), te(t.bound()) {}
+      : sv(s.value()),
+        sa(std::fabs(sv)),
+        se(s.bound()),
+        tv(t.value()),
+        ta(std::fabs(tv)),
+        te(t.bound()),
+        mid(tv == 0.5 && te == 0 && sv == 0.5) {}
   void running(double a, double ea, double b, double eb, double& v, double& e) const {
     const double x = sv * a, y = tv * b, nw = x + y;
     e = sa * ea + se * (std::fabs(a) + ea) + ta * eb + te * (std::fabs(b) + eb) +
         (kU * (std::fabs(x) + std::fabs(y) + std::fabs(nw)) + 2.0 * kTiny);
+    v = nw;
+  }
+  // The midpoint (bisection's split): t* = 1/2 exactly (t's bound is zero) and so s* = 1 - t* = 1/2 (the
+  // triangle's contract, as for the a-priori bound; s = fl(1 - 1/2) = 1/2). Both products are exact halvings
+  // (but for underflow, at most 2^-1075 each), so the step's only rounding is the sum's: the exact step
+  // (a* + b*) / 2 is within u|v| + (ea + eb) / 2 + 2^-1074 of v. The same plain-double value as `running`;
+  // its bound is at most `running`'s (no rounding terms of the products, no terms in s's bound), at most 4
+  // roundings deep per level (inside running_factor's 8).
+  void midpoint(double a, double ea, double b, double eb, double& v, double& e) const {
+    const double x = sv * a, y = tv * b, nw = x + y;
+    e = (0.5 * ea + 0.5 * eb) + (kU * std::fabs(nw) + 2.0 * kTiny);
     v = nw;
   }
   void apriori(double a, double ea, double b, double eb, double& v, double& e) const {
@@ -161,6 +181,13 @@ struct TriangleStep {
 template <class Round>
 inline void triangle_rounds(double* __restrict vp, double* __restrict ep, int n, const TriangleStep& st,
                             const AprioriTriangle& ap, Round&& round) {
+  if (st.mid) {  // exact weights: the running bound of a sum only (tighter than the a-priori one, as cheap)
+    for (int r = 1; r <= n; ++r) {
+      for (int i = 0; i + r <= n; ++i) st.midpoint(vp[i], ep[i], vp[i + 1], ep[i + 1], vp[i], ep[i]);
+      round(r, TriangleStep::running_factor(r));
+    }
+    return;
+  }
   if (ap.ok) {
     for (int r = 1; r <= n; ++r) {
       for (int i = 0; i + r <= n; ++i) st.apriori(vp[i], ep[i], vp[i + 1], ep[i + 1], vp[i], ep[i]);
@@ -243,12 +270,14 @@ inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD>
 inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
   const int n = int(w.size()) - 1;
   WorkingRows rows{std::span<const BD>(w)};
-  const AprioriTriangle ap = apriori_triangle(s, t, n, kAprioriMaxDegreeSplit);  // a-priori where it applies
+  const TriangleStep st(s, t);
+  const AprioriTriangle ap =  // a-priori where it applies (the midpoint's running bound is as cheap and tighter)
+      st.mid ? AprioriTriangle{} : apriori_triangle(s, t, n, kAprioriMaxDegreeSplit);
   if (ap.ok) apriori_rows(rows.v, rows.e, w.size(), ap);
   if (left) left[0] = w[0];
   const double* v = rows.v;
   const double* e = rows.e;
-  triangle_rounds(rows.v, rows.e, n, TriangleStep(s, t), ap, [&](int r, double factor) {
+  triangle_rounds(rows.v, rows.e, n, st, ap, [&](int r, double factor) {
     if (left) left[r] = BD(v[0], e[0] * factor);
     w[n - r] = BD(v[n - r], e[n - r] * factor);  // final from this round on (split's right piece; w[0]: the value)
   });
@@ -299,7 +328,8 @@ inline BD de_casteljau_value(std::span<const BD> b, const BD& s, const BD& t, co
   const int n = int(b.size()) - 1;
   if (n == 0) return b[0];
   const TriangleStep st(s, t);
-  const AprioriTriangle ap = apriori_triangle(s, t, n, std::numeric_limits<int>::max());  // the a-priori bound
+  const AprioriTriangle ap =  // the a-priori bound (not at the midpoint: its running bound is the cheap one)
+      st.mid ? AprioriTriangle{} : apriori_triangle(s, t, n, std::numeric_limits<int>::max());
   double apriori_bound = std::numeric_limits<double>::infinity(), value = 0;
   {
     WorkingRows rows(b);
@@ -397,14 +427,17 @@ inline void de_casteljau_rows(std::vector<std::vector<BD>>& f, const BD& s, cons
       e[i * cols + j] = f[i][j].bound();
     }
   const TriangleStep st(s, t);
-  const AprioriTriangle ap = apriori_triangle(s, t, m, kAprioriMaxDegreeSplit);  // a-priori where it applies
+  const AprioriTriangle ap =  // a-priori where it applies (the midpoint's running bound is as cheap and tighter)
+      st.mid ? AprioriTriangle{} : apriori_triangle(s, t, m, kAprioriMaxDegreeSplit);
   if (ap.ok) apriori_rows(v.data(), e.data(), v.size(), ap);
   // Row d <- s row a + t row b, column by column (d is a or b: each column reads before it writes).
   auto step = [&](int d, int a, int b) {
     double *vd = v.data() + d * cols, *ed = e.data() + d * cols;
     const double *va = v.data() + a * cols, *ea = e.data() + a * cols, *vb = v.data() + b * cols,
                  *eb = e.data() + b * cols;
-    if (ap.ok)
+    if (st.mid)
+      for (std::size_t j = 0; j < cols; ++j) st.midpoint(va[j], ea[j], vb[j], eb[j], vd[j], ed[j]);
+    else if (ap.ok)
       for (std::size_t j = 0; j < cols; ++j) st.apriori(va[j], ea[j], vb[j], eb[j], vd[j], ed[j]);
     else
       for (std::size_t j = 0; j < cols; ++j) st.running(va[j], ea[j], vb[j], eb[j], vd[j], ed[j]);
