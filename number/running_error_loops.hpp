@@ -95,9 +95,12 @@ struct AprioriTriangle {
   bool ok = false;
   double gamma = 0, scale = 0;
 };
+// Not at the midpoint either (t = 1/2 exactly, s = 1/2: TriangleStep::mid below): there the running bound of a
+// sum alone is as cheap and tighter, and every triangle takes it (ok = false).
 inline AprioriTriangle apriori_triangle(const BD& s, const BD& t, int n, int max_degree = kAprioriMaxDegree) {
   AprioriTriangle a;
   const double sv = s.value(), tv = t.value(), se = s.bound(), te = t.bound();
+  if (tv == 0.5 && te == 0 && sv == 0.5) return a;  // the midpoint (the same test as TriangleStep::mid)
   if (!(sv >= 0 && tv >= 0 && std::isfinite(sv) && std::isfinite(tv) && se >= 0 && te >= 0)) return a;
   auto rel = [](double v, double e) {
     return e == 0 ? 0.0 : (v > 0 ? e / v : std::numeric_limits<double>::infinity());
@@ -271,8 +274,7 @@ inline void de_casteljau(std::span<BD> w, const BD& s, const BD& t, BD* left) {
   const int n = int(w.size()) - 1;
   WorkingRows rows{std::span<const BD>(w)};
   const TriangleStep st(s, t);
-  const AprioriTriangle ap =  // a-priori where it applies (the midpoint's running bound is as cheap and tighter)
-      st.mid ? AprioriTriangle{} : apriori_triangle(s, t, n, kAprioriMaxDegreeSplit);
+  const AprioriTriangle ap = apriori_triangle(s, t, n, kAprioriMaxDegreeSplit);
   if (ap.ok) apriori_rows(rows.v, rows.e, w.size(), ap);
   if (left) left[0] = w[0];
   const double* v = rows.v;
@@ -328,8 +330,7 @@ inline BD de_casteljau_value(std::span<const BD> b, const BD& s, const BD& t, co
   const int n = int(b.size()) - 1;
   if (n == 0) return b[0];
   const TriangleStep st(s, t);
-  const AprioriTriangle ap =  // the a-priori bound (not at the midpoint: its running bound is the cheap one)
-      st.mid ? AprioriTriangle{} : apriori_triangle(s, t, n, std::numeric_limits<int>::max());
+  const AprioriTriangle ap = apriori_triangle(s, t, n, std::numeric_limits<int>::max());
   double apriori_bound = std::numeric_limits<double>::infinity(), value = 0;
   {
     WorkingRows rows(b);
@@ -427,8 +428,7 @@ inline void de_casteljau_rows(std::vector<std::vector<BD>>& f, const BD& s, cons
       e[i * cols + j] = f[i][j].bound();
     }
   const TriangleStep st(s, t);
-  const AprioriTriangle ap =  // a-priori where it applies (the midpoint's running bound is as cheap and tighter)
-      st.mid ? AprioriTriangle{} : apriori_triangle(s, t, m, kAprioriMaxDegreeSplit);
+  const AprioriTriangle ap = apriori_triangle(s, t, m, kAprioriMaxDegreeSplit);
   if (ap.ok) apriori_rows(v.data(), e.data(), v.size(), ap);
   // Row d <- s row a + t row b, column by column (d is a or b: each column reads before it writes).
   auto step = [&](int d, int a, int b) {
