@@ -233,10 +233,18 @@ class BezierZeroSet {
       witness = u1;
       return Status::separate;
     }
-    bool all = true;
-    for (const auto& x : f) all = all && sign(x) == Sign::negative;
+    bool all = true, none = true;
+    for (const auto& x : f) {
+      const Sign s = sign(x);
+      all = all && s == Sign::negative;
+      none = none && s == Sign::uncertain;
+    }
     if (all) return Status::overlapping;
-    if (depth >= kUDepth || pieces >= kUPieces) return Status::uncertain;
+    // No control point with a sign: under a running error bound (|b_i| <= e_i for every i) every piece split
+    // from this one has none either (a split's entries are convex combinations, each bound at least the same
+    // combination of the e_i), so no split can decide here: uncertain now, not after kUDepth levels or
+    // kUPieces pieces (which the rest of [0, 1] in u keeps). Plain T never reads uncertain.
+    if (none || depth >= kUDepth || pieces >= kUPieces) return Status::uncertain;
     auto halves = [&](std::span<T> lo, std::span<T> hi) {
       split_into(f, half_, lo, hi);
       const T um = point_of(T(half_ * (u0 + u1)));
@@ -261,12 +269,12 @@ class BezierZeroSet {
   // surely positive, a witness u the control points of F(., t0) find (a
   // narrow positive window the peak search missed); the value at it.
   Peak shot_peak(const T& t0) const {
-    Peak p = peak(t0);
+    const Bern<T> f = ellipsoid_function_at(F_, t0);  // F(., t0) once, for the peak and the control points
+    Peak p = argmax(f);
     if constexpr (has_error_bound_v<T>) {
       if (sign(p.value) != Sign::positive) {
         long pieces = 0;
         T w = zero_;
-        Bern<T> f = ellipsoid_function_at(F_, t0);
         if (classify_on_u(std::span<const T>(f.b), 0, pieces, zero_, one_, w) == Status::separate) {
           T v = f(w);
           if (sign(v) == Sign::positive) return {w, v};

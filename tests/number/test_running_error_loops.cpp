@@ -18,6 +18,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -342,6 +343,42 @@ int misses(const BiBern<BD>& got, const BiBern<mpq_class>& exact, const BiBern<d
 }
 
 }  // namespace
+
+// floating/bezier_ccd.hpp (classify_on_u) stops splitting a piece none of whose control points has a sign
+// (|b_i| <= e_i for all i), because no piece split from it can have one: each split entry is a convex
+// combination of the b_i, and its bound is at least that combination of the e_i plus the rounding. Checked on
+// both pieces of splits at the midpoint (the running bound of a sum), at other points (the a-priori bound up to
+// degree 40, the running one above) and for values: every entry stays without a sign.
+TEST_CASE("running_error_loops: splitting coefficients without a sign gives coefficients without a sign",
+          "[running-error-loops]") {
+  std::mt19937_64 rng(36);
+  std::uniform_real_distribution<double> val(-1.0, 1.0), frac(0.0, 1.0);
+  std::uniform_int_distribution<int> scale(-40, 0);
+  int checked = 0;
+  for (int n : {1, 2, 4, 8, 30, 36, 41, 90, 144})
+    for (int rep = 0; rep < 20; ++rep) {
+      std::vector<BD> b;
+      for (int i = 0; i <= n; ++i) {  // |v| <= e, some with |v| = e exactly, some with v = 0
+        const double e = std::ldexp(frac(rng) + 0x1p-30, scale(rng));
+        const double v = rep % 5 == 0 && i % 3 == 0 ? (i % 2 ? e : -e) : (rep % 7 == 1 ? 0.0 : e * val(rng));
+        b.emplace_back(v, e);
+        REQUIRE(sign(b.back()) == Sign::uncertain);
+      }
+      for (double tau : {0.5, 0.25, 0.8125, 0.1, 0.999}) {
+        INFO("degree " << n << ", rep " << rep << ", tau " << tau);
+        const BD t(tau, 0);
+        std::vector<BD> lo(b.size()), hi(b.size());
+        split_into(std::span<const BD>(b), t, std::span<BD>(lo), std::span<BD>(hi));
+        for (std::size_t k = 0; k < b.size(); ++k) {
+          CHECK(sign(lo[k]) == Sign::uncertain);
+          CHECK(sign(hi[k]) == Sign::uncertain);
+          checked += 2;
+        }
+        CHECK(sign(Bern<BD>(b)(t)) == Sign::uncertain);
+      }
+    }
+  CHECK(checked > 10000);
+}
 
 TEST_CASE("running_error_loops: a net's subdivision in u holds the plain values and contains the exact net",
           "[running-error-loops]") {
