@@ -28,6 +28,7 @@
 #include "kernel/binomial.hpp"
 #include "kernel/polynomial.hpp"
 #include "kernel/sign_variations.hpp"
+#include "number/bernstein_columns.hpp"
 #include "number/running_error_loops.hpp"
 
 #include <algorithm>
@@ -164,6 +165,8 @@ Bern<T> to_bernstein(const Poly<T>& p, int n) {  // n >= degree(p)
   Bern<T> r;
   r.b.assign(n + 1, T(0));
   if (p.is_zero()) return r;
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, Bounded<double>>)  // column order, on vectors
+    if (bernstein_columns::to_bernstein_columns(std::span<const T>(p.c), n, std::span<T>(r.b))) return r;
   const T& like = p.c.front();
   const std::vector<T>& cn = binomial_row(n, like);
   // The guard's bound factors per C(n, i), so that a term's bound needs no division (number/running_error_loops.hpp).

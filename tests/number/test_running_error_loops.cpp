@@ -12,6 +12,7 @@
 #include "kernel/bivariate_bernstein.hpp"
 #include "kernel/binomial.hpp"
 #include "kernel/polynomial.hpp"
+#include "number/bernstein_columns.hpp"
 #include "number/rational_traits.hpp"
 #include "number/running_error.hpp"
 
@@ -291,6 +292,57 @@ TEST_CASE("running_error_loops: the conversion's bounds are those of Bounded's o
       }
       check_same_bounds(fused.b, generic);
     }
+}
+
+// to_bernstein's column order (to_bernstein_columns, exact binomials, n <= 56) against its row order (one
+// sum_of_ratios per output over the binomial rows, the loop it replaces): the same values and the same bounds,
+// bit for bit, at every degree and for polynomials of lower degree; not applicable above degree 56 or for a
+// non-finite coefficient (to_bernstein then takes the row order).
+TEST_CASE("running_error_loops: the conversion in column order is the row order's, bit for bit",
+          "[running-error-loops]") {
+  std::mt19937_64 rng(37);
+  const BD like(1.0, 0);
+  int compared = 0;
+  for (int n = 0; n <= 56; ++n)
+    for (int deg : {n, n / 2, 0}) {
+      INFO("degree " << deg << " in the basis of degree " << n);
+      const Input x = random_input(rng, deg, true);
+      std::vector<BD> cols(n + 1);
+      REQUIRE(bernstein_columns::to_bernstein_columns(std::span<const BD>(x.b), n, std::span<BD>(cols)));
+      const std::vector<BD>& cn = binomial_row(n, like);
+      running_error_loops::DivisorFactors factors;
+      REQUIRE(running_error_loops::divisor_factors(std::span<const BD>(cn), factors));
+      for (int k = 0; k <= n; ++k) {
+        const std::vector<BD>& ck = binomial_row(k, like);
+        const BD row =
+            running_error_loops::sum_of_ratios(ck.data(), x.b.data(), cn.data(), std::min(k, deg) + 1, &factors);
+        INFO("k = " << k);
+        CHECK(cols[k].value() == row.value());  // == on doubles is meant: bit for bit
+        CHECK(cols[k].bound() == row.bound());
+        ++compared;
+      }
+    }
+  CHECK(compared > 3000);
+  for (int n : {0, 7, 36, 56}) {  // the plain face's column order: the generic loop's values, bit for bit
+    const Input x = random_input(rng, n / 2, false);
+    std::vector<double> plain(n + 1);
+    REQUIRE(bernstein_columns::to_bernstein_columns(std::span<const double>(x.plain), n, std::span<double>(plain)));
+    const std::vector<double>& cn = binomial_row(n, 1.0);
+    for (int k = 0; k <= n; ++k) {
+      const std::vector<double>& ck = binomial_row(k, 1.0);
+      double acc = 0;
+      for (int i = 0; i <= k && i <= n / 2; ++i) {
+        const double term = ck[i] * x.plain[i] / cn[i];
+        acc = acc + term;
+      }
+      CHECK(plain[k] == acc);
+    }
+  }
+  std::vector<BD> out(58), high(58, BD(1.0, 0));
+  CHECK_FALSE(bernstein_columns::to_bernstein_columns(std::span<const BD>(high), 57, std::span<BD>(out)));
+  std::vector<BD> bad{BD(1.0, 0), BD(std::numeric_limits<double>::infinity(), 0)};
+  out.resize(3);
+  CHECK_FALSE(bernstein_columns::to_bernstein_columns(std::span<const BD>(bad), 2, std::span<BD>(out)));
 }
 
 TEST_CASE("running_error_loops: binomial rows of Bounded<double> are exact below 2^53 and contain C(n, k) above",
