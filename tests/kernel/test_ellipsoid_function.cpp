@@ -23,6 +23,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -98,6 +99,54 @@ TEST_CASE("ellipsoid_function is sum_i g_i(t) (u - 1)^i u^(4-i), exactly, in eve
     CHECK(F(one, t) == g[0](t));
   }
   CHECK(checked == 200);
+}
+
+// ellipsoid_function_along evaluates all columns at once (keep_u_right): the values of a column-by-column
+// evaluation (bernstein_value) bit for bit in double, and in Bounded<double> the same values and bounds, at the
+// midpoint (the running bound of a sum), at points where the a-priori bound applies, and with u0 carrying a
+// bound of its own (the running bound).
+TEST_CASE("ellipsoid_function_along is the column-by-column evaluation, bit for bit", "[kernel][ellipsoid_function]") {
+  std::mt19937_64 rng(4303);
+  std::uniform_real_distribution<double> val(-1.0, 1.0);
+  int compared = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = int(rng() % 40);
+    BiBern<double> Fd;
+    BiBern<Bounded<double>> Fb;
+    for (int i = 0; i <= 4; ++i) {
+      std::vector<double> row;
+      std::vector<Bounded<double>> brow;
+      for (int j = 0; j <= n; ++j) {
+        row.push_back(std::ldexp(val(rng), -int(rng() % 30)));
+        brow.emplace_back(row.back(), j % 3 ? std::fabs(row.back()) * 0x1p-50 : 0.0);
+      }
+      Fd.b.push_back(row);
+      Fb.b.push_back(brow);
+    }
+    for (const double u : {0.5, 0.3, 0.0, 1.0, 0.96875}) {
+      for (const double ue : {0.0, 0x1p-60}) {
+        INFO("trial " << trial << " degree " << n << " u0 = " << u << " with bound " << ue);
+        const Bounded<double> ub(u, ue);
+        const Bern<Bounded<double>> along = ellipsoid_function_along(Fb, ub);
+        const Bern<double> alongd = ellipsoid_function_along(Fd, u);
+        REQUIRE(along.b.size() == std::size_t(n + 1));
+        for (int j = 0; j <= n; ++j) {
+          std::vector<Bounded<double>> col;
+          std::vector<double> cold;
+          for (int i = 0; i <= 4; ++i) {
+            col.push_back(Fb.b[i][j]);
+            cold.push_back(Fd.b[i][j]);
+          }
+          const Bounded<double> want = bernstein_value(std::span<const Bounded<double>>(col), ub);
+          CHECK(along.b[j].value() == want.value());  // == on doubles is meant: bit for bit
+          CHECK(along.b[j].bound() == want.bound());
+          CHECK(alongd.b[j] == bernstein_value(std::span<const double>(cold), u));
+          ++compared;
+        }
+      }
+    }
+  }
+  CHECK(compared > 2000);
 }
 
 TEST_CASE("ellipsoid_function in double agrees with the exact F to rounding", "[kernel][ellipsoid_function]") {
