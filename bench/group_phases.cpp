@@ -111,6 +111,14 @@ void register_phases_2d() {
   add_phases_2d<double, FloatingPolicy<double>>(
       "phases-2d-deg6-double-v3", &s2d_deg6, Variant::all_contacts,
       [] { return FloatingPolicy<double>(Basis::bernstein, 53, 1.0); }, [] { return 1.0; });
+  group("phases-2d-deg6-guarded-v3", "Where the time goes: 2D degree 6, Variant 3, double guarded",
+        "The same steps in Bounded<double> (the guarded face: the same values with a running error bound), "
+        "from the same exactly prepared pair: beside the rows above they break the guard's cost down by step.",
+        "none (phase rows; the guard's cost target is the product rows' ratio)");
+  add_phases_2d<Bounded<double>, FloatingPolicy<Bounded<double>>>(
+      "phases-2d-deg6-guarded-v3", &s2d_deg6, Variant::all_contacts,
+      [] { return FloatingPolicy<Bounded<double>>(Basis::bernstein, 53, Bounded<double>(1.0, 0)); },
+      [] { return Bounded<double>(1.0, 0); });
   group("phases-2d-deg6-exact-v0", "Where the time goes: 2D degree 6, full answer, exact",
         "The steps of cd_disc with ExactPolicy timed one by one on the same inputs (roots: the square-free "
         "part by FLINT, CGAL's isolation and refinement; signs: exact signs at algebraic numbers).",

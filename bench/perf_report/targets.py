@@ -310,32 +310,30 @@ RATIO_TARGETS = [
          note="Why this design stays above ×1.5 (2026-12-02, `perf record` of both rows): the guard carries a running error "
               "bound beside every value (number/running_error_loops.hpp); per operation of the build of Δ, P and D the value "
               "costs one multiply and one add, its bound two multiplies, four adds and two absolute values, so the guarded "
-              "build is ×3–4 the published one (`convolve_arrays` 19 % of the guarded row, the products' own loops 8 % of "
-              "the published). The build is about 60 % of the published run, so even a bound as cheap as the value would "
-              "give about ×1.6. Below that needs a bound cheaper than the values where no sign is read: one bound per "
-              "polynomial in the build and per-coefficient bounds only in the subdivision, or a two-tier guard (the "
-              "published run with a scalar a-priori bound, the per-coefficient run only where that leaves a sign open); "
-              "both change which runs end undecided and need the guard's record measured again. Profile of 2026-12-03 "
-              "(`perf record` of eccd.solve in a loop on a generated degree-6 scene, Variant 3, rounded input; guarded "
-              "×2.1–2.6 of as published): the guard's extra time is spread, no one loop to replace: the products' "
-              "`convolve_arrays` 13 % of the guarded run (published products 6 % of theirs), Δ's subdivision at degree 144 "
-              "with the running bound (`de_casteljau`) 10 % (published `split` 5 %), the moving quadrics in Bounded "
-              "(`quadric_at`) 5 %, the conversion to Bernstein form 5 %, the remaining operators of Bounded about 9 %."),
+              "build is ×3–4 the published one. The build is about 60 % of the published run, so even a bound as cheap as "
+              "the value would give about ×1.6. Below that needs a bound cheaper than the values where no sign is read: one "
+              "bound per polynomial in the build and per-coefficient bounds only in the subdivision, or a two-tier guard "
+              "(the published run with a scalar a-priori bound, the per-coefficient run only where that leaves a sign "
+              "open); both change which runs end undecided and need the guard's record measured again. Where the time goes "
+              "(2026-12-04, the phase rows `phases-2d-deg6-double-v3` and `phases-2d-deg6-guarded-v3`, the same pipeline "
+              "from the prepared pair, µs published → guarded): g = det(λA − B) 11 → 30, Δ's build 5 → 18, P and D 2 → 6, "
+              "Δ's roots 6 → 10, the rest (static tests at the samples, contact points, the answer) 13 → 27; by `perf "
+              "record` of the guarded total, the products' `convolve_arrays` and `convolve` 39 %, the subdivision "
+              "(`de_casteljau`) 6 %. The conversion to Bernstein form, 11 % of the guarded run before, now runs in column "
+              "order in both faces (number/bernstein_columns.hpp, 3 %)."),
     dict(name="The guard's cost on paper 002's example: double guarded over double as published, rounded input",
          key="product-paper002/double guarded, rounded input",
          base="product-paper002/double as published, rounded input", limit_ratio=1.5,
          anchor="the guard's cost target: guarded / as published at most ×1.5 (median); measured 2026-11-28 (a --eccd_quick run on a "
                 "loaded machine, CPU medians): 2.16 ms / 0.68 ms = ×3.2",
-         note="Why this design stays above ×1.5 (2026-12-02): in 3D the guarded time is the subdivision of F's net with "
-              "its bound (`de_casteljau` and `de_casteljau_rows` about 48 % of the guarded row): per de Casteljau step the "
-              "value costs two multiplies and an add, its bound five multiplies, nine adds and five absolute values. The "
-              "same way out as in 2D: a bound that is not carried per coefficient where no sign is read (one per net, "
-              "refined only on the pieces whose signs decide), measured against the guard's record. Profile of "
-              "2026-12-03 (`perf record` of eccd.solve in a loop): the net's values at points (`de_casteljau_value`) "
-              "18 % of the guarded run (published `bernstein_value` 12 % of its run), the subdivision (`de_casteljau`) "
-              "15 % (published `restrict_in_place` 5 %), `de_casteljau_rows` 3 %; a value above degree 32 now takes the "
-              "a-priori bound where that bound decides its sign (the running triangle only where it does not), which "
-              "took about 8 % off the guarded run (1.64 → 1.50 ms) with the same answers on every case of cases/."),
+         note="Where the guarded time goes (2026-12-04, `perf record --call-graph dwarf` of both rows, share of each run, "
+              "published → guarded in µs at about 650 and 1000 µs): F's build (`characteristic_bernstein_of`) 73 → 178, "
+              "the products in Bounded being ×3 the plain ones; the transitions (`resolve_transition`) 339 → 449, of them "
+              "the shots 140 → 209 and the Gaussian test's gradients 162 → 203; F's values at an instant "
+              "(`ellipsoid_function_at`, rows of degree 36) 87 → 158. The guard-only work that changed nothing it decides "
+              "is gone: a u-piece none of whose control points has a sign is not split further (no piece split from it can "
+              "have one), and the shot's F(., t0) is computed once; F's columns at a u (`ellipsoid_function_along`) are "
+              "evaluated all at once in both faces. What is left is the bound carried beside each value."),
     dict(name="Certified mode on paper 002's example against double",
          key="ccd3d-paper002/certified", base="ccd3d-paper002/double bezier", limit_ratio=3.0,
          anchor="the certified mode's cost target: certified at most 3x double on paper 002's example (both from the prepared pair: "
