@@ -108,13 +108,8 @@ inline bool to_bernstein_columns(std::span<const double> a, int n, std::span<dou
 inline bool to_bernstein_columns(std::span<const BD> a, int n, std::span<BD> out) {
   if (!applies(a.size(), n, out.size())) return false;
   const std::size_t d1 = a.size(), n1 = out.size();
-  thread_local std::vector<double> buf;
-  buf.assign(2 * d1 + 3 * n1, 0.0);
-  double* av = buf.data();
-  double* ae = av + d1;
-  double* acc = ae + d1;
-  double* E = acc + n1;
-  double* mu = E + n1;
+  constexpr std::size_t kMax = kMaxDegree + 1;  // on the stack: at most 57 entries each
+  double av[kMax], ae[kMax], acc[kMax] = {}, E[kMax] = {}, mu[kMax] = {};
   for (std::size_t i = 0; i < d1; ++i) {
     av[i] = a[i].value();
     ae[i] = a[i].bound();
