@@ -73,29 +73,17 @@ Bern<T> ellipsoid_function_at(const BiBern<T>& F, const T& t0) {
 }
 
 // F(u0, .) as a polynomial in Bernstein form in t (same t-interval as F).
-// Every column of F (a polynomial in u) evaluated at u0 by de Casteljau's triangle, all columns at once below
-// degree 12 in u (F's is 4): F restricted to [u0, 1] in u (keep_u_right, on a copy) has row 0 = F(u0, .),
-// reached by the same products and sums per column as bernstein_value's triangle, so the same values bit for bit
-// in every arithmetic, and under the guard's bound (Bounded<double>) the same bounds (de Casteljau's rows take
-// the step and the factor that a value of degree below 13 takes). One setup and one pass over rows for all
-// n + 1 columns, where a value per column repeats the setup (measured in the guarded 3D method: the column
-// values were 5 % of paper 002's run).
+// Every column of F (a polynomial in u, of degree 4) evaluated at u0 by de Casteljau's triangle, all columns at
+// once: F restricted to [u0, 1] in u (keep_u_right, on a copy) has row 0 = F(u0, .), reached by the same products
+// and sums per column as bernstein_value's triangle, so the same values bit for bit in every arithmetic, and under
+// the guard's bound (Bounded<double>) the same bounds (de Casteljau's rows take the step and the factor that a
+// value of degree below 13 takes). One setup and one pass over rows for all n + 1 columns, where a value per
+// column repeated the setup (measured in the guarded 3D method: the column values were 5 % of paper 002's run).
 template <class T>
 Bern<T> ellipsoid_function_along(const BiBern<T>& F, const T& u0) {
-  if (F.degree_u() < 12) {
-    BiBern<T> c = F;
-    keep_u_right(c, u0);
-    return Bern<T>(std::move(c.b.front()));
-  }
-  const int n = F.degree_t();
-  Bern<T> r;
-  r.b.reserve(n + 1);
-  std::vector<T> col(F.b.size());  // one column, reused
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= F.degree_u(); ++i) col[i] = F.b[i][j];
-    r.b.push_back(bernstein_value(std::span<const T>(col), u0));
-  }
-  return r;
+  BiBern<T> c = F;
+  keep_u_right(c, u0);
+  return Bern<T>(std::move(c.b.front()));
 }
 
 }  // namespace eccd
