@@ -14,10 +14,19 @@ def trim(p):
 
 
 def ev(p, x):
-    v = Q(0)
-    for c in reversed(p):
-        v = v * x + c
-    return v
+    """p(x), in integers: sum c_i n^i d^(m-i) over (L d^m), x = n/d, L the common denominator of p."""
+    if not p:
+        return Q(0)
+    x = Q(x)
+    n, d, m = x.numerator, x.denominator, len(p) - 1
+    l = 1
+    for c in p:
+        l = l * c.denominator // math.gcd(l, c.denominator)
+    v, dk = 0, 1
+    for c in reversed(p):  # Horner on the homogenised polynomial: v = v * n + c * L * d^k
+        v = v * n + c.numerator * (l // c.denominator) * dk
+        dk *= d
+    return Q(v, l * dk // d)
 
 
 def add(a, b):
@@ -66,15 +75,31 @@ def gcd(a, b):
 
 
 def interpolate(values):
-    """The polynomial through (k, values[k]), k = 0, 1, ... (Newton)."""
-    d, n = list(values), len(values)
-    for j in range(1, n):
+    """The polynomial through (k, values[k]), k = 0, 1, ..., n - 1 (Newton's forward form, in integers):
+    p(x) = sum_j Delta^j v(0) / j! * x (x - 1) ... (x - j + 1), over the common denominator L (n - 1)!."""
+    n = len(values)
+    if n == 0:
+        return []
+    l = 1
+    for v in values:
+        v = Q(v)
+        l = l * v.denominator // math.gcd(l, v.denominator)
+    d = [Q(v).numerator * (l // Q(v).denominator) for v in values]
+    for j in range(1, n):  # forward differences: d[i] = Delta^i v(0) (times l), integers
         for i in range(n - 1, j - 1, -1):
-            d[i] = (d[i] - d[i - 1]) / j
-    p = []
-    for i in range(n - 1, -1, -1):
-        p = add(mul(p, [Q(-i), Q(1)]), [d[i]])
-    return p
+            d[i] -= d[i - 1]
+    fact = math.factorial(n - 1)
+    acc, falling = [0] * n, [1]  # falling = x (x - 1) ... (x - j + 1), integer coefficients
+    for j in range(n):
+        w = d[j] * (fact // math.factorial(j))
+        for i, c in enumerate(falling):
+            acc[i] += w * c
+        nxt = [0] * (len(falling) + 1)  # falling * (x - j)
+        for i, c in enumerate(falling):
+            nxt[i + 1] += c
+            nxt[i] -= j * c
+        falling = nxt
+    return trim([Q(c, l * fact) for c in acc])
 
 
 def variations(seq):
