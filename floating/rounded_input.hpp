@@ -30,6 +30,7 @@
 // caller answers undecided on [0, 1] with that reason.
 // Requirements on T: double or Mpfr (number/pow2_scaling.hpp), division.
 #include "number/pow2_scaling.hpp"
+#include "number/running_error.hpp"
 #include "kernel/bernstein.hpp"
 #include "kernel/motion.hpp"
 #include "kernel/prepared_scene.hpp"
@@ -40,6 +41,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 namespace eccd {
 
@@ -76,13 +79,26 @@ MovingPair<T, H> round_pair(const Scene& s, const T& like, std::string& trouble)
   motion(s.a, m.na, "a");
   motion(s.b, m.nb, "b");
   if (!trouble.empty()) return m;
-  // Balance the pencil (see the header prose).
+  // Balance the pencil (see the header prose). Only the values' exponents are read: with a running error
+  // bound (the guarded face) on the values alone, by the same operations, so k is the as-published run's.
+  using V = std::decay_t<decltype(value_only(std::declval<const T&>()))>;
+  auto values = [](const Matrix<T, H>& q, const PolyMatrix<T, H>& n) {
+    std::pair<Matrix<V, H>, PolyMatrix<V, H>> out;
+    for (int i = 0; i < H; ++i)
+      for (int j = 0; j < H; ++j) {
+        out.first[i][j] = value_only(q[i][j]);
+        for (const auto& c : n[i][j].c) out.second[i][j].c.push_back(value_only(c));
+      }
+    return out;
+  };
+  const auto [qa, na] = values(m.qa, m.na);
+  const auto [qb, nb] = values(m.qb, m.nb);
   double sum = 0;
   int used = 0;
   for (const mpq_class& tq : {mpq_class(0), mpq_class(1, 2), mpq_class(1)}) {
-    T t = conv(tq);
-    T da = field_det<T, H>(quadric_at<T, H>(m.qa, m.na, t));
-    T db = field_det<T, H>(quadric_at<T, H>(m.qb, m.nb, t));
+    V t = value_only(conv(tq));
+    V da = field_det<V, H>(quadric_at<V, H>(qa, na, t));
+    V db = field_det<V, H>(quadric_at<V, H>(qb, nb, t));
     long ea = binary_exponent(da), eb = binary_exponent(db);
     if (ea == LONG_MIN || eb == LONG_MIN) continue;
     sum += double(eb - ea);

@@ -198,6 +198,15 @@ template <class T>
 inline Bounded<T> point_of(const Bounded<T>& x) {
   return Bounded<T>(x.value(), 0);
 }
+// The value alone, in the underlying type (plain T: itself): for steps that read only values' exponents.
+template <class T>
+inline const T& value_only(const T& x) {
+  return x;
+}
+template <class T>
+inline const T& value_only(const Bounded<T>& x) {
+  return x.value();
+}
 
 // The plain arithmetic under a running bound, for work whose result is a
 // point or a location and not a sign (a root's refinement, a witness's search,

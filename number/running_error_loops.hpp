@@ -44,6 +44,7 @@
 // the generic loops.
 #include "number/running_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -239,7 +240,7 @@ inline void apriori_rows(double* v, double* e, std::size_t count, const AprioriT
 inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD> out) {
   const std::size_t m1 = x.size(), n1 = y.size(), K = out.size();
   thread_local std::vector<double> buf;
-  buf.assign(2 * m1 + 3 * n1 + 3 * K, 0.0);  // one allocation per thread and size class: the arrays below
+  if (buf.size() < 2 * m1 + 3 * n1 + 3 * K) buf.resize(2 * m1 + 3 * n1 + 3 * K);  // grows once per thread
   double* xv = buf.data();
   double* xe = xv + m1;
   double* yv = xe + m1;
@@ -248,6 +249,7 @@ inline void convolve(std::span<const BD> x, std::span<const BD> y, std::span<BD>
   double* rv = yae + n1;
   double* mu = rv + K;
   double* E = mu + K;
+  std::fill(rv, rv + 3 * K, 0.0);  // the sums start at zero; the inputs are all written below
   for (std::size_t i = 0; i < m1; ++i) {
     xv[i] = x[i].value();
     xe[i] = x[i].bound();
