@@ -162,6 +162,7 @@ struct Median {
   long long iterations = 0;
   long long repetitions = 0;
   std::vector<double> rep_cpu_ns;
+  std::map<std::string, double> counters;  // the user counters' medians over the repetitions
   std::string error;
 };
 std::map<std::string, Median> g_medians;
@@ -187,6 +188,7 @@ class SummaryReporter : public benchmark::ConsoleReporter {
         m.cpu_ns = r.GetAdjustedCPUTime() * to_ns;
         m.real_ns = r.GetAdjustedRealTime() * to_ns;
         m.repetitions = r.repetitions;
+        for (const auto& [name, c] : r.counters) m.counters[name] = c.value;
         shown.push_back(r);
       }
     }
@@ -236,6 +238,7 @@ json summary(const std::string& started) {
           jr["max_cpu_ns"] = *std::max_element(m.rep_cpu_ns.begin(), m.rep_cpu_ns.end());
         }
         jr["ratio"] = base > 0 ? json(m.cpu_ns / base) : json();
+        if (!m.counters.empty()) jr["counters"] = m.counters;
       }
       if (g_results.count(r.key)) jr["result"] = g_results[r.key];
       rows.push_back(jr);

@@ -83,7 +83,7 @@ def rerun_alone(args, verdicts, info):
     # The ratio targets' two rows too (a ratio of two noisy medians is as noisy as both; the per-scene
     # independent-motion rows, seconds each, are left out).
     keys = [t["key"] for t in TARGETS] + [k for t in RATIO_TARGETS if not t["key"].startswith("independent-")
-                                          for k in (t["key"], t["base"])]
+                                          for k in (t["key"], t["base"], t.get("interleaved")) if k]
     regex = "^(" + "|".join(ere_escape(k) for k in dict.fromkeys(keys)) + ")(/|$)"
     cmd2 = [args.bench, "--benchmark_filter=" + regex, "--eccd_summary=" + alone_path] + (["--eccd_quick"] if args.quick else [])
     print("re-running the target rows alone", file=sys.stderr)

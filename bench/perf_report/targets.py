@@ -298,12 +298,15 @@ SET_TARGETS = [
 ]
 
 
-# Targets on the ratio of one row to another of the same group (medians, same process).
+# Targets on the ratio of one row to another of the same group (medians, same process). With `interleaved`:
+# the row that runs both faces in turn in each iteration (bench/group_product.cpp); its counter `ratio` (the
+# median over repetitions of guarded / published) is the target's ratio, the two rows' medians shown beside it.
 RATIO_TARGETS = [
     # The guard's cost, guarded over as published, both through eccd::solve from the scene (rounded input).
     dict(name="The guard's cost on the 2D degree-6 scene (Variant 3): double guarded over double as published, rounded input",
          key="product-2d-deg6-v3/double guarded, rounded input",
          base="product-2d-deg6-v3/double as published, rounded input", limit_ratio=1.5,
+         interleaved="product-2d-deg6-v3/guard's cost, interleaved (guarded over as published, rounded input)",
          anchor="the guard's cost target: guarded / as published at most ×1.5 (median); measured 2026-11-28 (a --eccd_quick run of the "
                 "product rows on a loaded machine, CPU medians): 227 µs / 91 µs = ×2.5; a bound updated at every operation measured ×3.5–×20 "
                 "over plain double on the pipeline rows from the prepared pair",
@@ -324,6 +327,7 @@ RATIO_TARGETS = [
     dict(name="The guard's cost on paper 002's example: double guarded over double as published, rounded input",
          key="product-paper002/double guarded, rounded input",
          base="product-paper002/double as published, rounded input", limit_ratio=1.5,
+         interleaved="product-paper002/guard's cost, interleaved (guarded over as published, rounded input)",
          anchor="the guard's cost target: guarded / as published at most ×1.5 (median); measured 2026-11-28 (a --eccd_quick run on a "
                 "loaded machine, CPU medians): 2.16 ms / 0.68 ms = ×3.2",
          note="Where the guarded time goes (2026-12-04, `perf record --call-graph dwarf` of both rows, share of each run, "
