@@ -213,9 +213,15 @@ def write_tables(w, summ):
             reps = r.get("repetitions") or 0
             its = r.get("iterations") or 0
             per = f"{reps} × {its // reps if reps else its}" if reps else "–"
+            result = md_escape(answer_text(r.get("result")))
+            c = r.get("counters") or {}
+            if {"ratio", "guarded_ns", "published_ns"} <= set(c):  # one iteration = one solve in each face
+                result += (f"; per iteration one solve in each face: guarded {fmt_time(c['guarded_ns'])}, as published "
+                           f"{fmt_time(c['published_ns'])}, **guarded / as published ×{c['ratio']:.2f}** (median of the "
+                           "repetitions' ratios)")
             w(f"| {label} | {fmt_time(r['median_cpu_ns'])} | {fmt_ratio(r.get('ratio'))} | "
               f"{fmt_time(r.get('min_cpu_ns'))} – {fmt_time(r.get('max_cpu_ns'))} | {fmt_time(r.get('median_real_ns'))} | {per} | "
-              f"{md_escape(answer_text(r.get('result')))} |")
+              f"{result} |")
         w("")
 
 
