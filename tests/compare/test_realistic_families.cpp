@@ -421,26 +421,15 @@ void check_realistic(int dim, int count, bool heavy, int part = 0, int parts = 1
 // never confidently wrong (issue 14, "Done when"). Needs floating pipelines that start from the rounded input,
 // scale by powers of two, bound their work and say undecided from an error bound.
 // Each plan runs as two test cases (alternate pairs of scenes), so that CTest runs its halves side by side.
-TEST_CASE("realistic-input scenes 2D: every floating pipeline returns within budget and is never confidently wrong",
-          "[families][realistic-input][budget]") {
-  check_realistic(2, 150, false, 0, 2);
-}
-TEST_CASE(
-    "realistic-input scenes 2D, second half: every floating pipeline returns within budget and is never "
-    "confidently wrong",
-    "[families][realistic-input][budget]") {
-  check_realistic(2, 150, false, 1, 2);
-}
-TEST_CASE("realistic-input scenes 3D: every floating pipeline returns within budget and is never confidently wrong",
-          "[families][realistic-input][budget]") {
-  check_realistic(3, 50, false, 0, 2);
-}
-TEST_CASE(
-    "realistic-input scenes 3D, second half: every floating pipeline returns within budget and is never "
-    "confidently wrong",
-    "[families][realistic-input][budget]") {
-  check_realistic(3, 50, false, 1, 2);
-}
+#define ECCD_REALISTIC_HALF(NAME, DIM, COUNT, PART) \
+  TEST_CASE(NAME, "[families][realistic-input][budget]") { check_realistic(DIM, COUNT, false, PART, 2); }
+#define ECCD_REALISTIC_WHAT ": every floating pipeline returns within budget and is never confidently wrong"
+ECCD_REALISTIC_HALF("realistic-input scenes 2D" ECCD_REALISTIC_WHAT, 2, 150, 0)
+ECCD_REALISTIC_HALF("realistic-input scenes 2D, second half" ECCD_REALISTIC_WHAT, 2, 150, 1)
+ECCD_REALISTIC_HALF("realistic-input scenes 3D" ECCD_REALISTIC_WHAT, 3, 50, 0)
+ECCD_REALISTIC_HALF("realistic-input scenes 3D, second half" ECCD_REALISTIC_WHAT, 3, 50, 1)
+#undef ECCD_REALISTIC_WHAT
+#undef ECCD_REALISTIC_HALF
 // The long run: 400 scenes per dimension, 3D degrees 4-6 with 12 and 15 digits too.
 TEST_CASE("realistic-input scenes, long run", "[.realistic-long]") {
   check_realistic(2, 400, true);
