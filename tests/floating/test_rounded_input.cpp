@@ -24,8 +24,10 @@
 //     normalise_coefficients scales by one power of two and refuses a
 //     non-finite value.
 #include "floating/rounded_input.hpp"
+#include "io/scene_reader.hpp"
 #include "kernel/characteristic_polynomial.hpp"
 #include "number/mpfr_real.hpp"
+#include "number/running_error.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -34,6 +36,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ECCD_UNITY_ID {
@@ -144,6 +147,46 @@ TEST_CASE("round_pair balances the pencil by the determinants' ratio", "[floatin
     }
     INFO("B = " << f << " A");
     CHECK(std::fabs(sum / (3 * 3)) <= 0.5 + 1.0 / 3);
+  }
+}
+
+// The guarded face balances the pencil on the values alone (floating/rounded_input.hpp): its pair must be the
+// as-published one bit for bit, Q_B's power of two included (a k computed differently would scale Q_B by
+// another power of two), and its bounds finite.
+template <int H>
+void check_guarded_pair_is_published(const Scene& s) {
+  std::string t1, t2;
+  const MovingPair<double, H> plain = round_pair<double, H>(s, 0.0, t1);
+  const MovingPair<Bounded<double>, H> guarded = round_pair<Bounded<double>, H>(s, Bounded<double>(0.0, 0), t2);
+  REQUIRE(t1.empty());
+  REQUIRE(t2.empty());
+  for (int i = 0; i < H; ++i)
+    for (int j = 0; j < H; ++j) {
+      INFO("entry " << i << ", " << j);
+      CHECK(guarded.qa[i][j].value() == plain.qa[i][j]);  // == on doubles is meant: the same bits
+      CHECK(guarded.qb[i][j].value() == plain.qb[i][j]);
+      CHECK(std::isfinite(guarded.qb[i][j].bound()));
+      for (const auto& [g, p] :
+           {std::pair{&guarded.na[i][j], &plain.na[i][j]}, std::pair{&guarded.nb[i][j], &plain.nb[i][j]}}) {
+        REQUIRE(g->c.size() == p->c.size());
+        for (std::size_t k = 0; k < p->c.size(); ++k) CHECK(g->c[k].value() == p->c[k]);
+      }
+    }
+}
+
+TEST_CASE("round_pair with a running error bound holds the as-published pair bit for bit, its balance included",
+          "[floating][rounded_input]") {
+  for (const Rational& f : {Rational(1), Rational(3), Rational(1000), Rational(1, 77)}) {
+    INFO("B = " << f << " A");
+    check_guarded_pair_is_published<3>(translating_discs(f));
+  }
+  for (const char* file : {"/cases/paper003/example2.json", "/cases/paper002/example.json"}) {
+    INFO(file);
+    const Scene s = read_scene_file(std::string(ECCD_SOURCE_DIR) + file);
+    if (s.dim == 2)
+      check_guarded_pair_is_published<3>(s);
+    else
+      check_guarded_pair_is_published<4>(s);
   }
 }
 
