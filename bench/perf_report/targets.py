@@ -315,7 +315,7 @@ RATIO_TARGETS = [
               "costs one multiply and one add, its bound two multiplies, four adds and two absolute values, so the guarded "
               "build is ×3–4 the published one. The build is about 60 % of the published run, so even a bound as cheap as "
               "the value would give about ×1.6. Below that needs a bound cheaper than the values where no sign is read. Tried"
-              " on 2026-12-04 and not adopted (branch `experiment/guard-two-tiers`): a two-tier guard, the pencil, Δ, P and D"
+              " on 2026-12-04 and not adopted (docs/experiments/guard-two-tiers.patch): a two-tier guard, the pencil, Δ, P and D"
               " first with one bound per polynomial (the published values and a scan of them), the per-coefficient run only "
               "where that leaves an instant undecided. It kept every answer (the 760 guarded double runs of cases/ and of the"
               " report's scenes) and brought this row to ×1.53 interleaved, but it left 105 of the 225 decided 2D runs of "
