@@ -247,15 +247,27 @@ Solution run_floating_cycloidal(const Scene& scene, const SolveOptions& opt, con
 // second_look says that it ran (1) and decided (2).
 // Only where every reason is a sign the double bound could not read: an
 // overflow, a work bound or the time budget stays the double run's answer.
-// The second look has a budget of its own, kSecondLookCap (processor time:
-// the same runs take it whatever else the machine does), inside the run's
-// deadline: at most kSecondLookShare times the double run's time, and never
-// less than kSecondLookFloor seconds, so that a near miss costs a double run
-// its fraction of a second, not the MPFR run's seconds; a second look that
-// meets it leaves the double answer standing (second_look 1).
+// The second look has a budget of its own inside the run's deadline, in work
+// units (kernel/budget.hpp ScopedWorkBudget: the deadline checks, the
+// polynomial products' coefficient products and the de Casteljau and Horner
+// steps the run does), so that where it
+// stops, and so the answer, is the same on every machine and under any load
+// (a budget of processor time made a near miss decided on a quiet machine and
+// undecided on a busy one): kSecondLookUnits units (measured: 128-bit MPFR
+// runs about 5 million units a second in 3D and 2 to 5 million in 2D on the
+// machine of reports/performance.md, so the budget is under a second there, as
+// the 0.5 s of processor time it replaces was; no share of the double run's
+// units, as that budget had a share of its time: double does a unit a hundred
+// times faster than MPFR, vectorised, so its units say little of what the
+// MPFR run needs), so that a near miss
+// costs a double run its fraction of a second, not the MPFR run's seconds; a
+// second look that meets it leaves the double answer standing (second_look 1;
+// second_look_units says how many it used). A processor-time backstop of
+// kSecondLookBackstop seconds stays in case a loop counts less work than it
+// does; no run of cases/ or of the report's scenes reaches it.
 constexpr int kSecondLookBits = 128;
-constexpr double kSecondLookShare = 50;
-constexpr double kSecondLookFloor = 0.5;
+constexpr unsigned long long kSecondLookUnits = 4'000'000;
+constexpr double kSecondLookBackstop = 10;
 
 bool only_arithmetic_limits(const Solution& s) {
   if (s.undecided_reasons.empty()) return false;
@@ -272,13 +284,20 @@ Solution second_look(const SolveOptions& opt, Solution first, Run&& run) {
   SolveOptions wide = opt;
   wide.arith = Arithmetic::mpfr(kSecondLookBits);
   const auto start = std::chrono::steady_clock::now();
-  ScopedDeadline cap(std::max(kSecondLookFloor, kSecondLookShare * first.time_ms * 1e-3), DeadlineClock::thread_cpu);
-  Solution s = run(wide, Bounded<Mpfr>(Mpfr(mpq_class(1), kSecondLookBits), 0));
+  ScopedDeadline backstop(kSecondLookBackstop, DeadlineClock::thread_cpu);
+  const unsigned long long before = work_units_done();
+  Solution s;
+  {
+    ScopedWorkBudget cap(kSecondLookUnits);
+    s = run(wide, Bounded<Mpfr>(Mpfr(mpq_class(1), kSecondLookBits), 0));
+  }
+  const unsigned long long used = work_units_done() - before;
   const double ms = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
   const bool decided = s.decided();
   Solution& out = decided ? s : first;
   out.time_ms = first.time_ms + ms;
   out.work.emplace_back("second_look", decided ? 2 : 1);
+  out.work.emplace_back("second_look_units", long(std::min<unsigned long long>(used, 1ULL << 62)));
   return std::move(out);
 }
 

@@ -39,10 +39,15 @@
 
 namespace eccd {
 
+// A de Casteljau triangle of degree n over `columns` columns counts its steps
+// as work units (kernel/budget.hpp count_work: a work budget follows them).
+inline void count_triangle(std::size_t n, std::size_t columns = 1) { count_work(n * (n + 1) / 2 * columns); }
+
 // de Casteljau's triangle in place on w (n + 1 values): after the call w[0]
 // is the value at t.
 template <class T>
 void de_casteljau_in_place(std::span<T> w, const T& t) {
+  count_triangle(w.empty() ? 0 : w.size() - 1);
   T s = T(1) - t;
   if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass
     running_error_loops::de_casteljau(w, s, t, nullptr);
@@ -62,9 +67,11 @@ void de_casteljau_in_place(std::span<T> w, const T& t) {
 template <class T>
 T bernstein_value(std::span<const T> b, const T& t) {
   if (b.empty()) return T(0);
-  if constexpr (std::is_same_v<T, Bounded<double>>)  // the guard's bound in the same pass, b read in place
+  if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass, b read in place
+    count_triangle(b.size() - 1);
     return running_error_loops::de_casteljau_value(
         b, T(1) - t, t, b.size() >= 13 && b.size() <= 57 ? binomial_row(int(b.size()) - 1, 1.0).data() : nullptr);
+  }
   if constexpr (std::is_trivially_copyable_v<T>) {
     if (b.size() <= 64) {
       T w[64];
@@ -84,6 +91,7 @@ T bernstein_value(std::span<const T> b, const T& t) {
 template <class T>
 void keep_right(std::span<T> c, const T& tau) {
   const int n = int(c.size()) - 1;
+  count_triangle(std::max(n, 0));
   T s = T(1) - tau;
   if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass
     running_error_loops::de_casteljau(c, s, tau, nullptr);
@@ -99,6 +107,7 @@ void keep_right(std::span<T> c, const T& tau) {
 template <class T>
 void keep_left(std::span<T> c, const T& tau) {
   const int n = int(c.size()) - 1;
+  count_triangle(std::max(n, 0));
   T s = T(1) - tau;
   if constexpr (std::is_same_v<T,
                                Bounded<double>>) {  // the guard's bound in the same pass: split's left piece
@@ -125,6 +134,7 @@ void keep_left(std::span<T> c, const T& tau) {
 template <class T>
 void split_into(std::span<const T> c, const T& tau, std::span<T> lo, std::span<T> hi) {
   const int n = int(c.size()) - 1;
+  count_triangle(std::max(n, 0));
   std::copy(c.begin(), c.end(), hi.begin());
   T s = T(1) - tau;
   if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass: split's two pieces
@@ -340,6 +350,7 @@ Bern<T> derivative(const Bern<T>& q) {
 template <class T>
 std::pair<Bern<T>, Bern<T>> split(const Bern<T>& q, const T& tau) {
   int n = q.degree();
+  count_triangle(std::max(n, 0));
   Bern<T> left, right(q.b);
   std::vector<T>& w = right.b;
   left.b.resize(n + 1);

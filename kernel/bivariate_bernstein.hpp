@@ -78,6 +78,7 @@ std::pair<BiBern<T>, BiBern<T>> split_t(const BiBern<T>& f, const T& tau) {
 template <class T>
 void keep_u_right(BiBern<T>& f, const T& tau) {
   const int m = f.degree_u(), n = f.degree_t();
+  count_triangle(std::max(m, 0), std::size_t(std::max(n, 0)) + 1);
   T s = T(1) - tau;
   if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass, all columns at once
     running_error_loops::de_casteljau_rows(f.b, s, tau, false);
@@ -94,6 +95,7 @@ void keep_u_right(BiBern<T>& f, const T& tau) {
 template <class T>
 void keep_u_left(BiBern<T>& f, const T& tau) {
   const int m = f.degree_u(), n = f.degree_t();
+  count_triangle(std::max(m, 0), std::size_t(std::max(n, 0)) + 1);
   T s = T(1) - tau;
   if constexpr (std::is_same_v<T, Bounded<double>>) {  // the guard's bound in the same pass, all columns at once
     running_error_loops::de_casteljau_rows(f.b, s, tau, true);

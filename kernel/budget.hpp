@@ -24,9 +24,17 @@
 //     bound runs this way, so that which runs are undecided, and whether a run
 //     stops in time, do not depend on how busy the machine is. Reading it is a
 //     system call (a few hundred nanoseconds), paid only by runs that set one.
-// Both may be set at once (a harness budget inside solve's default limit);
+//   - a work budget (ScopedWorkBudget): a number of work units, counted by
+//     the checks themselves (each deadline_passed() one unit, each polynomial
+//     product its coefficient products, check_deadline_product) and by the
+//     de Casteljau triangles (count_work: one unit per step), so that
+//     where a run stops is the same on every machine and under any load: the
+//     same scene gives the same answer. The guarded face's second look
+//     (api/solve.cpp) is bounded this way.
+// All may be set at once (a harness budget inside solve's default limit);
 // the run stops at the first that passes. Nested scopes keep, per clock, the
-// earlier deadline and restore the outer ones on exit.
+// earlier deadline and restore the outer ones on exit; the count of work units
+// done only grows (work_units_done()), whatever the scopes.
 // No paper section: this is the workbench's own contract with its users.
 // Requirements on T: none (not templated).
 #include <chrono>
@@ -61,7 +69,10 @@ struct DeadlineState {
   double cpu_at = -1;                               // thread-CPU deadline in seconds (< 0: none)
   double seconds = 0;                               // the budget as given, for messages
   bool cpu = false;                                 // the message's budget is processor time
+  bool work = false;                                // the message's budget is work units
   bool passed = false;
+  unsigned long long work_at = 0;    // work-unit deadline: passed once work_done reaches it (0: none)
+  unsigned long long work_done = 0;  // work units counted on this thread so far (never restored by a scope)
 };
 inline DeadlineState& deadline_state() {
   thread_local DeadlineState s;
@@ -70,7 +81,11 @@ inline DeadlineState& deadline_state() {
 inline bool deadline_reached(DeadlineState& s) {
   if (s.at != Clock::time_point::max() && Clock::now() >= s.at) return true;
   if (s.cpu_at >= 0 && thread_cpu_seconds() >= s.cpu_at) return true;
+  if (s.work_at != 0 && s.work_done >= s.work_at) return true;
   return false;
+}
+inline bool any_deadline(const DeadlineState& s) {
+  return s.at != Clock::time_point::max() || s.cpu_at >= 0 || s.work_at != 0;
 }
 }  // namespace detail
 
@@ -89,6 +104,7 @@ class ScopedDeadline {
           s.at = at;
           s.seconds = seconds;
           s.cpu = false;
+          s.work = false;
         }
       } else {
         double at = thread_cpu_seconds() + seconds;
@@ -96,12 +112,18 @@ class ScopedDeadline {
           s.cpu_at = at;
           s.seconds = seconds;
           s.cpu = true;
+          s.work = false;
         }
       }
     }
     s.passed = s.passed || detail::deadline_reached(s);
   }
-  ~ScopedDeadline() { detail::deadline_state() = saved_; }
+  ~ScopedDeadline() {
+    auto& s = detail::deadline_state();
+    const unsigned long long done = s.work_done;
+    s = saved_;
+    s.work_done = done;
+  }
   ScopedDeadline(const ScopedDeadline&) = delete;
   ScopedDeadline& operator=(const ScopedDeadline&) = delete;
 
@@ -109,11 +131,50 @@ class ScopedDeadline {
   detail::DeadlineState saved_;
 };
 
-// True once the running thread's deadline has passed (and from then on).
+// A budget of work units for its lifetime (units == 0: none), on top of the time deadlines, restored on exit
+// as ScopedDeadline's (the earlier of nested work budgets holds). The units are counted where the pipelines
+// already ask for their deadline, so a run meets a work budget at the same step on every machine.
+class ScopedWorkBudget {
+ public:
+  explicit ScopedWorkBudget(unsigned long long units) : saved_(detail::deadline_state()) {
+    auto& s = detail::deadline_state();
+    if (units > 0) {
+      const unsigned long long at = s.work_done + units;
+      if (s.work_at == 0 || at < s.work_at) {
+        s.work_at = at;
+        s.seconds = double(units);
+        s.cpu = false;
+        s.work = true;
+      }
+    }
+    s.passed = s.passed || detail::deadline_reached(s);
+  }
+  ~ScopedWorkBudget() {
+    auto& s = detail::deadline_state();
+    const unsigned long long done = s.work_done;
+    s = saved_;
+    s.work_done = done;
+  }
+  ScopedWorkBudget(const ScopedWorkBudget&) = delete;
+  ScopedWorkBudget& operator=(const ScopedWorkBudget&) = delete;
+
+ private:
+  detail::DeadlineState saved_;
+};
+
+// Work done without a deadline check of its own (a de Casteljau triangle, whose callers' loops ask):
+// counted toward a work budget, so that the units follow the arithmetic operations a run does.
+inline void count_work(std::size_t units) { detail::deadline_state().work_done += units; }
+
+// The work units this thread has counted so far (only grows): the difference over a run is its work.
+inline unsigned long long work_units_done() { return detail::deadline_state().work_done; }
+
+// True once the running thread's deadline has passed (and from then on). Counts one work unit.
 inline bool deadline_passed() {
   auto& s = detail::deadline_state();
+  ++s.work_done;
   if (s.passed) return true;
-  if (s.at == Clock::time_point::max() && s.cpu_at < 0) return false;
+  if (!detail::any_deadline(s)) return false;
   s.passed = detail::deadline_reached(s);
   return s.passed;
 }
@@ -121,6 +182,7 @@ inline bool deadline_passed() {
 // The budget in words, for "undecided" reasons and error messages.
 inline std::string deadline_reason() {
   const auto& s = detail::deadline_state();
+  if (s.work) return "work budget of " + std::to_string((unsigned long long)s.seconds) + " units exhausted";
   return "time budget of " + std::to_string(s.seconds).substr(0, 6) + " s" + (s.cpu ? " of processor time" : "") +
          " exhausted";
 }
@@ -135,7 +197,9 @@ inline void check_deadline(const char* where) {
 // throws once another check has seen the deadline pass; a clock read would cost it a tenth of its time, and
 // the loops around small products (subdivision, root refinement) check the clock themselves.
 inline void check_deadline_product(std::size_t work) {
-  if (work < 64 ? detail::deadline_state().passed : deadline_passed())
+  auto& s = detail::deadline_state();
+  s.work_done += work;
+  if (work < 64 ? s.passed : deadline_passed())
     throw BudgetExhausted(std::string("polynomial product: ") + deadline_reason());
 }
 

@@ -51,6 +51,7 @@ struct Poly {
   template <class U>
   U operator()(const U& t) const {  // Horner
     if (c.empty()) return U(0);
+    count_work(c.size() - 1);  // a step per coefficient (kernel/budget.hpp: a work budget follows them)
     if constexpr (std::is_same_v<T, mpq_class> &&
                   std::is_same_v<U, mpq_class>)  // exact: integer Horner (number/rational_poly_eval.hpp)
       return rational_poly_eval(c, t);

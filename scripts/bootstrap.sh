@@ -26,8 +26,9 @@ command -v ccache >/dev/null && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
 # compilations, the same include paths) is cache hits of this one. CMake would otherwise take the first
 # python3 on PATH (a pyenv one, say), whose headers elsewhere make every pybind11 file compile twice
 # (measured in fresh-clone CI runs: pip install 79 s with the module built here for another Python, 13 s
-# with this one).
+# with this one). PYTHON chooses another interpreter, as it does for scripts/test-python-install.sh.
 python=""
-[ -x /usr/bin/python3 ] && python="-DPython_EXECUTABLE=/usr/bin/python3"
+interpreter="${PYTHON:-/usr/bin/python3}"
+[ -x "$interpreter" ] && python="-DPython_EXECUTABLE=$interpreter"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DECCD_WERROR="${ECCD_WERROR:-OFF}" $launcher $python >/dev/null
 cmake --build build -j"$(nproc)" >&2

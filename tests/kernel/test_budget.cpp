@@ -7,7 +7,10 @@
 //     "of processor time" for the thread-CPU clock);
 //   - a polynomial product (kernel/polynomial.hpp) asks the deadline and throws;
 //   - nested scopes keep the earlier deadline of each clock and restore the
-//     outer state on exit; seconds <= 0 sets none; the deadline is per thread.
+//     outer state on exit; seconds <= 0 sets none; the deadline is per thread;
+//   - a work budget passes at exactly its count of units (each deadline check
+//     one, a product its coefficient products), whatever the clock says, and
+//     the count of units done only grows across scopes.
 #include "kernel/budget.hpp"
 #include "kernel/polynomial.hpp"
 #include "number/rational_traits.hpp"
@@ -83,6 +86,53 @@ TEST_CASE("budget: the thread-CPU clock, and a deadline belongs to its thread", 
   std::thread t([&] { other = deadline_passed(); });
   t.join();
   CHECK_FALSE(other);  // another thread has no deadline
+}
+
+TEST_CASE("budget: a work budget passes at its count of units, on every machine", "[kernel][budget]") {
+  const unsigned long long start = work_units_done();
+  long checks = 0;
+  {
+    ScopedWorkBudget work(1000);
+    // the ScopedWorkBudget's own check counts nothing; each deadline_passed() counts one unit
+    while (!deadline_passed() && checks < 100000) ++checks;
+    CHECK(checks == 999);  // the 1000th check reaches the budget
+    CHECK(deadline_reason() == "work budget of 1000 units exhausted");
+    try {
+      check_deadline("shots");
+      FAIL("no BudgetExhausted");
+    } catch (const BudgetExhausted& e) {
+      CHECK(std::string(e.what()) == "shots: work budget of 1000 units exhausted");
+    }
+  }
+  CHECK_FALSE(deadline_passed());            // the outer state is back
+  CHECK(work_units_done() >= start + 1001);  // the count did not go back with the scope
+  {
+    // A product counts its coefficient products (here 3 x 3 = 9, then one unit for its deadline check if it has
+    // 64 or more); a budget of 20 units holds two of them and not a third.
+    ScopedWorkBudget work(20);
+    const Poly<Rational> p({Rational(1), Rational(2), Rational(3)});
+    const unsigned long long before = work_units_done();
+    CHECK_NOTHROW(p * p);
+    CHECK(work_units_done() - before == 9);
+    CHECK_NOTHROW(p * p);
+    CHECK_FALSE(deadline_passed());  // 18 + 1 units
+    CHECK(deadline_passed());        // the 20th
+    CHECK_THROWS_AS(p * p, BudgetExhausted);
+  }
+  {
+    ScopedWorkBudget outer(50);
+    {
+      ScopedWorkBudget later(5000);  // the earlier budget holds
+      CHECK(deadline_reason() == "work budget of 50 units exhausted");
+      ScopedDeadline time(1000);  // and a time deadline beside it
+      for (int k = 0; k < 49; ++k) CHECK_FALSE(deadline_passed());
+      CHECK(deadline_passed());
+    }
+    CHECK(deadline_passed());  // the outer budget is the same budget, and its units are spent
+  }
+  CHECK_FALSE(deadline_passed());
+  ScopedWorkBudget none(0);  // 0 units: no budget
+  CHECK_FALSE(deadline_passed());
 }
 
 }  // namespace ECCD_UNITY_ID
