@@ -89,77 +89,73 @@ inline bool any_deadline(const DeadlineState& s) {
 }
 }  // namespace detail
 
+namespace detail {
+// The deadline state when a scope began, put back when it ends, but for the count of work done (which only grows).
+// A scope's constructor then sets its own deadline (name_budget: the message's words).
+class RestoredOnExit {
+ public:
+  RestoredOnExit() : saved_(deadline_state()) {}
+  ~RestoredOnExit() {
+    auto& s = deadline_state();
+    const unsigned long long done = s.work_done;
+    s = saved_;
+    s.work_done = done;
+  }
+  RestoredOnExit(const RestoredOnExit&) = delete;
+  RestoredOnExit& operator=(const RestoredOnExit&) = delete;
+
+ private:
+  DeadlineState saved_;
+};
+inline void name_budget(DeadlineState& s, double amount, bool cpu, bool work) {
+  s.seconds = amount;
+  s.cpu = cpu;
+  s.work = work;
+}
+}  // namespace detail
+
 // Sets the running thread's deadline to now + seconds on `clock` (seconds <= 0:
 // none) for its lifetime; nested scopes keep the earlier deadline of each clock
 // and restore the outer ones on exit.
-class ScopedDeadline {
+class ScopedDeadline : detail::RestoredOnExit {
  public:
-  explicit ScopedDeadline(double seconds, DeadlineClock clock = DeadlineClock::wall)
-      : saved_(detail::deadline_state()) {
+  explicit ScopedDeadline(double seconds, DeadlineClock clock = DeadlineClock::wall) {
     auto& s = detail::deadline_state();
     if (seconds > 0) {
       if (clock == DeadlineClock::wall) {
         auto at = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
         if (at < s.at) {
           s.at = at;
-          s.seconds = seconds;
-          s.cpu = false;
-          s.work = false;
+          detail::name_budget(s, seconds, false, false);
         }
       } else {
         double at = thread_cpu_seconds() + seconds;
         if (s.cpu_at < 0 || at < s.cpu_at) {
           s.cpu_at = at;
-          s.seconds = seconds;
-          s.cpu = true;
-          s.work = false;
+          detail::name_budget(s, seconds, true, false);
         }
       }
     }
     s.passed = s.passed || detail::deadline_reached(s);
   }
-  ~ScopedDeadline() {
-    auto& s = detail::deadline_state();
-    const unsigned long long done = s.work_done;
-    s = saved_;
-    s.work_done = done;
-  }
-  ScopedDeadline(const ScopedDeadline&) = delete;
-  ScopedDeadline& operator=(const ScopedDeadline&) = delete;
-
- private:
-  detail::DeadlineState saved_;
 };
 
 // A budget of work units for its lifetime (units == 0: none), on top of the time deadlines, restored on exit
 // as ScopedDeadline's (the earlier of nested work budgets holds). The units are counted where the pipelines
 // already ask for their deadline, so a run meets a work budget at the same step on every machine.
-class ScopedWorkBudget {
+class ScopedWorkBudget : detail::RestoredOnExit {
  public:
-  explicit ScopedWorkBudget(unsigned long long units) : saved_(detail::deadline_state()) {
+  explicit ScopedWorkBudget(unsigned long long units) {
     auto& s = detail::deadline_state();
     if (units > 0) {
       const unsigned long long at = s.work_done + units;
       if (s.work_at == 0 || at < s.work_at) {
         s.work_at = at;
-        s.seconds = double(units);
-        s.cpu = false;
-        s.work = true;
+        detail::name_budget(s, double(units), false, true);
       }
     }
     s.passed = s.passed || detail::deadline_reached(s);
   }
-  ~ScopedWorkBudget() {
-    auto& s = detail::deadline_state();
-    const unsigned long long done = s.work_done;
-    s = saved_;
-    s.work_done = done;
-  }
-  ScopedWorkBudget(const ScopedWorkBudget&) = delete;
-  ScopedWorkBudget& operator=(const ScopedWorkBudget&) = delete;
-
- private:
-  detail::DeadlineState saved_;
 };
 
 // Work done without a deadline check of its own (a de Casteljau triangle, whose callers' loops ask):
