@@ -296,9 +296,10 @@ TEST_CASE("the second look stops at the same work whatever the machine's load", 
   g.d_exponent = 14;
   g.seed = scene_seed(20261127, g, 0);
   const GeneratedScene gs = generate_scene(g);
-  // (A 3D degree-6 touch whose look meets its budget stopped at different units under a heavy load: some
-  // deadline inside the 3D pipeline is still time-based; left out until that is found.)
-  const std::vector<Scene> scenes = {parse_scene(gs.doc.dump(), gs.name)};
+  const std::vector<Scene> scenes = {
+      parse_scene(gs.doc.dump(), gs.name),
+      read_scene_file(std::string(ECCD_SOURCE_DIR) +
+                      "/cases/generated/3d-euler/3d-deg6-touch-euler-6196066849619300.json")};
   auto look_of = [](const Solution& s, const char* key) {
     long n = -1;
     for (const auto& [name, v] : s.work)
@@ -308,7 +309,11 @@ TEST_CASE("the second look stops at the same work whatever the machine's load", 
   std::set<long> outcomes;
   for (const Scene& sc : scenes) {
     INFO(sc.name);
-    const SolveOptions o = options("double", Basis::bernstein, InputMode::rounded, Guard::bound);
+    SolveOptions o = options("double", Basis::bernstein, InputMode::rounded, Guard::bound);
+    // The run's own deadline is wall time and holds over the look (api/solve.cpp): the 2 s of options() ended a
+    // 1 s look early on a machine busy beyond these two threads (a CI build beside), so this test keeps solve's
+    // default deadline (30 s), which only a look many times slower than its budget could meet.
+    o.time_limit_s = 0;
     const Solution quiet = solve(sc, o);
     std::atomic<bool> stop{false};
     std::vector<std::thread> busy;
@@ -330,7 +335,7 @@ TEST_CASE("the second look stops at the same work whatever the machine's load", 
     CHECK(loaded.undecided_reasons == quiet.undecided_reasons);
     CHECK(answer_to_json(loaded.answer) == answer_to_json(quiet.answer));  // the same answer, instant for instant
   }
-  CHECK(outcomes == std::set<long>{2});  // the look decided
+  CHECK(outcomes == std::set<long>{1, 2});  // one look decided, one met its budget
 }
 
 }  // namespace ECCD_UNITY_ID
