@@ -336,6 +336,9 @@ void read_child_report(BoundedRun& r, const std::string& text, int status) {
 }
 }  // namespace
 
+// A run in a fresh child that answers faster than this (and than a quarter of its budget, so that both runs stay
+// well inside it) runs again for its time (harness.hpp, run_bounded).
+constexpr double kRepeatBelowMs = 50;
 BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s, bool isolate) {
   BoundedRun r;
   auto start = std::chrono::steady_clock::now();
@@ -364,6 +367,11 @@ BoundedRun run_bounded(const Scene& s, const SolveOptions& opt, double budget_s,
       close(fds[0]);
       BoundedRun c;
       in_process(c);
+      if (c.got && c.got->time_ms < std::min(kRepeatBelowMs, budget_s * 1e3 / 4)) {  // timed again (the header)
+        BoundedRun again;
+        in_process(again);
+        if (again.got) c.got->time_ms = again.got->time_ms;
+      }
       report_to_parent(c, fds[1]);
     }
     close(fds[1]);
@@ -473,6 +481,11 @@ void fill_row_from_run(ResultRow& row, BoundedRun&& br, const Answer& truth) {
   if (got) {
     row.time_us = got->time_ms * 1e3;
     row.input = to_string(got->input);
+    if (row.guard == "bound") {
+      row.second_look = 0;
+      for (const auto& [key, n] : got->work)
+        if (key == "second_look") row.second_look = int(n);
+    }
   }
   if (row.m.outcome == "undecided") {
     // the pipeline's own reasons, else where
@@ -562,7 +575,7 @@ std::vector<ResultRow> run_scene(const Scene& s, const SceneInfo& info, const Ha
 std::string results_csv_header() {
   return "scene,source,dim,degree,family,motion,d,seed,pipeline,arith,bits,basis,method,coef_err,delta_err,outcome,"
          "collides,exact_collides,intervals,exact_intervals,missed_contacts,false_contacts,first_contact_err,"
-         "endpoint_err,time_us,structure_ok,input,digits,reason,coef_err_common,guard,exact_touch";
+         "endpoint_err,time_us,structure_ok,input,digits,reason,coef_err_common,guard,exact_touch,second_look";
 }
 
 std::string results_csv_line(const ResultRow& r) {
@@ -604,7 +617,8 @@ std::string results_csv_line(const ResultRow& r) {
                    r.guard,
                    r.m.outcome == kNoGroundTruthOutcome ? ""
                    : r.m.exact_touch                    ? "1"
-                                                        : "0"});
+                                                        : "0",
+                   r.second_look ? std::to_string(*r.second_look) : ""});
 }
 
 }  // namespace eccd

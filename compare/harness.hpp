@@ -129,7 +129,12 @@ void apply_input_mode(SolveOptions& opt, const std::string& mode);
 // `timed_out`: the run hit its budget (BudgetExhausted), came back after it,
 // or was killed; `reason` says which. `error`: the exception message of a run
 // that failed otherwise (then `got` is empty). The child sends its Solution
-// back as JSON (io/solution_json.hpp, both ways).
+// back as JSON (io/solution_json.hpp, both ways). The child's first run pays
+// the fresh process's first touches of memory (copy-on-write pages of the
+// parent's heap: up to x10 on a run of half a millisecond, the report's 2D
+// degree-6 scenes); a run that answers in under 50 ms and a quarter of its
+// budget runs once more in the child, and got->time_ms is the second run's
+// (the answer the first's: runs are deterministic).
 struct BoundedRun {
   std::optional<Solution> got;  // the run's solution (none: it failed, hit its budget or was killed)
   bool timed_out = false;       // no answer used: the budget ran out (or the answer came after it)
@@ -175,6 +180,9 @@ struct ResultRow {
   std::string input;   // rounded | prepared: where the floating run started
   std::string reason;  // undecided rows: why (time budget, the pipeline's undecided instants); error rows: the message
   std::string guard;   // floating rows: none (as published) | bound (guarded); "" for the others
+  // Guarded rows that answered: 0 when the bound decided alone, else the answer's work counter second_look (1 the
+  // second look in 128-bit MPFR ran, 2 it decided; api/solve.cpp); empty for the other rows and for time-outs.
+  std::optional<int> second_look;
 };
 
 // The row of pipeline `ps` on the scene `info`, before its run: the scene's and the pipeline's columns.

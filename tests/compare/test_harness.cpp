@@ -21,7 +21,9 @@
 //    its budget (1 µs of processor time) is timed out, "time budget ...";
 //  - run_scene: coefficient errors on the prepared rows only;
 //  - fill_row_from_run: a time-out is undecided with the wall time; an error
-//    is outcome error; an answer's time and input are the solution's;
+//    is outcome error; an answer's time and input are the solution's; a
+//    guarded answer's second_look is its work counter (0 without one), the
+//    CSV's last column, empty for as-published rows and time-outs;
 //  - run_scene: rows of external engines last, judged against the exact
 //    answer (a right answer file correct, a wrong one false_negative, a
 //    broken one an error row, a missing one no row, no time NaN);
@@ -299,6 +301,7 @@ TEST_CASE("harness: fill_row_from_run turns time-outs, errors and answers into r
     CHECK(row.time_us == 250000);
     CHECK(row.reason == "time budget: test");
     CHECK(row.m.exact_collides);
+    CHECK_FALSE(row.second_look);  // no answer: nothing known of a second look
   }
   SECTION("an error: outcome error, the message") {
     BoundedRun br;
@@ -318,6 +321,28 @@ TEST_CASE("harness: fill_row_from_run turns time-outs, errors and answers into r
     CHECK(row.m.structure_ok);
     CHECK(row.time_us == 1500);
     CHECK(row.input == "rounded");
+    REQUIRE(row.second_look);  // a guarded row whose answer has no second_look counter: the bound decided alone
+    CHECK(*row.second_look == 0);
+  }
+  SECTION("a guarded answer that took a second look: the answer's counter, in the CSV line's last column") {
+    BoundedRun br;
+    br.got = exact;
+    br.got->work = {{"second_look", 2}, {"second_look_units", 301603}};
+    fill_row_from_run(row, std::move(br), exact.answer);
+    REQUIRE(row.second_look);
+    CHECK(*row.second_look == 2);
+    const std::string line = results_csv_line(row);
+    CHECK(line.substr(line.rfind(',')) == ",2");
+    CHECK(results_csv_header().substr(results_csv_header().rfind(',')) == ",second_look");
+  }
+  SECTION("an as-published answer: no second look column") {
+    row.guard = "none";
+    BoundedRun br;
+    br.got = exact;
+    fill_row_from_run(row, std::move(br), exact.answer);
+    CHECK_FALSE(row.second_look);
+    const std::string line = results_csv_line(row);
+    CHECK(line.back() == ',');
   }
   SECTION("an undecided answer: the pipeline's reasons, once each") {
     BoundedRun br;
@@ -392,7 +417,7 @@ TEST_CASE("harness: run_scene adds the external engines' rows last, judged again
 
 TEST_CASE("harness: results.csv rows have the header's columns, in order", "[compare][harness]") {
   const std::vector<std::string> header = csv_split(results_csv_header());
-  CHECK(header.size() == 32);
+  CHECK(header.size() == 33);
   std::map<std::string, std::size_t> col;
   for (std::size_t k = 0; k < header.size(); ++k) col[header[k]] = k;
   CHECK(col.size() == header.size());  // no column twice
@@ -441,6 +466,7 @@ TEST_CASE("harness: results.csv rows have the header's columns, in order", "[com
   CHECK(f[col["digits"]].empty());
   CHECK(f[col["guard"]] == "bound");
   CHECK(f[col["exact_touch"]] == "0");
+  CHECK(f[col["second_look"]].empty());  // not filled from a run
   const std::string& why = f[col["reason"]];
   CHECK(why.size() == 200);
   CHECK(why.find('\n') == std::string::npos);

@@ -119,15 +119,15 @@ TEST_CASE("harness rows for one generated 2D scene: every pipeline, exact first,
     CHECK(r.guard == (published ? "none" : "bound"));
     if (!published) CHECK(by.count(r.pipeline + "/published"));
   }
-  // One CSV line per row, 32 fields each (coef_err_common, issue 19; guard, issue 30; exact_touch last).
+  // One CSV line per row, 33 fields each (coef_err_common, issue 19; guard, exact_touch and second_look, issue 30).
   for (const auto& r : rows) {
     const std::string line = results_csv_line(r);
-    CHECK(std::count(line.begin(), line.end(), ',') == 31);
+    CHECK(std::count(line.begin(), line.end(), ',') == 32);
   }
   const std::string head = results_csv_header();
-  CHECK(std::count(head.begin(), head.end(), ',') == 31);
-  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common,guard,exact_touch").size()) ==
-        ",reason,coef_err_common,guard,exact_touch");
+  CHECK(std::count(head.begin(), head.end(), ',') == 32);
+  CHECK(head.substr(head.size() - std::string(",reason,coef_err_common,guard,exact_touch,second_look").size()) ==
+        ",reason,coef_err_common,guard,exact_touch,second_look");
 }
 
 TEST_CASE("exact_touch: the truth touches without overlapping (an interval of one instant, or continuous touching)",
