@@ -244,10 +244,12 @@ int words_of(const std::vector<std::string>& lines) {
 // so the guard's record for 2D is: 10 runs, 3 errors, 1 caught, 1 right anyway, 1 missed, 0 false alarms.
 // With touch_column, also the column exact_touch: 1 on s4-touch and s4-case (as if that case touched), whose guarded
 // double/bernstein runs become undecided beside right as-published ones: 2 false alarms, both where the truth touches.
-void add_published_rows(const fs::path& dir, bool touch_column = false) {
+// With look_column, also the column second_look: the guarded double/bernstein runs of s2-nm-1e-8 and s4-nm-1e-8 took a
+// second look that decided (2) and ten times their twin's time; every other guarded row 0, the rest empty.
+void add_published_rows(const fs::path& dir, bool touch_column = false, bool look_column = false) {
   auto lines = lines_of(slurp(dir / "results.csv"));
-  std::string out =
-      lines[0] + ",input,digits,reason,coef_err_common,guard" + (touch_column ? ",exact_touch" : "") + "\n";
+  std::string out = lines[0] + ",input,digits,reason,coef_err_common,guard" + (touch_column ? ",exact_touch" : "") +
+                    (look_column ? ",second_look" : "") + "\n";
   std::vector<std::string> extra;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].empty()) continue;
@@ -258,13 +260,16 @@ void add_published_rows(const fs::path& dir, bool touch_column = false) {
     auto guarded = f;
     if (touch_column && touches && f[8] == "double/bernstein")
       guarded[15] = "undecided", guarded[16] = "", guarded[25] = "0";
-    out += join_commas(guarded) + ",prepared,,,," + (floating ? "bound" : "") + touch + "\n";
+    const bool looked = f[8] == "double/bernstein" && (f[0] == "s2-nm-1e-8" || f[0] == "s4-nm-1e-8");
+    if (looked) guarded[24] = std::to_string(10 * std::stoi(f[24]));
+    const std::string look = !look_column ? "" : !floating ? "," : looked ? ",2" : ",0";
+    out += join_commas(guarded) + ",prepared,,,," + (floating ? "bound" : "") + touch + look + "\n";
     if (f[8] != "double/bernstein") continue;
     auto g = f;
     g[8] = "double/bernstein/published";
     if (f[0] == "s2-nm-1e-8") g[15] = "false_positive", g[16] = "1", g[18] = "1", g[20] = "0", g[21] = "1", g[25] = "0";
     if (f[0] == "s4-col") g[25] = "0";
-    extra.push_back(join_commas(g) + ",prepared,,,,none" + touch);
+    extra.push_back(join_commas(g) + ",prepared,,,,none" + touch + (look_column ? "," : ""));
   }
   for (const auto& e : extra) out += e + "\n";
   std::ofstream(dir / "results.csv", std::ios::binary | std::ios::trunc) << out;
@@ -546,6 +551,34 @@ TEST_CASE("report_figures.py: the guard's record counts the scenes whose truth t
   CHECK(md.find("| **2D, all** | 10 | 3 | 1 | 1 | 1 | 66.7% | 2 | 2/3 (67%) |") != std::string::npos);
   // Without them: the 8 runs whose exact answer does not touch, and no false alarm.
   CHECK(md.find("| **2D, no touch in the truth** | 8 | 3 | 1 | 1 | 1 | 66.7% | 0 | 0/1 (0%) |") != std::string::npos);
+}
+
+TEST_CASE("report_figures.py: the guard's cost split by the second look (column second_look)", "[report-figures]") {
+  {  // without the column: one median, no split and no cost table
+    FixtureCopy fx("faces-nolook");
+    add_published_rows(fx.dir);
+    std::string log;
+    REQUIRE(run_script(fx.dir, log) == 0);
+    INFO(log);
+    const std::string md = slurp(fx.dir / "report.md");
+    CHECK(md.find("of which 0 false alarms. Time ×1 (median).") != std::string::npos);
+    CHECK(md.find("**The guard's cost**") == std::string::npos);
+  }
+  FixtureCopy fx("faces-look");
+  add_published_rows(fx.dir, false, true);
+  std::string log;
+  REQUIRE(run_script(fx.dir, log) == 0);
+  INFO(log);
+  const std::string md = slurp(fx.dir / "report.md");
+  // 10 pairs: 8 at the twin's time (the bound alone), 2 second looks at ten times it, both decided.
+  CHECK(md.find("Time ×1 (median); ×1 where the bound decided alone (8 runs), ×10 with a second look (2 runs).") !=
+        std::string::npos);
+  CHECK(md.find("| **2D double, all** | 10 | ×1 | 8 | ×1 | 2 | 2 | ×10 |") != std::string::npos);
+  // Per degree: s2-nm-1e-8 among degree 2's four pairs, s4-nm-1e-8 among degree 4's six.
+  CHECK(md.find("| 2D double degree 2 | 4 | ×1 | 3 | ×1 | 1 | 1 | ×10 |") != std::string::npos);
+  CHECK(md.find("| 2D double degree 4 | 6 | ×1 | 5 | ×1 | 1 | 1 | ×10 |") != std::string::npos);
+  std::size_t start = 0, end = 0;
+  CHECK(words_of(verdict_of(lines_of(md), start, end)) <= 150);
 }
 
 }  // namespace ECCD_UNITY_ID

@@ -87,6 +87,7 @@ OPTIONAL_RESULT_COLUMNS = [
     ("coef_err_common", "float", True, None, None),
     ("guard", "str", True, ("none", "bound"), None),  # the face of a floating row; older files: guarded only
     ("exact_touch", "int", True, (0, 1), None),  # the truth touches without overlap (compare/metrics.hpp)
+    ("second_look", "int", True, (0, 1, 2), None),  # guarded rows: 0 the bound alone, 1 a second look ran, 2 it decided
 ]
 
 FAILURE_COLUMNS = [
