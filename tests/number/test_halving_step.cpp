@@ -5,7 +5,11 @@
 // zeros, at several precisions, and where the shortcut does not apply (mixed
 // precisions). TriBern's split_half and split_half_into (reused storage) must
 // give the nets the written-out steps give, and both halves must hold the
-// exact rational halves within their bounds.
+// exact rational halves within their bounds. The univariate split, split_into
+// and keep_right (kernel/bernstein.hpp) take the step for plain and guarded
+// MPFR: at 1/2 and at another point, the values the written-out products give
+// bit for bit, and the guarded pieces hold the exact pieces within their bounds.
+#include "kernel/bernstein.hpp"
 #include "kernel/trivariate_bernstein.hpp"
 #include "number/halving_step.hpp"
 #include "tests/support/exact_values.hpp"
@@ -123,6 +127,53 @@ TEST_CASE(
       const mpq_class dhi = abs(exact_of(hi.c[i].value()) - qhi.c[i]);
       CHECK(dlo <= exact_of(lo.c[i].bound()));
       CHECK(dhi <= exact_of(hi.c[i].bound()));
+    }
+  }
+}
+
+TEST_CASE("univariate split of MPFR nets by the step: the written-out values, and the exact pieces within the bounds",
+          "[halving]") {
+  std::mt19937_64 rng(55);
+  const int bits = 128, n = 40;
+  const BM like(Mpfr(mpq_class(1), bits), 0);
+  for (const mpq_class& tau_q : {mpq_class(1, 2), mpq_class(3, 7)}) {
+    Bern<BM> f;
+    Bern<Rational> q;
+    Bern<Mpfr> plain;
+    for (int i = 0; i <= n; ++i) {
+      mpq_class e;
+      f.b.push_back(random_value(rng, bits, &e));
+      q.b.push_back(Rational(e));
+      plain.b.push_back(f.b.back().value());
+    }
+    const BM tau = scalar_traits<BM>::from_rational(tau_q, like);
+    auto [lo, hi] = split(f, tau);
+    auto [plo, phi] = split(plain, tau.value());
+    auto [qlo, qhi] = split(q, Rational(tau_q));
+    // the written-out products and sums, in plain MPFR
+    std::vector<Mpfr> w = plain.b, wlo(n + 1);
+    const Mpfr t = tau.value(), s = Mpfr(1) - t;
+    wlo[0] = w[0];
+    for (int r = 1; r <= n; ++r) {
+      for (int i = 0; i + r <= n; ++i) w[i] = s * w[i] + t * w[i + 1];
+      wlo[r] = w[0];
+    }
+    std::vector<BM> klo(n + 1), khi(n + 1), kright = f.b;
+    split_into(std::span<const BM>(f.b), tau, std::span<BM>(klo), std::span<BM>(khi));
+    keep_right(std::span<BM>(kright), tau);
+    CHECK((tau.bound() == 0) == (tau_q == mpq_class(1, 2)));
+    for (int i = 0; i <= n; ++i) {
+      INFO("tau " << tau_q << ", coefficient " << i);
+      REQUIRE(mpfr_equal_p(plo.b[i].get(), wlo[i].get()));
+      REQUIRE(mpfr_equal_p(phi.b[i].get(), w[i].get()));
+      REQUIRE(mpfr_equal_p(lo.b[i].value().get(), wlo[i].get()));
+      REQUIRE(mpfr_equal_p(hi.b[i].value().get(), w[i].get()));
+      REQUIRE(same(klo[i], lo.b[i]));
+      REQUIRE(same(khi[i], hi.b[i]));
+      REQUIRE(same(kright[i], hi.b[i]));
+      // the exact pieces at the exact point (3/7 is rounded: tau's own bound carries that error)
+      CHECK(abs(exact_of(lo.b[i].value()) - qlo.b[i]) <= exact_of(lo.b[i].bound()));
+      CHECK(abs(exact_of(hi.b[i].value()) - qhi.b[i]) <= exact_of(hi.b[i].bound()));
     }
   }
 }
