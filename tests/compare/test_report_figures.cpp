@@ -553,23 +553,26 @@ TEST_CASE("report_figures.py: the guard's record counts the scenes whose truth t
   CHECK(md.find("| **2D, no touch in the truth** | 8 | 3 | 1 | 1 | 1 | 66.7% | 0 | 0/1 (0%) |") != std::string::npos);
 }
 
+// The fixture's report.md after the script ran on it (which must succeed; its output is the failure's message).
+std::string report_md_of(const FixtureCopy& fx) {
+  std::string log;
+  const int rc = run_script(fx.dir, log);
+  INFO(log);
+  REQUIRE(rc == 0);
+  return slurp(fx.dir / "report.md");
+}
+
 TEST_CASE("report_figures.py: the guard's cost split by the second look (column second_look)", "[report-figures]") {
   {  // without the column: one median, no split and no cost table
     FixtureCopy fx("faces-nolook");
     add_published_rows(fx.dir);
-    std::string log;
-    REQUIRE(run_script(fx.dir, log) == 0);
-    INFO(log);
-    const std::string md = slurp(fx.dir / "report.md");
+    const std::string md = report_md_of(fx);
     CHECK(md.find("of which 0 false alarms. Time ×1 (median).") != std::string::npos);
     CHECK(md.find("**The guard's cost**") == std::string::npos);
   }
   FixtureCopy fx("faces-look");
   add_published_rows(fx.dir, false, true);
-  std::string log;
-  REQUIRE(run_script(fx.dir, log) == 0);
-  INFO(log);
-  const std::string md = slurp(fx.dir / "report.md");
+  const std::string md = report_md_of(fx);
   // 10 pairs: 8 at the twin's time (the bound alone), 2 second looks at ten times it, both decided.
   CHECK(md.find("Time ×1 (median); ×1 where the bound decided alone (8 runs), ×10 with a second look (2 runs).") !=
         std::string::npos);
